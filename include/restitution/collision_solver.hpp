@@ -1,0 +1,97 @@
+#pragma once
+// The collision solver: shoots the equation of motion of a ContactLaw with CVODE and detects the
+// end(s) of the collision as events. One solver holds one CVODE integrator per method and reuses it
+// across solves; use one solver per thread.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "restitution/contact_law.hpp"
+
+namespace restitution {
+
+enum class Method { bdf, adams, automatic };
+const char* method_name(Method method);  // "bdf" | "adams" | "auto"
+
+struct EndSelection {
+  bool naive = true;             // end where the overlap vanishes, x = 0
+  bool delayed_recovery = true;  // end where the force vanishes, c_d x' + c_s x = 0
+};
+
+struct SolveOptions {
+  // Accuracy the caller gets: |ε - ε_exact| <= tolerance · min(ε, 1 - ε) for every reported end.
+  double tolerance = 1e-10;
+  Method method = Method::automatic;
+  EndSelection ends;
+  bool keep_trajectory = false;  // record (τ, x, x', x'') at every internal step and at every event
+  // Hertz law only: integrate in u = sqrt(x) near x = 0, where the solution is analytic in u but not in τ
+  // (DESIGN.md §4). false integrates in τ throughout, for comparison.
+  bool smooth_ends = true;
+};
+
+// The accepted tolerance range of the CVODE engine (relative accuracy of ε).
+inline constexpr double kMinTolerance = 1e-11;
+inline constexpr double kMaxTolerance = 1e-2;
+
+// All times and lengths below are in the natural scaling (x'(0) = 1) whatever form the law was given in.
+struct EndResult {
+  double eps = 0.0;                // ε = -x'(τ_c)/x'(0)
+  double one_minus_eps = 0.0;      // 1 - ε, computed without cancellation as ε -> 1
+  double tau = 0.0;                // τ_c, duration of the collision
+  double x = 0.0;                  // compression at the end (0 at the naive end)
+  double velocity = 0.0;           // x'(τ_c) as integrated (-ε up to the choice of the accurate form)
+  double dissipated_energy = 0.0;  // D(τ_c) in natural units, where the initial kinetic energy is 1/2
+};
+
+struct MaxCompression {
+  double tau = 0.0;
+  double x = 0.0;
+};
+
+struct SolverStats {
+  long steps = 0;
+  long rhs_evaluations = 0;
+  long jacobian_evaluations = 0;
+  long root_evaluations = 0;
+  long error_test_failures = 0;
+  long convergence_failures = 0;
+};
+
+struct TrajectoryPoint {
+  double tau, x, velocity, acceleration;  // natural scaling
+};
+
+struct CollisionResult {
+  LawKind law = LawKind::viscoelastic_hertz;
+  double parameter = 0.0;  // ζ (Hertz) or r (dash-pot)
+  double tolerance = 0.0;
+  Method method = Method::bdf;  // the method actually used (never automatic)
+  MaxCompression max_compression;
+  std::optional<EndResult> naive;
+  std::optional<EndResult> delayed_recovery;
+  SolverStats stats;
+  std::vector<TrajectoryPoint> trajectory;  // empty unless SolveOptions::keep_trajectory
+};
+
+class CollisionSolver {
+ public:
+  CollisionSolver();
+  ~CollisionSolver();
+  CollisionSolver(CollisionSolver&&) noexcept;
+  CollisionSolver& operator=(CollisionSolver&&) noexcept;
+  CollisionSolver(const CollisionSolver&) = delete;
+  CollisionSolver& operator=(const CollisionSolver&) = delete;
+
+  // Throws InvalidInput for options out of range or an end that does not exist (the naive end of an
+  // overdamped dash-pot), NumericalFailure when CVODE fails.
+  CollisionResult solve(const ContactLaw& law, const SolveOptions& options);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The method `automatic` resolves to for this law (measured: see docs/accuracy.md).
+Method resolve_method(const ContactLaw& law, Method requested);
+
+}  // namespace restitution

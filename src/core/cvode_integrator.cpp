@@ -1,0 +1,203 @@
+#include "core/cvode_integrator.hpp"
+
+#include <cvode/cvode_ls.h>
+#include <fmt/core.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include "restitution/errors.hpp"
+
+namespace restitution::detail {
+namespace {
+
+using Data = CvodeIntegrator::CallbackData;
+
+// The callbacks are plain arithmetic on doubles: nothing in them can throw, so nothing crosses CVODE.
+int right_hand_side(sunrealtype t, N_Vector y, N_Vector ydot, void* user_data) noexcept {
+  const Data& data = *static_cast<Data*>(user_data);
+  const ContactLaw& law = *data.law;
+  const double* s = N_VGetArrayPointer(y);
+  double* d = N_VGetArrayPointer(ydot);
+  const double v = s[kVelocity];
+  if (data.form == Form::time) {
+    d[kFirst] = v;
+    d[kVelocity] = law.acceleration(s[kFirst], v);
+    d[kDissipation] = law.dissipation_integrand(s[kFirst], v);
+  } else {
+    const double x = t * t;
+    const double dtau_du = 2.0 * t / v;
+    d[kFirst] = dtau_du;
+    d[kVelocity] = law.acceleration(x, v) * dtau_du;
+    d[kDissipation] = law.dissipation_integrand(x, v) * dtau_du;
+  }
+  return 0;
+}
+
+int jacobian(sunrealtype t, N_Vector y, N_Vector /*fy*/, SUNMatrix J, void* user_data, N_Vector /*t1*/,
+             N_Vector /*t2*/, N_Vector /*t3*/) noexcept {
+  const Data& data = *static_cast<Data*>(user_data);
+  const ContactLaw& law = *data.law;
+  const double* s = N_VGetArrayPointer(y);
+  const double v = s[kVelocity];
+  SUNMatZero(J);
+  if (data.form == Form::time) {
+    const double x = s[kFirst];
+    SM_ELEMENT_D(J, kFirst, kVelocity) = 1.0;
+    SM_ELEMENT_D(J, kVelocity, kFirst) = law.dacceleration_dx(x, v);
+    SM_ELEMENT_D(J, kVelocity, kVelocity) = law.dacceleration_dv(x);
+    SM_ELEMENT_D(J, kDissipation, kFirst) = law.ddissipation_integrand_dx(x, v);
+    SM_ELEMENT_D(J, kDissipation, kVelocity) = law.ddissipation_integrand_dv(x, v);
+  } else {
+    // Only x' appears on the right-hand side: d/dx' of g(x')·2u/x' is 2u (g'·x' - g)/x'^2.
+    const double x = t * t;
+    const double scale = 2.0 * t / (v * v);
+    SM_ELEMENT_D(J, kFirst, kVelocity) = -scale;
+    SM_ELEMENT_D(J, kVelocity, kVelocity) = scale * (law.dacceleration_dv(x) * v - law.acceleration(x, v));
+    SM_ELEMENT_D(J, kDissipation, kVelocity) =
+        scale * (law.ddissipation_integrand_dv(x, v) * v - law.dissipation_integrand(x, v));
+  }
+  return 0;
+}
+
+int event_functions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data) noexcept {
+  const Data& data = *static_cast<Data*>(user_data);
+  const double* s = N_VGetArrayPointer(y);
+  const double x = data.form == Form::time ? s[kFirst] : t * t;
+  const double v = s[kVelocity];
+  for (std::size_t i = 0; i < static_cast<std::size_t>(data.event_count); ++i) {
+    if (data.ignored[i]) {
+      g[i] = 1.0;
+      continue;
+    }
+    switch (data.events[i]) {
+      case Event::max_compression:
+        g[i] = v;
+        break;
+      case Event::naive_end:
+        g[i] = x;
+        break;
+      case Event::delayed_recovery_end:
+        g[i] = data.law->force_factor(x, v);
+        break;
+      case Event::velocity_halved:
+        g[i] = v - 0.5 * data.law->initial_velocity;
+        break;
+      case Event::below_switch:
+        g[i] = x - data.switch_x;
+        break;
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+CvodeIntegrator::CvodeIntegrator(Method method, const sundials::Context& context)
+    : method_(method),
+      state_(sundials::make_serial_vector(kStateSize, context)),
+      absolute_tolerance_(sundials::make_serial_vector(kStateSize, context)),
+      memory_(method == Method::adams ? CV_ADAMS : CV_BDF, context) {
+  N_VConst(0.0, state_.get());
+  N_VConst(1.0, absolute_tolerance_.get());
+  if (method == Method::adams) {
+    // Adams is chosen where the problem is not stiff: a fixed-point corrector needs no Jacobian.
+    fixed_point_solver_ = sundials::make_fixed_point_solver(state_, context);
+  } else {
+    jacobian_ = sundials::make_dense_matrix(kStateSize, kStateSize, context);
+    linear_solver_ = sundials::make_dense_linear_solver(state_, jacobian_, context);
+  }
+}
+
+void CvodeIntegrator::start(const ContactLaw& law, const PhaseSettings& settings, double t0,
+                            const State& state, const Event* events, int event_count) {
+  void* mem = memory_.get();
+  memory_.clear_error();
+  data_.law = &law;
+  data_.form = settings.form;
+  data_.switch_x = settings.switch_x;
+  data_.event_count = event_count;
+  data_.ignored.fill(false);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(event_count); ++i) data_.events[i] = events[i];
+
+  double* s = N_VGetArrayPointer(state_.get());
+  for (std::size_t i = 0; i < kStateSize; ++i) s[i] = state[i];
+
+  if (!initialized_) {
+    sundials::check_flag(CVodeInit(mem, right_hand_side, t0, state_.get()), "CVodeInit");
+    sundials::check_flag(CVodeSetUserData(mem, &data_), "CVodeSetUserData");
+    if (fixed_point_solver_) {
+      sundials::check_flag(CVodeSetNonlinearSolver(mem, fixed_point_solver_.get()),
+                           "CVodeSetNonlinearSolver");
+    } else {
+      sundials::check_flag(CVodeSetLinearSolver(mem, linear_solver_.get(), jacobian_.get()),
+                           "CVodeSetLinearSolver");
+      sundials::check_flag(CVodeSetJacFn(mem, jacobian), "CVodeSetJacFn");
+    }
+    initialized_ = true;
+  } else {
+    sundials::check_flag(CVodeReInit(mem, t0, state_.get()), "CVodeReInit");
+  }
+
+  double* atol = N_VGetArrayPointer(absolute_tolerance_.get());
+  for (std::size_t i = 0; i < kStateSize; ++i) atol[i] = settings.absolute_tolerance[i];
+  sundials::check_flag(CVodeSVtolerances(mem, settings.relative_tolerance, absolute_tolerance_.get()),
+                       "CVodeSVtolerances");
+  sundials::check_flag(CVodeSetMaxNumSteps(mem, settings.max_steps), "CVodeSetMaxNumSteps");
+  sundials::check_flag(CVodeSetStopTime(mem, settings.stop), "CVodeSetStopTime");
+  stop_ = settings.stop;
+
+  if (event_count != watched_events_) {
+    sundials::check_flag(CVodeRootInit(mem, event_count, event_functions), "CVodeRootInit");
+    watched_events_ = event_count;
+  }
+  // Events are crossings in the direction of integration; the compression form of the end runs towards
+  // u = 0, so there either direction is accepted (each of its events crosses once).
+  std::array<int, kMaxEvents> directions{};
+  directions.fill(settings.stop >= t0 ? -1 : 0);
+  if (event_count > 0) {
+    sundials::check_flag(CVodeSetRootDirection(mem, directions.data()), "CVodeSetRootDirection");
+  }
+}
+
+CvodeIntegrator::Step CvodeIntegrator::advance() {
+  Step step;
+  const int flag = CVode(memory_.get(), stop_, state_.get(), &step.t, CV_ONE_STEP);
+  if (flag < 0) {
+    throw NumericalFailure(fmt::format("CVODE failed at {}={} with flag {} ({})",
+                                       data_.form == Form::time ? "tau" : "u", step.t, flag,
+                                       memory_.last_error().empty() ? "no message" : memory_.last_error()));
+  }
+  const double* s = N_VGetArrayPointer(state_.get());
+  for (std::size_t i = 0; i < kStateSize; ++i) step.state[i] = s[i];
+  if (flag == CV_ROOT_RETURN) {
+    std::array<int, kMaxEvents> found{};
+    sundials::check_flag(CVodeGetRootInfo(memory_.get(), found.data()), "CVodeGetRootInfo");
+    for (std::size_t i = 0; i < static_cast<std::size_t>(data_.event_count); ++i) {
+      step.events_found[i] = found[i] != 0 && !data_.ignored[i];
+    }
+  }
+  step.reached_stop = (flag == CV_TSTOP_RETURN);
+  return step;
+}
+
+SolverStats CvodeIntegrator::phase_stats() const {
+  void* mem = memory_.get();
+  SolverStats stats;
+  long value = 0;
+  CVodeGetNumSteps(mem, &value);
+  stats.steps = value;
+  CVodeGetNumRhsEvals(mem, &value);
+  stats.rhs_evaluations = value;
+  CVodeGetNumGEvals(mem, &value);
+  stats.root_evaluations = value;
+  CVodeGetNumErrTestFails(mem, &value);
+  stats.error_test_failures = value;
+  CVodeGetNumNonlinSolvConvFails(mem, &value);
+  stats.convergence_failures = value;
+  if (linear_solver_) {
+    CVodeGetNumJacEvals(mem, &value);
+    stats.jacobian_evaluations = value;
+  }
+  return stats;
+}
+
+}  // namespace restitution::detail

@@ -1,0 +1,93 @@
+#pragma once
+// One CVODE integrator (BDF or Adams) for the equation of motion of a ContactLaw, with the dissipated
+// energy integrated alongside. Reused across solves and across the phases of a solve (CVodeReInit).
+// Private to the library.
+//
+// Two forms of the same system, chosen per phase of the collision:
+//  * time form, independent variable τ, state (x, x', I);
+//  * compression form, independent variable u = sqrt(x), state (τ, x', I), valid while x' != 0:
+//        dτ/du = 2u/x',  dx'/du = 2u·a(u², x')/x',  dI/du = 2u·w(u²)·x'
+//    For Hertz spheres (w = sqrt(x) = u) this is analytic in u, where the time form has sqrt(τ)-type
+//    singularities at x = 0 that cost CVODE its order (DESIGN.md §4).
+// I = ∫ w(x) x'^2 dτ is the dissipation integral (the dissipated energy is D = c_d · I).
+#include <array>
+#include <string>
+
+#include "restitution/collision_solver.hpp"
+#include "restitution/contact_law.hpp"
+#include "sundials/handles.hpp"
+
+namespace restitution::detail {
+
+inline constexpr int kStateSize = 3;
+using State = std::array<double, kStateSize>;
+// Index of x' and I in both forms; index 0 is x in the time form and τ in the compression form.
+enum StateIndex { kFirst = 0, kVelocity = 1, kDissipation = 2 };
+
+enum class Form { time, compression };
+
+// The events a phase can watch.
+enum class Event {
+  max_compression,       // x' = 0
+  naive_end,             // x = 0 (time form only)
+  delayed_recovery_end,  // c_d x' + c_s x = 0
+  velocity_halved,       // x' = x'(0)/2: leave the compression form of the start
+  below_switch,          // x = switch_x while decompressing: enter the compression form of the end
+};
+inline constexpr int kMaxEvents = 4;
+
+struct PhaseSettings {
+  Form form = Form::time;
+  double relative_tolerance = 1e-10;
+  State absolute_tolerance{};
+  double stop = 1e6;  // the independent variable's last value: time limit, or u at the phase's end
+  long max_steps = 1000000;
+  double switch_x = 0.0;  // for Event::below_switch
+};
+
+class CvodeIntegrator {
+ public:
+  CvodeIntegrator(Method method, const sundials::Context& context);
+
+  // Starts a phase at independent variable t0 with the given state, watching the given events.
+  void start(const ContactLaw& law, const PhaseSettings& settings, double t0, const State& state,
+             const Event* events, int event_count);
+
+  struct Step {
+    double t = 0.0;  // τ (time form) or u (compression form)
+    State state{};
+    std::array<bool, kMaxEvents> events_found{};  // indexed like the events passed to start()
+    bool reached_stop = false;
+  };
+  // Advances one internal step or up to the next event. Throws NumericalFailure on a CVODE error.
+  Step advance();
+  // Stops watching an event that has been handled (its function becomes a positive constant).
+  void ignore_event(int index) { data_.ignored[static_cast<std::size_t>(index)] = true; }
+
+  // Statistics of the phase so far (CVodeReInit resets them: callers add up phases).
+  [[nodiscard]] SolverStats phase_stats() const;
+
+  struct CallbackData {
+    const ContactLaw* law = nullptr;
+    Form form = Form::time;
+    double switch_x = 0.0;
+    std::array<Event, kMaxEvents> events{};
+    std::array<bool, kMaxEvents> ignored{};
+    int event_count = 0;
+  };
+
+ private:
+  Method method_;
+  sundials::Vector state_;
+  sundials::Vector absolute_tolerance_;
+  sundials::Matrix jacobian_;
+  sundials::LinearSolver linear_solver_;
+  sundials::NonlinearSolver fixed_point_solver_;
+  sundials::CvodeMemory memory_;
+  CallbackData data_;
+  int watched_events_ = -1;
+  bool initialized_ = false;
+  double stop_ = 0.0;
+};
+
+}  // namespace restitution::detail

@@ -1,0 +1,73 @@
+#include "sundials/handles.hpp"
+
+#include <fmt/core.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include "restitution/errors.hpp"
+
+namespace restitution::sundials {
+
+void check_flag(int flag, const char* call) {
+  if (flag < 0) throw NumericalFailure(fmt::format("SUNDIALS call {} failed with flag {}", call, flag));
+}
+
+void check_created(const void* object, const char* call) {
+  if (object == nullptr) throw NumericalFailure(fmt::format("SUNDIALS call {} returned no object", call));
+}
+
+Context::Context() {
+  check_flag(SUNContext_Create(nullptr, &context_), "SUNContext_Create");
+}
+
+Context::~Context() {
+  SUNContext_Free(&context_);
+}
+
+Vector make_serial_vector(sunindextype length, const Context& context) {
+  Vector v(N_VNew_Serial(length, context.get()));
+  check_created(v.get(), "N_VNew_Serial");
+  return v;
+}
+
+Matrix make_dense_matrix(sunindextype rows, sunindextype columns, const Context& context) {
+  Matrix m(SUNDenseMatrix(rows, columns, context.get()));
+  check_created(m.get(), "SUNDenseMatrix");
+  return m;
+}
+
+LinearSolver make_dense_linear_solver(const Vector& template_vector, const Matrix& matrix,
+                                      const Context& context) {
+  LinearSolver s(SUNLinSol_Dense(template_vector.get(), matrix.get(), context.get()));
+  check_created(s.get(), "SUNLinSol_Dense");
+  return s;
+}
+
+NonlinearSolver make_fixed_point_solver(const Vector& template_vector, const Context& context) {
+  NonlinearSolver s(SUNNonlinSol_FixedPoint(template_vector.get(), 0, context.get()));
+  check_created(s.get(), "SUNNonlinSol_FixedPoint");
+  return s;
+}
+
+CvodeMemory::CvodeMemory(int linear_multistep_method, const Context& context)
+    : memory_(CVodeCreate(linear_multistep_method, context.get())) {
+  check_created(memory_, "CVodeCreate");
+  check_flag(CVodeSetErrHandlerFn(memory_, &CvodeMemory::record_error, this), "CVodeSetErrHandlerFn");
+}
+
+CvodeMemory::~CvodeMemory() {
+  CVodeFree(&memory_);
+}
+
+void CvodeMemory::record_error(int code, const char* module, const char* function, char* message,
+                               void* self) noexcept {
+  try {
+    static_cast<CvodeMemory*>(self)->last_error_ =
+        fmt::format("{} in {}: {} (flag {})", module ? module : "", function ? function : "",
+                    message ? message : "", code);
+  } catch (...) {  // NOLINT(bugprone-empty-catch): an error text must never throw through CVODE
+  }
+}
+
+}  // namespace restitution::sundials

@@ -1,0 +1,145 @@
+// The linear dash-pot x'' + 2r x' + x = 0, x(0) = 0, x'(0) = 1: closed forms derived from the exact solution
+// check the event machinery at both ends, in all three regimes and at the regime boundaries.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "restitution/collision_solver.hpp"
+#include "restitution/errors.hpp"
+
+namespace restitution {
+namespace {
+
+// Exact solution: underdamped x = e^{-rτ} sin(ωτ)/ω, ω = sqrt(1-r²); overdamped x = e^{-rτ} sinh(ωτ)/ω,
+// ω = sqrt(r²-1); critical x = τ e^{-τ}.
+double exact_velocity(double r, double tau) {
+  if (r < 1.0) {
+    const double w = std::sqrt(1.0 - r * r);
+    return std::exp(-r * tau) * (std::cos(w * tau) - r / w * std::sin(w * tau));
+  }
+  if (r > 1.0) {
+    const double w = std::sqrt(r * r - 1.0);
+    return std::exp(-r * tau) * (std::cosh(w * tau) - r / w * std::sinh(w * tau));
+  }
+  return std::exp(-tau) * (1.0 - tau);
+}
+
+// Naive end (x = 0): ωτ_c = π.
+double naive_end_time(double r) {
+  return M_PI / std::sqrt(1.0 - r * r);
+}
+
+// Delayed-recovery end: x + 2r x' = 0 first after τ = 0. With the exact solution this is
+// tan(ωτ) = 2rω/(2r²-1) (underdamped), tanh(ωτ) = 2rω/(2r²-1) (overdamped), τ = 2 (critical).
+double delayed_end_time(double r) {
+  if (r < 1.0) {
+    const double w = std::sqrt(1.0 - r * r);
+    return std::atan2(2.0 * r * w, 2.0 * r * r - 1.0) / w;  // the branch in (0, π)
+  }
+  if (r > 1.0) {
+    const double w = std::sqrt(r * r - 1.0);
+    return std::atanh(2.0 * r * w / (2.0 * r * r - 1.0)) / w;
+  }
+  return 2.0;
+}
+
+// The 2008 paper's Eq. (10) and Eq. (12) with β = r, ω0 = 1, in the form printed there.
+double paper_naive_eps(double r) {
+  return std::exp(-r * M_PI / std::sqrt(1.0 - r * r));
+}
+double paper_delayed_eps_as_printed(double r) {
+  const double w = std::sqrt(std::abs(1.0 - r * r));
+  if (r < M_SQRT1_2) return std::exp(-r / w * (M_PI - std::atan(2.0 * r * w / (w * w - r * r))));
+  if (r < 1.0) return std::exp(-r / w * std::atan(2.0 * r * w / (w * w - r * r)));
+  return std::exp(-r / w * std::log((r + w) / (r - w)));
+}
+
+SolveOptions options(double tolerance, Method method = Method::automatic) {
+  SolveOptions o;
+  o.tolerance = tolerance;
+  o.method = method;
+  return o;
+}
+
+TEST(DashpotClosedForm, DerivedFormsAgreeWithPaperWhereItsPrintedFormIsRight) {
+  for (const double r : {0.05, 0.3, 0.6, 0.7}) {
+    EXPECT_NEAR(-exact_velocity(r, naive_end_time(r)), paper_naive_eps(r), 1e-14);
+    EXPECT_NEAR(-exact_velocity(r, delayed_end_time(r)), paper_delayed_eps_as_printed(r), 1e-14);
+    // ε = exp(-r τ_c) at both ends: |x'| carries only the exponential there.
+    EXPECT_NEAR(-exact_velocity(r, delayed_end_time(r)), std::exp(-r * delayed_end_time(r)), 1e-14);
+  }
+  for (const double r : {1.5, 3.0, 10.0}) {
+    EXPECT_NEAR(-exact_velocity(r, delayed_end_time(r)), paper_delayed_eps_as_printed(r), 1e-14);
+  }
+}
+
+TEST(DashpotClosedForm, PrintedMiddleRegimeOfEq12HasTheWrongSign) {
+  // For 1/√2 < r < 1 the printed exp(-(β/ω) arctan(2βω/(ω²-β²))) exceeds 1: arctan is negative there.
+  // The exact solution gives exp(+(r/ω) arctan(2rω/(ω²-r²))) = exp(-r τ_c).
+  for (const double r : {0.75, 0.9, 0.99}) {
+    const double w = std::sqrt(1.0 - r * r);
+    EXPECT_GT(paper_delayed_eps_as_printed(r), 1.0);
+    const double corrected = std::exp(r / w * std::atan(2.0 * r * w / (w * w - r * r)));
+    EXPECT_NEAR(-exact_velocity(r, delayed_end_time(r)), corrected, 1e-14);
+  }
+}
+
+TEST(DashpotSolver, MatchesClosedFormsInAllRegimes) {
+  CollisionSolver solver;
+  const double tol = 1e-10;
+  const double boundary = M_SQRT1_2;
+  for (const double r : {1e-3, 0.05, 0.3, 0.6, boundary - 1e-6, boundary, boundary + 1e-6, 0.8, 0.95,
+                         1.0 - 1e-6, 1.0, 1.0 + 1e-6, 1.5, 3.0, 10.0}) {
+    SCOPED_TRACE(testing::Message() << "r=" << r);
+    SolveOptions o = options(tol);
+    o.ends.naive = r < 0.99;  // closer to r = 1 the naive ε = exp(-πr/ω) underflows double
+    const CollisionResult result = solver.solve(ContactLaw::linear_dashpot(r), o);
+    ASSERT_TRUE(result.delayed_recovery);
+    const double t_delayed = delayed_end_time(r);
+    const double eps_delayed = -exact_velocity(r, t_delayed);
+    const double scale_d = std::min(eps_delayed, 1.0 - eps_delayed);
+    EXPECT_NEAR(result.delayed_recovery->eps, eps_delayed, tol * scale_d);
+    EXPECT_NEAR(result.delayed_recovery->one_minus_eps, 1.0 - eps_delayed, tol * scale_d);
+    EXPECT_NEAR(result.delayed_recovery->tau, t_delayed, 1e-8 * t_delayed);
+    if (o.ends.naive) {
+      ASSERT_TRUE(result.naive);
+      const double eps_naive = paper_naive_eps(r);
+      const double scale_n = std::min(eps_naive, 1.0 - eps_naive);
+      EXPECT_NEAR(result.naive->eps, eps_naive, tol * scale_n);
+      EXPECT_NEAR(result.naive->one_minus_eps, 1.0 - eps_naive, tol * scale_n);
+      EXPECT_NEAR(result.naive->tau, naive_end_time(r), 1e-8 * naive_end_time(r));
+      EXPECT_GT(result.delayed_recovery->eps, result.naive->eps);  // delayed recovery ends earlier, faster
+    }
+  }
+}
+
+TEST(DashpotSolver, BothMethodsMeetTheContractOnAGrid) {
+  CollisionSolver solver;
+  for (const Method method : {Method::bdf, Method::adams}) {
+    for (const double tol : {1e-6, 1e-10}) {
+      for (double r = 0.01; r <= 10.0; r *= 1.7) {
+        SCOPED_TRACE(testing::Message() << method_name(method) << " tol=" << tol << " r=" << r);
+        SolveOptions o = options(tol, method);
+        o.ends.naive = r < 0.99;
+        const CollisionResult result = solver.solve(ContactLaw::linear_dashpot(r), o);
+        const double eps = -exact_velocity(r, delayed_end_time(r));
+        EXPECT_NEAR(result.delayed_recovery->eps, eps, tol * std::min(eps, 1.0 - eps));
+        if (o.ends.naive) {
+          const double eps_n = paper_naive_eps(r);
+          EXPECT_NEAR(result.naive->eps, eps_n, tol * std::min(eps_n, 1.0 - eps_n));
+        }
+      }
+    }
+  }
+}
+
+TEST(DashpotSolver, NaiveEndOfOverdampedDashpotIsAnInputError) {
+  CollisionSolver solver;
+  SolveOptions o = options(1e-8);
+  o.ends.delayed_recovery = false;
+  EXPECT_THROW(solver.solve(ContactLaw::linear_dashpot(1.0), o), InvalidInput);
+  EXPECT_THROW(solver.solve(ContactLaw::linear_dashpot(2.0), o), InvalidInput);
+}
+
+}  // namespace
+}  // namespace restitution
