@@ -1,0 +1,14 @@
+#pragma once
+// Subcommands of the `restitution` program. Each add_*_command registers its options on the app and,
+// when its subcommand is chosen, stores the action to run after parsing. Actions return the exit status
+// and may throw restitution::InvalidInput (exit 2) or NumericalFailure (exit 1).
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace restitution::cli {
+
+using Action = std::function<int()>;
+
+void add_eps_command(CLI::App& app, Action& chosen);
+
+}  // namespace restitution::cli

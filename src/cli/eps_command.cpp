@@ -1,0 +1,95 @@
+// `restitution eps`: one collision, ε at the requested end(s), as a table or as one JSON object.
+#include <fmt/core.h>
+
+#include <memory>
+#include <optional>
+
+#include "cli/commands.hpp"
+#include "cli/json_writer.hpp"
+#include "cli/options.hpp"
+#include "cli/result_json.hpp"
+#include "restitution/collision_solver.hpp"
+#include "restitution/errors.hpp"
+
+namespace restitution::cli {
+namespace {
+
+struct EpsOptions {
+  std::optional<double> zeta, beta, velocity, damping_ratio;
+  std::string law = "viscoelastic-hertz";
+  SolverArguments solver;
+  bool json = false;
+};
+
+ContactLaw law_from(const EpsOptions& o) {
+  if (o.law == "linear-dashpot") {
+    if (o.zeta || o.beta || o.velocity)
+      throw InvalidInput("--law linear-dashpot takes --damping-ratio, not --zeta, --beta or --velocity");
+    if (!o.damping_ratio) throw InvalidInput("--law linear-dashpot needs --damping-ratio");
+    return ContactLaw::linear_dashpot(*o.damping_ratio);
+  }
+  if (o.damping_ratio) throw InvalidInput("--damping-ratio belongs to --law linear-dashpot");
+  if (o.zeta) {
+    if (o.beta || o.velocity) throw InvalidInput("give either --zeta or --beta with --velocity, not both");
+    return ContactLaw::hertz_natural(*o.zeta);
+  }
+  if (o.beta && o.velocity) return ContactLaw::hertz_scaled(*o.beta, *o.velocity);
+  if (o.beta || o.velocity) throw InvalidInput("--beta and --velocity go together");
+  throw InvalidInput("give --zeta, or --beta with --velocity");
+}
+
+void print_table(const CollisionResult& r) {
+  const bool hertz = r.law == LawKind::viscoelastic_hertz;
+  fmt::print("{} collision, {} = {}, tolerance {:g} (relative to min(eps, 1-eps)), method {}\n",
+             law_name(r.law), hertz ? "zeta" : "damping ratio r", r.parameter, r.tolerance,
+             method_name(r.method));
+  fmt::print("times and lengths in natural units (x'(0) = 1)\n");
+  fmt::print("  maximal compression   tau = {:.12g}   x = {:.12g}\n", r.max_compression.tau,
+             r.max_compression.x);
+  fmt::print("  {:<18} {:>22} {:>22} {:>20} {:>20}\n", "end", "eps", "1 - eps", "tau_c", "x_end");
+  auto row = [](const char* name, const EndResult& e) {
+    fmt::print("  {:<18} {:>22.15g} {:>22.15g} {:>20.12g} {:>20.12g}\n", name, e.eps, e.one_minus_eps, e.tau,
+               e.x);
+  };
+  if (r.naive) row("naive", *r.naive);
+  if (r.delayed_recovery) row("delayed-recovery", *r.delayed_recovery);
+  fmt::print("  solver: {} steps, {} right-hand sides, {} Jacobians, {} root functions\n", r.stats.steps,
+             r.stats.rhs_evaluations, r.stats.jacobian_evaluations, r.stats.root_evaluations);
+}
+
+int run_eps(const EpsOptions& o) {
+  const ContactLaw law = law_from(o);
+  CollisionSolver solver;
+  const CollisionResult result = solver.solve(law, solve_options(o.solver));
+  if (o.json) {
+    JsonWriter json;
+    json.begin_object();
+    write_collision_fields(json, result);
+    json.end_object();
+    fmt::print("{}\n", json.str());
+  } else {
+    print_table(result);
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_eps_command(CLI::App& app, Action& chosen) {
+  auto o = std::make_shared<EpsOptions>();
+  CLI::App* cmd = app.add_subcommand("eps", "coefficient of restitution of one collision");
+  cmd->add_option("--zeta", o->zeta, "zeta = beta v^{1/5} >= 0 (natural form of the equation)");
+  cmd->add_option("--beta", o->beta,
+                  "beta >= 0 in s^{1/5} m^{-1/5} (with --velocity: the 2008 paper's Eq. 23)");
+  cmd->add_option("--velocity", o->velocity, "impact speed v > 0 (scaled as in the 2008 paper's Eq. 23)");
+  cmd->add_option("--law", o->law, "contact law: viscoelastic-hertz or linear-dashpot")
+      ->check(CLI::IsMember({"viscoelastic-hertz", "linear-dashpot"}))
+      ->default_str("viscoelastic-hertz");
+  cmd->add_option("--damping-ratio", o->damping_ratio,
+                  "damping ratio r > 0 of the linear dash-pot x'' + 2r x' + x = 0");
+  add_solver_options(*cmd, o->solver);
+  cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
+  cmd->callback([o, &chosen] { chosen = [o] { return run_eps(*o); }; });
+}
+
+}  // namespace restitution::cli

@@ -1,0 +1,54 @@
+// The `restitution` program: parses the command line, runs one subcommand, maps errors to exit statuses
+// (2: bad usage or input, 1: numerical failure) with one line on stderr.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "restitution/errors.hpp"
+
+int main(int argc, char** argv) {
+  using namespace restitution;
+  CLI::App app{"restitution: coefficient of normal restitution of colliding viscoelastic spheres",
+               "restitution"};
+  app.require_subcommand(1);
+  cli::Action chosen;
+  cli::add_eps_command(app, chosen);
+
+  std::string known;
+  bool is_known = false;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    known += (known.empty() ? "" : ", ") + sub->get_name();
+    is_known = is_known || (argc > 1 && sub->get_name() == argv[1]);
+  }
+  if (argc > 1 && argv[1][0] != '-' && !is_known) {
+    std::fprintf(stderr, "restitution: error: unknown subcommand '%s' (known: %s)\n", argv[1], known.c_str());
+    return 2;
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::fputs(app.help().c_str(), stdout);
+    return 0;
+  } catch (const CLI::CallForAllHelp&) {
+    std::fputs(app.help("", CLI::AppFormatMode::All).c_str(), stdout);
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "restitution: error: %s\n", e.what());
+    return 2;
+  }
+
+  try {
+    return chosen ? chosen() : 2;
+  } catch (const InvalidInput& e) {
+    std::fprintf(stderr, "restitution: error: %s\n", e.what());
+    return 2;
+  } catch (const NumericalFailure& e) {
+    std::fprintf(stderr, "restitution: numerical failure: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "restitution: failure: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,49 @@
+#pragma once
+// Option vocabulary shared by the subcommands: names on the command line <-> library enums.
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "restitution/collision_solver.hpp"
+
+namespace restitution::cli {
+
+// --end, --tolerance, --method as given on the command line; resolved by the functions below.
+struct SolverArguments {
+  std::string end = "both";
+  double tolerance = 1e-10;
+  std::string method = "auto";
+};
+
+inline EndSelection end_selection(const std::string& end) {
+  return {end != "delayed-recovery", end != "naive"};
+}
+
+inline Method method_from(const std::string& name) {
+  if (name == "bdf") return Method::bdf;
+  if (name == "adams") return Method::adams;
+  return Method::automatic;
+}
+
+inline SolveOptions solve_options(const SolverArguments& a) {
+  SolveOptions options;
+  options.ends = end_selection(a.end);
+  options.tolerance = a.tolerance;
+  options.method = method_from(a.method);
+  return options;
+}
+
+inline void add_solver_options(CLI::App& command, SolverArguments& a) {
+  command
+      .add_option("--end", a.end, "end of the collision: naive (x = 0), delayed-recovery (force = 0) or both")
+      ->check(CLI::IsMember({"naive", "delayed-recovery", "both"}))
+      ->capture_default_str();
+  command
+      .add_option("--tolerance", a.tolerance,
+                  "accuracy of eps relative to min(eps, 1 - eps), in [1e-11, 1e-2]")
+      ->capture_default_str();
+  command.add_option("--method", a.method, "integration method: bdf, adams or auto (chosen per regime)")
+      ->check(CLI::IsMember({"bdf", "adams", "auto"}))
+      ->capture_default_str();
+}
+
+}  // namespace restitution::cli

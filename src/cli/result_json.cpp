@@ -1,0 +1,39 @@
+#include "cli/result_json.hpp"
+
+namespace restitution::cli {
+namespace {
+
+void write_end(JsonWriter& json, const char* name, const EndResult& end) {
+  json.key(name).begin_object();
+  json.field("eps", end.eps)
+      .field("one_minus_eps", end.one_minus_eps)
+      .field("tau", end.tau)
+      .field("x", end.x);
+  json.end_object();
+}
+
+}  // namespace
+
+void write_collision_fields(JsonWriter& json, const CollisionResult& result) {
+  const bool hertz = result.law == LawKind::viscoelastic_hertz;
+  json.field(hertz ? "zeta" : "damping_ratio", result.parameter);
+  json.field("law", law_name(result.law));
+  json.field("tolerance", result.tolerance);
+  json.field("method", method_name(result.method));
+  json.key("max_compression").begin_object();
+  json.field("tau", result.max_compression.tau).field("x", result.max_compression.x);
+  json.end_object();
+  if (result.naive) write_end(json, "naive", *result.naive);
+  if (result.delayed_recovery) write_end(json, "delayed_recovery", *result.delayed_recovery);
+  const SolverStats& s = result.stats;
+  json.key("stats").begin_object();
+  json.field("steps", s.steps)
+      .field("rhs_evaluations", s.rhs_evaluations)
+      .field("jacobian_evaluations", s.jacobian_evaluations)
+      .field("root_evaluations", s.root_evaluations)
+      .field("error_test_failures", s.error_test_failures)
+      .field("convergence_failures", s.convergence_failures);
+  json.end_object();
+}
+
+}  // namespace restitution::cli

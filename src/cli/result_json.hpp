@@ -1,0 +1,12 @@
+#pragma once
+// The JSON form of a CollisionResult (the `restitution eps --json` contract), reusable by other commands.
+#include "cli/json_writer.hpp"
+#include "restitution/collision_solver.hpp"
+
+namespace restitution::cli {
+
+// Writes the members of the eps contract into the currently open object:
+// zeta|damping_ratio, law, tolerance, method, max_compression, naive, delayed_recovery, stats.
+void write_collision_fields(JsonWriter& json, const CollisionResult& result);
+
+}  // namespace restitution::cli

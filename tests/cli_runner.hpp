@@ -1,0 +1,47 @@
+#pragma once
+// Runs the `restitution` executable for end-to-end tests: captures stdout, stderr and the exit status.
+#include <sys/wait.h>
+#include <unistd.h>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace restitution::test_support {
+
+struct CliOutcome {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+inline std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+// `arguments` is appended to the executable's path as given (shell syntax: quote what needs quoting).
+inline CliOutcome run_cli(const std::string& arguments) {
+  char out_name[] = "/tmp/restitution-cli-out-XXXXXX";
+  char err_name[] = "/tmp/restitution-cli-err-XXXXXX";
+  const int out_fd = mkstemp(out_name);
+  const int err_fd = mkstemp(err_name);
+  close(out_fd);
+  close(err_fd);
+  const std::string command =
+      std::string(RESTITUTION_EXE) + " " + arguments + " >" + out_name + " 2>" + err_name + " </dev/null";
+  const int raw = std::system(command.c_str());
+  CliOutcome outcome;
+  outcome.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  outcome.out = slurp(out_name);
+  outcome.err = slurp(err_name);
+  std::remove(out_name);
+  std::remove(err_name);
+  return outcome;
+}
+
+}  // namespace restitution::test_support
