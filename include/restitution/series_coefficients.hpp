@@ -9,8 +9,10 @@ namespace restitution::series {
 
 // Coefficients rounded to double, computed in __float128. Index k holds the coefficient of ζ^k (a, b, c)
 // or ζ^{k/2} (h): a[0] = 0, c[0] = 1, h[0] = 1. a, b, c have order + 1 entries, h has 2·order + 1.
+// v: velocity ratio at the premature end of the inverse collision with damping -w, V = Σ v_j λ^j in
+// λ = w^{5/2} (2008 paper, Eq. C5: v_1 = 4/15, v_2 = 13/150, ...), order·2/5 + 1 entries.
 struct Coefficients {
-  std::vector<double> a, b, c, h;
+  std::vector<double> a, b, c, h, v;
 };
 // order in [1, kMaxOrder]; throws InvalidInput naming `order` otherwise. Cost grows like order²:
 // about 0.2 s for order 40.

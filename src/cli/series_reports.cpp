@@ -116,7 +116,7 @@ int run_series_validation(const std::string& folder_name) {
   write_file_atomically(json, validation_json(report));
   print_validation_summary(report);
   const std::string why = run_plot_script("series_validation", {csv.string(), png.string()});
-  if (!why.empty()) std::fprintf(stderr, "restitution: warning: no plot: %s\n", why.c_str());
+  if (!why.empty()) std::fprintf(stderr, "restitution: warning: %s\n", why.c_str());
   fmt::print("wrote {}, {}{}\n", csv.string(), json.string(), why.empty() ? ", " + png.string() : "");
   return 0;
 }

@@ -64,7 +64,7 @@ std::vector<CertifiedValue> certify_all(const std::vector<Quad>& low, const std:
 Coefficients compute_coefficients(int order) {
   check_order(order);
   const auto g = detail::generate<Quad>(order, kTruncationDouble);
-  return {to_double(g.a), to_double(g.b), to_double(g.c), to_double(g.h)};
+  return {to_double(g.a), to_double(g.b), to_double(g.c), to_double(g.h), to_double(g.v)};
 }
 
 CertifiedCoefficients certify_coefficients(int order) {

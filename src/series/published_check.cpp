@@ -44,8 +44,8 @@ std::vector<PublishedCheck> check_published_tables(const CertifiedCoefficients& 
   add(out, "1999 Eqs. (A32)-(A34)", "C", 1, published::kAppendixC, certified.c);
   add(out, "1999 Eqs. (A24)-(A27)", "y", 0, published::kAppendixY, certified.b);
   // a_k of the series in w = C1 ζ: c_k = (-1)^k a_k C1^k.
-  add_one(out, "1999 Eqs. (33), (A35)", "a(w)", 3, published::kA3, -certified.c[3].approx / std::pow(c1, 3));
-  add_one(out, "1999 Eqs. (33), (A36)", "a(w)", 4, published::kA4, certified.c[4].approx / std::pow(c1, 4));
+  add_one(out, "1999 Eqs. (33)/(A35)", "a(w)", 3, published::kA3, -certified.c[3].approx / std::pow(c1, 3));
+  add_one(out, "1999 Eqs. (33)/(A36)", "a(w)", 4, published::kA4, certified.c[4].approx / std::pow(c1, 4));
   return out;
 }
 

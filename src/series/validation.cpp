@@ -127,6 +127,17 @@ RadiusEstimate estimate_radius(const std::string& name, const std::vector<double
   for (int k = n - n / 3; k <= n; ++k)
     if (coef[k] != 0.0) root = std::min(root, std::pow(std::abs(coef[k]), -1.0 / k));
   r.root = std::pow(root, power);
+  // Ratio and Domb-Sykes need a regular sign pattern (constant or alternating: a singularity on the real
+  // axis); complex singularities make the ratios oscillate and only the root test applies.
+  bool same = true, alternating = true;
+  for (int k = n / 2 + 1; k <= n; ++k) {
+    same = same && coef[k] * coef[k - 1] > 0.0;
+    alternating = alternating && coef[k] * coef[k - 1] < 0.0;
+  }
+  if (!same && !alternating) {
+    r.ratio = r.domb_sykes = r.domb_sykes_slope = kNaN;
+    return r;
+  }
   std::vector<double> inverse_k, ratios;
   for (int k = n / 2; k <= n; ++k) {
     if (coef[k - 1] == 0.0) continue;
@@ -190,6 +201,7 @@ ValidationReport validate(const ValidationOptions& options) {
   report.radii.push_back(estimate_radius("b", computed.b, false));
   report.radii.push_back(estimate_radius("c", computed.c, false));
   report.radii.push_back(estimate_radius("h", computed.h, true));
+  if (computed.v.size() >= 8) report.radii.push_back(estimate_radius("v", computed.v, false));
   return report;
 }
 
