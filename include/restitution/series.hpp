@@ -14,8 +14,8 @@ struct Value {
 };
 
 // Closed forms of the undamped collision and of C1 (1999 paper, Eq. 30; 2008 paper, Eq. 28).
-double c1_closed_form();         // sqrt(π)/(2^{1/5} 5^{2/5}) Γ(3/5)/Γ(21/10) = 1.1534488580952888
-double undamped_max_time();      // τ_max0 = (4/5)^{3/5} Γ(2/5) Γ(1/2) / (2 Γ(9/10)) = 1.6093...
+double c1_closed_form();            // sqrt(π)/(2^{1/5} 5^{2/5}) Γ(3/5)/Γ(21/10) = 1.1534488580952888
+double undamped_max_time();         // τ_max0 = (4/5)^{3/5} Γ(2/5) Γ(1/2) / (2 Γ(9/10)) = 1.6093...
 double undamped_max_compression();  // b_0 = (5/4)^{2/5}
 
 // Naive series ε = 1 + Σ_{k=1}^{N} c_k ζ^k; c holds c_1 ... c_N.

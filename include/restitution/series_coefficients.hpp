@@ -22,9 +22,9 @@ Coefficients compute_coefficients(int order);
 // One coefficient computed twice: in __float128 with the trajectory series truncated at q^45
 // (q = τ^{5/2}) and with 50 significant decimal digits (Boost cpp_bin_float_50) truncated at q^60.
 struct CertifiedValue {
-  std::string value;   // the 50-digit result, printed with `digits` significant digits (at least 1)
-  double approx = 0;   // the same rounded to double
-  int digits = 0;      // significant decimal digits on which both computations agree (capped at 32)
+  std::string value;  // the 50-digit result, printed with `digits` significant digits (at least 1)
+  double approx = 0;  // the same rounded to double
+  int digits = 0;     // significant decimal digits on which both computations agree (capped at 32)
 };
 struct CertifiedCoefficients {
   std::vector<CertifiedValue> a, b, c, h;  // same indexing as Coefficients

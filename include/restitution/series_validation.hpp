@@ -25,15 +25,15 @@ struct Candidate {
 };
 
 struct PointError {
-  Value value;                       // the approximation at ζ
-  double relative_error_eps = 0;     // |ε_a - ε| / ε
+  Value value;                          // the approximation at ζ
+  double relative_error_eps = 0;        // |ε_a - ε| / ε
   double relative_error_one_minus = 0;  // |(1-ε)_a - (1-ε)| / (1-ε)
 };
 
 struct ValidationRow {
   double zeta = 0;
-  Value naive, delayed;             // solver
-  std::vector<PointError> errors;   // one per candidate, same order as ValidationReport::candidates
+  Value naive, delayed;            // solver
+  std::vector<PointError> errors;  // one per candidate, same order as ValidationReport::candidates
 };
 
 // First grid ζ at which the relative error exceeds the threshold (NaN: never on the grid).
@@ -59,13 +59,13 @@ struct CandidateSummary {
 // Radius of convergence in ζ from the coefficients of Σ coef_k x^k with x = ζ (or x = sqrt(ζ), then
 // the radius in ζ is the square of the one in x).
 struct RadiusEstimate {
-  std::string series;         // "a", "b", "c" (in ζ), "h" (in sqrt ζ), "v" (in λ = w^{5/2}, radius in λ)
+  std::string series;  // "a", "b", "c" (in ζ), "h" (in sqrt ζ), "v" (in λ = w^{5/2}, radius in λ)
   int terms = 0;
   // ratio, domb_sykes and domb_sykes_slope are NaN when the signs of the last half are neither constant
   // nor alternating (complex singularities).
-  double ratio = 0;           // |coef_{N-1}/coef_N| (in ζ)
-  double root = 0;            // min over the last third of |coef_k|^{-1/k} (in ζ)
-  double domb_sykes = 0;      // 1/|intercept| of coef_k/coef_{k-1} against 1/k over the last half (in ζ)
+  double ratio = 0;             // |coef_{N-1}/coef_N| (in ζ)
+  double root = 0;              // min over the last third of |coef_k|^{-1/k} (in ζ)
+  double domb_sykes = 0;        // 1/|intercept| of coef_k/coef_{k-1} against 1/k over the last half (in ζ)
   double domb_sykes_slope = 0;  // slope of that fit: -(1+g)/R for a singularity (1 ∓ ζ/R)^g
 };
 

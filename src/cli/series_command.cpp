@@ -22,8 +22,8 @@ using series::Coefficients;
 using series::kMaxOrder;
 
 const std::vector<std::string> kSeriesKinds = {"naive", "delayed-recovery", "max-compression"};
-const std::vector<std::string> kEvalKinds = {"naive",           "delayed-recovery", "pade-1999",
-                                             "simple-theory-1999", "pade-2011-1-4", "pade-2011-3-6"};
+const std::vector<std::string> kEvalKinds = {
+    "naive", "delayed-recovery", "pade-1999", "simple-theory-1999", "pade-2011-1-4", "pade-2011-3-6"};
 
 // Largest count per kind: c_1..c_N and a/b need order N, h_0..h_N order ceil(N/2).
 int max_count(const std::string& kind) {
@@ -35,7 +35,8 @@ int order_for(const std::string& kind, int count) {
 
 void check_count(const std::string& option, const std::string& kind, int count) {
   if (count < 1 || count > max_count(kind))
-    throw InvalidInput(fmt::format("{} {} out of range [1, {}] for --kind {}", option, count, max_count(kind), kind));
+    throw InvalidInput(
+        fmt::format("{} {} out of range [1, {}] for --kind {}", option, count, max_count(kind), kind));
 }
 
 std::vector<double> slice(const std::vector<double>& v, int first, int last) {
@@ -70,7 +71,9 @@ int run_coefficients(const CoefficientsOptions& o) {
     write_array(json, "a", a);
     write_array(json, "b", b);
     if (!o.json) {
-      fmt::print("maximal compression, natural units: tau_max = tau_max0 + sum a_k zeta^k, x_max = sum b_k zeta^k\n");
+      fmt::print(
+          "maximal compression, natural units: tau_max = tau_max0 + sum a_k zeta^k, x_max = sum b_k "
+          "zeta^k\n");
       fmt::print("  tau_max0 = {:.17g}\n", series::undamped_max_time());
       print_column("a", 1, a);
       print_column("b", 0, b);
@@ -118,7 +121,8 @@ series::Value evaluate(const EvalOptions& o, int& terms_used) {
                                    terms_used, available, o.kind, o.coefficients));
   if (published) {
     if (naive) return series::naive_series(o.zeta, std::span(series::published::kTable3C).first(terms_used));
-    return series::delayed_recovery_series(o.zeta, std::span(series::published::kTable5H).first(terms_used + 1));
+    return series::delayed_recovery_series(o.zeta,
+                                           std::span(series::published::kTable5H).first(terms_used + 1));
   }
   const Coefficients k = series::compute_coefficients(order_for(o.kind, terms_used));
   if (naive) return series::naive_series(o.zeta, slice(k.c, 1, terms_used));
@@ -156,7 +160,8 @@ void add_coefficients(CLI::App& parent, Action& chosen) {
 void add_eval(CLI::App& parent, Action& chosen) {
   auto o = std::make_shared<EvalOptions>();
   CLI::App* cmd = parent.add_subcommand("eval", "evaluate one series or approximation at zeta");
-  cmd->add_option("--kind", o->kind, "naive, delayed-recovery, pade-1999, simple-theory-1999, pade-2011-1-4, pade-2011-3-6")
+  cmd->add_option("--kind", o->kind,
+                  "naive, delayed-recovery, pade-1999, simple-theory-1999, pade-2011-1-4, pade-2011-3-6")
       ->required()
       ->check(CLI::IsMember(kEvalKinds));
   cmd->add_option("--zeta", o->zeta, "zeta = beta v^{1/5} >= 0")->required();

@@ -21,8 +21,8 @@ std::string validation_csv(const series::ValidationReport& r) {
     csv += fmt::format(",{0}_eps,{0}_one_minus_eps,{0}_rel_err_eps,{0}_rel_err_one_minus_eps", c.name);
   csv += "\n";
   for (const auto& row : r.rows) {
-    csv += number17(row.zeta) + "," + number17(row.naive.eps) + "," + number17(row.naive.one_minus_eps) + "," +
-           number17(row.delayed.eps) + "," + number17(row.delayed.one_minus_eps);
+    csv += number17(row.zeta) + "," + number17(row.naive.eps) + "," + number17(row.naive.one_minus_eps) +
+           "," + number17(row.delayed.eps) + "," + number17(row.delayed.one_minus_eps);
     for (const auto& e : row.errors)
       csv += "," + number17(e.value.eps) + "," + number17(e.value.one_minus_eps) + "," +
              number17(e.relative_error_eps) + "," + number17(e.relative_error_one_minus);
@@ -100,7 +100,8 @@ void print_validation_summary(const series::ValidationReport& r) {
   }
   fmt::print("convergence radius in zeta (ratio / root / Domb-Sykes):\n");
   for (const auto& x : r.radii)
-    fmt::print("  {} ({} terms): {:.4g} / {:.4g} / {:.4g}\n", x.series, x.terms, x.ratio, x.root, x.domb_sykes);
+    fmt::print("  {} ({} terms): {:.4g} / {:.4g} / {:.4g}\n", x.series, x.terms, x.ratio, x.root,
+               x.domb_sykes);
 }
 
 }  // namespace
@@ -135,7 +136,7 @@ int run_series_certify(int order, const std::string& file) {
   std::string published = "source,symbol,k,published,recomputed,printed_digits,correct_digits\n";
   if (order >= 10)
     for (const auto& p : series::check_published_tables(k))
-      published += fmt::format("{},{},{},{},{},{},{}\n", p.source, p.symbol, p.index, number17(p.published),
+      published += fmt::format("{},{},{},{},{},{},{}\n", p.source, p.symbol, p.index, p.published,
                                number17(p.recomputed), p.digits.printed, p.digits.correct);
   if (file.empty()) {
     fmt::print("{}\n{}", csv, published);

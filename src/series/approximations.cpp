@@ -3,9 +3,9 @@
 #include <string>
 
 #include "restitution/errors.hpp"
-#include "series/arguments.hpp"
 #include "restitution/series.hpp"
 #include "restitution/series_tables.hpp"
+#include "series/arguments.hpp"
 
 namespace restitution::series {
 namespace {

@@ -311,10 +311,10 @@ Series<T> delayed_restitution(const Series<T>& c, const Series<T>& v, int sigma_
 
 template <typename T>
 T undamped_max_time() {
+  using std::atan;
   using std::pow;
   using std::sqrt;
   using std::tgamma;
-  using std::atan;
   const T pi = T(4) * atan(T(1));
   return pow(T(4) / T(5), T(3) / T(5)) * tgamma(T(2) / T(5)) * sqrt(pi) / (T(2) * tgamma(T(9) / T(10)));
 }

@@ -3,8 +3,8 @@
 #include <numbers>
 
 #include "restitution/errors.hpp"
-#include "series/arguments.hpp"
 #include "restitution/series.hpp"
+#include "series/arguments.hpp"
 
 namespace restitution::series {
 namespace {

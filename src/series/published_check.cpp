@@ -18,12 +18,13 @@ void add(std::vector<PublishedCheck>& out, const char* source, const char* symbo
     const int k = first_index + static_cast<int>(i);
     const double value = recomputed.at(static_cast<std::size_t>(k)).approx;
     const int digits = printed.empty() ? 0 : printed[i];
-    out.push_back({source, symbol, k, published[i], value, check_published_digits(published[i], digits, value)});
+    out.push_back(
+        {source, symbol, k, published[i], value, check_published_digits(published[i], digits, value)});
   }
 }
 
-void add_one(std::vector<PublishedCheck>& out, const char* source, const char* symbol, int k, double published,
-             double recomputed) {
+void add_one(std::vector<PublishedCheck>& out, const char* source, const char* symbol, int k,
+             double published, double recomputed) {
   out.push_back({source, symbol, k, published, recomputed, check_published_digits(published, 0, recomputed)});
 }
 

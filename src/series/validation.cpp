@@ -67,8 +67,8 @@ std::vector<Approximant> approximants(const ValidationOptions& o, const Coeffici
 
 std::vector<double> log_grid(const ValidationOptions& o) {
   if (!(o.zeta_min > 0.0) || !(o.zeta_max > o.zeta_min) || !std::isfinite(o.zeta_max))
-    throw InvalidInput(fmt::format("validation grid needs 0 < zeta_min < zeta_max, got [{}, {}]", o.zeta_min,
-                                   o.zeta_max));
+    throw InvalidInput(
+        fmt::format("validation grid needs 0 < zeta_min < zeta_max, got [{}, {}]", o.zeta_min, o.zeta_max));
   if (o.points_per_decade < 1) throw InvalidInput("validation points_per_decade must be >= 1");
   const double decades = std::log10(o.zeta_max / o.zeta_min);
   const int intervals = std::max(1, static_cast<int>(std::ceil(decades * o.points_per_decade - 1e-9)));
@@ -157,7 +157,8 @@ ValidationReport validate(const ValidationOptions& options) {
                                    options.naive_order, kMaxOrder, options.delayed_order, 2 * kMaxOrder));
   ValidationReport report;
   report.options = options;
-  const Coefficients computed = compute_coefficients(std::max(options.naive_order, (options.delayed_order + 1) / 2));
+  const Coefficients computed =
+      compute_coefficients(std::max(options.naive_order, (options.delayed_order + 1) / 2));
   const std::vector<Approximant> approx = approximants(options, computed);
   for (const Approximant& a : approx) report.candidates.push_back(a.candidate);
 
@@ -190,9 +191,8 @@ ValidationReport validate(const ValidationOptions& options) {
     const EndResult& e0 = delayed ? *at.delayed_recovery : *at.naive;
     const EndResult& e1 = delayed ? *after.delayed_recovery : *after.naive;
     s.large_zeta.solver_slope = local_slope(kLargeZetaStep, e0.eps, e1.eps);
-    s.large_zeta.approximation_slope =
-        local_slope(kLargeZetaStep, approx[i].evaluate(kLargeZeta).eps,
-                    approx[i].evaluate(kLargeZeta * kLargeZetaStep).eps);
+    s.large_zeta.approximation_slope = local_slope(kLargeZetaStep, approx[i].evaluate(kLargeZeta).eps,
+                                                   approx[i].evaluate(kLargeZeta * kLargeZetaStep).eps);
     s.large_zeta.implied_exponent = implied_large_zeta_exponent(closed_form_kind(approx[i].candidate.name));
     report.summaries.push_back(s);
   }
