@@ -17,6 +17,7 @@ int run(int argc, char** argv) {
   app.require_subcommand(1);
   cli::Action chosen;
   cli::add_eps_command(app, chosen);
+  cli::add_series_command(app, chosen);
 
   std::string known;
   bool is_known = false;
