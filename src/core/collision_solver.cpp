@@ -187,7 +187,8 @@ class CollisionRun {
   Point compression_phase(double u0, double u_stop, const State& state, bool is_start) {
     form_ = Form::compression;
     detail::PhaseSettings settings{Form::compression, plan_.relative_tolerance,
-                                   plan_.absolute_tolerance_compression, u_stop};
+                                   plan_.absolute_tolerance_compression, u_stop,
+                                   options_.max_steps_per_phase};
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
     if (is_start) {
@@ -233,7 +234,7 @@ class CollisionRun {
   Point time_phase(Form form, double tau0, const State& state, double switch_x) {
     form_ = form;
     detail::PhaseSettings settings{form, plan_.relative_tolerance, plan_.absolute_tolerance_time,
-                                   plan_.time_limit};
+                                   plan_.time_limit, options_.max_steps_per_phase};
     settings.switch_x = switch_x;
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
