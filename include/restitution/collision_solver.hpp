@@ -28,7 +28,7 @@ struct SolveOptions {
   // (DESIGN.md §4). false integrates in τ throughout, for comparison.
   bool smooth_ends = true;
   // Bound on CVODE's internal steps in each phase of the collision. A solve that needs more fails with
-  // NumericalFailure (CVODE flag -1, "too much work"): Adams on the stiff large-ζ relaxation does.
+  // NumericalFailure ("too much work"): Adams on the stiff large-ζ relaxation does.
   long max_steps_per_phase = 1000000;
 };
 

@@ -90,7 +90,9 @@ Prefactor naive_prefactor() {
   const double coarse = terminal_velocity(kStart, kSteps);
   const double fine = terminal_velocity(kStart, 2 * kSteps);
   const double extrapolated = fine + (fine - coarse) / 15.0;  // RK4: error ∝ h^4
-  return {-extrapolated, std::abs(fine - coarse) / 15.0 + 4.0 * std::abs(extrapolated) * 1e-16 * kSteps};
+  // Rounding errors add up like a random walk over the steps.
+  return {-extrapolated,
+          std::abs(fine - coarse) / 15.0 + std::abs(extrapolated) * 1e-16 * std::sqrt(2.0 * kSteps)};
 }
 
 double naive_eps(double zeta, double kappa) {
