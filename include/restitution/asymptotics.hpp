@@ -1,6 +1,6 @@
 #pragma once
-// Derived large-ζ laws of ε for both ends of the collision, and the small-ζ constant C1 they are checked
-// beside. Natural units (x'(0) = 1); the derivation is in docs/asymptotics.md.
+// Derived large-ζ laws of ε for both ends of the collision. Natural units (x'(0) = 1); the derivation is in
+// docs/asymptotics.md.
 //
 // With x = ζ^{-2/3} X, τ = ζ^{-2/3} T the equation becomes X'' + sqrt(X) X' + δ X^{3/2} = 0, δ = ζ^{-5/3}.
 //  * delayed recovery (X' = -δX): ε = δ X_m [1 - δ (T_e - 5/(2q)) + O(δ² ln² δ)], X_m = (3/2)^{2/3},
@@ -41,9 +41,5 @@ Prefactor naive_prefactor();
 
 // κ ζ^{-5}; throws InvalidInput for zeta <= 0.
 double naive_eps(double zeta, double kappa);
-
-// C1 = sqrt(π) Γ(3/5) / (2^{1/5} 5^{2/5} Γ(21/10)) ≈ 1.1534: 1 - ε = C1 ζ - (3/5) C1² ζ² + O(ζ^{5/2}) at
-// small ζ (1999 paper, Eq. 30; the second coefficient is the 2008 paper's c_2 = 0.798 of Eq. 42).
-double small_zeta_c1();
 
 }  // namespace restitution::asymptotics

@@ -100,9 +100,4 @@ double naive_eps(double zeta, double kappa) {
   return kappa * std::pow(zeta, kNaiveExponent);
 }
 
-double small_zeta_c1() {
-  return std::sqrt(std::numbers::pi) * std::tgamma(0.6) /
-         (std::pow(2.0, 0.2) * std::pow(5.0, 0.4) * std::tgamma(2.1));
-}
-
 }  // namespace restitution::asymptotics
