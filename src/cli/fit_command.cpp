@@ -62,8 +62,10 @@ int run_fit(const FitOptions& o) {
     json.key("derived").begin_object();
     json.field("exponent_zeta", derived.exponent).field("prefactor", derived.prefactor).end_object();
     json.key("local_slopes").begin_array();
-    for (const LocalSlope& s : slopes) {
+    for (std::size_t i = 0; i < slopes.size(); ++i) {
+      const LocalSlope& s = slopes[i];
       json.begin_object().field("zeta", s.zeta).field("slope", s.slope).field("error", s.error_estimate);
+      json.field("eps", eps[i]);
       json.end_object();
     }
     json.end_array().end_object();
