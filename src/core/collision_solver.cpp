@@ -156,6 +156,7 @@ class CollisionRun {
 
   void begin(const detail::PhaseSettings& settings, double t0, const State& state, const Event* events,
              int count) {
+    phase_steps_ = 0;
     try {
       integrator_.start(law_, settings, t0, state, events, count);
     } catch (const NumericalFailure& e) {
@@ -164,6 +165,12 @@ class CollisionRun {
   }
 
   CvodeIntegrator::Step advance() {
+    // CVODE's own step bound counts per call, and every call here is one step: count them here.
+    if (++phase_steps_ > options_.max_steps_per_phase) {
+      add(result_.value.stats, integrator_.phase_stats());
+      throw failure(
+          fmt::format("too much work: more than {} steps in one phase", options_.max_steps_per_phase));
+    }
     try {
       CvodeIntegrator::Step step = integrator_.advance();
       if (options_.keep_trajectory) record(point_of(form_, step.t, step.state));
@@ -286,6 +293,7 @@ class CollisionRun {
   const detail::SolvePlan& plan_;
   CvodeIntegrator& integrator_;
   Form form_ = Form::time;
+  long phase_steps_ = 0;
   Accumulated result_;
 };
 

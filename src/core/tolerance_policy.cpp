@@ -66,6 +66,10 @@ void check_request(const ContactLaw& law, const SolveOptions& options) {
     throw InvalidInput(
         fmt::format("tolerance must lie in [{:g}, {:g}], got {}", kMinTolerance, kMaxTolerance, tol));
   }
+  if (options.max_steps_per_phase < 1) {
+    throw InvalidInput(
+        fmt::format("max_steps_per_phase must be positive, got {}", options.max_steps_per_phase));
+  }
   if (!options.ends.naive && !options.ends.delayed_recovery) {
     throw InvalidInput("no end of the collision requested: ask for naive, delayed-recovery or both");
   }
