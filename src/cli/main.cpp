@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/parse_errors.hpp"
 #include "restitution/errors.hpp"
 
 int main(int argc, char** argv) {
@@ -15,6 +16,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   cli::Action chosen;
   cli::add_eps_command(app, chosen);
+  cli::add_sweep_command(app, chosen);
 
   std::string known;
   bool is_known = false;
@@ -35,7 +37,7 @@ int main(int argc, char** argv) {
     std::fputs(app.help("", CLI::AppFormatMode::All).c_str(), stdout);
     return 0;
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "restitution: error: %s\n", e.what());
+    std::fprintf(stderr, "restitution: error: %s\n", cli::describe_parse_error(app, e).c_str());
     return 2;
   }
 
