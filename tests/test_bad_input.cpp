@@ -24,6 +24,9 @@ const std::vector<BadInput> kCases = {
     // The program and its subcommands.
     {"", "subcommand is required"},
     {"frobnicate --zeta 1", "unknown subcommand 'frobnicate'"},
+    // A line break inside an argument is echoed as '?': the error stays one line.
+    {"\"$(printf 'two\\nlines')\" --zeta 1", "unknown subcommand 'two?lines'"},
+    {"eps --zeta \"$(printf '1\\n2')\"", "--zeta expects a number, got '1?2'"},
     {"eps --bogus 1", "--bogus"},
     {"eps --zeta 1 3", "3"},
     // eps: the law and its parameters.

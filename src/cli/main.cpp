@@ -25,7 +25,8 @@ int main(int argc, char** argv) {
     is_known = is_known || (argc > 1 && sub->get_name() == argv[1]);
   }
   if (argc > 1 && argv[1][0] != '-' && !is_known) {
-    std::fprintf(stderr, "restitution: error: unknown subcommand '%s' (known: %s)\n", argv[1], known.c_str());
+    std::fprintf(stderr, "restitution: error: unknown subcommand '%s' (known: %s)\n",
+                 cli::one_line(argv[1]).c_str(), known.c_str());
     return 2;
   }
   try {
@@ -44,13 +45,13 @@ int main(int argc, char** argv) {
   try {
     return chosen ? chosen() : 2;
   } catch (const InvalidInput& e) {
-    std::fprintf(stderr, "restitution: error: %s\n", e.what());
+    std::fprintf(stderr, "restitution: error: %s\n", cli::one_line(e.what()).c_str());
     return 2;
   } catch (const NumericalFailure& e) {
-    std::fprintf(stderr, "restitution: numerical failure: %s\n", e.what());
+    std::fprintf(stderr, "restitution: numerical failure: %s\n", cli::one_line(e.what()).c_str());
     return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "restitution: failure: %s\n", e.what());
+    std::fprintf(stderr, "restitution: failure: %s\n", cli::one_line(e.what()).c_str());
     return 1;
   }
 }

@@ -27,10 +27,24 @@ std::string expected_value(const CLI::Option* option) {
   return "a valid " + type;
 }
 
+std::string describe(const CLI::App& app, const std::string& message);
+
 }  // namespace
 
+std::string one_line(std::string message) {
+  for (char& c : message) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  }
+  return message;
+}
+
 std::string describe_parse_error(const CLI::App& app, const CLI::ParseError& error) {
-  const std::string message = error.what();
+  return one_line(describe(app, error.what()));
+}
+
+namespace {
+
+std::string describe(const CLI::App& app, const std::string& message) {
   // CLI11: "Could not convert: --zeta = abc" for a value of the wrong type.
   constexpr std::string_view kConversion = "Could not convert: ";
   if (message.rfind(kConversion, 0) == 0) {
@@ -55,4 +69,5 @@ std::string describe_parse_error(const CLI::App& app, const CLI::ParseError& err
   return message;
 }
 
+}  // namespace
 }  // namespace restitution::cli
