@@ -142,11 +142,11 @@ class CollisionRun {
            (options_.ends.delayed_recovery && !result_.value.delayed_recovery);
   }
 
-  NumericalFailure failure(const std::string& what) const {
+  [[nodiscard]] NumericalFailure failure(const std::string& what) const {
     const char* parameter = law_.kind == LawKind::viscoelastic_hertz ? "zeta" : "damping-ratio";
-    return NumericalFailure(
+    return NumericalFailure{
         fmt::format("{} (law {}, {}={}, {}, tolerance {:g}, method {})", what, law_name(law_.kind), parameter,
-                    law_.parameter, end_names(options_.ends), options_.tolerance, method_name(plan_.method)));
+                    law_.parameter, end_names(options_.ends), options_.tolerance, method_name(plan_.method))};
   }
 
   void record(const Point& p) {
