@@ -93,12 +93,11 @@ SweepSummary run_sweep(const std::vector<double>& zetas, const SolveOptions& opt
   if (!control.already_done.empty() && control.already_done.size() != zetas.size()) {
     throw InvalidInput("already_done must be empty or hold one flag per point of the sweep");
   }
-  std::size_t skipped = 0;
-  for (std::size_t i = 0; i < zetas.size(); ++i)
-    skipped += i < control.already_done.size() && control.already_done[i];
+  const auto skipped =
+      static_cast<std::size_t>(std::count(control.already_done.begin(), control.already_done.end(), true));
   const std::size_t remaining = zetas.size() - skipped;
   unsigned threads =
-      control.threads != 0 ? control.threads : std::max(1u, std::thread::hardware_concurrency());
+      control.threads != 0 ? control.threads : std::max(1U, std::thread::hardware_concurrency());
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(remaining, 1)));
   SweepSummary summary = SweepRun(zetas, options, control).run(threads);
   summary.skipped = skipped;

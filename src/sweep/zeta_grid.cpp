@@ -34,7 +34,7 @@ std::vector<double> zeta_values(const ZetaGrid& grid) {
     throw InvalidInput("logarithmic spacing needs zeta-min > 0");
   }
   std::vector<double> zetas(grid.points);
-  const double last = static_cast<double>(grid.points - 1);
+  const auto last = static_cast<double>(grid.points - 1);
   const double lo = grid.logarithmic ? std::log(grid.zeta_min) : grid.zeta_min;
   const double hi = grid.logarithmic ? std::log(grid.zeta_max) : grid.zeta_max;
   for (std::size_t i = 0; i < grid.points; ++i) {
