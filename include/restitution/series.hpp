@@ -3,7 +3,6 @@
 // Every evaluator returns ε and 1 - ε, the latter without cancellation as ε -> 1. Coefficients are
 // passed in (published tables: series_tables.hpp; recomputed ones: series_coefficients.hpp).
 #include <span>
-#include <string>
 #include <vector>
 
 namespace restitution::series {
