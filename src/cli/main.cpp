@@ -15,6 +15,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   cli::Action chosen;
   cli::add_eps_command(app, chosen);
+  cli::add_calibrate_command(app, chosen);
+  cli::add_run_command(app, chosen);
 
   std::string known;
   bool is_known = false;
