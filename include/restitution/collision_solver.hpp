@@ -77,8 +77,8 @@ class CollisionSolver {
  public:
   CollisionSolver();
   ~CollisionSolver();
-  CollisionSolver(CollisionSolver&&) noexcept;
-  CollisionSolver& operator=(CollisionSolver&&) noexcept;
+  CollisionSolver(CollisionSolver&& other) noexcept;
+  CollisionSolver& operator=(CollisionSolver&& other) noexcept;
   CollisionSolver(const CollisionSolver&) = delete;
   CollisionSolver& operator=(const CollisionSolver&) = delete;
 

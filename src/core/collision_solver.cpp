@@ -142,10 +142,10 @@ class CollisionRun {
            (options_.ends.delayed_recovery && !result_.value.delayed_recovery);
   }
 
-  NumericalFailure failure(const std::string& what) const {
-    return NumericalFailure(fmt::format("{} (law {}, parameter {}, {}, tolerance {:g}, method {})", what,
+  [[nodiscard]] NumericalFailure failure(const std::string& what) const {
+    return NumericalFailure{fmt::format("{} (law {}, parameter {}, {}, tolerance {:g}, method {})", what,
                                         law_name(law_.kind), law_.parameter, end_names(options_.ends),
-                                        options_.tolerance, method_name(plan_.method)));
+                                        options_.tolerance, method_name(plan_.method))};
   }
 
   void record(const Point& p) {
