@@ -120,25 +120,34 @@ TEST(Units, ElasticCollisionMatchesHertzInSiUnits) {
 struct SiCollision {
   double duration_s, rebound_m_s, max_compression_m;
 };
+struct State {
+  double x;  // ξ [m]
+  double u;  // ξ' [m/s]
+};
 SiCollision integrate_si(double k, double gamma, double v) {
-  auto acc = [&](double x, double u) { return x > 0.0 ? -std::sqrt(x) * (gamma * u + k * x) : 0.0; };
+  auto rate = [&](const State& s) {
+    return State{s.u, s.x > 0.0 ? -std::sqrt(s.x) * (gamma * s.u + k * s.x) : 0.0};
+  };
+  auto shifted = [](const State& s, const State& d, double h) { return State{s.x + h * d.x, s.u + h * d.u}; };
   const double h = 2e-9;
-  double t = 0.0, x = 0.0, u = v, x_max = 0.0;
+  double t = 0.0;
+  double x_max = 0.0;
+  State s{0.0, v};
   while (true) {
-    const double k1x = u, k1u = acc(x, u);
-    const double k2x = u + 0.5 * h * k1u, k2u = acc(x + 0.5 * h * k1x, u + 0.5 * h * k1u);
-    const double k3x = u + 0.5 * h * k2u, k3u = acc(x + 0.5 * h * k2x, u + 0.5 * h * k2u);
-    const double k4x = u + h * k3u, k4u = acc(x + h * k3x, u + h * k3u);
-    const double xn = x + h / 6.0 * (k1x + 2 * k2x + 2 * k3x + k4x);
-    const double un = u + h / 6.0 * (k1u + 2 * k2u + 2 * k3u + k4u);
-    x_max = std::max(x_max, xn);
-    if (xn <= 0.0 && t > 0.0) {
-      const double s = x / (x - xn);  // linear in the last step; the rebound speed is nearly constant there
-      return {t + s * h, -(u + s * (un - u)), x_max};
+    const State k1 = rate(s);
+    const State k2 = rate(shifted(s, k1, 0.5 * h));
+    const State k3 = rate(shifted(s, k2, 0.5 * h));
+    const State k4 = rate(shifted(s, k3, h));
+    const State next{s.x + h / 6.0 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x),
+                     s.u + h / 6.0 * (k1.u + 2 * k2.u + 2 * k3.u + k4.u)};
+    x_max = std::max(x_max, next.x);
+    if (next.x <= 0.0 && t > 0.0) {
+      const double f =
+          s.x / (s.x - next.x);  // linear in the last step; the rebound speed barely changes there
+      return {t + f * h, -(s.u + f * (next.u - s.u)), x_max};
     }
     t += h;
-    x = xn;
-    u = un;
+    s = next;
   }
 }
 

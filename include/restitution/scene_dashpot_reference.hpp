@@ -7,10 +7,11 @@
 //   delayed recovery:   tan(ωτ_c) = 2rω / (2r² - 1)     (tanh for r > 1, τ_c = 2 at r = 1; cf. its Eq. 12)
 namespace restitution::scene {
 
-// τ_c of the naive end; throws InvalidInput naming damping-ratio for r >= 1 (x never returns to 0).
-double dashpot_naive_duration(double damping_ratio);
-double dashpot_delayed_duration(double damping_ratio);
+// r is the damping ratio. τ_c of the naive end; throws InvalidInput naming damping-ratio for r >= 1 (x never
+// returns to 0).
+double dashpot_naive_duration(double r);
+double dashpot_delayed_duration(double r);
 // ε = exp(-r τ_c).
-double dashpot_eps(double damping_ratio, double duration);
+double dashpot_eps(double r, double duration);
 
 }  // namespace restitution::scene

@@ -31,7 +31,7 @@ struct RunOptions {
 
 // ./scenes/default.toml when run from the repository, else the one beside the scripts this build uses.
 fs::path default_scene() {
-  const fs::path here = fs::path("scenes") / "default.toml";
+  fs::path here = fs::path("scenes") / "default.toml";
   if (fs::exists(here)) return here;
   return fs::path(RESTITUTION_SCRIPTS_DIR).parent_path() / "scenes" / "default.toml";
 }
@@ -61,7 +61,8 @@ int run_scene_file(const RunOptions& o) {
   fmt::print("scene {}: {} collisions in {:.2f} s{}\n", path.string(), results.collisions, seconds,
              o.quick ? " (quick settings)" : "");
   fmt::print("wrote {}/: ", folder.string());
-  for (std::size_t i = 0; i < written.files.size(); ++i) fmt::print("{}{}", i ? ", " : "", written.files[i]);
+  for (std::size_t i = 0; i < written.files.size(); ++i)
+    fmt::print("{}{}", i != 0 ? ", " : "", written.files[i]);
   fmt::print("\n");
   return 0;
 }

@@ -46,6 +46,7 @@ std::string markdown_rows(const Table& t, const std::vector<std::string>& column
   for (std::size_t k = 0; k < shown; ++k) {
     const std::size_t i = shown == 1 ? 0 : k * (n - 1) / (shown - 1);
     std::vector<std::string> cells;
+    cells.reserve(columns.size());
     for (const auto& c : columns) cells.push_back(g(t.rows[i][t.column(c)]));
     out += "| " + join(cells, " | ") + " |\n";
   }
@@ -106,7 +107,7 @@ class SceneWriter {
     }
     std::vector<std::string> dashed;
     for (const auto& a : extras.approximations) dashed.push_back(a.label);
-    if (s.empirical) dashed.push_back("eps_empirical");
+    if (s.empirical) dashed.emplace_back("eps_empirical");
     report_ += fmt::format("## {}\n\n", s.title);
     if (!eps_columns.empty()) {
       std::vector<std::string> args = {"--x",      x,
@@ -121,7 +122,7 @@ class SceneWriter {
     }
     report_ += describe_sweep(s, t);
     std::vector<std::string> shown = {"zeta"};
-    if (physical) shown.push_back("velocity_m_s");
+    if (physical) shown.emplace_back("velocity_m_s");
     shown.insert(shown.end(), eps_columns.begin(), eps_columns.end());
     shown.insert(shown.end(), dashed.begin(), dashed.end());
     for (const CollisionEnd e : ends_of(s.ends)) {
@@ -129,7 +130,7 @@ class SceneWriter {
       if (std::find(t.columns.begin(), t.columns.end(), c) != t.columns.end()) shown.push_back(c);
     }
     if (std::find(t.columns.begin(), t.columns.end(), "max_compression_m") != t.columns.end()) {
-      shown.push_back("max_compression_m");
+      shown.emplace_back("max_compression_m");
     }
     report_ += markdown_rows(t, shown, 9) + "\n";
     for (const auto& f : extras.fits) {
@@ -262,7 +263,9 @@ class SceneWriter {
     const Table t = dashpot_table(scene_, results_, i);
     write_file(d.name + ".csv", t.csv());
     report_ += fmt::format("## {}\n\n", d.title);
-    std::vector<std::string> numeric, exact, errors;
+    std::vector<std::string> numeric;
+    std::vector<std::string> exact;
+    std::vector<std::string> errors;
     for (const CollisionEnd e : ends_of(d.ends)) {
       numeric.push_back(std::string("eps_") + end_column(e));
       exact.push_back(std::string("eps_exact_") + end_column(e));

@@ -82,7 +82,7 @@ Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results,
     if (si) t.columns.insert(t.columns.end(), {"time_of_max_compression_s", "max_compression_m"});
   }
   for (const auto& a : extras.approximations) t.columns.push_back(a.label);
-  if (s.empirical) t.columns.push_back("eps_empirical");
+  if (s.empirical) t.columns.emplace_back("eps_empirical");
 
   for (std::size_t i = 0; i < points.size(); ++i) {
     const scene::PlannedPoint& p = points[i];
@@ -92,10 +92,11 @@ Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results,
     if (physical) row.insert(row.end(), {*p.velocity_m_s, *p.beta});
     for (const CollisionEnd e : ends) {
       const EndResult* end = end_of(r, e);
-      if (q.eps) row.push_back(end ? end->eps : kNone);
-      if (q.one_minus_eps) row.push_back(end ? end->one_minus_eps : kNone);
-      if (q.duration) row.push_back(end ? end->tau : kNone);
-      if (q.duration && si) row.push_back(end ? end->tau * scales.time_s : kNone);
+      const bool found = end != nullptr;
+      if (q.eps) row.push_back(found ? end->eps : kNone);
+      if (q.one_minus_eps) row.push_back(found ? end->one_minus_eps : kNone);
+      if (q.duration) row.push_back(found ? end->tau : kNone);
+      if (q.duration && si) row.push_back(found ? end->tau * scales.time_s : kNone);
     }
     if (q.max_compression) {
       row.insert(row.end(), {r->max_compression.tau, r->max_compression.x});

@@ -20,8 +20,9 @@ struct Table {
 // Suffix of an end in column names: "naive" | "delayed_recovery".
 const char* end_column(CollisionEnd end);
 
-Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results, std::size_t sweep);
-Table trajectory_table(const scene::SceneResults& results, std::size_t trajectory);
-Table dashpot_table(const scene::Scene& scene, const scene::SceneResults& results, std::size_t dashpot);
+// index: of the task in the scene (Scene::sweeps, ::trajectories, ::dashpots).
+Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results, std::size_t index);
+Table trajectory_table(const scene::SceneResults& results, std::size_t index);
+Table dashpot_table(const scene::Scene& scene, const scene::SceneResults& results, std::size_t index);
 
 }  // namespace restitution::cli

@@ -6,7 +6,7 @@ namespace restitution::scene::detail {
 
 void add_approximations(const Sweep& sweep, const std::vector<double>& /*zeta*/, SweepExtras& extras) {
   if (!sweep.compare_series) return;
-  extras.notes.push_back(
+  extras.notes.emplace_back(
       "series comparison: not available in this build (the series module with the published tables has not "
       "been merged)");
 }
@@ -14,7 +14,7 @@ void add_approximations(const Sweep& sweep, const std::vector<double>& /*zeta*/,
 void add_power_law_fits(const Sweep& sweep, const std::vector<double>& /*zeta*/,
                         const std::vector<const CollisionResult*>& /*results*/, SweepExtras& extras) {
   if (!sweep.fit) return;
-  extras.notes.push_back(
+  extras.notes.emplace_back(
       "power-law fit: not available in this build (the asymptotics module has not been merged)");
 }
 

@@ -31,7 +31,7 @@ EndSelection read_ends(TomlReader& r, EndSelection fallback = {}) {
     if (w == "naive" || w == "both") ends.naive = true;
     if (w == "delayed-recovery" || w == "both") ends.delayed_recovery = true;
     if (w != "naive" && w != "delayed-recovery" && w != "both") {
-      r.fail("ends", fmt::format("expected \"naive\", \"delayed-recovery\" or \"both\", got \"{}\"", w));
+      r.fail("ends", fmt::format(R"(expected "naive", "delayed-recovery" or "both", got "{}")", w));
     }
   }
   if (!ends.naive && !ends.delayed_recovery) r.fail("ends", "no end requested");
@@ -42,7 +42,7 @@ CollisionEnd read_end(TomlReader& r) {
   const std::string w = r.text("end").value_or("delayed-recovery");
   if (w == "naive") return CollisionEnd::naive;
   if (w != "delayed-recovery")
-    r.fail("end", fmt::format("expected \"naive\" or \"delayed-recovery\", got \"{}\"", w));
+    r.fail("end", fmt::format(R"(expected "naive" or "delayed-recovery", got "{}")", w));
   return CollisionEnd::delayed_recovery;
 }
 
@@ -102,7 +102,7 @@ class Parser {
     }
     const std::string method = root_.text("method").value_or("auto");
     if (method != "bdf" && method != "adams" && method != "auto") {
-      root_.fail("method", "expected \"bdf\", \"adams\" or \"auto\"");
+      root_.fail("method", R"(expected "bdf", "adams" or "auto")");
     }
     scene_.method = method == "bdf" ? Method::bdf : method == "adams" ? Method::adams : Method::automatic;
     if (const toml::table* materials = root_.table("materials")) {
@@ -145,9 +145,9 @@ class Parser {
     return name;
   }
 
-  std::optional<std::string> read_material_name(TomlReader& r) {
+  std::optional<std::string> read_material_name(TomlReader& r) const {
     auto name = r.text("material");
-    if (name && scene_.materials.count(*name) == 0) {
+    if (name && !scene_.materials.contains(*name)) {
       r.fail("material", fmt::format("no [materials.{}] in this scene", *name));
     }
     return name;
@@ -235,7 +235,7 @@ class Parser {
     else if (axes == "log-x")
       s.axes = Axes::log_x;
     else
-      r.fail("axes", "expected \"linear\", \"log-x\" or \"log-log\"");
+      r.fail("axes", R"(expected "linear", "log-x" or "log-log")");
     return s;
   }
 

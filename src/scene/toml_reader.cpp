@@ -106,7 +106,7 @@ std::optional<std::vector<double>> TomlReader::numbers(std::string_view key) {
     if (*points != std::floor(*points) || *points < 1 || *points > kMaxPoints) {
       r.fail("points", fmt::format("expected a whole number in [1, {}]", kMaxPoints));
     }
-    if (spacing != "linear" && spacing != "log") r.fail("spacing", "expected \"linear\" or \"log\"");
+    if (spacing != "linear" && spacing != "log") r.fail("spacing", R"(expected "linear" or "log")");
     if (*to < *from) r.fail("to", "must be >= from");
     const bool log = spacing == "log";
     if (log && *from <= 0.0) r.fail("from", "must be > 0 for spacing = \"log\"");
