@@ -4,8 +4,10 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <optional>
 
 #include "cli_runner.hpp"
+#include "material_examples.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
@@ -21,14 +23,19 @@ double eps_at(double zeta, CollisionEnd end) {
   return end == CollisionEnd::naive ? r.naive->eps : r.delayed_recovery->eps;
 }
 
+Calibration calibrated(double eps, double velocity_m_s, std::optional<double> k = std::nullopt) {
+  CollisionSolver solver;
+  CalibrationRequest request;
+  request.eps = eps;
+  request.velocity_m_s = velocity_m_s;
+  request.k = k;
+  return calibrate(request, solver);
+}
+
 TEST(Calibration, PaperExampleRubberSphere) {
   // 2008 paper, Sec. VI: ε = 0.8 at v = 1 m/s gives β = 0.2 s^{1/5} m^{-1/5} (delayed recovery). The solver
   // has ε(ζ = 0.2) = 0.80097 > 0.8, so the exact β lies a little above 0.2.
-  CollisionSolver solver;
-  CalibrationRequest request;
-  request.eps = 0.8;
-  request.velocity_m_s = 1.0;
-  const Calibration c = calibrate(request, solver);
+  const Calibration c = calibrated(0.8, 1.0);
   EXPECT_GT(c.beta, 0.2);
   EXPECT_LT(c.beta, 0.205);
   EXPECT_NEAR(c.eps_at_zeta, 0.8, 1e-9);
@@ -48,32 +55,17 @@ TEST(Calibration, RootReproducesEpsAtBothEndsAndManyTargets) {
 }
 
 TEST(Calibration, BetaScalesWithTheFifthRootOfVelocity) {
-  CollisionSolver solver;
-  CalibrationRequest request;
-  request.eps = 0.7;
-  request.velocity_m_s = 1.0;
-  const Calibration at_1 = calibrate(request, solver);
-  request.velocity_m_s = 32.0;
-  const Calibration at_32 = calibrate(request, solver);
+  const Calibration at_1 = calibrated(0.7, 1.0);
+  const Calibration at_32 = calibrated(0.7, 32.0);
   EXPECT_NEAR(at_32.zeta, at_1.zeta, 1e-10);
   EXPECT_NEAR(at_32.beta, at_1.beta / 2.0, 1e-10);  // 32^{1/5} = 2
 }
 
 TEST(Calibration, RecoversTheDissipativeConstantOfAMaterial) {
-  Material m;
-  m.young_modulus_pa = 1e7;
-  m.poisson_ratio = 0.45;
-  m.density_kg_m3 = 1100.0;
-  m.radius1_m = m.radius2_m = 0.01;
-  m.dissipative_constant_s = 5.8e-5;
-  const MaterialConstants c = material_constants(m);
+  const MaterialConstants c = material_constants(test_support::rubber_like());
   const double v = 2.5;
-  CollisionSolver solver;
-  CalibrationRequest request;
-  request.eps = eps_at(zeta_from(c.hertz.beta, v), CollisionEnd::delayed_recovery);
-  request.velocity_m_s = v;
-  request.k = c.hertz.k;
-  const Calibration back = calibrate(request, solver);
+  const Calibration back =
+      calibrated(eps_at(zeta_from(c.hertz.beta, v), CollisionEnd::delayed_recovery), v, c.hertz.k);
   ASSERT_TRUE(back.dissipative_constant_s.has_value());
   EXPECT_NEAR(*back.dissipative_constant_s / 5.8e-5, 1.0, 1e-8);
 }

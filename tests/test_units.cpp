@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "material_examples.hpp"
 #include "reference_values.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
@@ -14,13 +15,7 @@ namespace restitution {
 namespace {
 
 Material rubber() {
-  Material m;
-  m.young_modulus_pa = 1e7;
-  m.poisson_ratio = 0.45;
-  m.density_kg_m3 = 1100.0;
-  m.radius1_m = m.radius2_m = 0.01;
-  m.dissipative_constant_s = 5.8e-5;
-  return m;
+  return test_support::rubber_like();
 }
 
 TEST(Units, MaterialConstantsFollowTheirDefinitions) {

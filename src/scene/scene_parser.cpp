@@ -145,6 +145,15 @@ class Parser {
     return name;
   }
 
+  // The keys every plotted task has: name, title, ends; and where it starts.
+  template <typename Task>
+  void read_heading(TomlReader& r, const char* kind, Task& task) {
+    task.line = r.line();
+    task.name = read_name(r, kind);
+    task.title = r.text("title").value_or(task.name);
+    task.ends = read_ends(r);
+  }
+
   std::optional<std::string> read_material_name(TomlReader& r) const {
     auto name = r.text("material");
     if (name && !scene_.materials.contains(*name)) {
@@ -164,10 +173,7 @@ class Parser {
 
   Sweep read_sweep(TomlReader& r) {
     Sweep s;
-    s.line = r.line();
-    s.name = read_name(r, "sweep");
-    s.title = r.text("title").value_or(s.name);
-    s.ends = read_ends(r);
+    read_heading(r, "sweep", s);
     if (const auto q = r.words("quantities")) {
       s.quantities = {false, false, false, false};
       for (const std::string& w : *q) {
@@ -241,10 +247,7 @@ class Parser {
 
   Trajectory read_trajectory(TomlReader& r) {
     Trajectory t;
-    t.line = r.line();
-    t.name = read_name(r, "trajectory");
-    t.title = r.text("title").value_or(t.name);
-    t.ends = read_ends(r);
+    read_heading(r, "trajectory", t);
     t.zeta = r.number("zeta");
     t.velocity_m_s = r.number("velocity");
     t.beta = r.number("beta");
@@ -282,10 +285,7 @@ class Parser {
 
   DashpotCheck read_dashpot(TomlReader& r) {
     DashpotCheck d;
-    d.line = r.line();
-    d.name = read_name(r, "dashpot");
-    d.title = r.text("title").value_or(d.name);
-    d.ends = read_ends(r);
+    read_heading(r, "dashpot", d);
     const auto ratios = r.numbers("damping_ratio");
     if (!ratios) r.fail("damping_ratio", "missing");
     check_positive(r, "damping_ratio", *ratios);
