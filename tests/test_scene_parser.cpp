@@ -3,8 +3,10 @@
 
 #include <string>
 
+#include "cli_runner.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/scene.hpp"
+#include "restitution/scene_plan.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -133,6 +135,25 @@ TEST(SceneParser, QuickSettingsKeepTheEndsOfEveryRange) {
   Scene s = parse_scene("output = \"o\"\n[[sweep]]\nzeta = {from = 0, to = 10, points = 101}\n", "t.toml");
   make_quick(s, 4);
   EXPECT_EQ(s.sweeps[0].zeta, (std::vector<double>{0.0, s.sweeps[0].zeta[1], s.sweeps[0].zeta[2], 10.0}));
+}
+
+}  // namespace
+}  // namespace restitution::scene
+
+namespace restitution::scene {
+namespace {
+
+TEST(SceneParser, TheReadmeExampleIsAValidScene) {
+  const std::string readme = restitution::test_support::slurp(RESTITUTION_SOURCE_DIR "/README.md");
+  const std::size_t start = readme.find("```toml\n");
+  ASSERT_NE(start, std::string::npos);
+  const std::size_t end = readme.find("```", start + 8);
+  const Scene s = parse_scene(readme.substr(start + 8, end - start - 8), "README.md");
+  EXPECT_EQ(s.sweeps.size(), 1U);
+  EXPECT_EQ(s.trajectories.size(), 1U);
+  EXPECT_EQ(s.calibrations.size(), 1U);
+  EXPECT_EQ(s.dashpots.size(), 1U);
+  EXPECT_NO_THROW((void)plan_scene(s));
 }
 
 }  // namespace

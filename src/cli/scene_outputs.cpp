@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "cli/json_writer.hpp"
 #include "cli/output_files.hpp"
@@ -63,9 +64,20 @@ class SceneWriter {
     json_.begin_object();
     json_.field("scene", scene_.file_name).field("title", scene_.title);
     json_.field("tolerance", scene_.tolerance).field("method", method_name(scene_.method));
-    for (std::size_t i = 0; i < scene_.sweeps.size(); ++i) sweep(i);
-    for (std::size_t i = 0; i < scene_.trajectories.size(); ++i) trajectory(i);
-    for (std::size_t i = 0; i < scene_.dashpots.size(); ++i) dashpot(i);
+    // Sections in the order the scene file lists them.
+    std::vector<std::tuple<int, int, std::size_t>> order;  // line, kind, index
+    for (std::size_t i = 0; i < scene_.sweeps.size(); ++i) order.emplace_back(scene_.sweeps[i].line, 0, i);
+    for (std::size_t i = 0; i < scene_.trajectories.size(); ++i) {
+      order.emplace_back(scene_.trajectories[i].line, 1, i);
+    }
+    for (std::size_t i = 0; i < scene_.dashpots.size(); ++i)
+      order.emplace_back(scene_.dashpots[i].line, 2, i);
+    std::sort(order.begin(), order.end());
+    for (const auto& [line, kind, i] : order) {
+      if (kind == 0) sweep(i);
+      if (kind == 1) trajectory(i);
+      if (kind == 2) dashpot(i);
+    }
     calibrations();
     studies();
     footer(seconds);
