@@ -12,5 +12,6 @@ using Action = std::function<int()>;
 void add_eps_command(CLI::App& app, Action& chosen);
 void add_calibrate_command(CLI::App& app, Action& chosen);
 void add_run_command(CLI::App& app, Action& chosen);
+void add_series_command(CLI::App& app, Action& chosen);
 
 }  // namespace restitution::cli

@@ -19,6 +19,7 @@ int run(int argc, char** argv) {
   cli::add_eps_command(app, chosen);
   cli::add_calibrate_command(app, chosen);
   cli::add_run_command(app, chosen);
+  cli::add_series_command(app, chosen);
 
   std::string known;
   bool is_known = false;
