@@ -10,8 +10,10 @@
 
 namespace restitution {
 
-enum class Method { bdf, adams, automatic };
-const char* method_name(Method method);  // "bdf" | "adams" | "auto"
+// bdf, adams: CVODE; taylor: the Taylor-series engine (restitution/taylor_engine.hpp); automatic: CVODE,
+// BDF or Adams per regime.
+enum class Method { bdf, adams, automatic, taylor };
+const char* method_name(Method method);  // "bdf" | "adams" | "auto" | "taylor"
 
 struct EndSelection {
   bool naive = true;             // end where the overlap vanishes, x = 0
@@ -32,6 +34,8 @@ struct SolveOptions {
 // The accepted tolerance range of the CVODE engine (relative accuracy of ε).
 inline constexpr double kMinTolerance = 1e-11;
 inline constexpr double kMaxTolerance = 1e-2;
+// The smallest tolerance the method accepts (kMinTolerance for CVODE, kMinTaylorTolerance for taylor).
+double min_tolerance(Method method);
 
 // All times and lengths below are in the natural scaling (x'(0) = 1) whatever form the law was given in.
 struct EndResult {

@@ -10,5 +10,6 @@ namespace restitution::cli {
 using Action = std::function<int()>;
 
 void add_eps_command(CLI::App& app, Action& chosen);
+void add_reference_command(CLI::App& app, Action& chosen);
 
 }  // namespace restitution::cli

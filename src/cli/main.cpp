@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   cli::Action chosen;
   cli::add_eps_command(app, chosen);
+  cli::add_reference_command(app, chosen);
 
   std::string known;
   bool is_known = false;

@@ -9,6 +9,7 @@
 #include "core/cvode_integrator.hpp"
 #include "core/tolerance_policy.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/taylor_engine.hpp"
 
 namespace restitution {
 
@@ -25,8 +26,14 @@ const char* method_name(Method method) {
       return "adams";
     case Method::automatic:
       return "auto";
+    case Method::taylor:
+      return "taylor";
   }
   return "?";
+}
+
+double min_tolerance(Method method) {
+  return method == Method::taylor ? kMinTaylorTolerance : kMinTolerance;
 }
 
 Method resolve_method(const ContactLaw& law, Method requested) {
@@ -292,6 +299,7 @@ class CollisionRun {
 }  // namespace
 
 CollisionResult CollisionSolver::solve(const ContactLaw& law, const SolveOptions& options) {
+  if (options.method == Method::taylor) return solve_with_taylor(law, options);
   const detail::SolvePlan plan = detail::plan_solve(law, options);
   return CollisionRun(law, options, plan, impl_->integrator(plan.method)).run();
 }

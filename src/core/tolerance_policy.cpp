@@ -60,11 +60,14 @@ double time_limit(const ContactLaw& law, const EndSelection& ends) {
   return law.time_scale * 1000.0 * (1.0 + zeta) * (1.0 + std::log1p(zeta));
 }
 
-void check_request(const ContactLaw& law, const SolveOptions& options) {
+}  // namespace
+
+void check_solve_request(const ContactLaw& law, const SolveOptions& options) {
   const double tol = options.tolerance;
-  if (!std::isfinite(tol) || tol < kMinTolerance || tol > kMaxTolerance) {
-    throw InvalidInput(
-        fmt::format("tolerance must lie in [{:g}, {:g}], got {}", kMinTolerance, kMaxTolerance, tol));
+  const double smallest = min_tolerance(options.method);
+  if (!std::isfinite(tol) || tol < smallest || tol > kMaxTolerance) {
+    throw InvalidInput(fmt::format("tolerance must lie in [{:g}, {:g}] for method {}, got {}", smallest,
+                                   kMaxTolerance, method_name(options.method), tol));
   }
   if (!options.ends.naive && !options.ends.delayed_recovery) {
     throw InvalidInput("no end of the collision requested: ask for naive, delayed-recovery or both");
@@ -77,10 +80,8 @@ void check_request(const ContactLaw& law, const SolveOptions& options) {
   }
 }
 
-}  // namespace
-
 SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options) {
-  check_request(law, options);
+  check_solve_request(law, options);
   SolvePlan plan;
   plan.method = resolve_method(law, options.method);
   plan.smooth_ends = options.smooth_ends && law.kind == LawKind::viscoelastic_hertz;

@@ -17,6 +17,10 @@ struct SolvePlan {
   double start_phase_x = 0.0;              // largest x of the compression form of the start
 };
 
+// Throws InvalidInput for a tolerance outside [min_tolerance(method), kMaxTolerance], no end requested, or an
+// end that does not exist for this law. Every engine checks its request with it.
+void check_solve_request(const ContactLaw& law, const SolveOptions& options);
+
 // Throws InvalidInput for a tolerance outside [kMinTolerance, kMaxTolerance], no end requested, or an end
 // that does not exist for this law.
 SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options);

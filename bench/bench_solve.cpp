@@ -1,0 +1,95 @@
+// Per-solve micro-benchmarks: one collision per iteration, reusing one solver (as a sweep does).
+// Arguments: engine, end, ζ, tolerance. Each case also reports the error against the reference solution
+// (data/reference_solutions.csv) as the counter "error" and the right-hand-side evaluations as "rhs".
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <string>
+
+#include "restitution/collision_solver.hpp"
+#include "restitution/reference_solution.hpp"
+
+namespace {
+
+using namespace restitution;
+
+struct Engine {
+  const char* name;
+  Method method;
+  bool smooth_ends;
+};
+constexpr Engine kEngines[] = {{"taylor", Method::taylor, true},
+                               {"adams", Method::adams, true},
+                               {"bdf", Method::bdf, true},
+                               {"auto", Method::automatic, true},
+                               {"adams-plain", Method::adams, false},
+                               {"bdf-plain", Method::bdf, false}};
+
+const std::vector<ReferenceRow>& rows() {
+  static const std::vector<ReferenceRow> r = read_reference_file(reference_file_in(RESTITUTION_SOURCE_DIR));
+  return r;
+}
+
+const ReferenceRow* row_for(double zeta) {
+  for (const ReferenceRow& row : rows())
+    if (std::abs(row.zeta - zeta) <= 1e-12 * zeta) return &row;
+  return nullptr;
+}
+
+void solve_case(benchmark::State& state, Engine engine, bool naive, double zeta, double tolerance) {
+  CollisionSolver solver;
+  SolveOptions options;
+  options.method = engine.method;
+  options.smooth_ends = engine.smooth_ends;
+  options.tolerance = tolerance;
+  options.ends = {naive, !naive};
+  const ContactLaw law = ContactLaw::hertz_natural(zeta);
+  CollisionResult result = solver.solve(law, options);
+  for (auto _ : state) {
+    result = solver.solve(law, options);
+    benchmark::DoNotOptimize(result);
+  }
+  const EndResult& end = naive ? *result.naive : *result.delayed_recovery;
+  if (const ReferenceRow* row = row_for(zeta)) {
+    const auto& ref = naive ? row->naive : row->delayed_recovery;
+    if (ref) {
+      const double scale = std::min(ref->eps, ref->one_minus_eps);
+      state.counters["error"] =
+          std::max(std::abs(end.eps - ref->eps), std::abs(end.one_minus_eps - ref->one_minus_eps)) / scale;
+    }
+  }
+  state.counters["rhs"] = static_cast<double>(result.stats.rhs_evaluations);
+  state.counters["steps"] = static_cast<double>(result.stats.steps);
+}
+
+// The cases of the targets: Taylor at 1e-12 on every decade of ζ (delayed recovery) and ζ <= 10
+// (naive); CVODE at 1e-10 for ζ <= 100 (delayed recovery).
+void register_cases() {
+  const double decades[] = {1e-4, 1e-3, 1e-2, 1e-1, 1.0, 10.0, 100.0, 1e3, 1e4};
+  for (const Engine& engine : kEngines) {
+    const bool taylor = engine.method == Method::taylor;
+    const double tolerance = taylor ? 1e-12 : 1e-10;
+    for (const bool naive : {false, true}) {
+      for (const double zeta : decades) {
+        if (naive && zeta > (taylor ? 10.0 : 100.0)) continue;
+        if (!taylor && zeta > 100.0) continue;
+        const std::string name = std::string("solve/") + engine.name + (naive ? "/naive" : "/delayed") +
+                                 "/zeta=" + std::to_string(zeta).substr(0, 8) +
+                                 "/T=" + (taylor ? "1e-12" : "1e-10");
+        benchmark::RegisterBenchmark(name.c_str(), solve_case, engine, naive, zeta, tolerance)
+            ->Unit(benchmark::kMicrosecond);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  register_cases();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
