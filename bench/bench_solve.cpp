@@ -8,41 +8,21 @@
 
 #include "restitution/collision_solver.hpp"
 #include "restitution/reference_solution.hpp"
+#include "restitution/work_precision.hpp"
 
 namespace {
 
 using namespace restitution;
-
-struct Engine {
-  const char* name;
-  Method method;
-  bool smooth_ends;
-};
-constexpr Engine kEngines[] = {{"taylor", Method::taylor, true},
-                               {"adams", Method::adams, true},
-                               {"bdf", Method::bdf, true},
-                               {"auto", Method::automatic, true},
-                               {"adams-plain", Method::adams, false},
-                               {"bdf-plain", Method::bdf, false}};
 
 const std::vector<ReferenceRow>& rows() {
   static const std::vector<ReferenceRow> r = read_reference_file(reference_file_in(RESTITUTION_SOURCE_DIR));
   return r;
 }
 
-const ReferenceRow* row_for(double zeta) {
-  for (const ReferenceRow& row : rows())
-    if (std::abs(row.zeta - zeta) <= 1e-12 * zeta) return &row;
-  return nullptr;
-}
-
-void solve_case(benchmark::State& state, Engine engine, bool naive, double zeta, double tolerance) {
+void solve_case(benchmark::State& state, const WorkPrecisionEngine& engine, bool naive, double zeta,
+                double tolerance) {
   CollisionSolver solver;
-  SolveOptions options;
-  options.method = engine.method;
-  options.smooth_ends = engine.smooth_ends;
-  options.tolerance = tolerance;
-  options.ends = {naive, !naive};
+  const SolveOptions options = work_precision_options(engine, naive, tolerance);
   const ContactLaw law = ContactLaw::hertz_natural(zeta);
   CollisionResult result = solver.solve(law, options);
   for (auto _ : state) {
@@ -50,13 +30,9 @@ void solve_case(benchmark::State& state, Engine engine, bool naive, double zeta,
     benchmark::DoNotOptimize(result);
   }
   const EndResult& end = naive ? *result.naive : *result.delayed_recovery;
-  if (const ReferenceRow* row = row_for(zeta)) {
+  if (const ReferenceRow* row = reference_row_for(rows(), zeta)) {
     const auto& ref = naive ? row->naive : row->delayed_recovery;
-    if (ref) {
-      const double scale = std::min(ref->eps, ref->one_minus_eps);
-      state.counters["error"] =
-          std::max(std::abs(end.eps - ref->eps), std::abs(end.one_minus_eps - ref->one_minus_eps)) / scale;
-    }
+    if (ref) state.counters["error"] = contract_error(end, *ref);
   }
   state.counters["rhs"] = static_cast<double>(result.stats.rhs_evaluations);
   state.counters["steps"] = static_cast<double>(result.stats.steps);
@@ -66,14 +42,14 @@ void solve_case(benchmark::State& state, Engine engine, bool naive, double zeta,
 // (naive); CVODE at 1e-10 for ζ <= 100 (delayed recovery).
 void register_cases() {
   const double decades[] = {1e-4, 1e-3, 1e-2, 1e-1, 1.0, 10.0, 100.0, 1e3, 1e4};
-  for (const Engine& engine : kEngines) {
+  for (const WorkPrecisionEngine& engine : work_precision_engines()) {
     const bool taylor = engine.method == Method::taylor;
     const double tolerance = taylor ? 1e-12 : 1e-10;
     for (const bool naive : {false, true}) {
       for (const double zeta : decades) {
         if (naive && zeta > (taylor ? 10.0 : 100.0)) continue;
         if (!taylor && zeta > 100.0) continue;
-        const std::string name = std::string("solve/") + engine.name + (naive ? "/naive" : "/delayed") +
+        const std::string name = "solve/" + engine.name + (naive ? "/naive" : "/delayed") +
                                  "/zeta=" + std::to_string(zeta).substr(0, 8) +
                                  "/T=" + (taylor ? "1e-12" : "1e-10");
         benchmark::RegisterBenchmark(name.c_str(), solve_case, engine, naive, zeta, tolerance)

@@ -6,6 +6,7 @@
 
 #include "restitution/collision_solver.hpp"
 #include "restitution/reference_solution.hpp"
+#include "restitution/work_precision.hpp"
 
 namespace restitution::test_support {
 
@@ -15,13 +16,7 @@ inline const std::vector<ReferenceRow>& reference_rows() {
   return rows;
 }
 
-// The contract's error: |ε - ε*| and |(1-ε) - (1-ε*)| relative to min(ε*, 1-ε*); at ζ = 0 (ε* = 1 exactly)
-// the absolute error.
-inline double contract_error(const EndResult& tested, const ReferenceEndValues& reference) {
-  const double scale = std::min(reference.eps, reference.one_minus_eps);
-  const double difference = std::max(std::abs(tested.eps - reference.eps),
-                                     std::abs(tested.one_minus_eps - reference.one_minus_eps));
-  return scale > 0 ? difference / scale : difference;
-}
+// The contract's error (restitution/work_precision.hpp).
+using restitution::contract_error;
 
 }  // namespace restitution::test_support

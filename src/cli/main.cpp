@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   cli::Action chosen;
   cli::add_eps_command(app, chosen);
   cli::add_reference_command(app, chosen);
+  cli::add_work_precision_command(app, chosen);
 
   std::string known;
   bool is_known = false;

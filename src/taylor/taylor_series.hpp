@@ -56,9 +56,7 @@ void expand_hertz_compression(Real zeta, Real u0, const State<Real>& s, int orde
   auto& tau = c[0];
   auto& y = c[1];
   auto& dissipation = c[2];
-  tau[0] = s[0];
-  y[0] = s[1];
-  dissipation[0] = s[2];
+  for (std::size_t i = 0; i < kComponents; ++i) c[i][0] = s[i];
   // U = u0 + h: U² and U⁴ are polynomials of degree 2 and 4.
   const std::array<Real, 3> u2{u0 * u0, 2 * u0, Real(1)};
   const std::array<Real, 5> u4{u2[0] * u2[0], 2 * u2[0] * u2[1], 2 * u2[0] * u2[2] + u2[1] * u2[1],
@@ -89,9 +87,7 @@ void expand_hertz_time(Real zeta, const State<Real>& s, int order, Coefficients<
   auto& u = c[0];
   auto& y = c[1];
   auto& dissipation = c[2];
-  u[0] = s[0];
-  y[0] = s[1];
-  dissipation[0] = s[2];
+  for (std::size_t i = 0; i < kComponents; ++i) c[i][0] = s[i];
   Series<Real> q{};   // y/u
   Series<Real> uy{};  // u·y
   Series<Real> x{};   // u²
@@ -120,9 +116,7 @@ void expand_dashpot_time(Real damping, Real stiffness, const State<Real>& s, int
   auto& x = c[0];
   auto& y = c[1];
   auto& dissipation = c[2];
-  x[0] = s[0];
-  y[0] = s[1];
-  dissipation[0] = s[2];
+  for (std::size_t i = 0; i < kComponents; ++i) c[i][0] = s[i];
   for (int k = 0; k < order; ++k) {
     const auto uk = static_cast<std::size_t>(k);
     const Real inv = reciprocal<Real>(k + 1);
