@@ -96,6 +96,6 @@ class CollisionSolver {
 };
 
 // The method `automatic` resolves to for this law (measured: see docs/accuracy.md).
-Method resolve_method(const ContactLaw& law, Method requested);
+Method resolve_method(const ContactLaw& law, Method requested, const EndSelection& ends = {});
 
 }  // namespace restitution

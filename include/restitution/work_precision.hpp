@@ -40,6 +40,8 @@ SolveOptions work_precision_options(const WorkPrecisionEngine& engine, bool naiv
 
 // Measures every (engine, end, tolerance, ζ) the engine accepts and the reference holds. Adams (a non-stiff
 // method) is measured for ζ <= 100 only. Each point is solved once to warm up, then `repeats` times.
-std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<ReferenceRow>& reference, int repeats);
+// `engines` names a subset of work_precision_engines() (empty: all); throws InvalidInput for an unknown name.
+std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<ReferenceRow>& reference, int repeats,
+                                                     const std::vector<std::string>& engines = {});
 
 }  // namespace restitution

@@ -21,6 +21,7 @@ struct WorkPrecisionOptions {
   std::string out = "out/work-precision";
   std::string reference;
   int repeats = 7;
+  std::vector<std::string> engines;
 };
 
 std::string points_csv(const std::vector<WorkPrecisionRow>& rows) {
@@ -61,7 +62,7 @@ int run_work_precision(const WorkPrecisionOptions& o) {
       o.reference.empty() ? reference_file_in(std::filesystem::path(RESTITUTION_SCRIPTS_DIR).parent_path())
                           : std::filesystem::path(o.reference);
   const std::vector<WorkPrecisionRow> rows =
-      measure_work_precision(read_reference_file(reference), o.repeats);
+      measure_work_precision(read_reference_file(reference), o.repeats, o.engines);
   const std::filesystem::path folder(o.out);
   prepare_output_folder(folder);
   write_file_atomically(folder / "work_precision.csv", points_csv(rows));
@@ -85,6 +86,9 @@ void add_work_precision_command(CLI::App& app, Action& chosen) {
                   "reference CSV (default: data/reference_solutions.csv of the source tree)");
   cmd->add_option("--repeats", o->repeats, "timed solves per point (the median is reported)")
       ->capture_default_str();
+  cmd->add_option("--engine", o->engines,
+                  "measure only these engines: taylor, bdf, adams, bdf-plain, adams-plain")
+      ->delimiter(',');
   cmd->callback([o, &chosen] { chosen = [o] { return run_work_precision(*o); }; });
 }
 

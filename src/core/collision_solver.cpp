@@ -36,10 +36,12 @@ double min_tolerance(Method method) {
   return method == Method::taylor ? kMinTaylorTolerance : kMinTolerance;
 }
 
-Method resolve_method(const ContactLaw& law, Method requested) {
+Method resolve_method(const ContactLaw& law, Method requested, const EndSelection& ends) {
   if (requested != Method::automatic) return requested;
   // Measured (docs/accuracy.md): Adams is cheaper while the damping is weak, BDF once it makes the
-  // problem stiff.
+  // problem stiff. Only the naive tail is stiff: up to the delayed-recovery end Adams takes 2-4x fewer
+  // steps than BDF at every ζ up to 1e4.
+  if (!ends.naive) return Method::adams;
   return law.parameter < 5.0 ? Method::adams : Method::bdf;
 }
 

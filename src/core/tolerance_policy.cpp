@@ -83,7 +83,7 @@ void check_solve_request(const ContactLaw& law, const SolveOptions& options) {
 SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options) {
   check_solve_request(law, options);
   SolvePlan plan;
-  plan.method = resolve_method(law, options.method);
+  plan.method = resolve_method(law, options.method, options.ends);
   plan.smooth_ends = options.smooth_ends && law.kind == LawKind::viscoelastic_hertz;
   const Magnitudes m = law.kind == LawKind::viscoelastic_hertz
                            ? hertz_magnitudes(law.parameter, options.ends)

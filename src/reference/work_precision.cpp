@@ -1,9 +1,12 @@
 #include "restitution/work_precision.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
+#include "restitution/errors.hpp"
 #include "restitution/taylor_engine.hpp"
 
 namespace restitution {
@@ -62,12 +65,19 @@ std::vector<double> work_precision_tolerances() {
   return t;
 }
 
-std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<ReferenceRow>& reference,
-                                                     int repeats) {
+std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<ReferenceRow>& reference, int repeats,
+                                                     const std::vector<std::string>& engines) {
+  const std::vector<WorkPrecisionEngine> all = work_precision_engines();
+  for (const std::string& name : engines) {
+    if (std::none_of(all.begin(), all.end(), [&](const WorkPrecisionEngine& e) { return e.name == name; }))
+      throw InvalidInput(
+          fmt::format("unknown engine '{}' (known: taylor, bdf, adams, bdf-plain, adams-plain)", name));
+  }
   std::vector<WorkPrecisionRow> rows;
   CollisionSolver solver;
   std::vector<double> samples(static_cast<std::size_t>(std::max(repeats, 1)));
-  for (const WorkPrecisionEngine& engine : work_precision_engines()) {
+  for (const WorkPrecisionEngine& engine : all) {
+    if (!engines.empty() && std::find(engines.begin(), engines.end(), engine.name) == engines.end()) continue;
     for (const bool naive : {false, true}) {
       for (const double tolerance : work_precision_tolerances()) {
         if (tolerance < min_tolerance(engine.method)) continue;
