@@ -69,5 +69,40 @@ TEST(TaylorEngine, TimesAndCompressionsMatchTheReference) {
   }
 }
 
+TEST(TaylorEngine, DashpotMatchesItsClosedForm) {
+  // x'' + 2r x' + x = 0: ε_naive = exp(-rπ/ω), ω = sqrt(1 - r²) (2008 paper, Eq. 10).
+  CollisionSolver solver;
+  for (const double r : {0.05, 0.3, 0.8}) {
+    const CollisionResult result = solver.solve(ContactLaw::linear_dashpot(r), taylor_options(1e-12, true));
+    const double w = std::sqrt(1.0 - r * r);
+    const double eps = std::exp(-r * M_PI / w);
+    EXPECT_NEAR(result.naive->eps, eps, 1e-12 * std::min(eps, 1.0 - eps)) << r;
+    EXPECT_NEAR(result.naive->tau, M_PI / w, 1e-12) << r;
+    EXPECT_NEAR(result.max_compression.tau, std::atan2(w, r) / w, 1e-12) << r;
+  }
+}
+
+TEST(TaylorEngine, ScaledFormGivesTheNaturalResult) {
+  // ε depends on β and v only through ζ = β v^{1/5}; results are reported in natural units.
+  CollisionSolver solver;
+  const CollisionResult scaled =
+      solver.solve(ContactLaw::hertz_scaled(0.2, 3.0), taylor_options(1e-12, true));
+  const CollisionResult natural =
+      solver.solve(ContactLaw::hertz_natural(0.2 * std::pow(3.0, 0.2)), taylor_options(1e-12, true));
+  EXPECT_NEAR(scaled.delayed_recovery->eps, natural.delayed_recovery->eps, 1e-13);
+  EXPECT_NEAR(scaled.naive->tau, natural.naive->tau, 1e-12);
+  EXPECT_NEAR(scaled.max_compression.x, natural.max_compression.x, 1e-12);
+}
+
+TEST(TaylorEngine, RefusesWhatItCannotDeliver) {
+  CollisionSolver solver;
+  EXPECT_THROW(solver.solve(ContactLaw::hertz_natural(1.0), taylor_options(1e-14, true)), InvalidInput);
+  EXPECT_THROW(solver.solve(ContactLaw::hertz_natural(2 * kTaylorNaiveZetaMax), taylor_options(1e-8, true)),
+               InvalidInput);
+  SolveOptions trajectory = taylor_options(1e-8, true);
+  trajectory.keep_trajectory = true;
+  EXPECT_THROW(solver.solve(ContactLaw::hertz_natural(1.0), trajectory), InvalidInput);
+}
+
 }  // namespace
 }  // namespace restitution
