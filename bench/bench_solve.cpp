@@ -25,7 +25,7 @@ void solve_case(benchmark::State& state, const WorkPrecisionEngine& engine, bool
   const SolveOptions options = work_precision_options(engine, naive, tolerance);
   const ContactLaw law = ContactLaw::hertz_natural(zeta);
   CollisionResult result = solver.solve(law, options);
-  for (auto _ : state) {
+  for (auto _ : state) {  // NOLINT(clang-analyzer-deadcode.DeadStores): the benchmark loop idiom
     result = solver.solve(law, options);
     benchmark::DoNotOptimize(result);
   }
