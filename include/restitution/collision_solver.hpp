@@ -29,6 +29,9 @@ struct SolveOptions {
   // Hertz law only: integrate in u = sqrt(x) near x = 0, where the solution is analytic in u but not in τ
   // (DESIGN.md §4). false integrates in τ throughout, for comparison.
   bool smooth_ends = true;
+  // Bound on CVODE's internal steps in each phase of the collision. A solve that needs more fails with
+  // NumericalFailure ("too much work"): Adams on the stiff large-ζ relaxation does.
+  long max_steps_per_phase = 1000000;
 };
 
 // The accepted tolerance range of the CVODE engine (relative accuracy of ε).
@@ -81,8 +84,8 @@ class CollisionSolver {
  public:
   CollisionSolver();
   ~CollisionSolver();
-  CollisionSolver(CollisionSolver&&) noexcept;
-  CollisionSolver& operator=(CollisionSolver&&) noexcept;
+  CollisionSolver(CollisionSolver&& other) noexcept;
+  CollisionSolver& operator=(CollisionSolver&& other) noexcept;
   CollisionSolver(const CollisionSolver&) = delete;
   CollisionSolver& operator=(const CollisionSolver&) = delete;
 

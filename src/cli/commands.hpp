@@ -12,5 +12,8 @@ using Action = std::function<int()>;
 void add_eps_command(CLI::App& app, Action& chosen);
 void add_reference_command(CLI::App& app, Action& chosen);
 void add_work_precision_command(CLI::App& app, Action& chosen);
+void add_fit_command(CLI::App& app, Action& chosen);
+void add_stability_command(CLI::App& app, Action& chosen);
+void add_series_command(CLI::App& app, Action& chosen);
 
 }  // namespace restitution::cli

@@ -8,7 +8,9 @@
 #include "cli/commands.hpp"
 #include "restitution/errors.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
   using namespace restitution;
   CLI::App app{"restitution: coefficient of normal restitution of colliding viscoelastic spheres",
                "restitution"};
@@ -17,6 +19,9 @@ int main(int argc, char** argv) {
   cli::add_eps_command(app, chosen);
   cli::add_reference_command(app, chosen);
   cli::add_work_precision_command(app, chosen);
+  cli::add_fit_command(app, chosen);
+  cli::add_stability_command(app, chosen);
+  cli::add_series_command(app, chosen);
 
   std::string known;
   bool is_known = false;
@@ -51,6 +56,17 @@ int main(int argc, char** argv) {
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "restitution: failure: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (...) {  // the last line of defence: never an abort or a stack trace
+    std::fputs("restitution: failure: unexpected error\n", stderr);
     return 1;
   }
 }

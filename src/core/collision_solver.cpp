@@ -151,10 +151,10 @@ class CollisionRun {
            (options_.ends.delayed_recovery && !result_.value.delayed_recovery);
   }
 
-  NumericalFailure failure(const std::string& what) const {
-    return NumericalFailure(fmt::format("{} (law {}, parameter {}, {}, tolerance {:g}, method {})", what,
+  [[nodiscard]] NumericalFailure failure(const std::string& what) const {
+    return NumericalFailure{fmt::format("{} (law {}, parameter {}, {}, tolerance {:g}, method {})", what,
                                         law_name(law_.kind), law_.parameter, end_names(options_.ends),
-                                        options_.tolerance, method_name(plan_.method)));
+                                        options_.tolerance, method_name(plan_.method))};
   }
 
   void record(const Point& p) {
@@ -165,6 +165,7 @@ class CollisionRun {
 
   void begin(const detail::PhaseSettings& settings, double t0, const State& state, const Event* events,
              int count) {
+    phase_steps_ = 0;
     try {
       integrator_.start(law_, settings, t0, state, events, count);
     } catch (const NumericalFailure& e) {
@@ -173,6 +174,12 @@ class CollisionRun {
   }
 
   CvodeIntegrator::Step advance() {
+    // CVODE's own step bound counts per call, and every call here is one step: count them here.
+    if (++phase_steps_ > options_.max_steps_per_phase) {
+      add(result_.value.stats, integrator_.phase_stats());
+      throw failure(
+          fmt::format("too much work: more than {} steps in one phase", options_.max_steps_per_phase));
+    }
     try {
       CvodeIntegrator::Step step = integrator_.advance();
       if (options_.keep_trajectory) record(point_of(form_, step.t, step.state));
@@ -295,6 +302,7 @@ class CollisionRun {
   const detail::SolvePlan& plan_;
   CvodeIntegrator& integrator_;
   Form form_ = Form::time;
+  long phase_steps_ = 0;
   Accumulated result_;
 };
 

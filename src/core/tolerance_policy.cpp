@@ -69,6 +69,10 @@ void check_solve_request(const ContactLaw& law, const SolveOptions& options) {
     throw InvalidInput(fmt::format("tolerance must lie in [{:g}, {:g}] for method {}, got {}", smallest,
                                    kMaxTolerance, method_name(options.method), tol));
   }
+  if (options.max_steps_per_phase < 1) {
+    throw InvalidInput(
+        fmt::format("max_steps_per_phase must be positive, got {}", options.max_steps_per_phase));
+  }
   if (!options.ends.naive && !options.ends.delayed_recovery) {
     throw InvalidInput("no end of the collision requested: ask for naive, delayed-recovery or both");
   }

@@ -60,12 +60,13 @@ CvodeMemory::~CvodeMemory() {
   CVodeFree(&memory_);
 }
 
-void CvodeMemory::record_error(int code, const char* module, const char* function, char* message,
+void CvodeMemory::record_error(int code, const char* module, const char* function,
+                               char* message,  // NOLINT(readability-non-const-parameter): CVErrHandlerFn
                                void* self) noexcept {
   try {
     static_cast<CvodeMemory*>(self)->last_error_ =
-        fmt::format("{} in {}: {} (flag {})", module ? module : "", function ? function : "",
-                    message ? message : "", code);
+        fmt::format("{} in {}: {} (flag {})", module != nullptr ? module : "",
+                    function != nullptr ? function : "", message != nullptr ? message : "", code);
   } catch (...) {  // NOLINT(bugprone-empty-catch): an error text must never throw through CVODE
   }
 }
