@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
 
 #include "cli_runner.hpp"
 #include "reference_checks.hpp"
@@ -17,7 +18,9 @@ using test_support::run_cli;
 using test_support::slurp;
 
 TEST(CliWorkPrecision, TaylorEngineRowsStayWithinTheirTolerance) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "restitution-wp-test";
+  // A folder of this process only: other test runs (other checkouts) may run at the same time.
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("restitution-wp-test-" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
   const auto outcome = run_cli("work-precision --engine taylor --repeats 1 --out " + dir.string());
   ASSERT_EQ(outcome.status, 0) << outcome.err;
@@ -45,7 +48,7 @@ TEST(CliWorkPrecision, TaylorEngineRowsStayWithinTheirTolerance) {
 }
 
 TEST(CliWorkPrecision, UnknownEngineIsAnInputError) {
-  const auto outcome = run_cli("work-precision --engine rk4 --out /tmp/restitution-wp-bad");
+  const auto outcome = run_cli("work-precision --engine rk4 --out /nonexistent-unused");
   EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.err.find("unknown engine 'rk4'"), std::string::npos) << outcome.err;
 }

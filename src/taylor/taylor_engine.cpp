@@ -32,6 +32,7 @@ taylor::TaylorSettings settings_for(const ContactLaw& law, const SolveOptions& o
   s.order = std::clamp(static_cast<int>(std::ceil(-0.5 * std::log(s.tolerance))) + 1 + kExtraOrder, 6,
                        taylor::kMaxOrder);
   s.naive = options.ends.naive;
+  s.max_steps = options.max_steps_per_phase;  // bounds the whole solve, more strictly than per phase
   s.delayed_recovery = options.ends.delayed_recovery;
   const double p = law.parameter;
   const double z = std::max(p, 1.0);
