@@ -15,5 +15,6 @@ void add_work_precision_command(CLI::App& app, Action& chosen);
 void add_fit_command(CLI::App& app, Action& chosen);
 void add_stability_command(CLI::App& app, Action& chosen);
 void add_series_command(CLI::App& app, Action& chosen);
+void add_sweep_command(CLI::App& app, Action& chosen);
 
 }  // namespace restitution::cli

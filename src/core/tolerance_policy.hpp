@@ -15,10 +15,10 @@ struct SolvePlan {
   State absolute_tolerance_compression{};  // (τ, x', I)
   double time_limit = 0.0;                 // law's own τ
   double start_phase_x = 0.0;              // largest x of the compression form of the start
+  long max_steps = 0;                      // per phase
 };
 
-// Throws InvalidInput for a tolerance outside [min_tolerance(method), kMaxTolerance], no end requested, or an
-// end that does not exist for this law. Every engine checks its request with it.
+// check_solve_options plus the ends that do not exist for this law: every engine checks its request with it.
 void check_solve_request(const ContactLaw& law, const SolveOptions& options);
 
 // Throws InvalidInput for a tolerance outside [kMinTolerance, kMaxTolerance], no end requested, or an end
