@@ -11,8 +11,10 @@
 
 namespace restitution {
 
-enum class Method { bdf, adams, automatic };
-const char* method_name(Method method);  // "bdf" | "adams" | "auto"
+// bdf, adams: CVODE; taylor: the Taylor-series engine (restitution/taylor_engine.hpp); automatic: CVODE,
+// BDF or Adams per regime.
+enum class Method { bdf, adams, automatic, taylor };
+const char* method_name(Method method);  // "bdf" | "adams" | "auto" | "taylor"
 
 // One end of the collision, for callers that ask for a single end.
 enum class CollisionEnd { naive, delayed_recovery };
@@ -45,6 +47,8 @@ struct SolveOptions {
 inline constexpr double kSmallestTolerance = 1e-14;
 inline constexpr double kMinTolerance = 1e-11;
 inline constexpr double kMaxTolerance = 1e-2;
+// The smallest tolerance the method accepts (kMinTolerance for CVODE, kMinTaylorTolerance for taylor).
+double min_tolerance(Method method);
 
 // Throws InvalidInput naming the tolerance or the ends when the options cannot be honoured for any law.
 void check_solve_options(const SolveOptions& options);
@@ -112,6 +116,6 @@ EndSelection selection_of(CollisionEnd end);
 const EndResult& end_of(const CollisionResult& result, CollisionEnd end);
 
 // The method `automatic` resolves to for this law (measured: see docs/accuracy.md).
-Method resolve_method(const ContactLaw& law, Method requested);
+Method resolve_method(const ContactLaw& law, Method requested, const EndSelection& ends = {});
 
 }  // namespace restitution

@@ -10,6 +10,8 @@ namespace restitution::cli {
 using Action = std::function<int()>;
 
 void add_eps_command(CLI::App& app, Action& chosen);
+void add_reference_command(CLI::App& app, Action& chosen);
+void add_work_precision_command(CLI::App& app, Action& chosen);
 void add_fit_command(CLI::App& app, Action& chosen);
 void add_stability_command(CLI::App& app, Action& chosen);
 void add_calibrate_command(CLI::App& app, Action& chosen);

@@ -18,6 +18,8 @@ int run(int argc, char** argv) {
   app.require_subcommand(1);
   cli::Action chosen;
   cli::add_eps_command(app, chosen);
+  cli::add_reference_command(app, chosen);
+  cli::add_work_precision_command(app, chosen);
   cli::add_fit_command(app, chosen);
   cli::add_stability_command(app, chosen);
   cli::add_calibrate_command(app, chosen);

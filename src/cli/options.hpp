@@ -21,6 +21,7 @@ inline EndSelection end_selection(const std::string& end) {
 inline Method method_from(const std::string& name) {
   if (name == "bdf") return Method::bdf;
   if (name == "adams") return Method::adams;
+  if (name == "taylor") return Method::taylor;
   return Method::automatic;
 }
 
@@ -39,10 +40,13 @@ inline void add_solver_options(CLI::App& command, SolverArguments& a) {
       ->capture_default_str();
   command
       .add_option("--tolerance", a.tolerance,
-                  "accuracy of eps relative to min(eps, 1 - eps), in [1e-14, 1e-2] (CVODE: >= 1e-11)")
+                  "accuracy of eps relative to min(eps, 1 - eps), in [1e-14, 1e-2] (CVODE: >= 1e-11, taylor: "
+                  ">= 1e-13)")
       ->capture_default_str();
-  command.add_option("--method", a.method, "integration method: bdf, adams or auto (chosen per regime)")
-      ->check(CLI::IsMember({"bdf", "adams", "auto"}))
+  command
+      .add_option("--method", a.method,
+                  "integration method: bdf, adams, auto (CVODE, chosen per regime) or taylor (Taylor series)")
+      ->check(CLI::IsMember({"bdf", "adams", "auto", "taylor"}))
       ->capture_default_str();
 }
 

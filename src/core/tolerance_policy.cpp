@@ -15,11 +15,12 @@ void check_solve_options(const SolveOptions& options) {
     throw InvalidInput(
         fmt::format("tolerance must lie in [{:g}, {:g}], got {}", kSmallestTolerance, kMaxTolerance, tol));
   }
-  if (tol < kMinTolerance) {
+  const double smallest = min_tolerance(options.method);
+  if (tol < smallest) {
     throw InvalidInput(fmt::format(
-        "tolerance {:g} is below what the CVODE engine can deliver ({:g}): double-precision round-off in "
-        "its steps limits the accuracy of eps; ask for a tolerance >= {:g}",
-        tol, kMinTolerance, kMinTolerance));
+        "tolerance {:g} is below what the {} engine can deliver ({:g}): double-precision round-off in its "
+        "steps limits the accuracy of eps; ask for a tolerance >= {:g}",
+        tol, options.method == Method::taylor ? "Taylor" : "CVODE", smallest, smallest));
   }
   if (options.max_steps_per_phase < 1) {
     throw InvalidInput(fmt::format("max_steps_per_phase must be >= 1, got {}", options.max_steps_per_phase));
@@ -84,7 +85,9 @@ double time_limit(const ContactLaw& law, const EndSelection& ends) {
   return law.time_scale * 1000.0 * (1.0 + zeta) * (1.0 + std::log1p(zeta));
 }
 
-void check_request(const ContactLaw& law, const SolveOptions& options) {
+}  // namespace
+
+void check_solve_request(const ContactLaw& law, const SolveOptions& options) {
   check_solve_options(options);
   if (law.kind == LawKind::linear_dashpot && options.ends.naive && law.parameter >= 1.0) {
     throw InvalidInput(fmt::format(
@@ -94,12 +97,10 @@ void check_request(const ContactLaw& law, const SolveOptions& options) {
   }
 }
 
-}  // namespace
-
 SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options) {
-  check_request(law, options);
+  check_solve_request(law, options);
   SolvePlan plan;
-  plan.method = resolve_method(law, options.method);
+  plan.method = resolve_method(law, options.method, options.ends);
   plan.smooth_ends = options.smooth_ends && law.kind == LawKind::viscoelastic_hertz;
   const Magnitudes m = law.kind == LawKind::viscoelastic_hertz
                            ? hertz_magnitudes(law.parameter, options.ends)

@@ -1,0 +1,23 @@
+#pragma once
+// The Taylor-series engine (`--method taylor`): a double-precision Taylor method of adaptive order on the
+// smooth formulation of the collision (u = sqrt(x) near x = 0, τ around maximal compression; DESIGN.md §4).
+// Same results and accuracy contract as the CVODE engine; reached through CollisionSolver::solve with
+// Method::taylor, or directly here (it holds no state).
+#include "restitution/collision_solver.hpp"
+
+namespace restitution {
+
+// The tolerance range the Taylor engine accepts (relative accuracy of ε, as for CVODE): measured against
+// the reference solutions (docs/accuracy.md).
+inline constexpr double kMinTaylorTolerance = 1e-13;
+
+// Largest ζ for which the Taylor engine computes the naive end: beyond it the overdamped naive tail is
+// stiff (relaxation rate ζ sqrt(x) against a duration ~ ζ ln ζ), which an explicit method pays for with
+// ~ζ^{5/3} steps; CVODE's BDF is the engine there.
+inline constexpr double kTaylorNaiveZetaMax = 100.0;
+
+// Throws InvalidInput for options outside the engine's range (tolerance, trajectory, the naive end beyond
+// kTaylorNaiveZetaMax) and NumericalFailure if the integration fails.
+CollisionResult solve_with_taylor(const ContactLaw& law, const SolveOptions& options);
+
+}  // namespace restitution

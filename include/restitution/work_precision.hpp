@@ -1,0 +1,47 @@
+#pragma once
+// Error against run time: every engine (CVODE BDF and Adams with and without the smooth formulation at the
+// ends, the Taylor engine) on a fixed ζ set and tolerance ladder, both ends, measured against the reference
+// solutions (data/reference_solutions.csv).
+#include <string>
+#include <vector>
+
+#include "restitution/collision_solver.hpp"
+#include "restitution/reference_solution.hpp"
+
+namespace restitution {
+
+struct WorkPrecisionEngine {
+  std::string name;  // "taylor", "bdf", "adams", "bdf-plain", "adams-plain"
+  Method method;
+  bool smooth_ends;  // SolveOptions::smooth_ends ("-plain": integrated in τ throughout)
+};
+
+std::vector<WorkPrecisionEngine> work_precision_engines();
+std::vector<double> work_precision_zetas();       // 1e-4, 1e-3, ..., 1e4 (points of the reference grid)
+std::vector<double> work_precision_tolerances();  // 1e-4, 1e-5, ..., 1e-13 (each engine: those it accepts)
+
+struct WorkPrecisionRow {
+  std::string engine;
+  std::string end;  // "naive" | "delayed-recovery"
+  double tolerance = 0, zeta = 0;
+  double error = 0;           // max(|ε-ε*|, |(1-ε)-(1-ε*)|) / min(ε*, 1-ε*)
+  double median_seconds = 0;  // per solve, median over the repeats
+  long rhs_evaluations = 0, steps = 0;
+};
+
+// The reference row of ζ (matched to 1e-12 relative), or nullptr.
+const ReferenceRow* reference_row_for(const std::vector<ReferenceRow>& reference, double zeta);
+// The contract's error of a result against the reference: max(|ε-ε*|, |(1-ε)-(1-ε*)|) / min(ε*, 1-ε*),
+// where |ε-ε*| does not count one spacing of doubles at ε* (near ε = 1 the double ε cannot resolve
+// T·(1-ε); 1-ε carries the accuracy there); the absolute difference where min(ε*, 1-ε*) = 0 (ζ = 0).
+double contract_error(const EndResult& result, const ReferenceEndValues& reference);
+// The options of one work-precision point: one end only, so that its cost is measured alone.
+SolveOptions work_precision_options(const WorkPrecisionEngine& engine, bool naive, double tolerance);
+
+// Measures every (engine, end, tolerance, ζ) the engine accepts and the reference holds. Adams (a non-stiff
+// method) is measured for ζ <= 100 only. Each point is solved once to warm up, then `repeats` times.
+// `engines` names a subset of work_precision_engines() (empty: all); throws InvalidInput for an unknown name.
+std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<ReferenceRow>& reference, int repeats,
+                                                     const std::vector<std::string>& engines = {});
+
+}  // namespace restitution

@@ -1,0 +1,63 @@
+// `restitution reference`: the high-precision reference solutions (Taylor method in __float128) on the fixed
+// ζ grid, written as data/reference_solutions.csv; or one ζ printed with 34 significant digits.
+#include <fmt/core.h>
+#include <quadmath.h>
+
+#include <memory>
+#include <optional>
+
+#include "cli/commands.hpp"
+#include "cli/output_files.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/reference_solution.hpp"
+
+namespace restitution::cli {
+namespace {
+
+struct ReferenceOptions {
+  std::string out;
+  std::optional<double> zeta;
+};
+
+std::string digits(__float128 value) {
+  char buffer[64];
+  quadmath_snprintf(buffer, sizeof buffer, "%.33Qe", value);
+  return buffer;
+}
+
+int run_reference(const ReferenceOptions& o) {
+  if (o.zeta) {
+    const ReferenceSolution s = hertz_reference(*o.zeta);
+    fmt::print("zeta {:.17g}: agreement of the two orders {:.3g}, {} steps\n", s.parameter, s.agreement,
+               s.steps);
+    fmt::print("  maximal compression  tau = {}  x = {}\n", digits(s.tau_max), digits(s.x_max));
+    for (const auto& [name, end] :
+         {std::pair{"naive", &s.naive}, std::pair{"delayed-recovery", &s.delayed_recovery}}) {
+      if (!*end) continue;
+      fmt::print("  {:<17} eps = {}  1-eps = {}\n  {:<17} tau = {}  x = {}\n", name, digits((*end)->eps),
+                 digits((*end)->one_minus_eps), "", digits((*end)->tau), digits((*end)->x));
+    }
+    return 0;
+  }
+  if (o.out.empty()) throw InvalidInput("give --out FILE (or --zeta Z for one value)");
+  std::vector<ReferenceSolution> solutions;
+  for (const double zeta : reference_zeta_grid()) solutions.push_back(hertz_reference(zeta));
+  const std::filesystem::path path(o.out);
+  if (path.has_parent_path()) prepare_output_folder(path.parent_path());
+  write_file_atomically(path, reference_csv(solutions));
+  fmt::print("wrote {} reference solutions to {}\n", solutions.size(), path.string());
+  return 0;
+}
+
+}  // namespace
+
+void add_reference_command(CLI::App& app, Action& chosen) {
+  auto o = std::make_shared<ReferenceOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "reference", "high-precision reference solutions (Taylor method in __float128, independent of CVODE)");
+  cmd->add_option("--out", o->out, "CSV file to write (the repository keeps data/reference_solutions.csv)");
+  cmd->add_option("--zeta", o->zeta, "print the reference for one zeta >= 0 instead");
+  cmd->callback([o, &chosen] { chosen = [o] { return run_reference(*o); }; });
+}
+
+}  // namespace restitution::cli

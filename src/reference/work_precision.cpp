@@ -1,0 +1,110 @@
+#include "restitution/work_precision.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "restitution/errors.hpp"
+#include "restitution/taylor_engine.hpp"
+
+namespace restitution {
+namespace {
+
+bool accepts(const WorkPrecisionEngine& engine, bool naive, double zeta) {
+  if (engine.method == Method::adams && zeta > 100.0) return false;
+  if (engine.method == Method::taylor && naive && zeta > kTaylorNaiveZetaMax) return false;
+  return true;
+}
+
+}  // namespace
+
+const ReferenceRow* reference_row_for(const std::vector<ReferenceRow>& reference, double zeta) {
+  for (const ReferenceRow& row : reference)
+    if (std::abs(row.zeta - zeta) <= 1e-12 * zeta) return &row;
+  return nullptr;
+}
+
+double contract_error(const EndResult& result, const ReferenceEndValues& reference) {
+  const double scale = std::min(reference.eps, reference.one_minus_eps);
+  // ε is a double: near ε = 1 its spacing (1.1e-16) can exceed T·(1-ε), so one spacing of the reference ε
+  // is not counted against it (1-ε carries the full accuracy there).
+  const double spacing = std::nextafter(reference.eps, 2.0) - reference.eps;
+  const double eps_error = std::max(std::abs(result.eps - reference.eps) - spacing, 0.0);
+  const double difference = std::max(eps_error, std::abs(result.one_minus_eps - reference.one_minus_eps));
+  return scale > 0 ? difference / scale : difference;
+}
+
+SolveOptions work_precision_options(const WorkPrecisionEngine& engine, bool naive, double tolerance) {
+  SolveOptions options;
+  options.method = engine.method;
+  options.smooth_ends = engine.smooth_ends;
+  options.tolerance = tolerance;
+  options.ends = {naive, !naive};
+  return options;
+}
+
+std::vector<WorkPrecisionEngine> work_precision_engines() {
+  return {{"taylor", Method::taylor, true},
+          {"bdf", Method::bdf, true},
+          {"adams", Method::adams, true},
+          {"bdf-plain", Method::bdf, false},
+          {"adams-plain", Method::adams, false}};
+}
+
+std::vector<double> work_precision_zetas() {
+  std::vector<double> z;
+  for (int k = -4; k <= 4; ++k) z.push_back(std::pow(10.0, k));
+  return z;
+}
+
+std::vector<double> work_precision_tolerances() {
+  std::vector<double> t;
+  for (int k = 4; k <= 13; ++k) t.push_back(std::pow(10.0, -k));
+  return t;
+}
+
+std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<ReferenceRow>& reference, int repeats,
+                                                     const std::vector<std::string>& engines) {
+  const std::vector<WorkPrecisionEngine> all = work_precision_engines();
+  for (const std::string& name : engines) {
+    if (std::none_of(all.begin(), all.end(), [&](const WorkPrecisionEngine& e) { return e.name == name; }))
+      throw InvalidInput(
+          fmt::format("unknown engine '{}' (known: taylor, bdf, adams, bdf-plain, adams-plain)", name));
+  }
+  std::vector<WorkPrecisionRow> rows;
+  CollisionSolver solver;
+  std::vector<double> samples(static_cast<std::size_t>(std::max(repeats, 1)));
+  for (const WorkPrecisionEngine& engine : all) {
+    if (!engines.empty() && std::find(engines.begin(), engines.end(), engine.name) == engines.end()) continue;
+    for (const bool naive : {false, true}) {
+      for (const double tolerance : work_precision_tolerances()) {
+        if (tolerance < min_tolerance(engine.method)) continue;
+        for (const double zeta : work_precision_zetas()) {
+          const ReferenceRow* row = reference_row_for(reference, zeta);
+          if (row == nullptr || !accepts(engine, naive, zeta)) continue;
+          const auto& ref = naive ? row->naive : row->delayed_recovery;
+          if (!ref) continue;
+          const SolveOptions options = work_precision_options(engine, naive, tolerance);
+          const ContactLaw law = ContactLaw::hertz_natural(zeta);
+          CollisionResult result = solver.solve(law, options);
+          for (double& sample : samples) {
+            const auto start = std::chrono::steady_clock::now();
+            result = solver.solve(law, options);
+            sample = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          }
+          std::nth_element(samples.begin(), samples.begin() + static_cast<long>(samples.size() / 2),
+                           samples.end());
+          const EndResult& end = naive ? *result.naive : *result.delayed_recovery;
+          rows.push_back({engine.name, naive ? "naive" : "delayed-recovery", tolerance, zeta,
+                          contract_error(end, *ref), samples[samples.size() / 2],
+                          result.stats.rhs_evaluations, result.stats.steps});
+        }
+      }
+    }
+  }
+  return rows;
+}
+
+}  // namespace restitution
