@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "restitution/series.hpp"
 #include "restitution/units.hpp"
 
 namespace restitution {
@@ -136,8 +137,8 @@ TEST_F(ShippedScene, MaterialSweepRubberAndIce) {
   const Csv ice = read_csv(folder_ / "ice.csv");
   for (std::size_t i = 0; i < ice.rows.size(); ++i) {
     // (g/g*)^{1/5} = C1 ζ with g* = 0.32 cm/s.
-    EXPECT_NEAR(c1_closed_form() * ice.at(i, "zeta"), std::pow(ice.at(i, "velocity_m_s") / 0.0032, 0.2),
-                1e-13);
+    EXPECT_NEAR(series::c1_closed_form() * ice.at(i, "zeta"),
+                std::pow(ice.at(i, "velocity_m_s") / 0.0032, 0.2), 1e-13);
     EXPECT_NEAR(ice.at(i, "eps_empirical"), 0.32 * std::pow(100.0 * ice.at(i, "velocity_m_s"), -0.234),
                 1e-14);
   }

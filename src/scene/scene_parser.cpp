@@ -38,6 +38,18 @@ EndSelection read_ends(TomlReader& r, EndSelection fallback = {}) {
   return ends;
 }
 
+series::Approximation approximation_from(const TomlReader& r, const std::string& name) {
+  using series::Approximation;
+  std::string known;
+  for (const Approximation a :
+       {Approximation::naive_series, Approximation::delayed_recovery_series, Approximation::pade_1999,
+        Approximation::simple_theory_1999, Approximation::pade_2011_1_4, Approximation::pade_2011_3_6}) {
+    if (name == series::approximation_name(a)) return a;
+    known += (known.empty() ? "" : ", ") + std::string(series::approximation_name(a));
+  }
+  r.fail("approximations", fmt::format("unknown approximation \"{}\" (known: {})", name, known));
+}
+
 CollisionEnd read_end(TomlReader& r) {
   const std::string w = r.text("end").value_or("delayed-recovery");
   if (w == "naive") return CollisionEnd::naive;
@@ -174,6 +186,7 @@ class Parser {
   Sweep read_sweep(TomlReader& r) {
     Sweep s;
     read_heading(r, "sweep", s);
+    s.note = r.text("note").value_or("");
     if (const auto q = r.words("quantities")) {
       s.quantities = {false, false, false, false};
       for (const std::string& w : *q) {
@@ -212,7 +225,13 @@ class Parser {
         r.fail("characteristic_velocity", "expected a value > 0 (m/s)");
       }
     }
-    s.compare_series = r.flag("compare_series").value_or(false);
+    if (const auto names = r.words("approximations")) {
+      for (const std::string& name : *names) s.approximations.push_back(approximation_from(r, name));
+    }
+    if (r.flag("compare_series").value_or(false)) {
+      if (s.ends.naive) s.approximations.push_back(series::Approximation::naive_series);
+      if (s.ends.delayed_recovery) s.approximations.push_back(series::Approximation::delayed_recovery_series);
+    }
     if (const toml::table* e = r.table("empirical")) {
       TomlReader er(*e, r.child_path("empirical"), r.file_name());
       EmpiricalLaw law;
