@@ -27,11 +27,21 @@ struct SolveOptions {
   // Hertz law only: integrate in u = sqrt(x) near x = 0, where the solution is analytic in u but not in τ
   // (DESIGN.md §4). false integrates in τ throughout, for comparison.
   bool smooth_ends = true;
+  // Most internal CVODE steps per phase of the collision; beyond it the solve fails with CVODE's "too much
+  // work" (flag -1). The default never binds on the collisions of this project (at most a few thousand
+  // steps); a smaller limit bounds the work spent on a hard point. Must be >= 1.
+  long max_steps_per_phase = 1000000;
 };
 
-// The accepted tolerance range of the CVODE engine (relative accuracy of ε).
+// Tolerances (relative accuracy of ε): the project accepts requests in [kSmallestTolerance,
+// kMaxTolerance]; the CVODE engine delivers down to kMinTolerance and refuses smaller ones with a message
+// saying so. check_solve_options (src/core/tolerance_policy.cpp) is the one place that applies them.
+inline constexpr double kSmallestTolerance = 1e-14;
 inline constexpr double kMinTolerance = 1e-11;
 inline constexpr double kMaxTolerance = 1e-2;
+
+// Throws InvalidInput naming the tolerance or the ends when the options cannot be honoured for any law.
+void check_solve_options(const SolveOptions& options);
 
 // All times and lengths below are in the natural scaling (x'(0) = 1) whatever form the law was given in.
 struct EndResult {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/parse_errors.hpp"
 #include "restitution/errors.hpp"
 
 namespace {
@@ -19,7 +20,10 @@ int run(int argc, char** argv) {
   cli::add_eps_command(app, chosen);
   cli::add_calibrate_command(app, chosen);
   cli::add_run_command(app, chosen);
+  cli::add_fit_command(app, chosen);
+  cli::add_stability_command(app, chosen);
   cli::add_series_command(app, chosen);
+  cli::add_sweep_command(app, chosen);
 
   std::string known;
   bool is_known = false;
@@ -28,7 +32,8 @@ int run(int argc, char** argv) {
     is_known = is_known || (argc > 1 && sub->get_name() == argv[1]);
   }
   if (argc > 1 && argv[1][0] != '-' && !is_known) {
-    std::fprintf(stderr, "restitution: error: unknown subcommand '%s' (known: %s)\n", argv[1], known.c_str());
+    std::fprintf(stderr, "restitution: error: unknown subcommand '%s' (known: %s)\n",
+                 cli::one_line(argv[1]).c_str(), known.c_str());
     return 2;
   }
   try {
@@ -40,20 +45,20 @@ int run(int argc, char** argv) {
     std::fputs(app.help("", CLI::AppFormatMode::All).c_str(), stdout);
     return 0;
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "restitution: error: %s\n", e.what());
+    std::fprintf(stderr, "restitution: error: %s\n", cli::describe_parse_error(app, e).c_str());
     return 2;
   }
 
   try {
     return chosen ? chosen() : 2;
   } catch (const InvalidInput& e) {
-    std::fprintf(stderr, "restitution: error: %s\n", e.what());
+    std::fprintf(stderr, "restitution: error: %s\n", cli::one_line(e.what()).c_str());
     return 2;
   } catch (const NumericalFailure& e) {
-    std::fprintf(stderr, "restitution: numerical failure: %s\n", e.what());
+    std::fprintf(stderr, "restitution: numerical failure: %s\n", cli::one_line(e.what()).c_str());
     return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "restitution: failure: %s\n", e.what());
+    std::fprintf(stderr, "restitution: failure: %s\n", cli::one_line(e.what()).c_str());
     return 1;
   }
 }

@@ -39,7 +39,7 @@ inline void add_solver_options(CLI::App& command, SolverArguments& a) {
       ->capture_default_str();
   command
       .add_option("--tolerance", a.tolerance,
-                  "accuracy of eps relative to min(eps, 1 - eps), in [1e-11, 1e-2]")
+                  "accuracy of eps relative to min(eps, 1 - eps), in [1e-14, 1e-2] (CVODE: >= 1e-11)")
       ->capture_default_str();
   command.add_option("--method", a.method, "integration method: bdf, adams or auto (chosen per regime)")
       ->check(CLI::IsMember({"bdf", "adams", "auto"}))

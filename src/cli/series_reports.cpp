@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <vector>
 
 #include "cli/json_writer.hpp"
 #include "cli/output_files.hpp"
@@ -21,12 +22,16 @@ std::string validation_csv(const series::ValidationReport& r) {
     csv += fmt::format(",{0}_eps,{0}_one_minus_eps,{0}_rel_err_eps,{0}_rel_err_one_minus_eps", c.name);
   csv += "\n";
   for (const auto& row : r.rows) {
-    csv += number17(row.zeta) + "," + number17(row.naive.eps) + "," + number17(row.naive.one_minus_eps) +
-           "," + number17(row.delayed.eps) + "," + number17(row.delayed.one_minus_eps);
+    std::vector<double> fields{row.zeta, row.naive.eps, row.naive.one_minus_eps, row.delayed.eps,
+                               row.delayed.one_minus_eps};
     for (const auto& e : row.errors)
-      csv += "," + number17(e.value.eps) + "," + number17(e.value.one_minus_eps) + "," +
-             number17(e.relative_error_eps) + "," + number17(e.relative_error_one_minus);
-    csv += "\n";
+      fields.insert(fields.end(),
+                    {e.value.eps, e.value.one_minus_eps, e.relative_error_eps, e.relative_error_one_minus});
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      if (i > 0) csv += ',';
+      csv += number17(fields[i]);
+    }
+    csv += '\n';
   }
   return csv;
 }
@@ -92,8 +97,12 @@ void print_validation_summary(const series::ValidationReport& r) {
   for (std::size_t i = 0; i < r.candidates.size(); ++i) {
     std::string eps, one_minus;
     for (const auto& x : r.summaries[i].crossings) {
-      eps += (eps.empty() ? "" : " / ") + crossing_text(x.zeta_eps);
-      one_minus += (one_minus.empty() ? "" : " / ") + crossing_text(x.zeta_one_minus_eps);
+      if (!eps.empty()) {
+        eps += " / ";
+        one_minus += " / ";
+      }
+      eps += crossing_text(x.zeta_eps);
+      one_minus += crossing_text(x.zeta_one_minus_eps);
     }
     fmt::print("  {:<26} {:<17} {:>26} {:>26}\n", r.candidates[i].name,
                r.candidates[i].delayed_recovery ? "delayed-recovery" : "naive", eps, one_minus);
@@ -118,7 +127,9 @@ int run_series_validation(const std::string& folder_name) {
   print_validation_summary(report);
   const std::string why = run_plot_script("series_validation", {csv.string(), png.string()});
   if (!why.empty()) std::fprintf(stderr, "restitution: warning: %s\n", why.c_str());
-  fmt::print("wrote {}, {}{}\n", csv.string(), json.string(), why.empty() ? ", " + png.string() : "");
+  fmt::print("wrote {}, {}", csv.string(), json.string());
+  if (why.empty()) fmt::print(", {}", png.string());
+  fmt::print("\n");
   return 0;
 }
 

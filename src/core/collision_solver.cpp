@@ -143,9 +143,10 @@ class CollisionRun {
   }
 
   [[nodiscard]] NumericalFailure failure(const std::string& what) const {
-    return NumericalFailure{fmt::format("{} (law {}, parameter {}, {}, tolerance {:g}, method {})", what,
-                                        law_name(law_.kind), law_.parameter, end_names(options_.ends),
-                                        options_.tolerance, method_name(plan_.method))};
+    const char* parameter = law_.kind == LawKind::viscoelastic_hertz ? "zeta" : "damping-ratio";
+    return NumericalFailure{
+        fmt::format("{} (law {}, {}={}, {}, tolerance {:g}, method {})", what, law_name(law_.kind), parameter,
+                    law_.parameter, end_names(options_.ends), options_.tolerance, method_name(plan_.method))};
   }
 
   void record(const Point& p) {
@@ -188,6 +189,7 @@ class CollisionRun {
     form_ = Form::compression;
     detail::PhaseSettings settings{Form::compression, plan_.relative_tolerance,
                                    plan_.absolute_tolerance_compression, u_stop};
+    settings.max_steps = plan_.max_steps;
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
     if (is_start) {
@@ -235,6 +237,7 @@ class CollisionRun {
     detail::PhaseSettings settings{form, plan_.relative_tolerance, plan_.absolute_tolerance_time,
                                    plan_.time_limit};
     settings.switch_x = switch_x;
+    settings.max_steps = plan_.max_steps;
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
     events[static_cast<std::size_t>(count++)] = Event::max_compression;

@@ -7,6 +7,30 @@
 
 #include "restitution/errors.hpp"
 
+namespace restitution {
+
+void check_solve_options(const SolveOptions& options) {
+  const double tol = options.tolerance;
+  if (!std::isfinite(tol) || tol < kSmallestTolerance || tol > kMaxTolerance) {
+    throw InvalidInput(
+        fmt::format("tolerance must lie in [{:g}, {:g}], got {}", kSmallestTolerance, kMaxTolerance, tol));
+  }
+  if (tol < kMinTolerance) {
+    throw InvalidInput(fmt::format(
+        "tolerance {:g} is below what the CVODE engine can deliver ({:g}): double-precision round-off in "
+        "its steps limits the accuracy of eps; ask for a tolerance >= {:g}",
+        tol, kMinTolerance, kMinTolerance));
+  }
+  if (options.max_steps_per_phase < 1) {
+    throw InvalidInput(fmt::format("max_steps_per_phase must be >= 1, got {}", options.max_steps_per_phase));
+  }
+  if (!options.ends.naive && !options.ends.delayed_recovery) {
+    throw InvalidInput("no end of the collision requested: ask for naive, delayed-recovery or both");
+  }
+}
+
+}  // namespace restitution
+
 namespace restitution::detail {
 namespace {
 
@@ -61,14 +85,7 @@ double time_limit(const ContactLaw& law, const EndSelection& ends) {
 }
 
 void check_request(const ContactLaw& law, const SolveOptions& options) {
-  const double tol = options.tolerance;
-  if (!std::isfinite(tol) || tol < kMinTolerance || tol > kMaxTolerance) {
-    throw InvalidInput(
-        fmt::format("tolerance must lie in [{:g}, {:g}], got {}", kMinTolerance, kMaxTolerance, tol));
-  }
-  if (!options.ends.naive && !options.ends.delayed_recovery) {
-    throw InvalidInput("no end of the collision requested: ask for naive, delayed-recovery or both");
-  }
+  check_solve_options(options);
   if (law.kind == LawKind::linear_dashpot && options.ends.naive && law.parameter >= 1.0) {
     throw InvalidInput(fmt::format(
         "the naive end does not exist for damping-ratio r={} >= 1: the overdamped dash-pot never returns to "
@@ -101,6 +118,7 @@ SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options) {
   plan.time_limit = time_limit(law, options.ends);
   // The start phase ends where x' has halved, or at x = 1/2 (natural), whichever comes first.
   plan.start_phase_x = 0.5 * law.length_scale;
+  plan.max_steps = options.max_steps_per_phase;
   return plan;
 }
 

@@ -44,10 +44,11 @@ CertifiedValue certify(const Quad& low, const Decimal50& high) {
     out.digits = kMaxCertifiedDigits;
     return out;
   }
-  const Decimal50 difference = abs(Decimal50(low) - high);
-  const Decimal50 scale = abs(high);
+  // the relative difference as a double: enough to count digits (it is >= 1e-40 or exactly 0)
+  const Decimal50 relative = abs(Decimal50(low) - high) / abs(high);
+  const auto difference = static_cast<double>(relative);
   int digits = kMaxCertifiedDigits;
-  if (difference > 0) digits = static_cast<int>(floor(-log10(difference / scale)));
+  if (difference > 0.0) digits = static_cast<int>(std::floor(-std::log10(difference)));
   out.digits = std::clamp(digits, 0, kMaxCertifiedDigits);
   out.value = high.str(std::max(out.digits - 1, 0), std::ios_base::scientific);  // digits after the point
   return out;

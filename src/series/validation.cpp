@@ -39,16 +39,14 @@ std::vector<Approximant> approximants(const ValidationOptions& o, const Coeffici
   const Pade1999 corrected =
       pade_1999_coefficients(0.6, -computed.c[3] / std::pow(c1, 3), computed.c[4] / std::pow(c1, 4));
   const Pade1999 printed = pade_1999_published();
-  const auto& table_c = published::kTable3C;
-  const auto& table_h = published::kTable5H;
   return {
       {{"naive-table-III", false, "naive series, c_1..c_10 of the 2008 paper's Table III"},
-       [&table_c](double z) { return naive_series(z, table_c); }},
+       [](double z) { return naive_series(z, published::kTable3C); }},
       {{fmt::format("naive-{}", o.naive_order), false,
         fmt::format("naive series, recomputed c_1..c_{}", o.naive_order)},
        [c](double z) { return naive_series(z, c); }},
       {{"delayed-recovery-table-V", true, "delayed-recovery series, h_0..h_20 of the 2008 paper's Table V"},
-       [&table_h](double z) { return delayed_recovery_series(z, table_h); }},
+       [](double z) { return delayed_recovery_series(z, published::kTable5H); }},
       {{fmt::format("delayed-recovery-{}", o.delayed_order), true,
         fmt::format("delayed-recovery series, recomputed h_0..h_{}", o.delayed_order)},
        [h](double z) { return delayed_recovery_series(z, h); }},

@@ -1,0 +1,62 @@
+#pragma once
+// Sweeps over ζ: many independent collisions solved in parallel, one CollisionSolver per thread.
+// Each point's result depends only on its ζ and the SolveOptions (a reused solver gives bitwise the same
+// numbers as a fresh one), so a parallel sweep equals a serial one whatever thread computed which point.
+// The library never prints and holds no global state: the caller passes a stop request (for signals)
+// and receives each finished point through a callback.
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "restitution/collision_solver.hpp"
+
+namespace restitution {
+
+// ζ_i for i = 0 … points-1 from zeta_min to zeta_max (both included exactly), equally spaced in ζ or,
+// with logarithmic spacing, in ln ζ.
+struct ZetaGrid {
+  double zeta_min = 0.0;
+  double zeta_max = 1.0;
+  std::size_t points = 2;
+  bool logarithmic = false;
+};
+inline constexpr std::size_t kMaxSweepPoints = 10'000'000;
+
+// Throws InvalidInput naming zeta-min, zeta-max or points: non-finite or negative bounds, min > max,
+// logarithmic spacing with zeta-min = 0, points outside [1, kMaxSweepPoints], one point with min != max.
+std::vector<double> zeta_values(const ZetaGrid& grid);
+
+// One finished point: its index in the grid, its ζ, and either the result or the numerical failure.
+struct SweepPoint {
+  std::size_t index = 0;
+  double zeta = 0.0;
+  std::optional<CollisionResult> result;  // empty when the point failed
+  std::string error;                      // the NumericalFailure message when it failed
+};
+
+struct SweepControl {
+  unsigned threads = 0;  // 0: std::thread::hardware_concurrency()
+  // Polled before each point: once it returns true no new point starts; points in progress finish.
+  std::function<bool()> stop_requested;
+  // Called once per finished point, never concurrently (the sweep serializes the calls), in completion
+  // order, which may differ from grid order. An exception thrown here stops the sweep and is rethrown.
+  std::function<void(const SweepPoint&)> point_finished;
+  // Indices of points already finished (by an interrupted run): they are not computed again.
+  std::vector<bool> already_done;
+};
+
+struct SweepSummary {
+  std::size_t computed = 0;  // points finished by this call (successful or failed)
+  std::size_t failed = 0;    // of which failed numerically
+  std::size_t skipped = 0;   // already done before this call
+  bool stopped = false;      // stop_requested ended the sweep before every point was finished
+};
+
+// Solves the Hertz law at every ζ with the same options. Throws InvalidInput for bad options before any
+// point is computed; a NumericalFailure at one point marks that point failed and the sweep goes on.
+SweepSummary run_sweep(const std::vector<double>& zetas, const SolveOptions& options,
+                       const SweepControl& control);
+
+}  // namespace restitution

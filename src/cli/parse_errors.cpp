@@ -1,0 +1,73 @@
+#include "cli/parse_errors.hpp"
+
+#include <fmt/core.h>
+
+#include <string_view>
+
+namespace restitution::cli {
+namespace {
+
+// The option called `name` ("--zeta") in the app or any of its subcommands, or null.
+const CLI::Option* find_option(const CLI::App& app, const std::string& name) {
+  for (const CLI::Option* option : app.get_options()) {
+    if (option->check_name(name)) return option;
+  }
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (const CLI::Option* option = find_option(*sub, name)) return option;
+  }
+  return nullptr;
+}
+
+std::string expected_value(const CLI::Option* option) {
+  if (option == nullptr) return "a valid value";
+  const std::string type = option->get_type_name();
+  if (type == "FLOAT") return "a number";
+  if (type == "UINT") return "a whole number >= 0";
+  if (type == "INT") return "a whole number";
+  return "a valid " + type;
+}
+
+std::string describe(const CLI::App& app, const std::string& message);
+
+}  // namespace
+
+std::string one_line(std::string message) {
+  for (char& c : message) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  }
+  return message;
+}
+
+std::string describe_parse_error(const CLI::App& app, const CLI::ParseError& error) {
+  return one_line(describe(app, error.what()));
+}
+
+namespace {
+
+std::string describe(const CLI::App& app, const std::string& message) {
+  // CLI11: "Could not convert: --zeta = abc" for a value of the wrong type.
+  constexpr std::string_view kConversion = "Could not convert: ";
+  if (message.rfind(kConversion, 0) == 0) {
+    const std::size_t equals = message.find(" = ", kConversion.size());
+    if (equals != std::string::npos) {
+      const std::string name = message.substr(kConversion.size(), equals - kConversion.size());
+      const std::string value = message.substr(equals + 3);
+      return fmt::format("{} expects {}, got '{}'", name, expected_value(find_option(app, name)), value);
+    }
+  }
+  // CLI11: "--zeta: 1 required FLOAT missing" for an option given without its value.
+  const std::size_t colon = message.find(": ");
+  if (colon != std::string::npos && message.rfind("--", 0) == 0) {
+    const std::string name = message.substr(0, colon);
+    const std::string rest = message.substr(colon + 2);
+    if (rest.find("required") != std::string::npos && rest.find("missing") != std::string::npos) {
+      return fmt::format("{} needs a value: {}", name, expected_value(find_option(app, name)));
+    }
+    // CLI11: "--zeta: At Most 1 required but received 2" for an option repeated.
+    if (rest.rfind("At Most 1 required", 0) == 0) return fmt::format("{} is given more than once", name);
+  }
+  return message;
+}
+
+}  // namespace
+}  // namespace restitution::cli

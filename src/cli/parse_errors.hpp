@@ -1,0 +1,15 @@
+#pragma once
+// Turns CLI11's parse errors into one line that names the option and says what it expected.
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace restitution::cli {
+
+// The message with control characters (line breaks from an argument echoed back) shown as '?', so that
+// an error stays one line on stderr.
+std::string one_line(std::string message);
+
+// The message for a ParseError raised while parsing `app` (the top-level app with its subcommands).
+std::string describe_parse_error(const CLI::App& app, const CLI::ParseError& error);
+
+}  // namespace restitution::cli

@@ -1,0 +1,200 @@
+// `restitution sweep`: ε over a grid of ζ, in parallel, into one CSV file. Nothing finished is lost: each
+// finished row is appended to FILE.partial and flushed; FILE appears (atomically) only when every point is
+// finished; SIGINT/SIGTERM stop the sweep after the points in progress; --resume continues from FILE.partial.
+#include <fmt/core.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "cli/output_files.hpp"
+#include "cli/sweep_table.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/sweep.hpp"
+
+namespace restitution::cli {
+namespace {
+namespace fs = std::filesystem;
+
+// The signal that asked the sweep to stop (0: none). The only mutable global of the program: a signal
+// handler can do nothing but set a lock-free atomic.
+std::atomic<int> stop_signal{0};  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)
+static_assert(std::atomic<int>::is_always_lock_free);
+
+extern "C" void request_stop(int signal_number) {
+  stop_signal.store(signal_number);
+}
+
+// Routes SIGINT and SIGTERM to request_stop while a sweep runs; restores the previous handlers after.
+class StopSignals {
+ public:
+  StopSignals() {
+    stop_signal.store(0);
+    struct sigaction action {};
+    action.sa_handler = request_stop;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &previous_int_);
+    sigaction(SIGTERM, &action, &previous_term_);
+  }
+  ~StopSignals() {
+    sigaction(SIGINT, &previous_int_, nullptr);
+    sigaction(SIGTERM, &previous_term_, nullptr);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+
+ private:
+  struct sigaction previous_int_ {};
+  struct sigaction previous_term_ {};
+};
+
+constexpr long long kMaxThreads = 1024;
+
+struct SweepOptions {
+  double zeta_min = 0.0;
+  double zeta_max = 0.0;
+  long long points = 0;
+  bool log = false;
+  SolverArguments solver;
+  std::optional<long long> threads;  // default: all cores
+  std::string out;
+  bool resume = false;
+};
+
+// The first line of the partial file: a resumed sweep must have the same settings.
+std::string settings_line(const SweepOptions& o) {
+  return fmt::format(
+      "# restitution sweep: zeta-min={} zeta-max={} points={} spacing={} end={} method={} "
+      "tolerance={}",
+      number17(o.zeta_min), number17(o.zeta_max), o.points, o.log ? "log" : "linear", o.solver.end,
+      o.solver.method, number17(o.solver.tolerance));
+}
+
+// Appends finished rows to the partial file, flushing each so that a killed process loses none.
+class PartialFile {
+ public:
+  PartialFile(const fs::path& path, std::size_t keep_bytes, const std::string& preamble) : path_(path) {
+    if (keep_bytes > 0) fs::resize_file(path, keep_bytes);  // drop a half-written last line
+    file_ = std::fopen(path.c_str(), keep_bytes > 0 ? "ab" : "wb");
+    if (file_ == nullptr) throw InvalidInput(fmt::format("--out: cannot write '{}'", path.string()));
+    if (keep_bytes == 0) write(preamble);
+  }
+  ~PartialFile() {
+    if (file_ != nullptr) std::fclose(file_);
+  }
+  PartialFile(const PartialFile&) = delete;
+  PartialFile& operator=(const PartialFile&) = delete;
+
+  void write(const std::string& lines) {
+    if (std::fputs(lines.c_str(), file_) < 0 || std::fflush(file_) != 0) {
+      throw InvalidInput(fmt::format("--out: cannot write '{}' (disk full?)", path_.string()));
+    }
+  }
+
+ private:
+  fs::path path_;
+  std::FILE* file_ = nullptr;
+};
+
+int run_sweep_command(const SweepOptions& o) {
+  // Signed on the command line so that a negative count is reported as such, not wrapped around.
+  if (o.points < 1) throw InvalidInput(fmt::format("--points must be >= 1, got {}", o.points));
+  if (o.threads && (*o.threads < 1 || *o.threads > kMaxThreads)) {
+    throw InvalidInput(
+        fmt::format("--threads must lie in [1, {}] (default: all cores), got {}", kMaxThreads, *o.threads));
+  }
+  const std::vector<double> zetas =
+      zeta_values({o.zeta_min, o.zeta_max, static_cast<std::size_t>(o.points), o.log});
+  const SolveOptions solve = solve_options(o.solver);
+  check_solve_options(solve);
+  const fs::path out(o.out);
+  if (out.filename().empty() || fs::is_directory(out)) {
+    throw InvalidInput(fmt::format("--out '{}' must name a file, not a folder", o.out));
+  }
+  prepare_output_folder(out.has_parent_path() ? out.parent_path() : fs::path("."));
+  const fs::path partial_path = o.out + ".partial";
+  const std::string settings = settings_line(o);
+  const std::string header = sweep_header(solve.ends);
+
+  PartialSweep done;
+  if (fs::exists(partial_path)) {
+    if (!o.resume) {
+      throw InvalidInput(
+          fmt::format("'{}' holds an interrupted sweep: add --resume to continue it, or delete it",
+                      partial_path.string()));
+    }
+    done = read_partial_sweep(partial_path, settings, header, zetas);
+    fmt::print(stderr, "restitution: resuming: {} of {} points already finished, computing {}\n",
+               done.rows.size(), zetas.size(), zetas.size() - done.rows.size());
+  }
+  PartialFile partial(partial_path, done.valid_bytes, settings + "\n" + header + "\n");
+
+  std::vector<std::string> rows(zetas.size());
+  SweepControl control;
+  control.threads = o.threads ? static_cast<unsigned>(*o.threads) : 0U;
+  control.already_done.assign(zetas.size(), false);
+  for (const auto& [index, row] : done.rows) {
+    rows[index] = row;
+    control.already_done[index] = true;
+  }
+  control.stop_requested = [] { return stop_signal.load() != 0; };
+  control.point_finished = [&](const SweepPoint& point) {
+    rows[point.index] = sweep_row(point, solve.ends);
+    partial.write(fmt::format("{},{}\n", point.index, rows[point.index]));
+  };
+
+  SweepSummary summary;
+  {
+    const StopSignals signals;
+    summary = run_sweep(zetas, solve, control);
+  }
+  const std::size_t finished = summary.computed + summary.skipped;
+  if (summary.stopped) {
+    const int signal_number = stop_signal.load();
+    fmt::print(
+        stderr,
+        "restitution: interrupted by signal {}: {} of {} points finished and kept in '{}'; run the same "
+        "command with --resume to continue\n",
+        signal_number, finished, zetas.size(), partial_path.string());
+    return 128 + signal_number;
+  }
+
+  std::string table = header + "\n";
+  for (const std::string& row : rows) table += row + "\n";
+  write_file_atomically(out, table);
+  fs::remove(partial_path);
+  const std::size_t failed = summary.failed + done.failed;
+  fmt::print("wrote {}: {} points, {} failed\n", o.out, zetas.size(), failed);
+  if (failed > 0) {
+    fmt::print(stderr, "restitution: numerical failure: {} of {} points failed; their rows in '{}' say why\n",
+               failed, zetas.size(), o.out);
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_sweep_command(CLI::App& app, Action& chosen) {
+  auto o = std::make_shared<SweepOptions>();
+  CLI::App* cmd = app.add_subcommand("sweep", "eps over a grid of zeta, in parallel, into a CSV file");
+  cmd->add_option("--zeta-min", o->zeta_min, "smallest zeta >= 0")->required();
+  cmd->add_option("--zeta-max", o->zeta_max, "largest zeta >= zeta-min")->required();
+  cmd->add_option("--points", o->points, "number of zeta values, >= 1 (both bounds included)")->required();
+  cmd->add_flag("--log", o->log, "space zeta logarithmically (needs zeta-min > 0); default: linearly");
+  add_solver_options(*cmd, o->solver);
+  cmd->add_option("--threads", o->threads, "worker threads, >= 1 (default: all cores)");
+  cmd->add_option("--out", o->out, "the CSV file to write (FILE.partial holds the rows while it runs)")
+      ->required();
+  cmd->add_flag("--resume", o->resume, "continue an interrupted sweep from FILE.partial");
+  cmd->callback([o, &chosen] { chosen = [o] { return run_sweep_command(*o); }; });
+}
+
+}  // namespace restitution::cli

@@ -1,0 +1,121 @@
+#include "cli/sweep_table.hpp"
+
+#include <fmt/core.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "cli/output_files.hpp"
+#include "restitution/errors.hpp"
+
+namespace restitution::cli {
+namespace {
+
+struct EndColumn {
+  const char* prefix;
+  std::optional<EndResult> CollisionResult::*member;
+  bool EndSelection::*requested;
+};
+constexpr EndColumn kEnds[] = {
+    {"naive", &CollisionResult::naive, &EndSelection::naive},
+    {"delayed_recovery", &CollisionResult::delayed_recovery, &EndSelection::delayed_recovery},
+};
+constexpr int kNumbersPerEnd = 4;
+constexpr int kTrailingNumbers = 3;  // max_compression tau and x, steps
+
+// A CSV field: quoted, inner quotes doubled, line breaks flattened so that one row stays one line.
+std::string quoted_field(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"') {
+      out += "\"\"";
+    } else {
+      out += (c == '\n' || c == '\r') ? ' ' : c;
+    }
+  }
+  return out + "\"";
+}
+
+[[noreturn]] void damaged(const std::filesystem::path& path, std::size_t line, const std::string& why) {
+  throw InvalidInput(
+      fmt::format("--resume: {}:{}: {}; delete it to start the sweep afresh", path.string(), line, why));
+}
+
+}  // namespace
+
+std::string sweep_header(const EndSelection& ends) {
+  std::string header = "zeta";
+  for (const EndColumn& end : kEnds) {
+    if (!(ends.*end.requested)) continue;
+    for (const char* column : {"eps", "one_minus_eps", "tau", "x"})
+      header += fmt::format(",{}_{}", end.prefix, column);
+  }
+  return header + ",max_compression_tau,max_compression_x,steps,status,error";
+}
+
+std::string sweep_row(const SweepPoint& point, const EndSelection& ends) {
+  std::string row = number17(point.zeta);
+  if (!point.result) {
+    int empty = kTrailingNumbers;
+    for (const EndColumn& end : kEnds) empty += (ends.*end.requested) ? kNumbersPerEnd : 0;
+    for (int i = 0; i < empty; ++i) row += ',';
+    row += ",failed,";
+    row += quoted_field(point.error);
+    return row;
+  }
+  const CollisionResult& r = *point.result;
+  for (const EndColumn& end : kEnds) {
+    if (!(ends.*end.requested)) continue;
+    const EndResult& e = *(r.*end.member);
+    for (const double value : {e.eps, e.one_minus_eps, e.tau, e.x}) {
+      row += ',';
+      row += number17(value);
+    }
+  }
+  row += fmt::format(",{},{},{},ok,", number17(r.max_compression.tau), number17(r.max_compression.x),
+                     r.stats.steps);
+  return row;
+}
+
+PartialSweep read_partial_sweep(const std::filesystem::path& path, const std::string& settings,
+                                const std::string& header, const std::vector<double>& zetas) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InvalidInput(fmt::format("--resume: cannot read '{}'", path.string()));
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+
+  PartialSweep partial;
+  std::size_t line_number = 0;
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    const std::size_t end = text.find('\n', begin);
+    if (end == std::string::npos) break;  // cut off while being written: computed again
+    const std::string line = text.substr(begin, end - begin);
+    ++line_number;
+    if (line_number == 1 && line != settings) {
+      damaged(path, 1, fmt::format("written by another sweep ('{}', this one is '{}')", line, settings));
+    }
+    if (line_number == 2 && line != header) damaged(path, 2, "its CSV header differs from this sweep's");
+    if (line_number > 2) {
+      const std::size_t comma = line.find(',');
+      char* parsed_end = nullptr;
+      const unsigned long long index = std::strtoull(line.c_str(), &parsed_end, 10);
+      if (comma == std::string::npos || parsed_end != line.c_str() + comma || index >= zetas.size()) {
+        damaged(path, line_number, "not a row of this sweep");
+      }
+      const std::string row = line.substr(comma + 1);
+      if (std::strtod(row.c_str(), nullptr) != zetas[index])
+        damaged(path, line_number, "its zeta differs from the grid's");
+      if (row.find(",failed,") != std::string::npos) ++partial.failed;
+      if (!partial.rows.emplace(index, row).second) damaged(path, line_number, "point listed twice");
+    }
+    begin = end + 1;
+  }
+  if (line_number < 2) damaged(path, line_number, "no settings line and header");
+  partial.valid_bytes = begin;
+  return partial;
+}
+
+}  // namespace restitution::cli

@@ -1,0 +1,34 @@
+#pragma once
+// The CSV table of `restitution sweep` and its partial file. The partial file (FILE.partial) holds a line
+// naming the sweep's settings, the CSV header, then one line per finished point in completion order,
+// prefixed by the point's index; the final file holds the header and the rows in ζ order.
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "restitution/collision_solver.hpp"
+#include "restitution/sweep.hpp"
+
+namespace restitution::cli {
+
+// The CSV columns for the requested ends: zeta, per end eps, one_minus_eps, tau, x, then the maximal
+// compression's tau and x, steps, status ("ok" | "failed") and error.
+std::string sweep_header(const EndSelection& ends);
+// One CSV row (no newline); a failed point has empty numbers, status "failed" and the quoted message.
+std::string sweep_row(const SweepPoint& point, const EndSelection& ends);
+
+// The finished rows of an interrupted sweep, read back from its partial file.
+struct PartialSweep {
+  std::map<std::size_t, std::string> rows;  // index -> row
+  std::size_t failed = 0;
+  std::size_t valid_bytes = 0;  // length of the file up to its last complete line
+};
+
+// Reads a partial file written for the same settings line and header; throws InvalidInput naming the file
+// when it belongs to another sweep or is damaged. An incomplete last line (the program was killed while
+// writing it) is ignored. Rows whose index or ζ does not match `zetas` are refused.
+PartialSweep read_partial_sweep(const std::filesystem::path& path, const std::string& settings,
+                                const std::string& header, const std::vector<double>& zetas);
+
+}  // namespace restitution::cli

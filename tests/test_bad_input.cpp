@@ -1,0 +1,134 @@
+// Bad input through the executable, table-driven: each case must end with exit status 2, exactly one line
+// on stderr that starts "restitution: error:" and names the option or key, nothing on stdout, and no
+// output file left behind.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+
+namespace restitution {
+namespace {
+namespace fs = std::filesystem;
+using test_support::run_cli;
+
+struct BadInput {
+  const char* arguments;  // "{dir}" stands for a fresh empty folder
+  const char* names;      // what the one line on stderr must contain
+};
+
+const std::vector<BadInput> kCases = {
+    // The program and its subcommands.
+    {"", "subcommand is required"},
+    {"frobnicate --zeta 1", "unknown subcommand 'frobnicate'"},
+    // A line break inside an argument is echoed as '?': the error stays one line.
+    {"\"$(printf 'two\\nlines')\" --zeta 1", "unknown subcommand 'two?lines'"},
+    {"eps --zeta \"$(printf '1\\n2')\"", "--zeta expects a number, got '1?2'"},
+    {"eps --bogus 1", "--bogus"},
+    {"eps --zeta 1 3", "3"},
+    // eps: the law and its parameters.
+    {"eps", "give --zeta, or --beta with --velocity"},
+    {"eps --zeta", "--zeta needs a value: a number"},
+    {"eps --zeta abc", "--zeta expects a number, got 'abc'"},
+    {"eps --zeta 1 --zeta 2", "--zeta is given more than once"},
+    {"eps --zeta -1", "zeta must be finite and >= 0, got -1"},
+    {"eps --zeta nan", "zeta must be finite and >= 0, got nan"},
+    {"eps --zeta inf", "zeta must be finite and >= 0, got inf"},
+    {"eps --zeta -inf", "zeta must be finite and >= 0, got -inf"},
+    {"eps --zeta 1e400", "zeta must be finite and >= 0, got inf"},
+    {"eps --zeta 1 --beta 1 --velocity 1", "either --zeta or --beta with --velocity"},
+    {"eps --beta 1", "--beta and --velocity go together"},
+    {"eps --velocity 1", "--beta and --velocity go together"},
+    {"eps --beta -1 --velocity 1", "beta must be finite and >= 0"},
+    {"eps --beta nan --velocity 1", "beta must be finite and >= 0"},
+    {"eps --beta 1 --velocity 0", "velocity must be finite and > 0"},
+    {"eps --beta 1 --velocity -2", "velocity must be finite and > 0"},
+    {"eps --beta 1 --velocity inf", "velocity must be finite and > 0"},
+    {"eps --beta 1e300 --velocity 1e300", "outside the range of double"},
+    {"eps --law linear-dashpot", "--law linear-dashpot needs --damping-ratio"},
+    {"eps --law linear-dashpot --damping-ratio 0", "damping-ratio must be finite and > 0"},
+    {"eps --law linear-dashpot --damping-ratio nan", "damping-ratio must be finite and > 0"},
+    {"eps --law linear-dashpot --damping-ratio 2", "naive end does not exist"},
+    {"eps --law linear-dashpot --damping-ratio 0.5 --zeta 1", "takes --damping-ratio, not --zeta"},
+    {"eps --zeta 1 --damping-ratio 0.5", "--damping-ratio belongs to --law linear-dashpot"},
+    {"eps --law hooke --zeta 1", "--law"},
+    // Solver options.
+    {"eps --zeta 1 --tolerance 0", "tolerance must lie in [1e-14, 0.01], got 0"},
+    {"eps --zeta 1 --tolerance -1e-8", "tolerance must lie in [1e-14, 0.01]"},
+    {"eps --zeta 1 --tolerance 1e-15", "tolerance must lie in [1e-14, 0.01]"},
+    {"eps --zeta 1 --tolerance 0.1", "tolerance must lie in [1e-14, 0.01]"},
+    {"eps --zeta 1 --tolerance nan", "tolerance must lie in [1e-14, 0.01]"},
+    {"eps --zeta 1 --tolerance inf", "tolerance must lie in [1e-14, 0.01]"},
+    {"eps --zeta 1 --tolerance 1e-12", "below what the CVODE engine can deliver (1e-11)"},
+    {"eps --zeta 1 --tolerance 1e-14", "below what the CVODE engine can deliver (1e-11)"},
+    {"eps --zeta 1 --tolerance abc", "--tolerance expects a number, got 'abc'"},
+    {"eps --zeta 1 --end sideways", "--end: sideways not in"},
+    {"eps --zeta 1 --method rk4", "--method: rk4 not in"},
+    // sweep.
+    {"sweep --zeta-max 2 --points 3 --out {dir}/s.csv", "--zeta-min is required"},
+    {"sweep --zeta-min 0 --points 3 --out {dir}/s.csv", "--zeta-max is required"},
+    {"sweep --zeta-min 0 --zeta-max 2 --out {dir}/s.csv", "--points is required"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 3", "--out is required"},
+    {"sweep --zeta-min abc --zeta-max 2 --points 3 --out {dir}/s.csv", "--zeta-min expects a number"},
+    {"sweep --zeta-min -1 --zeta-max 2 --points 3 --out {dir}/s.csv",
+     "zeta-min must be a finite number >= 0"},
+    {"sweep --zeta-min nan --zeta-max 2 --points 3 --out {dir}/s.csv", "zeta-min must be a finite number"},
+    {"sweep --zeta-min 0 --zeta-max inf --points 3 --out {dir}/s.csv", "zeta-max must be a finite number"},
+    {"sweep --zeta-min 3 --zeta-max 2 --points 3 --out {dir}/s.csv",
+     "zeta-min (3) must not exceed zeta-max (2)"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --log --out {dir}/s.csv",
+     "logarithmic spacing needs zeta-min > 0"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 0 --out {dir}/s.csv", "--points must be >= 1, got 0"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points -3 --out {dir}/s.csv", "--points must be >= 1, got -3"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 2.5 --out {dir}/s.csv", "--points expects a whole number"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 100000000000 --out {dir}/s.csv",
+     "points must lie in [1, 10000000]"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 1 --out {dir}/s.csv", "points = 1 needs zeta-min = zeta-max"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --threads 0 --out {dir}/s.csv",
+     "--threads must lie in [1, 1024]"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --threads -1 --out {dir}/s.csv", "--threads must lie in"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --threads two --out {dir}/s.csv",
+     "--threads expects a whole"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --tolerance 1e-12 --out {dir}/s.csv", "CVODE engine"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --tolerance 1 --out {dir}/s.csv", "tolerance must lie in"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --end none --out {dir}/s.csv", "--end: none not in"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --out {dir}", "must name a file, not a folder"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --out {dir}/a-file/s.csv", "cannot create output folder"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --out /proc/no-such/s.csv", "cannot create output folder"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --out {dir}/s.csv --out {dir}/t.csv",
+     "--out is given more than once"},
+};
+
+std::string with_folder(std::string arguments, const std::string& folder) {
+  for (std::size_t at; (at = arguments.find("{dir}")) != std::string::npos;) arguments.replace(at, 5, folder);
+  return arguments;
+}
+
+TEST(BadInput, EveryCaseIsOneLineNamingTheProblemAndStatusTwo) {
+  char name[] = "/tmp/restitution-bad-input-XXXXXX";
+  const fs::path folder = mkdtemp(name);
+  { std::ofstream(folder / "a-file") << "a file where a folder is expected\n"; }
+  for (const BadInput& c : kCases) {
+    const std::string arguments = with_folder(c.arguments, folder.string());
+    const auto outcome = run_cli(arguments);
+    EXPECT_EQ(outcome.status, 2) << arguments << "\n" << outcome.err;
+    EXPECT_EQ(outcome.err.rfind("restitution: error: ", 0), 0u) << arguments << "\n" << outcome.err;
+    EXPECT_EQ(std::count(outcome.err.begin(), outcome.err.end(), '\n'), 1) << arguments << "\n"
+                                                                           << outcome.err;
+    EXPECT_NE(outcome.err.find(c.names), std::string::npos) << arguments << "\n" << outcome.err;
+    EXPECT_TRUE(outcome.out.empty()) << arguments << "\n" << outcome.out;
+    // Nothing that looks like a result is left behind.
+    for (const auto& entry : fs::directory_iterator(folder)) {
+      EXPECT_EQ(entry.path().filename(), "a-file") << arguments << " left " << entry.path();
+    }
+  }
+  fs::remove_all(folder);
+  RecordProperty("cases", static_cast<int>(kCases.size()));
+  std::printf("%zu bad-input cases\n", kCases.size());
+}
+
+}  // namespace
+}  // namespace restitution

@@ -1,0 +1,96 @@
+// Numerical failures of the CVODE engine become NumericalFailure messages that name ζ, the end(s), the
+// tolerance, the method and CVODE's flag; each cause is forced here on purpose.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "restitution/collision_solver.hpp"
+#include "restitution/errors.hpp"
+
+namespace restitution {
+namespace {
+
+std::string failure_message(const ContactLaw& law, const SolveOptions& options) {
+  CollisionSolver solver;
+  try {
+    solver.solve(law, options);
+  } catch (const NumericalFailure& e) {
+    return e.what();
+  }
+  return "no failure";
+}
+
+void expect_names(const std::string& message, const std::vector<std::string>& parts) {
+  for (const std::string& part : parts)
+    EXPECT_NE(message.find(part), std::string::npos) << part << " in\n" << message;
+}
+
+TEST(NumericalFailure, TooMuchWorkNamesZetaEndToleranceAndFlag) {
+  SolveOptions options;
+  options.tolerance = 1e-9;
+  options.max_steps_per_phase = 3;
+  options.ends = {false, true};
+  for (const Method method : {Method::bdf, Method::adams}) {
+    options.method = method;
+    const std::string message = failure_message(ContactLaw::hertz_natural(2.5), options);
+    // CV_TOO_MUCH_WORK is flag -1.
+    expect_names(message, {"CVODE failed", "flag -1", "zeta=2.5", "the delayed-recovery end",
+                           "tolerance 1e-09", std::string("method ") + method_name(method)});
+  }
+}
+
+TEST(NumericalFailure, NoEndBeforeTheTimeLimit) {
+  // Without stiffness nor damping the spheres never stop approaching: no maximal compression and no end
+  // before the time limit. ContactLaw's fields are public; the factories would refuse nothing here.
+  ContactLaw free_flight = ContactLaw::hertz_natural(0.0);
+  free_flight.stiffness = 0.0;
+  SolveOptions options;
+  options.tolerance = 1e-6;
+  expect_names(failure_message(free_flight, options),
+               {"no end of the collision before tau=", "zeta=0", "both ends", "tolerance 1e-06"});
+}
+
+TEST(NumericalFailure, NonFiniteRightHandSideIsAFailureNotANumber) {
+  // A law whose force is not a number (a broken law built by hand): CVODE's error test or corrector
+  // fails repeatedly; what comes back must be an error naming the flag, never a NaN ε.
+  ContactLaw broken = ContactLaw::hertz_natural(1.0);
+  broken.stiffness = std::numeric_limits<double>::quiet_NaN();
+  SolveOptions options;
+  options.tolerance = 1e-8;
+  for (const Method method : {Method::bdf, Method::adams}) {
+    options.method = method;
+    CollisionSolver solver;
+    try {
+      const CollisionResult r = solver.solve(broken, options);
+      ADD_FAILURE() << "solved a NaN law: eps " << (r.naive ? r.naive->eps : -1.0);
+    } catch (const NumericalFailure& e) {
+      expect_names(e.what(), {"zeta=1", "tolerance 1e-08", std::string("method ") + method_name(method)});
+      EXPECT_TRUE(std::string(e.what()).find("flag -") != std::string::npos ||
+                  std::string(e.what()).find("not finite") != std::string::npos)
+          << e.what();
+    }
+  }
+}
+
+TEST(NumericalFailure, TheSolverIsUsableAfterAFailure) {
+  CollisionSolver solver;
+  SolveOptions starved;
+  starved.max_steps_per_phase = 2;
+  EXPECT_THROW(solver.solve(ContactLaw::hertz_natural(1.0), starved), NumericalFailure);
+  const SolveOptions normal;
+  CollisionSolver fresh;
+  EXPECT_EQ(solver.solve(ContactLaw::hertz_natural(1.0), normal).naive->eps,
+            fresh.solve(ContactLaw::hertz_natural(1.0), normal).naive->eps);
+}
+
+TEST(NumericalFailure, MaxStepsMustBePositive) {
+  SolveOptions options;
+  options.max_steps_per_phase = 0;
+  CollisionSolver solver;
+  EXPECT_THROW(solver.solve(ContactLaw::hertz_natural(1.0), options), InvalidInput);
+}
+
+}  // namespace
+}  // namespace restitution
