@@ -5,12 +5,10 @@
 #include <optional>
 
 #include "restitution/collision_solver.hpp"
+#include "restitution/power_law_fit.hpp"  // CollisionEnd
 #include "restitution/units.hpp"
 
 namespace restitution {
-
-enum class CollisionEnd { naive, delayed_recovery };
-const char* end_name(CollisionEnd end);  // "naive" | "delayed-recovery"
 
 struct CalibrationRequest {
   double eps = 0.0;           // measured ε in (0, 1)

@@ -53,10 +53,11 @@ struct Sweep {
   std::optional<std::string> material;
   std::optional<double> characteristic_velocity_m_s;  // 1999 paper's g*
   // Approximations to evaluate beside the numerics (`approximations = [...]`, names as in
-  // series::approximation_name; `compare_series = true` adds the 2008 series of every requested end).
+  // src/scene/scene_approximations.hpp; `compare_series = true` adds the 2008 series of every requested end).
   std::vector<series::Approximation> approximations;
   std::optional<EmpiricalLaw> empirical;
   std::optional<PowerLawFitRequest> fit;
+  bool asymptotics = false;  // the derived large-ζ laws of both ends (asymptotics module) as columns
   Axes axes = Axes::linear;
   int line = 0;  // where the [[sweep]] starts, for messages
 };

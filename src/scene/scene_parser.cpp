@@ -8,6 +8,7 @@
 
 #include "restitution/errors.hpp"
 #include "restitution/scene.hpp"
+#include "scene/scene_approximations.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace restitution::scene {
@@ -39,13 +40,11 @@ EndSelection read_ends(TomlReader& r, EndSelection fallback = {}) {
 }
 
 series::Approximation approximation_from(const TomlReader& r, const std::string& name) {
-  using series::Approximation;
   std::string known;
-  for (const Approximation a :
-       {Approximation::naive_series, Approximation::delayed_recovery_series, Approximation::pade_1999,
-        Approximation::simple_theory_1999, Approximation::pade_2011_1_4, Approximation::pade_2011_3_6}) {
-    if (name == series::approximation_name(a)) return a;
-    known += (known.empty() ? "" : ", ") + std::string(series::approximation_name(a));
+  for (const detail::ApproximationInfo& info : detail::kApproximations) {
+    if (name == info.name) return info.kind;
+    if (!known.empty()) known += ", ";
+    known += info.name;
   }
   r.fail("approximations", fmt::format("unknown approximation \"{}\" (known: {})", name, known));
 }
@@ -228,6 +227,7 @@ class Parser {
     if (const auto names = r.words("approximations")) {
       for (const std::string& name : *names) s.approximations.push_back(approximation_from(r, name));
     }
+    s.asymptotics = r.flag("asymptotics").value_or(false);
     if (r.flag("compare_series").value_or(false)) {
       if (s.ends.naive) s.approximations.push_back(series::Approximation::naive_series);
       if (s.ends.delayed_recovery) s.approximations.push_back(series::Approximation::delayed_recovery_series);

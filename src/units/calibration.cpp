@@ -15,18 +15,12 @@ constexpr double kLargestZeta = 1e4;  // the solver's validated range (README, A
 
 // log ε at the requested end, from 1 - ε so that it keeps its relative accuracy as ε -> 1.
 double log_eps(double zeta, CollisionEnd end, SolveOptions options, CollisionSolver& solver) {
-  options.ends = {end == CollisionEnd::naive, end == CollisionEnd::delayed_recovery};
+  options.ends = selection_of(end);
   options.keep_trajectory = false;
-  const CollisionResult r = solver.solve(ContactLaw::hertz_natural(zeta), options);
-  const EndResult& e = end == CollisionEnd::naive ? *r.naive : *r.delayed_recovery;
-  return std::log1p(-e.one_minus_eps);
+  return std::log1p(-end_of(solver.solve(ContactLaw::hertz_natural(zeta), options), end).one_minus_eps);
 }
 
 }  // namespace
-
-const char* end_name(CollisionEnd end) {
-  return end == CollisionEnd::naive ? "naive" : "delayed-recovery";
-}
 
 double zeta_for_eps(double eps, CollisionEnd end, const SolveOptions& options, CollisionSolver& solver,
                     int* solves) {
