@@ -5,7 +5,6 @@
 #include <optional>
 
 #include "restitution/collision_solver.hpp"
-#include "restitution/power_law_fit.hpp"  // CollisionEnd
 #include "restitution/units.hpp"
 
 namespace restitution {

@@ -3,7 +3,7 @@
 // their sources and the end of the collision each describes (evaluated with the published coefficients).
 #include <array>
 
-#include "restitution/power_law_fit.hpp"
+#include "restitution/collision_solver.hpp"
 #include "restitution/series.hpp"
 
 namespace restitution::scene::detail {

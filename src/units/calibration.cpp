@@ -17,7 +17,9 @@ constexpr double kLargestZeta = 1e4;  // the solver's validated range (README, A
 double log_eps(double zeta, CollisionEnd end, SolveOptions options, CollisionSolver& solver) {
   options.ends = selection_of(end);
   options.keep_trajectory = false;
-  return std::log1p(-end_of(solver.solve(ContactLaw::hertz_natural(zeta), options), end).one_minus_eps);
+  const CollisionResult r = solver.solve(ContactLaw::hertz_natural(zeta), options);
+  const EndResult& e = end_of(r, end);
+  return std::log1p(-e.one_minus_eps);
 }
 
 }  // namespace
