@@ -11,6 +11,7 @@
 #include "restitution/calibration.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
+#include "restitution/series.hpp"
 
 namespace restitution {
 namespace {
@@ -40,7 +41,7 @@ TEST(Calibration, PaperExampleRubberSphere) {
   EXPECT_LT(c.beta, 0.205);
   EXPECT_NEAR(c.eps_at_zeta, 0.8, 1e-9);
   EXPECT_NEAR(eps_at(c.zeta, CollisionEnd::delayed_recovery), 0.8, 1e-9);
-  EXPECT_NEAR(c.characteristic_velocity_m_s, std::pow(c1_closed_form() * c.beta, -5.0), 1e-9);
+  EXPECT_NEAR(c.characteristic_velocity_m_s, std::pow(series::c1_closed_form() * c.beta, -5.0), 1e-9);
 }
 
 TEST(Calibration, RootReproducesEpsAtBothEndsAndManyTargets) {

@@ -9,6 +9,7 @@
 #include "restitution/scene.hpp"
 #include "restitution/scene_plan.hpp"
 #include "restitution/scene_run.hpp"
+#include "restitution/series.hpp"
 #include "restitution/units.hpp"
 
 namespace restitution::scene {
@@ -75,9 +76,26 @@ TEST(SceneRun, PhysicalSweepsUseZetaFromBetaAndVelocity) {
   EXPECT_DOUBLE_EQ(p.sweeps[0][0].parameter, 0.2);
   EXPECT_NEAR(p.sweeps[0][1].parameter, 0.4, 1e-15);
   // 1999 paper: (g/g*)^{1/5} = C1 ζ.
-  EXPECT_NEAR(c1_closed_form() * p.sweeps[1][0].parameter, std::pow(0.01 / 0.0032, 0.2), 1e-14);
+  EXPECT_NEAR(series::c1_closed_form() * p.sweeps[1][0].parameter, std::pow(0.01 / 0.0032, 0.2), 1e-14);
   const Scene far = parse_scene("output = \"o\"\n[[sweep]]\nbeta = 100\nvelocity = [1e12]\n", "t");
   EXPECT_THROW((void)plan_scene(far), InvalidInput);
+}
+
+TEST(SceneRun, ApproximationsAreEvaluatedBesideTheNumerics) {
+  const Scene s = parse_scene(
+      "output = \"o\"\n[[sweep]]\nzeta = [0.01, 20]\nends = \"naive\"\n"
+      "approximations = [\"naive-series\", \"pade-1999\"]\nasymptotics = true\n",
+      "t");
+  const SceneResults r = run_scene(s);
+  const auto& columns = r.sweeps[0].approximations;
+  ASSERT_EQ(columns.size(), 3U);  // two approximations and the naive large-ζ law
+  const double eps_small = r.solved[r.plan.sweeps[0][0].job].naive->eps;
+  EXPECT_NEAR(columns[0].eps[0] / eps_small, 1.0, 1e-10);  // the series at ζ = 0.01
+  EXPECT_NEAR(columns[1].eps[0] / eps_small, 1.0, 1e-6);   // the Padé agrees with the series at small ζ
+  const double eps_large = r.solved[r.plan.sweeps[0][1].job].naive->eps;
+  EXPECT_NEAR(columns[2].eps[1] / eps_large, 1.0, 1e-9);  // κ ζ^{-5} at ζ = 20
+  EXPECT_THROW((void)parse_scene("output = \"o\"\n[[sweep]]\nzeta = 1\napproximations = [\"taylor\"]\n", "t"),
+               InvalidInput);
 }
 
 TEST(SceneRun, DashpotPointsWithoutANaiveEndAreNotIntegratedForIt) {

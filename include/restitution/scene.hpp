@@ -13,6 +13,7 @@
 #include "restitution/calibration.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/material.hpp"
+#include "restitution/series.hpp"
 
 namespace restitution::scene {
 
@@ -43,6 +44,7 @@ enum class Axes { linear, log_log, log_x };
 struct Sweep {
   std::string name;
   std::string title;
+  std::string note;  // free text for the report: what to look for
   EndSelection ends;
   Quantities quantities;
   std::vector<double> zeta;          // the variable when no velocity is given
@@ -50,9 +52,12 @@ struct Sweep {
   std::optional<double> beta;        // s^{1/5} m^{-1/5}
   std::optional<std::string> material;
   std::optional<double> characteristic_velocity_m_s;  // 1999 paper's g*
-  bool compare_series = false;                        // the 2008 paper's series at every requested end
+  // Approximations to evaluate beside the numerics (`approximations = [...]`, names as in
+  // src/scene/scene_approximations.hpp; `compare_series = true` adds the 2008 series of every requested end).
+  std::vector<series::Approximation> approximations;
   std::optional<EmpiricalLaw> empirical;
   std::optional<PowerLawFitRequest> fit;
+  bool asymptotics = false;  // the derived large-ζ laws of both ends (asymptotics module) as columns
   Axes axes = Axes::linear;
   int line = 0;  // where the [[sweep]] starts, for messages
 };

@@ -37,11 +37,8 @@ struct NaturalScales {
 };
 NaturalScales natural_scales(double k, double velocity_m_s);
 
-// The 1999 paper's constant C1 in closed form (its Eq. 30):
-// sqrt(π) / (2^{1/5} 5^{2/5}) Γ(3/5) / Γ(21/10) = 1.15344885...
-double c1_closed_form();
-
 // The 1999 paper's characteristic velocity g* [m/s]: (g*)^{-1/5} = C1 (3/2) A (ρ/m_eff)^{2/5} = C1 β
+// (C1 in closed form: series::c1_closed_form)
 // (its Eq. 31), so that (g/g*)^{1/5} = C1 ζ. Throws InvalidInput naming beta when not > 0.
 double characteristic_velocity_m_s(double beta);
 // The inverse: β = (g*)^{-1/5} / C1. Throws InvalidInput naming characteristic_velocity when not > 0.

@@ -1,7 +1,7 @@
 """Plot columns of a scene's CSV table against one column (restitution run).
 
 usage: scene_xy.py CSV PNG --x COL --y COL[,COL...] [--dashed COL,...] [--xscale log] [--yscale log]
-                   [--title T] [--xlabel L] [--ylabel L] [--error COL,...]
+                   [--title T] [--xlabel L] [--ylabel L] [--error COL,...] [--error-label L]
 --error adds a second, log-scaled panel with the absolute values of those columns.
 """
 import argparse
@@ -39,6 +39,7 @@ def main():
     p.add_argument("--dashed", default="")
     p.add_argument("--points", default="")
     p.add_argument("--error", default="")
+    p.add_argument("--error-label", default="|relative difference from the numerics|")
     p.add_argument("--xscale", default="linear")
     p.add_argument("--yscale", default="linear")
     p.add_argument("--title", default="")
@@ -66,7 +67,7 @@ def main():
             xs, ys = finite_pairs(data[a.x], [abs(v) for v in data[name]], logx, True)
             bottom.plot(list(xs), list(ys), "-", label=name)
         bottom.set_yscale("log")
-        bottom.set_ylabel("|error|")
+        bottom.set_ylabel(a.error_label)
         bottom.grid(True, which="both", alpha=0.3)
         bottom.legend(fontsize=8)
     axes[-1][0].set_xlabel(a.xlabel or a.x)

@@ -9,6 +9,7 @@
 #include "cli/json_writer.hpp"
 #include "cli/output_files.hpp"
 #include "cli/scene_tables.hpp"
+#include "restitution/series.hpp"
 #include "restitution/units.hpp"
 
 namespace restitution::cli {
@@ -118,7 +119,11 @@ class SceneWriter {
       if (s.quantities.eps) eps_columns.push_back(std::string("eps_") + end_column(e));
     }
     std::vector<std::string> dashed;
-    for (const auto& a : extras.approximations) dashed.push_back(a.label);
+    std::vector<std::string> differences;
+    for (const auto& a : extras.approximations) {
+      dashed.push_back("eps_" + a.label);
+      differences.push_back("rel_diff_" + a.label);
+    }
     if (s.empirical) dashed.emplace_back("eps_empirical");
     report_ += fmt::format("## {}\n\n", s.title);
     if (!eps_columns.empty()) {
@@ -128,15 +133,21 @@ class SceneWriter {
                                        "--ylabel", "eps",
                                        "--xlabel", physical ? "impact speed v [m/s]" : "zeta = beta v^(1/5)"};
       if (!dashed.empty()) args.insert(args.end(), {"--dashed", join(dashed)});
+      if (!differences.empty()) args.insert(args.end(), {"--error", join(differences)});
       if (s.axes != scene::Axes::linear) args.insert(args.end(), {"--xscale", "log"});
       if (s.axes == scene::Axes::log_log) args.insert(args.end(), {"--yscale", "log"});
       report_ += plot("scene_xy", s.name, args);
     }
     report_ += describe_sweep(s, t);
+    if (!s.note.empty()) report_ += s.note + "\n\n";
     std::vector<std::string> shown = {"zeta"};
     if (physical) shown.emplace_back("velocity_m_s");
     shown.insert(shown.end(), eps_columns.begin(), eps_columns.end());
-    shown.insert(shown.end(), dashed.begin(), dashed.end());
+    for (std::size_t k = 0; k < differences.size(); ++k) {  // each approximation with its difference
+      shown.push_back(dashed[k]);
+      shown.push_back(differences[k]);
+    }
+    if (s.empirical) shown.emplace_back("eps_empirical");
     for (const CollisionEnd e : ends_of(s.ends)) {
       const std::string c = std::string("duration_s_") + end_column(e);
       if (std::find(t.columns.begin(), t.columns.end(), c) != t.columns.end()) shown.push_back(c);
@@ -150,6 +161,17 @@ class SceneWriter {
           fmt::format("Power-law fit at the {} end: eps ≈ {} · zeta^({} ± {}) over {} points.\n\n",
                       end_name(f.end), g(f.prefactor), g(f.exponent), g(f.exponent_uncertainty), f.points);
     }
+    for (const auto& a : extras.approximations) {
+      const std::size_t c = t.column("rel_diff_" + a.label);
+      double worst = 0.0;
+      for (const auto& row : t.rows) {
+        if (std::isfinite(row[c])) worst = std::max(worst, std::abs(row[c]));
+      }
+      report_ +=
+          fmt::format("* `{}`: {}; largest |relative difference| from the numerics over this sweep: {:.3g}\n",
+                      a.label, a.source, worst);
+    }
+    if (!extras.approximations.empty()) report_ += "\n";
     for (const auto& n : extras.notes) report_ += "*" + n + "*\n\n";
 
     json_.key(s.name).begin_object();
@@ -188,7 +210,7 @@ class SceneWriter {
         subject = fmt::format(
             "the 1999 paper's characteristic velocity g* = {} m/s, i.e. β = (g*)^(-1/5)/C1 = {} "
             "s^(1/5) m^(-1/5) (C1 = {})",
-            g(*s.characteristic_velocity_m_s), g(*points.front().beta), g(c1_closed_form()));
+            g(*s.characteristic_velocity_m_s), g(*points.front().beta), g(series::c1_closed_form()));
       }
       if (s.material) {
         const MaterialConstants c = material_constants(scene_.materials.at(*s.material));
@@ -283,10 +305,10 @@ class SceneWriter {
       exact.push_back(std::string("eps_exact_") + end_column(e));
       errors.push_back(std::string("relative_error_") + end_column(e));
     }
-    report_ +=
-        plot("scene_xy", d.name,
-             {"--x", "damping_ratio", "--points", join(numeric), "--y", join(exact), "--error", join(errors),
-              "--title", d.title, "--ylabel", "eps", "--xlabel", "damping ratio r", "--yscale", "log"});
+    report_ += plot("scene_xy", d.name,
+                    {"--x", "damping_ratio", "--points", join(numeric), "--y", join(exact), "--error",
+                     join(errors), "--error-label", "|eps - eps_exact| / min(eps, 1 - eps)", "--title",
+                     d.title, "--ylabel", "eps", "--xlabel", "damping ratio r", "--yscale", "log"});
     report_ += fmt::format(
         "Computed: the linear dash-pot x'' + 2r x' + x = 0 at {} damping ratios against its closed forms "
         "(ε = exp(-r τ_c); naive ωτ_c = π for r < 1, delayed recovery tan ωτ_c = 2rω/(2r²-1)). The error is "

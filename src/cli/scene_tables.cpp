@@ -15,7 +15,7 @@ namespace {
 
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 
-const EndResult* end_of(const CollisionResult* r, CollisionEnd end) {
+const EndResult* end_if_computed(const CollisionResult* r, CollisionEnd end) {
   if (r == nullptr) return nullptr;
   const auto& e = end == CollisionEnd::naive ? r->naive : r->delayed_recovery;
   return e ? &*e : nullptr;
@@ -81,7 +81,10 @@ Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results,
     t.columns.insert(t.columns.end(), {"tau_max_compression", "x_max_compression"});
     if (si) t.columns.insert(t.columns.end(), {"time_of_max_compression_s", "max_compression_m"});
   }
-  for (const auto& a : extras.approximations) t.columns.push_back(a.label);
+  for (const auto& a : extras.approximations) {
+    t.columns.push_back("eps_" + a.label);
+    t.columns.push_back("rel_diff_" + a.label);
+  }
   if (s.empirical) t.columns.emplace_back("eps_empirical");
 
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -91,7 +94,7 @@ Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results,
     std::vector<double> row = {p.parameter};
     if (physical) row.insert(row.end(), {*p.velocity_m_s, *p.beta});
     for (const CollisionEnd e : ends) {
-      const EndResult* end = end_of(r, e);
+      const EndResult* end = end_if_computed(r, e);
       const bool found = end != nullptr;
       if (q.eps) row.push_back(found ? end->eps : kNone);
       if (q.one_minus_eps) row.push_back(found ? end->one_minus_eps : kNone);
@@ -104,7 +107,12 @@ Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results,
         row.insert(row.end(),
                    {r->max_compression.tau * scales.time_s, r->max_compression.x * scales.length_m});
     }
-    for (const auto& a : extras.approximations) row.push_back(a.eps[i]);
+    for (const auto& a : extras.approximations) {
+      // Relative difference from the numerics at the end the approximation describes, when computed.
+      const EndResult* end = end_if_computed(r, a.end);
+      row.push_back(a.eps[i]);
+      row.push_back(end != nullptr ? a.eps[i] / end->eps - 1.0 : kNone);
+    }
     if (s.empirical) row.push_back(extras.empirical_eps[i]);
     t.rows.push_back(std::move(row));
   }
@@ -141,7 +149,7 @@ Table dashpot_table(const scene::Scene& scene, const scene::SceneResults& result
     const CollisionResult* r = scene::result_of(results, p);
     std::vector<double> row = {p.parameter};
     for (const CollisionEnd e : ends) {
-      const EndResult* end = end_of(r, e);
+      const EndResult* end = end_if_computed(r, e);
       if (end == nullptr) {
         row.insert(row.end(), {kNone, kNone, kNone});
         continue;

@@ -7,6 +7,9 @@
 #include "restitution/scene.hpp"
 #include "restitution/scene_run.hpp"
 
+// Sweep tables hold, per approximation, eps_<label> and rel_diff_<label> = eps_<label> / eps - 1 against the
+// numerics at the end the approximation describes.
+
 namespace restitution::cli {
 
 // A table as named columns of numbers (NaN where a value does not exist).

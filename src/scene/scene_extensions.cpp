@@ -2,25 +2,131 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include "restitution/asymptotics.hpp"
+#include "restitution/power_law_fit.hpp"
+#include "restitution/series.hpp"
+#include "restitution/series_tables.hpp"
+#include "restitution/stability_report.hpp"
+#include "scene/scene_approximations.hpp"
+
 namespace restitution::scene::detail {
+namespace {
 
-void add_approximations(const Sweep& sweep, const std::vector<double>& /*zeta*/, SweepExtras& extras) {
-  if (!sweep.compare_series) return;
-  extras.notes.emplace_back(
-      "series comparison: not available in this build (the series module with the published tables has not "
-      "been merged)");
+using series::Approximation;
+
+double evaluate(Approximation a, double zeta) {
+  namespace published = series::published;
+  switch (a) {
+    case Approximation::naive_series:
+      return series::naive_series(zeta, published::kTable3C).eps;
+    case Approximation::delayed_recovery_series:
+      return series::delayed_recovery_series(zeta, published::kTable5H).eps;
+    case Approximation::pade_1999:
+      return series::pade_1999(zeta, series::pade_1999_published()).eps;
+    case Approximation::simple_theory_1999:
+      return series::simple_theory_1999(zeta).eps;
+    case Approximation::pade_2011_1_4:
+      return series::pade_2011_1_4(zeta).eps;
+    case Approximation::pade_2011_3_6:
+      return series::pade_2011_3_6(zeta).eps;
+  }
+  return 0.0;
 }
 
-void add_power_law_fits(const Sweep& sweep, const std::vector<double>& /*zeta*/,
-                        const std::vector<const CollisionResult*>& /*results*/, SweepExtras& extras) {
+}  // namespace
+
+const ApproximationInfo& approximation_info(series::Approximation kind) {
+  for (const ApproximationInfo& info : kApproximations) {
+    if (info.kind == kind) return info;
+  }
+  throw std::logic_error("approximation without an entry in kApproximations");
+}
+
+void add_approximations(const Sweep& sweep, const std::vector<double>& zeta, SweepExtras& extras) {
+  for (const Approximation a : sweep.approximations) {
+    const ApproximationInfo& info = approximation_info(a);
+    ApproximationColumn column;
+    column.label = info.label;
+    column.source = info.source;
+    column.end = info.end;
+    for (const double z : zeta) column.eps.push_back(evaluate(a, z));
+    extras.approximations.push_back(std::move(column));
+  }
+}
+
+void add_power_law_fits(const Sweep& sweep, const std::vector<double>& zeta,
+                        const std::vector<const CollisionResult*>& results, SweepExtras& extras) {
+  if (sweep.asymptotics) {
+    // The derived laws: naive ε = κ ζ^{-5}, delayed recovery with its first correction (docs/asymptotics.md).
+    const double kappa = asymptotics::naive_prefactor().value;
+    const std::pair<CollisionEnd, bool> laws[] = {
+        {CollisionEnd::naive, sweep.ends.naive},
+        {CollisionEnd::delayed_recovery, sweep.ends.delayed_recovery}};
+    for (const auto& [end, wanted] : laws) {
+      if (!wanted) continue;
+      ApproximationColumn column;
+      column.end = end;
+      column.label = end == CollisionEnd::naive ? "naive_asymptotic" : "delayed_recovery_asymptotic";
+      column.source = end == CollisionEnd::naive
+                          ? fmt::format("derived large-zeta law kappa zeta^-5, kappa = {:.10g}", kappa)
+                          : "derived large-zeta law (3/2)^(2/3) zeta^(-5/3) with its first correction";
+      for (const double z : zeta) {
+        column.eps.push_back(z <= 0.0                     ? std::nan("")
+                             : end == CollisionEnd::naive ? asymptotics::naive_eps(z, kappa)
+                                                          : asymptotics::delayed_recovery_eps(z, 2));
+      }
+      extras.approximations.push_back(std::move(column));
+    }
+  }
   if (!sweep.fit) return;
-  extras.notes.emplace_back(
-      "power-law fit: not available in this build (the asymptotics module has not been merged)");
+  const std::pair<CollisionEnd, bool> ends[] = {
+      {CollisionEnd::naive, sweep.ends.naive}, {CollisionEnd::delayed_recovery, sweep.ends.delayed_recovery}};
+  for (const auto& [end, wanted] : ends) {
+    if (!wanted) continue;
+    std::vector<double> z;
+    std::vector<double> eps;
+    for (std::size_t i = 0; i < zeta.size(); ++i) {
+      if (zeta[i] >= sweep.fit->zeta_min && results[i] != nullptr) {
+        z.push_back(zeta[i]);
+        eps.push_back(end_of(*results[i], end).eps);
+      }
+    }
+    if (z.size() < 3) {
+      extras.notes.push_back(
+          fmt::format("power-law fit at the {} end: only {} points with zeta >= {}, need 3", end_name(end),
+                      z.size(), sweep.fit->zeta_min));
+      continue;
+    }
+    const PowerLawFit fit = fit_power_law(z, eps);
+    extras.fits.push_back({end, fit.prefactor, fit.exponent, fit.exponent_stderr, z.size()});
+  }
 }
 
-std::string study_note(const ExternalStudy& study) {
-  return fmt::format("{} study '{}': not available in this build (its module has not been merged)",
-                     study.kind, study.name);
+std::string study_note(const ExternalStudy& study, double tolerance) {
+  if (study.kind != "stability" || study.zeta.empty()) {
+    return fmt::format("{} study '{}': not available in this build{}", study.kind, study.name,
+                       study.kind == "stability" ? " without zeta values" : " (no work-precision module)");
+  }
+  StabilityOptions options;
+  options.tolerance = std::max(tolerance, 100.0 * kMinTolerance);
+  const StabilityReport report = stability_report(study.zeta, options);
+  double worst_self = 0.0;
+  double worst_engines = 0.0;
+  for (const StabilityPoint& p : report.points) {
+    worst_self = std::max(worst_self, p.self_convergence);
+    for (const EngineCheck& e : p.engines) {
+      if (e.solved) worst_engines = std::max(worst_engines, e.relative_difference);
+    }
+  }
+  return fmt::format(
+      "stability study '{}' (tolerance {:g}): {} point-end pairs, {} flagged; worst self-convergence {:.3g}, "
+      "worst difference between engines {:.3g} (relative to min(eps, 1 - eps))",
+      study.name, options.tolerance, report.points.size(), report.flagged(), worst_self, worst_engines);
 }
 
 }  // namespace restitution::scene::detail

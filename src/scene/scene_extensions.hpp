@@ -12,11 +12,13 @@ namespace restitution::scene::detail {
 // Approximations of ε at the sweep's ζ values for the requested ends.
 void add_approximations(const Sweep& sweep, const std::vector<double>& zeta, SweepExtras& extras);
 
-// Power-law fits ε ≈ a ζ^p over ζ >= zeta_min for each requested end, from the solved ε values.
+// Power-law fits ε ≈ a ζ^p over ζ >= zeta_min for each requested end, from the solved ε values, and the
+// derived large-ζ laws as columns when the sweep asks for `asymptotics`.
 void add_power_law_fits(const Sweep& sweep, const std::vector<double>& zeta,
                         const std::vector<const CollisionResult*>& results, SweepExtras& extras);
 
-// What this build can say about a work-precision or stability study.
-std::string study_note(const ExternalStudy& study);
+// Runs a stability study (stability_report.hpp) and summarises it in one line; work-precision studies are
+// not available in this build and say so.
+std::string study_note(const ExternalStudy& study, double tolerance);
 
 }  // namespace restitution::scene::detail

@@ -8,6 +8,7 @@
 
 #include "restitution/errors.hpp"
 #include "restitution/scene.hpp"
+#include "scene/scene_approximations.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace restitution::scene {
@@ -36,6 +37,16 @@ EndSelection read_ends(TomlReader& r, EndSelection fallback = {}) {
   }
   if (!ends.naive && !ends.delayed_recovery) r.fail("ends", "no end requested");
   return ends;
+}
+
+series::Approximation approximation_from(const TomlReader& r, const std::string& name) {
+  std::string known;
+  for (const detail::ApproximationInfo& info : detail::kApproximations) {
+    if (name == info.name) return info.kind;
+    if (!known.empty()) known += ", ";
+    known += info.name;
+  }
+  r.fail("approximations", fmt::format("unknown approximation \"{}\" (known: {})", name, known));
 }
 
 CollisionEnd read_end(TomlReader& r) {
@@ -174,6 +185,7 @@ class Parser {
   Sweep read_sweep(TomlReader& r) {
     Sweep s;
     read_heading(r, "sweep", s);
+    s.note = r.text("note").value_or("");
     if (const auto q = r.words("quantities")) {
       s.quantities = {false, false, false, false};
       for (const std::string& w : *q) {
@@ -212,7 +224,14 @@ class Parser {
         r.fail("characteristic_velocity", "expected a value > 0 (m/s)");
       }
     }
-    s.compare_series = r.flag("compare_series").value_or(false);
+    if (const auto names = r.words("approximations")) {
+      for (const std::string& name : *names) s.approximations.push_back(approximation_from(r, name));
+    }
+    s.asymptotics = r.flag("asymptotics").value_or(false);
+    if (r.flag("compare_series").value_or(false)) {
+      if (s.ends.naive) s.approximations.push_back(series::Approximation::naive_series);
+      if (s.ends.delayed_recovery) s.approximations.push_back(series::Approximation::delayed_recovery_series);
+    }
     if (const toml::table* e = r.table("empirical")) {
       TomlReader er(*e, r.child_path("empirical"), r.file_name());
       EmpiricalLaw law;

@@ -114,7 +114,8 @@ SceneResults run_scene(const Scene& scene, const RunSettings& settings) {
     out.collisions += static_cast<std::size_t>(outcome.calibration.solves);
     out.calibrations.push_back(outcome);
   }
-  for (const ExternalStudy& study : scene.studies) out.study_notes.push_back(detail::study_note(study));
+  for (const ExternalStudy& study : scene.studies)
+    out.study_notes.push_back(detail::study_note(study, scene.tolerance));
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "restitution/errors.hpp"
+#include "restitution/series.hpp"
 
 namespace restitution {
 namespace {
@@ -56,16 +57,13 @@ NaturalScales natural_scales(double k, double velocity_m_s) {
   return s;
 }
 
-double c1_closed_form() {
-  return std::sqrt(M_PI) / (std::pow(2.0, 0.2) * std::pow(5.0, 0.4)) * std::tgamma(0.6) / std::tgamma(2.1);
-}
-
 double characteristic_velocity_m_s(double beta) {
-  return std::pow(c1_closed_form() * positive(beta, "beta"), -5.0);
+  return std::pow(series::c1_closed_form() * positive(beta, "beta"), -5.0);
 }
 
 double beta_from_characteristic_velocity(double characteristic_velocity_m_s) {
-  return std::pow(positive(characteristic_velocity_m_s, "characteristic_velocity"), -0.2) / c1_closed_form();
+  return std::pow(positive(characteristic_velocity_m_s, "characteristic_velocity"), -0.2) /
+         series::c1_closed_form();
 }
 
 }  // namespace restitution
