@@ -186,6 +186,29 @@ TEST_F(ShippedScene, DashpotMatchesTheClosedForms) {
   EXPECT_TRUE(std::isnan(d.at(d.rows.size() - 1, "eps_naive")));  // r = 5: no naive end
 }
 
+TEST_F(ShippedScene, WorkPrecisionSectionWritesItsPointsAndSummary) {
+  fs::create_directories(folder_);
+  const fs::path scene = folder_ / "wp.toml";
+  std::ofstream(scene) << "output = \"unused\"\n[[work_precision]]\nname = \"wp\"\nengines = [\"taylor\"]\n";
+  setenv("RESTITUTION_PYTHON", "/nonexistent/python3", 1);
+  const auto r = run_cli("run " + scene.string() + " --quick --output " + folder_.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string report = slurp((folder_ / "report.md").string());
+  EXPECT_EQ(report.find("not available"), std::string::npos) << report;
+  EXPECT_NE(report.find("* taylor, naive end: best error "), std::string::npos) << report;
+  EXPECT_NE(report.find("* taylor, delayed-recovery end: best error "), std::string::npos) << report;
+  // The points come from the reference file of the source tree: each within its tolerance (the contract).
+  const Csv points = read_csv(folder_ / "wp.csv");
+  EXPECT_EQ(points.rows.size(), 10U * (9 + 7));  // as `restitution work-precision --engine taylor`
+  for (std::size_t i = 0; i < points.rows.size(); ++i) {
+    EXPECT_LE(points.at(i, "error"), points.at(i, "tolerance"));
+    EXPECT_GT(points.at(i, "median_us"), 0.0);
+  }
+  EXPECT_EQ(read_csv(folder_ / "wp_summary.csv").rows.size(), 2U * 10);
+  const auto summary = nlohmann::json::parse(slurp((folder_ / "summary.json").string()));
+  EXPECT_EQ(summary["studies"].size(), 3U);  // the heading line and one per end
+}
+
 TEST(RunCommand, BadScenesExitWithStatus2NamingFileAndLine) {
   const fs::path bad =
       fs::temp_directory_path() / ("restitution-bad-" + std::to_string(::getpid()) + ".toml");

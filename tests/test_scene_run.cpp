@@ -3,6 +3,9 @@
 // asked; physical points use ζ = β v^{1/5}.
 #include <gtest/gtest.h>
 
+#include <fmt/core.h>
+
+#include <algorithm>
 #include <cmath>
 
 #include "restitution/errors.hpp"
@@ -11,6 +14,7 @@
 #include "restitution/scene_run.hpp"
 #include "restitution/series.hpp"
 #include "restitution/units.hpp"
+#include "restitution/work_precision.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -125,6 +129,50 @@ TEST(SceneRun, ResultsDoNotDependOnTheNumberOfThreads) {
     EXPECT_EQ(a.solved[i].naive->eps, b.solved[i].naive->eps);
     EXPECT_EQ(a.solved[i].delayed_recovery->eps, b.solved[i].delayed_recovery->eps);
   }
+}
+
+TEST(SceneRun, WorkPrecisionStudyMeasuresAgainstTheReferenceAndSummarises) {
+  Scene s = parse_scene(
+      "output = \"o\"\n[[work_precision]]\nname = \"wp\"\nengines = [\"taylor\", \"bdf\"]\nrepeats = 2\n",
+      "t");
+  make_quick(s, 6);
+  EXPECT_EQ(s.studies[0].repeats, 1);
+  RunSettings settings;
+  settings.reference_file = reference_file_in(RESTITUTION_SOURCE_DIR);
+  const SceneResults r = run_scene(s, settings);
+  ASSERT_EQ(r.studies.size(), 1U);
+  const StudyOutcome& study = r.studies[0];
+  // The same points as the work-precision module measures on its own (timings aside).
+  const auto direct =
+      measure_work_precision(read_reference_file(settings.reference_file), 1, {"taylor", "bdf"});
+  ASSERT_EQ(study.work_precision.size(), direct.size());
+  for (std::size_t i = 0; i < direct.size(); ++i) {
+    EXPECT_EQ(study.work_precision[i].zeta, direct[i].zeta);
+    EXPECT_EQ(study.work_precision[i].error, direct[i].error);
+  }
+  // A heading and one line per engine and end, whose best error is the smallest worst-over-ζ error.
+  ASSERT_EQ(study.summary.size(), 1U + 4U);
+  double best_bdf_naive = 1.0;
+  for (const double tolerance : work_precision_tolerances()) {
+    double worst = -1.0;
+    for (const WorkPrecisionRow& row : direct) {
+      if (row.engine == "bdf" && row.end == "naive" && row.tolerance == tolerance)
+        worst = std::max(worst, row.error);
+    }
+    if (worst >= 0.0) best_bdf_naive = std::min(best_bdf_naive, worst);
+  }
+  const std::string bdf_naive = fmt::format("bdf, naive end: best error {:.3g} ", best_bdf_naive);
+  EXPECT_TRUE(std::any_of(study.summary.begin(), study.summary.end(), [&](const std::string& line) {
+    return line.rfind(bdf_naive, 0) == 0;
+  })) << bdf_naive;
+  for (const std::string& line : study.summary) EXPECT_EQ(line.find("not available"), std::string::npos);
+}
+
+TEST(SceneRun, WorkPrecisionStudyRejectsUnknownEnginesAndBadRepeats) {
+  EXPECT_THROW(parse_scene("output = \"o\"\n[[work_precision]]\nengines = [\"rk4\"]\n", "t"), InvalidInput);
+  EXPECT_THROW(parse_scene("output = \"o\"\n[[work_precision]]\nrepeats = 0\n", "t"), InvalidInput);
+  EXPECT_THROW(parse_scene("output = \"o\"\n[[work_precision]]\nrepeats = 1.5\n", "t"), InvalidInput);
+  EXPECT_THROW(parse_scene("output = \"o\"\n[[work_precision]]\nzeta = [1]\n", "t"), InvalidInput);
 }
 
 }  // namespace

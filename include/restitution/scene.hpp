@@ -92,14 +92,17 @@ struct DashpotCheck {
   int line = 0;
 };
 
-// Sections whose engines live in other modules (work-precision, stability): recognised so that a scene can
-// ask for them; the runner reports whether this build has them.
+// Studies whose engines live in other modules: the stability report at the given ζ values, or the
+// work-precision measurement (every tolerance each engine accepts on the reference grid's fixed ζ set).
 struct ExternalStudy {
   std::string kind;  // "work_precision" | "stability"
   std::string name;
-  std::vector<double> zeta;
+  std::vector<double> zeta;                                       // stability: the points
+  std::vector<std::string> engines = {"taylor", "adams", "bdf"};  // work_precision: engines measured
+  int repeats = 3;  // work_precision: timed solves per point (the median is kept)
   int line = 0;
 };
+inline constexpr int kMaxStudyRepeats = 100;
 
 struct Scene {
   std::string file_name;
@@ -122,7 +125,8 @@ Scene parse_scene(std::string_view toml_text, std::string_view file_name);
 // Reads the file and parses it. Throws InvalidInput naming the file when it cannot be read.
 Scene load_scene(const std::filesystem::path& path);
 
-// Caps every sweep and dash-pot range at `points` values (first and last kept): CI's small settings.
+// Caps every sweep, dash-pot and stability range at `points` values (first and last kept) and times each
+// work-precision point once: CI's small settings.
 void make_quick(Scene& scene, std::size_t points);
 
 }  // namespace restitution::scene

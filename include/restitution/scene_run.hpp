@@ -2,6 +2,7 @@
 // Running a planned scene: every job solved once (in parallel, one solver per thread), calibrations, and the
 // comparisons the scene asks for. Results are values; writing them is the caller's business.
 #include <cstddef>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
@@ -10,6 +11,7 @@
 #include "restitution/calibration.hpp"
 #include "restitution/scene.hpp"
 #include "restitution/scene_plan.hpp"
+#include "restitution/work_precision.hpp"
 
 namespace restitution::scene {
 
@@ -17,6 +19,9 @@ struct RunSettings {
   unsigned threads = 0;  // 0: one per hardware thread
   // Called after each finished collision with (done, total); never concurrently.
   std::function<void(std::size_t, std::size_t)> progress;
+  // The reference solutions for [[work_precision]] studies (reference_file_in(source tree)); without one
+  // those studies say so in their summary.
+  std::filesystem::path reference_file;
 };
 
 // A column of an approximation evaluated on a sweep (a series, a Padé approximant), or why there is none.
@@ -45,14 +50,21 @@ struct CalibrationOutcome {
   std::optional<MaterialConstants> material;
 };
 
+// A [[stability]] or [[work_precision]] study: summary lines for the report and, for work precision, the
+// measured points.
+struct StudyOutcome {
+  std::vector<std::string> summary;
+  std::vector<WorkPrecisionRow> work_precision;
+};
+
 struct SceneResults {
   Plan plan;
   std::vector<CollisionResult> solved;  // parallel to plan.jobs
   std::vector<SweepExtras> sweeps;      // parallel to Scene::sweeps
   std::vector<CalibrationOutcome> calibrations;
-  std::vector<std::string> study_notes;  // parallel to Scene::studies
-  SolverStats total;                     // summed over the planned collisions (not the calibrations)
-  std::size_t collisions = 0;            // collisions integrated, calibrations included
+  std::vector<StudyOutcome> studies;  // parallel to Scene::studies
+  SolverStats total;                  // summed over the planned collisions (not the calibrations)
+  std::size_t collisions = 0;         // collisions integrated, calibrations included
 };
 
 SceneResults run_scene(const Scene& scene, const RunSettings& settings = {});

@@ -17,7 +17,9 @@ struct WorkPrecisionEngine {
 };
 
 std::vector<WorkPrecisionEngine> work_precision_engines();
-std::vector<double> work_precision_zetas();       // 1e-4, 1e-3, ..., 1e4 (points of the reference grid)
+bool is_work_precision_engine(const std::string& name);
+std::string work_precision_engine_names();   // "taylor, bdf, adams, bdf-plain, adams-plain", for messages
+std::vector<double> work_precision_zetas();  // 1e-4, 1e-3, ..., 1e4 (points of the reference grid)
 std::vector<double> work_precision_tolerances();  // 1e-4, 1e-5, ..., 1e-13 (each engine: those it accepts)
 
 struct WorkPrecisionRow {
@@ -43,5 +45,19 @@ SolveOptions work_precision_options(const WorkPrecisionEngine& engine, bool naiv
 // `engines` names a subset of work_precision_engines() (empty: all); throws InvalidInput for an unknown name.
 std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<ReferenceRow>& reference, int repeats,
                                                      const std::vector<std::string>& engines = {});
+
+// The rows of one (engine, end, tolerance) over the ζ set: the worst error, the mean and the worst of the
+// per-point median times.
+struct WorkPrecisionGroup {
+  std::string engine;
+  std::string end;
+  double tolerance = 0;
+  double max_error = 0;
+  double mean_median_seconds = 0, max_median_seconds = 0;
+  int points = 0;
+};
+
+// Groups ordered by engine, end, then tolerance from the loosest to the tightest.
+std::vector<WorkPrecisionGroup> group_work_precision(const std::vector<WorkPrecisionRow>& rows);
 
 }  // namespace restitution

@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/output_files.hpp"
 #include "cli/scene_outputs.hpp"
+#include "cli/work_precision_files.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/scene.hpp"
 #include "restitution/scene_run.hpp"
@@ -46,6 +47,7 @@ int run_scene_file(const RunOptions& o) {
 
   scene::RunSettings settings;
   settings.threads = o.threads;
+  settings.reference_file = default_reference_file();
   const bool terminal = isatty(fileno(stderr)) != 0;
   if (terminal) {
     settings.progress = [](std::size_t done, std::size_t total) {

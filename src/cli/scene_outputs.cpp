@@ -9,6 +9,7 @@
 #include "cli/json_writer.hpp"
 #include "cli/output_files.hpp"
 #include "cli/scene_tables.hpp"
+#include "cli/work_precision_files.hpp"
 #include "restitution/series.hpp"
 #include "restitution/units.hpp"
 
@@ -357,13 +358,28 @@ class SceneWriter {
     report_ += "\n";
   }
 
+  // Summary lines of each study; a work-precision study also writes its points, summary and plot.
   void studies() {
-    if (results_.study_notes.empty()) return;
+    if (results_.studies.empty()) return;
     report_ += "## Other studies\n\n";
     json_.key("studies").begin_array();
-    for (const auto& n : results_.study_notes) {
-      report_ += "* " + n + "\n";
-      json_.value(n);
+    for (std::size_t i = 0; i < results_.studies.size(); ++i) {
+      const scene::StudyOutcome& study = results_.studies[i];
+      for (const std::string& line : study.summary) {
+        report_ += "* " + line + "\n";
+        json_.value(line);
+      }
+      if (study.work_precision.empty()) continue;
+      const std::string& name = scene_.studies[i].name;
+      const WorkPrecisionFiles written = write_work_precision_files(study.work_precision, folder_, name);
+      out_.files.insert(out_.files.end(), written.files.begin(), written.files.end());
+      if (written.plot_warning.empty()) {
+        report_ += fmt::format("\n![{}]({}.png)\n", name, name);
+      } else {
+        out_.warnings.push_back(fmt::format("{}: {}", name, written.plot_warning));
+        report_ += fmt::format("\n*({}; the data are in `{}.csv` and `{}_summary.csv`)*\n",
+                               written.plot_warning, name, name);
+      }
     }
     json_.end_array();
     report_ += "\n";

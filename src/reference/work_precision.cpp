@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
+#include <tuple>
+#include <utility>
 
 #include "restitution/errors.hpp"
 #include "restitution/taylor_engine.hpp"
@@ -53,6 +56,17 @@ std::vector<WorkPrecisionEngine> work_precision_engines() {
           {"adams-plain", Method::adams, false}};
 }
 
+bool is_work_precision_engine(const std::string& name) {
+  const std::vector<WorkPrecisionEngine> all = work_precision_engines();
+  return std::any_of(all.begin(), all.end(), [&](const WorkPrecisionEngine& e) { return e.name == name; });
+}
+
+std::string work_precision_engine_names() {
+  std::string names;
+  for (const WorkPrecisionEngine& e : work_precision_engines()) names += (names.empty() ? "" : ", ") + e.name;
+  return names;
+}
+
 std::vector<double> work_precision_zetas() {
   std::vector<double> z;
   for (int k = -4; k <= 4; ++k) z.push_back(std::pow(10.0, k));
@@ -69,9 +83,8 @@ std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<Reference
                                                      const std::vector<std::string>& engines) {
   const std::vector<WorkPrecisionEngine> all = work_precision_engines();
   for (const std::string& name : engines) {
-    if (std::none_of(all.begin(), all.end(), [&](const WorkPrecisionEngine& e) { return e.name == name; }))
-      throw InvalidInput(
-          fmt::format("unknown engine '{}' (known: taylor, bdf, adams, bdf-plain, adams-plain)", name));
+    if (!is_work_precision_engine(name))
+      throw InvalidInput(fmt::format("unknown engine '{}' (known: {})", name, work_precision_engine_names()));
   }
   std::vector<WorkPrecisionRow> rows;
   CollisionSolver solver;
@@ -105,6 +118,26 @@ std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<Reference
     }
   }
   return rows;
+}
+
+std::vector<WorkPrecisionGroup> group_work_precision(const std::vector<WorkPrecisionRow>& rows) {
+  std::map<std::tuple<std::string, std::string, double>, WorkPrecisionGroup> groups;
+  for (const WorkPrecisionRow& r : rows) {
+    WorkPrecisionGroup& g = groups[{r.engine, r.end, -r.tolerance}];
+    g.engine = r.engine;
+    g.end = r.end;
+    g.tolerance = r.tolerance;
+    g.max_error = std::max(g.max_error, r.error);
+    g.mean_median_seconds += r.median_seconds;
+    g.max_median_seconds = std::max(g.max_median_seconds, r.median_seconds);
+    ++g.points;
+  }
+  std::vector<WorkPrecisionGroup> out;
+  for (auto& [key, g] : groups) {
+    g.mean_median_seconds /= g.points;
+    out.push_back(std::move(g));
+  }
+  return out;
 }
 
 }  // namespace restitution

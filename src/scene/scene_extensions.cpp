@@ -12,6 +12,7 @@
 #include "restitution/series.hpp"
 #include "restitution/series_tables.hpp"
 #include "restitution/stability_report.hpp"
+#include "restitution/work_precision.hpp"
 #include "scene/scene_approximations.hpp"
 
 namespace restitution::scene::detail {
@@ -107,10 +108,61 @@ void add_power_law_fits(const Sweep& sweep, const std::vector<double>& zeta,
   }
 }
 
-std::string study_note(const ExternalStudy& study, double tolerance) {
-  if (study.kind != "stability" || study.zeta.empty()) {
-    return fmt::format("{} study '{}': not available in this build{}", study.kind, study.name,
-                       study.kind == "stability" ? " without zeta values" : " (no work-precision module)");
+namespace {
+
+// Per engine and end: the best worst-over-ζ error of the tolerance ladder, and the worst error and mean
+// median solve time at 1e-10 (or the tightest tolerance the engine accepts, when that is looser).
+std::vector<std::string> work_precision_summary(const std::vector<WorkPrecisionRow>& rows) {
+  constexpr double kQuotedTolerance = 1e-10;
+  const std::vector<WorkPrecisionGroup> groups = group_work_precision(rows);
+  std::vector<std::string> lines;
+  for (std::size_t first = 0; first < groups.size();) {
+    std::size_t last = first;  // groups of one engine and end are adjacent, loosest tolerance first
+    while (last + 1 < groups.size() && groups[last + 1].engine == groups[first].engine &&
+           groups[last + 1].end == groups[first].end)
+      ++last;
+    const WorkPrecisionGroup* best = &groups[first];
+    const WorkPrecisionGroup* quoted = &groups[first];
+    for (std::size_t i = first; i <= last; ++i) {
+      if (groups[i].max_error < best->max_error) best = &groups[i];
+      if (groups[i].tolerance >= kQuotedTolerance * (1 - 1e-9)) quoted = &groups[i];
+    }
+    lines.push_back(fmt::format(
+        "{}, {} end: best error {:.3g} (at tolerance {:g}); at tolerance {:g} error {:.3g} and {:.3g} µs per "
+        "solve (mean over {} ζ values of the median)",
+        best->engine, best->end, best->max_error, best->tolerance, quoted->tolerance, quoted->max_error,
+        quoted->mean_median_seconds * 1e6, quoted->points));
+    first = last + 1;
+  }
+  return lines;
+}
+
+StudyOutcome work_precision_study(const ExternalStudy& study, const std::filesystem::path& reference_file) {
+  StudyOutcome out;
+  if (reference_file.empty()) {
+    out.summary.push_back(fmt::format("work-precision study '{}': no reference file given", study.name));
+    return out;
+  }
+  out.work_precision =
+      measure_work_precision(read_reference_file(reference_file), study.repeats, study.engines);
+  out.summary.push_back(
+      fmt::format("work-precision study '{}': {} points against {} ({} timed solve{} per point; errors are "
+                  "the worst over ζ, relative to min(ε*, 1 - ε*))",
+                  study.name, out.work_precision.size(), reference_file.filename().string(), study.repeats,
+                  study.repeats == 1 ? "" : "s"));
+  for (std::string& line : work_precision_summary(out.work_precision)) out.summary.push_back(std::move(line));
+  return out;
+}
+
+}  // namespace
+
+StudyOutcome run_study(const ExternalStudy& study, double tolerance,
+                       const std::filesystem::path& reference_file) {
+  if (study.kind == "work_precision") return work_precision_study(study, reference_file);
+  StudyOutcome out;
+  if (study.zeta.empty()) {
+    out.summary.push_back(fmt::format("stability study '{}': no zeta values given", study.name));
+    return out;
   }
   StabilityOptions options;
   options.tolerance = std::max(tolerance, 100.0 * kMinTolerance);
@@ -123,10 +175,11 @@ std::string study_note(const ExternalStudy& study, double tolerance) {
       if (e.solved) worst_engines = std::max(worst_engines, e.relative_difference);
     }
   }
-  return fmt::format(
+  out.summary.push_back(fmt::format(
       "stability study '{}' (tolerance {:g}): {} point-end pairs, {} flagged; worst self-convergence {:.3g}, "
       "worst difference between engines {:.3g} (relative to min(eps, 1 - eps))",
-      study.name, options.tolerance, report.points.size(), report.flagged(), worst_self, worst_engines);
+      study.name, options.tolerance, report.points.size(), report.flagged(), worst_self, worst_engines));
+  return out;
 }
 
 }  // namespace restitution::scene::detail

@@ -1,7 +1,8 @@
 #pragma once
 // The scene runner's links to the modules other than the solver: the published series and approximants
-// (series module) and the power-law fit (asymptotics module). Each fills what this build provides and says
-// in a note what it cannot.
+// (series module), the power-law fit (asymptotics module), the stability report and the work-precision
+// measurement. Each fills what this build provides and says in a note what it cannot.
+#include <filesystem>
 #include <vector>
 
 #include "restitution/scene.hpp"
@@ -17,8 +18,9 @@ void add_approximations(const Sweep& sweep, const std::vector<double>& zeta, Swe
 void add_power_law_fits(const Sweep& sweep, const std::vector<double>& zeta,
                         const std::vector<const CollisionResult*>& results, SweepExtras& extras);
 
-// Runs a stability study (stability_report.hpp) and summarises it in one line; work-precision studies are
-// not available in this build and say so.
-std::string study_note(const ExternalStudy& study, double tolerance);
+// Runs a stability study (stability_report.hpp, at the scene's tolerance) and summarises it in one line, or
+// a work-precision study (work_precision.hpp, against the reference file) with one line per engine and end.
+StudyOutcome run_study(const ExternalStudy& study, double tolerance,
+                       const std::filesystem::path& reference_file);
 
 }  // namespace restitution::scene::detail

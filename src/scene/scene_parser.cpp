@@ -2,12 +2,14 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include "restitution/errors.hpp"
 #include "restitution/scene.hpp"
+#include "restitution/work_precision.hpp"
 #include "scene/scene_approximations.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -317,11 +319,33 @@ class Parser {
     s.kind = kind;
     s.line = r.line();
     s.name = read_name(r, kind);
+    if (s.kind == "work_precision") {
+      read_work_precision(r, s);
+      return s;
+    }
     if (const auto zeta = r.numbers("zeta")) {
       check_zeta(r, *zeta);
       s.zeta = *zeta;
     }
     return s;
+  }
+
+  // Engines (names of work_precision_engines()) and repeats; the ζ set is the reference grid's.
+  static void read_work_precision(TomlReader& r, ExternalStudy& s) {
+    if (const auto engines = r.words("engines")) {
+      for (const std::string& name : *engines) {
+        if (!is_work_precision_engine(name))
+          r.fail("engines",
+                 fmt::format("unknown engine \"{}\" (known: {})", name, work_precision_engine_names()));
+      }
+      if (engines->empty()) r.fail("engines", "expected at least one engine");
+      s.engines = *engines;
+    }
+    if (const auto repeats = r.number("repeats")) {
+      if (*repeats != std::floor(*repeats) || *repeats < 1 || *repeats > kMaxStudyRepeats)
+        r.fail("repeats", fmt::format("expected a whole number in [1, {}]", kMaxStudyRepeats));
+      s.repeats = static_cast<int>(*repeats);
+    }
   }
 
   TomlReader root_;
@@ -362,7 +386,10 @@ void make_quick(Scene& scene, std::size_t points) {
     thin(s.velocity_m_s);
   }
   for (DashpotCheck& d : scene.dashpots) thin(d.damping_ratio);
-  for (ExternalStudy& s : scene.studies) thin(s.zeta);
+  for (ExternalStudy& s : scene.studies) {
+    thin(s.zeta);
+    s.repeats = 1;
+  }
 }
 
 }  // namespace restitution::scene

@@ -115,7 +115,7 @@ SceneResults run_scene(const Scene& scene, const RunSettings& settings) {
     out.calibrations.push_back(outcome);
   }
   for (const ExternalStudy& study : scene.studies)
-    out.study_notes.push_back(detail::study_note(study, scene.tolerance));
+    out.studies.push_back(detail::run_study(study, scene.tolerance, settings.reference_file));
   return out;
 }
 
