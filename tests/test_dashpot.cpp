@@ -1,17 +1,33 @@
-// The linear dash-pot x'' + 2r x' + x = 0, x(0) = 0, x'(0) = 1: closed forms derived from the exact solution
-// check the event machinery at both ends, in all three regimes and at the regime boundaries.
+// The linear dash-pot x'' + 2r x' + x = 0, x(0) = 0, x'(0) = 1: the library's closed forms
+// (dashpot_closed_form.hpp) are checked against the exact solution evaluated directly and against the 2008
+// paper's printed Eqs. 10 and 12; they then check the event machinery at both ends, in all three regimes
+// and at the regime boundaries.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "restitution/collision_solver.hpp"
+#include "restitution/dashpot_closed_form.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution {
 namespace {
 
-// Exact solution: underdamped x = e^{-rτ} sin(ωτ)/ω, ω = sqrt(1-r²); overdamped x = e^{-rτ} sinh(ωτ)/ω,
-// ω = sqrt(r²-1); critical x = τ e^{-τ}.
+// Exact solution, evaluated directly (independent of the closed forms in dashpot_closed_form.hpp):
+// underdamped x = e^{-rτ} sin(ωτ)/ω, ω = sqrt(1-r²); overdamped x = e^{-rτ} sinh(ωτ)/ω, ω = sqrt(r²-1);
+// critical x = τ e^{-τ}.
+double exact_position(double r, double tau) {
+  if (r < 1.0) {
+    const double w = std::sqrt(1.0 - r * r);
+    return std::exp(-r * tau) * std::sin(w * tau) / w;
+  }
+  if (r > 1.0) {
+    const double w = std::sqrt(r * r - 1.0);
+    return std::exp(-r * tau) * std::sinh(w * tau) / w;
+  }
+  return tau * std::exp(-tau);
+}
+
 double exact_velocity(double r, double tau) {
   if (r < 1.0) {
     const double w = std::sqrt(1.0 - r * r);
@@ -22,25 +38,6 @@ double exact_velocity(double r, double tau) {
     return std::exp(-r * tau) * (std::cosh(w * tau) - r / w * std::sinh(w * tau));
   }
   return std::exp(-tau) * (1.0 - tau);
-}
-
-// Naive end (x = 0): ωτ_c = π.
-double naive_end_time(double r) {
-  return M_PI / std::sqrt(1.0 - r * r);
-}
-
-// Delayed-recovery end: x + 2r x' = 0 first after τ = 0. With the exact solution this is
-// tan(ωτ) = 2rω/(2r²-1) (underdamped), tanh(ωτ) = 2rω/(2r²-1) (overdamped), τ = 2 (critical).
-double delayed_end_time(double r) {
-  if (r < 1.0) {
-    const double w = std::sqrt(1.0 - r * r);
-    return std::atan2(2.0 * r * w, 2.0 * r * r - 1.0) / w;  // the branch in (0, π)
-  }
-  if (r > 1.0) {
-    const double w = std::sqrt(r * r - 1.0);
-    return std::atanh(2.0 * r * w / (2.0 * r * r - 1.0)) / w;
-  }
-  return 2.0;
 }
 
 // The 2008 paper's Eq. (10) and Eq. (12) with β = r, ω0 = 1, in the form printed there.
@@ -61,15 +58,34 @@ SolveOptions options(double tolerance, Method method = Method::automatic) {
   return o;
 }
 
+TEST(DashpotClosedForm, EndTimesAreTheEventsOfTheExactSolution) {
+  for (const double r : {1e-3, 0.3, 0.7, 0.9, 1.0, 1.5, 10.0}) {
+    SCOPED_TRACE(testing::Message() << "r=" << r);
+    const double t = dashpot_delayed_duration(r);
+    EXPECT_GT(t, 0.0);
+    EXPECT_GT(exact_position(r, t), 0.0);
+    EXPECT_NEAR(exact_position(r, t) + 2.0 * r * exact_velocity(r, t), 0.0, 1e-15);  // the force vanishes
+    // ε = exp(-r τ_c): |x'| carries only the exponential there.
+    EXPECT_NEAR(dashpot_eps(r, t), -exact_velocity(r, t), 1e-14);
+    if (r < 1.0) {
+      const double naive = dashpot_naive_duration(r);
+      EXPECT_GT(naive, t);
+      EXPECT_NEAR(exact_position(r, naive), 0.0, 1e-15);
+      EXPECT_NEAR(dashpot_eps(r, naive), -exact_velocity(r, naive), 1e-14);
+    } else {
+      EXPECT_THROW(dashpot_naive_duration(r), InvalidInput);
+    }
+  }
+  EXPECT_THROW(dashpot_delayed_duration(0.0), InvalidInput);
+}
+
 TEST(DashpotClosedForm, DerivedFormsAgreeWithPaperWhereItsPrintedFormIsRight) {
   for (const double r : {0.05, 0.3, 0.6, 0.7}) {
-    EXPECT_NEAR(-exact_velocity(r, naive_end_time(r)), paper_naive_eps(r), 1e-14);
-    EXPECT_NEAR(-exact_velocity(r, delayed_end_time(r)), paper_delayed_eps_as_printed(r), 1e-14);
-    // ε = exp(-r τ_c) at both ends: |x'| carries only the exponential there.
-    EXPECT_NEAR(-exact_velocity(r, delayed_end_time(r)), std::exp(-r * delayed_end_time(r)), 1e-14);
+    EXPECT_NEAR(dashpot_eps(r, dashpot_naive_duration(r)), paper_naive_eps(r), 1e-14);
+    EXPECT_NEAR(dashpot_eps(r, dashpot_delayed_duration(r)), paper_delayed_eps_as_printed(r), 1e-14);
   }
   for (const double r : {1.5, 3.0, 10.0}) {
-    EXPECT_NEAR(-exact_velocity(r, delayed_end_time(r)), paper_delayed_eps_as_printed(r), 1e-14);
+    EXPECT_NEAR(-exact_velocity(r, dashpot_delayed_duration(r)), paper_delayed_eps_as_printed(r), 1e-14);
   }
 }
 
@@ -80,7 +96,7 @@ TEST(DashpotClosedForm, PrintedMiddleRegimeOfEq12HasTheWrongSign) {
     const double w = std::sqrt(1.0 - r * r);
     EXPECT_GT(paper_delayed_eps_as_printed(r), 1.0);
     const double corrected = std::exp(r / w * std::atan(2.0 * r * w / (w * w - r * r)));
-    EXPECT_NEAR(-exact_velocity(r, delayed_end_time(r)), corrected, 1e-14);
+    EXPECT_NEAR(-exact_velocity(r, dashpot_delayed_duration(r)), corrected, 1e-14);
   }
 }
 
@@ -95,7 +111,7 @@ TEST(DashpotSolver, MatchesClosedFormsInAllRegimes) {
     o.ends.naive = r < 0.99;  // closer to r = 1 the naive ε = exp(-πr/ω) underflows double
     const CollisionResult result = solver.solve(ContactLaw::linear_dashpot(r), o);
     ASSERT_TRUE(result.delayed_recovery);
-    const double t_delayed = delayed_end_time(r);
+    const double t_delayed = dashpot_delayed_duration(r);
     const double eps_delayed = -exact_velocity(r, t_delayed);
     const double scale_d = std::min(eps_delayed, 1.0 - eps_delayed);
     EXPECT_NEAR(result.delayed_recovery->eps, eps_delayed, tol * scale_d);
@@ -107,7 +123,7 @@ TEST(DashpotSolver, MatchesClosedFormsInAllRegimes) {
       const double scale_n = std::min(eps_naive, 1.0 - eps_naive);
       EXPECT_NEAR(result.naive->eps, eps_naive, tol * scale_n);
       EXPECT_NEAR(result.naive->one_minus_eps, 1.0 - eps_naive, tol * scale_n);
-      EXPECT_NEAR(result.naive->tau, naive_end_time(r), 1e-8 * naive_end_time(r));
+      EXPECT_NEAR(result.naive->tau, dashpot_naive_duration(r), 1e-8 * dashpot_naive_duration(r));
       EXPECT_GT(result.delayed_recovery->eps, result.naive->eps);  // delayed recovery ends earlier, faster
     }
   }
@@ -122,7 +138,7 @@ TEST(DashpotSolver, BothMethodsMeetTheContractOnAGrid) {
         SolveOptions o = options(tol, method);
         o.ends.naive = r < 0.99;
         const CollisionResult result = solver.solve(ContactLaw::linear_dashpot(r), o);
-        const double eps = -exact_velocity(r, delayed_end_time(r));
+        const double eps = -exact_velocity(r, dashpot_delayed_duration(r));
         EXPECT_NEAR(result.delayed_recovery->eps, eps, tol * std::min(eps, 1.0 - eps));
         if (o.ends.naive) {
           const double eps_n = paper_naive_eps(r);

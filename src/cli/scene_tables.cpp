@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "cli/output_files.hpp"
-#include "restitution/scene_dashpot_reference.hpp"
+#include "restitution/dashpot_closed_form.hpp"
 #include "restitution/units.hpp"
 
 namespace restitution::cli {
@@ -154,9 +154,9 @@ Table dashpot_table(const scene::Scene& scene, const scene::SceneResults& result
         row.insert(row.end(), {kNone, kNone, kNone});
         continue;
       }
-      const double tau = e == CollisionEnd::naive ? scene::dashpot_naive_duration(p.parameter)
-                                                  : scene::dashpot_delayed_duration(p.parameter);
-      const double exact = scene::dashpot_eps(p.parameter, tau);
+      const double tau = e == CollisionEnd::naive ? dashpot_naive_duration(p.parameter)
+                                                  : dashpot_delayed_duration(p.parameter);
+      const double exact = dashpot_eps(p.parameter, tau);
       row.insert(row.end(), {end->eps, exact, std::abs(end->eps - exact) / std::min(exact, 1.0 - exact)});
     }
     t.rows.push_back(std::move(row));

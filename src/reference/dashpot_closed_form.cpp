@@ -1,4 +1,4 @@
-#include "restitution/scene_dashpot_reference.hpp"
+#include "restitution/dashpot_closed_form.hpp"
 
 #include <fmt/core.h>
 
@@ -6,7 +6,7 @@
 
 #include "restitution/errors.hpp"
 
-namespace restitution::scene {
+namespace restitution {
 
 double dashpot_naive_duration(double r) {
   if (!(r > 0.0 && r < 1.0)) {
@@ -33,4 +33,4 @@ double dashpot_eps(double r, double duration) {
   return std::exp(-r * duration);
 }
 
-}  // namespace restitution::scene
+}  // namespace restitution
