@@ -65,9 +65,13 @@ TEST(SceneRun, OneSolveIsSharedByEveryOutputThatNeedsIt) {
   const CollisionResult& one = r.solved[r.plan.sweeps[0][1].job];
   expect_same_stats(one.stats, direct(1.0, {true, true}, false).stats);
   EXPECT_TRUE(one.trajectory.empty());
-  SolverStats sum = half.stats;
-  sum.steps += one.stats.steps;
-  EXPECT_EQ(r.total.steps, sum.steps);
+  // The total is the field-by-field sum (SolverStats operator+=).
+  EXPECT_EQ(r.total.steps, half.stats.steps + one.stats.steps);
+  EXPECT_EQ(r.total.rhs_evaluations, half.stats.rhs_evaluations + one.stats.rhs_evaluations);
+  EXPECT_EQ(r.total.jacobian_evaluations, half.stats.jacobian_evaluations + one.stats.jacobian_evaluations);
+  EXPECT_EQ(r.total.root_evaluations, half.stats.root_evaluations + one.stats.root_evaluations);
+  EXPECT_EQ(r.total.error_test_failures, half.stats.error_test_failures + one.stats.error_test_failures);
+  EXPECT_EQ(r.total.convergence_failures, half.stats.convergence_failures + one.stats.convergence_failures);
   EXPECT_EQ(r.collisions, 2U);
 }
 

@@ -77,6 +77,9 @@ struct SolverStats {
   long convergence_failures = 0;
 };
 
+// Adds every counter of `more` to `total` (phases of one solve, solves of a scene).
+SolverStats& operator+=(SolverStats& total, const SolverStats& more);
+
 struct TrajectoryPoint {
   double tau, x, velocity, acceleration;  // natural scaling
 };

@@ -52,6 +52,16 @@ const EndResult& end_of(const CollisionResult& result, CollisionEnd end) {
   return *value;
 }
 
+SolverStats& operator+=(SolverStats& total, const SolverStats& more) {
+  total.steps += more.steps;
+  total.rhs_evaluations += more.rhs_evaluations;
+  total.jacobian_evaluations += more.jacobian_evaluations;
+  total.root_evaluations += more.root_evaluations;
+  total.error_test_failures += more.error_test_failures;
+  total.convergence_failures += more.convergence_failures;
+  return total;
+}
+
 double min_tolerance(Method method) {
   return method == Method::taylor ? kMinTaylorTolerance : kMinTolerance;
 }
@@ -97,15 +107,6 @@ Point point_of(Form form, double t, const State& s) {
 const char* end_names(const EndSelection& ends) {
   if (ends.naive && ends.delayed_recovery) return "both ends";
   return ends.naive ? "the naive end" : "the delayed-recovery end";
-}
-
-void add(SolverStats& total, const SolverStats& phase) {
-  total.steps += phase.steps;
-  total.rhs_evaluations += phase.rhs_evaluations;
-  total.jacobian_evaluations += phase.jacobian_evaluations;
-  total.root_evaluations += phase.root_evaluations;
-  total.error_test_failures += phase.error_test_failures;
-  total.convergence_failures += phase.convergence_failures;
 }
 
 // ε from the velocity at the end, 1-ε from the energy balance 1-ε^2 = 2(D + U(x_end))/v0^2, which keeps
@@ -199,12 +200,12 @@ class CollisionRun {
       if (options_.keep_trajectory) record(point_of(form_, step.t, step.state));
       return step;
     } catch (const NumericalFailure& e) {
-      add(result_.value.stats, integrator_.phase_stats());
+      result_.value.stats += integrator_.phase_stats();
       throw failure(e.what());
     }
   }
 
-  void finish_phase() { add(result_.value.stats, integrator_.phase_stats()); }
+  void finish_phase() { result_.value.stats += integrator_.phase_stats(); }
 
   void found_max_compression(const Point& p) {
     if (result_.max_compression_found) return;

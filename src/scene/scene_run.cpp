@@ -13,15 +13,6 @@
 namespace restitution::scene {
 namespace {
 
-void add_stats(SolverStats& total, const SolverStats& s) {
-  total.steps += s.steps;
-  total.rhs_evaluations += s.rhs_evaluations;
-  total.jacobian_evaluations += s.jacobian_evaluations;
-  total.root_evaluations += s.root_evaluations;
-  total.error_test_failures += s.error_test_failures;
-  total.convergence_failures += s.convergence_failures;
-}
-
 // Solves every job once; workers take the next job from a shared counter, each with its own solver.
 std::vector<CollisionResult> solve_all(const std::vector<SolveJob>& jobs, const Scene& scene,
                                        const RunSettings& settings) {
@@ -72,7 +63,7 @@ SceneResults run_scene(const Scene& scene, const RunSettings& settings) {
   SceneResults out;
   out.plan = plan_scene(scene);
   out.solved = solve_all(out.plan.jobs, scene, settings);
-  for (const CollisionResult& r : out.solved) add_stats(out.total, r.stats);
+  for (const CollisionResult& r : out.solved) out.total += r.stats;
   out.collisions = out.solved.size();
 
   for (std::size_t i = 0; i < scene.sweeps.size(); ++i) {
