@@ -7,13 +7,14 @@
 #include "reference_values.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/series_tables.hpp"
 
 namespace restitution {
 namespace {
 
 using test_support::c1_closed_form;
-using test_support::kPaperC;
-using test_support::kPaperH;
+constexpr const auto& kPaperC = series::published::kTable3C;  // c_1 ... c_10
+constexpr const auto& kPaperH = series::published::kTable5H;  // h_0 ... h_20
 
 SolveOptions options(double tolerance, Method method = Method::automatic) {
   SolveOptions o;

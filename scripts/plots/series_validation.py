@@ -1,0 +1,64 @@
+#!/usr/bin/python3
+"""Plot of `restitution series validate`: the 2008 paper's Fig. 1 (eps against zeta, both ends, solver with
+the series) and the relative error of eps and of 1 - eps of every approximation (log scales).
+
+usage: series_validation.py series_validation.csv out.png
+"""
+import csv
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def read(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    columns = {name: [float(r[name]) for r in rows] for name in rows[0]}
+    names = [c[: -len("_rel_err_eps")] for c in rows[0] if c.endswith("_rel_err_eps")]
+    return columns, names
+
+
+def clipped(values, floor=1e-17):
+    return [max(v, floor) if v == v else float("nan") for v in values]
+
+
+def main(csv_path, png_path):
+    col, names = read(csv_path)
+    zeta = col["zeta"]
+    fig, (top, mid, bottom) = plt.subplots(3, 1, figsize=(8, 12), sharex=True)
+
+    top.plot(zeta, col["naive_eps"], "k-", lw=2, label="solver, naive end")
+    top.plot(zeta, col["delayed_eps"], "b-", lw=2, label="solver, delayed recovery")
+    series_styles = {"naive-table-III": ("k", "o"), "delayed-recovery-table-V": ("b", "s")}
+    for name, (color, marker) in series_styles.items():
+        if name + "_eps" in col:
+            top.plot(zeta[::3], col[name + "_eps"][::3], color=color, marker=marker, ls="none", mfc="none",
+                     label=name + " (2008 series)")
+    top.set_xscale("log")
+    top.set_ylim(0.0, 1.05)
+    top.set_ylabel(r"$\varepsilon$")
+    top.set_title(r"$\varepsilon(\zeta)$, $\zeta = \beta v^{1/5}$ (2008 paper, Fig. 1)")
+    top.legend(loc="lower left", fontsize=8)
+
+    cmap = plt.get_cmap("tab10")
+    for i, name in enumerate(names):
+        style = "-" if name.startswith(("naive", "pade-1999", "simple")) else "--"
+        mid.plot(zeta, clipped(col[name + "_rel_err_eps"]), style, color=cmap(i % 10), label=name)
+        bottom.plot(zeta, clipped(col[name + "_rel_err_one_minus_eps"]), style, color=cmap(i % 10), label=name)
+    for ax, what in ((mid, r"$\varepsilon$"), (bottom, r"$1-\varepsilon$")):
+        ax.set_yscale("log")
+        ax.set_ylim(1e-17, 1e2)
+        for level in (1e-3, 1e-6, 1e-10):
+            ax.axhline(level, color="grey", lw=0.5, ls=":")
+        ax.set_ylabel("relative error of " + what)
+    mid.legend(fontsize=7, ncol=2, loc="upper left")
+    bottom.set_xlabel(r"$\zeta$ (solid: naive end, dashed: delayed recovery)")
+    fig.tight_layout()
+    fig.savefig(png_path, dpi=120)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2])

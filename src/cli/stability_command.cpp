@@ -1,0 +1,146 @@
+// `restitution stability`: the stability report over ζ in [0, 1e6] for both ends, as a table, JSON, or
+// (with --out) CSV + JSON + PNG.
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/json_writer.hpp"
+#include "cli/output_files.hpp"
+#include "restitution/stability_report.hpp"
+
+namespace restitution::cli {
+namespace {
+
+struct StabilityCliOptions {
+  double tolerance = 1e-9;
+  int points_per_decade = 1;
+  bool json = false;
+  std::string out;
+};
+
+std::string flags_text(const StabilityPoint& p) {
+  std::string text;
+  for (const std::string& f : p.flags) text += (text.empty() ? "" : "; ") + f;
+  return text;
+}
+
+std::string engine_text(const EngineCheck& e) {
+  return e.solved ? number17(e.relative_difference) : e.failure;
+}
+
+std::string csv(const StabilityReport& report) {
+  std::string out = "zeta,end,method,eps,one_minus_eps,tau,steps,rhs_evaluations,self_convergence";
+  for (const Method m : kCrossCheckedMethods) out += fmt::format(",{0}_difference,{0}_steps", method_name(m));
+  out += ",verdict\n";
+  for (const StabilityPoint& p : report.points) {
+    out += fmt::format("{},{},{},{},{},{},{},{},{}", number17(p.zeta), end_name(p.end), method_name(p.method),
+                       number17(p.result.eps), number17(p.result.one_minus_eps), number17(p.result.tau),
+                       p.steps, p.rhs_evaluations, number17(p.self_convergence));
+    for (const EngineCheck& e : p.engines) out += fmt::format(",{},{}", engine_text(e), e.steps);
+    out += fmt::format(",\"{}\"\n", p.flags.empty() ? "ok" : flags_text(p));
+  }
+  return out;
+}
+
+std::string json_text(const StabilityReport& report) {
+  JsonWriter json;
+  json.begin_object().field("tolerance", report.tolerance).field("flagged", report.flagged());
+  json.key("points").begin_array();
+  for (const StabilityPoint& p : report.points) {
+    json.begin_object()
+        .field("zeta", p.zeta)
+        .field("end", end_name(p.end))
+        .field("method", method_name(p.method))
+        .field("eps", p.result.eps)
+        .field("one_minus_eps", p.result.one_minus_eps)
+        .field("tau", p.result.tau)
+        .field("steps", p.steps)
+        .field("rhs_evaluations", p.rhs_evaluations)
+        .field("self_convergence", p.self_convergence);
+    json.key("engines").begin_object();
+    for (const EngineCheck& e : p.engines) {
+      json.key(method_name(e.method)).begin_object().field("solved", e.solved).field("steps", e.steps);
+      if (e.solved)
+        json.field("relative_difference", e.relative_difference);
+      else
+        json.field("failure", e.failure);
+      json.end_object();
+    }
+    json.end_object();
+    json.field("verdict", p.flags.empty() ? "ok" : "flagged");
+    json.key("flags").begin_array();
+    for (const std::string& f : p.flags) json.value(f);
+    json.end_array().end_object();
+  }
+  json.end_array();
+  json.key("decades").begin_array();
+  for (const DecadeSummary& d : report.decades) {
+    json.begin_object()
+        .field("decade", d.decade)
+        .field("end", end_name(d.end))
+        .field("worst_self_convergence", d.worst_self_convergence)
+        .field("worst_engine_difference", d.worst_engine_difference)
+        .field("engine_failures", d.engine_failures)
+        .end_object();
+  }
+  json.end_array().end_object();
+  return json.str() + "\n";
+}
+
+void print_table(const StabilityReport& report) {
+  fmt::print(
+      "stability report, tolerance {:g} (self-convergence: change at tolerance/100; engines: relative\n"
+      "difference from the production result; both relative to min(eps, 1 - eps))\n",
+      report.tolerance);
+  fmt::print("{:>10} {:>17} {:>6} {:>22} {:>8} {:>10}", "zeta", "end", "method", "eps", "steps", "self-conv");
+  for (const Method m : kCrossCheckedMethods) fmt::print(" {:>22}", method_name(m));
+  fmt::print("  verdict\n");
+  for (const StabilityPoint& p : report.points) {
+    fmt::print("{:>10.3g} {:>17} {:>6} {:>22.15g} {:>8} {:>10.2g}", p.zeta, end_name(p.end),
+               method_name(p.method), p.result.eps, p.steps, p.self_convergence);
+    for (const EngineCheck& e : p.engines)
+      fmt::print(" {:>22}", e.solved ? fmt::format("{:.2g}", e.relative_difference) : e.failure);
+    fmt::print("  {}\n", p.flags.empty() ? "ok" : flags_text(p));
+  }
+  fmt::print("{} of {} points flagged\n", report.flagged(), report.points.size());
+}
+
+int run_stability(const StabilityCliOptions& o) {
+  StabilityOptions options;
+  options.tolerance = o.tolerance;
+  if (!o.out.empty()) prepare_output_folder(o.out);
+  const StabilityReport report = stability_report(stability_grid(o.points_per_decade), options);
+  if (!o.out.empty()) {
+    const std::filesystem::path folder(o.out);
+    write_file_atomically(folder / "stability.csv", csv(report));
+    write_file_atomically(folder / "stability.json", json_text(report));
+    const std::string why = run_plot_script(
+        "stability", {(folder / "stability.csv").string(), (folder / "stability.png").string(),
+                      fmt::format("{}", report.tolerance)});
+    if (!why.empty()) fmt::print(stderr, "restitution: warning: no stability plot: {}\n", why);
+  }
+  if (o.json)
+    fmt::print("{}", json_text(report));
+  else
+    print_table(report);
+  return 0;
+}
+
+}  // namespace
+
+void add_stability_command(CLI::App& app, Action& chosen) {
+  auto o = std::make_shared<StabilityCliOptions>();
+  CLI::App* cmd =
+      app.add_subcommand("stability", "self-convergence and engine agreement over zeta in [0, 1e6]");
+  cmd->add_option("--tolerance", o->tolerance, "production tolerance T in [1e-9, 1e-2]; the check uses T/100")
+      ->capture_default_str();
+  cmd->add_option("--points-per-decade", o->points_per_decade, "grid points per decade of zeta (1..20)")
+      ->capture_default_str();
+  cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
+  cmd->add_option("--out", o->out, "folder for stability.csv, stability.json and stability.png");
+  cmd->callback([o, &chosen] { chosen = [o] { return run_stability(*o); }; });
+}
+
+}  // namespace restitution::cli

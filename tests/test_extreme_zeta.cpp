@@ -1,0 +1,113 @@
+// The extreme ends of the ζ range against independent checks: ζ = 0 (closed form), ζ = 1e-12 and 1e-8 (the
+// small-ζ series), ζ = 1e4 ... 1e6 (the derived large-ζ laws of docs/asymptotics.md), energy balance,
+// self-convergence, and the work bound that turns Adams' stiff slowness into a clear failure.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "reference_values.hpp"
+#include "restitution/asymptotics.hpp"
+#include "restitution/collision_solver.hpp"
+#include "restitution/errors.hpp"
+
+namespace restitution {
+namespace {
+
+using test_support::c1_closed_form;
+using test_support::undamped_max_time;
+
+CollisionResult solve(double zeta, double tolerance, EndSelection ends = {},
+                      Method method = Method::automatic) {
+  CollisionSolver solver;
+  SolveOptions options;
+  options.tolerance = tolerance;
+  options.ends = ends;
+  options.method = method;
+  return solver.solve(ContactLaw::hertz_natural(zeta), options);
+}
+
+TEST(ExtremeZeta, ZeroDampingIsElasticAndBothEndsCoincide) {
+  const CollisionResult r = solve(0.0, 1e-10);
+  for (const EndResult& e : {*r.naive, *r.delayed_recovery}) {
+    EXPECT_EQ(e.eps, 1.0);
+    EXPECT_EQ(e.one_minus_eps, 0.0);
+    EXPECT_NEAR(e.tau, 2.0 * undamped_max_time(), 1e-9);
+  }
+}
+
+// 1 - ε = C1 ζ - (3/5) C1² ζ² + O(ζ^{5/2}) for both ends (the ends differ first at ζ^{5/2}: 2008 paper,
+// Eq. 42 against Table III). At ζ <= 1e-8 the omitted terms are below 1e-12 relative.
+TEST(ExtremeZeta, TinyDampingFollowsTheSmallZetaSeries) {
+  const double c1 = c1_closed_form();
+  for (const double zeta : {1e-12, 1e-8}) {
+    const CollisionResult r = solve(zeta, 1e-10);
+    const double series = c1 * zeta - 0.6 * c1 * c1 * zeta * zeta;
+    for (const EndResult& e : {*r.naive, *r.delayed_recovery}) {
+      EXPECT_NEAR(e.one_minus_eps / series, 1.0, 1e-10) << "zeta=" << zeta;
+      EXPECT_DOUBLE_EQ(e.eps + e.one_minus_eps, 1.0);
+    }
+  }
+}
+
+TEST(ExtremeZeta, NaiveEndFollowsKappaOverZetaToTheFifth) {
+  const double kappa = asymptotics::naive_prefactor().value;
+  for (const double zeta : {1e4, 1e5}) {
+    const CollisionResult r = solve(zeta, 1e-10, {true, false});
+    EXPECT_NEAR(r.naive->eps / asymptotics::naive_eps(zeta, kappa), 1.0, 1e-10) << "zeta=" << zeta;
+    EXPECT_EQ(r.naive->x, 0.0);
+  }
+}
+
+TEST(ExtremeZeta, DelayedEndFollowsTheTwoTermLaw) {
+  for (const double zeta : {1e4, 1e5, 1e6}) {
+    const CollisionResult r = solve(zeta, 1e-10, {false, true});
+    const double delta = std::pow(zeta, -5.0 / 3.0);
+    const double omitted = 10.0 * std::pow(delta * std::log(delta), 2);  // O(δ² ln² δ), generous constant
+    const double eps = r.delayed_recovery->eps;
+    EXPECT_NEAR(eps / asymptotics::delayed_recovery_eps(zeta, 2), 1.0, 1e-10 + omitted) << "zeta=" << zeta;
+    // The leading term alone misses by the first correction, which the numerics must resolve.
+    EXPECT_GT(std::abs(eps / asymptotics::delayed_recovery_eps(zeta, 1) - 1.0), 10.0 * (1e-10 + omitted));
+    // At the end ζ x' + x = 0, so x_end = ζ ε.
+    EXPECT_NEAR(r.delayed_recovery->x / (zeta * eps), 1.0, 1e-12);
+  }
+}
+
+// 1 - ε² = 2 (D + U(x_end)), U(x) = (2/5) x^{5/2}: ε here comes from the velocity, D from the integral.
+TEST(ExtremeZeta, EnergyBalanceHoldsAtLargeZeta) {
+  const CollisionResult r = solve(1e5, 1e-10);
+  for (const EndResult& e : {*r.naive, *r.delayed_recovery}) {
+    const double elastic = 0.4 * std::pow(e.x, 2.5);
+    EXPECT_NEAR(e.eps * e.eps + 2.0 * (e.dissipated_energy + elastic), 1.0, 1e-10);
+  }
+}
+
+TEST(ExtremeZeta, FarEndsAreSelfConvergent) {
+  const CollisionResult loose_naive = solve(1e5, 1e-9, {true, false});
+  const CollisionResult tight_naive = solve(1e5, 1e-11, {true, false});
+  EXPECT_NEAR(loose_naive.naive->eps / tight_naive.naive->eps, 1.0, 1e-9);
+  const CollisionResult loose_delayed = solve(1e6, 1e-9, {false, true});
+  const CollisionResult tight_delayed = solve(1e6, 1e-11, {false, true});
+  EXPECT_NEAR(loose_delayed.delayed_recovery->eps / tight_delayed.delayed_recovery->eps, 1.0, 1e-9);
+}
+
+TEST(ExtremeZeta, AdamsOnTheStiffTailFailsClearlyWithinTheWorkBound) {
+  CollisionSolver solver;
+  SolveOptions options;
+  options.method = Method::adams;
+  options.ends = {true, false};
+  options.max_steps_per_phase = 20000;
+  try {
+    solver.solve(ContactLaw::hertz_natural(1e4), options);
+    FAIL() << "Adams finished the stiff naive tail within 20000 steps";
+  } catch (const NumericalFailure& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("too much work"), std::string::npos) << what;
+    EXPECT_NE(what.find("10000"), std::string::npos) << what;  // names ζ
+  }
+  options.max_steps_per_phase = 0;
+  EXPECT_THROW(solver.solve(ContactLaw::hertz_natural(1.0), options), InvalidInput);
+}
+
+}  // namespace
+}  // namespace restitution
