@@ -100,6 +100,33 @@ const std::vector<BadInput> kCases = {
     {"sweep --zeta-min 0 --zeta-max 2 --points 3 --out /proc/no-such/s.csv", "cannot create output folder"},
     {"sweep --zeta-min 0 --zeta-max 2 --points 3 --out {dir}/s.csv --out {dir}/t.csv",
      "--out is given more than once"},
+    // fit.
+    {"fit --zeta-min 1 --zeta-max 10", "--end is required"},
+    {"fit --end naive --zeta-min 0 --zeta-max 10", "need 0 < zeta-min < zeta-max, got 0 and 10"},
+    {"fit --end sideways --zeta-min 1 --zeta-max 10", "--end must be naive or delayed-recovery"},
+    {"fit --end naive --zeta-min 10 --zeta-max 1", "need 0 < zeta-min < zeta-max"},
+    {"fit --end naive --zeta-min nan --zeta-max 10", "need 0 < zeta-min < zeta-max, got nan"},
+    {"fit --end naive --zeta-min 1 --zeta-max inf", "need 0 < zeta-min < zeta-max, got 1 and inf"},
+    {"fit --end naive --zeta-min 1 --zeta-max 10 --points 2", "at least 3 points, got 2"},
+    {"fit --end naive --zeta-min 1 --zeta-max 10 --tolerance 1e-13", "tolerance"},
+    // stability.
+    {"stability --tolerance 1e-12", "stability --tolerance must lie in [1e-09, 0.01]"},
+    {"stability --points-per-decade 0", "--points-per-decade must lie in [1, 20], got 0"},
+    {"stability --points-per-decade abc", "--points-per-decade expects a whole number, got 'abc'"},
+    {"stability --out /proc/no-such/x", "cannot create output folder"},
+    // series.
+    {"series", "subcommand is required"},
+    {"series coefficients --count 3", "--kind is required"},
+    {"series coefficients --kind bogus --count 3", "--kind: bogus not in"},
+    {"series coefficients --kind naive --count -1", "--count -1 out of range [1, 60]"},
+    {"series coefficients --kind naive --count 100000", "--count 100000 out of range"},
+    {"series eval --kind naive --zeta -1", "zeta must be finite and >= 0"},
+    {"series eval --kind naive --zeta nan --terms 3", "zeta must be finite and >= 0, got nan"},
+    {"series eval --kind naive --zeta 1 --terms -2", "--terms -2 out of range"},
+    {"series eval --kind pade-1999 --zeta 1 --terms 3",
+     "--terms applies to --kind naive and delayed-recovery"},
+    {"series eval --kind naive --zeta 1 --coefficients maybe", "--coefficients: maybe not in"},
+    {"series validate --out /proc/no-such", "cannot create output folder"},
 };
 
 std::string with_folder(std::string arguments, const std::string& folder) {
