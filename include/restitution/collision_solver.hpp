@@ -27,9 +27,9 @@ struct SolveOptions {
   // Hertz law only: integrate in u = sqrt(x) near x = 0, where the solution is analytic in u but not in τ
   // (DESIGN.md §4). false integrates in τ throughout, for comparison.
   bool smooth_ends = true;
-  // Bound on CVODE's internal steps in each phase of the collision. A solve that needs more fails with
-  // NumericalFailure ("too much work", flag -1): Adams on the stiff large-ζ relaxation does.
-  // Must be >= 1.
+  // Most internal CVODE steps per phase of the collision; beyond it the solve fails with CVODE's "too much
+  // work" (flag -1). The default never binds on the collisions of this project (at most a few thousand
+  // steps); a smaller limit bounds the work spent on a hard point. Must be >= 1.
   long max_steps_per_phase = 1000000;
 };
 

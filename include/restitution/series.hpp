@@ -3,7 +3,6 @@
 // Every evaluator returns ε and 1 - ε, the latter without cancellation as ε -> 1. Coefficients are
 // passed in (published tables: series_tables.hpp; recomputed ones: series_coefficients.hpp).
 #include <span>
-#include <string>
 #include <vector>
 
 namespace restitution::series {
@@ -41,7 +40,7 @@ Value simple_theory_1999(double zeta);
 Value pade_2011_1_4(double zeta);
 Value pade_2011_3_6(double zeta);
 
-// The approximations by name, as the CLI and the validation use them.
+// The closed-form approximations and series, for their large-ζ behaviour.
 enum class Approximation {
   naive_series,
   delayed_recovery_series,
@@ -50,10 +49,6 @@ enum class Approximation {
   pade_2011_1_4,
   pade_2011_3_6
 };
-const char* approximation_name(Approximation a);  // "naive", "delayed-recovery", "pade-1999", ...
-// The end of the collision an approximation describes: true for delayed recovery (the 2011 Padé
-// approximants), false for the naive end (the 1999 approximations and the naive series).
-bool describes_delayed_recovery(Approximation a);
 // Large-ζ behaviour ε ~ ζ^p the closed-form approximations imply (the series have no limit).
 double implied_large_zeta_exponent(Approximation a);
 

@@ -18,10 +18,10 @@ int run(int argc, char** argv) {
   app.require_subcommand(1);
   cli::Action chosen;
   cli::add_eps_command(app, chosen);
-  cli::add_sweep_command(app, chosen);
   cli::add_fit_command(app, chosen);
   cli::add_stability_command(app, chosen);
   cli::add_series_command(app, chosen);
+  cli::add_sweep_command(app, chosen);
 
   std::string known;
   bool is_known = false;

@@ -157,7 +157,6 @@ class CollisionRun {
 
   void begin(const detail::PhaseSettings& settings, double t0, const State& state, const Event* events,
              int count) {
-    phase_steps_ = 0;
     try {
       integrator_.start(law_, settings, t0, state, events, count);
     } catch (const NumericalFailure& e) {
@@ -166,13 +165,6 @@ class CollisionRun {
   }
 
   CvodeIntegrator::Step advance() {
-    // CVODE's own step bound counts per call, and every call here is one step: count them here.
-    if (++phase_steps_ > options_.max_steps_per_phase) {
-      add(result_.value.stats, integrator_.phase_stats());
-      throw failure(
-          fmt::format("too much work (CVODE's CV_TOO_MUCH_WORK, flag -1): more than {} steps in one phase",
-                      options_.max_steps_per_phase));
-    }
     try {
       CvodeIntegrator::Step step = integrator_.advance();
       if (options_.keep_trajectory) record(point_of(form_, step.t, step.state));
@@ -197,6 +189,7 @@ class CollisionRun {
     form_ = Form::compression;
     detail::PhaseSettings settings{Form::compression, plan_.relative_tolerance,
                                    plan_.absolute_tolerance_compression, u_stop};
+    settings.max_steps = plan_.max_steps;
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
     if (is_start) {
@@ -244,6 +237,7 @@ class CollisionRun {
     detail::PhaseSettings settings{form, plan_.relative_tolerance, plan_.absolute_tolerance_time,
                                    plan_.time_limit};
     settings.switch_x = switch_x;
+    settings.max_steps = plan_.max_steps;
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
     events[static_cast<std::size_t>(count++)] = Event::max_compression;
@@ -295,7 +289,6 @@ class CollisionRun {
   const detail::SolvePlan& plan_;
   CvodeIntegrator& integrator_;
   Form form_ = Form::time;
-  long phase_steps_ = 0;
   Accumulated result_;
 };
 

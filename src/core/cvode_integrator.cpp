@@ -142,6 +142,7 @@ void CvodeIntegrator::start(const ContactLaw& law, const PhaseSettings& settings
   sundials::check_flag(CVodeSVtolerances(mem, settings.relative_tolerance, absolute_tolerance_.get()),
                        "CVodeSVtolerances");
   sundials::check_flag(CVodeSetMaxNumSteps(mem, settings.max_steps), "CVodeSetMaxNumSteps");
+  max_steps_ = settings.max_steps;
   sundials::check_flag(CVodeSetStopTime(mem, settings.stop), "CVodeSetStopTime");
   stop_ = settings.stop;
 
@@ -160,6 +161,16 @@ void CvodeIntegrator::start(const ContactLaw& law, const PhaseSettings& settings
 
 CvodeIntegrator::Step CvodeIntegrator::advance() {
   Step step;
+  // In CV_ONE_STEP mode CVODE's own step limit applies per call, that is never: the phase's limit is
+  // enforced here, reported like CVODE's own CV_TOO_MUCH_WORK.
+  long steps = 0;
+  CVodeGetNumSteps(memory_.get(), &steps);
+  if (steps >= max_steps_) {
+    CVodeGetCurrentTime(memory_.get(), &step.t);
+    throw NumericalFailure(
+        fmt::format("CVODE failed at {}={} with flag {} (too much work: {} steps in one phase)",
+                    data_.form == Form::time ? "tau" : "u", step.t, CV_TOO_MUCH_WORK, steps));
+  }
   const int flag = CVode(memory_.get(), stop_, state_.get(), &step.t, CV_ONE_STEP);
   if (flag < 0) {
     throw NumericalFailure(fmt::format("CVODE failed at {}={} with flag {} ({})",

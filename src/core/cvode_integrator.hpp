@@ -88,6 +88,7 @@ class CvodeIntegrator {
   int watched_events_ = -1;
   bool initialized_ = false;
   double stop_ = 0.0;
+  long max_steps_ = 0;  // per phase
 };
 
 }  // namespace restitution::detail

@@ -118,6 +118,7 @@ SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options) {
   plan.time_limit = time_limit(law, options.ends);
   // The start phase ends where x' has halved, or at x = 1/2 (natural), whichever comes first.
   plan.start_phase_x = 0.5 * law.length_scale;
+  plan.max_steps = options.max_steps_per_phase;
   return plan;
 }
 

@@ -15,6 +15,7 @@ struct SolvePlan {
   State absolute_tolerance_compression{};  // (τ, x', I)
   double time_limit = 0.0;                 // law's own τ
   double start_phase_x = 0.0;              // largest x of the compression form of the start
+  long max_steps = 0;                      // per phase
 };
 
 // Throws InvalidInput for a tolerance outside [kMinTolerance, kMaxTolerance], no end requested, or an end

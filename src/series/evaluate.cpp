@@ -52,29 +52,6 @@ double power_series(double zeta, std::span<const double> coefficients) {
   return coefficients[0] + horner_without_constant(zeta, coefficients.subspan(1));
 }
 
-const char* approximation_name(Approximation a) {
-  switch (a) {
-    case Approximation::naive_series:
-      return "naive";
-    case Approximation::delayed_recovery_series:
-      return "delayed-recovery";
-    case Approximation::pade_1999:
-      return "pade-1999";
-    case Approximation::simple_theory_1999:
-      return "simple-theory-1999";
-    case Approximation::pade_2011_1_4:
-      return "pade-2011-1-4";
-    case Approximation::pade_2011_3_6:
-      return "pade-2011-3-6";
-  }
-  return "unknown";
-}
-
-bool describes_delayed_recovery(Approximation a) {
-  return a == Approximation::delayed_recovery_series || a == Approximation::pade_2011_1_4 ||
-         a == Approximation::pade_2011_3_6;
-}
-
 double implied_large_zeta_exponent(Approximation a) {
   switch (a) {
     case Approximation::pade_1999:  // (d1 w)/(d5 w⁴)
