@@ -142,7 +142,7 @@ TEST(BadInput, EveryCaseIsOneLineNamingTheProblemAndStatusTwo) {
     const std::string arguments = with_folder(c.arguments, folder.string());
     const auto outcome = run_cli(arguments);
     EXPECT_EQ(outcome.status, 2) << arguments << "\n" << outcome.err;
-    EXPECT_EQ(outcome.err.rfind("restitution: error: ", 0), 0u) << arguments << "\n" << outcome.err;
+    EXPECT_EQ(outcome.err.rfind("restitution: error: ", 0), 0U) << arguments << "\n" << outcome.err;
     EXPECT_EQ(std::count(outcome.err.begin(), outcome.err.end(), '\n'), 1) << arguments << "\n"
                                                                            << outcome.err;
     EXPECT_NE(outcome.err.find(c.names), std::string::npos) << arguments << "\n" << outcome.err;
