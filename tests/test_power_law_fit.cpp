@@ -19,6 +19,7 @@ using test_support::run_cli;
 TEST(PowerLawFit, RecoversAnExactLaw) {
   const std::vector<double> zeta = log_grid(2.0, 2e3, 7);
   std::vector<double> eps;
+  eps.reserve(zeta.size());
   for (const double z : zeta) eps.push_back(0.7 * std::pow(z, -1.25));
   const PowerLawFit fit = fit_power_law(zeta, eps);
   EXPECT_NEAR(fit.exponent, -1.25, 1e-13);

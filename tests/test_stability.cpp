@@ -1,6 +1,7 @@
 // The stability report: its checks on a few points, the Adams work bound as a finding, the per-decade
 // summary, and the `restitution stability` contract end to end (JSON, CSV, output folder, bad input).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -64,7 +65,9 @@ TEST(Stability, RefusesToleranceItCannotTighten) {
 }
 
 TEST(CliStability, WritesCsvJsonAndReportsOnStdout) {
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "restitution-stability-test";
+  // One folder per process: other checkouts may run this test at the same time.
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("restitution-stability-test-" + std::to_string(getpid()));
   std::filesystem::remove_all(folder);
   const auto outcome = run_cli("stability --tolerance 1e-7 --json --out " + folder.string());
   ASSERT_EQ(outcome.status, 0) << outcome.err;

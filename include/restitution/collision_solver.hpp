@@ -4,6 +4,7 @@
 // across solves; use one solver per thread.
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "restitution/contact_law.hpp"
@@ -12,6 +13,11 @@ namespace restitution {
 
 enum class Method { bdf, adams, automatic };
 const char* method_name(Method method);  // "bdf" | "adams" | "auto"
+
+// One end of the collision, for callers that ask for a single end.
+enum class CollisionEnd { naive, delayed_recovery };
+const char* end_name(CollisionEnd end);               // "naive" | "delayed-recovery"
+CollisionEnd end_from_name(const std::string& name);  // throws InvalidInput naming the value
 
 struct EndSelection {
   bool naive = true;             // end where the overlap vanishes, x = 0
@@ -100,6 +106,10 @@ class CollisionSolver {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+EndSelection selection_of(CollisionEnd end);
+// The requested end of a solve; throws NumericalFailure if the solve did not produce it.
+const EndResult& end_of(const CollisionResult& result, CollisionEnd end);
 
 // The method `automatic` resolves to for this law (measured: see docs/accuracy.md).
 Method resolve_method(const ContactLaw& law, Method requested);

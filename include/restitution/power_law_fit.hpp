@@ -8,13 +8,6 @@
 
 namespace restitution {
 
-enum class CollisionEnd { naive, delayed_recovery };
-const char* end_name(CollisionEnd end);               // "naive" | "delayed-recovery"
-CollisionEnd end_from_name(const std::string& name);  // throws InvalidInput naming the option value
-EndSelection selection_of(CollisionEnd end);
-// The requested end of a solve; throws NumericalFailure if the solve did not produce it.
-const EndResult& end_of(const CollisionResult& result, CollisionEnd end);
-
 struct PowerLawFit {
   double exponent = 0.0;         // p in ε ≈ c ζ^p
   double exponent_stderr = 0.0;  // ordinary least-squares standard error of p

@@ -9,26 +9,6 @@
 
 namespace restitution {
 
-const char* end_name(CollisionEnd end) {
-  return end == CollisionEnd::naive ? "naive" : "delayed-recovery";
-}
-
-CollisionEnd end_from_name(const std::string& name) {
-  if (name == "naive") return CollisionEnd::naive;
-  if (name == "delayed-recovery") return CollisionEnd::delayed_recovery;
-  throw InvalidInput(fmt::format("--end must be naive or delayed-recovery, got '{}'", name));
-}
-
-EndSelection selection_of(CollisionEnd end) {
-  return {end == CollisionEnd::naive, end == CollisionEnd::delayed_recovery};
-}
-
-const EndResult& end_of(const CollisionResult& result, CollisionEnd end) {
-  const auto& value = end == CollisionEnd::naive ? result.naive : result.delayed_recovery;
-  if (!value) throw NumericalFailure(fmt::format("no {} end at zeta={}", end_name(end), result.parameter));
-  return *value;
-}
-
 PowerLawFit fit_power_law(const std::vector<double>& zeta, const std::vector<double>& eps) {
   const auto n = static_cast<Eigen::Index>(zeta.size());
   if (zeta.size() != eps.size()) throw InvalidInput("power-law fit: zeta and eps differ in length");

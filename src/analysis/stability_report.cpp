@@ -15,7 +15,7 @@ double small_part(const EndResult& r) {
 }
 
 std::string failure_reason(const NumericalFailure& e) {
-  const std::string what = e.what();
+  std::string what = e.what();
   // The solver's step bound (SolveOptions::max_steps_per_phase) was reached.
   if (what.find("too much work") != std::string::npos) return "too much work (stiff)";
   return what;

@@ -12,6 +12,8 @@ using Action = std::function<int()>;
 void add_eps_command(CLI::App& app, Action& chosen);
 void add_fit_command(CLI::App& app, Action& chosen);
 void add_stability_command(CLI::App& app, Action& chosen);
+void add_calibrate_command(CLI::App& app, Action& chosen);
+void add_run_command(CLI::App& app, Action& chosen);
 void add_series_command(CLI::App& app, Action& chosen);
 void add_sweep_command(CLI::App& app, Action& chosen);
 

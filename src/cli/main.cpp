@@ -20,6 +20,8 @@ int run(int argc, char** argv) {
   cli::add_eps_command(app, chosen);
   cli::add_fit_command(app, chosen);
   cli::add_stability_command(app, chosen);
+  cli::add_calibrate_command(app, chosen);
+  cli::add_run_command(app, chosen);
   cli::add_series_command(app, chosen);
   cli::add_sweep_command(app, chosen);
 

@@ -29,6 +29,26 @@ const char* method_name(Method method) {
   return "?";
 }
 
+const char* end_name(CollisionEnd end) {
+  return end == CollisionEnd::naive ? "naive" : "delayed-recovery";
+}
+
+CollisionEnd end_from_name(const std::string& name) {
+  if (name == "naive") return CollisionEnd::naive;
+  if (name == "delayed-recovery") return CollisionEnd::delayed_recovery;
+  throw InvalidInput(fmt::format("end must be naive or delayed-recovery, got '{}'", name));
+}
+
+EndSelection selection_of(CollisionEnd end) {
+  return {end == CollisionEnd::naive, end == CollisionEnd::delayed_recovery};
+}
+
+const EndResult& end_of(const CollisionResult& result, CollisionEnd end) {
+  const auto& value = end == CollisionEnd::naive ? result.naive : result.delayed_recovery;
+  if (!value) throw NumericalFailure(fmt::format("no {} end at zeta={}", end_name(end), result.parameter));
+  return *value;
+}
+
 Method resolve_method(const ContactLaw& law, Method requested) {
   if (requested != Method::automatic) return requested;
   // Measured (docs/accuracy.md): Adams is cheaper while the damping is weak, BDF once it makes the

@@ -1,0 +1,123 @@
+#pragma once
+// Scene files: what to compute, on what, how accurately and where to write (TOML; format in README.md and
+// scenes/*.toml). This header holds the parsed scene as plain values and the parser; planning and running
+// are in scene_plan.hpp and scene_run.hpp. The parser validates everything it can: unknown keys, wrong
+// types and out-of-range values throw InvalidInput naming the file, the line and the key.
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "restitution/calibration.hpp"
+#include "restitution/collision_solver.hpp"
+#include "restitution/material.hpp"
+
+namespace restitution::scene {
+
+// Columns a sweep table can hold (every requested end gets its own columns).
+struct Quantities {
+  bool eps = true;
+  bool one_minus_eps = true;
+  bool duration = true;         // τ_c (and seconds for a material)
+  bool max_compression = true;  // time and size of maximal compression (and SI for a material)
+};
+
+// An empirical law ε = coefficient · (v / velocity_unit_m_s)^exponent to compare with (the 1999 paper's
+// ice fit: coefficient 0.32, exponent -0.234, v in cm/s).
+struct EmpiricalLaw {
+  double coefficient = 0.0;
+  double exponent = 0.0;
+  double velocity_unit_m_s = 1.0;
+};
+
+// A power-law fit ε ≈ a ζ^p over ζ >= zeta_min (the asymptotics module).
+struct PowerLawFitRequest {
+  double zeta_min = 0.0;
+};
+
+enum class Axes { linear, log_log, log_x };
+
+// ε tables over ζ, or over impact speeds with β, a material or the 1999 paper's g*.
+struct Sweep {
+  std::string name;
+  std::string title;
+  EndSelection ends;
+  Quantities quantities;
+  std::vector<double> zeta;          // the variable when no velocity is given
+  std::vector<double> velocity_m_s;  // the variable with beta, material or characteristic_velocity
+  std::optional<double> beta;        // s^{1/5} m^{-1/5}
+  std::optional<std::string> material;
+  std::optional<double> characteristic_velocity_m_s;  // 1999 paper's g*
+  bool compare_series = false;                        // the 2008 paper's series at every requested end
+  std::optional<EmpiricalLaw> empirical;
+  std::optional<PowerLawFitRequest> fit;
+  Axes axes = Axes::linear;
+  int line = 0;  // where the [[sweep]] starts, for messages
+};
+
+// One collision with its trajectory x, x', x'' (the 2008 paper's Fig. 3).
+struct Trajectory {
+  std::string name;
+  std::string title;
+  EndSelection ends;
+  std::optional<double> zeta;
+  std::optional<double> velocity_m_s;
+  std::optional<double> beta;
+  std::optional<std::string> material;
+  int line = 0;
+};
+
+struct CalibrationTask {
+  std::string name;
+  double eps = 0.0;
+  double velocity_m_s = 0.0;
+  CollisionEnd end = CollisionEnd::delayed_recovery;
+  std::optional<std::string> material;
+  int line = 0;
+};
+
+// The linear dash-pot against its closed forms (2008 paper Eqs. 10 and 12): an exact check.
+struct DashpotCheck {
+  std::string name;
+  std::string title;
+  EndSelection ends;
+  std::vector<double> damping_ratio;
+  int line = 0;
+};
+
+// Sections whose engines live in other modules (work-precision, stability): recognised so that a scene can
+// ask for them; the runner reports whether this build has them.
+struct ExternalStudy {
+  std::string kind;  // "work_precision" | "stability"
+  std::string name;
+  std::vector<double> zeta;
+  int line = 0;
+};
+
+struct Scene {
+  std::string file_name;
+  std::string title;
+  std::string description;
+  std::filesystem::path output;  // as written in the file (relative paths: to the working directory)
+  double tolerance = 1e-10;
+  Method method = Method::automatic;
+  std::map<std::string, Material> materials;
+  std::vector<Sweep> sweeps;
+  std::vector<Trajectory> trajectories;
+  std::vector<CalibrationTask> calibrations;
+  std::vector<DashpotCheck> dashpots;
+  std::vector<ExternalStudy> studies;
+};
+
+// Parses and validates a scene. file_name is used in messages only. Throws InvalidInput.
+Scene parse_scene(std::string_view toml_text, std::string_view file_name);
+
+// Reads the file and parses it. Throws InvalidInput naming the file when it cannot be read.
+Scene load_scene(const std::filesystem::path& path);
+
+// Caps every sweep and dash-pot range at `points` values (first and last kept): CI's small settings.
+void make_quick(Scene& scene, std::size_t points);
+
+}  // namespace restitution::scene

@@ -1,0 +1,44 @@
+#pragma once
+// The planner: from what a scene asks, the collisions to integrate. Each distinct collision is solved once,
+// with the union of the ends and the trajectory every output needs from it; only the requested ends are
+// integrated (no naive tail when only delayed recovery is wanted) and trajectories only when asked.
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "restitution/collision_solver.hpp"
+#include "restitution/scene.hpp"
+
+namespace restitution::scene {
+
+struct SolveJob {
+  ContactLaw law;  // always in natural units (ζ or the damping ratio r)
+  EndSelection ends{false, false};
+  bool keep_trajectory = false;
+};
+
+inline constexpr std::size_t kNoJob = static_cast<std::size_t>(-1);  // nothing to integrate (no such end)
+
+// One collision of a task: its ζ (or r), the physical data it came from, and the job that solves it.
+struct PlannedPoint {
+  double parameter = 0.0;              // ζ, or r for the dash-pot
+  std::optional<double> velocity_m_s;  // impact speed, for sweeps over velocity
+  std::optional<double> beta;          // s^{1/5} m^{-1/5}
+  std::optional<double> k;             // ρ/m_eff of a material [s^-2 m^-1/2]: SI times and lengths
+  std::size_t job = kNoJob;
+};
+
+struct Plan {
+  std::vector<SolveJob> jobs;
+  std::vector<std::vector<PlannedPoint>> sweeps;    // parallel to Scene::sweeps
+  std::vector<PlannedPoint> trajectories;           // parallel to Scene::trajectories
+  std::vector<std::vector<PlannedPoint>> dashpots;  // parallel to Scene::dashpots
+};
+
+// Throws InvalidInput when a physical point lies outside the solver's range (ζ > 1e4), naming the task.
+Plan plan_scene(const Scene& scene);
+
+// The ends a dash-pot collision has: no naive end (x never returns to 0) for r >= 1.
+EndSelection dashpot_ends(const EndSelection& requested, double damping_ratio);
+
+}  // namespace restitution::scene

@@ -1,0 +1,387 @@
+#include "cli/scene_outputs.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+#include "cli/json_writer.hpp"
+#include "cli/output_files.hpp"
+#include "cli/scene_tables.hpp"
+#include "restitution/units.hpp"
+
+namespace restitution::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string g(double v) {
+  return std::isfinite(v) ? fmt::format("{:.10g}", v) : "—";
+}
+
+std::string join(const std::vector<std::string>& items, const char* separator = ",") {
+  std::string out;
+  for (const auto& item : items) {
+    if (!out.empty()) out += separator;
+    out += item;
+  }
+  return out;
+}
+
+std::vector<CollisionEnd> ends_of(const EndSelection& e) {
+  std::vector<CollisionEnd> out;
+  if (e.naive) out.push_back(CollisionEnd::naive);
+  if (e.delayed_recovery) out.push_back(CollisionEnd::delayed_recovery);
+  return out;
+}
+
+// A markdown table of up to `limit` rows spread evenly over the table (first and last included).
+std::string markdown_rows(const Table& t, const std::vector<std::string>& columns, std::size_t limit) {
+  std::string out = "| " + join(columns, " | ") + " |";
+  out += "\n|";
+  for (std::size_t i = 0; i < columns.size(); ++i) out += "---|";
+  out += "\n";
+  const std::size_t n = t.rows.size();
+  const std::size_t shown = std::min(n, limit);
+  for (std::size_t k = 0; k < shown; ++k) {
+    const std::size_t i = shown == 1 ? 0 : k * (n - 1) / (shown - 1);
+    std::vector<std::string> cells;
+    cells.reserve(columns.size());
+    for (const auto& c : columns) cells.push_back(g(t.rows[i][t.column(c)]));
+    out += "| " + join(cells, " | ") + " |\n";
+  }
+  return out;
+}
+
+class SceneWriter {
+ public:
+  SceneWriter(const scene::Scene& s, const scene::SceneResults& r, fs::path folder)
+      : scene_(s), results_(r), folder_(std::move(folder)) {}
+
+  WrittenOutputs write(double seconds) {
+    report_ = fmt::format("# {}\n\n", scene_.title.empty() ? scene_.file_name : scene_.title);
+    json_.begin_object();
+    json_.field("scene", scene_.file_name).field("title", scene_.title);
+    json_.field("tolerance", scene_.tolerance).field("method", method_name(scene_.method));
+    // Sections in the order the scene file lists them.
+    std::vector<std::tuple<int, int, std::size_t>> order;  // line, kind, index
+    for (std::size_t i = 0; i < scene_.sweeps.size(); ++i) order.emplace_back(scene_.sweeps[i].line, 0, i);
+    for (std::size_t i = 0; i < scene_.trajectories.size(); ++i) {
+      order.emplace_back(scene_.trajectories[i].line, 1, i);
+    }
+    for (std::size_t i = 0; i < scene_.dashpots.size(); ++i)
+      order.emplace_back(scene_.dashpots[i].line, 2, i);
+    std::sort(order.begin(), order.end());
+    for (const auto& [line, kind, i] : order) {
+      if (kind == 0) sweep(i);
+      if (kind == 1) trajectory(i);
+      if (kind == 2) dashpot(i);
+    }
+    calibrations();
+    studies();
+    footer(seconds);
+    json_.end_object();
+    write_file("summary.json", json_.str() + "\n");
+    write_file("report.md", report_);
+    return std::move(out_);
+  }
+
+ private:
+  void write_file(const std::string& name, const std::string& content) {
+    write_file_atomically(folder_ / name, content);
+    out_.files.push_back(name);
+  }
+
+  // Runs a plot script; returns the markdown image link, or a note saying why there is no plot.
+  std::string plot(const std::string& script, const std::string& name, std::vector<std::string> arguments) {
+    const std::string png = name + ".png";
+    arguments.insert(arguments.begin(), {(folder_ / (name + ".csv")).string(), (folder_ / png).string()});
+    const std::string why = run_plot_script(script, arguments);
+    if (!why.empty()) {
+      out_.warnings.push_back(fmt::format("{}: {}", name, why));
+      return fmt::format("*({}; the data are in `{}.csv`)*\n\n", why, name);
+    }
+    out_.files.push_back(png);
+    return fmt::format("![{}]({})\n\n", name, png);
+  }
+
+  void sweep(std::size_t i) {
+    const scene::Sweep& s = scene_.sweeps[i];
+    const scene::SweepExtras& extras = results_.sweeps[i];
+    const Table t = sweep_table(scene_, results_, i);
+    write_file(s.name + ".csv", t.csv());
+    const bool physical = !s.velocity_m_s.empty();
+    const std::string x = physical ? "velocity_m_s" : "zeta";
+    std::vector<std::string> eps_columns;
+    for (const CollisionEnd e : ends_of(s.ends)) {
+      if (s.quantities.eps) eps_columns.push_back(std::string("eps_") + end_column(e));
+    }
+    std::vector<std::string> dashed;
+    for (const auto& a : extras.approximations) dashed.push_back(a.label);
+    if (s.empirical) dashed.emplace_back("eps_empirical");
+    report_ += fmt::format("## {}\n\n", s.title);
+    if (!eps_columns.empty()) {
+      std::vector<std::string> args = {"--x",      x,
+                                       "--y",      join(eps_columns),
+                                       "--title",  s.title,
+                                       "--ylabel", "eps",
+                                       "--xlabel", physical ? "impact speed v [m/s]" : "zeta = beta v^(1/5)"};
+      if (!dashed.empty()) args.insert(args.end(), {"--dashed", join(dashed)});
+      if (s.axes != scene::Axes::linear) args.insert(args.end(), {"--xscale", "log"});
+      if (s.axes == scene::Axes::log_log) args.insert(args.end(), {"--yscale", "log"});
+      report_ += plot("scene_xy", s.name, args);
+    }
+    report_ += describe_sweep(s, t);
+    std::vector<std::string> shown = {"zeta"};
+    if (physical) shown.emplace_back("velocity_m_s");
+    shown.insert(shown.end(), eps_columns.begin(), eps_columns.end());
+    shown.insert(shown.end(), dashed.begin(), dashed.end());
+    for (const CollisionEnd e : ends_of(s.ends)) {
+      const std::string c = std::string("duration_s_") + end_column(e);
+      if (std::find(t.columns.begin(), t.columns.end(), c) != t.columns.end()) shown.push_back(c);
+    }
+    if (std::find(t.columns.begin(), t.columns.end(), "max_compression_m") != t.columns.end()) {
+      shown.emplace_back("max_compression_m");
+    }
+    report_ += markdown_rows(t, shown, 9) + "\n";
+    for (const auto& f : extras.fits) {
+      report_ +=
+          fmt::format("Power-law fit at the {} end: eps ≈ {} · zeta^({} ± {}) over {} points.\n\n",
+                      end_name(f.end), g(f.prefactor), g(f.exponent), g(f.exponent_uncertainty), f.points);
+    }
+    for (const auto& n : extras.notes) report_ += "*" + n + "*\n\n";
+
+    json_.key(s.name).begin_object();
+    json_.field("kind", "sweep")
+        .field("points", static_cast<long>(t.rows.size()))
+        .field("table", s.name + ".csv");
+    json_.key("notes").begin_array();
+    for (const auto& n : extras.notes) json_.value(n);
+    json_.end_array();
+    json_.key("fits").begin_array();
+    for (const auto& f : extras.fits) {
+      json_.begin_object();
+      json_.field("end", end_name(f.end)).field("prefactor", f.prefactor).field("exponent", f.exponent);
+      json_.field("exponent_uncertainty", f.exponent_uncertainty)
+          .field("points", static_cast<long>(f.points));
+      json_.end_object();
+    }
+    json_.end_array();
+    if (s.empirical) empirical_summary(s, t);
+    json_.end_object();
+  }
+
+  std::string describe_sweep(const scene::Sweep& s, const Table& t) {
+    std::vector<std::string> names;
+    for (const CollisionEnd e : ends_of(s.ends)) names.emplace_back(end_name(e));
+    const std::string ends = join(names, " and ");
+    const auto& points = results_.plan.sweeps[&s - scene_.sweeps.data()];
+    std::string what;
+    if (s.velocity_m_s.empty()) {
+      what = fmt::format("ε at the {} end for {} values of ζ from {} to {}", ends, t.rows.size(),
+                         g(s.zeta.front()), g(s.zeta.back()));
+    } else {
+      std::string subject;
+      if (s.beta) subject = fmt::format("β = {} s^(1/5) m^(-1/5)", g(*s.beta));
+      if (s.characteristic_velocity_m_s) {
+        subject = fmt::format(
+            "the 1999 paper's characteristic velocity g* = {} m/s, i.e. β = (g*)^(-1/5)/C1 = {} "
+            "s^(1/5) m^(-1/5) (C1 = {})",
+            g(*s.characteristic_velocity_m_s), g(*points.front().beta), g(c1_closed_form()));
+      }
+      if (s.material) {
+        const MaterialConstants c = material_constants(scene_.materials.at(*s.material));
+        subject = fmt::format(
+            "material `{}`: R_eff = {} m, m_eff = {} kg, k = ρ/m_eff = {} s^-2 m^-1/2, A = {} s, "
+            "β = {} s^(1/5) m^(-1/5), 1999 g* = {} m/s",
+            *s.material, g(c.elastic.effective_radius_m), g(c.elastic.effective_mass_kg), g(c.hertz.k),
+            g(c.dissipative_constant_s), g(c.hertz.beta), g(characteristic_velocity_m_s(c.hertz.beta)));
+      }
+      what = fmt::format("ε at the {} end for {} impact speeds from {} to {} m/s with {}; ζ = β v^(1/5)",
+                         ends, t.rows.size(), g(s.velocity_m_s.front()), g(s.velocity_m_s.back()), subject);
+    }
+    return fmt::format(
+        "Computed: {}. Table `{}.csv` (times τ and compressions x in natural units, x'(0) = 1; columns "
+        "ending "
+        "in _s and _m are seconds and metres).\n\n",
+        what, s.name);
+  }
+
+  void empirical_summary(const scene::Sweep& s, const Table& t) {
+    // Largest relative deviation from the empirical law where the law is a valid coefficient (< 1).
+    double worst = 0.0;
+    double at = 0.0;
+    const std::size_t e = t.column("eps_empirical");
+    const CollisionEnd end = s.ends.naive ? CollisionEnd::naive : CollisionEnd::delayed_recovery;
+    const std::size_t n = t.column(std::string("eps_") + end_column(end));
+    for (const auto& row : t.rows) {
+      if (!(row[e] < 1.0)) continue;
+      const double d = std::abs(row[n] / row[e] - 1.0);
+      if (d > worst) {
+        worst = d;
+        at = row[t.column("velocity_m_s")];
+      }
+    }
+    report_ += fmt::format(
+        "Empirical law ε = {} (v / {} m/s)^{}: where it is below 1, the computed ε at the {} end deviates "
+        "from "
+        "it by at most {:.1f}% (at v = {} m/s).\n\n",
+        g(s.empirical->coefficient), g(s.empirical->velocity_unit_m_s), g(s.empirical->exponent),
+        end_name(end), 100.0 * worst, g(at));
+    json_.field("max_relative_deviation_from_empirical", worst).field("at_velocity_m_s", at);
+  }
+
+  void trajectory(std::size_t i) {
+    const scene::Trajectory& tr = scene_.trajectories[i];
+    const scene::PlannedPoint& p = results_.plan.trajectories[i];
+    const CollisionResult& r = *scene::result_of(results_, p);
+    const Table t = trajectory_table(results_, i);
+    write_file(tr.name + ".csv", t.csv());
+    std::vector<std::string> marks;
+    for (const CollisionEnd e : ends_of(tr.ends)) {
+      const auto& end = e == CollisionEnd::naive ? r.naive : r.delayed_recovery;
+      marks.push_back(fmt::format("{}:{:.17g}", end_name(e), end->tau));
+    }
+    report_ += fmt::format("## {}\n\n", tr.title);
+    report_ +=
+        plot("scene_trajectory", tr.name,
+             {"--ends", join(marks), "--title", fmt::format("{} (zeta = {})", tr.title, g(p.parameter))});
+    report_ += fmt::format(
+        "Computed: the trajectory x, x', x'' of one collision at ζ = {} ({} points in `{}.csv`, natural "
+        "units). "
+        "Maximal compression x = {} at τ = {}.\n\n",
+        g(p.parameter), t.rows.size(), tr.name, g(r.max_compression.x), g(r.max_compression.tau));
+    report_ += "| end | τ_c | ε | x(τ_c) |\n|---|---|---|---|\n";
+    json_.key(tr.name).begin_object();
+    json_.field("kind", "trajectory")
+        .field("zeta", p.parameter)
+        .field("points", static_cast<long>(t.rows.size()));
+    for (const CollisionEnd e : ends_of(tr.ends)) {
+      const EndResult& end = *(e == CollisionEnd::naive ? r.naive : r.delayed_recovery);
+      report_ += fmt::format("| {} | {} | {} | {} |\n", end_name(e), g(end.tau), g(end.eps), g(end.x));
+      json_.key(end_column(e)).begin_object();
+      json_.field("tau", end.tau).field("eps", end.eps).field("x", end.x);
+      json_.end_object();
+    }
+    json_.end_object();
+    report_ +=
+        "\nThe delayed-recovery end (force zero, ζx' + x = 0) comes first; integrating on to the naive end "
+        "(x = 0) lets the formula's attractive force act (x'' > 0), the 2008 paper's Fig. 3.\n\n";
+  }
+
+  void dashpot(std::size_t i) {
+    const scene::DashpotCheck& d = scene_.dashpots[i];
+    const Table t = dashpot_table(scene_, results_, i);
+    write_file(d.name + ".csv", t.csv());
+    report_ += fmt::format("## {}\n\n", d.title);
+    std::vector<std::string> numeric;
+    std::vector<std::string> exact;
+    std::vector<std::string> errors;
+    for (const CollisionEnd e : ends_of(d.ends)) {
+      numeric.push_back(std::string("eps_") + end_column(e));
+      exact.push_back(std::string("eps_exact_") + end_column(e));
+      errors.push_back(std::string("relative_error_") + end_column(e));
+    }
+    report_ +=
+        plot("scene_xy", d.name,
+             {"--x", "damping_ratio", "--points", join(numeric), "--y", join(exact), "--error", join(errors),
+              "--title", d.title, "--ylabel", "eps", "--xlabel", "damping ratio r", "--yscale", "log"});
+    report_ += fmt::format(
+        "Computed: the linear dash-pot x'' + 2r x' + x = 0 at {} damping ratios against its closed forms "
+        "(ε = exp(-r τ_c); naive ωτ_c = π for r < 1, delayed recovery tan ωτ_c = 2rω/(2r²-1)). The error is "
+        "|ε - ε_exact| / min(ε_exact, 1 - ε_exact), which the tolerance {} bounds.\n\n",
+        t.rows.size(), g(scene_.tolerance));
+    json_.key(d.name).begin_object();
+    json_.field("kind", "dashpot");
+    for (const std::string& c : errors) {
+      double worst = 0.0;
+      for (const auto& row : t.rows) {
+        if (std::isfinite(row[t.column(c)])) worst = std::max(worst, row[t.column(c)]);
+      }
+      report_ += fmt::format("* largest {}: {:.3g}\n", c, worst);
+      json_.field("max_" + c, worst);
+    }
+    json_.end_object();
+    report_ += "\n";
+  }
+
+  void calibrations() {
+    if (scene_.calibrations.empty()) return;
+    report_ +=
+        "## Calibration\n\n"
+        "β from a measured ε at one impact speed (root finding on ζ with the solver); A = β / ((3/2) "
+        "k^(2/5)) "
+        "for a material; the 1999 paper's g* = (C1 β)^(-5).\n\n"
+        "| name | ε | v [m/s] | end | ζ | β [s^(1/5) m^(-1/5)] | ε(ζ) re-solved | g* [m/s] | A [s] |\n"
+        "|---|---|---|---|---|---|---|---|---|\n";
+    json_.key("calibrations").begin_array();
+    for (std::size_t i = 0; i < scene_.calibrations.size(); ++i) {
+      const scene::CalibrationTask& task = scene_.calibrations[i];
+      const Calibration& c = results_.calibrations[i].calibration;
+      report_ += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", task.name, g(task.eps),
+                             g(task.velocity_m_s), end_name(task.end), g(c.zeta), g(c.beta), g(c.eps_at_zeta),
+                             g(c.characteristic_velocity_m_s),
+                             c.dissipative_constant_s ? g(*c.dissipative_constant_s) : "—");
+      json_.begin_object();
+      json_.field("name", task.name).field("eps", task.eps).field("velocity_m_s", task.velocity_m_s);
+      json_.field("end", end_name(task.end)).field("zeta", c.zeta).field("beta", c.beta);
+      json_.field("eps_at_zeta", c.eps_at_zeta)
+          .field("characteristic_velocity_m_s", c.characteristic_velocity_m_s);
+      if (c.dissipative_constant_s) json_.field("dissipative_constant_s", *c.dissipative_constant_s);
+      json_.end_object();
+    }
+    json_.end_array();
+    report_ += "\n";
+  }
+
+  void studies() {
+    if (results_.study_notes.empty()) return;
+    report_ += "## Other studies\n\n";
+    json_.key("studies").begin_array();
+    for (const auto& n : results_.study_notes) {
+      report_ += "* " + n + "\n";
+      json_.value(n);
+    }
+    json_.end_array();
+    report_ += "\n";
+  }
+
+  void footer(double seconds) {
+    const SolverStats& s = results_.total;
+    report_ += fmt::format(
+        "## How this was computed\n\n"
+        "Scene `{}`; {} distinct collisions integrated once each (every output that needs a collision shares "
+        "its "
+        "solve) plus {} for calibrations, in {:.2f} s; tolerance {} on ε relative to min(ε, 1 - ε), method "
+        "{}; "
+        "{} steps, {} right-hand-side evaluations in total. {}\n",
+        scene_.file_name, results_.plan.jobs.size(), results_.collisions - results_.plan.jobs.size(), seconds,
+        g(scene_.tolerance), method_name(scene_.method), s.steps, s.rhs_evaluations,
+        scene_.description.empty() ? "" : "\n\n" + scene_.description + "\n");
+    json_.field("collisions", static_cast<long>(results_.collisions));
+    json_.field("distinct_collisions", static_cast<long>(results_.plan.jobs.size()));
+    json_.field("seconds", seconds);
+    json_.key("stats").begin_object();
+    json_.field("steps", s.steps).field("rhs_evaluations", s.rhs_evaluations);
+    json_.field("jacobian_evaluations", s.jacobian_evaluations).field("root_evaluations", s.root_evaluations);
+    json_.end_object();
+  }
+
+  const scene::Scene& scene_;
+  const scene::SceneResults& results_;
+  fs::path folder_;
+  std::string report_;
+  JsonWriter json_;
+  WrittenOutputs out_;
+};
+
+}  // namespace
+
+WrittenOutputs write_scene_outputs(const scene::Scene& scene, const scene::SceneResults& results,
+                                   const fs::path& folder, double seconds) {
+  prepare_output_folder(folder);
+  return SceneWriter(scene, results, folder).write(seconds);
+}
+
+}  // namespace restitution::cli

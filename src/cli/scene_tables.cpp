@@ -1,0 +1,159 @@
+#include "cli/scene_tables.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "cli/output_files.hpp"
+#include "restitution/scene_dashpot_reference.hpp"
+#include "restitution/units.hpp"
+
+namespace restitution::cli {
+namespace {
+
+constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+
+const EndResult* end_of(const CollisionResult* r, CollisionEnd end) {
+  if (r == nullptr) return nullptr;
+  const auto& e = end == CollisionEnd::naive ? r->naive : r->delayed_recovery;
+  return e ? &*e : nullptr;
+}
+
+std::vector<CollisionEnd> requested(const EndSelection& ends) {
+  std::vector<CollisionEnd> out;
+  if (ends.naive) out.push_back(CollisionEnd::naive);
+  if (ends.delayed_recovery) out.push_back(CollisionEnd::delayed_recovery);
+  return out;
+}
+
+}  // namespace
+
+std::string Table::csv() const {
+  std::string out;
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    if (i != 0) out += ',';
+    out += columns[i];
+  }
+  out += '\n';
+  for (const auto& row : rows) {
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      if (i != 0) out += ',';
+      out += number17(row[i]);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::size_t Table::column(const std::string& name) const {
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    if (columns[i] == name) return i;
+  }
+  throw std::logic_error("no column " + name);
+}
+
+const char* end_column(CollisionEnd end) {
+  return end == CollisionEnd::naive ? "naive" : "delayed_recovery";
+}
+
+Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results, std::size_t index) {
+  const scene::Sweep& s = scene.sweeps[index];
+  const auto& points = results.plan.sweeps[index];
+  const scene::SweepExtras& extras = results.sweeps[index];
+  const bool physical = !s.velocity_m_s.empty();
+  const bool si = physical && points.front().k.has_value();
+  const auto ends = requested(s.ends);
+  const scene::Quantities& q = s.quantities;
+
+  Table t;
+  t.columns = {"zeta"};
+  if (physical) t.columns.insert(t.columns.end(), {"velocity_m_s", "beta"});
+  for (const CollisionEnd e : ends) {
+    const std::string n = end_column(e);
+    if (q.eps) t.columns.push_back("eps_" + n);
+    if (q.one_minus_eps) t.columns.push_back("one_minus_eps_" + n);
+    if (q.duration) t.columns.push_back("tau_" + n);
+    if (q.duration && si) t.columns.push_back("duration_s_" + n);
+  }
+  if (q.max_compression) {
+    t.columns.insert(t.columns.end(), {"tau_max_compression", "x_max_compression"});
+    if (si) t.columns.insert(t.columns.end(), {"time_of_max_compression_s", "max_compression_m"});
+  }
+  for (const auto& a : extras.approximations) t.columns.push_back(a.label);
+  if (s.empirical) t.columns.emplace_back("eps_empirical");
+
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const scene::PlannedPoint& p = points[i];
+    const CollisionResult* r = scene::result_of(results, p);
+    const NaturalScales scales = si ? natural_scales(*p.k, *p.velocity_m_s) : NaturalScales{};
+    std::vector<double> row = {p.parameter};
+    if (physical) row.insert(row.end(), {*p.velocity_m_s, *p.beta});
+    for (const CollisionEnd e : ends) {
+      const EndResult* end = end_of(r, e);
+      const bool found = end != nullptr;
+      if (q.eps) row.push_back(found ? end->eps : kNone);
+      if (q.one_minus_eps) row.push_back(found ? end->one_minus_eps : kNone);
+      if (q.duration) row.push_back(found ? end->tau : kNone);
+      if (q.duration && si) row.push_back(found ? end->tau * scales.time_s : kNone);
+    }
+    if (q.max_compression) {
+      row.insert(row.end(), {r->max_compression.tau, r->max_compression.x});
+      if (si)
+        row.insert(row.end(),
+                   {r->max_compression.tau * scales.time_s, r->max_compression.x * scales.length_m});
+    }
+    for (const auto& a : extras.approximations) row.push_back(a.eps[i]);
+    if (s.empirical) row.push_back(extras.empirical_eps[i]);
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+Table trajectory_table(const scene::SceneResults& results, std::size_t index) {
+  const scene::PlannedPoint& p = results.plan.trajectories[index];
+  const CollisionResult& r = *scene::result_of(results, p);
+  const bool si = p.k.has_value();
+  const NaturalScales scales = si ? natural_scales(*p.k, *p.velocity_m_s) : NaturalScales{};
+  Table t;
+  t.columns = {"tau", "x", "velocity", "acceleration"};
+  if (si) t.columns.insert(t.columns.end(), {"time_s", "compression_m"});
+  // The shared solve may run past this trajectory's last requested end (another task asked for more).
+  for (const TrajectoryPoint& point : r.trajectory) {
+    std::vector<double> row = {point.tau, point.x, point.velocity, point.acceleration};
+    if (si) row.insert(row.end(), {point.tau * scales.time_s, point.x * scales.length_m});
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+Table dashpot_table(const scene::Scene& scene, const scene::SceneResults& results, std::size_t index) {
+  const scene::DashpotCheck& d = scene.dashpots[index];
+  Table t;
+  t.columns = {"damping_ratio"};
+  const auto ends = requested(d.ends);
+  for (const CollisionEnd e : ends) {
+    const std::string n = end_column(e);
+    t.columns.insert(t.columns.end(), {"eps_" + n, "eps_exact_" + n, "relative_error_" + n});
+  }
+  for (const scene::PlannedPoint& p : results.plan.dashpots[index]) {
+    const CollisionResult* r = scene::result_of(results, p);
+    std::vector<double> row = {p.parameter};
+    for (const CollisionEnd e : ends) {
+      const EndResult* end = end_of(r, e);
+      if (end == nullptr) {
+        row.insert(row.end(), {kNone, kNone, kNone});
+        continue;
+      }
+      const double tau = e == CollisionEnd::naive ? scene::dashpot_naive_duration(p.parameter)
+                                                  : scene::dashpot_delayed_duration(p.parameter);
+      const double exact = scene::dashpot_eps(p.parameter, tau);
+      row.insert(row.end(), {end->eps, exact, std::abs(end->eps - exact) / std::min(exact, 1.0 - exact)});
+    }
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+}  // namespace restitution::cli

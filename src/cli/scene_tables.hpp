@@ -1,0 +1,28 @@
+#pragma once
+// The tables of a scene's results (CSV text) and the columns they hold, shared by the files, the plots and
+// the report of `restitution run`.
+#include <string>
+#include <vector>
+
+#include "restitution/scene.hpp"
+#include "restitution/scene_run.hpp"
+
+namespace restitution::cli {
+
+// A table as named columns of numbers (NaN where a value does not exist).
+struct Table {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  [[nodiscard]] std::string csv() const;
+  [[nodiscard]] std::size_t column(const std::string& name) const;  // index; throws if absent
+};
+
+// Suffix of an end in column names: "naive" | "delayed_recovery".
+const char* end_column(CollisionEnd end);
+
+// index: of the task in the scene (Scene::sweeps, ::trajectories, ::dashpots).
+Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results, std::size_t index);
+Table trajectory_table(const scene::SceneResults& results, std::size_t index);
+Table dashpot_table(const scene::Scene& scene, const scene::SceneResults& results, std::size_t index);
+
+}  // namespace restitution::cli

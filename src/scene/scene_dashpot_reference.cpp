@@ -1,0 +1,36 @@
+#include "restitution/scene_dashpot_reference.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "restitution/errors.hpp"
+
+namespace restitution::scene {
+
+double dashpot_naive_duration(double r) {
+  if (!(r > 0.0 && r < 1.0)) {
+    throw InvalidInput(fmt::format("damping-ratio {} has no naive end (x never returns to 0 for r >= 1)", r));
+  }
+  return M_PI / std::sqrt(1.0 - r * r);
+}
+
+double dashpot_delayed_duration(double r) {
+  if (!(r > 0.0) || !std::isfinite(r))
+    throw InvalidInput(fmt::format("damping-ratio must be > 0, got {}", r));
+  if (r < 1.0) {
+    const double w = std::sqrt(1.0 - r * r);
+    return std::atan2(2.0 * r * w, 2.0 * r * r - 1.0) / w;  // the branch in (0, π)
+  }
+  if (r > 1.0) {
+    const double w = std::sqrt(r * r - 1.0);
+    return std::atanh(2.0 * r * w / (2.0 * r * r - 1.0)) / w;
+  }
+  return 2.0;
+}
+
+double dashpot_eps(double r, double duration) {
+  return std::exp(-r * duration);
+}
+
+}  // namespace restitution::scene

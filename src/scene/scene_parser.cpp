@@ -1,0 +1,349 @@
+// The scene file -> Scene values. Only this file (with toml_reader) knows TOML.
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "restitution/errors.hpp"
+#include "restitution/scene.hpp"
+#include "scene/toml_reader.hpp"
+
+namespace restitution::scene {
+namespace {
+
+using detail::TomlReader;
+
+constexpr double kLargestZeta = 1e4;  // the solver's validated range
+
+bool is_name(const std::string& s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '-' || c == '_';
+  });
+}
+
+EndSelection read_ends(TomlReader& r, EndSelection fallback = {}) {
+  const auto words = r.words("ends");
+  if (!words) return fallback;
+  EndSelection ends{false, false};
+  for (const std::string& w : *words) {
+    if (w == "naive" || w == "both") ends.naive = true;
+    if (w == "delayed-recovery" || w == "both") ends.delayed_recovery = true;
+    if (w != "naive" && w != "delayed-recovery" && w != "both") {
+      r.fail("ends", fmt::format(R"(expected "naive", "delayed-recovery" or "both", got "{}")", w));
+    }
+  }
+  if (!ends.naive && !ends.delayed_recovery) r.fail("ends", "no end requested");
+  return ends;
+}
+
+CollisionEnd read_end(TomlReader& r) {
+  const std::string w = r.text("end").value_or("delayed-recovery");
+  if (w == "naive") return CollisionEnd::naive;
+  if (w != "delayed-recovery")
+    r.fail("end", fmt::format(R"(expected "naive" or "delayed-recovery", got "{}")", w));
+  return CollisionEnd::delayed_recovery;
+}
+
+Material read_material(TomlReader& r) {
+  Material m;
+  const auto young = r.number("young_modulus");
+  const auto nu = r.number("poisson_ratio");
+  if (!young) r.fail("young_modulus", "missing (Pa)");
+  if (!nu) r.fail("poisson_ratio", "missing");
+  m.young_modulus_pa = *young;
+  m.poisson_ratio = *nu;
+  const auto radius = r.number("radius");
+  const auto radii = r.numbers("radii");
+  if (radius.has_value() == radii.has_value())
+    r.fail("radius", "give radius (both spheres) or radii = [R1, R2]");
+  if (radii && radii->size() != 2) r.fail("radii", "expected [R1, R2] in m");
+  m.radius1_m = radius ? *radius : (*radii)[0];
+  m.radius2_m = radius ? *radius : (*radii)[1];
+  m.density_kg_m3 = r.number("density");
+  const auto mass = r.number("mass");
+  const auto masses = r.numbers("masses");
+  if (mass && masses) r.fail("mass", "give mass or masses, not both");
+  if (masses && masses->size() != 2) r.fail("masses", "expected [m1, m2] in kg");
+  if (mass) m.mass1_kg = m.mass2_kg = *mass;
+  if (masses) {
+    m.mass1_kg = (*masses)[0];
+    m.mass2_kg = (*masses)[1];
+  }
+  m.dissipative_constant_s = r.number("dissipative_constant");
+  if (const auto eta = r.numbers("viscosities")) {
+    if (eta->size() != 2) r.fail("viscosities", "expected [eta1, eta2] in Pa s");
+    m.viscosities = Viscosities{(*eta)[0], (*eta)[1]};
+  }
+  r.finish();
+  try {
+    (void)material_constants(m);
+  } catch (const InvalidInput& e) {
+    r.fail("", e.what());
+  }
+  return m;
+}
+
+class Parser {
+ public:
+  Parser(const toml::table& root, std::string_view file_name) : root_(root, "", file_name) {}
+
+  Scene parse() {
+    scene_.file_name = std::string(root_.file_name());
+    scene_.title = root_.text("title").value_or("");
+    scene_.description = root_.text("description").value_or("");
+    const auto output = root_.text("output");
+    if (!output || output->empty()) root_.fail("output", "missing: the folder to write to");
+    scene_.output = *output;
+    scene_.tolerance = root_.number("tolerance").value_or(1e-10);
+    if (scene_.tolerance < kMinTolerance || scene_.tolerance > kMaxTolerance) {
+      root_.fail("tolerance", fmt::format("expected a value in [{:g}, {:g}]", kMinTolerance, kMaxTolerance));
+    }
+    const std::string method = root_.text("method").value_or("auto");
+    if (method != "bdf" && method != "adams" && method != "auto") {
+      root_.fail("method", R"(expected "bdf", "adams" or "auto")");
+    }
+    scene_.method = method == "bdf" ? Method::bdf : method == "adams" ? Method::adams : Method::automatic;
+    if (const toml::table* materials = root_.table("materials")) {
+      for (const auto& [key, node] : *materials) {
+        const std::string path = root_.child_path("materials") + "." + std::string(key.str());
+        const auto* t = node.as_table();
+        if (t == nullptr)
+          TomlReader(*materials, "materials", root_.file_name()).fail(key.str(), "expected a table");
+        TomlReader r(*t, path, root_.file_name());
+        scene_.materials.emplace(std::string(key.str()), read_material(r));
+      }
+    }
+    each("sweep", [this](TomlReader& r) { scene_.sweeps.push_back(read_sweep(r)); });
+    each("trajectory", [this](TomlReader& r) { scene_.trajectories.push_back(read_trajectory(r)); });
+    each("calibration", [this](TomlReader& r) { scene_.calibrations.push_back(read_calibration(r)); });
+    each("dashpot", [this](TomlReader& r) { scene_.dashpots.push_back(read_dashpot(r)); });
+    for (const char* kind : {"work_precision", "stability"}) {
+      each(kind, [this, kind](TomlReader& r) { scene_.studies.push_back(read_study(r, kind)); });
+    }
+    root_.finish();
+    return std::move(scene_);
+  }
+
+ private:
+  template <typename F>
+  void each(const char* key, F&& read) {
+    const toml::array* list = root_.array_of_tables(key);
+    if (list == nullptr) return;
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      TomlReader r(*list->get(i)->as_table(), fmt::format("{}[{}]", key, i), root_.file_name());
+      read(r);
+      r.finish();
+    }
+  }
+
+  std::string read_name(TomlReader& r, const char* kind) {
+    std::string name = r.text("name").value_or(fmt::format("{}{}", kind, ++unnamed_));
+    if (!is_name(name)) r.fail("name", "use letters, digits, '-' and '_' only (it names output files)");
+    if (!names_.insert(name).second) r.fail("name", fmt::format("\"{}\" is used twice", name));
+    return name;
+  }
+
+  // The keys every plotted task has: name, title, ends; and where it starts.
+  template <typename Task>
+  void read_heading(TomlReader& r, const char* kind, Task& task) {
+    task.line = r.line();
+    task.name = read_name(r, kind);
+    task.title = r.text("title").value_or(task.name);
+    task.ends = read_ends(r);
+  }
+
+  std::optional<std::string> read_material_name(TomlReader& r) const {
+    auto name = r.text("material");
+    if (name && !scene_.materials.contains(*name)) {
+      r.fail("material", fmt::format("no [materials.{}] in this scene", *name));
+    }
+    return name;
+  }
+
+  static void check_zeta(TomlReader& r, const std::vector<double>& zeta) {
+    r.check_each(
+        "zeta", zeta, [](double z) { return z >= 0.0 && z <= kLargestZeta; }, "0 <= zeta <= 1e4");
+  }
+  static void check_positive(TomlReader& r, const char* key, const std::vector<double>& values) {
+    r.check_each(
+        key, values, [](double v) { return v > 0.0; }, "a value > 0");
+  }
+
+  Sweep read_sweep(TomlReader& r) {
+    Sweep s;
+    read_heading(r, "sweep", s);
+    if (const auto q = r.words("quantities")) {
+      s.quantities = {false, false, false, false};
+      for (const std::string& w : *q) {
+        if (w == "eps")
+          s.quantities.eps = true;
+        else if (w == "one_minus_eps")
+          s.quantities.one_minus_eps = true;
+        else if (w == "duration")
+          s.quantities.duration = true;
+        else if (w == "max_compression")
+          s.quantities.max_compression = true;
+        else
+          r.fail("quantities",
+                 fmt::format("unknown quantity \"{}\" (eps, one_minus_eps, duration, max_compression)", w));
+      }
+    }
+    const auto zeta = r.numbers("zeta");
+    const auto velocity = r.numbers("velocity");
+    s.beta = r.number("beta");
+    s.material = read_material_name(r);
+    s.characteristic_velocity_m_s = r.number("characteristic_velocity");
+    const int subjects = static_cast<int>(s.beta.has_value()) + static_cast<int>(s.material.has_value()) +
+                         static_cast<int>(s.characteristic_velocity_m_s.has_value());
+    if (zeta) {
+      if (velocity || subjects > 0)
+        r.fail("zeta", "give zeta alone, or velocity with one of beta, material, characteristic_velocity");
+      check_zeta(r, *zeta);
+      s.zeta = *zeta;
+    } else {
+      if (!velocity) r.fail("", "give zeta, or velocity with one of beta, material, characteristic_velocity");
+      if (subjects != 1) r.fail("velocity", "needs exactly one of beta, material, characteristic_velocity");
+      check_positive(r, "velocity", *velocity);
+      s.velocity_m_s = *velocity;
+      if (s.beta && *s.beta < 0.0) r.fail("beta", "expected a value >= 0");
+      if (s.characteristic_velocity_m_s && *s.characteristic_velocity_m_s <= 0.0) {
+        r.fail("characteristic_velocity", "expected a value > 0 (m/s)");
+      }
+    }
+    s.compare_series = r.flag("compare_series").value_or(false);
+    if (const toml::table* e = r.table("empirical")) {
+      TomlReader er(*e, r.child_path("empirical"), r.file_name());
+      EmpiricalLaw law;
+      law.coefficient = er.number("coefficient").value_or(0.0);
+      law.exponent = er.number("exponent").value_or(0.0);
+      law.velocity_unit_m_s = er.number("velocity_unit").value_or(1.0);
+      er.finish();
+      if (law.coefficient <= 0.0) er.fail("coefficient", "expected a value > 0");
+      if (law.velocity_unit_m_s <= 0.0) er.fail("velocity_unit", "expected a value > 0 (m/s)");
+      if (s.velocity_m_s.empty()) r.fail("empirical", "needs a sweep over velocity");
+      s.empirical = law;
+    }
+    if (const toml::table* f = r.table("fit")) {
+      TomlReader fr(*f, r.child_path("fit"), r.file_name());
+      PowerLawFitRequest fit;
+      fit.zeta_min = fr.number("zeta_min").value_or(0.0);
+      fr.finish();
+      if (fit.zeta_min <= 0.0) fr.fail("zeta_min", "expected a value > 0");
+      s.fit = fit;
+    }
+    const std::string axes = r.text("axes").value_or("linear");
+    if (axes == "linear")
+      s.axes = Axes::linear;
+    else if (axes == "log-log")
+      s.axes = Axes::log_log;
+    else if (axes == "log-x")
+      s.axes = Axes::log_x;
+    else
+      r.fail("axes", R"(expected "linear", "log-x" or "log-log")");
+    return s;
+  }
+
+  Trajectory read_trajectory(TomlReader& r) {
+    Trajectory t;
+    read_heading(r, "trajectory", t);
+    t.zeta = r.number("zeta");
+    t.velocity_m_s = r.number("velocity");
+    t.beta = r.number("beta");
+    t.material = read_material_name(r);
+    if (t.zeta) {
+      if (t.velocity_m_s || t.beta || t.material)
+        r.fail("zeta", "give zeta alone, or velocity with beta or material");
+      check_zeta(r, {*t.zeta});
+    } else {
+      if (!t.velocity_m_s) r.fail("", "give zeta, or velocity with beta or material");
+      if (t.beta.has_value() == t.material.has_value())
+        r.fail("velocity", "needs exactly one of beta, material");
+      check_positive(r, "velocity", {*t.velocity_m_s});
+      if (t.beta && *t.beta < 0.0) r.fail("beta", "expected a value >= 0");
+    }
+    return t;
+  }
+
+  CalibrationTask read_calibration(TomlReader& r) {
+    CalibrationTask c;
+    c.line = r.line();
+    c.name = read_name(r, "calibration");
+    const auto eps = r.number("eps");
+    const auto velocity = r.number("velocity");
+    if (!eps) r.fail("eps", "missing");
+    if (!velocity) r.fail("velocity", "missing (m/s)");
+    if (*eps <= 0.0 || *eps >= 1.0) r.fail("eps", fmt::format("expected a value in (0, 1), got {}", *eps));
+    check_positive(r, "velocity", {*velocity});
+    c.eps = *eps;
+    c.velocity_m_s = *velocity;
+    c.end = read_end(r);
+    c.material = read_material_name(r);
+    return c;
+  }
+
+  DashpotCheck read_dashpot(TomlReader& r) {
+    DashpotCheck d;
+    read_heading(r, "dashpot", d);
+    const auto ratios = r.numbers("damping_ratio");
+    if (!ratios) r.fail("damping_ratio", "missing");
+    check_positive(r, "damping_ratio", *ratios);
+    d.damping_ratio = *ratios;
+    return d;
+  }
+
+  ExternalStudy read_study(TomlReader& r, const char* kind) {
+    ExternalStudy s;
+    s.kind = kind;
+    s.line = r.line();
+    s.name = read_name(r, kind);
+    if (const auto zeta = r.numbers("zeta")) {
+      check_zeta(r, *zeta);
+      s.zeta = *zeta;
+    }
+    return s;
+  }
+
+  TomlReader root_;
+  Scene scene_;
+  std::set<std::string> names_;
+  int unnamed_ = 0;
+};
+
+}  // namespace
+
+Scene parse_scene(std::string_view toml_text, std::string_view file_name) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, file_name);
+  } catch (const toml::parse_error& e) {
+    throw InvalidInput(fmt::format("{}:{}: {}", file_name, e.source().begin.line, e.description()));
+  }
+  return Parser(root, file_name).parse();
+}
+
+Scene load_scene(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InvalidInput(fmt::format("cannot read scene file '{}'", path.string()));
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parse_scene(buffer.str(), path.string());
+}
+
+void make_quick(Scene& scene, std::size_t points) {
+  auto thin = [points](std::vector<double>& values) {
+    if (points < 2 || values.size() <= points) return;
+    std::vector<double> kept;
+    for (std::size_t i = 0; i < points; ++i) kept.push_back(values[i * (values.size() - 1) / (points - 1)]);
+    values = kept;
+  };
+  for (Sweep& s : scene.sweeps) {
+    thin(s.zeta);
+    thin(s.velocity_m_s);
+  }
+  for (DashpotCheck& d : scene.dashpots) thin(d.damping_ratio);
+  for (ExternalStudy& s : scene.studies) thin(s.zeta);
+}
+
+}  // namespace restitution::scene

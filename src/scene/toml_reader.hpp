@@ -1,0 +1,56 @@
+#pragma once
+// Strict reading of one TOML table for the scene parser: every read marks its key as used, finish() rejects
+// the keys nobody read, and every error names the file, the line and the key (toml++ source positions).
+#include <functional>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#define TOML_ENABLE_FORMATTERS 0
+#include <toml++/toml.h>
+
+namespace restitution::scene::detail {
+
+class TomlReader {
+ public:
+  // path: how the table is named in messages ("" for the root, "sweep[2]", "materials.rubber").
+  TomlReader(const toml::table& table, std::string path, std::string_view file_name);
+
+  [[nodiscard]] int line() const;
+  [[nodiscard]] int line_of(std::string_view key) const;
+  [[nodiscard]] bool has(std::string_view key) const;
+  // Marks the key as read and returns its node (nullptr when absent).
+  const toml::node* take(std::string_view key);
+
+  std::optional<double> number(std::string_view key);
+  std::optional<std::string> text(std::string_view key);
+  std::optional<bool> flag(std::string_view key);
+  // A list of numbers, or a range { from, to, points, spacing = "linear" | "log" }.
+  std::optional<std::vector<double>> numbers(std::string_view key);
+  // One string or a list of strings.
+  std::optional<std::vector<std::string>> words(std::string_view key);
+  const toml::table* table(std::string_view key);
+  const toml::array* array_of_tables(std::string_view key);
+
+  // Throws InvalidInput "file:line: path.key: message" at the key's line (the table's when absent).
+  [[noreturn]] void fail(std::string_view key, std::string_view message) const;
+  // Checks each value with `valid`; on failure names the key and what was expected.
+  void check_each(std::string_view key, const std::vector<double>& values,
+                  const std::function<bool(double)>& valid, std::string_view expected) const;
+  // Rejects every key that was not read.
+  void finish() const;
+
+  [[nodiscard]] std::string child_path(std::string_view key) const;
+  [[nodiscard]] std::string_view file_name() const { return file_name_; }
+
+ private:
+  [[noreturn]] void fail_at(int line, std::string_view key, std::string_view message) const;
+  const toml::table& table_;
+  std::string path_;
+  std::string file_name_;
+  std::set<std::string, std::less<>> used_;
+};
+
+}  // namespace restitution::scene::detail

@@ -1,0 +1,85 @@
+#include "restitution/calibration.hpp"
+
+#include <fmt/core.h>
+
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <cstdint>
+
+#include "restitution/errors.hpp"
+
+namespace restitution {
+namespace {
+
+constexpr double kLargestZeta = 1e4;  // the solver's validated range (README, Accuracy)
+
+// log ε at the requested end, from 1 - ε so that it keeps its relative accuracy as ε -> 1.
+double log_eps(double zeta, CollisionEnd end, SolveOptions options, CollisionSolver& solver) {
+  options.ends = selection_of(end);
+  options.keep_trajectory = false;
+  const CollisionResult r = solver.solve(ContactLaw::hertz_natural(zeta), options);
+  const EndResult& e = end_of(r, end);
+  return std::log1p(-e.one_minus_eps);
+}
+
+}  // namespace
+
+double zeta_for_eps(double eps, CollisionEnd end, const SolveOptions& options, CollisionSolver& solver,
+                    int* solves) {
+  if (!std::isfinite(eps) || eps <= 0.0 || eps >= 1.0) {
+    throw InvalidInput(fmt::format("eps must be in (0, 1), got {}", eps));
+  }
+  int count = 0;
+  const double target = std::log(eps);
+  auto f = [&](double zeta) {
+    if (zeta == 0.0) return -target;  // ε(0) = 1 exactly
+    ++count;
+    return log_eps(zeta, end, options, solver) - target;
+  };
+  // Bracket: f(0) > 0; widen upwards until ε drops below the target.
+  double lo = 0.0;
+  double hi = 0.25;
+  double f_lo = f(lo);
+  double f_hi = f(hi);
+  while (f_hi > 0.0) {
+    if (hi >= kLargestZeta) {
+      throw InvalidInput(
+          fmt::format("eps = {} is below eps(zeta = {:g}) = {:.6g} at the {} end: outside the "
+                      "solver's range",
+                      eps, kLargestZeta, std::exp(f_hi + target), end_name(end)));
+    }
+    lo = hi;
+    f_lo = f_hi;
+    hi = std::min(4.0 * hi, kLargestZeta);
+    f_hi = f(hi);
+  }
+  if (f_hi == 0.0) return hi;
+  // Each ε carries a relative error of about the tolerance; asking ζ for more digits than that is noise.
+  const int bits = std::min(50, static_cast<int>(std::ceil(-std::log2(options.tolerance))) + 4);
+  std::uintmax_t iterations = 200;
+  const auto [a, b] = boost::math::tools::toms748_solve(
+      f, lo, hi, f_lo, f_hi, boost::math::tools::eps_tolerance<double>(bits), iterations);
+  if (solves != nullptr) *solves += count;
+  return 0.5 * (a + b);
+}
+
+Calibration calibrate(const CalibrationRequest& request, CollisionSolver& solver) {
+  if (!std::isfinite(request.velocity_m_s) || request.velocity_m_s <= 0.0) {
+    throw InvalidInput(fmt::format("velocity must be finite and > 0, got {}", request.velocity_m_s));
+  }
+  SolveOptions options;
+  options.tolerance = request.tolerance;
+  options.method = request.method;
+  Calibration c;
+  c.zeta = zeta_for_eps(request.eps, request.end, options, solver, &c.solves);
+  c.beta = beta_from(c.zeta, request.velocity_m_s);
+  c.eps_at_zeta = std::exp(log_eps(c.zeta, request.end, options, solver));
+  ++c.solves;
+  c.characteristic_velocity_m_s = characteristic_velocity_m_s(c.beta);
+  if (request.k) {
+    c.dissipative_constant_s = dissipative_constant_from(c.beta, *request.k);
+  }
+  return c;
+}
+
+}  // namespace restitution

@@ -1,0 +1,71 @@
+#include "restitution/units.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "restitution/errors.hpp"
+
+namespace restitution {
+namespace {
+
+double positive(double value, const char* name) {
+  if (!std::isfinite(value) || value <= 0.0) {
+    throw InvalidInput(fmt::format("{} must be finite and > 0, got {}", name, value));
+  }
+  return value;
+}
+
+double nonnegative(double value, const char* name) {
+  if (!std::isfinite(value) || value < 0.0) {
+    throw InvalidInput(fmt::format("{} must be finite and >= 0, got {}", name, value));
+  }
+  return value;
+}
+
+}  // namespace
+
+HertzConstants hertz_constants(double k, double dissipative_constant_s) {
+  positive(k, "k");
+  nonnegative(dissipative_constant_s, "dissipative_constant");
+  HertzConstants c;
+  c.k = k;
+  c.gamma = 1.5 * dissipative_constant_s * k;
+  c.beta = c.gamma * std::pow(k, -0.6);
+  return c;
+}
+
+double zeta_from(double beta, double velocity_m_s) {
+  return nonnegative(beta, "beta") * std::pow(positive(velocity_m_s, "velocity"), 0.2);
+}
+
+double beta_from(double zeta, double velocity_m_s) {
+  return nonnegative(zeta, "zeta") / std::pow(positive(velocity_m_s, "velocity"), 0.2);
+}
+
+double dissipative_constant_from(double beta, double k) {
+  return nonnegative(beta, "beta") / (1.5 * std::pow(positive(k, "k"), 0.4));
+}
+
+NaturalScales natural_scales(double k, double velocity_m_s) {
+  positive(k, "k");
+  positive(velocity_m_s, "velocity");
+  NaturalScales s;
+  s.length_m = std::pow(velocity_m_s * velocity_m_s / k, 0.4);
+  s.time_s = s.length_m / velocity_m_s;
+  return s;
+}
+
+double c1_closed_form() {
+  return std::sqrt(M_PI) / (std::pow(2.0, 0.2) * std::pow(5.0, 0.4)) * std::tgamma(0.6) / std::tgamma(2.1);
+}
+
+double characteristic_velocity_m_s(double beta) {
+  return std::pow(c1_closed_form() * positive(beta, "beta"), -5.0);
+}
+
+double beta_from_characteristic_velocity(double characteristic_velocity_m_s) {
+  return std::pow(positive(characteristic_velocity_m_s, "characteristic_velocity"), -0.2) / c1_closed_form();
+}
+
+}  // namespace restitution

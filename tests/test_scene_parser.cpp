@@ -1,0 +1,160 @@
+// The scene parser alone: what it accepts, and that every rejection names the file, the line and the key.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cli_runner.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/scene.hpp"
+#include "restitution/scene_plan.hpp"
+
+namespace restitution::scene {
+namespace {
+
+std::string error_of(const std::string& text) {
+  try {
+    (void)parse_scene(text, "test.toml");
+  } catch (const InvalidInput& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(SceneParser, ReadsEverySection) {
+  const Scene s = parse_scene(R"(
+title = "t"
+output = "out/x"
+tolerance = 1e-8
+method = "bdf"
+[materials.rubber]
+young_modulus = 1e7
+poisson_ratio = 0.45
+density = 1100
+radius = 0.01
+dissipative_constant = 5.8e-5
+[[sweep]]
+name = "a"
+zeta = { from = 0, to = 1, points = 5 }
+ends = "delayed-recovery"
+quantities = ["eps"]
+[[sweep]]
+name = "b"
+material = "rubber"
+velocity = { from = 0.1, to = 10, points = 3, spacing = "log" }
+axes = "log-log"
+[[trajectory]]
+zeta = 2
+[[calibration]]
+eps = 0.8
+velocity = 1
+material = "rubber"
+[[dashpot]]
+damping_ratio = [0.5, 2]
+[[stability]]
+zeta = [1, 10]
+)",
+                              "test.toml");
+  EXPECT_EQ(s.output, "out/x");
+  EXPECT_EQ(s.tolerance, 1e-8);
+  EXPECT_EQ(s.method, Method::bdf);
+  ASSERT_EQ(s.sweeps.size(), 2U);
+  EXPECT_EQ(s.sweeps[0].zeta, (std::vector<double>{0, 0.25, 0.5, 0.75, 1}));
+  EXPECT_FALSE(s.sweeps[0].ends.naive);
+  EXPECT_FALSE(s.sweeps[0].quantities.duration);
+  EXPECT_NEAR(s.sweeps[1].velocity_m_s[1], 1.0, 1e-15);
+  EXPECT_EQ(s.sweeps[1].velocity_m_s[2], 10.0);
+  EXPECT_EQ(s.sweeps[1].axes, Axes::log_log);
+  ASSERT_EQ(s.trajectories.size(), 1U);
+  EXPECT_EQ(*s.trajectories[0].zeta, 2.0);
+  EXPECT_EQ(s.calibrations[0].end, CollisionEnd::delayed_recovery);
+  EXPECT_EQ(s.dashpots[0].damping_ratio.size(), 2U);
+  EXPECT_EQ(s.studies[0].kind, "stability");
+}
+
+TEST(SceneParser, UnknownKeysNameFileLineAndKey) {
+  EXPECT_EQ(error_of("output = \"o\"\n\n[[sweep]]\nzeta = 1\nzetta = 2\n"),
+            "test.toml:5: sweep[0].zetta: unknown key");
+  EXPECT_EQ(error_of("output = \"o\"\ncolour = 1\n"), "test.toml:2: colour: unknown key");
+  EXPECT_EQ(error_of("output = \"o\"\n[[sweep]]\nzeta = {from = 0, to = 1, points = 3, step = 1}\n"),
+            "test.toml:3: sweep[0].zeta.step: unknown key");
+}
+
+TEST(SceneParser, WrongTypesAndRangesNameTheKey) {
+  EXPECT_EQ(error_of("output = \"o\"\ntolerance = \"tight\"\n"), "test.toml:2: tolerance: expected a number");
+  EXPECT_EQ(error_of("output = \"o\"\ntolerance = 1.0\n"),
+            "test.toml:2: tolerance: expected a value in [1e-11, 0.01]");
+  EXPECT_EQ(error_of("output = \"o\"\n[[sweep]]\nzeta = [0.1, -1]\n"),
+            "test.toml:3: sweep[0].zeta: expected 0 <= zeta <= 1e4, got -1");
+  EXPECT_EQ(
+      error_of("output = \"o\"\n[[sweep]]\nzeta = 1\nends = \"middle\"\n"),
+      "test.toml:4: sweep[0].ends: expected \"naive\", \"delayed-recovery\" or \"both\", got \"middle\"");
+  EXPECT_EQ(error_of("output = \"o\"\n[[sweep]]\nzeta = {from = 0, to = 1, points = 2.5}\n"),
+            "test.toml:3: sweep[0].zeta.points: expected a whole number in [1, 1000000]");
+  EXPECT_EQ(error_of("output = \"o\"\n[[sweep]]\nzeta = {from = 0, to = 1, points = 3, spacing = \"log\"}\n"),
+            "test.toml:3: sweep[0].zeta.from: must be > 0 for spacing = \"log\"");
+  EXPECT_EQ(error_of("output = \"o\"\n[[calibration]]\neps = 1.2\nvelocity = 1\n"),
+            "test.toml:3: calibration[0].eps: expected a value in (0, 1), got 1.2");
+  EXPECT_EQ(
+      error_of("output = \"o\"\n[[dashpot]]\ndamping_ratio = true\n"),
+      "test.toml:3: dashpot[0].damping_ratio: expected a number, a list of numbers or a range { from, to, "
+      "points, spacing }");
+}
+
+TEST(SceneParser, MaterialErrorsNameTheMaterialAndTheKey) {
+  const std::string e = error_of(
+      "output = \"o\"\n[materials.glass]\nyoung_modulus = 6e10\npoisson_ratio = 0.7\ndensity = 2500\nradius "
+      "= "
+      "0.01\ndissipative_constant = 1e-9\n");
+  EXPECT_NE(e.find("test.toml:2: materials.glass: "), std::string::npos) << e;
+  EXPECT_NE(e.find("poisson_ratio must be in (-1, 0.5)"), std::string::npos) << e;
+  EXPECT_NE(error_of("output = \"o\"\n[[sweep]]\nmaterial = \"steel\"\nvelocity = 1\n")
+                .find("test.toml:3: sweep[0].material: no [materials.steel]"),
+            std::string::npos);
+}
+
+TEST(SceneParser, SubjectsMustBeUnambiguous) {
+  EXPECT_NE(error_of("output = \"o\"\n[[sweep]]\nzeta = 1\nbeta = 0.2\n").find("give zeta alone"),
+            std::string::npos);
+  EXPECT_NE(error_of("output = \"o\"\n[[sweep]]\nvelocity = 1\n").find("needs exactly one of"),
+            std::string::npos);
+  EXPECT_NE(error_of("output = \"o\"\n[[sweep]]\n").find("test.toml:2: sweep[0]: give zeta"),
+            std::string::npos);
+  EXPECT_NE(
+      error_of("output = \"o\"\n[[sweep]]\nname = \"a\"\nzeta = 1\n[[trajectory]]\nname = \"a\"\nzeta = 1\n")
+          .find("test.toml:6: trajectory[0].name: \"a\" is used twice"),
+      std::string::npos);
+  EXPECT_NE(error_of("title = \"no output\"\n").find("output: missing"), std::string::npos);
+}
+
+TEST(SceneParser, SyntaxErrorsCarryTheLine) {
+  const std::string e = error_of("output = \"o\"\n\n[[sweep]\n");
+  EXPECT_EQ(e.rfind("test.toml:3: ", 0), 0U) << e;
+}
+
+TEST(SceneParser, QuickSettingsKeepTheEndsOfEveryRange) {
+  Scene s = parse_scene("output = \"o\"\n[[sweep]]\nzeta = {from = 0, to = 10, points = 101}\n", "t.toml");
+  make_quick(s, 4);
+  EXPECT_EQ(s.sweeps[0].zeta, (std::vector<double>{0.0, s.sweeps[0].zeta[1], s.sweeps[0].zeta[2], 10.0}));
+}
+
+}  // namespace
+}  // namespace restitution::scene
+
+namespace restitution::scene {
+namespace {
+
+TEST(SceneParser, TheReadmeExampleIsAValidScene) {
+  const std::string readme = restitution::test_support::slurp(RESTITUTION_SOURCE_DIR "/README.md");
+  const std::size_t start = readme.find("```toml\n");
+  ASSERT_NE(start, std::string::npos);
+  const std::size_t end = readme.find("```", start + 8);
+  const Scene s = parse_scene(readme.substr(start + 8, end - start - 8), "README.md");
+  EXPECT_EQ(s.sweeps.size(), 1U);
+  EXPECT_EQ(s.trajectories.size(), 1U);
+  EXPECT_EQ(s.calibrations.size(), 1U);
+  EXPECT_EQ(s.dashpots.size(), 1U);
+  EXPECT_NO_THROW((void)plan_scene(s));
+}
+
+}  // namespace
+}  // namespace restitution::scene

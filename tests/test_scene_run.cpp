@@ -1,0 +1,113 @@
+// Planning and running scenes: the work follows from what is asked. Checked through the solver statistics
+// against direct solves: one solve per distinct collision, no naive tail unless asked, no trajectory unless
+// asked; physical points use ζ = β v^{1/5}.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "restitution/errors.hpp"
+#include "restitution/scene.hpp"
+#include "restitution/scene_plan.hpp"
+#include "restitution/scene_run.hpp"
+#include "restitution/units.hpp"
+
+namespace restitution::scene {
+namespace {
+
+CollisionResult direct(double zeta, EndSelection ends, bool trajectory) {
+  CollisionSolver solver;
+  SolveOptions o;
+  o.ends = ends;
+  o.keep_trajectory = trajectory;
+  return solver.solve(ContactLaw::hertz_natural(zeta), o);
+}
+
+void expect_same_stats(const SolverStats& a, const SolverStats& b) {
+  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_EQ(a.rhs_evaluations, b.rhs_evaluations);
+  EXPECT_EQ(a.root_evaluations, b.root_evaluations);
+}
+
+TEST(SceneRun, DelayedRecoveryOnlyNeverIntegratesTheNaiveTail) {
+  const Scene s =
+      parse_scene("output = \"o\"\n[[sweep]]\nzeta = [0.5, 3]\nends = \"delayed-recovery\"\n", "t");
+  const SceneResults r = run_scene(s);
+  ASSERT_EQ(r.solved.size(), 2U);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double zeta = s.sweeps[0].zeta[i];
+    EXPECT_FALSE(r.solved[i].naive.has_value());
+    ASSERT_TRUE(r.solved[i].delayed_recovery.has_value());
+    EXPECT_TRUE(r.solved[i].trajectory.empty());
+    expect_same_stats(r.solved[i].stats, direct(zeta, {false, true}, false).stats);
+    // Going on to the naive end costs more steps: the scene did not pay for them.
+    EXPECT_LT(r.solved[i].stats.steps, direct(zeta, {true, true}, false).stats.steps);
+  }
+}
+
+TEST(SceneRun, OneSolveIsSharedByEveryOutputThatNeedsIt) {
+  const Scene s = parse_scene(
+      "output = \"o\"\n[[sweep]]\nname = \"a\"\nzeta = [0.5, 1]\nends = \"naive\"\n"
+      "[[sweep]]\nname = \"b\"\nzeta = [1]\nends = \"delayed-recovery\"\n"
+      "[[trajectory]]\nzeta = 0.5\nends = \"delayed-recovery\"\n",
+      "t");
+  const SceneResults r = run_scene(s);
+  ASSERT_EQ(r.plan.jobs.size(), 2U);  // ζ = 0.5 and ζ = 1, each once
+  EXPECT_EQ(r.plan.sweeps[1][0].job, r.plan.sweeps[0][1].job);
+  EXPECT_EQ(r.plan.trajectories[0].job, r.plan.sweeps[0][0].job);
+  const CollisionResult& half = r.solved[r.plan.sweeps[0][0].job];
+  expect_same_stats(half.stats, direct(0.5, {true, true}, true).stats);
+  EXPECT_FALSE(half.trajectory.empty());
+  const CollisionResult& one = r.solved[r.plan.sweeps[0][1].job];
+  expect_same_stats(one.stats, direct(1.0, {true, true}, false).stats);
+  EXPECT_TRUE(one.trajectory.empty());
+  SolverStats sum = half.stats;
+  sum.steps += one.stats.steps;
+  EXPECT_EQ(r.total.steps, sum.steps);
+  EXPECT_EQ(r.collisions, 2U);
+}
+
+TEST(SceneRun, PhysicalSweepsUseZetaFromBetaAndVelocity) {
+  const Scene s = parse_scene(
+      "output = \"o\"\n[[sweep]]\nbeta = 0.2\nvelocity = [1, 32]\n"
+      "[[sweep]]\ncharacteristic_velocity = 0.0032\nvelocity = [0.01]\nends = \"naive\"\n",
+      "t");
+  const Plan p = plan_scene(s);
+  EXPECT_DOUBLE_EQ(p.sweeps[0][0].parameter, 0.2);
+  EXPECT_NEAR(p.sweeps[0][1].parameter, 0.4, 1e-15);
+  // 1999 paper: (g/g*)^{1/5} = C1 ζ.
+  EXPECT_NEAR(c1_closed_form() * p.sweeps[1][0].parameter, std::pow(0.01 / 0.0032, 0.2), 1e-14);
+  const Scene far = parse_scene("output = \"o\"\n[[sweep]]\nbeta = 100\nvelocity = [1e12]\n", "t");
+  EXPECT_THROW((void)plan_scene(far), InvalidInput);
+}
+
+TEST(SceneRun, DashpotPointsWithoutANaiveEndAreNotIntegratedForIt) {
+  const Scene s =
+      parse_scene("output = \"o\"\n[[dashpot]]\ndamping_ratio = [0.5, 2]\nends = \"naive\"\n", "t");
+  const SceneResults r = run_scene(s);
+  EXPECT_EQ(r.plan.jobs.size(), 1U);
+  EXPECT_EQ(r.plan.dashpots[0][1].job, kNoJob);
+  EXPECT_EQ(result_of(r, r.plan.dashpots[0][1]), nullptr);
+}
+
+TEST(SceneRun, ResultsDoNotDependOnTheNumberOfThreads) {
+  const Scene s = parse_scene("output = \"o\"\n[[sweep]]\nzeta = {from = 0.1, to = 50, points = 12}\n", "t");
+  RunSettings one;
+  one.threads = 1;
+  RunSettings three;
+  three.threads = 3;
+  std::size_t calls = 0;
+  three.progress = [&calls](std::size_t done, std::size_t total) {
+    ++calls;
+    EXPECT_LE(done, total);
+  };
+  const SceneResults a = run_scene(s, one);
+  const SceneResults b = run_scene(s, three);
+  EXPECT_EQ(calls, 12U);
+  for (std::size_t i = 0; i < a.solved.size(); ++i) {
+    EXPECT_EQ(a.solved[i].naive->eps, b.solved[i].naive->eps);
+    EXPECT_EQ(a.solved[i].delayed_recovery->eps, b.solved[i].delayed_recovery->eps);
+  }
+}
+
+}  // namespace
+}  // namespace restitution::scene
