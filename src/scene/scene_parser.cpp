@@ -324,6 +324,10 @@ Scene parse_scene(std::string_view toml_text, std::string_view file_name) {
 }
 
 Scene load_scene(const std::filesystem::path& path) {
+  // A folder opens as an empty stream on Linux: say what it is rather than report missing keys.
+  if (std::filesystem::is_directory(path)) {
+    throw InvalidInput(fmt::format("cannot read scene file '{}': it is a folder", path.string()));
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InvalidInput(fmt::format("cannot read scene file '{}'", path.string()));
   std::stringstream buffer;
