@@ -10,6 +10,7 @@
 #include "restitution/scene.hpp"
 #include "scene/scene_approximations.hpp"
 #include "scene/toml_reader.hpp"
+#include "scene/toml_text_check.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -332,48 +333,8 @@ class Parser {
 
 }  // namespace
 
-namespace {
-
-// Strict UTF-8 (no overlong forms, surrogates or code points past U+10FFFF). toml++ 3 reaches
-// __builtin_unreachable on some malformed sequences (found by fuzz/fuzz_scene.cpp), so they are refused
-// before it sees them. Throws InvalidInput naming file and line.
-void require_utf8(std::string_view text, std::string_view file_name) {
-  std::size_t line = 1;
-  for (std::size_t i = 0; i < text.size();) {
-    const auto byte = static_cast<unsigned char>(text[i]);
-    if (byte == '\n') ++line;
-    std::size_t length = 0;
-    char32_t code = 0;
-    if (byte < 0x80) {
-      length = 1;
-      code = byte;
-    } else if ((byte & 0xE0U) == 0xC0U) {
-      length = 2;
-      code = byte & 0x1FU;
-    } else if ((byte & 0xF0U) == 0xE0U) {
-      length = 3;
-      code = byte & 0x0FU;
-    } else if ((byte & 0xF8U) == 0xF0U) {
-      length = 4;
-      code = byte & 0x07U;
-    }
-    bool valid = length > 0 && i + length <= text.size();
-    for (std::size_t k = 1; valid && k < length; ++k) {
-      const auto next = static_cast<unsigned char>(text[i + k]);
-      valid = (next & 0xC0U) == 0x80U;
-      code = (code << 6U) | (next & 0x3FU);
-    }
-    constexpr char32_t kSmallest[] = {0, 0, 0x80, 0x800, 0x10000};
-    valid = valid && code >= kSmallest[length] && code <= 0x10FFFF && (code < 0xD800 || code > 0xDFFF);
-    if (!valid) throw InvalidInput(fmt::format("{}:{}: not valid UTF-8 text", file_name, line));
-    i += length;
-  }
-}
-
-}  // namespace
-
 Scene parse_scene(std::string_view toml_text, std::string_view file_name) {
-  require_utf8(toml_text, file_name);
+  check_scene_text(toml_text, file_name);
   toml::table root;
   try {
     root = toml::parse(toml_text, file_name);
