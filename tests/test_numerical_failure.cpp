@@ -36,7 +36,7 @@ TEST(NumericalFailure, TooMuchWorkNamesZetaEndToleranceAndFlag) {
     options.method = method;
     const std::string message = failure_message(ContactLaw::hertz_natural(2.5), options);
     // CV_TOO_MUCH_WORK is flag -1.
-    expect_names(message, {"CVODE failed", "flag -1", "zeta=2.5", "the delayed-recovery end",
+    expect_names(message, {"too much work", "flag -1", "zeta=2.5", "the delayed-recovery end",
                            "tolerance 1e-09", std::string("method ") + method_name(method)});
   }
 }
@@ -72,6 +72,15 @@ TEST(NumericalFailure, NonFiniteRightHandSideIsAFailureNotANumber) {
           << e.what();
     }
   }
+}
+
+TEST(NumericalFailure, RepeatedConvergenceFailuresNameCvodesFlag) {
+  // ζ = 1e300 is far beyond what double-precision BDF can follow: the Newton corrector fails repeatedly at
+  // the first step (CV_CONV_FAILURE, flag -4).
+  SolveOptions options;
+  options.method = Method::bdf;
+  expect_names(failure_message(ContactLaw::hertz_natural(1e300), options),
+               {"CVODE failed", "flag -4", "zeta=1e+300", "both ends", "tolerance 1e-10", "method bdf"});
 }
 
 TEST(NumericalFailure, TheSolverIsUsableAfterAFailure) {

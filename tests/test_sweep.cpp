@@ -2,9 +2,9 @@
 // points marked, cancellation keeping finished rows, and the CLI's atomic final file.
 #include <fmt/core.h>
 #include <gtest/gtest.h>
-#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <csignal>
 
 #include <atomic>
 #include <chrono>
@@ -66,7 +66,7 @@ TEST(ZetaGrid, EndsAreExactAndSpacingIsEven) {
   const std::vector<double> linear = zeta_values({0.0, 2.0, 5, false});
   EXPECT_EQ(linear, (std::vector<double>{0.0, 0.5, 1.0, 1.5, 2.0}));
   const std::vector<double> log = zeta_values({1e-3, 1e3, 7, true});
-  ASSERT_EQ(log.size(), 7u);
+  ASSERT_EQ(log.size(), 7U);
   EXPECT_EQ(log.front(), 1e-3);
   EXPECT_EQ(log.back(), 1e3);
   for (std::size_t i = 0; i < log.size(); ++i) EXPECT_NEAR(log[i], std::pow(10.0, -3.0 + i), 1e-12 * log[i]);
@@ -123,7 +123,7 @@ TEST(Sweep, EachPointIsReportedOnceAndCallbacksNeverOverlap) {
   run_sweep(zetas, quick_options(), control);
   EXPECT_FALSE(overlapped);
   ASSERT_EQ(seen.size(), zetas.size());
-  for (std::size_t i = 0; i < zetas.size(); ++i) EXPECT_EQ(seen.count(i), 1u) << i;
+  for (std::size_t i = 0; i < zetas.size(); ++i) EXPECT_EQ(seen.count(i), 1U) << i;
 }
 
 TEST(Sweep, ResumeComputesOnlyTheUnfinishedPoints) {
@@ -135,9 +135,9 @@ TEST(Sweep, ResumeComputesOnlyTheUnfinishedPoints) {
   std::set<std::size_t> computed;
   control.point_finished = [&](const SweepPoint& p) { computed.insert(p.index); };
   const SweepSummary summary = run_sweep(zetas, quick_options(), control);
-  EXPECT_EQ(summary.skipped, 4u);
-  EXPECT_EQ(summary.computed, 8u);
-  for (std::size_t i = 0; i < zetas.size(); ++i) EXPECT_EQ(computed.count(i), i % 3 == 0 ? 0u : 1u) << i;
+  EXPECT_EQ(summary.skipped, 4U);
+  EXPECT_EQ(summary.computed, 8U);
+  for (std::size_t i = 0; i < zetas.size(); ++i) EXPECT_EQ(computed.count(i), i % 3 == 0 ? 0U : 1U) << i;
 }
 
 TEST(Sweep, NumericalFailureMarksThePointAndTheRestGoesOn) {
@@ -148,8 +148,8 @@ TEST(Sweep, NumericalFailureMarksThePointAndTheRestGoesOn) {
   options.max_steps_per_phase = 400;
   const std::vector<double> zetas{0.01, 0.5, 300.0, 1.0, 1000.0};
   const std::vector<SweepPoint> points = sweep_in_order(zetas, options, 2);
-  for (const std::size_t ok : {0u, 1u, 3u}) EXPECT_TRUE(points[ok].result) << points[ok].error;
-  for (const std::size_t bad : {2u, 4u}) {
+  for (const std::size_t ok : {0U, 1U, 3U}) EXPECT_TRUE(points[ok].result) << points[ok].error;
+  for (const std::size_t bad : {2U, 4U}) {
     ASSERT_FALSE(points[bad].result);
     const std::string& e = points[bad].error;
     EXPECT_NE(e.find(fmt::format("zeta={}", zetas[bad])), std::string::npos) << e;
@@ -168,8 +168,8 @@ TEST(Sweep, StopRequestKeepsFinishedPointsAndStartsNoNewOne) {
   control.point_finished = [&](const SweepPoint&) { finished.fetch_add(1); };
   const SweepSummary summary = run_sweep(zetas, quick_options(), control);
   EXPECT_TRUE(summary.stopped);
-  EXPECT_GE(summary.computed, 5u);
-  EXPECT_LE(summary.computed, 5u + 2u);  // at most the points in progress when the stop came
+  EXPECT_GE(summary.computed, 5U);
+  EXPECT_LE(summary.computed, 5U + 2U);  // at most the points in progress when the stop came
   EXPECT_EQ(summary.computed, finished.load());
 }
 
@@ -206,7 +206,7 @@ TEST(SweepTable, FailedRowsKeepTheColumnsAndQuoteTheMessage) {
   const auto count = [](const std::string& s) { return std::count(s.begin(), s.end(), ','); };
   // The message's own comma sits inside quotes: one more comma than the header.
   EXPECT_EQ(count(row), count(header) + 1);
-  EXPECT_EQ(row.rfind("2.5,", 0), 0u);
+  EXPECT_EQ(row.rfind("2.5,", 0), 0U);
   EXPECT_NE(row.find(",failed,\"CVODE failed, \"\"badly\"\" at tau=3\""), std::string::npos) << row;
   EXPECT_EQ(row.find('\n'), std::string::npos);
 }
@@ -240,7 +240,7 @@ TEST(CliSweep, WritesRowsInZetaOrderMatchingTheLibrary) {
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   EXPECT_FALSE(fs::exists(out.string() + ".partial"));
   const std::vector<std::string> lines = lines_of(slurp(out));
-  ASSERT_EQ(lines.size(), 10u);
+  ASSERT_EQ(lines.size(), 10U);
   EXPECT_EQ(
       lines[0],
       "zeta,delayed_recovery_eps,delayed_recovery_one_minus_eps,delayed_recovery_tau,delayed_recovery_x,"
@@ -311,14 +311,14 @@ TEST(CliSweep, SignalsKeepFinishedRowsAndResumeFinishesWithoutRecomputing) {
     EXPECT_NE(slurp(dir.path / "err.txt").find("--resume"), std::string::npos);
     EXPECT_FALSE(fs::exists(out)) << "an interrupted sweep must not leave a final file";
     ASSERT_TRUE(fs::exists(partial));
-    run.push_back("--resume");
+    run.emplace_back("--resume");
   }
   const std::size_t kept = line_count(partial) - 2;
-  ASSERT_GT(kept, 20u);
-  ASSERT_LT(kept, 1500u);
+  ASSERT_GT(kept, 20U);
+  ASSERT_LT(kept, 1500U);
   // Without --resume the partial file is refused rather than overwritten.
-  std::string command;
-  for (std::size_t i = 0; i < arguments.size(); ++i) command += (i ? " " : "") + arguments[i];
+  std::string command = arguments.front();
+  for (std::size_t i = 1; i < arguments.size(); ++i) command += " " + arguments[i];
   const auto refused = run_cli(command);
   EXPECT_EQ(refused.status, 2);
   EXPECT_NE(refused.err.find("--resume"), std::string::npos) << refused.err;

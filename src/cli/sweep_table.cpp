@@ -84,8 +84,12 @@ PartialSweep read_partial_sweep(const std::filesystem::path& path, const std::st
   if (!in) throw InvalidInput(fmt::format("--resume: cannot read '{}'", path.string()));
   std::stringstream buffer;
   buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  return parse_partial_sweep(buffer.str(), path, settings, header, zetas);
+}
 
+PartialSweep parse_partial_sweep(const std::string& text, const std::filesystem::path& path,
+                                 const std::string& settings, const std::string& header,
+                                 const std::vector<double>& zetas) {
   PartialSweep partial;
   std::size_t line_number = 0;
   std::size_t begin = 0;

@@ -30,5 +30,9 @@ struct PartialSweep {
 // writing it) is ignored. Rows whose index or ζ does not match `zetas` are refused.
 PartialSweep read_partial_sweep(const std::filesystem::path& path, const std::string& settings,
                                 const std::string& header, const std::vector<double>& zetas);
+// The same on the file's text; `path` names the file in messages.
+PartialSweep parse_partial_sweep(const std::string& text, const std::filesystem::path& path,
+                                 const std::string& settings, const std::string& header,
+                                 const std::vector<double>& zetas);
 
 }  // namespace restitution::cli

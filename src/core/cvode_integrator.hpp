@@ -77,7 +77,6 @@ class CvodeIntegrator {
   };
 
  private:
-  Method method_;
   sundials::Vector state_;
   sundials::Vector absolute_tolerance_;
   sundials::Matrix jacobian_;

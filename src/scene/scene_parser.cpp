@@ -12,6 +12,7 @@
 #include "restitution/work_precision.hpp"
 #include "scene/scene_approximations.hpp"
 #include "scene/toml_reader.hpp"
+#include "scene/toml_text_check.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -357,6 +358,7 @@ class Parser {
 }  // namespace
 
 Scene parse_scene(std::string_view toml_text, std::string_view file_name) {
+  check_scene_text(toml_text, file_name);
   toml::table root;
   try {
     root = toml::parse(toml_text, file_name);
@@ -367,6 +369,10 @@ Scene parse_scene(std::string_view toml_text, std::string_view file_name) {
 }
 
 Scene load_scene(const std::filesystem::path& path) {
+  // A folder opens as an empty stream on Linux: say what it is rather than report missing keys.
+  if (std::filesystem::is_directory(path)) {
+    throw InvalidInput(fmt::format("cannot read scene file '{}': it is a folder", path.string()));
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InvalidInput(fmt::format("cannot read scene file '{}'", path.string()));
   std::stringstream buffer;
