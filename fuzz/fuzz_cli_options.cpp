@@ -42,13 +42,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   CLI::App app{"restitution", "restitution"};
   app.require_subcommand(1);
   cli::Action chosen;
-  cli::add_eps_command(app, chosen);
-  cli::add_sweep_command(app, chosen);
-  cli::add_fit_command(app, chosen);
-  cli::add_stability_command(app, chosen);
-  cli::add_series_command(app, chosen);
-  cli::add_calibrate_command(app, chosen);
-  cli::add_run_command(app, chosen);
+  cli::add_all_commands(app, chosen);
   try {
     app.parse(static_cast<int>(argv.size()), argv.data());
   } catch (const CLI::ParseError& e) {

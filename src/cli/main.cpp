@@ -17,15 +17,7 @@ int run(int argc, char** argv) {
                "restitution"};
   app.require_subcommand(1);
   cli::Action chosen;
-  cli::add_eps_command(app, chosen);
-  cli::add_reference_command(app, chosen);
-  cli::add_work_precision_command(app, chosen);
-  cli::add_fit_command(app, chosen);
-  cli::add_stability_command(app, chosen);
-  cli::add_calibrate_command(app, chosen);
-  cli::add_run_command(app, chosen);
-  cli::add_series_command(app, chosen);
-  cli::add_sweep_command(app, chosen);
+  cli::add_all_commands(app, chosen);
 
   std::string known;
   bool is_known = false;
