@@ -5,7 +5,9 @@
 // outside strings and comments, and after a backslash in a multi-line basic string. TOML allows no
 // non-ASCII character in the first place, and the second is a malformed escape, so both are refused here
 // with the file and line; non-ASCII text inside strings and comments ("Ramírez", "ε") stays allowed.
-// Found by fuzz/fuzz_scene.cpp.
+// Found by fuzz/fuzz_scene.cpp. This closes the paths of well-formed TOML; toml++'s error paths on malformed
+// input can still scan into a string (fuzz/findings/scene-toml-unreachable-1), so the scene fuzz target is
+// skipped in CI until toml++ is handed ASCII only (see scripts/fuzz).
 #include <string_view>
 
 namespace restitution::scene {
