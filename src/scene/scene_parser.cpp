@@ -11,8 +11,8 @@
 #include "restitution/scene.hpp"
 #include "restitution/work_precision.hpp"
 #include "scene/scene_approximations.hpp"
+#include "scene/toml_ascii.hpp"
 #include "scene/toml_reader.hpp"
-#include "scene/toml_text_check.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -358,10 +358,10 @@ class Parser {
 }  // namespace
 
 Scene parse_scene(std::string_view toml_text, std::string_view file_name) {
-  check_scene_text(toml_text, file_name);
+  const std::string ascii_text = ascii_toml_text(toml_text, file_name);
   toml::table root;
   try {
-    root = toml::parse(toml_text, file_name);
+    root = toml::parse(ascii_text, file_name);
   } catch (const toml::parse_error& e) {
     throw InvalidInput(fmt::format("{}:{}: {}", file_name, e.source().begin.line, e.description()));
   }

@@ -1,0 +1,146 @@
+// The rewrite of scene text to ASCII-only TOML that keeps toml++ 3.3.0 away from its undefined behaviour
+// on non-ASCII characters: values and line numbers must survive it, its output must be ASCII whatever the
+// input, and what it refuses must be refused with the line.
+#include "scene/toml_ascii.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include "cli_runner.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/scene.hpp"
+#include "scene/toml_reader.hpp"
+
+namespace restitution::scene {
+namespace {
+
+std::string error_of(std::string_view text) {
+  try {
+    (void)ascii_toml_text(text, "s.toml");
+  } catch (const InvalidInput& e) {
+    return e.what();
+  }
+  return {};
+}
+
+bool is_ascii(std::string_view text) {
+  return std::all_of(text.begin(), text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; });
+}
+
+// Parses the rewritten text and returns the string at `key`.
+std::string string_value(std::string_view text, std::string_view key) {
+  const std::string ascii = ascii_toml_text(text, "s.toml");
+  EXPECT_TRUE(is_ascii(ascii)) << ascii;
+  const toml::table table = toml::parse(ascii);
+  const auto value = table[key].value<std::string>();
+  EXPECT_TRUE(value.has_value()) << "no string at " << key << " in " << ascii;
+  return value.value_or("");
+}
+
+TEST(TomlAscii, NonAsciiTextInStringsKeepsItsValue) {
+  EXPECT_EQ(string_value("t = \"Ramírez, Pöschel: ε(ζ)\"\n", "t"), "Ramírez, Pöschel: ε(ζ)");
+  EXPECT_EQ(string_value("t = \"four bytes: \xF0\x9F\x98\x80.\"\n", "t"), "four bytes: \xF0\x9F\x98\x80.");
+  EXPECT_EQ(string_value("t = \"escaped \\\" quote ε\\n\"\n", "t"), "escaped \" quote ε\n");
+  EXPECT_EQ(string_value("t = \"\"\"\nmulti ε \"quoted\" ζ\n\"\"\"\n", "t"), "multi ε \"quoted\" ζ\n");
+  // A line-ending backslash followed by a non-ASCII character: the case toml++ itself tests for whitespace.
+  EXPECT_EQ(string_value("t = \"\"\"a\\\n\n   ε b\"\"\"\n", "t"), "aε b");
+  EXPECT_EQ(string_value("\"ключ ε\" = \"v\"\n", "ключ ε"), "v");
+}
+
+TEST(TomlAscii, LiteralStringsBecomeBasicStringsWithTheSameValue) {
+  EXPECT_EQ(string_value("t = 'literal ε'\n", "t"), "literal ε");
+  EXPECT_EQ(string_value("t = 'C:\\path\\n \"quoted\" é'\n", "t"), "C:\\path\\n \"quoted\" é");
+  EXPECT_EQ(string_value("t = '''\nline ε\\\nnext \"x\" ''two'' '''\n", "t"),
+            "line ε\\\nnext \"x\" ''two'' ");
+  EXPECT_EQ(string_value("t = '''ends with quotes'''''\n", "t"), "ends with quotes''");
+  EXPECT_EQ(string_value("t = '''ends with \"'''\n", "t"), "ends with \"");
+  EXPECT_EQ(string_value("'ключ ε' = 'v'\n", "ключ ε"), "v");
+}
+
+TEST(TomlAscii, CommentsAndTheByteOrderMarkCarryNoValue) {
+  const std::string ascii = ascii_toml_text("\xEF\xBB\xBFt = 1  # ζ = β v^{1/5}\n", "s.toml");
+  EXPECT_EQ(ascii, "t = 1  # ? = ? v^{1/5}\n");
+}
+
+TEST(TomlAscii, AsciiTextWithoutLiteralStringsIsUnchanged) {
+  for (const char* name : {"default", "trajectory", "material_sweep", "calibration", "dashpot"}) {
+    const std::string text =
+        test_support::slurp(std::string(RESTITUTION_SOURCE_DIR "/scenes/") + name + ".toml");
+    ASSERT_FALSE(text.empty()) << name;
+    const std::string ascii = ascii_toml_text(text, name);
+    EXPECT_TRUE(is_ascii(ascii)) << name;
+    EXPECT_EQ(toml::parse(ascii), toml::parse(text)) << name;
+    if (is_ascii(text) && text.find('\'') == std::string::npos) EXPECT_EQ(ascii, text) << name;
+  }
+}
+
+TEST(TomlAscii, MalformedTextComesOutAsciiWithItsLines) {
+  const std::string finding =
+      test_support::slurp(RESTITUTION_SOURCE_DIR "/fuzz/findings/scene-toml-unreachable-1");
+  ASSERT_FALSE(finding.empty());
+  for (const std::string& text :
+       {finding, std::string("a = 08bb\"0bbbyamír al.\"\nb = 'x\nc = \"é\n"),
+        std::string("a = \"x\\\ny = 'é'\n"), std::string("t = '''never closed ε\n\n"),
+        std::string("t = \"\"\"x\\ \xCE\xB5\"\"\"\n")}) {
+    const std::string ascii = ascii_toml_text(text, "s.toml");
+    EXPECT_TRUE(is_ascii(ascii)) << ascii;
+    EXPECT_EQ(std::count(ascii.begin(), ascii.end(), '\n'), std::count(text.begin(), text.end(), '\n'));
+  }
+}
+
+TEST(TomlAscii, WhatCannotBeRewrittenIsRefusedWithItsLine) {
+  EXPECT_EQ(error_of("a = 1\nb = 2\xEF\xBF\xBD\n"),
+            "s.toml:2: non-ASCII character outside a string or comment");
+  EXPECT_EQ(error_of("é = 1\n"), "s.toml:1: non-ASCII character outside a string or comment");
+  EXPECT_EQ(error_of("a = [1,\xEF\xBB\xBD 2]\n"),
+            "s.toml:1: non-ASCII character outside a string or comment");
+  EXPECT_EQ(error_of("n = \"x\\ε\"\n"),
+            "s.toml:1: a backslash followed by a non-ASCII character is no TOML escape");
+  EXPECT_EQ(error_of("n = \"\"\"\nx\\ε\"\"\"\n"),
+            "s.toml:2: a backslash followed by a non-ASCII character is no TOML escape");
+  EXPECT_EQ(error_of("n = '''x''''''\n"),
+            "s.toml:1: more than five single quotes in a row in a multi-line literal string");
+}
+
+TEST(TomlAscii, InvalidUtf8IsRefusedWithItsLine) {
+  EXPECT_EQ(error_of("a = 1\n# \xC3\x28\n"), "s.toml:2: not valid UTF-8 text");
+  EXPECT_EQ(error_of("t = \"\xED\xA0\x80\"\n"), "s.toml:1: not valid UTF-8 text");      // a surrogate
+  EXPECT_EQ(error_of("t = \"\xC0\xAF\"\n"), "s.toml:1: not valid UTF-8 text");          // overlong
+  EXPECT_EQ(error_of("t = \"\xF4\x90\x80\x80\"\n"), "s.toml:1: not valid UTF-8 text");  // past U+10FFFF
+}
+
+TEST(TomlAscii, ParseSceneUsesItAndReplaysTheFuzzFindings) {
+  try {
+    (void)parse_scene("title = \"x\"\nδ = 1\n", "scene.toml");
+    ADD_FAILURE() << "a non-ASCII bare key was accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()), "scene.toml:2: non-ASCII character outside a string or comment");
+  }
+  // The fuzzer's seed with non-ASCII text in every kind of string keeps that text in the scene.
+  const Scene scene = load_scene(RESTITUTION_SOURCE_DIR "/fuzz/corpus/scene/unicode_strings.toml");
+  EXPECT_EQ(scene.title, "Ramírez, Pöschel: ε(ζ) ''quoted'' \"x\" \\\n");
+  EXPECT_EQ(scene.output, std::filesystem::path("out/ε literal \\path"));
+  ASSERT_EQ(scene.sweeps.size(), 2U);
+  EXPECT_EQ(scene.sweeps[0].note, "multi-line ε \"quoted\" ε ζ continued\n");
+  EXPECT_EQ(scene.sweeps[1].note, "Ramírez — 粒子 \xF0\x9F\x98\x80");
+  // Each kept finding must end in a clean error naming the file (under the sanitizer build, any undefined
+  // behaviour on the way aborts the test).
+  int replayed = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(RESTITUTION_SOURCE_DIR "/fuzz/findings")) {
+    if (entry.path().filename() == "README") continue;
+    const std::string text = test_support::slurp(entry.path().string());
+    try {
+      (void)parse_scene(text, "finding.toml");
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("finding.toml:", 0), 0U) << e.what();
+    }
+    ++replayed;
+  }
+  EXPECT_GE(replayed, 1);
+}
+
+}  // namespace
+}  // namespace restitution::scene
