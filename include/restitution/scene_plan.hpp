@@ -35,7 +35,8 @@ struct Plan {
   std::vector<std::vector<PlannedPoint>> dashpots;  // parallel to Scene::dashpots
 };
 
-// Throws InvalidInput when a physical point lies outside the solver's range (ζ > 1e4), naming the task.
+// Throws InvalidInput when a physical point lies outside the solver's range (ζ > 1e4), naming the file, the
+// line where the task starts and the task.
 Plan plan_scene(const Scene& scene);
 
 // The ends a dash-pot collision has: no naive end (x never returns to 0) for r >= 1.

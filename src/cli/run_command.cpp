@@ -14,6 +14,7 @@
 #include "cli/work_precision_files.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/scene.hpp"
+#include "restitution/scene_plan.hpp"
 #include "restitution/scene_run.hpp"
 
 namespace restitution::cli {
@@ -43,6 +44,7 @@ int run_scene_file(const RunOptions& o) {
   if (o.quick) s.tolerance = std::max(s.tolerance, 1e-8);
   if (o.quick) scene::make_quick(s, kQuickPoints);
   const fs::path folder = o.output.empty() ? s.output : fs::path(o.output);
+  (void)scene::plan_scene(s);     // refuses points outside the solver's range (cheap) before a folder exists
   prepare_output_folder(folder);  // fail before the work, not after
 
   scene::RunSettings settings;

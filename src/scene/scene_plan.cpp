@@ -34,6 +34,7 @@ class JobTable {
   std::map<std::pair<int, double>, std::size_t> index_;
 };
 
+// `task` names the scene file, the line and the task, as every scene error does.
 PlannedPoint physical_point(double velocity_m_s, double beta, std::optional<double> k,
                             const std::string& task) {
   PlannedPoint p;
@@ -78,7 +79,8 @@ Plan plan_scene(const Scene& scene) {
         beta = c.hertz.beta;
         k = c.hertz.k;
       }
-      for (const double v : s.velocity_m_s) points.push_back(physical_point(v, beta, k, "sweep " + s.name));
+      const std::string task = fmt::format("{}:{}: sweep {}", scene.file_name, s.line, s.name);
+      for (const double v : s.velocity_m_s) points.push_back(physical_point(v, beta, k, task));
     }
     for (PlannedPoint& p : points) p.job = table.add(ContactLaw::hertz_natural(p.parameter), s.ends, false);
     plan.sweeps.push_back(std::move(points));
@@ -91,7 +93,8 @@ Plan plan_scene(const Scene& scene) {
       const std::optional<MaterialConstants> c =
           t.material ? std::optional(material_constants(scene.materials.at(*t.material))) : std::nullopt;
       p = physical_point(*t.velocity_m_s, c ? c->hertz.beta : *t.beta,
-                         c ? std::optional(c->hertz.k) : std::nullopt, "trajectory " + t.name);
+                         c ? std::optional(c->hertz.k) : std::nullopt,
+                         fmt::format("{}:{}: trajectory {}", scene.file_name, t.line, t.name));
     }
     p.job = table.add(ContactLaw::hertz_natural(p.parameter), t.ends, true);
     plan.trajectories.push_back(p);
