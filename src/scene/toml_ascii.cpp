@@ -17,9 +17,8 @@ CodePoint decode(std::string_view text, std::size_t i) {
   const auto byte = static_cast<unsigned char>(text[i]);
   std::size_t length = 0;
   char32_t code = 0;
-  if (byte < 0x80) {
-    return {byte, 1};
-  } else if ((byte & 0xE0U) == 0xC0U) {
+  if (byte < 0x80) return {byte, 1};
+  if ((byte & 0xE0U) == 0xC0U) {
     length = 2;
     code = byte & 0x1FU;
   } else if ((byte & 0xF0U) == 0xE0U) {
@@ -39,6 +38,8 @@ CodePoint decode(std::string_view text, std::size_t i) {
   valid = valid && code >= kSmallest[length] && code <= 0x10FFFF && (code < 0xD800 || code > 0xDFFF);
   return valid ? CodePoint{code, length} : CodePoint{};
 }
+
+constexpr std::string_view kTripleQuote = R"(""")";
 
 enum class Context { outside, comment, basic, literal, multi_line_basic, multi_line_literal };
 
@@ -123,7 +124,7 @@ class AsciiRewriter {
         context_ = Context::comment;
         return copy(i);
       case '"':
-        return open(i, "\"\"\"", Context::multi_line_basic, Context::basic);
+        return open(i, kTripleQuote, Context::multi_line_basic, Context::basic);
       case '\'':
         return open(i, "'''", Context::multi_line_literal, Context::literal);
       default:
@@ -135,7 +136,7 @@ class AsciiRewriter {
   std::size_t open(std::size_t i, std::string_view triple, Context multi, Context single) {
     const bool is_multi = starts_with(text_, i, triple);
     context_ = is_multi ? multi : single;
-    out_ += is_multi ? "\"\"\"" : "\"";
+    out_ += is_multi ? kTripleQuote : "\"";
     return i + (is_multi ? 3 : 1);
   }
 
@@ -168,7 +169,7 @@ class AsciiRewriter {
     if (run > 5) fail(i, "more than five single quotes in a row in a multi-line literal string");
     context_ = Context::outside;
     out_.append(run - 3, '\'');
-    out_ += "\"\"\"";
+    out_ += kTripleQuote;
     return end;
   }
 
