@@ -36,7 +36,7 @@ void expect_same_stats(const SolverStats& a, const SolverStats& b) {
 TEST(SceneRun, DelayedRecoveryOnlyNeverIntegratesTheNaiveTail) {
   const Scene s =
       parse_scene("output = \"o\"\n[[sweep]]\nzeta = [0.5, 3]\nends = \"delayed-recovery\"\n", "t");
-  const SceneResults r = run_scene(s);
+  const SceneResults r = run_scene(s, plan_scene(s));
   ASSERT_EQ(r.solved.size(), 2U);
   for (std::size_t i = 0; i < 2; ++i) {
     const double zeta = s.sweeps[0].zeta[i];
@@ -55,7 +55,7 @@ TEST(SceneRun, OneSolveIsSharedByEveryOutputThatNeedsIt) {
       "[[sweep]]\nname = \"b\"\nzeta = [1]\nends = \"delayed-recovery\"\n"
       "[[trajectory]]\nzeta = 0.5\nends = \"delayed-recovery\"\n",
       "t");
-  const SceneResults r = run_scene(s);
+  const SceneResults r = run_scene(s, plan_scene(s));
   ASSERT_EQ(r.plan.jobs.size(), 2U);  // ζ = 0.5 and ζ = 1, each once
   EXPECT_EQ(r.plan.sweeps[1][0].job, r.plan.sweeps[0][1].job);
   EXPECT_EQ(r.plan.trajectories[0].job, r.plan.sweeps[0][0].job);
@@ -94,7 +94,7 @@ TEST(SceneRun, ApproximationsAreEvaluatedBesideTheNumerics) {
       "output = \"o\"\n[[sweep]]\nzeta = [0.01, 20]\nends = \"naive\"\n"
       "approximations = [\"naive-series\", \"pade-1999\"]\nasymptotics = true\n",
       "t");
-  const SceneResults r = run_scene(s);
+  const SceneResults r = run_scene(s, plan_scene(s));
   const auto& columns = r.sweeps[0].approximations;
   ASSERT_EQ(columns.size(), 3U);  // two approximations and the naive large-ζ law
   const double eps_small = r.solved[r.plan.sweeps[0][0].job].naive->eps;
@@ -109,7 +109,7 @@ TEST(SceneRun, ApproximationsAreEvaluatedBesideTheNumerics) {
 TEST(SceneRun, DashpotPointsWithoutANaiveEndAreNotIntegratedForIt) {
   const Scene s =
       parse_scene("output = \"o\"\n[[dashpot]]\ndamping_ratio = [0.5, 2]\nends = \"naive\"\n", "t");
-  const SceneResults r = run_scene(s);
+  const SceneResults r = run_scene(s, plan_scene(s));
   EXPECT_EQ(r.plan.jobs.size(), 1U);
   EXPECT_EQ(r.plan.dashpots[0][1].job, kNoJob);
   EXPECT_EQ(result_of(r, r.plan.dashpots[0][1]), nullptr);
@@ -126,8 +126,8 @@ TEST(SceneRun, ResultsDoNotDependOnTheNumberOfThreads) {
     ++calls;
     EXPECT_LE(done, total);
   };
-  const SceneResults a = run_scene(s, one);
-  const SceneResults b = run_scene(s, three);
+  const SceneResults a = run_scene(s, plan_scene(s), one);
+  const SceneResults b = run_scene(s, plan_scene(s), three);
   EXPECT_EQ(calls, 12U);
   for (std::size_t i = 0; i < a.solved.size(); ++i) {
     EXPECT_EQ(a.solved[i].naive->eps, b.solved[i].naive->eps);
@@ -143,7 +143,7 @@ TEST(SceneRun, WorkPrecisionStudyMeasuresAgainstTheReferenceAndSummarises) {
   EXPECT_EQ(s.studies[0].repeats, 1);
   RunSettings settings;
   settings.reference_file = reference_file_in(RESTITUTION_SOURCE_DIR);
-  const SceneResults r = run_scene(s, settings);
+  const SceneResults r = run_scene(s, plan_scene(s), settings);
   ASSERT_EQ(r.studies.size(), 1U);
   const StudyOutcome& study = r.studies[0];
   // The same points as the work-precision module measures on its own (timings aside).

@@ -67,7 +67,9 @@ struct SceneResults {
   std::size_t collisions = 0;         // collisions integrated, calibrations included
 };
 
-SceneResults run_scene(const Scene& scene, const RunSettings& settings = {});
+// Runs `plan`, which plan_scene(scene) made: planning apart lets a caller refuse a scene (points outside the
+// solver's range) before it prepares anything, without planning twice.
+SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& settings = {});
 
 // The result of a planned point (nullptr when the point needed no integration).
 const CollisionResult* result_of(const SceneResults& results, const PlannedPoint& point);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <utility>
 
 #include "cli/commands.hpp"
 #include "cli/output_files.hpp"
@@ -44,7 +45,8 @@ int run_scene_file(const RunOptions& o) {
   if (o.quick) s.tolerance = std::max(s.tolerance, 1e-8);
   if (o.quick) scene::make_quick(s, kQuickPoints);
   const fs::path folder = o.output.empty() ? s.output : fs::path(o.output);
-  (void)scene::plan_scene(s);     // refuses points outside the solver's range (cheap) before a folder exists
+  scene::Plan plan =
+      scene::plan_scene(s);       // refuses points outside the solver's range before a folder exists
   prepare_output_folder(folder);  // fail before the work, not after
 
   scene::RunSettings settings;
@@ -58,7 +60,7 @@ int run_scene_file(const RunOptions& o) {
     };
   }
   const auto start = std::chrono::steady_clock::now();
-  const scene::SceneResults results = scene::run_scene(s, settings);
+  const scene::SceneResults results = scene::run_scene(s, std::move(plan), settings);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const WrittenOutputs written = write_scene_outputs(s, results, folder, seconds);
   for (const auto& w : written.warnings) std::fprintf(stderr, "restitution: warning: %s\n", w.c_str());

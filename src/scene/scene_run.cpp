@@ -6,6 +6,7 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <utility>
 
 #include "restitution/material.hpp"
 #include "scene/scene_extensions.hpp"
@@ -59,9 +60,9 @@ const CollisionResult* result_of(const SceneResults& results, const PlannedPoint
   return point.job == kNoJob ? nullptr : &results.solved[point.job];
 }
 
-SceneResults run_scene(const Scene& scene, const RunSettings& settings) {
+SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& settings) {
   SceneResults out;
-  out.plan = plan_scene(scene);
+  out.plan = std::move(plan);
   out.solved = solve_all(out.plan.jobs, scene, settings);
   for (const CollisionResult& r : out.solved) out.total += r.stats;
   out.collisions = out.solved.size();
