@@ -90,7 +90,8 @@ DemResult compute(const DemOptions& o) {
     YadeCheck y;
     y.true_eps = dem::eps_for(hertz_constants(k, r.dissipative_constant_s).beta, v, end, o.tolerance, solver);
     y.dissipative_constant_s = dem::yade_dissipative_constant(y.true_eps, v, k);
-    y.eps_at_vn = dem::eps_for(hertz_constants(k, y.dissipative_constant_s).beta, v, end, o.tolerance, solver);
+    y.eps_at_vn =
+        dem::eps_for(hertz_constants(k, y.dissipative_constant_s).beta, v, end, o.tolerance, solver);
     r.yade = y;
   }
   return r;
@@ -115,7 +116,8 @@ void print_json(const DemResult& r) {
   for (const auto& note : r.deck.notes) json.value(note);
   json.end_array();
   json.key("eps").begin_array();
-  for (const auto& e : r.eps) json.begin_object().field("velocity_m_s", e.velocity_m_s).field("eps", e.eps).end_object();
+  for (const auto& e : r.eps)
+    json.begin_object().field("velocity_m_s", e.velocity_m_s).field("eps", e.eps).end_object();
   json.end_array();
   json.key("sizes").begin_array();
   for (const auto& s : r.sizes) {
@@ -150,9 +152,11 @@ void print_text(const DemResult& r) {
                s.eps_law);
   }
   if (r.yade) {
-    fmt::print("{} YADE's own conversion of the true (en = {:.10f}, vn = {:g} m/s) gives A = {:.10g} s ({:+.3g} %),\n",
-               c, r.yade->true_eps, r.reference_velocity_m_s, r.yade->dissipative_constant_s,
-               100.0 * (r.yade->dissipative_constant_s / r.dissipative_constant_s - 1.0));
+    fmt::print(
+        "{} YADE's own conversion of the true (en = {:.10f}, vn = {:g} m/s) gives A = {:.10g} s ({:+.3g} "
+        "%),\n",
+        c, r.yade->true_eps, r.reference_velocity_m_s, r.yade->dissipative_constant_s,
+        100.0 * (r.yade->dissipative_constant_s / r.dissipative_constant_s - 1.0));
     fmt::print("{} which makes eps(vn) = {:.10f}; the en above instead makes YADE recover the exact A\n", c,
                r.yade->eps_at_vn);
   }
@@ -163,7 +167,8 @@ void print_text(const DemResult& r) {
 void add_dem_command(CLI::App& app, Action& chosen) {
   auto o = std::make_shared<DemOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "dem", "input lines giving a DEM code (lammps, liggghts, mercurydpm, yade, chrono) this law, and its eps");
+      "dem",
+      "input lines giving a DEM code (lammps, liggghts, mercurydpm, yade, chrono) this law, and its eps");
   cmd->add_option("--code", o->code, "DEM code: lammps, liggghts, mercurydpm, yade or chrono")
       ->required()
       ->check(CLI::IsMember({"lammps", "liggghts", "mercurydpm", "yade", "chrono"}));
@@ -172,11 +177,13 @@ void add_dem_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--velocity", o->velocity,
                   "impact speed in m/s of --eps (also YADE's vn and the reference speed; default 1)");
   cmd->add_option("--dissipative-constant", o->dissipative_constant, "the dissipative constant A in s");
-  cmd->add_option("--end", o->end, "end of the collision: naive (no clamp) or delayed-recovery (force clamped)")
+  cmd->add_option("--end", o->end,
+                  "end of the collision: naive (no clamp) or delayed-recovery (force clamped)")
       ->check(CLI::IsMember({"naive", "delayed-recovery"}))
       ->capture_default_str();
   cmd->add_option("--speeds", o->speeds, "impact speeds in m/s to report eps at (default v/10, v, 10 v)");
-  cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")->capture_default_str();
+  cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")
+      ->capture_default_str();
   cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
   cmd->callback([o, &chosen] {
     chosen = [o] {

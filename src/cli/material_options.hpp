@@ -1,5 +1,6 @@
 #pragma once
-// The material options shared by `calibrate` and `dem`: --young-modulus, --poisson-ratio, --radius [--radius2],
+// The material options shared by `calibrate` and `dem`: --young-modulus, --poisson-ratio, --radius
+// [--radius2],
 // --density or --mass [--mass2], as given on the command line.
 #include <CLI/CLI.hpp>
 #include <optional>

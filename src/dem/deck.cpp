@@ -20,7 +20,8 @@ std::string num(double x) {
   return fmt::format("{}", x);
 }
 
-// The elastic and dissipative coefficients K [N m^-3/2], D [N s m^-3/2] of m_eff ξ'' = -K ξ^{3/2} - D sqrt(ξ) ξ'.
+// The elastic and dissipative coefficients K [N m^-3/2], D [N s m^-3/2] of m_eff ξ'' = -K ξ^{3/2} - D sqrt(ξ)
+// ξ'.
 struct Coefficients {
   double elastic = 0.0;
   double damping = 0.0;
@@ -28,21 +29,25 @@ struct Coefficients {
 
 Coefficients law_coefficients(const Pair& p, double dissipative_constant_s) {
   const double sqrt_r = std::sqrt(p.effective_radius_m);
-  return {4.0 / 3.0 * p.effective_modulus_pa * sqrt_r, 2.0 * dissipative_constant_s * p.effective_modulus_pa * sqrt_r};
+  return {4.0 / 3.0 * p.effective_modulus_pa * sqrt_r,
+          2.0 * dissipative_constant_s * p.effective_modulus_pa * sqrt_r};
 }
 
 std::string clamp_note(Code code, CollisionEnd end) {
   if (always_clamps(code)) {
-    return fmt::format("{} always clamps the normal force at zero: the collision ends at the delayed-recovery end",
-                       code_name(code));
+    return fmt::format(
+        "{} always clamps the normal force at zero: the collision ends at the delayed-recovery end",
+        code_name(code));
   }
   return end == CollisionEnd::delayed_recovery
-             ? "the normal force is clamped at zero: the collision ends when it vanishes (delayed-recovery end)"
+             ? "the normal force is clamped at zero: the collision ends when it vanishes (delayed-recovery "
+               "end)"
              : "no clamp: the force may pull, the collision ends when the spheres separate (naive end)";
 }
 
 std::string pair_note(const Pair& p) {
-  return fmt::format("made for R_eff = {:.6g} m, m_eff = {:.6g} kg", p.effective_radius_m, p.effective_mass_kg);
+  return fmt::format("made for R_eff = {:.6g} m, m_eff = {:.6g} kg", p.effective_radius_m,
+                     p.effective_mass_kg);
 }
 
 double density_of(const Pair& p) {
@@ -59,7 +64,8 @@ double density_of(const Pair& p) {
 void lammps(Deck& d, const Pair& p, double a) {
   const double eta = damping_per_mass(a, p.effective_modulus_pa, p.effective_mass_kg);
   d.parameters = {
-      {"E", p.young_modulus_pa, "Young's modulus Y [Pa]; LAMMPS mixes two equal types to E* = Y / (2 (1 - nu^2))"},
+      {"E", p.young_modulus_pa,
+       "Young's modulus Y [Pa]; LAMMPS mixes two equal types to E* = Y / (2 (1 - nu^2))"},
       {"eta_n0", eta, "damping eta_n0 = 2 A E* / m_eff [1/(m s)], multiplied by m_eff sqrt(R_eff xi)"},
       {"nu", p.poisson_ratio, "Poisson ratio [1]"},
   };
@@ -68,7 +74,8 @@ void lammps(Deck& d, const Pair& p, double a) {
                          "viscoelastic{}",
                          num(p.young_modulus_pa), num(eta), num(p.poisson_ratio),
                          d.end == CollisionEnd::delayed_recovery ? " limit_damping" : "")};
-  d.notes = {"tangential linear_nohistory 0 0: frictionless (x_gamma_t = 0, mu_s = 0)", clamp_note(d.code, d.end),
+  d.notes = {"tangential linear_nohistory 0 0: frictionless (x_gamma_t = 0, mu_s = 0)",
+             clamp_note(d.code, d.end),
              "eta_n0 contains 1/m_eff: exact only for the pair it was made for (" + pair_note(p) +
                  "); other pairs get A' = A m_eff' / m_eff"};
 }
@@ -116,7 +123,8 @@ void yade(Deck& d, const Pair& p, double a, double vn) {
       {"young", p.young_modulus_pa, "Young's modulus Y [Pa]"},
       {"poisson", p.poisson_ratio, "Poisson ratio [1]"},
       {"density", density_of(p), "density [kg/m^3]"},
-      {"en", en, "Pade [3/6] value at the exact sigma (not the true eps): YADE inverts it back to the exact A [1]"},
+      {"en", en,
+       "Pade [3/6] value at the exact sigma (not the true eps): YADE inverts it back to the exact A [1]"},
       {"vn", vn, "reference impact speed [m/s]"},
   };
   d.lines = {fmt::format("O.materials.append(FrictMat(young={}, poisson={}, density={}, frictionAngle=0))",
@@ -125,10 +133,11 @@ void yade(Deck& d, const Pair& p, double a, double vn) {
                          "vn=MatchMaker(algo='val', val={}))",
                          num(en), num(vn)),
              "Law2_ScGeom_MindlinPhys_Mindlin()"};
-  d.notes = {"frictionAngle = 0: frictionless", clamp_note(d.code, d.end),
-             "YADE keeps beta = sigma^2 vn^(-1/5) for every contact (A = (2/3) beta (k_n0 / m_eff)^(-2/5)), so "
-             "every pair gets this pair's eps(v): exact only for pairs with this pair's k_n0 / m_eff (" +
-                 pair_note(p) + ")"};
+  d.notes = {
+      "frictionAngle = 0: frictionless", clamp_note(d.code, d.end),
+      "YADE keeps beta = sigma^2 vn^(-1/5) for every contact (A = (2/3) beta (k_n0 / m_eff)^(-2/5)), so "
+      "every pair gets this pair's eps(v): exact only for pairs with this pair's k_n0 / m_eff (" +
+          pair_note(p) + ")"};
 }
 
 void chrono(Deck& d, const Pair& p, double a) {
@@ -145,10 +154,11 @@ void chrono(Deck& d, const Pair& p, double a) {
              "material->SetKt(0); material->SetGt(0); material->SetFriction(0);",
              "sys.SetContactForceModel(ChSystemSMC::ContactForceModel::Hertz);",
              "sys.UseMaterialProperties(false);"};
-  d.notes = {"Kt = Gt = friction = 0: frictionless", clamp_note(d.code, d.end),
-             "Chrono scales Kn and Gn with R_eff, not sqrt(R_eff), and Gn with m_eff: exact only for the pair it "
-             "was made for (" +
-                 pair_note(p) + ")"};
+  d.notes = {
+      "Kt = Gt = friction = 0: frictionless", clamp_note(d.code, d.end),
+      "Chrono scales Kn and Gn with R_eff, not sqrt(R_eff), and Gn with m_eff: exact only for the pair it "
+      "was made for (" +
+          pair_note(p) + ")"};
 }
 
 }  // namespace
@@ -163,11 +173,16 @@ Code code_from_name(std::string_view name) {
 
 const char* code_name(Code code) {
   switch (code) {
-    case Code::lammps: return "lammps";
-    case Code::liggghts: return "liggghts";
-    case Code::mercurydpm: return "mercurydpm";
-    case Code::yade: return "yade";
-    case Code::chrono: return "chrono";
+    case Code::lammps:
+      return "lammps";
+    case Code::liggghts:
+      return "liggghts";
+    case Code::mercurydpm:
+      return "mercurydpm";
+    case Code::yade:
+      return "yade";
+    case Code::chrono:
+      return "chrono";
   }
   return "?";
 }
@@ -219,22 +234,34 @@ double Deck::parameter(std::string_view name) const {
 Deck make_deck(Code code, CollisionEnd end, const Pair& pair, double dissipative_constant_s,
                double reference_velocity_m_s) {
   if (always_clamps(code) && end == CollisionEnd::naive) {
-    throw InvalidInput(fmt::format("{} always clamps the normal force at zero, so it ends collisions at the "
-                                   "delayed-recovery end; --end naive cannot be expressed",
-                                   code_name(code)));
+    throw InvalidInput(
+        fmt::format("{} always clamps the normal force at zero, so it ends collisions at the "
+                    "delayed-recovery end; --end naive cannot be expressed",
+                    code_name(code)));
   }
   if (!std::isfinite(dissipative_constant_s) || dissipative_constant_s < 0.0) {
-    throw InvalidInput(fmt::format("dissipative_constant must be finite and >= 0, got {}", dissipative_constant_s));
+    throw InvalidInput(
+        fmt::format("dissipative_constant must be finite and >= 0, got {}", dissipative_constant_s));
   }
   Deck d;
   d.code = code;
   d.end = end;
   switch (code) {
-    case Code::lammps: lammps(d, pair, dissipative_constant_s); break;
-    case Code::liggghts: liggghts(d, pair, dissipative_constant_s); break;
-    case Code::mercurydpm: mercurydpm(d, pair, dissipative_constant_s); break;
-    case Code::yade: yade(d, pair, dissipative_constant_s, reference_velocity_m_s); break;
-    case Code::chrono: chrono(d, pair, dissipative_constant_s); break;
+    case Code::lammps:
+      lammps(d, pair, dissipative_constant_s);
+      break;
+    case Code::liggghts:
+      liggghts(d, pair, dissipative_constant_s);
+      break;
+    case Code::mercurydpm:
+      mercurydpm(d, pair, dissipative_constant_s);
+      break;
+    case Code::yade:
+      yade(d, pair, dissipative_constant_s, reference_velocity_m_s);
+      break;
+    case Code::chrono:
+      chrono(d, pair, dissipative_constant_s);
+      break;
   }
   return d;
 }
@@ -249,7 +276,9 @@ double deck_beta(const Deck& deck, const Pair& other) {
       c = {4.0 / 3.0 * effective_modulus_pa(deck.parameter("E"), deck.parameter("nu")) * sqrt_r,
            deck.parameter("eta_n0") * m * sqrt_r};
       break;
-    case Code::liggghts: c = {deck.parameter("kn") * sqrt_r, deck.parameter("gamman") * m * sqrt_r}; break;
+    case Code::liggghts:
+      c = {deck.parameter("kn") * sqrt_r, deck.parameter("gamman") * m * sqrt_r};
+      break;
     case Code::mercurydpm:
       c = {4.0 / 3.0 * deck.parameter("effective_elastic_modulus") * sqrt_r,
            2.0 * deck.parameter("dissipation") * deck.parameter("effective_elastic_modulus") * sqrt_r};
@@ -260,7 +289,8 @@ double deck_beta(const Deck& deck, const Pair& other) {
       break;
     }
     case Code::chrono:
-      c = {other.effective_radius_m * deck.parameter("Kn"), other.effective_radius_m * m * deck.parameter("Gn")};
+      c = {other.effective_radius_m * deck.parameter("Kn"),
+           other.effective_radius_m * m * deck.parameter("Gn")};
       break;
   }
   return beta_of_coefficients(c.elastic, c.damping, m);

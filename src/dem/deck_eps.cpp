@@ -7,7 +7,8 @@
 
 namespace restitution::dem {
 
-double eps_for(double beta, double velocity_m_s, CollisionEnd end, double tolerance, CollisionSolver& solver) {
+double eps_for(double beta, double velocity_m_s, CollisionEnd end, double tolerance,
+               CollisionSolver& solver) {
   const double zeta = zeta_from(beta, velocity_m_s);
   if (zeta == 0.0) return 1.0;
   SolveOptions options;
@@ -28,7 +29,8 @@ std::vector<SizeCheck> size_checks(const Deck& deck, const Pair& pair, double di
     SizeCheck c;
     c.radius_factor = f;
     c.eps_lines = eps_for(deck_beta(deck, other), velocity_m_s, deck.end, tolerance, solver);
-    c.eps_law = eps_for(hertz_constants(k, dissipative_constant_s).beta, velocity_m_s, deck.end, tolerance, solver);
+    c.eps_law =
+        eps_for(hertz_constants(k, dissipative_constant_s).beta, velocity_m_s, deck.end, tolerance, solver);
     checks.push_back(c);
   }
   return checks;

@@ -11,7 +11,8 @@ namespace {
 
 double checked(double value, const char* name, bool zero_allowed) {
   if (!std::isfinite(value) || value < 0.0 || (!zero_allowed && value == 0.0)) {
-    throw InvalidInput(fmt::format("{} must be finite and {} 0, got {}", name, zero_allowed ? ">=" : ">", value));
+    throw InvalidInput(
+        fmt::format("{} must be finite and {} 0, got {}", name, zero_allowed ? ">=" : ">", value));
   }
   return value;
 }
@@ -26,7 +27,8 @@ double effective_modulus_pa(double young_modulus_pa, double poisson_ratio) {
   return young_modulus_pa / (2.0 * (1.0 - poisson_ratio * poisson_ratio));
 }
 
-double damping_per_mass(double dissipative_constant_s, double effective_modulus_pa, double effective_mass_kg) {
+double damping_per_mass(double dissipative_constant_s, double effective_modulus_pa,
+                        double effective_mass_kg) {
   return 2.0 * checked(dissipative_constant_s, "dissipative_constant", true) *
          checked(effective_modulus_pa, "effective_modulus", false) /
          checked(effective_mass_kg, "effective_mass", false);
@@ -34,11 +36,13 @@ double damping_per_mass(double dissipative_constant_s, double effective_modulus_
 
 double dissipative_constant_from_damping_per_mass(double damping_per_mass, double effective_modulus_pa,
                                                   double effective_mass_kg) {
-  return checked(damping_per_mass, "damping_per_mass", true) * checked(effective_mass_kg, "effective_mass", false) /
+  return checked(damping_per_mass, "damping_per_mass", true) *
+         checked(effective_mass_kg, "effective_mass", false) /
          (2.0 * checked(effective_modulus_pa, "effective_modulus", false));
 }
 
-double beta_of_coefficients(double elastic_coefficient, double damping_coefficient, double effective_mass_kg) {
+double beta_of_coefficients(double elastic_coefficient, double damping_coefficient,
+                            double effective_mass_kg) {
   const double m = checked(effective_mass_kg, "effective_mass", false);
   const double k = checked(elastic_coefficient, "elastic_coefficient", false) / m;
   const double gamma = checked(damping_coefficient, "damping_coefficient", true) / m;
