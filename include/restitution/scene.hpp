@@ -104,6 +104,21 @@ struct ExternalStudy {
 };
 inline constexpr int kMaxStudyRepeats = 100;
 
+// Input lines for a DEM code (docs/dem.md) and the ε(v) they give; LAMMPS and LIGGGHTS are also run on them
+// and their measured ε(v) plotted against restitution's.
+struct DemTask {
+  std::string name;
+  std::string title;
+  std::string code;                    // lammps | liggghts | mercurydpm | yade | chrono
+  std::string material;                // a [materials.X] of this scene
+  std::optional<double> eps;           // with velocity: calibrate A; without: the material's A
+  std::optional<double> velocity_m_s;  // the calibration speed (YADE's vn; default 1 m/s)
+  CollisionEnd end = CollisionEnd::delayed_recovery;
+  std::vector<double> speeds;  // impact speeds of the comparison [m/s]
+  bool run_code = true;        // LAMMPS and LIGGGHTS: run the code at each speed
+  int line = 0;
+};
+
 struct Scene {
   std::string file_name;
   std::string title;
@@ -117,6 +132,7 @@ struct Scene {
   std::vector<CalibrationTask> calibrations;
   std::vector<DashpotCheck> dashpots;
   std::vector<ExternalStudy> studies;
+  std::vector<DemTask> dems;
 };
 
 // Parses and validates a scene. file_name is used in messages only. Throws InvalidInput.

@@ -8,6 +8,7 @@
 
 #include "cli/json_writer.hpp"
 #include "cli/output_files.hpp"
+#include "cli/scene_dem.hpp"
 #include "cli/scene_tables.hpp"
 #include "cli/work_precision_files.hpp"
 #include "restitution/series.hpp"
@@ -74,11 +75,13 @@ class SceneWriter {
     }
     for (std::size_t i = 0; i < scene_.dashpots.size(); ++i)
       order.emplace_back(scene_.dashpots[i].line, 2, i);
+    for (std::size_t i = 0; i < scene_.dems.size(); ++i) order.emplace_back(scene_.dems[i].line, 3, i);
     std::sort(order.begin(), order.end());
     for (const auto& [line, kind, i] : order) {
       if (kind == 0) sweep(i);
       if (kind == 1) trajectory(i);
       if (kind == 2) dashpot(i);
+      if (kind == 3) dem(i);
     }
     calibrations();
     studies();
@@ -327,6 +330,16 @@ class SceneWriter {
     }
     json_.end_object();
     report_ += "\n";
+  }
+
+  void dem(std::size_t i) {
+    const scene::DemTask& task = scene_.dems[i];
+    DemSection section = dem_section(scene_, task);
+    write_file(task.name + ".csv", section.csv);
+    report_ += fmt::format("## {}\n\n", task.title);
+    report_ += plot("scene_xy", task.name, section.plot_args);
+    report_ += section.markdown;
+    for (auto& w : section.warnings) out_.warnings.push_back(fmt::format("{}: {}", task.name, w));
   }
 
   void calibrations() {

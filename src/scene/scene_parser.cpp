@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "dem/deck.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/scene.hpp"
 #include "restitution/work_precision.hpp"
@@ -133,6 +134,7 @@ class Parser {
     each("trajectory", [this](TomlReader& r) { scene_.trajectories.push_back(read_trajectory(r)); });
     each("calibration", [this](TomlReader& r) { scene_.calibrations.push_back(read_calibration(r)); });
     each("dashpot", [this](TomlReader& r) { scene_.dashpots.push_back(read_dashpot(r)); });
+    each("dem", [this](TomlReader& r) { scene_.dems.push_back(read_dem(r)); });
     for (const char* kind : {"work_precision", "stability"}) {
       each(kind, [this, kind](TomlReader& r) { scene_.studies.push_back(read_study(r, kind)); });
     }
@@ -305,6 +307,38 @@ class Parser {
     return c;
   }
 
+  DemTask read_dem(TomlReader& r) {
+    DemTask d;
+    d.line = r.line();
+    d.name = read_name(r, "dem");
+    d.title = r.text("title").value_or(d.name);
+    const auto code = r.text("code");
+    if (!code) r.fail("code", "missing (lammps, liggghts, mercurydpm, yade or chrono)");
+    try {
+      (void)dem::code_from_name(*code);
+    } catch (const InvalidInput& e) {
+      r.fail("code", e.what());
+    }
+    d.code = *code;
+    const auto material = read_material_name(r);
+    if (!material) r.fail("material", "missing: the [materials.X] the lines are for");
+    d.material = *material;
+    d.eps = r.number("eps");
+    d.velocity_m_s = r.number("velocity");
+    if (d.eps && (*d.eps <= 0.0 || *d.eps >= 1.0)) {
+      r.fail("eps", fmt::format("expected a value in (0, 1), got {}", *d.eps));
+    }
+    if (d.eps && !d.velocity_m_s) r.fail("eps", "needs velocity, the impact speed it was measured at (m/s)");
+    if (d.velocity_m_s) check_positive(r, "velocity", {*d.velocity_m_s});
+    d.end = read_end(r);
+    const auto speeds = r.numbers("speeds");
+    if (!speeds || speeds->empty()) r.fail("speeds", "missing: the impact speeds to compare at (m/s)");
+    check_positive(r, "speeds", *speeds);
+    d.speeds = *speeds;
+    d.run_code = r.flag("run").value_or(true);
+    return d;
+  }
+
   DashpotCheck read_dashpot(TomlReader& r) {
     DashpotCheck d;
     read_heading(r, "dashpot", d);
@@ -392,6 +426,7 @@ void make_quick(Scene& scene, std::size_t points) {
     thin(s.velocity_m_s);
   }
   for (DashpotCheck& d : scene.dashpots) thin(d.damping_ratio);
+  for (DemTask& d : scene.dems) thin(d.speeds);
   for (ExternalStudy& s : scene.studies) {
     thin(s.zeta);
     s.repeats = 1;
