@@ -14,6 +14,7 @@
 #include "material_examples.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
+#include "restitution/scene.hpp"
 #include "restitution/series.hpp"
 #include "restitution/units.hpp"
 
@@ -200,6 +201,49 @@ TEST(DemCli, BadInputExitsWithTwoAndNamesTheProblem) {
   auto no_material = test_support::run_cli("dem --code lammps --dissipative-constant 1e-5");
   EXPECT_EQ(no_material.status, 2);
   EXPECT_NE(no_material.err.find("--young-modulus"), std::string::npos) << no_material.err;
+}
+
+}  // namespace
+}  // namespace restitution
+
+namespace restitution {
+namespace {
+
+constexpr const char* kSceneHead = R"(output = "out"
+[materials.rubber]
+young_modulus = 1e7
+poisson_ratio = 0.45
+density = 1100.0
+radius = 0.01
+dissipative_constant = 5.8e-5
+)";
+
+std::string scene_error(const std::string& dem_table) {
+  try {
+    (void)scene::parse_scene(std::string(kSceneHead) + "[[dem]]\n" + dem_table, "dem.toml");
+  } catch (const InvalidInput& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(DemScene, ParsesATaskAndNamesWhatIsWrong) {
+  const scene::Scene s = scene::parse_scene(
+      std::string(kSceneHead) +
+          "[[dem]]\nname = \"d\"\ncode = \"yade\"\nmaterial = \"rubber\"\nspeeds = [1, 2]\n",
+      "dem.toml");
+  ASSERT_EQ(s.dems.size(), 1U);
+  EXPECT_EQ(s.dems[0].code, "yade");
+  EXPECT_EQ(s.dems[0].end, CollisionEnd::delayed_recovery);
+  EXPECT_NE(scene_error("code = \"gromacs\"\nmaterial = \"rubber\"\nspeeds = [1]\n").find("code"),
+            std::string::npos);
+  EXPECT_NE(scene_error("code = \"lammps\"\nspeeds = [1]\n").find("material"), std::string::npos);
+  EXPECT_NE(
+      scene_error("code = \"lammps\"\nmaterial = \"rubber\"\neps = 0.5\nspeeds = [1]\n").find("velocity"),
+      std::string::npos);
+  EXPECT_NE(scene_error("code = \"lammps\"\nmaterial = \"rubber\"\n").find("speeds"), std::string::npos);
+  EXPECT_NE(scene_error("code = \"lammps\"\nmaterial = \"rubber\"\nspeeds = [-1]\n").find("speeds"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -7,8 +7,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -111,5 +115,56 @@ std::vector<Case> cases() {
 }
 
 INSTANTIATE_TEST_SUITE_P(Codes, DemIntegration, testing::ValuesIn(cases()), case_name);
+
+}  // namespace
+
+namespace {
+
+// Reads one column of a CSV file with a header line.
+std::vector<double> csv_column(const std::filesystem::path& file, const std::string& column) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  std::stringstream names(line);
+  for (std::string name; std::getline(names, name, ',');) header.push_back(name);
+  const auto index =
+      static_cast<std::size_t>(std::find(header.begin(), header.end(), column) - header.begin());
+  std::vector<double> values;
+  while (std::getline(in, line)) {
+    std::stringstream cells(line);
+    std::string cell;
+    for (std::size_t i = 0; std::getline(cells, cell, ','); ++i) {
+      if (i == index) values.push_back(std::stod(cell));
+    }
+  }
+  return values;
+}
+
+TEST(DemScene, ShippedSceneRunsBothCodesAndAgreesWithRestitution) {
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("restitution-dem-scene-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(folder);
+  setenv("RESTITUTION_PYTHON", "/nonexistent/python3", 1);  // the plots are not what is tested here
+  const auto r = restitution::test_support::run_cli(
+      "run " RESTITUTION_SOURCE_DIR "/scenes/dem.toml --quick --output " + folder.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const auto& [name, code] :
+       {std::pair{"steel_lammps", "lammps"}, std::pair{"rubber_liggghts", "liggghts"}}) {
+    const auto csv = folder / (std::string(name) + ".csv");
+    const auto predicted = csv_column(csv, "eps_restitution");
+    const auto measured = csv_column(csv, std::string("eps_") + code);
+    ASSERT_EQ(measured.size(), predicted.size()) << name;
+    ASSERT_GE(predicted.size(), 3U) << name;
+    for (std::size_t i = 0; i < predicted.size(); ++i) {
+      EXPECT_NEAR(measured[i], predicted[i], 1e-6 * std::min(predicted[i], 1.0 - predicted[i]))
+          << name << " " << i;
+    }
+  }
+  const std::string report = restitution::test_support::slurp((folder / "report.md").string());
+  EXPECT_NE(report.find("pair_coeff * * hertz/material"), std::string::npos);
+  EXPECT_NE(report.find("limitForce off"), std::string::npos);
+  std::filesystem::remove_all(folder);
+}
 
 }  // namespace
