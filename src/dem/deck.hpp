@@ -44,9 +44,10 @@ struct Deck {
   Code code = Code::lammps;
   CollisionEnd end = CollisionEnd::delayed_recovery;
   std::vector<Parameter> parameters;
-  std::vector<std::string> lines;                 // to paste into the code's input
-  std::vector<std::string> notes;                 // what the lines do and where they stop being exact
-  double parameter(std::string_view name) const;  // throws std::out_of_range naming an unknown name
+  std::vector<std::string> lines;  // to paste into the code's input
+  std::vector<std::string> notes;  // what the lines do and where they stop being exact
+  [[nodiscard]] double parameter(
+      std::string_view name) const;  // throws std::out_of_range naming an unknown name
 };
 
 // The lines that give `pair` the law with dissipative constant A [s] ending at `end`. `reference_velocity`
