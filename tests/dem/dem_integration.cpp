@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -43,6 +44,11 @@ struct Case {
   Material material;
   std::string end;
 };
+
+// Names the case in test listings (instead of googletest's byte dump of the struct).
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.code << " " << c.material.name << " " << c.end;
+}
 
 std::string case_name(const testing::TestParamInfo<Case>& info) {
   std::string end = info.param.end == "naive" ? "naive" : "delayed";
