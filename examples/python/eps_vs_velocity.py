@@ -3,7 +3,7 @@
 
 Usage: PYTHONPATH=build/release/python /usr/bin/python3 examples/python/eps_vs_velocity.py [OUT.png]
 (default out/eps_vs_velocity.png). The material is illustrative: Y = 200 GPa, nu = 0.3, R = 1 cm,
-density 7800 kg/m^3, dissipative constant A = 1e-6 s.
+density 7800 kg/m^3, dissipative constant A = 2e-5 s (strongly damped, so that the two ends part).
 """
 
 import pathlib
@@ -22,7 +22,7 @@ def main():
     out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "out/eps_vs_velocity.png")
     out.parent.mkdir(parents=True, exist_ok=True)
     steel = restitution.Material(young_modulus=2.0e11, poisson_ratio=0.3, radius=0.01, density=7800.0,
-                                 dissipative_constant=1.0e-6)
+                                 dissipative_constant=2.0e-5)
     velocity = np.logspace(-3, 2, 200)  # m/s
     figure, axes = plt.subplots(figsize=(6.4, 4.2))
     for end, style in (("delayed-recovery", "-"), ("naive", "--")):
