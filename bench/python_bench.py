@@ -23,16 +23,16 @@ import restitution
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 PEER = ROOT / "build" / "release" / "bench" / "bench_python_peer"
-SCALAR_CALLS = 20_000
+SCALAR_CALLS = 2_000  # as BM_ScalarPeer's iterations
+SCALAR_ROUNDS = 5  # short scalar runs per repeat, alternating with the C++ peer, against drifting load
 
 
-def cxx_peer():
-    """(sweep seconds, scalar seconds per solve) from one run of the C++ peer."""
-    out = subprocess.run([str(PEER), "--benchmark_format=json"], check=True, capture_output=True, text=True)
-    rows = {row["name"].split("/")[0]: row for row in json.loads(out.stdout)["benchmarks"]}
-    sweep = rows["BM_SweepPeer"]["real_time"] / 1e3  # ms
-    scalar = rows["BM_ScalarPeer"]["real_time"] / 1e6  # us
-    return sweep, scalar
+def cxx_peer(case):
+    """Seconds of one run of the C++ peer's case: the whole sweep, or one scalar solve."""
+    out = subprocess.run([str(PEER), "--benchmark_format=json", f"--benchmark_filter={case}"], check=True,
+                         capture_output=True, text=True)
+    row = json.loads(out.stdout)["benchmarks"][0]
+    return row["real_time"] * {"ms": 1e-3, "us": 1e-6}[row["time_unit"]]
 
 
 def python_sweep(zetas):
@@ -59,23 +59,25 @@ def main():
     restitution.eps(scalar_zetas, method="taylor")  # warm up: load, first allocation
     samples = {"cxx_sweep": [], "py_sweep": [], "cxx_scalar": [], "py_scalar": []}
     for _ in range(repeats):
-        cxx_sweep, cxx_scalar = cxx_peer()
-        samples["cxx_sweep"].append(cxx_sweep)
-        samples["cxx_scalar"].append(cxx_scalar)
+        samples["cxx_sweep"].append(cxx_peer("BM_SweepPeer"))
         samples["py_sweep"].append(python_sweep(sweep_zetas))
-        samples["py_scalar"].append(python_scalar(scalar_zetas))
+        for _ in range(SCALAR_ROUNDS):
+            samples["cxx_scalar"].append(cxx_peer("BM_ScalarPeer"))
+            samples["py_scalar"].append(python_scalar(scalar_zetas))
     m = {key: statistics.median(values) for key, values in samples.items()}
     load = os.getloadavg()
     print(f"## Python module vs the C++ library (bench/python_bench.py), "
           f"{datetime.datetime.utcnow():%Y-%m-%d %H:%M} UTC\n")
     print(f"{os.cpu_count()} cores, load average {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; medians of {repeats} "
-          f"alternating repeats; delayed-recovery end, method taylor, tolerance 1e-10.\n")
+          f"alternating sweeps and {repeats * SCALAR_ROUNDS} alternating runs of {SCALAR_CALLS} scalar calls; "
+          "delayed-recovery end, method taylor, tolerance 1e-10. Command: "
+          "`PYTHONPATH=build/release/python /usr/bin/python3 bench/python_bench.py`.\n")
     print("| case | C++ library | Python module | ratio Python / C++ | difference |")
     print("|---|---|---|---|---|")
     print(f"| 10^5 zeta log-spaced in [1e-3, 1e3], all cores | {m['cxx_sweep'] * 1e3:.1f} ms | "
           f"{m['py_sweep'] * 1e3:.1f} ms | {m['py_sweep'] / m['cxx_sweep']:.3f} | "
           f"{(m['py_sweep'] - m['cxx_sweep']) * 1e3:+.1f} ms |")
-    print(f"| scalar eps, per call (100 zeta cycled) | {m['cxx_scalar'] * 1e6:.2f} µs | "
+    print(f"| scalar eps, per call (100 zeta log-spaced in [1e-3, 1e3], cycled) | {m['cxx_scalar'] * 1e6:.2f} µs | "
           f"{m['py_scalar'] * 1e6:.2f} µs | {m['py_scalar'] / m['cxx_scalar']:.3f} | "
           f"{(m['py_scalar'] - m['cxx_scalar']) * 1e6:+.2f} µs |")
 

@@ -95,7 +95,7 @@ def eps(zeta=None, end="delayed-recovery", tolerance=1e-10, method="auto", *, be
     NumericalFailure (accuracy not reached; names the index).
     """
     if type(zeta) is float and beta is None and material is None and velocity is None:
-        return _core.eps_scalar(zeta, _text("end", end), tolerance, _text("method", method))
+        return _core.eps_scalar(zeta, end, tolerance, method)  # fast path; pybind11 checks the types
     z = zeta_of(zeta, beta=beta, velocity=velocity, material=material)
     if isinstance(z, float):
         return _core.eps_scalar(z, _text("end", end), _tolerance(tolerance), _text("method", method))
