@@ -88,7 +88,8 @@ def eps(zeta=None, end="delayed-recovery", tolerance=1e-10, method="auto", *, be
     end: "delayed-recovery" (the force vanishes; the physical end) or "naive" (the overlap vanishes).
     tolerance: |eps - eps_exact| <= tolerance * min(eps, 1 - eps), in [1e-14, 1e-2] (CVODE methods: >= 1e-11,
         taylor: >= 1e-13).
-    method: "auto" (CVODE, BDF or Adams per regime), "bdf", "adams" or "taylor" (Taylor series; fastest).
+    method: "auto" (CVODE, BDF or Adams per regime), "bdf", "adams" or "taylor" (Taylor series; fastest;
+        the naive end for zeta <= 100 only).
     Returns a float for scalar input, else a float64 array of the same (broadcast) shape, computed on all
     cores with the GIL released (Ctrl-C -> KeyboardInterrupt).
     Raises ValueError (bad value, empty array; the message names the index), TypeError (wrong type),

@@ -10,6 +10,7 @@
 #include "bindings.hpp"
 #include "parallel_solve.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/taylor_engine.hpp"
 #include "restitution/units.hpp"
 #include "solve_options.hpp"
 
@@ -38,13 +39,25 @@ double eps_scalar(double zeta, const std::string& end, double tolerance, const s
   return end_of(solve_one(zeta, options), end_from_name(end)).eps;
 }
 
+// The refusals that depend on ζ, checked before the sweep so that the message can name the index (the
+// sweep reports them without it).
+void check_point(double zeta, const SolveOptions& options) {
+  ContactLaw::hertz_natural(zeta);
+  if (options.method == Method::taylor && options.ends.naive && zeta > kTaylorNaiveZetaMax) {
+    throw InvalidInput(
+        fmt::format("method taylor computes the naive end only for zeta <= {:g}, got zeta={}: use "
+                    "method='auto' or 'bdf'",
+                    kTaylorNaiveZetaMax, zeta));
+  }
+}
+
 DoubleArray eps_array(const DoubleArray& zeta, const std::string& end, double tolerance,
                       const std::string& method) {
   const SolveOptions options = solve_options(end, tolerance, method, false);
   const CollisionEnd which = end_from_name(end);
   if (zeta.size() == 0) throw InvalidInput("zeta is an empty array: give at least one value");
   const double* in = zeta.data();
-  check_elements(zeta, "zeta", [in](std::size_t i) { ContactLaw::hertz_natural(in[i]); });
+  check_elements(zeta, "zeta", [in, &options](std::size_t i) { check_point(in[i], options); });
   const std::vector<double> zetas(in, in + zeta.size());
   DoubleArray eps(std::vector<py::ssize_t>(zeta.shape(), zeta.shape() + zeta.ndim()));
   double* out = eps.mutable_data();

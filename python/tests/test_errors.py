@@ -23,6 +23,11 @@ def test_bad_zeta_in_array_names_the_index():
         restitution.eps(beta=0.1, velocity=[1.0, 0.0])
 
 
+def test_taylor_naive_end_beyond_its_range_names_the_index():
+    with pytest.raises(ValueError, match=r"naive end only for zeta <= 100, got zeta=1000.*\(zeta at index 3\)"):
+        restitution.eps([1.0, 10.0, 100.0, 1000.0], end="naive", method="taylor")
+
+
 def test_empty_arrays():
     with pytest.raises(ValueError, match="empty array"):
         restitution.eps([])
