@@ -11,7 +11,7 @@
 
 namespace restitution {
 
-// bdf, adams: CVODE; taylor: the Taylor-series engine (restitution/taylor_engine.hpp); automatic: CVODE,
+// bdf, adams: CVODE; taylor: the Taylor-series engine (taylor/taylor_engine.hpp); automatic: CVODE,
 // BDF or Adams per regime.
 enum class Method { bdf, adams, automatic, taylor };
 const char* method_name(Method method);  // "bdf" | "adams" | "auto" | "taylor"
@@ -33,7 +33,7 @@ struct SolveOptions {
   EndSelection ends;
   bool keep_trajectory = false;  // record (τ, x, x', x'') at every internal step and at every event
   // Hertz law only: integrate in u = sqrt(x) near x = 0, where the solution is analytic in u but not in τ
-  // (DESIGN.md §4). false integrates in τ throughout, for comparison.
+  // (docs/design.md §4). false integrates in τ throughout, for comparison.
   bool smooth_ends = true;
   // Most internal CVODE steps per phase of the collision; beyond it the solve fails with CVODE's "too much
   // work" (flag -1). The default never binds on the collisions of this project (at most a few thousand

@@ -12,8 +12,8 @@
 #include "cli/series_reports.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"
-#include "restitution/series_coefficients.hpp"
 #include "restitution/series_tables.hpp"
+#include "series_study/series_coefficients.hpp"
 
 namespace restitution::cli {
 namespace {

@@ -17,7 +17,7 @@
 #include "cli/output_files.hpp"
 #include "cli/sweep_table.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/sweep.hpp"
+#include "sweep/sweep.hpp"
 
 namespace restitution::cli {
 namespace {

@@ -9,7 +9,7 @@
 #include "core/cvode_integrator.hpp"
 #include "core/tolerance_policy.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/taylor_engine.hpp"
+#include "taylor/taylor_engine.hpp"
 
 namespace restitution {
 

@@ -52,7 +52,7 @@ Magnitudes hertz_magnitudes(double zeta, const EndSelection& ends) {
   Magnitudes m;
   const double z = std::max(zeta, 1.0);
   // Large ζ: x_max ~ (3/(2ζ))^{2/3}; the delayed end has ε ~ ζ^{-5/3}; the naive end is reached through
-  // x ~ ζ^{-4} with ε ~ ζ^{-5} (DESIGN.md §4).
+  // x ~ ζ^{-4} with ε ~ ζ^{-5} (docs/design.md §4).
   m.x = std::pow(z, -2.0 / 3.0);
   m.velocity = std::pow(z, -5.0 / 3.0);
   if (ends.naive) {
@@ -80,7 +80,7 @@ double time_limit(const ContactLaw& law, const EndSelection& ends) {
     const double r = law.parameter;
     return (ends.naive && r < 1.0) ? 100.0 * (10.0 + M_PI / std::sqrt(1.0 - r * r)) : 1000.0;
   }
-  // Naive tail: slow relaxation over ~ζ·ln(ζ^{10/3}) (DESIGN.md §4); generous margin.
+  // Naive tail: slow relaxation over ~ζ·ln(ζ^{10/3}) (docs/design.md §4); generous margin.
   const double zeta = law.parameter;
   return law.time_scale * 1000.0 * (1.0 + zeta) * (1.0 + std::log1p(zeta));
 }

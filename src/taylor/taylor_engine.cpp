@@ -1,4 +1,4 @@
-#include "restitution/taylor_engine.hpp"
+#include "taylor/taylor_engine.hpp"
 
 #include <fmt/core.h>
 
