@@ -2,6 +2,7 @@
 // The collision solver: shoots the equation of motion of a ContactLaw with CVODE and detects the
 // end(s) of the collision as events. One solver holds one CVODE integrator per method and reuses it
 // across solves; use one solver per thread.
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -21,9 +22,17 @@ enum class CollisionEnd { naive, delayed_recovery };
 const char* end_name(CollisionEnd end);               // "naive" | "delayed-recovery"
 CollisionEnd end_from_name(const std::string& name);  // throws InvalidInput naming the value
 
+// Both ends, in the order a collision reaches them last (for loops over the ends).
+inline constexpr std::array<CollisionEnd, 2> kCollisionEnds{CollisionEnd::naive,
+                                                            CollisionEnd::delayed_recovery};
+
+// Which ends a solve computes. Kept as two flags because most callers ask for both; index it by CollisionEnd.
 struct EndSelection {
   bool naive = true;             // end where the overlap vanishes, x = 0
   bool delayed_recovery = true;  // end where the force vanishes, c_d x' + c_s x = 0
+  [[nodiscard]] bool operator[](CollisionEnd end) const {
+    return end == CollisionEnd::naive ? naive : delayed_recovery;
+  }
 };
 
 struct SolveOptions {
@@ -94,6 +103,14 @@ struct CollisionResult {
   std::optional<EndResult> delayed_recovery;
   SolverStats stats;
   std::vector<TrajectoryPoint> trajectory;  // empty unless SolveOptions::keep_trajectory
+
+  // The result at one end: empty when the end was not requested (or does not exist for the law).
+  [[nodiscard]] const std::optional<EndResult>& operator[](CollisionEnd end) const {
+    return end == CollisionEnd::naive ? naive : delayed_recovery;
+  }
+  [[nodiscard]] std::optional<EndResult>& operator[](CollisionEnd end) {
+    return end == CollisionEnd::naive ? naive : delayed_recovery;
+  }
 };
 
 class CollisionSolver {

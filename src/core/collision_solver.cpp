@@ -47,7 +47,7 @@ EndSelection selection_of(CollisionEnd end) {
 }
 
 const EndResult& end_of(const CollisionResult& result, CollisionEnd end) {
-  const auto& value = end == CollisionEnd::naive ? result.naive : result.delayed_recovery;
+  const auto& value = result[end];
   if (!value) throw NumericalFailure(fmt::format("no {} end at zeta={}", end_name(end), result.parameter));
   return *value;
 }
