@@ -61,6 +61,9 @@ double min_tolerance(Method method);
 
 // Throws InvalidInput naming the tolerance or the ends when the options cannot be honoured for any law.
 void check_solve_options(const SolveOptions& options);
+// check_solve_options plus the ends that do not exist for this law (the naive end of an overdamped dash-pot):
+// every engine checks its request with it.
+void check_solve_request(const ContactLaw& law, const SolveOptions& options);
 
 // All times and lengths below are in the natural scaling (x'(0) = 1) whatever form the law was given in.
 struct EndResult {
