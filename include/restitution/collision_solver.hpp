@@ -15,7 +15,8 @@ namespace restitution {
 // bdf, adams: CVODE; taylor: the Taylor-series engine (taylor/taylor_engine.hpp); automatic: CVODE,
 // BDF or Adams per regime.
 enum class Method { bdf, adams, automatic, taylor };
-const char* method_name(Method method);  // "bdf" | "adams" | "auto" | "taylor"
+const char* method_name(Method method);            // "bdf" | "adams" | "auto" | "taylor"
+Method method_from_name(const std::string& name);  // the inverse; throws InvalidInput naming the value
 
 // One end of the collision, for callers that ask for a single end.
 enum class CollisionEnd { naive, delayed_recovery };

@@ -32,6 +32,13 @@ const char* method_name(Method method) {
   return "?";
 }
 
+Method method_from_name(const std::string& name) {
+  for (const Method method : {Method::bdf, Method::adams, Method::automatic, Method::taylor}) {
+    if (name == method_name(method)) return method;
+  }
+  throw InvalidInput(fmt::format("method must be bdf, adams, auto or taylor, got '{}'", name));
+}
+
 const char* end_name(CollisionEnd end) {
   return end == CollisionEnd::naive ? "naive" : "delayed-recovery";
 }
