@@ -11,7 +11,7 @@
 #include "cli/json_writer.hpp"
 #include "cli/series_reports.hpp"
 #include "restitution/series.hpp"
-#include "restitution/series_named.hpp"
+#include "series_study/series_named.hpp"
 
 namespace restitution::cli {
 namespace {

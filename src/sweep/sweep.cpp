@@ -7,7 +7,7 @@
 #include <thread>
 
 #include "restitution/errors.hpp"
-#include "restitution/sweep.hpp"
+#include "sweep/sweep.hpp"
 
 namespace restitution {
 namespace {

@@ -5,9 +5,9 @@
 #include <span>
 
 #include "restitution/errors.hpp"
-#include "restitution/series_coefficients.hpp"
-#include "restitution/series_named.hpp"
 #include "restitution/series_tables.hpp"
+#include "series_study/series_coefficients.hpp"
+#include "series_study/series_named.hpp"
 
 namespace restitution::series {
 namespace {
