@@ -92,7 +92,7 @@ int event_functions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data) 
 }  // namespace
 
 CvodeIntegrator::CvodeIntegrator(Method method, const sundials::Context& context)
-    : state_(sundials::make_serial_vector(kStateSize, context)),
+    : state_(sundials::make_small_vector(kStateSize, context)),
       absolute_tolerance_(sundials::make_serial_vector(kStateSize, context)),
       memory_(method == Method::adams ? CV_ADAMS : CV_BDF, context) {
   N_VConst(0.0, state_.get());

@@ -16,6 +16,7 @@
 #include "restitution/collision_solver.hpp"
 #include "restitution/contact_law.hpp"
 #include "sundials/handles.hpp"
+#include "sundials/small_vector.hpp"
 
 namespace restitution::detail {
 
