@@ -52,7 +52,8 @@ TEST(ParallelFor, NothingToDoRunsNoBody) {
 }
 
 TEST(ParallelFor, PerPointFailuresRecordedByTheBodyLetTheRestGoOn) {
-  std::vector<int> failed(200, 0), done(200, 0);
+  std::vector<int> failed(200, 0);
+  std::vector<int> done(200, 0);
   parallel_for({200, 2, {}}, [&]() -> IndexBody {
     return [&](std::size_t i) {
       try {

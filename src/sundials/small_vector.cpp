@@ -8,101 +8,110 @@ namespace {
 
 // The operations are called through SUNDIALS' C function table: no exception may leave them, and none
 // can (plain arithmetic on doubles).
-struct View {
-  explicit View(N_Vector v) : data(NV_DATA_S(v)), size(NV_LENGTH_S(v)) {}
-  double* data;
-  sunindextype size;
-};
+double* data(N_Vector v) {
+  return NV_DATA_S(v);
+}
+sunindextype size(N_Vector v) {
+  return NV_LENGTH_S(v);
+}
+
+// out[i] = f(i) for every component; the pointers are read once (SUNDIALS' content struct).
+template <class F>
+void assign(N_Vector out, F f) {
+  double* z = data(out);
+  const sunindextype n = size(out);
+  for (sunindextype i = 0; i < n; ++i) z[i] = f(i);
+}
 
 void linear_sum(double a, N_Vector x, double b, N_Vector y, N_Vector z) noexcept {
-  const View vx(x), vy(y), vz(z);
-  for (sunindextype i = 0; i < vz.size; ++i) vz.data[i] = a * vx.data[i] + b * vy.data[i];
+  const double* xd = data(x);
+  const double* yd = data(y);
+  assign(z, [=](sunindextype i) { return a * xd[i] + b * yd[i]; });
 }
 
 void set_constant(double c, N_Vector z) noexcept {
-  const View vz(z);
-  std::fill(vz.data, vz.data + vz.size, c);
+  assign(z, [=](sunindextype) { return c; });
 }
 
 void product(N_Vector x, N_Vector y, N_Vector z) noexcept {
-  const View vx(x), vy(y), vz(z);
-  for (sunindextype i = 0; i < vz.size; ++i) vz.data[i] = vx.data[i] * vy.data[i];
+  const double* xd = data(x);
+  const double* yd = data(y);
+  assign(z, [=](sunindextype i) { return xd[i] * yd[i]; });
 }
 
 void quotient(N_Vector x, N_Vector y, N_Vector z) noexcept {
-  const View vx(x), vy(y), vz(z);
-  for (sunindextype i = 0; i < vz.size; ++i) vz.data[i] = vx.data[i] / vy.data[i];
+  const double* xd = data(x);
+  const double* yd = data(y);
+  assign(z, [=](sunindextype i) { return xd[i] / yd[i]; });
 }
 
 void scale(double c, N_Vector x, N_Vector z) noexcept {
-  const View vx(x), vz(z);
-  for (sunindextype i = 0; i < vz.size; ++i) vz.data[i] = c * vx.data[i];
+  const double* xd = data(x);
+  assign(z, [=](sunindextype i) { return c * xd[i]; });
 }
 
 void absolute(N_Vector x, N_Vector z) noexcept {
-  const View vx(x), vz(z);
-  for (sunindextype i = 0; i < vz.size; ++i) vz.data[i] = std::abs(vx.data[i]);
+  const double* xd = data(x);
+  assign(z, [=](sunindextype i) { return std::abs(xd[i]); });
 }
 
 void inverse(N_Vector x, N_Vector z) noexcept {
-  const View vx(x), vz(z);
-  for (sunindextype i = 0; i < vz.size; ++i) vz.data[i] = 1.0 / vx.data[i];
+  const double* xd = data(x);
+  assign(z, [=](sunindextype i) { return 1.0 / xd[i]; });
 }
 
 void add_constant(N_Vector x, double b, N_Vector z) noexcept {
-  const View vx(x), vz(z);
-  for (sunindextype i = 0; i < vz.size; ++i) vz.data[i] = vx.data[i] + b;
+  const double* xd = data(x);
+  assign(z, [=](sunindextype i) { return xd[i] + b; });
+}
+
+void compare(double c, N_Vector x, N_Vector z) noexcept {
+  const double* xd = data(x);
+  assign(z, [=](sunindextype i) { return std::abs(xd[i]) >= c ? 1.0 : 0.0; });
 }
 
 double max_norm(N_Vector x) noexcept {
-  const View vx(x);
+  const double* xd = data(x);
   double m = 0.0;
-  for (sunindextype i = 0; i < vx.size; ++i) m = std::max(m, std::abs(vx.data[i]));
+  for (sunindextype i = 0; i < size(x); ++i) m = std::max(m, std::abs(xd[i]));
   return m;
 }
 
 double weighted_square_sum(N_Vector x, N_Vector w) noexcept {
-  const View vx(x), vw(w);
+  const double* xd = data(x);
+  const double* wd = data(w);
   double sum = 0.0;
-  for (sunindextype i = 0; i < vx.size; ++i) {
-    const double p = vx.data[i] * vw.data[i];
-    sum += p * p;
-  }
+  for (sunindextype i = 0; i < size(x); ++i) sum += (xd[i] * wd[i]) * (xd[i] * wd[i]);
   return sum;
 }
 
 double weighted_rms_norm(N_Vector x, N_Vector w) noexcept {
-  return std::sqrt(weighted_square_sum(x, w) / static_cast<double>(NV_LENGTH_S(x)));
+  return std::sqrt(weighted_square_sum(x, w) / static_cast<double>(size(x)));
 }
 
 double minimum(N_Vector x) noexcept {
-  const View vx(x);
-  return *std::min_element(vx.data, vx.data + vx.size);
+  return *std::min_element(data(x), data(x) + size(x));
 }
 
-void compare(double c, N_Vector x, N_Vector z) noexcept {
-  const View vx(x), vz(z);
-  for (sunindextype i = 0; i < vz.size; ++i) vz.data[i] = std::abs(vx.data[i]) >= c ? 1.0 : 0.0;
-}
-
-// z = Σ c_j x_j (x_0 may be z itself).
-int linear_combination(int count, double* c, N_Vector* x, N_Vector z) noexcept {
-  const View vz(z);
-  for (sunindextype i = 0; i < vz.size; ++i) {
+// z = Σ c_j x_j (x_0 may be z itself: each component is read before it is written).
+int linear_combination(int count, double* c,  // NOLINT(readability-non-const-parameter): SUNDIALS signature
+                       N_Vector* x, N_Vector z) noexcept {
+  assign(z, [=](sunindextype i) {
     double sum = 0.0;
-    for (int j = 0; j < count; ++j) sum += c[j] * NV_DATA_S(x[j])[i];
-    vz.data[i] = sum;
-  }
+    for (int j = 0; j < count; ++j) sum += c[j] * data(x[j])[i];
+    return sum;
+  });
   return 0;
 }
 
 // z_j = a_j x + y_j.
-int scale_add_multi(int count, double* a, N_Vector x, N_Vector* y, N_Vector* z) noexcept {
-  const View vx(x);
+int scale_add_multi(int count, double* a,  // NOLINT(readability-non-const-parameter): SUNDIALS signature
+                    N_Vector x, N_Vector* y, N_Vector* z) noexcept {
+  const double* xd = data(x);
   for (int j = 0; j < count; ++j) {
-    const double* yj = NV_DATA_S(y[j]);
-    double* zj = NV_DATA_S(z[j]);
-    for (sunindextype i = 0; i < vx.size; ++i) zj[i] = a[j] * vx.data[i] + yj[i];
+    const double* yd = data(y[j]);
+    const double aj = a[j];
+    assign(z[j], [=](sunindextype i) { return aj * xd[i] + yd[i]; });
   }
   return 0;
 }
