@@ -2,6 +2,8 @@
 // and the exported C header (same text as the compiled one; compiled by gcc and g++, same bits).
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -16,6 +18,7 @@
 
 #include "cli_runner.hpp"
 #include "reference_checks.hpp"
+#include "restitution/calibration.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/fast.hpp"
 
@@ -117,6 +120,51 @@ TEST(Fast, InverseRecoversZeta) {
       EXPECT_NEAR(fast::zeta_from_eps(fast::eps(zeta, end), end) / zeta, 1.0, 1e-12 + rounding) << zeta;
     }
   }
+}
+
+// Calibration through the table agrees with root finding on the solver, without a single integration, and
+// reaches ε below the solver's range (ζ > 1e4).
+TEST(FastCalibration, AgreesWithTheSolverAndNeedsNoSolve) {
+  CollisionSolver solver;
+  for (const CollisionEnd end : kEnds) {
+    for (const double eps : {0.95, 0.8, 0.3, 0.01}) {
+      CalibrationRequest request;
+      request.eps = eps;
+      request.velocity_m_s = 2.0;
+      request.end = end;
+      request.k = 3.0e5;
+      const Calibration solved = calibrate(request, solver);
+      request.fast = true;
+      const Calibration fast = calibrate(request, solver);
+      EXPECT_EQ(fast.solves, 0);
+      EXPECT_NEAR(fast.zeta / solved.zeta, 1.0, 1e-8) << eps << " " << end_name(end);
+      EXPECT_NEAR(*fast.dissipative_constant_s / *solved.dissipative_constant_s, 1.0, 1e-8);
+      EXPECT_NEAR(fast.eps_at_zeta / eps, 1.0, 1e-13);
+    }
+  }
+  CalibrationRequest beyond;
+  beyond.eps = 1e-9;
+  beyond.velocity_m_s = 1.0;
+  beyond.fast = true;
+  EXPECT_NEAR(fast::eps(calibrate(beyond, solver).zeta, CollisionEnd::delayed_recovery) / 1e-9, 1.0, 1e-13);
+  beyond.eps = 1.0;
+  EXPECT_THROW((void)calibrate(beyond, solver), InvalidInput);
+}
+
+TEST(FastCalibration, CommandLine) {
+  const std::string material =
+      " --young-modulus 1e7 --poisson-ratio 0.45 --radius 0.01 --density 1100 --json";
+  const auto fast = test_support::run_cli("calibrate --eps 0.8 --velocity 1 --method fast" + material);
+  const auto solved = test_support::run_cli("calibrate --eps 0.8 --velocity 1" + material);
+  ASSERT_EQ(fast.status, 0) << fast.err;
+  ASSERT_EQ(solved.status, 0) << solved.err;
+  const auto f = nlohmann::json::parse(fast.out), s = nlohmann::json::parse(solved.out);
+  EXPECT_EQ(f["method"], "fast");
+  EXPECT_EQ(f["solves"], 0);
+  EXPECT_NEAR(f["beta"].get<double>() / s["beta"].get<double>(), 1.0, 1e-8);
+  EXPECT_NEAR(f["dissipative_constant_s"].get<double>() / s["dissipative_constant_s"].get<double>(), 1.0,
+              1e-8);
+  EXPECT_EQ(test_support::run_cli("calibrate --eps 0 --velocity 1 --method fast").status, 2);
 }
 
 std::string source_file(const std::string& relative) {
