@@ -92,6 +92,10 @@ int main(int argc, char** argv) {
     const std::vector<double> c(coefficients().c.begin() + 1, coefficients().c.end());
     run(s, dem_zeta(), [&c](double z) { return series::naive_series(z, c).eps; });
   });
+  benchmark::RegisterBenchmark("delayed_recovery_series_60/dem", [](benchmark::State& s) {
+    const std::vector<double> h(coefficients().h.begin(), coefficients().h.begin() + 61);
+    run(s, dem_zeta(), [&h](double z) { return series::delayed_recovery_series(z, h).eps; });
+  });
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
