@@ -10,6 +10,7 @@ usage: fast_comparison.py RESTITUTION_EXE BENCH_FAST_CSV REFERENCE_CSV OUT.png O
 """
 import csv
 import ctypes
+import json
 import os
 import subprocess
 import sys
@@ -78,6 +79,17 @@ def main(exe, bench_csv, reference_csv, png_path, md_path):
         for name, end, _, _ in APPROXIMATIONS:
             curves[name] = [(float(r["zeta"]), error(funcs, end, float(r["zeta"]), float(r[name + "_eps"]),
                                                      float(r[name + "_one_minus_eps"]))) for r in rows]
+            # beyond the validation grid (it ends at zeta = 10): `series eval`, 4 points a decade
+            last = max(float(r["zeta"]) for r in rows)
+            for k in range(1, 13):
+                zeta = last * 10 ** (k / 4)
+                if zeta > ZETA_MAX * 1.0001:
+                    break
+                kind = {"naive-40": "naive", "delayed-recovery-60": "delayed-recovery"}.get(name, name)
+                terms = {"naive-40": ["--terms", "40"], "delayed-recovery-60": ["--terms", "60"]}.get(name, [])
+                v = json.loads(subprocess.run([exe, "series", "eval", "--kind", kind, "--zeta", repr(zeta), "--json"]
+                                              + terms, check=True, capture_output=True, text=True).stdout)
+                curves[name].append((zeta, error(funcs, end, zeta, v["eps"], v["one_minus_eps"])))
         with open(reference_csv, newline="") as f:
             ref = [r for r in csv.DictReader(line for line in f if not line.startswith("#"))
                    if ZETA_MIN <= float(r["zeta"]) <= ZETA_MAX]
@@ -109,8 +121,11 @@ def main(exe, bench_csv, reference_csv, png_path, md_path):
     entries += [(f"fast table, {end}", costs.get(FAST[end], float("nan")), max(e for _, e in fast[end]))
                 for end in ("naive", "delayed")]
     for i, (label, ns, worst) in enumerate(entries):
-        right.scatter(ns, max(worst, 1e-17), color=cmap(i) if i < len(APPROXIMATIONS) else "k", s=40)
-        right.annotate(label, (ns, max(worst, 1e-17)), fontsize=7, xytext=(4, 4), textcoords="offset points")
+        shown = min(max(worst, 1e-17), 1e3)  # the series diverge beyond their radius: drawn at the top
+        right.scatter(ns, shown, color=cmap(i) if i < len(APPROXIMATIONS) else "k", s=40,
+                      marker="^" if worst > 1e3 else "o")
+        right.annotate(label + (f" ({worst:.0e})" if worst > 1e3 else ""), (ns, shown), fontsize=7,
+                       textcoords="offset points", xytext=(4, 4 - 12 * (i % 2)))
     right.set_yscale("log")
     right.set_xscale("log")
     right.set_xlabel("median CPU ns per call (random ζ in [1e-4, 1e4])")
