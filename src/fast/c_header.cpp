@@ -120,6 +120,7 @@ static inline double restitution_max_compression_time(double zeta) {
                                      RESTITUTION_FAST_TAU_MAX_ZERO, RESTITUTION_FAST_TAU_MAX_LO, zeta);
 }
 
+/* NOLINTEND */
 #endif /* RESTITUTION_FAST_H */
 )C";
 
@@ -210,6 +211,7 @@ std::string c_header_text(const TableData& d) {
  */
 #ifndef RESTITUTION_FAST_H
 #define RESTITUTION_FAST_H
+/* NOLINTBEGIN: C99, which C++ linters would rewrite into C++ */
 #include <math.h>
 
 /* How these tables were made (the generator's settings and measured errors): */

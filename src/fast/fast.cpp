@@ -9,9 +9,7 @@
 #include "fast/c_header.hpp"
 #include "restitution/errors.hpp"
 
-// NOLINTBEGIN: generated C99 (src/fast/fast_table.h, `restitution fast-table`)
-#include "fast/fast_table.h"
-// NOLINTEND
+#include "fast/fast_table.h"  // generated C99 (`restitution fast-table`)
 
 namespace restitution::fast {
 namespace {
