@@ -184,6 +184,33 @@ TEST(FastHeader, ExportIsTheCompiledHeader) {
   std::filesystem::remove_all(dir);
 }
 
+// The generator end to end on a small range: it runs, records its settings, measures errors inside the
+// contract; bad settings exit with status 2.
+TEST(FastTable, GeneratorOnASmallRange) {
+  const auto dir = std::filesystem::temp_directory_path() / "restitution-fast-table";
+  std::filesystem::create_directories(dir);
+  const std::string out = (dir / "t.h").string();
+  const auto r = test_support::run_cli("fast-table --out " + out +
+                                       " --s-lo 0 --s-hi-naive 0.25 --s-hi-delayed 0.25 --checks 3");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string text = test_support::slurp(out);
+  EXPECT_NE(text.find("--s-lo 0 --s-hi-naive 0.25"), std::string::npos);
+  EXPECT_NE(text.find("static inline double restitution_eps_naive(double zeta)"), std::string::npos);
+  const auto at = r.out.find("max |d eps| / min(eps, 1-eps): naive ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  double naive = 1;
+  double delayed = 1;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + at, "max |d eps| / min(eps, 1-eps): naive %lf, delayed recovery %lf",
+                        &naive, &delayed),
+            2);
+  EXPECT_LT(naive, 1e-14);
+  EXPECT_LT(delayed, 1e-14);
+  EXPECT_EQ(test_support::run_cli("fast-table --out " + out + " --degree 1").status, 2);
+  EXPECT_EQ(test_support::run_cli("fast-table --out " + out + " --s-lo 3").status, 2);
+  EXPECT_EQ(test_support::run_cli("fast-table").status, 2);
+  std::filesystem::remove_all(dir);
+}
+
 // A C program on the header: reads arguments as hex floats, prints the six functions as hex floats.
 constexpr const char* kDriver = R"C(#include "restitution_fast.h"
 #include <stdio.h>
