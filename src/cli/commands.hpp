@@ -18,6 +18,7 @@ void add_calibrate_command(CLI::App& app, Action& chosen);
 void add_run_command(CLI::App& app, Action& chosen);
 void add_series_command(CLI::App& app, Action& chosen);
 void add_sweep_command(CLI::App& app, Action& chosen);
+void add_dem_command(CLI::App& app, Action& chosen);
 void add_fast_table_command(CLI::App& app, Action& chosen);
 void add_export_command(CLI::App& app, Action& chosen);
 
