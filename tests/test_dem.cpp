@@ -14,9 +14,9 @@
 #include "material_examples.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
-#include "restitution/scene.hpp"
 #include "restitution/series.hpp"
 #include "restitution/units.hpp"
+#include "scene/scene.hpp"
 
 namespace restitution {
 namespace {

@@ -10,9 +10,9 @@
 #include "bindings.hpp"
 #include "parallel_solve.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/taylor_engine.hpp"
 #include "restitution/units.hpp"
 #include "solve_options.hpp"
+#include "taylor/taylor_engine.hpp"
 
 namespace py = pybind11;
 

@@ -6,7 +6,7 @@
 #include <chrono>
 #include <future>
 
-#include "restitution/sweep.hpp"
+#include "sweep/sweep.hpp"
 
 namespace restitution::python {
 

@@ -8,7 +8,7 @@
 
 #include "bindings.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/series_named.hpp"
+#include "series_study/series_named.hpp"
 
 namespace py = pybind11;
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "restitution/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace restitution::cli {
 

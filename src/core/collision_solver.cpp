@@ -9,7 +9,7 @@
 #include "core/cvode_integrator.hpp"
 #include "core/tolerance_policy.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/taylor_engine.hpp"
+#include "taylor/taylor_engine.hpp"
 
 namespace restitution {
 
@@ -54,7 +54,7 @@ EndSelection selection_of(CollisionEnd end) {
 }
 
 const EndResult& end_of(const CollisionResult& result, CollisionEnd end) {
-  const auto& value = end == CollisionEnd::naive ? result.naive : result.delayed_recovery;
+  const auto& value = result[end];
   if (!value) throw NumericalFailure(fmt::format("no {} end at zeta={}", end_name(end), result.parameter));
   return *value;
 }
@@ -227,6 +227,7 @@ class CollisionRun {
     detail::PhaseSettings settings{Form::compression, plan_.relative_tolerance,
                                    plan_.absolute_tolerance_compression, u_stop};
     settings.max_steps = plan_.max_steps;
+    settings.every_step = options_.keep_trajectory;
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
     if (is_start) {
@@ -275,6 +276,7 @@ class CollisionRun {
                                    plan_.time_limit};
     settings.switch_x = switch_x;
     settings.max_steps = plan_.max_steps;
+    settings.every_step = options_.keep_trajectory;
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
     events[static_cast<std::size_t>(count++)] = Event::max_compression;
