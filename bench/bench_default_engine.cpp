@@ -10,9 +10,9 @@
 #include <algorithm>
 #include <vector>
 
+#include "reference/reference_solution.hpp"
+#include "reference/work_precision.hpp"
 #include "restitution/collision_solver.hpp"
-#include "restitution/reference_solution.hpp"
-#include "restitution/work_precision.hpp"
 
 namespace {
 

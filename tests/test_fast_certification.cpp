@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "restitution/fast.hpp"
-#include "restitution/taylor_engine.hpp"
+#include "taylor/taylor_engine.hpp"
 
 namespace {
 

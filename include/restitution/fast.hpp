@@ -1,5 +1,5 @@
 #pragma once
-// Certified fast ε(ζ): piecewise polynomials in ln ζ generated from the __float128 reference engine, the
+// Certified fast ε(ζ): piecewise polynomials in ln ζ generated from the quad-precision reference engine, the
 // small-ζ series below them and the large-ζ asymptotic laws above (docs/fast.md). Natural units throughout
 // (x'' + ζ x' sqrt(x) + x^{3/2} = 0, x'(0) = 1). Accuracy of ε: |Δε| <= 1e-13 · min(ε, 1 − ε) on
 // ζ ∈ [0, 1e6] (delayed recovery) and [0, 1e5] (naive); beyond, the error of the asymptotic law

@@ -8,7 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/output_files.hpp"
 #include "fast/c_header.hpp"
-#include "fast/table_generator.hpp"
+#include "fast_study/table_generator.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/fast.hpp"
 

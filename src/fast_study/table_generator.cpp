@@ -1,4 +1,4 @@
-#include "fast/table_generator.hpp"
+#include "fast_study/table_generator.hpp"
 
 #include <fmt/core.h>
 #include <quadmath.h>
@@ -8,9 +8,9 @@
 #include <random>
 #include <vector>
 
+#include "reference/reference_solution.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/reference_solution.hpp"
-#include "restitution/series_coefficients.hpp"
+#include "series_study/series_coefficients.hpp"
 
 namespace restitution::fast {
 namespace {
