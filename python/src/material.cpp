@@ -42,14 +42,15 @@ Material make_material(double young_modulus, double poisson_ratio, std::optional
   return m;
 }
 
-std::optional<Pair> masses_of(const Material& m) {
-  if (!m.mass1_kg) return std::nullopt;
-  return Pair{*m.mass1_kg, *m.mass2_kg};
+// Pairs go out as tuples (as they may come in), missing ones as None.
+py::object masses_of(const Material& m) {
+  if (!m.mass1_kg) return py::none();
+  return py::make_tuple(*m.mass1_kg, *m.mass2_kg);
 }
 
-std::optional<Pair> viscosities_of(const Material& m) {
-  if (!m.viscosities) return std::nullopt;
-  return Pair{m.viscosities->eta1_pa_s, m.viscosities->eta2_pa_s};
+py::object viscosities_of(const Material& m) {
+  if (!m.viscosities) return py::none();
+  return py::make_tuple(m.viscosities->eta1_pa_s, m.viscosities->eta2_pa_s);
 }
 
 }  // namespace
@@ -70,10 +71,7 @@ void bind_material(py::module_& m) {
       .def_readonly("young_modulus", &Material::young_modulus_pa, "Young's modulus Y [Pa].")
       .def_readonly("poisson_ratio", &Material::poisson_ratio, "Poisson ratio nu.")
       .def_property_readonly(
-          "radii",
-          [](const Material& x) {
-            return Pair{x.radius1_m, x.radius2_m};
-          },
+          "radii", [](const Material& x) { return py::make_tuple(x.radius1_m, x.radius2_m); },
           "(R1, R2) [m].")
       .def_readonly("density", &Material::density_kg_m3, "Density [kg/m^3], or None when masses are given.")
       .def_property_readonly("masses", &masses_of, "(m1, m2) [kg] as given, or None when density is given.")

@@ -84,6 +84,8 @@ def test_material_constants_follow_the_formulas(steel):
     other = restitution.Material(young_modulus=2.0e11, poisson_ratio=0.3, radii=(0.01, 0.01),
                                  masses=(steel.effective_mass * 2,) * 2, dissipative_constant=1.0e-6)
     assert other.beta == pytest.approx(steel.beta, rel=1e-14)
+    assert other.radii == (0.01, 0.01) and other.masses == (steel.effective_mass * 2,) * 2
+    assert other.density is None and steel.masses is None and steel.viscosities is None
 
 
 def test_calibrate_inverts_eps(steel):
@@ -117,3 +119,12 @@ def test_series_eval_agrees_with_the_solver_at_small_zeta():
     assert isinstance(restitution.series.eval("pade-2011-3-6", 0.1), float)
     assert restitution.series.eval("naive", 0.1, terms=10, coefficients="published") == pytest.approx(
         restitution.series.eval("naive", 0.1, terms=10), rel=1e-9)
+
+
+def test_material_with_viscosities_follows_the_1999_formula():
+    young, nu, eta1, eta2 = 1.0e7, 0.4, 1.0e3, 2.0e3
+    material = restitution.Material(young_modulus=young, poisson_ratio=nu, radius=0.02, density=1100.0,
+                                    viscosities=(eta1, eta2))
+    expected = (3 * eta2 - eta1) ** 2 / (3 * (3 * eta2 + 2 * eta1)) * (1 - nu ** 2) * (1 - 2 * nu) / (young * nu ** 2)
+    assert material.A == pytest.approx(expected, rel=1e-14)
+    assert material.viscosities == (eta1, eta2) and material.dissipative_constant is None

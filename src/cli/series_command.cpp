@@ -34,7 +34,7 @@ struct CoefficientsOptions {
 };
 
 int run_coefficients(const CoefficientsOptions& o) {
-  const auto lists = series::coefficients_by_kind(o.kind, o.count);
+  const auto lists = series::coefficients_by_kind(o.kind, o.count, "--");
   JsonWriter json;
   json.begin_object().field("kind", o.kind);
   if (lists.size() == 1) {
@@ -69,7 +69,7 @@ struct EvalOptions {
 
 int run_eval(const EvalOptions& o) {
   const auto [values, terms] =
-      series::evaluate_by_kind(o.kind, std::span(&o.zeta, 1), o.terms, o.coefficients == "published");
+      series::evaluate_by_kind(o.kind, std::span(&o.zeta, 1), o.terms, o.coefficients == "published", "--");
   const series::Value& v = values.front();
   if (o.json) {
     JsonWriter json;

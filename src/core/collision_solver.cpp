@@ -227,6 +227,7 @@ class CollisionRun {
     detail::PhaseSettings settings{Form::compression, plan_.relative_tolerance,
                                    plan_.absolute_tolerance_compression, u_stop};
     settings.max_steps = plan_.max_steps;
+    settings.every_step = options_.keep_trajectory;
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
     if (is_start) {
@@ -275,6 +276,7 @@ class CollisionRun {
                                    plan_.time_limit};
     settings.switch_x = switch_x;
     settings.max_steps = plan_.max_steps;
+    settings.every_step = options_.keep_trajectory;
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
     events[static_cast<std::size_t>(count++)] = Event::max_compression;

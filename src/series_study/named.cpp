@@ -12,9 +12,10 @@
 namespace restitution::series {
 namespace {
 
-void check_kind(const std::string& kind, const std::vector<std::string>& kinds) {
+void check_kind(const std::string& kind, const std::vector<std::string>& kinds, std::string_view prefix) {
   if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
-    throw InvalidInput(fmt::format("kind must be one of {}, got '{}'", fmt::join(kinds, ", "), kind));
+    throw InvalidInput(
+        fmt::format("{}kind must be one of {}, got '{}'", prefix, fmt::join(kinds, ", "), kind));
 }
 
 // Largest count per kind: c_1..c_N and a/b need order N, h_0..h_N order ceil(N/2).
@@ -42,11 +43,12 @@ const std::vector<std::string>& evaluation_kinds() {
   return kinds;
 }
 
-std::vector<NamedCoefficients> coefficients_by_kind(const std::string& kind, int count) {
-  check_kind(kind, coefficient_kinds());
+std::vector<NamedCoefficients> coefficients_by_kind(const std::string& kind, int count,
+                                                    std::string_view prefix) {
+  check_kind(kind, coefficient_kinds(), prefix);
   if (count < 1 || count > max_count(kind))
-    throw InvalidInput(
-        fmt::format("count {} out of range [1, {}] for kind {}", count, max_count(kind), kind));
+    throw InvalidInput(fmt::format("{0}count {1} out of range [1, {2}] for {0}kind {3}", prefix, count,
+                                   max_count(kind), kind));
   const Coefficients k = compute_coefficients(order_for(kind, count));
   if (kind == "naive") return {{"c", 1, slice(k.c, 1, count)}};
   if (kind == "delayed-recovery") return {{"h", 0, slice(k.h, 0, count)}};
@@ -54,8 +56,8 @@ std::vector<NamedCoefficients> coefficients_by_kind(const std::string& kind, int
 }
 
 NamedEvaluation evaluate_by_kind(const std::string& kind, std::span<const double> zetas,
-                                 std::optional<int> terms, bool published) {
-  check_kind(kind, evaluation_kinds());
+                                 std::optional<int> terms, bool published, std::string_view prefix) {
+  check_kind(kind, evaluation_kinds(), prefix);
   std::function<Value(double)> evaluate;
   int used = 0;
   if (kind == "naive" || kind == "delayed-recovery") {
@@ -65,8 +67,9 @@ NamedEvaluation evaluate_by_kind(const std::string& kind, std::span<const double
                   : max_count(kind);
     used = terms.value_or(published ? available : (naive ? 40 : 60));
     if (used < 1 || used > available)
-      throw InvalidInput(fmt::format("terms {} out of range [1, {}] for kind {} with {} coefficients", used,
-                                     available, kind, published ? "published" : "computed"));
+      throw InvalidInput(
+          fmt::format("{0}terms {1} out of range [1, {2}] for {0}kind {3} with {0}coefficients {4}", prefix,
+                      used, available, kind, published ? "published" : "computed"));
     std::vector<double> coefficients;
     if (published) {
       coefficients = naive ? slice({published::kTable3C.begin(), published::kTable3C.end()}, 0, used - 1)
@@ -79,7 +82,10 @@ NamedEvaluation evaluate_by_kind(const std::string& kind, std::span<const double
       return naive ? naive_series(zeta, c) : delayed_recovery_series(zeta, c);
     };
   } else {
-    if (terms) throw InvalidInput("terms applies to the kinds naive and delayed-recovery only");
+    if (terms) {
+      throw InvalidInput(
+          fmt::format("{0}terms applies to {0}kind naive and delayed-recovery only, not {1}", prefix, kind));
+    }
     if (kind == "pade-1999") {
       evaluate = [d = pade_1999_published()](double zeta) { return pade_1999(zeta, d); };
     } else if (kind == "simple-theory-1999") {

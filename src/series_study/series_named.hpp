@@ -5,6 +5,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "restitution/series.hpp"
@@ -23,8 +24,10 @@ struct NamedCoefficients {
   std::vector<double> values;
 };
 // count coefficients of the kind (one list; two, a then b, for max-compression). Throws InvalidInput naming
-// kind or count (count in [1, 60], [1, 120] for delayed-recovery).
-std::vector<NamedCoefficients> coefficients_by_kind(const std::string& kind, int count);
+// kind or count (count in [1, 60], [1, 120] for delayed-recovery). Messages spell argument names with
+// `prefix` before them: "--" for the command line, "" for Python.
+std::vector<NamedCoefficients> coefficients_by_kind(const std::string& kind, int count,
+                                                    std::string_view prefix = "");
 
 struct NamedEvaluation {
   std::vector<Value> values;  // one per zeta
@@ -35,6 +38,6 @@ struct NamedEvaluation {
 // published: the 2008 paper's Tables III and V instead of the recomputed coefficients. Throws InvalidInput
 // naming kind, terms or zeta (with its index when there are several).
 NamedEvaluation evaluate_by_kind(const std::string& kind, std::span<const double> zetas,
-                                 std::optional<int> terms, bool published);
+                                 std::optional<int> terms, bool published, std::string_view prefix = "");
 
 }  // namespace restitution::series
