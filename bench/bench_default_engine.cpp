@@ -34,6 +34,7 @@ void solve_rows(benchmark::State& state, const std::vector<ReferenceRow>& rows, 
   options.tolerance = kTolerance;
   options.ends = {naive, !naive};
   std::vector<ContactLaw> laws;
+  laws.reserve(rows.size());
   for (const ReferenceRow& row : rows) laws.push_back(ContactLaw::hertz_natural(row.zeta));
   double worst = 0.0;
   long steps = 0;
