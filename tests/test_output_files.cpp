@@ -33,13 +33,13 @@ TEST(OutputFiles, AtomicWriteLeavesOnlyTheFinalFile) {
   fs::remove_all(folder);
 }
 
-TEST(OutputFiles, UnwritableFolderIsAnInputError) {
-  EXPECT_THROW(prepare_output_folder("/proc/restitution-cannot-exist"), InvalidInput);
+TEST(OutputFiles, UnwritableFolderIsAnIoError) {
+  EXPECT_THROW(prepare_output_folder("/proc/restitution-cannot-exist"), IoError);
   const fs::path folder = fresh_folder("file-in-the-way");
   fs::create_directories(folder);
   std::ofstream(folder / "plain-file") << "x";
-  EXPECT_THROW(prepare_output_folder(folder / "plain-file"), InvalidInput);
-  EXPECT_THROW(write_file_atomically(folder / "missing" / "a.csv", "x"), InvalidInput);
+  EXPECT_THROW(prepare_output_folder(folder / "plain-file"), IoError);
+  EXPECT_THROW(write_file_atomically(folder / "missing" / "a.csv", "x"), IoError);
   fs::remove_all(folder);
 }
 

@@ -41,11 +41,11 @@ void prepare_output_folder(const fs::path& folder) {
   std::error_code error;
   fs::create_directories(folder, error);
   if (error || !fs::is_directory(folder)) {
-    throw InvalidInput(fmt::format("cannot create output folder '{}': {}", folder.string(),
-                                   error ? error.message() : "not a folder"));
+    throw IoError(fmt::format("cannot create output folder '{}': {}", folder.string(),
+                              error ? error.message() : "not a folder"));
   }
   if (access(folder.c_str(), W_OK) != 0) {
-    throw InvalidInput(fmt::format("output folder '{}' is not writable", folder.string()));
+    throw IoError(fmt::format("output folder '{}' is not writable", folder.string()));
   }
 }
 
@@ -53,16 +53,16 @@ void write_file_atomically(const fs::path& path, const std::string& content) {
   const fs::path temporary = path.string() + ".tmp";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw InvalidInput(fmt::format("cannot write '{}'", temporary.string()));
+    if (!out) throw IoError(fmt::format("cannot write '{}'", temporary.string()));
     out << content;
     out.flush();
-    if (!out) throw InvalidInput(fmt::format("cannot write '{}'", temporary.string()));
+    if (!out) throw IoError(fmt::format("cannot write '{}'", temporary.string()));
   }
   std::error_code error;
   fs::rename(temporary, path, error);
   if (error) {
     fs::remove(temporary, error);
-    throw InvalidInput(fmt::format("cannot write '{}'", path.string()));
+    throw IoError(fmt::format("cannot write '{}'", path.string()));
   }
 }
 

@@ -17,7 +17,7 @@
 #include "cli/output_files.hpp"
 #include "cli/sweep_table.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/sweep.hpp"
+#include "sweep/sweep.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -83,7 +83,7 @@ class PartialFile {
   PartialFile(const fs::path& path, std::size_t keep_bytes, const std::string& preamble) : path_(path) {
     if (keep_bytes > 0) fs::resize_file(path, keep_bytes);  // drop a half-written last line
     file_ = std::fopen(path.c_str(), keep_bytes > 0 ? "ab" : "wb");
-    if (file_ == nullptr) throw InvalidInput(fmt::format("--out: cannot write '{}'", path.string()));
+    if (file_ == nullptr) throw IoError(fmt::format("--out: cannot write '{}'", path.string()));
     if (keep_bytes == 0) write(preamble);
   }
   ~PartialFile() {
@@ -94,7 +94,7 @@ class PartialFile {
 
   void write(const std::string& lines) {
     if (std::fputs(lines.c_str(), file_) < 0 || std::fflush(file_) != 0) {
-      throw InvalidInput(fmt::format("--out: cannot write '{}' (disk full?)", path_.string()));
+      throw IoError(fmt::format("--out: cannot write '{}' (disk full?)", path_.string()));
     }
   }
 

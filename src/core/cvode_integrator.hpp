@@ -8,7 +8,7 @@
 //  * compression form, independent variable u = sqrt(x), state (τ, x', I), valid while x' != 0:
 //        dτ/du = 2u/x',  dx'/du = 2u·a(u², x')/x',  dI/du = 2u·w(u²)·x'
 //    For Hertz spheres (w = sqrt(x) = u) this is analytic in u, where the time form has sqrt(τ)-type
-//    singularities at x = 0 that cost CVODE its order (DESIGN.md §4).
+//    singularities at x = 0 that cost CVODE its order (docs/design.md §4).
 // I = ∫ w(x) x'^2 dτ is the dissipation integral (the dissipated energy is D = c_d · I).
 #include <array>
 #include <string>

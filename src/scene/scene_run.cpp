@@ -1,4 +1,4 @@
-#include "restitution/scene_run.hpp"
+#include "scene/scene_run.hpp"
 
 #include <algorithm>
 #include <cmath>
