@@ -74,7 +74,7 @@ TEST(TomlAscii, CommentsAndTheByteOrderMarkCarryNoValue) {
 }
 
 TEST(TomlAscii, AsciiTextWithoutLiteralStringsIsUnchanged) {
-  for (const char* name : {"default", "trajectory", "material_sweep", "calibration", "dashpot"}) {
+  for (const char* name : {"default", "trajectory", "material_sweep", "calibration", "dashpot", "dem"}) {
     const std::string text =
         test_support::slurp(std::string(RESTITUTION_SOURCE_DIR "/scenes/") + name + ".toml");
     ASSERT_FALSE(text.empty()) << name;
