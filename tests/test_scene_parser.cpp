@@ -84,7 +84,7 @@ TEST(SceneParser, WrongTypesAndRangesNameTheKey) {
   EXPECT_EQ(error_of("output = \"o\"\ntolerance = 1.0\n"),
             "test.toml:2: tolerance: expected a value in [1e-11, 0.01]");
   EXPECT_EQ(error_of("output = \"o\"\n[[sweep]]\nzeta = [0.1, -1]\n"),
-            "test.toml:3: sweep[0].zeta: expected 0 <= zeta <= 1e4, got -1");
+            "test.toml:3: sweep[0].zeta: expected 0 <= zeta <= 1e+06 (the checked range), got -1");
   EXPECT_EQ(
       error_of("output = \"o\"\n[[sweep]]\nzeta = 1\nends = \"middle\"\n"),
       "test.toml:4: sweep[0].ends: expected \"naive\", \"delayed-recovery\" or \"both\", got \"middle\"");

@@ -52,6 +52,10 @@ double min_tolerance(Method method);
 
 // Throws InvalidInput naming the tolerance or the ends when the options cannot be honoured for any law.
 void check_solve_options(const SolveOptions& options);
+// Throws InvalidInput for everything CollisionSolver::solve would refuse for this law and these options
+// (the checks above, an end that does not exist, an engine's limits) without integrating: callers with
+// many points check them all before computing any.
+void check_solvable(const ContactLaw& law, const SolveOptions& options);
 
 // All times and lengths below are in the natural scaling (x'(0) = 1) whatever form the law was given in.
 struct EndResult {

@@ -31,9 +31,14 @@ ContactLaw law_from(const EpsOptions& o) {
   if (o.damping_ratio) throw InvalidInput("--damping-ratio belongs to --law linear-dashpot");
   if (o.zeta) {
     if (o.beta || o.velocity) throw InvalidInput("give either --zeta or --beta with --velocity, not both");
+    require_checked_zeta(*o.zeta);
     return ContactLaw::hertz_natural(*o.zeta);
   }
-  if (o.beta && o.velocity) return ContactLaw::hertz_scaled(*o.beta, *o.velocity);
+  if (o.beta && o.velocity) {
+    const ContactLaw law = ContactLaw::hertz_scaled(*o.beta, *o.velocity);
+    require_checked_zeta(law.parameter);
+    return law;
+  }
   if (o.beta || o.velocity) throw InvalidInput("--beta and --velocity go together");
   throw InvalidInput("give --zeta, or --beta with --velocity");
 }

@@ -33,6 +33,7 @@ DerivedLaw derived_law(CollisionEnd end) {
 int run_fit(const FitOptions& o) {
   const CollisionEnd end = end_from_name(o.end);
   const std::vector<double> zetas = log_grid(o.zeta_min, o.zeta_max, o.points);
+  require_checked_zeta(o.zeta_max);
   CollisionSolver solver;
   SolveOptions options;
   options.tolerance = o.tolerance;

@@ -111,6 +111,14 @@ series::Value evaluate(const EvalOptions& o, int& terms_used) {
     return series::pade_2011_3_6(o.zeta);
   }
   const bool naive = o.kind == "naive";
+  const double radius = naive ? series::kNaiveSeriesRadius : series::kDelayedRecoverySeriesRadius;
+  if (o.zeta >= radius) {
+    throw InvalidInput(
+        fmt::format("zeta = {} is outside the radius of convergence of the {} series (zeta < "
+                    "{:g}, docs/series.md): its partial sums diverge there; use an "
+                    "approximant (--kind pade-2011-3-6) or `restitution eps`",
+                    o.zeta, o.kind, radius));
+  }
   const bool published = o.coefficients == "published";
   const int available = published ? static_cast<int>(naive ? series::published::kTable3C.size()
                                                            : series::published::kTable5H.size() - 1)
@@ -164,7 +172,10 @@ void add_eval(CLI::App& parent, Action& chosen) {
                   "naive, delayed-recovery, pade-1999, simple-theory-1999, pade-2011-1-4, pade-2011-3-6")
       ->required()
       ->check(CLI::IsMember(kEvalKinds));
-  cmd->add_option("--zeta", o->zeta, "zeta = beta v^{1/5} >= 0")->required();
+  cmd->add_option("--zeta", o->zeta,
+                  "zeta = beta v^{1/5} >= 0; the series only below their radius of convergence (naive 1.39, "
+                  "delayed-recovery 1.10)")
+      ->required();
   cmd->add_option("--terms", o->terms, "series terms: c_1..c_N or h_0..h_N (default: 40 naive, 60 delayed)");
   cmd->add_option("--coefficients", o->coefficients, "computed (default) or published (2008 Tables III, V)")
       ->check(CLI::IsMember({"computed", "published"}));

@@ -113,7 +113,7 @@ int run_sweep_command(const SweepOptions& o) {
   const std::vector<double> zetas =
       zeta_values({o.zeta_min, o.zeta_max, static_cast<std::size_t>(o.points), o.log});
   const SolveOptions solve = solve_options(o.solver);
-  check_solve_options(solve);
+  check_sweep(zetas, solve);  // every point, before the first file is touched
   const fs::path out(o.out);
   if (out.filename().empty() || fs::is_directory(out)) {
     throw InvalidInput(fmt::format("--out '{}' must name a file, not a folder", o.out));

@@ -332,6 +332,14 @@ class CollisionRun {
 
 }  // namespace
 
+void check_solvable(const ContactLaw& law, const SolveOptions& options) {
+  if (options.method == Method::taylor) {
+    check_taylor_request(law, options);
+  } else {
+    detail::check_solve_request(law, options);
+  }
+}
+
 CollisionResult CollisionSolver::solve(const ContactLaw& given, const SolveOptions& options) {
   // Every result is reported in natural units, and a Hertz law depends only on ζ: integrate the natural
   // form, whose magnitudes are of order one, rather than the (β, v) form, whose lengths and velocities

@@ -19,8 +19,6 @@ namespace {
 
 using detail::TomlReader;
 
-constexpr double kLargestZeta = 1e4;  // the solver's validated range
-
 bool is_name(const std::string& s) {
   return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '-' || c == '_';
@@ -178,7 +176,8 @@ class Parser {
 
   static void check_zeta(TomlReader& r, const std::vector<double>& zeta) {
     r.check_each(
-        "zeta", zeta, [](double z) { return z >= 0.0 && z <= kLargestZeta; }, "0 <= zeta <= 1e4");
+        "zeta", zeta, [](double z) { return z >= 0.0 && z <= kLargestCheckedZeta; },
+        fmt::format("0 <= zeta <= {:g} (the checked range)", kLargestCheckedZeta));
   }
   static void check_positive(TomlReader& r, const char* key, const std::vector<double>& values) {
     r.check_each(

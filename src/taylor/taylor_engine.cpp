@@ -84,7 +84,7 @@ EndResult end_result(const ContactLaw& law, const taylor::TaylorPoint<double>& p
 
 }  // namespace
 
-CollisionResult solve_with_taylor(const ContactLaw& law, const SolveOptions& options) {
+void check_taylor_request(const ContactLaw& law, const SolveOptions& options) {
   detail::check_solve_request(law, options);
   if (options.keep_trajectory) {
     throw InvalidInput("method taylor does not record trajectories: use --method bdf or adams");
@@ -97,6 +97,11 @@ CollisionResult solve_with_taylor(const ContactLaw& law, const SolveOptions& opt
                     "zeta={}: use --method bdf",
                     kTaylorNaiveZetaMax, law.parameter));
   }
+}
+
+CollisionResult solve_with_taylor(const ContactLaw& law, const SolveOptions& options) {
+  check_taylor_request(law, options);
+  const bool hertz = law.kind == LawKind::viscoelastic_hertz;
   taylor::TaylorCollision<double> run(settings_for(law, options), law.parameter);
   taylor::TaylorOutcome<double> out;
   try {
