@@ -143,12 +143,12 @@ TEST(SceneParser, QuickSettingsKeepTheEndsOfEveryRange) {
 namespace restitution::scene {
 namespace {
 
-TEST(SceneParser, TheReadmeExampleIsAValidScene) {
-  const std::string readme = restitution::test_support::slurp(RESTITUTION_SOURCE_DIR "/README.md");
-  const std::size_t start = readme.find("```toml\n");
+TEST(SceneParser, TheDocumentedExampleSceneIsValid) {
+  const std::string doc = restitution::test_support::slurp(RESTITUTION_SOURCE_DIR "/docs/scenes.md");
+  const std::size_t start = doc.find("```toml\n");
   ASSERT_NE(start, std::string::npos);
-  const std::size_t end = readme.find("```", start + 8);
-  const Scene s = parse_scene(readme.substr(start + 8, end - start - 8), "README.md");
+  const std::size_t end = doc.find("```", start + 8);
+  const Scene s = parse_scene(doc.substr(start + 8, end - start - 8), "docs/scenes.md");
   EXPECT_EQ(s.sweeps.size(), 1U);
   EXPECT_EQ(s.trajectories.size(), 1U);
   EXPECT_EQ(s.calibrations.size(), 1U);

@@ -44,4 +44,21 @@ double characteristic_velocity_m_s(double beta);
 // The inverse: β = (g*)^{-1/5} / C1. Throws InvalidInput naming characteristic_velocity when not > 0.
 double beta_from_characteristic_velocity(double characteristic_velocity_m_s);
 
+// DEM codes' constants (docs/dem.md). Every code below writes the law for two spheres of one material as
+//     F = (4/3) E* sqrt(R_eff) ξ^{3/2} + 2 A E* sqrt(R_eff ξ) ξ'   [N],
+// which is ρ ξ^{3/2} + (3/2) A ρ sqrt(ξ) ξ' with ρ = (4/3) E* sqrt(R_eff).
+// The effective modulus E* [Pa] of two spheres of one material: 1/E* = 2 (1 - ν²) / Y. Throws InvalidInput
+// naming young_modulus or poisson_ratio.
+double effective_modulus_pa(double young_modulus_pa, double poisson_ratio);
+// The damping coefficient per effective mass and contact radius, c = 2 A E* / m_eff [m^-1 s^-1]: the
+// dissipative force is c m_eff sqrt(R_eff ξ) ξ' (LAMMPS η_n0, LIGGGHTS γ_n). Throws InvalidInput naming a
+// non-finite or negative argument.
+double damping_per_mass(double dissipative_constant_s, double effective_modulus_pa, double effective_mass_kg);
+// The inverse: A [s] = c m_eff / (2 E*).
+double dissipative_constant_from_damping_per_mass(double damping_per_mass, double effective_modulus_pa,
+                                                  double effective_mass_kg);
+// β [s^{1/5} m^{-1/5}] of the equation m_eff ξ'' = -K ξ^{3/2} - D sqrt(ξ) ξ' with K [N m^-3/2] and
+// D [N s m^-3/2] the coefficients a DEM code's parameters give one pair: k = K/m_eff, γ = D/m_eff.
+double beta_of_coefficients(double elastic_coefficient, double damping_coefficient, double effective_mass_kg);
+
 }  // namespace restitution

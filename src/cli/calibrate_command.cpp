@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
+#include "cli/material_options.hpp"
 #include "cli/options.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/errors.hpp"
@@ -21,31 +22,13 @@ struct CalibrateOptions {
   std::string end = "delayed-recovery";
   double tolerance = 1e-10;
   std::string method = "auto";
-  std::optional<double> young_modulus, poisson_ratio, radius, radius2, density, mass, mass2;
+  MaterialOptions material;
   bool json = false;
 };
 
 std::optional<double> material_k(const CalibrateOptions& o) {
-  const bool any =
-      o.young_modulus || o.poisson_ratio || o.radius || o.radius2 || o.density || o.mass || o.mass2;
-  if (!any) return std::nullopt;
-  if (!o.young_modulus || !o.poisson_ratio || !o.radius) {
-    throw InvalidInput(
-        "a material needs --young-modulus, --poisson-ratio and --radius (and --density or --mass)");
-  }
-  Material m;
-  m.young_modulus_pa = *o.young_modulus;
-  m.poisson_ratio = *o.poisson_ratio;
-  m.radius1_m = *o.radius;
-  m.radius2_m = o.radius2.value_or(*o.radius);
-  m.density_kg_m3 = o.density;
-  if (o.mass) {
-    m.mass1_kg = o.mass;
-    m.mass2_kg = o.mass2.value_or(*o.mass);
-  } else if (o.mass2) {
-    throw InvalidInput("--mass2 needs --mass");
-  }
-  return elastic_constants(m).k;
+  if (!o.material.any()) return std::nullopt;
+  return elastic_constants(material_from(o.material)).k;
 }
 
 int run_calibrate(const CalibrateOptions& o) {
@@ -102,13 +85,7 @@ void add_calibrate_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--method", o->method, "integration method: bdf, adams or auto")
       ->check(CLI::IsMember({"bdf", "adams", "auto"}))
       ->capture_default_str();
-  cmd->add_option("--young-modulus", o->young_modulus, "material: Young's modulus Y in Pa");
-  cmd->add_option("--poisson-ratio", o->poisson_ratio, "material: Poisson ratio in (-1, 0.5)");
-  cmd->add_option("--radius", o->radius, "material: sphere radius in m (both spheres unless --radius2)");
-  cmd->add_option("--radius2", o->radius2, "material: radius of the second sphere in m");
-  cmd->add_option("--density", o->density, "material: density in kg/m^3 (gives the masses)");
-  cmd->add_option("--mass", o->mass, "material: sphere mass in kg (instead of --density)");
-  cmd->add_option("--mass2", o->mass2, "material: mass of the second sphere in kg");
+  add_material_options(*cmd, o->material);
   cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
   cmd->callback([o, &chosen] { chosen = [o] { return run_calibrate(*o); }; });
 }

@@ -12,6 +12,7 @@ void add_all_commands(CLI::App& app, Action& chosen) {
   add_run_command(app, chosen);
   add_series_command(app, chosen);
   add_sweep_command(app, chosen);
+  add_dem_command(app, chosen);
 }
 
 }  // namespace restitution::cli

@@ -18,6 +18,7 @@ void add_calibrate_command(CLI::App& app, Action& chosen);
 void add_run_command(CLI::App& app, Action& chosen);
 void add_series_command(CLI::App& app, Action& chosen);
 void add_sweep_command(CLI::App& app, Action& chosen);
+void add_dem_command(CLI::App& app, Action& chosen);
 
 // Every subcommand of the program, in the order `--help` lists them: the one list main() and the
 // command-line fuzz target share.

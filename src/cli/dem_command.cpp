@@ -1,0 +1,201 @@
+// `restitution dem`: the input lines for a DEM code (LAMMPS, LIGGGHTS, MercuryDPM, YADE, Chrono) that give a
+// material the viscoelastic Hertz law, with the ε they give at a few impact speeds (docs/dem.md).
+#include <fmt/core.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/json_writer.hpp"
+#include "cli/material_options.hpp"
+#include "dem/deck.hpp"
+#include "dem/deck_eps.hpp"
+#include "dem/yade_conversion.hpp"
+#include "restitution/calibration.hpp"
+#include "restitution/errors.hpp"
+
+namespace restitution::cli {
+namespace {
+
+struct DemOptions {
+  std::string code;
+  MaterialOptions material;
+  std::optional<double> eps, velocity, dissipative_constant;
+  std::string end = "delayed-recovery";
+  std::vector<double> speeds;
+  double tolerance = 1e-10;
+  bool json = false;
+};
+
+struct SpeedEps {
+  double velocity_m_s = 0.0;
+  double eps = 0.0;
+};
+
+// What YADE's own (en, vn) -> A conversion makes of the true ε at vn: the error a user typing the measured
+// ε would get.
+struct YadeCheck {
+  double true_eps = 0.0;
+  double dissipative_constant_s = 0.0;
+  double eps_at_vn = 0.0;
+};
+
+struct DemResult {
+  dem::Deck deck;
+  double dissipative_constant_s = 0.0;
+  double reference_velocity_m_s = 0.0;
+  std::vector<SpeedEps> eps;
+  std::vector<dem::SizeCheck> sizes;
+  std::optional<YadeCheck> yade;
+};
+
+double dissipative_constant(const DemOptions& o, CollisionEnd end, double k, CollisionSolver& solver) {
+  if (o.dissipative_constant.has_value() == o.eps.has_value()) {
+    throw InvalidInput("give either --eps and --velocity (calibrate) or --dissipative-constant");
+  }
+  if (o.dissipative_constant) return *o.dissipative_constant;
+  if (!o.velocity) throw InvalidInput("--eps needs --velocity, the impact speed it was measured at");
+  CalibrationRequest request;
+  request.eps = *o.eps;
+  request.velocity_m_s = *o.velocity;
+  request.end = end;
+  request.tolerance = o.tolerance;
+  request.k = k;
+  return *calibrate(request, solver).dissipative_constant_s;
+}
+
+DemResult compute(const DemOptions& o) {
+  const dem::Code code = dem::code_from_name(o.code);
+  const CollisionEnd end = o.end == "naive" ? CollisionEnd::naive : CollisionEnd::delayed_recovery;
+  if (dem::always_clamps(code) && end == CollisionEnd::naive) {
+    // Refuse before calibrating: the deck would refuse anyway.
+    (void)dem::make_deck(code, end, {}, 0.0, 1.0);
+  }
+  const Material material = material_from(o.material);
+  const dem::Pair pair = dem::pair_of(material);
+  const double k = elastic_constants(material).k;
+  CollisionSolver solver;
+  DemResult r;
+  r.dissipative_constant_s = dissipative_constant(o, end, k, solver);
+  r.reference_velocity_m_s = o.velocity.value_or(1.0);
+  r.deck = dem::make_deck(code, end, pair, r.dissipative_constant_s, r.reference_velocity_m_s);
+  const double v = r.reference_velocity_m_s;
+  const std::vector<double> speeds = o.speeds.empty() ? std::vector<double>{v / 10.0, v, 10.0 * v} : o.speeds;
+  const double beta = dem::deck_beta(r.deck, pair);
+  for (double s : speeds) r.eps.push_back({s, dem::eps_for(beta, s, end, o.tolerance, solver)});
+  r.sizes = dem::size_checks(r.deck, pair, r.dissipative_constant_s, v, {0.5, 2.0}, o.tolerance, solver);
+  if (code == dem::Code::yade) {
+    YadeCheck y;
+    y.true_eps = dem::eps_for(hertz_constants(k, r.dissipative_constant_s).beta, v, end, o.tolerance, solver);
+    y.dissipative_constant_s = dem::yade_dissipative_constant(y.true_eps, v, k);
+    y.eps_at_vn =
+        dem::eps_for(hertz_constants(k, y.dissipative_constant_s).beta, v, end, o.tolerance, solver);
+    r.yade = y;
+  }
+  return r;
+}
+
+void print_json(const DemResult& r) {
+  JsonWriter json;
+  json.begin_object();
+  json.field("code", dem::code_name(r.deck.code)).field("end", end_name(r.deck.end));
+  json.field("dissipative_constant_s", r.dissipative_constant_s);
+  json.field("reference_velocity_m_s", r.reference_velocity_m_s);
+  json.key("parameters").begin_object();
+  for (const auto& p : r.deck.parameters) json.field(p.name, p.value);
+  json.end_object();
+  json.key("meanings").begin_object();
+  for (const auto& p : r.deck.parameters) json.field(p.name, p.meaning);
+  json.end_object();
+  json.key("lines").begin_array();
+  for (const auto& line : r.deck.lines) json.value(line);
+  json.end_array();
+  json.key("notes").begin_array();
+  for (const auto& note : r.deck.notes) json.value(note);
+  json.end_array();
+  json.key("eps").begin_array();
+  for (const auto& e : r.eps)
+    json.begin_object().field("velocity_m_s", e.velocity_m_s).field("eps", e.eps).end_object();
+  json.end_array();
+  json.key("sizes").begin_array();
+  for (const auto& s : r.sizes) {
+    json.begin_object().field("radius_factor", s.radius_factor);
+    json.field("eps_lines", s.eps_lines).field("eps_law", s.eps_law).end_object();
+  }
+  json.end_array();
+  if (r.yade) {
+    json.key("yade_own_conversion").begin_object();
+    json.field("en", r.yade->true_eps).field("vn", r.reference_velocity_m_s);
+    json.field("dissipative_constant_s", r.yade->dissipative_constant_s);
+    json.field("eps_at_vn", r.yade->eps_at_vn).end_object();
+  }
+  json.end_object();
+  fmt::print("{}\n", json.str());
+}
+
+void print_text(const DemResult& r) {
+  const bool cpp = r.deck.code == dem::Code::mercurydpm || r.deck.code == dem::Code::chrono;
+  const char* c = cpp ? "//" : "#";
+  fmt::print("{} restitution dem --code {}: viscoelastic Hertz law, A = {:.10g} s, {} end\n", c,
+             dem::code_name(r.deck.code), r.dissipative_constant_s, end_name(r.deck.end));
+  for (const auto& p : r.deck.parameters) fmt::print("{} {} = {}: {}\n", c, p.name, p.value, p.meaning);
+  for (const auto& n : r.deck.notes) fmt::print("{} {}\n", c, n);
+  for (const auto& line : r.deck.lines) fmt::print("{}\n", line);
+  fmt::print("{} eps these lines give this pair ({} end):\n", c, end_name(r.deck.end));
+  for (const auto& e : r.eps) fmt::print("{}   v = {:<10.6g} m/s  eps = {:.10f}\n", c, e.velocity_m_s, e.eps);
+  fmt::print("{} other sizes of this material (radii scaled, same density) at v = {:g} m/s:\n", c,
+             r.reference_velocity_m_s);
+  for (const auto& s : r.sizes) {
+    fmt::print("{}   radii x{:<4g} eps = {:.10f}, the law gives {:.10f}\n", c, s.radius_factor, s.eps_lines,
+               s.eps_law);
+  }
+  if (r.yade) {
+    fmt::print(
+        "{} YADE's own conversion of the true (en = {:.10f}, vn = {:g} m/s) gives A = {:.10g} s ({:+.3g} "
+        "%),\n",
+        c, r.yade->true_eps, r.reference_velocity_m_s, r.yade->dissipative_constant_s,
+        100.0 * (r.yade->dissipative_constant_s / r.dissipative_constant_s - 1.0));
+    fmt::print("{} which makes eps(vn) = {:.10f}; the en above instead makes YADE recover the exact A\n", c,
+               r.yade->eps_at_vn);
+  }
+}
+
+}  // namespace
+
+void add_dem_command(CLI::App& app, Action& chosen) {
+  auto o = std::make_shared<DemOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "dem",
+      "input lines giving a DEM code (lammps, liggghts, mercurydpm, yade, chrono) this law, and its eps");
+  cmd->add_option("--code", o->code, "DEM code: lammps, liggghts, mercurydpm, yade or chrono")
+      ->required()
+      ->check(CLI::IsMember({"lammps", "liggghts", "mercurydpm", "yade", "chrono"}));
+  add_material_options(*cmd, o->material);
+  cmd->add_option("--eps", o->eps, "measured coefficient of restitution in (0, 1): calibrate A first");
+  cmd->add_option("--velocity", o->velocity,
+                  "impact speed in m/s of --eps (also YADE's vn and the reference speed; default 1)");
+  cmd->add_option("--dissipative-constant", o->dissipative_constant, "the dissipative constant A in s");
+  cmd->add_option("--end", o->end,
+                  "end of the collision: naive (no clamp) or delayed-recovery (force clamped)")
+      ->check(CLI::IsMember({"naive", "delayed-recovery"}))
+      ->capture_default_str();
+  cmd->add_option("--speeds", o->speeds, "impact speeds in m/s to report eps at (default v/10, v, 10 v)");
+  cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")
+      ->capture_default_str();
+  cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
+  cmd->callback([o, &chosen] {
+    chosen = [o] {
+      const DemResult r = compute(*o);
+      if (o->json) {
+        print_json(r);
+      } else {
+        print_text(r);
+      }
+      return 0;
+    };
+  });
+}
+
+}  // namespace restitution::cli

@@ -1,0 +1,61 @@
+#pragma once
+// Input lines for DEM codes that implement the viscoelastic Hertz law, each in its own convention
+// (docs/dem.md), and what those lines give a pair of spheres: the code's own reading of its parameters.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "restitution/collision_solver.hpp"
+#include "restitution/material.hpp"
+
+namespace restitution::dem {
+
+enum class Code { lammps, liggghts, mercurydpm, yade, chrono };
+
+// "lammps" | "liggghts" | "mercurydpm" | "yade" | "chrono"; throws InvalidInput naming the code otherwise.
+Code code_from_name(std::string_view name);
+const char* code_name(Code code);
+// MercuryDPM's BSHP species, YADE's Mindlin law and Chrono's SMC contact always clamp the normal force at
+// zero: they end every collision at the delayed-recovery end.
+bool always_clamps(Code code);
+
+// The pair of spheres a deck is made for, in SI units.
+struct Pair {
+  double young_modulus_pa = 0.0;
+  double poisson_ratio = 0.0;
+  double radius1_m = 0.0, radius2_m = 0.0;
+  double mass1_kg = 0.0, mass2_kg = 0.0;
+  double effective_modulus_pa = 0.0;  // E*
+  double effective_radius_m = 0.0;    // R_eff
+  double effective_mass_kg = 0.0;     // m_eff
+};
+// Validates the material (InvalidInput naming the key); the dissipation fields are ignored.
+Pair pair_of(const Material& material);
+// The same material at radii scaled by `factor`, masses by factor³ (same density).
+Pair scaled(const Pair& pair, double factor);
+
+struct Parameter {
+  std::string name;
+  double value = 0.0;
+  std::string meaning;  // what it is, with its SI unit
+};
+
+struct Deck {
+  Code code = Code::lammps;
+  CollisionEnd end = CollisionEnd::delayed_recovery;
+  std::vector<Parameter> parameters;
+  std::vector<std::string> lines;                 // to paste into the code's input
+  std::vector<std::string> notes;                 // what the lines do and where they stop being exact
+  double parameter(std::string_view name) const;  // throws std::out_of_range naming an unknown name
+};
+
+// The lines that give `pair` the law with dissipative constant A [s] ending at `end`. `reference_velocity`
+// [m/s] is YADE's vn. Throws InvalidInput when the code cannot end a collision at `end`.
+Deck make_deck(Code code, CollisionEnd end, const Pair& pair, double dissipative_constant_s,
+               double reference_velocity_m_s);
+
+// β [s^{1/5} m^{-1/5}] the deck's parameters give `other` (a pair of the deck's material), read as the code
+// reads them; equals the law's β for the deck's own pair.
+double deck_beta(const Deck& deck, const Pair& other);
+
+}  // namespace restitution::dem
