@@ -55,5 +55,34 @@ TEST_F(SceneReport, DifferencesNameTheirRangeAndHiddenRowsAreCounted) {
   EXPECT_NE(report.find("9 of 12 rows shown"), std::string::npos) << report;
 }
 
+// Two tasks writing the same file are a scene error naming the line, before anything runs (item 10); a
+// failed run leaves no output folder (item 11).
+TEST_F(SceneReport, OutputNameCollisionsAndFailuresLeaveNoFolder) {
+  const fs::path scene = folder_ / "clash.toml";
+  std::ofstream(scene) << "output = \"" << (folder_ / "out").string() << "\"\n"
+                       << "[[sweep]]\nname = \"wp_summary\"\nzeta = [1.0]\n"
+                       << "[[work_precision]]\nname = \"wp\"\n";
+  auto r = run_cli("run " + scene.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("clash.toml:6: work_precision[0].name: work_precision \"wp\" would write "
+                       "wp_summary.csv, which sweep"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(folder_ / "out"));
+  std::ofstream(scene) << "output = \"" << (folder_ / "out").string() << "\"\n"
+                       << "[[sweep]]\nname = \"" << std::string(5000, 'a') << "\"\nzeta = [1.0]\n";
+  r = run_cli("run " + scene.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("at most 100 characters"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(folder_ / "out"));
+  // A calibration outside the checked range fails after planning: still no folder.
+  std::ofstream(scene) << "output = \"" << (folder_ / "out").string() << "\"\n"
+                       << "[[calibration]]\neps = 1e-40\nvelocity = 1.0\nend = \"naive\"\n";
+  r = run_cli("run " + scene.string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("outside the checked range"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(folder_ / "out"));
+}
+
 }  // namespace
 }  // namespace restitution

@@ -1,11 +1,12 @@
 // The `restitution` program: parses the command line, runs one subcommand, maps errors to exit statuses
-// (2: bad usage or input, 1: numerical failure) with one line on stderr.
+// (2: bad usage or input, 1: numerical failure, 3: a failed write) with one line on stderr.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/io_error.hpp"
 #include "cli/parse_errors.hpp"
 #include "restitution/errors.hpp"
 
@@ -45,6 +46,9 @@ int run(int argc, char** argv) {
 
   try {
     return chosen ? chosen() : 2;
+  } catch (const cli::IoError& e) {
+    std::fprintf(stderr, "restitution: I/O error: %s\n", cli::one_line(e.what()).c_str());
+    return 3;
   } catch (const InvalidInput& e) {
     std::fprintf(stderr, "restitution: error: %s\n", cli::one_line(e.what()).c_str());
     return 2;
@@ -61,7 +65,12 @@ int run(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   try {
-    return run(argc, argv);
+    const int status = run(argc, argv);
+    restitution::cli::flush_standard_output();  // a result (or help) that never reached stdout is no success
+    return status;
+  } catch (const restitution::cli::IoError& e) {
+    std::fprintf(stderr, "restitution: I/O error: %s\n", restitution::cli::one_line(e.what()).c_str());
+    return 3;
   } catch (...) {  // the last line of defence: never an abort or a stack trace
     std::fputs("restitution: failure: unexpected error\n", stderr);
     return 1;

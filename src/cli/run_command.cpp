@@ -46,8 +46,8 @@ int run_scene_file(const RunOptions& o) {
   if (o.quick) scene::make_quick(s, kQuickPoints);
   const fs::path folder = o.output.empty() ? s.output : fs::path(o.output);
   scene::Plan plan =
-      scene::plan_scene(s);       // refuses points outside the solver's range before a folder exists
-  prepare_output_folder(folder);  // fail before the work, not after
+      scene::plan_scene(s);     // refuses points outside the solver's range before a folder exists
+  check_output_folder(folder);  // fail before the work, not after
 
   scene::RunSettings settings;
   settings.threads = o.threads;

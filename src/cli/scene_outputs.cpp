@@ -440,8 +440,16 @@ class SceneWriter {
 
 WrittenOutputs write_scene_outputs(const scene::Scene& scene, const scene::SceneResults& results,
                                    const fs::path& folder, double seconds) {
-  prepare_output_folder(folder);
-  return SceneWriter(scene, results, folder).write(seconds);
+  check_output_folder(folder);
+  // A write that fails half-way must not leave a folder that looks like a result (item 11 of issue 12).
+  const bool existed = fs::exists(folder);
+  try {
+    return SceneWriter(scene, results, folder).write(seconds);
+  } catch (...) {
+    std::error_code ignored;
+    if (!existed) fs::remove_all(folder, ignored);
+    throw;
+  }
 }
 
 }  // namespace restitution::cli

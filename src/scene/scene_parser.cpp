@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -18,6 +19,8 @@ namespace restitution::scene {
 namespace {
 
 using detail::TomlReader;
+
+constexpr std::size_t kMaxNameLength = 100;  // well below the 255 bytes a file name may have
 
 bool is_name(const std::string& s) {
   return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
@@ -153,7 +156,21 @@ class Parser {
   std::string read_name(TomlReader& r, const char* kind) {
     std::string name = r.text("name").value_or(fmt::format("{}{}", kind, ++unnamed_));
     if (!is_name(name)) r.fail("name", "use letters, digits, '-' and '_' only (it names output files)");
+    if (name.size() > kMaxNameLength) {
+      r.fail("name", fmt::format("at most {} characters (it names output files), got {}", kMaxNameLength,
+                                 name.size()));
+    }
     if (!names_.insert(name).second) r.fail("name", fmt::format("\"{}\" is used twice", name));
+    // Two tasks must not write the same file: a work-precision study also writes NAME_summary.csv.
+    std::vector<std::string> stems = {name};
+    if (std::string_view(kind) == "work_precision") stems.push_back(name + "_summary");
+    for (const std::string& stem : stems) {
+      const auto [at, inserted] = stems_.emplace(stem, fmt::format("{} \"{}\"", kind, name));
+      if (!inserted) {
+        r.fail("name", fmt::format("{} \"{}\" would write {}.csv, which {} writes too", kind, name, stem,
+                                   at->second));
+      }
+    }
     return name;
   }
 
@@ -351,6 +368,7 @@ class Parser {
   TomlReader root_;
   Scene scene_;
   std::set<std::string> names_;
+  std::map<std::string, std::string> stems_;  // output file stem -> the task that writes it
   int unnamed_ = 0;
 };
 
