@@ -47,6 +47,10 @@ const std::vector<BadInput> kCases = {
     {"sweep --zeta-min 1 --zeta-max 1e7 --points 2 --out {dir}/s.csv", "outside the checked range"},
     {"fit --end naive --zeta-min 1e4 --zeta-max 1e7", "outside the checked range"},
     {"calibrate --eps 1e-12 --velocity 1", "outside the checked range"},
+    // Interface consistency (item 16) and the fit's cap (item 13).
+    {"run --threads 0", "--threads: Value 0 not in range 1 to 1024"},
+    {"fit --end middle --zeta-min 1 --zeta-max 10", "--end"},
+    {"fit --end naive --zeta-min 1 --zeta-max 10 --points 1000000000", "--points must be at most 100000"},
     // A series beyond its radius of convergence is not a number to print (item 6).
     {"series eval --kind delayed-recovery --zeta 2",
      "outside the radius of convergence of the delayed-recovery"},
@@ -114,8 +118,7 @@ const std::vector<BadInput> kCases = {
     // fit.
     {"fit --zeta-min 1 --zeta-max 10", "--end is required"},
     {"fit --end naive --zeta-min 0 --zeta-max 10", "need 0 < zeta-min < zeta-max, got 0 and 10"},
-    {"fit --end sideways --zeta-min 1 --zeta-max 10",
-     "end must be naive or delayed-recovery, got 'sideways'"},
+    {"fit --end sideways --zeta-min 1 --zeta-max 10", "--end: sideways not in {naive,delayed-recovery}"},
     {"fit --end naive --zeta-min 10 --zeta-max 1", "need 0 < zeta-min < zeta-max"},
     {"fit --end naive --zeta-min nan --zeta-max 10", "need 0 < zeta-min < zeta-max, got nan"},
     {"fit --end naive --zeta-min 1 --zeta-max inf", "need 0 < zeta-min < zeta-max, got 1 and inf"},

@@ -131,6 +131,16 @@ TEST(SceneParser, SyntaxErrorsCarryTheLine) {
   EXPECT_EQ(e.rfind("test.toml:3: ", 0), 0U) << e;
 }
 
+// Issue 12, item 20: log-spaced ranges start and end at exactly the numbers written.
+TEST(SceneParser, LogRangesEndAtTheNumbersGiven) {
+  const Scene s = parse_scene(
+      "output = \"o\"\n[[sweep]]\nbeta = 0.2\nvelocity = {from = 0.01, to = 1e300, points = 7, spacing = "
+      "\"log\"}\n",
+      "t.toml");
+  EXPECT_EQ(s.sweeps[0].velocity_m_s.front(), 0.01);
+  EXPECT_EQ(s.sweeps[0].velocity_m_s.back(), 1e300);
+}
+
 TEST(SceneParser, QuickSettingsKeepTheEndsOfEveryRange) {
   Scene s = parse_scene("output = \"o\"\n[[sweep]]\nzeta = {from = 0, to = 10, points = 101}\n", "t.toml");
   make_quick(s, 4);

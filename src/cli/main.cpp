@@ -16,6 +16,7 @@ int run(int argc, char** argv) {
   using namespace restitution;
   CLI::App app{"restitution: coefficient of normal restitution of colliding viscoelastic spheres",
                "restitution"};
+  app.set_version_flag("--version", "restitution " RESTITUTION_VERSION);
   app.require_subcommand(1);
   cli::Action chosen;
   cli::add_all_commands(app, chosen);
@@ -38,6 +39,9 @@ int run(int argc, char** argv) {
     return 0;
   } catch (const CLI::CallForAllHelp&) {
     std::fputs(app.help("", CLI::AppFormatMode::All).c_str(), stdout);
+    return 0;
+  } catch (const CLI::CallForVersion& e) {
+    std::printf("%s\n", e.what());
     return 0;
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "restitution: error: %s\n", cli::describe_parse_error(app, e).c_str());
