@@ -7,10 +7,10 @@
 #include <cmath>
 #include <string>
 
-#include "restitution/asymptotics.hpp"
+#include "analysis/asymptotics.hpp"
+#include "reference/reference_solution.hpp"
+#include "reference/work_precision.hpp"
 #include "restitution/collision_solver.hpp"
-#include "restitution/reference_solution.hpp"
-#include "restitution/work_precision.hpp"
 
 namespace {
 

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <string>
 
+#include "reference/reference_solution.hpp"
+#include "reference/work_precision.hpp"
 #include "restitution/collision_solver.hpp"
-#include "restitution/reference_solution.hpp"
-#include "restitution/work_precision.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 // The counter points_per_second is the rate; divide the two rows' medians for the parallel speed-up.
 #include <benchmark/benchmark.h>
 
-#include "restitution/sweep.hpp"
+#include "sweep/sweep.hpp"
 
 namespace restitution {
 namespace {

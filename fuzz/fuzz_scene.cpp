@@ -8,8 +8,8 @@
 #include <string_view>
 
 #include "restitution/errors.hpp"
-#include "restitution/scene.hpp"
-#include "restitution/scene_plan.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_plan.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 16384) return -1;  // scene files are small

@@ -6,7 +6,7 @@ Each fenced block is checked by its language tag:
           examples of the checkout; `bash scripts/...` lines (the set-up commands) are left to CI itself;
   toml    a scene: `restitution run FILE --quick --output DIR` must succeed;
   python  runs with the built module on PYTHONPATH;
-  cpp, c  must stand verbatim in a file under examples/, which its own test compiles and runs;
+  cpp, c, cmake  must stand verbatim in a file under examples/, which its own test compiles and runs;
   json    illustrates an output format: not run.
 A block tagged with anything else fails the test, so that nothing new slips past unchecked.
 
@@ -89,13 +89,13 @@ def main() -> int:
                 script.write_text(text, encoding="utf-8")
                 failures += run(["/usr/bin/python3", str(script)], work, env, where)
                 ran += 1
-            elif language in ("cpp", "c"):
+            elif language in ("cpp", "c", "cmake"):
                 if not any(text.strip() in example for example in examples):
                     failures.append(f"{where}: this {language} block stands in no file under examples/")
                 ran += 1
             else:
                 failures.append(f"{where}: block tagged '{language}' has no checker; tag it sh, toml, python, "
-                                f"cpp, c or json")
+                                f"cpp, c, cmake or json")
     finally:
         shutil.rmtree(work, ignore_errors=True)
     for failure in failures:

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <vector>
 
+#include "reference/reference_solution.hpp"
+#include "reference/work_precision.hpp"
 #include "restitution/collision_solver.hpp"
-#include "restitution/reference_solution.hpp"
-#include "restitution/work_precision.hpp"
 
 namespace restitution::test_support {
 
@@ -16,7 +16,7 @@ inline const std::vector<ReferenceRow>& reference_rows() {
   return rows;
 }
 
-// The contract's error (restitution/work_precision.hpp).
+// The contract's error (reference/work_precision.hpp).
 using restitution::contract_error;
 
 }  // namespace restitution::test_support

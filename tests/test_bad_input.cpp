@@ -1,5 +1,6 @@
-// Bad input through the executable, table-driven: each case must end with exit status 2, exactly one line
-// on stderr that starts "restitution: error:" and names the option or key, nothing on stdout, and no
+// Bad input through the executable, table-driven: each case must end with exit status 2 (3 for an output
+// that cannot be written), exactly one line on stderr that starts "restitution: error:" ("restitution: I/O
+// error:") and names the option or key, nothing on stdout, and no
 // output file left behind.
 #include <gtest/gtest.h>
 
@@ -18,6 +19,7 @@ using test_support::run_cli;
 struct BadInput {
   const char* arguments;  // "{dir}" stands for a fresh empty folder
   const char* names;      // what the one line on stderr must contain
+  int status = 2;         // 3: an output that cannot be written (an I/O failure, not bad input)
 };
 
 const std::vector<BadInput> kCases = {
@@ -111,8 +113,9 @@ const std::vector<BadInput> kCases = {
     {"sweep --zeta-min 0 --zeta-max 2 --points 3 --tolerance 1 --out {dir}/s.csv", "tolerance must lie in"},
     {"sweep --zeta-min 0 --zeta-max 2 --points 3 --end none --out {dir}/s.csv", "--end: none not in"},
     {"sweep --zeta-min 0 --zeta-max 2 --points 3 --out {dir}", "must name a file, not a folder"},
-    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --out {dir}/a-file/s.csv", "cannot create output folder"},
-    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --out /proc/no-such/s.csv", "cannot create output folder"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --out {dir}/a-file/s.csv", "cannot create output folder", 3},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 3 --out /proc/no-such/s.csv", "cannot create output folder",
+     3},
     {"sweep --zeta-min 0 --zeta-max 2 --points 3 --out {dir}/s.csv --out {dir}/t.csv",
      "--out is given more than once"},
     // fit.
@@ -128,7 +131,7 @@ const std::vector<BadInput> kCases = {
     {"stability --tolerance 1e-12", "stability --tolerance must lie in [1e-09, 0.01]"},
     {"stability --points-per-decade 0", "--points-per-decade must lie in [1, 20], got 0"},
     {"stability --points-per-decade abc", "--points-per-decade expects a whole number, got 'abc'"},
-    {"stability --out /proc/no-such/x", "cannot create output folder"},
+    {"stability --out /proc/no-such/x", "cannot create output folder", 3},
     // run (scene files) and calibrate.
     {"run {dir}/no-such.toml", "cannot read scene file"},
     {"run {dir}", "it is a folder"},
@@ -159,7 +162,7 @@ const std::vector<BadInput> kCases = {
     {"series eval --kind pade-1999 --zeta 1 --terms 3",
      "--terms applies to --kind naive and delayed-recovery"},
     {"series eval --kind naive --zeta 1 --coefficients maybe", "--coefficients: maybe not in"},
-    {"series validate --out /proc/no-such", "cannot create output folder"},
+    {"series validate --out /proc/no-such", "cannot create output folder", 3},
 };
 
 std::string with_folder(std::string arguments, const std::string& folder) {
@@ -183,8 +186,9 @@ TEST(BadInput, EveryCaseIsOneLineNamingTheProblemAndStatusTwo) {
   for (const BadInput& c : kCases) {
     const std::string arguments = with_folder(c.arguments, folder.string());
     const auto outcome = run_cli(arguments);
-    EXPECT_EQ(outcome.status, 2) << arguments << "\n" << outcome.err;
-    EXPECT_EQ(outcome.err.rfind("restitution: error: ", 0), 0U) << arguments << "\n" << outcome.err;
+    EXPECT_EQ(outcome.status, c.status) << arguments << "\n" << outcome.err;
+    const char* prefix = c.status == 3 ? "restitution: I/O error: " : "restitution: error: ";
+    EXPECT_EQ(outcome.err.rfind(prefix, 0), 0U) << arguments << "\n" << outcome.err;
     EXPECT_EQ(std::count(outcome.err.begin(), outcome.err.end(), '\n'), 1) << arguments << "\n"
                                                                            << outcome.err;
     EXPECT_NE(outcome.err.find(c.names), std::string::npos) << arguments << "\n" << outcome.err;

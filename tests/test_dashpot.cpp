@@ -6,8 +6,8 @@
 
 #include <cmath>
 
+#include "reference/dashpot_closed_form.hpp"
 #include "restitution/collision_solver.hpp"
-#include "restitution/dashpot_closed_form.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution {

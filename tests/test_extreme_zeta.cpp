@@ -7,8 +7,8 @@
 #include <cmath>
 #include <string>
 
+#include "analysis/asymptotics.hpp"
 #include "reference_values.hpp"
-#include "restitution/asymptotics.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "analysis/asymptotics.hpp"
+#include "analysis/power_law_fit.hpp"
 #include "cli_runner.hpp"
-#include "restitution/asymptotics.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/power_law_fit.hpp"
 
 namespace restitution {
 namespace {

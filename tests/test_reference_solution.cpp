@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 #include <quadmath.h>
 
+#include "reference/reference_solution.hpp"
 #include "reference_checks.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/reference_solution.hpp"
 
 namespace restitution {
 namespace {

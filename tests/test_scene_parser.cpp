@@ -5,8 +5,8 @@
 
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/scene.hpp"
-#include "restitution/scene_plan.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_plan.hpp"
 
 namespace restitution::scene {
 namespace {

@@ -8,13 +8,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "reference/work_precision.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/scene.hpp"
-#include "restitution/scene_plan.hpp"
-#include "restitution/scene_run.hpp"
 #include "restitution/series.hpp"
 #include "restitution/units.hpp"
-#include "restitution/work_precision.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_plan.hpp"
+#include "scene/scene_run.hpp"
 
 namespace restitution::scene {
 namespace {

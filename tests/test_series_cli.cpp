@@ -8,7 +8,7 @@
 
 #include "cli_runner.hpp"
 #include "restitution/series.hpp"
-#include "restitution/series_coefficients.hpp"
+#include "series_study/series_coefficients.hpp"
 
 namespace restitution {
 namespace {

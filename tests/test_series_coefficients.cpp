@@ -13,8 +13,8 @@
 
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"
-#include "restitution/series_coefficients.hpp"
 #include "restitution/series_tables.hpp"
+#include "series_study/series_coefficients.hpp"
 
 namespace restitution::series {
 namespace {

@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "analysis/stability_report.hpp"
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/stability_report.hpp"
 
 namespace restitution {
 namespace {

@@ -7,7 +7,7 @@
 #include "reference_checks.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/taylor_engine.hpp"
+#include "taylor/taylor_engine.hpp"
 
 namespace restitution {
 namespace {

@@ -15,8 +15,8 @@
 
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/scene.hpp"
-#include "restitution/scene_plan.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_plan.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace restitution::scene {

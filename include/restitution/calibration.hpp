@@ -15,13 +15,17 @@ struct CalibrationRequest {
   CollisionEnd end = CollisionEnd::delayed_recovery;
   double tolerance = 1e-10;  // accuracy of each solve (SolveOptions::tolerance)
   Method method = Method::automatic;
+  // true: ζ from the certified fast table (restitution/fast.hpp, |Δε| <= 1e-13 min(ε, 1 − ε), every ε in
+  // (0, 1)) instead of root finding with the solver; tolerance and method are then unused and no collision
+  // is integrated.
+  bool fast = false;
   std::optional<double> k;  // ρ/m_eff [s^-2 m^-1/2] of a material (ElasticConstants::k): gives A
 };
 
 struct Calibration {
-  double zeta = 0.0;                             // ζ with ε(ζ) = eps at the requested end
-  double beta = 0.0;                             // β = ζ / v^{1/5} [s^{1/5} m^{-1/5}]
-  double eps_at_zeta = 0.0;                      // ε(ζ) re-solved at the root, for the record
+  double zeta = 0.0;         // ζ with ε(ζ) = eps at the requested end
+  double beta = 0.0;         // β = ζ / v^{1/5} [s^{1/5} m^{-1/5}]
+  double eps_at_zeta = 0.0;  // ε(ζ) re-solved at the root (fast: the table's), for the record
   double characteristic_velocity_m_s = 0.0;      // 1999 paper's g* = (C1 β)^{-5} [m/s]
   std::optional<double> dissipative_constant_s;  // A [s], when a material was given
   int solves = 0;                                // collisions integrated by the root finder

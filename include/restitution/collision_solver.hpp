@@ -2,6 +2,7 @@
 // The collision solver: shoots the equation of motion of a ContactLaw with CVODE and detects the
 // end(s) of the collision as events. One solver holds one CVODE integrator per method and reuses it
 // across solves; use one solver per thread.
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -11,19 +12,28 @@
 
 namespace restitution {
 
-// bdf, adams: CVODE; taylor: the Taylor-series engine (restitution/taylor_engine.hpp); automatic: CVODE,
+// bdf, adams: CVODE; taylor: the Taylor-series engine (taylor/taylor_engine.hpp); automatic: CVODE,
 // BDF or Adams per regime.
 enum class Method { bdf, adams, automatic, taylor };
-const char* method_name(Method method);  // "bdf" | "adams" | "auto" | "taylor"
+const char* method_name(Method method);            // "bdf" | "adams" | "auto" | "taylor"
+Method method_from_name(const std::string& name);  // the inverse; throws InvalidInput naming the value
 
 // One end of the collision, for callers that ask for a single end.
 enum class CollisionEnd { naive, delayed_recovery };
 const char* end_name(CollisionEnd end);               // "naive" | "delayed-recovery"
 CollisionEnd end_from_name(const std::string& name);  // throws InvalidInput naming the value
 
+// Both ends, in the order a collision reaches them last (for loops over the ends).
+inline constexpr std::array<CollisionEnd, 2> kCollisionEnds{CollisionEnd::naive,
+                                                            CollisionEnd::delayed_recovery};
+
+// Which ends a solve computes. Kept as two flags because most callers ask for both; index it by CollisionEnd.
 struct EndSelection {
   bool naive = true;             // end where the overlap vanishes, x = 0
   bool delayed_recovery = true;  // end where the force vanishes, c_d x' + c_s x = 0
+  [[nodiscard]] bool operator[](CollisionEnd end) const {
+    return end == CollisionEnd::naive ? naive : delayed_recovery;
+  }
 };
 
 struct SolveOptions {
@@ -33,7 +43,7 @@ struct SolveOptions {
   EndSelection ends;
   bool keep_trajectory = false;  // record (τ, x, x', x'') at every internal step and at every event
   // Hertz law only: integrate in u = sqrt(x) near x = 0, where the solution is analytic in u but not in τ
-  // (DESIGN.md §4). false integrates in τ throughout, for comparison.
+  // (docs/design.md §4). false integrates in τ throughout, for comparison.
   bool smooth_ends = true;
   // Most internal CVODE steps per phase of the collision; beyond it the solve fails with CVODE's "too much
   // work" (flag -1). The default never binds on the collisions of this project (at most a few thousand
@@ -52,6 +62,9 @@ double min_tolerance(Method method);
 
 // Throws InvalidInput naming the tolerance or the ends when the options cannot be honoured for any law.
 void check_solve_options(const SolveOptions& options);
+// check_solve_options plus the ends that do not exist for this law (the naive end of an overdamped dash-pot):
+// every engine checks its request with it.
+void check_solve_request(const ContactLaw& law, const SolveOptions& options);
 // Throws InvalidInput for everything CollisionSolver::solve would refuse for this law and these options
 // (the checks above, an end that does not exist, an engine's limits) without integrating: callers with
 // many points check them all before computing any.
@@ -98,6 +111,14 @@ struct CollisionResult {
   std::optional<EndResult> delayed_recovery;
   SolverStats stats;
   std::vector<TrajectoryPoint> trajectory;  // empty unless SolveOptions::keep_trajectory
+
+  // The result at one end: empty when the end was not requested (or does not exist for the law).
+  [[nodiscard]] const std::optional<EndResult>& operator[](CollisionEnd end) const {
+    return end == CollisionEnd::naive ? naive : delayed_recovery;
+  }
+  [[nodiscard]] std::optional<EndResult>& operator[](CollisionEnd end) {
+    return end == CollisionEnd::naive ? naive : delayed_recovery;
+  }
 };
 
 class CollisionSolver {

@@ -7,9 +7,9 @@
 // spheres w(x) = 0 at x <= 0 (no force without overlap; sqrt of a trial step's negative x is never taken).
 // The dash-pot keeps its smooth continuation past x = 0: only trial steps and the root finder see x < 0,
 // and a force switched off there would put a jump exactly at the naive end and spoil its location. The force
-// vanishes where c_d x' + c_s x = 0: that is the root function of the delayed-recovery end (DESIGN.md §1).
-// The dissipated energy per unit (scaled) mass grows as dD/dτ = c_d · w(x) · x'^2, so D = c_d ∫ w(x) x'^2 dτ;
-// the elastic energy is U(x) = c_s ∫_0^x w(s) s ds.
+// vanishes where c_d x' + c_s x = 0: that is the root function of the delayed-recovery end (docs/design.md
+// §1). The dissipated energy per unit (scaled) mass grows as dD/dτ = c_d · w(x) · x'^2, so D = c_d ∫ w(x)
+// x'^2 dτ; the elastic energy is U(x) = c_s ∫_0^x w(s) s ds.
 #include <cmath>
 
 namespace restitution {

@@ -1,6 +1,6 @@
 #pragma once
 // A pair of viscoelastic spheres described by material data in SI units, and the constants of their
-// collision equation (DESIGN.md §1; 1999 paper Eqs. 1-5):
+// collision equation (docs/design.md §1; 1999 paper Eqs. 1-5):
 //     ρ = 2 Y sqrt(R_eff) / (3 (1 - ν²)),  R_eff = R1 R2 / (R1 + R2),  m_eff = m1 m2 / (m1 + m2),
 //     A = (1/3) (3η2 - η1)² / (3η2 + 2η1) · (1 - ν²)(1 - 2ν) / (Y ν²).
 // Both spheres are of the same material. Error messages name the offending key as scene files spell it.

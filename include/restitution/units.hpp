@@ -1,5 +1,6 @@
 #pragma once
-// Physical units <-> the scaled equations, in one place (DESIGN.md §1; 2008 paper Eq. 23; 1999 paper Eq. 30).
+// Physical units <-> the scaled equations, in one place (docs/design.md §1; 2008 paper Eq. 23; 1999 paper Eq.
+// 30).
 //
 // Newton's equation for the compression ξ [m] of two viscoelastic spheres, divided by m_eff:
 //     ξ'' + γ sqrt(ξ) ξ' + k ξ^{3/2} = 0,   ξ(0) = 0, ξ'(0) = v [m/s],

@@ -1,4 +1,4 @@
-#include "restitution/asymptotics.hpp"
+#include "analysis/asymptotics.hpp"
 
 #include <fmt/core.h>
 

@@ -1,4 +1,4 @@
-#include "restitution/power_law_fit.hpp"
+#include "analysis/power_law_fit.hpp"
 
 #include <fmt/core.h>
 

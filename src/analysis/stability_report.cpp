@@ -1,4 +1,4 @@
-#include "restitution/stability_report.hpp"
+#include "analysis/stability_report.hpp"
 
 #include <fmt/core.h>
 

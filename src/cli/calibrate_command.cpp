@@ -37,7 +37,8 @@ int run_calibrate(const CalibrateOptions& o) {
   request.velocity_m_s = o.velocity;
   request.end = o.end == "naive" ? CollisionEnd::naive : CollisionEnd::delayed_recovery;
   request.tolerance = o.tolerance;
-  request.method = method_from(o.method);
+  request.fast = o.method == "fast";
+  if (!request.fast) request.method = method_from(o.method);
   request.k = material_k(o);
   CollisionSolver solver;
   const Calibration c = calibrate(request, solver);
@@ -45,7 +46,8 @@ int run_calibrate(const CalibrateOptions& o) {
     JsonWriter json;
     json.begin_object();
     json.field("eps", o.eps).field("velocity_m_s", o.velocity).field("end", end_name(request.end));
-    json.field("tolerance", o.tolerance);
+    json.field("method", o.method);
+    if (!request.fast) json.field("tolerance", o.tolerance);
     json.field("zeta", c.zeta).field("beta", c.beta).field("eps_at_zeta", c.eps_at_zeta);
     json.field("characteristic_velocity_m_s", c.characteristic_velocity_m_s);
     if (request.k) json.field("k", *request.k);
@@ -55,11 +57,11 @@ int run_calibrate(const CalibrateOptions& o) {
     fmt::print("{}\n", json.str());
     return 0;
   }
-  fmt::print("calibration: eps = {} at v = {} m/s, {} end (tolerance {:g})\n", o.eps, o.velocity,
-             end_name(request.end), o.tolerance);
+  fmt::print("calibration: eps = {} at v = {} m/s, {} end ({})\n", o.eps, o.velocity, end_name(request.end),
+             request.fast ? std::string("fast table, 1e-13") : fmt::format("tolerance {:g}", o.tolerance));
   fmt::print("  zeta = beta v^(1/5)         {:.12g}\n", c.zeta);
   fmt::print("  beta                        {:.12g} s^(1/5) m^(-1/5)\n", c.beta);
-  fmt::print("  eps(zeta), re-solved        {:.12g}\n", c.eps_at_zeta);
+  fmt::print("  eps(zeta), {:<17}{:.12g}\n", request.fast ? "fast table" : "re-solved", c.eps_at_zeta);
   fmt::print("  g* (1999 paper, Eq. 31)     {:.12g} m/s\n", c.characteristic_velocity_m_s);
   if (c.dissipative_constant_s) {
     fmt::print("  k = rho/m_eff               {:.12g} s^-2 m^-1/2\n", *request.k);
@@ -83,9 +85,11 @@ void add_calibrate_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--tolerance", o->tolerance,
                   "accuracy of each eps, in [1e-11, 1e-2] (taylor: [1e-13, 1e-2])")
       ->capture_default_str();
-  cmd->add_option("--method", o->method,
-                  "integration method: bdf, adams, auto or taylor (the naive end only for zeta <= 100)")
-      ->check(CLI::IsMember({"bdf", "adams", "auto", "taylor"}))
+  cmd->add_option(
+         "--method", o->method,
+         "integration method: bdf, adams, auto or taylor (the naive end only for zeta <= 100); or fast: "
+         "the certified table (restitution/fast.hpp, 1e-13, no integration, any eps in (0, 1))")
+      ->check(CLI::IsMember({"bdf", "adams", "auto", "taylor", "fast"}))
       ->capture_default_str();
   add_material_options(*cmd, o->material);
   cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");

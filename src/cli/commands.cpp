@@ -13,6 +13,8 @@ void add_all_commands(CLI::App& app, Action& chosen) {
   add_series_command(app, chosen);
   add_sweep_command(app, chosen);
   add_dem_command(app, chosen);
+  add_fast_table_command(app, chosen);
+  add_export_command(app, chosen);
 }
 
 }  // namespace restitution::cli

@@ -4,11 +4,11 @@
 
 #include <memory>
 
+#include "analysis/asymptotics.hpp"
+#include "analysis/power_law_fit.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
-#include "restitution/asymptotics.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/power_law_fit.hpp"
 
 namespace restitution::cli {
 namespace {

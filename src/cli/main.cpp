@@ -1,5 +1,5 @@
 // The `restitution` program: parses the command line, runs one subcommand, maps errors to exit statuses
-// (2: bad usage or input, 1: numerical failure, 3: a failed write) with one line on stderr.
+// (2: bad usage or input, 1: numerical failure, 3: an output that cannot be written) with one line on stderr.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
@@ -18,6 +18,9 @@ int run(int argc, char** argv) {
                "restitution"};
   app.set_version_flag("--version", "restitution " RESTITUTION_VERSION);
   app.require_subcommand(1);
+  app.footer(
+      "Exit status: 0 done, 1 numerical failure, 2 bad usage or input, 3 I/O failure (an output file or\n"
+      "folder that cannot be created or written).");
   cli::Action chosen;
   cli::add_all_commands(app, chosen);
 
@@ -56,6 +59,9 @@ int run(int argc, char** argv) {
   } catch (const InvalidInput& e) {
     std::fprintf(stderr, "restitution: error: %s\n", cli::one_line(e.what()).c_str());
     return 2;
+  } catch (const IoError& e) {
+    std::fprintf(stderr, "restitution: I/O error: %s\n", cli::one_line(e.what()).c_str());
+    return 3;
   } catch (const NumericalFailure& e) {
     std::fprintf(stderr, "restitution: numerical failure: %s\n", cli::one_line(e.what()).c_str());
     return 1;

@@ -8,8 +8,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/output_files.hpp"
+#include "reference/reference_solution.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/reference_solution.hpp"
 
 namespace restitution::cli {
 namespace {

@@ -14,9 +14,9 @@
 #include "cli/scene_outputs.hpp"
 #include "cli/work_precision_files.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/scene.hpp"
-#include "restitution/scene_plan.hpp"
-#include "restitution/scene_run.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_plan.hpp"
+#include "scene/scene_run.hpp"
 
 namespace restitution::cli {
 namespace {

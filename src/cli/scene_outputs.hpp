@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "restitution/scene.hpp"
-#include "restitution/scene_run.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_run.hpp"
 
 namespace restitution::cli {
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "cli/output_files.hpp"
-#include "restitution/dashpot_closed_form.hpp"
+#include "reference/dashpot_closed_form.hpp"
 #include "restitution/units.hpp"
 
 namespace restitution::cli {

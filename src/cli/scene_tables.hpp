@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "restitution/scene.hpp"
-#include "restitution/scene_run.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_run.hpp"
 
 // Sweep tables hold, per approximation, eps_<label> and rel_diff_<label> = eps_<label> / eps - 1 against the
 // numerics at the end the approximation describes.

@@ -12,36 +12,10 @@
 #include "cli/series_reports.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"
-#include "restitution/series_coefficients.hpp"
-#include "restitution/series_tables.hpp"
+#include "series_study/series_named.hpp"
 
 namespace restitution::cli {
 namespace {
-
-using series::Coefficients;
-using series::kMaxOrder;
-
-const std::vector<std::string> kSeriesKinds = {"naive", "delayed-recovery", "max-compression"};
-const std::vector<std::string> kEvalKinds = {
-    "naive", "delayed-recovery", "pade-1999", "simple-theory-1999", "pade-2011-1-4", "pade-2011-3-6"};
-
-// Largest count per kind: c_1..c_N and a/b need order N, h_0..h_N order ceil(N/2).
-int max_count(const std::string& kind) {
-  return kind == "delayed-recovery" ? 2 * kMaxOrder : kMaxOrder;
-}
-int order_for(const std::string& kind, int count) {
-  return kind == "delayed-recovery" ? (count + 1) / 2 : count;
-}
-
-void check_count(const std::string& option, const std::string& kind, int count) {
-  if (count < 1 || count > max_count(kind))
-    throw InvalidInput(
-        fmt::format("{} {} out of range [1, {}] for --kind {}", option, count, max_count(kind), kind));
-}
-
-std::vector<double> slice(const std::vector<double>& v, int first, int last) {
-  return {v.begin() + first, v.begin() + last + 1};
-}
 
 void write_array(JsonWriter& json, const char* name, const std::vector<double>& values) {
   json.key(name).begin_array();
@@ -61,35 +35,28 @@ struct CoefficientsOptions {
 };
 
 int run_coefficients(const CoefficientsOptions& o) {
-  check_count("--count", o.kind, o.count);
-  const Coefficients k = series::compute_coefficients(order_for(o.kind, o.count));
+  const auto lists = series::coefficients_by_kind(o.kind, o.count, "--");
   JsonWriter json;
   json.begin_object().field("kind", o.kind);
-  if (o.kind == "max-compression") {
-    const auto a = slice(k.a, 1, o.count);
-    const auto b = slice(k.b, 0, o.count);
-    write_array(json, "a", a);
-    write_array(json, "b", b);
-    if (!o.json) {
-      fmt::print(
-          "maximal compression, natural units: tau_max = tau_max0 + sum a_k zeta^k, x_max = sum b_k "
-          "zeta^k\n");
-      fmt::print("  tau_max0 = {:.17g}\n", series::undamped_max_time());
-      print_column("a", 1, a);
-      print_column("b", 0, b);
-    }
+  if (lists.size() == 1) {
+    write_array(json, "coefficients", lists[0].values);
   } else {
-    const bool naive = o.kind == "naive";
-    const auto values = naive ? slice(k.c, 1, o.count) : slice(k.h, 0, o.count);
-    write_array(json, "coefficients", values);
-    if (!o.json) {
-      fmt::print("{}\n", naive ? "naive series eps = 1 + sum_{k>=1} c_k zeta^k"
-                               : "delayed-recovery series eps = sum_{k>=0} h_k zeta^{k/2}");
-      print_column(naive ? "c" : "h", naive ? 1 : 0, values);
-    }
+    for (const auto& list : lists) write_array(json, list.symbol.c_str(), list.values);
   }
   json.end_object();
-  if (o.json) fmt::print("{}\n", json.str());
+  if (o.json) {
+    fmt::print("{}\n", json.str());
+    return 0;
+  }
+  if (o.kind == "max-compression") {
+    fmt::print(
+        "maximal compression, natural units: tau_max = tau_max0 + sum a_k zeta^k, x_max = sum b_k zeta^k\n");
+    fmt::print("  tau_max0 = {:.17g}\n", series::undamped_max_time());
+  } else {
+    fmt::print("{}\n", o.kind == "naive" ? "naive series eps = 1 + sum_{k>=1} c_k zeta^k"
+                                         : "delayed-recovery series eps = sum_{k>=0} h_k zeta^{k/2}");
+  }
+  for (const auto& list : lists) print_column(list.symbol.c_str(), list.first_index, list.values);
   return 0;
 }
 
@@ -101,45 +68,21 @@ struct EvalOptions {
   bool json = false;
 };
 
-series::Value evaluate(const EvalOptions& o, int& terms_used) {
-  const bool is_series = o.kind == "naive" || o.kind == "delayed-recovery";
-  if (!is_series) {
-    if (o.terms) throw InvalidInput("--terms applies to --kind naive and delayed-recovery only");
-    if (o.kind == "pade-1999") return series::pade_1999(o.zeta, series::pade_1999_published());
-    if (o.kind == "simple-theory-1999") return series::simple_theory_1999(o.zeta);
-    if (o.kind == "pade-2011-1-4") return series::pade_2011_1_4(o.zeta);
-    return series::pade_2011_3_6(o.zeta);
-  }
-  const bool naive = o.kind == "naive";
-  const double radius = naive ? series::kNaiveSeriesRadius : series::kDelayedRecoverySeriesRadius;
-  if (o.zeta >= radius) {
-    throw InvalidInput(
-        fmt::format("zeta = {} is outside the radius of convergence of the {} series (zeta < "
-                    "{:g}, docs/series.md): its partial sums diverge there; use an "
-                    "approximant (--kind pade-2011-3-6) or `restitution eps`",
-                    o.zeta, o.kind, radius));
-  }
-  const bool published = o.coefficients == "published";
-  const int available = published ? static_cast<int>(naive ? series::published::kTable3C.size()
-                                                           : series::published::kTable5H.size() - 1)
-                                  : max_count(o.kind);
-  terms_used = o.terms.value_or(published ? available : (naive ? 40 : 60));
-  if (terms_used < 1 || terms_used > available)
-    throw InvalidInput(fmt::format("--terms {} out of range [1, {}] for --kind {} with --coefficients {}",
-                                   terms_used, available, o.kind, o.coefficients));
-  if (published) {
-    if (naive) return series::naive_series(o.zeta, std::span(series::published::kTable3C).first(terms_used));
-    return series::delayed_recovery_series(o.zeta,
-                                           std::span(series::published::kTable5H).first(terms_used + 1));
-  }
-  const Coefficients k = series::compute_coefficients(order_for(o.kind, terms_used));
-  if (naive) return series::naive_series(o.zeta, slice(k.c, 1, terms_used));
-  return series::delayed_recovery_series(o.zeta, slice(k.h, 0, terms_used));
-}
-
 int run_eval(const EvalOptions& o) {
-  int terms = 0;
-  const series::Value v = evaluate(o, terms);
+  if (o.kind == "naive" || o.kind == "delayed-recovery") {
+    const double radius =
+        o.kind == "naive" ? series::kNaiveSeriesRadius : series::kDelayedRecoverySeriesRadius;
+    if (o.zeta >= radius) {
+      throw InvalidInput(
+          fmt::format("zeta = {} is outside the radius of convergence of the {} series (zeta < {:g}, "
+                      "docs/series.md): its partial sums diverge there; use an approximant "
+                      "(--kind pade-2011-3-6) or `restitution eps`",
+                      o.zeta, o.kind, radius));
+    }
+  }
+  const auto [values, terms] =
+      series::evaluate_by_kind(o.kind, std::span(&o.zeta, 1), o.terms, o.coefficients == "published", "--");
+  const series::Value& v = values.front();
   if (o.json) {
     JsonWriter json;
     json.begin_object().field("kind", o.kind).field("zeta", o.zeta);
@@ -159,7 +102,7 @@ void add_coefficients(CLI::App& parent, Action& chosen) {
   CLI::App* cmd = parent.add_subcommand("coefficients", "recomputed series coefficients (__float128)");
   cmd->add_option("--kind", o->kind, "naive (c_1..c_N), delayed-recovery (h_0..h_N), max-compression (a, b)")
       ->required()
-      ->check(CLI::IsMember(kSeriesKinds));
+      ->check(CLI::IsMember(series::coefficient_kinds()));
   cmd->add_option("--count", o->count, "N: how many coefficients")->required();
   cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
   cmd->callback([o, &chosen] { chosen = [o] { return run_coefficients(*o); }; });
@@ -171,7 +114,7 @@ void add_eval(CLI::App& parent, Action& chosen) {
   cmd->add_option("--kind", o->kind,
                   "naive, delayed-recovery, pade-1999, simple-theory-1999, pade-2011-1-4, pade-2011-3-6")
       ->required()
-      ->check(CLI::IsMember(kEvalKinds));
+      ->check(CLI::IsMember(series::evaluation_kinds()));
   cmd->add_option("--zeta", o->zeta,
                   "zeta = beta v^{1/5} >= 0; the series only below their radius of convergence (naive 1.39, "
                   "delayed-recovery 1.10)")

@@ -10,8 +10,8 @@
 
 #include "cli/json_writer.hpp"
 #include "cli/output_files.hpp"
-#include "restitution/series_coefficients.hpp"
-#include "restitution/series_validation.hpp"
+#include "series_study/series_coefficients.hpp"
+#include "series_study/series_validation.hpp"
 
 namespace restitution::cli {
 namespace {

@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <memory>
 
+#include "analysis/stability_report.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/output_files.hpp"
-#include "restitution/stability_report.hpp"
 
 namespace restitution::cli {
 namespace {

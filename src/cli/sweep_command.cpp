@@ -20,7 +20,7 @@
 #include "cli/output_files.hpp"
 #include "cli/sweep_table.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/sweep.hpp"
+#include "sweep/sweep.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -88,7 +88,7 @@ class PartialFile {
     std::error_code error;
     if (path.has_parent_path()) fs::create_directories(path.parent_path(), error);
     file_ = std::fopen(path.c_str(), keep_bytes > 0 ? "ab" : "wb");
-    if (file_ == nullptr) throw InvalidInput(fmt::format("--out: cannot write '{}'", path.string()));
+    if (file_ == nullptr) throw IoError(fmt::format("--out: cannot write '{}'", path.string()));
     if (keep_bytes == 0) write(preamble);
   }
   ~PartialFile() {

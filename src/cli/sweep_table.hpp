@@ -8,7 +8,7 @@
 #include <string>
 
 #include "restitution/collision_solver.hpp"
-#include "restitution/sweep.hpp"
+#include "sweep/sweep.hpp"
 
 namespace restitution::cli {
 

@@ -9,8 +9,8 @@
 #include "cli/commands.hpp"
 #include "cli/output_files.hpp"
 #include "cli/work_precision_files.hpp"
+#include "reference/work_precision.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/work_precision.hpp"
 
 namespace restitution::cli {
 namespace {

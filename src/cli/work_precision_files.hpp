@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "restitution/work_precision.hpp"
+#include "reference/work_precision.hpp"
 
 namespace restitution::cli {
 

@@ -9,7 +9,7 @@
 #include "core/cvode_integrator.hpp"
 #include "core/tolerance_policy.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/taylor_engine.hpp"
+#include "taylor/taylor_engine.hpp"
 
 namespace restitution {
 
@@ -32,6 +32,13 @@ const char* method_name(Method method) {
   return "?";
 }
 
+Method method_from_name(const std::string& name) {
+  for (const Method method : {Method::bdf, Method::adams, Method::automatic, Method::taylor}) {
+    if (name == method_name(method)) return method;
+  }
+  throw InvalidInput(fmt::format("method must be bdf, adams, auto or taylor, got '{}'", name));
+}
+
 const char* end_name(CollisionEnd end) {
   return end == CollisionEnd::naive ? "naive" : "delayed-recovery";
 }
@@ -47,7 +54,7 @@ EndSelection selection_of(CollisionEnd end) {
 }
 
 const EndResult& end_of(const CollisionResult& result, CollisionEnd end) {
-  const auto& value = end == CollisionEnd::naive ? result.naive : result.delayed_recovery;
+  const auto& value = result[end];
   if (!value) throw NumericalFailure(fmt::format("no {} end at zeta={}", end_name(end), result.parameter));
   return *value;
 }
@@ -223,6 +230,7 @@ class CollisionRun {
     detail::PhaseSettings settings{Form::compression, plan_.relative_tolerance,
                                    plan_.absolute_tolerance_compression, u_stop};
     settings.max_steps = plan_.max_steps;
+    settings.every_step = options_.keep_trajectory;
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
     if (is_start) {
@@ -276,6 +284,7 @@ class CollisionRun {
                                    plan_.time_limit};
     settings.switch_x = switch_x;
     settings.max_steps = plan_.max_steps;
+    settings.every_step = options_.keep_trajectory;
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
     events[static_cast<std::size_t>(count++)] = Event::max_compression;
@@ -336,7 +345,7 @@ void check_solvable(const ContactLaw& law, const SolveOptions& options) {
   if (options.method == Method::taylor) {
     check_taylor_request(law, options);
   } else {
-    detail::check_solve_request(law, options);
+    check_solve_request(law, options);
   }
 }
 

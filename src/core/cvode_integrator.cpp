@@ -92,7 +92,7 @@ int event_functions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data) 
 }  // namespace
 
 CvodeIntegrator::CvodeIntegrator(Method method, const sundials::Context& context)
-    : state_(sundials::make_serial_vector(kStateSize, context)),
+    : state_(sundials::make_small_vector(kStateSize, context)),
       absolute_tolerance_(sundials::make_serial_vector(kStateSize, context)),
       memory_(method == Method::adams ? CV_ADAMS : CV_BDF, context) {
   N_VConst(0.0, state_.get());
@@ -142,6 +142,7 @@ void CvodeIntegrator::start(const ContactLaw& law, const PhaseSettings& settings
                        "CVodeSVtolerances");
   sundials::check_flag(CVodeSetMaxNumSteps(mem, settings.max_steps), "CVodeSetMaxNumSteps");
   max_steps_ = settings.max_steps;
+  every_step_ = settings.every_step;
   sundials::check_flag(CVodeSetStopTime(mem, settings.stop), "CVodeSetStopTime");
   stop_ = settings.stop;
 
@@ -160,17 +161,25 @@ void CvodeIntegrator::start(const ContactLaw& law, const PhaseSettings& settings
 
 CvodeIntegrator::Step CvodeIntegrator::advance() {
   Step step;
-  // In CV_ONE_STEP mode CVODE's own step limit applies per call, that is never: the phase's limit is
-  // enforced here, reported like CVODE's own CV_TOO_MUCH_WORK.
+  // The phase's step limit: CVODE's own applies per call, so each call gets what the phase has left (in
+  // CV_ONE_STEP mode CVODE never applies it); running out is reported alike in both modes.
   long steps = 0;
   CVodeGetNumSteps(memory_.get(), &steps);
-  if (steps >= max_steps_) {
+  const auto too_much_work = [&] {
     CVodeGetCurrentTime(memory_.get(), &step.t);
-    throw NumericalFailure(
+    return NumericalFailure(
         fmt::format("CVODE failed at {}={} with flag {} (too much work: {} steps in one phase)",
                     data_.form == Form::time ? "tau" : "u", step.t, CV_TOO_MUCH_WORK, steps));
+  };
+  if (steps >= max_steps_) throw too_much_work();
+  if (!every_step_) {
+    sundials::check_flag(CVodeSetMaxNumSteps(memory_.get(), max_steps_ - steps), "CVodeSetMaxNumSteps");
   }
-  const int flag = CVode(memory_.get(), stop_, state_.get(), &step.t, CV_ONE_STEP);
+  const int flag = CVode(memory_.get(), stop_, state_.get(), &step.t, every_step_ ? CV_ONE_STEP : CV_NORMAL);
+  if (flag == CV_TOO_MUCH_WORK) {
+    CVodeGetNumSteps(memory_.get(), &steps);
+    throw too_much_work();
+  }
   if (flag < 0) {
     throw NumericalFailure(fmt::format("CVODE failed at {}={} with flag {} ({})",
                                        data_.form == Form::time ? "tau" : "u", step.t, flag,
@@ -185,7 +194,8 @@ CvodeIntegrator::Step CvodeIntegrator::advance() {
       step.events_found[i] = found[i] != 0 && !data_.ignored[i];
     }
   }
-  step.reached_stop = (flag == CV_TSTOP_RETURN);
+  // In CV_NORMAL mode tout is the stop: reaching it may be reported as a plain success.
+  step.reached_stop = flag == CV_TSTOP_RETURN || (!every_step_ && flag == CV_SUCCESS);
   return step;
 }
 

@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "restitution/errors.hpp"
-#include "restitution/taylor_engine.hpp"
 
 namespace restitution {
 
@@ -53,7 +52,7 @@ Magnitudes hertz_magnitudes(double zeta, const EndSelection& ends) {
   Magnitudes m;
   const double z = std::max(zeta, 1.0);
   // Large ζ: x_max ~ (3/(2ζ))^{2/3}; the delayed end has ε ~ ζ^{-5/3}; the naive end is reached through
-  // x ~ ζ^{-4} with ε ~ ζ^{-5} (DESIGN.md §4).
+  // x ~ ζ^{-4} with ε ~ ζ^{-5} (docs/design.md §4).
   m.x = std::pow(z, -2.0 / 3.0);
   m.velocity = std::pow(z, -5.0 / 3.0);
   if (ends.naive) {
@@ -96,36 +95,12 @@ double time_limit(const ContactLaw& law, const EndSelection& ends) {
     const double r = law.parameter;
     return (ends.naive && r < 1.0) ? 100.0 * (10.0 + M_PI / std::sqrt(1.0 - r * r)) : 1000.0;
   }
-  // Naive tail: slow relaxation over ~ζ·ln(ζ^{10/3}) (DESIGN.md §4); generous margin.
+  // Naive tail: slow relaxation over ~ζ·ln(ζ^{10/3}) (docs/design.md §4); generous margin.
   const double zeta = law.parameter;
   return law.time_scale * 1000.0 * (1.0 + zeta) * (1.0 + std::log1p(zeta));
 }
 
 }  // namespace
-
-void check_solve_request(const ContactLaw& law, const SolveOptions& options) {
-  check_solve_options(options);
-  if (law.kind == LawKind::linear_dashpot && options.ends.naive && law.parameter >= 1.0) {
-    throw InvalidInput(fmt::format(
-        "the naive end does not exist for damping-ratio r={} >= 1: the overdamped dash-pot never returns to "
-        "x = 0 (the 2008 paper assigns eps = 0, Eq. 10); ask for the delayed-recovery end",
-        law.parameter));
-  }
-  if (law.kind == LawKind::linear_dashpot && options.ends.naive) {
-    // Near critical damping the naive end's two modes cancel to ω = sqrt(1 - r²) and double rounding is
-    // amplified accordingly. Measured against the closed form: CVODE (BDF) misses T = 1e-9 by 1.01x at r =
-    // 0.9999 (floor 1.5e-9 there), Taylor misses T = 1e-12 by 4x at r = 0.999 (floor 2.2e-12).
-    const double omega_squared = (1.0 - law.parameter) * (1.0 + law.parameter);
-    const double smallest = options.method == Method::taylor ? kMinTaylorTolerance / std::sqrt(omega_squared)
-                                                             : 3e-13 / omega_squared;
-    if (options.tolerance < smallest) {
-      throw InvalidInput(fmt::format(
-          "the naive end of the dash-pot at damping-ratio {} is delivered only to tolerance >= {:.2g} by "
-          "method {} (rounding grows near critical damping), got {:g}",
-          law.parameter, smallest, method_name(options.method), options.tolerance));
-    }
-  }
-}
 
 SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options) {
   check_solve_request(law, options);

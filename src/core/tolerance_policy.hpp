@@ -18,9 +18,6 @@ struct SolvePlan {
   long max_steps = 0;                      // per phase
 };
 
-// check_solve_options plus the ends that do not exist for this law: every engine checks its request with it.
-void check_solve_request(const ContactLaw& law, const SolveOptions& options);
-
 // Throws InvalidInput for a tolerance outside [kMinTolerance, kMaxTolerance], no end requested, or an end
 // that does not exist for this law.
 SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options);

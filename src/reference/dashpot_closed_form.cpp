@@ -1,4 +1,4 @@
-#include "restitution/dashpot_closed_form.hpp"
+#include "reference/dashpot_closed_form.hpp"
 
 #include <fmt/core.h>
 

@@ -1,4 +1,4 @@
-#include "restitution/reference_solution.hpp"
+#include "reference/reference_solution.hpp"
 
 #include <fmt/core.h>
 #include <quadmath.h>

@@ -1,4 +1,4 @@
-#include "restitution/work_precision.hpp"
+#include "reference/work_precision.hpp"
 
 #include <fmt/core.h>
 
@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "restitution/errors.hpp"
-#include "restitution/taylor_engine.hpp"
+#include "taylor/taylor_engine.hpp"
 
 namespace restitution {
 namespace {

@@ -7,12 +7,12 @@
 #include <stdexcept>
 #include <utility>
 
-#include "restitution/asymptotics.hpp"
-#include "restitution/power_law_fit.hpp"
+#include "analysis/asymptotics.hpp"
+#include "analysis/power_law_fit.hpp"
+#include "analysis/stability_report.hpp"
+#include "reference/work_precision.hpp"
 #include "restitution/series.hpp"
 #include "restitution/series_tables.hpp"
-#include "restitution/stability_report.hpp"
-#include "restitution/work_precision.hpp"
 #include "scene/scene_approximations.hpp"
 
 namespace restitution::scene::detail {

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <vector>
 
-#include "restitution/scene.hpp"
-#include "restitution/scene_run.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_run.hpp"
 
 namespace restitution::scene::detail {
 

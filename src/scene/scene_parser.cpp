@@ -8,9 +8,9 @@
 #include <set>
 #include <sstream>
 
+#include "reference/work_precision.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/scene.hpp"
-#include "restitution/work_precision.hpp"
+#include "scene/scene.hpp"
 #include "scene/scene_approximations.hpp"
 #include "scene/toml_ascii.hpp"
 #include "scene/toml_reader.hpp"

@@ -1,4 +1,4 @@
-#include "restitution/scene_plan.hpp"
+#include "scene/scene_plan.hpp"
 
 #include <fmt/core.h>
 

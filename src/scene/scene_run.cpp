@@ -1,56 +1,39 @@
-#include "restitution/scene_run.hpp"
+#include "scene/scene_run.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <mutex>
-#include <thread>
 #include <utility>
 
+#include "parallel/parallel_for.hpp"
 #include "restitution/material.hpp"
 #include "scene/scene_extensions.hpp"
 
 namespace restitution::scene {
 namespace {
 
-// Solves every job once; workers take the next job from a shared counter, each with its own solver.
+// Solves every job once on the library's thread pool, each worker thread with its own solver; any failure
+// ends the run and is rethrown (a scene has no per-point failures).
 std::vector<CollisionResult> solve_all(const std::vector<SolveJob>& jobs, const Scene& scene,
                                        const RunSettings& settings) {
   std::vector<CollisionResult> solved(jobs.size());
-  std::atomic<std::size_t> next{0};
   std::size_t done = 0;
-  std::mutex lock;
-  std::exception_ptr failure;
-  auto work = [&] {
-    CollisionSolver solver;
-    for (std::size_t i = next++; i < jobs.size(); i = next++) {
+  std::mutex lock;  // guards done and the progress callback
+  restitution::detail::ParallelRun run{jobs.size(), settings.threads, {}};
+  restitution::detail::parallel_for(run, [&]() -> restitution::detail::IndexBody {
+    auto solver = std::make_shared<CollisionSolver>();
+    return [&, solver](std::size_t i) {
       SolveOptions options;
       options.tolerance = scene.tolerance;
       options.method = scene.method;
       options.ends = jobs[i].ends;
       options.keep_trajectory = jobs[i].keep_trajectory;
-      try {
-        solved[i] = solver.solve(jobs[i].law, options);
-      } catch (...) {
-        const std::lock_guard<std::mutex> guard(lock);
-        if (!failure) failure = std::current_exception();
-        next = jobs.size();
-        return;
-      }
+      solved[i] = solver->solve(jobs[i].law, options);
       const std::lock_guard<std::mutex> guard(lock);
       ++done;
       if (settings.progress) settings.progress(done, jobs.size());
-    }
-  };
-  const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
-  const std::size_t threads = std::min<std::size_t>(settings.threads != 0 ? settings.threads : hardware,
-                                                    std::max<std::size_t>(1, jobs.size()));
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+    };
+  });
   return solved;
 }
 

@@ -1,13 +1,11 @@
-// Parallel sweep over ζ: worker threads take the next unfinished index from a shared counter, each with
-// its own CollisionSolver; finished points go to the caller's callback one at a time.
+// Parallel sweep over ζ on the library's thread pool (src/parallel): each worker thread has its own
+// CollisionSolver; finished points go to the caller's callback one at a time.
 #include <algorithm>
-#include <atomic>
-#include <exception>
 #include <mutex>
-#include <thread>
 
+#include "parallel/parallel_for.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/sweep.hpp"
+#include "sweep/sweep.hpp"
 
 namespace restitution {
 namespace {
@@ -18,41 +16,21 @@ class SweepRun {
       : zetas_(zetas), options_(options), control_(control) {}
 
   SweepSummary run(unsigned threads) {
-    if (threads <= 1) {
-      work();
-    } else {
-      std::vector<std::jthread> workers;
-      workers.reserve(threads);
-      for (unsigned t = 0; t < threads; ++t) workers.emplace_back([this] { work(); });
-    }  // the jthreads join here
-    if (error_) std::rethrow_exception(error_);
-    summary_.stopped = stop_.load();
+    detail::ParallelRun run{zetas_.size(), threads, control_.stop_requested};
+    // A failing callback or allocation ends the sweep (the pool rethrows it); a point's own numerical
+    // failure is recorded with the point.
+    summary_.stopped = detail::parallel_for(run, [this]() -> detail::IndexBody {
+      auto solver = std::make_shared<CollisionSolver>();
+      return [this, solver](std::size_t i) {
+        if (!done_before(i)) finish(solve_point(*solver, i));
+      };
+    });
     return summary_;
   }
 
  private:
   [[nodiscard]] bool done_before(std::size_t i) const {
     return i < control_.already_done.size() && control_.already_done[i];
-  }
-
-  void work() {
-    CollisionSolver solver;
-    while (true) {
-      if (control_.stop_requested && control_.stop_requested()) stop_ = true;
-      if (stop_) return;
-      const std::size_t i = next_.fetch_add(1);
-      if (i >= zetas_.size()) return;
-      if (done_before(i)) continue;
-      try {
-        finish(solve_point(solver, i));
-      } catch (...) {
-        // Anything but a numerical failure of the point (a failing callback, an allocation) ends the sweep.
-        const std::lock_guard lock(mutex_);
-        if (!error_) error_ = std::current_exception();
-        stop_ = true;
-        return;
-      }
-    }
   }
 
   SweepPoint solve_point(CollisionSolver& solver, std::size_t i) const {
@@ -77,11 +55,8 @@ class SweepRun {
   const std::vector<double>& zetas_;
   const SolveOptions& options_;
   const SweepControl& control_;
-  std::atomic<std::size_t> next_{0};
-  std::atomic<bool> stop_{false};
-  std::mutex mutex_;  // guards summary_, error_ and the callback
+  std::mutex mutex_;  // guards summary_ and the callback
   SweepSummary summary_;
-  std::exception_ptr error_;
 };
 
 }  // namespace
@@ -103,10 +78,8 @@ SweepSummary run_sweep(const std::vector<double>& zetas, const SolveOptions& opt
   const auto skipped =
       static_cast<std::size_t>(std::count(control.already_done.begin(), control.already_done.end(), true));
   const std::size_t remaining = zetas.size() - skipped;
-  unsigned threads =
-      control.threads != 0 ? control.threads : std::max(1U, std::thread::hardware_concurrency());
-  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(remaining, 1)));
-  SweepSummary summary = SweepRun(zetas, options, control).run(threads);
+  SweepSummary summary =
+      SweepRun(zetas, options, control).run(detail::thread_count(control.threads, remaining));
   summary.skipped = skipped;
   summary.stopped = summary.stopped && summary.computed + skipped < zetas.size();
   return summary;

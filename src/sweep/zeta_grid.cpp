@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "restitution/errors.hpp"
-#include "restitution/sweep.hpp"
+#include "sweep/sweep.hpp"
 
 namespace restitution {
 namespace {

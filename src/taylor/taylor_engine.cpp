@@ -1,11 +1,10 @@
-#include "restitution/taylor_engine.hpp"
+#include "taylor/taylor_engine.hpp"
 
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/tolerance_policy.hpp"
 #include "restitution/errors.hpp"
 #include "taylor/taylor_collision.hpp"
 
@@ -85,7 +84,7 @@ EndResult end_result(const ContactLaw& law, const taylor::TaylorPoint<double>& p
 }  // namespace
 
 void check_taylor_request(const ContactLaw& law, const SolveOptions& options) {
-  detail::check_solve_request(law, options);
+  check_solve_request(law, options);
   if (options.keep_trajectory) {
     throw InvalidInput("method taylor does not record trajectories: use --method bdf or adams");
   }

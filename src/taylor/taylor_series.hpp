@@ -9,7 +9,7 @@
 // w(x) = sqrt(x) (Hertz, natural units: c_d = ζ, c_s = 1) and w(x) = 1 (dash-pot); tests compare both
 // engines on the same laws.
 //
-// Three forms (DESIGN.md §4, docs/accuracy.md):
+// Three forms (docs/design.md §4, docs/accuracy.md):
 //  * Hertz, compression form: independent u = sqrt(x), state (τ, y, I), y = x':
 //        dτ/du = 2u/y,  dy/du = -2ζu² - 2u⁴/y,  dI/du = 2u²y          (analytic while y != 0)
 //  * Hertz, time form: independent τ, state (u, y, I):

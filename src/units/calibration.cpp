@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "restitution/errors.hpp"
+#include "restitution/fast.hpp"
 
 namespace restitution {
 namespace {
@@ -21,13 +22,17 @@ double log_eps(double zeta, CollisionEnd end, SolveOptions options, CollisionSol
   return e.eps < 0.5 ? std::log(e.eps) : std::log1p(-e.one_minus_eps);
 }
 
+void check_measured_eps(double eps) {
+  if (!std::isfinite(eps) || eps <= 0.0 || eps >= 1.0) {
+    throw InvalidInput(fmt::format("eps must be in (0, 1), got {}", eps));
+  }
+}
+
 }  // namespace
 
 double zeta_for_eps(double eps, CollisionEnd end, const SolveOptions& options, CollisionSolver& solver,
                     int* solves) {
-  if (!std::isfinite(eps) || eps <= 0.0 || eps >= 1.0) {
-    throw InvalidInput(fmt::format("eps must be in (0, 1), got {}", eps));
-  }
+  check_measured_eps(eps);
   int count = 0;
   const double target = std::log(eps);
   auto f = [&](double zeta) {
@@ -70,10 +75,16 @@ Calibration calibrate(const CalibrationRequest& request, CollisionSolver& solver
   options.tolerance = request.tolerance;
   options.method = request.method;
   Calibration c;
-  c.zeta = zeta_for_eps(request.eps, request.end, options, solver, &c.solves);
+  if (request.fast) {
+    check_measured_eps(request.eps);
+    c.zeta = fast::zeta_from_eps(request.eps, request.end);
+    c.eps_at_zeta = fast::eps(c.zeta, request.end);
+  } else {
+    c.zeta = zeta_for_eps(request.eps, request.end, options, solver, &c.solves);
+    c.eps_at_zeta = std::exp(log_eps(c.zeta, request.end, options, solver));
+    ++c.solves;
+  }
   c.beta = beta_from(c.zeta, request.velocity_m_s);
-  c.eps_at_zeta = std::exp(log_eps(c.zeta, request.end, options, solver));
-  ++c.solves;
   c.characteristic_velocity_m_s = characteristic_velocity_m_s(c.beta);
   if (request.k) {
     c.dissipative_constant_s = dissipative_constant_from(c.beta, *request.k);

@@ -8,9 +8,9 @@
 
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/series_coefficients.hpp"
 #include "restitution/series_tables.hpp"
-#include "restitution/series_validation.hpp"
+#include "series_study/series_coefficients.hpp"
+#include "series_study/series_validation.hpp"
 
 namespace restitution::series {
 namespace {

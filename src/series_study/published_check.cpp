@@ -4,8 +4,8 @@
 #include <span>
 
 #include "restitution/errors.hpp"
-#include "restitution/series_coefficients.hpp"
 #include "restitution/series_tables.hpp"
+#include "series_study/series_coefficients.hpp"
 
 namespace restitution::series {
 namespace {

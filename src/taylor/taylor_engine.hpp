@@ -1,7 +1,7 @@
 #pragma once
 // The Taylor-series engine (`--method taylor`): a double-precision Taylor method of adaptive order on the
-// smooth formulation of the collision (u = sqrt(x) near x = 0, τ around maximal compression; DESIGN.md §4).
-// Same results and accuracy contract as the CVODE engine; reached through CollisionSolver::solve with
+// smooth formulation of the collision (u = sqrt(x) near x = 0, τ around maximal compression; docs/design.md
+// §4). Same results and accuracy contract as the CVODE engine; reached through CollisionSolver::solve with
 // Method::taylor, or directly here (it holds no state).
 #include "restitution/collision_solver.hpp"
 

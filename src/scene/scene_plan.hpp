@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "restitution/collision_solver.hpp"
-#include "restitution/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace restitution::scene {
 

@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "restitution/errors.hpp"
-#include "restitution/series_coefficients.hpp"
-#include "series/coefficient_generator.hpp"
+#include "series_study/coefficient_generator.hpp"
+#include "series_study/series_coefficients.hpp"
 
 namespace restitution::series {
 namespace {

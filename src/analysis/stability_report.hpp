@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/power_law_fit.hpp"
 #include "restitution/collision_solver.hpp"
-#include "restitution/power_law_fit.hpp"
 
 namespace restitution {
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "reference/reference_solution.hpp"
 #include "restitution/collision_solver.hpp"
-#include "restitution/reference_solution.hpp"
 
 namespace restitution {
 

@@ -1,7 +1,8 @@
 #pragma once
 // Independent computation of the series coefficients (natural units, ζ = β v^{1/5}):
 //   τ_max = τ_max0 + Σ a_k ζ^k,  x_max = Σ b_k ζ^k,  ε_naive = 1 + Σ c_k ζ^k,  ε_delayed = Σ h_k ζ^{k/2}.
-// Series arithmetic in extended precision (see docs/series.md and src/series/coefficient_generator.hpp).
+// Series arithmetic in extended precision (see docs/series.md and
+// src/series_study/coefficient_generator.hpp).
 #include <string>
 #include <vector>
 

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "reference/work_precision.hpp"
 #include "restitution/calibration.hpp"
-#include "restitution/scene.hpp"
-#include "restitution/scene_plan.hpp"
-#include "restitution/work_precision.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_plan.hpp"
 
 namespace restitution::scene {
 

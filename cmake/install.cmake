@@ -1,0 +1,18 @@
+# `cmake --install BUILD --prefix P` installs the library `restitution` as a CMake package:
+#   P/lib/librestitution.a, P/include/restitution/*.hpp (umbrella: restitution/restitution.hpp),
+#   P/lib/cmake/restitution/{restitutionConfig,restitutionConfigVersion,restitutionTargets}.cmake.
+# A consumer needs find_package(restitution 0.2 REQUIRED) and target_link_libraries(app restitution::restitution).
+include(CMakePackageConfigHelpers)
+
+set(restitution_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/restitution)
+install(TARGETS restitution_lib EXPORT restitutionTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/restitution DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(EXPORT restitutionTargets NAMESPACE restitution:: DESTINATION ${restitution_package_dir})
+
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/restitutionConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/restitutionConfig.cmake INSTALL_DESTINATION ${restitution_package_dir})
+# Before 1.0 a minor version may change the API, so 0.2 accepts 0.2.x only.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/restitutionConfigVersion.cmake
+                                 COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/restitutionConfig.cmake ${PROJECT_BINARY_DIR}/restitutionConfigVersion.cmake
+        DESTINATION ${restitution_package_dir})

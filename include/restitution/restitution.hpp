@@ -1,0 +1,11 @@
+#pragma once
+// The restitution library in one include: contact laws, the collision solver and its engines, units and
+// materials, calibration, and the analytic series with the published coefficient tables.
+#include "restitution/calibration.hpp"
+#include "restitution/collision_solver.hpp"
+#include "restitution/contact_law.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/material.hpp"
+#include "restitution/series.hpp"
+#include "restitution/series_tables.hpp"
+#include "restitution/units.hpp"

@@ -1,0 +1,142 @@
+"""Coefficient of restitution of viscoelastic spheres.
+
+eps(zeta) solves the collision x'' + zeta sqrt(x) x' + x^(3/2) = 0, x(0) = 0, x'(0) = 1 (natural units,
+zeta = beta v^(1/5)) to a certified accuracy |eps - eps_exact| <= tolerance * min(eps, 1 - eps).
+
+    >>> import restitution
+    >>> restitution.eps(0.1)                                    # float in, float out
+    >>> restitution.eps(numpy.logspace(-3, 3, 7), end="naive")  # array in, array of the same shape out
+    >>> restitution.eps(material=steel, velocity=[0.1, 1.0])    # velocities in m/s
+
+Errors: ValueError for bad input (the message names the argument, the value and, for arrays, the index);
+TypeError for arguments of the wrong type or combination; restitution.NumericalFailure (an ArithmeticError)
+when the solver cannot deliver the accuracy. Array calls run on all cores without the GIL and stop with
+KeyboardInterrupt on Ctrl-C.
+"""
+
+import numbers
+
+import numpy as _np
+
+from . import _restitution as _core
+from . import series
+from ._restitution import CollisionResult, EndResult, Calibration, Material, MaxCompression
+from ._restitution import NumericalFailure, SolverStats
+
+__all__ = ["eps", "solve", "calibrate", "zeta_of", "Material", "NumericalFailure", "CollisionResult",
+           "EndResult", "MaxCompression", "SolverStats", "Calibration", "series"]
+
+_SCALARS = (float, int)
+
+
+def _real_array(name, value):
+    """value as a float64 array; TypeError naming the argument for anything but real numbers."""
+    if isinstance(value, (str, bytes)) or value is None:
+        raise TypeError(f"{name} must be a real number or an array-like of real numbers, got {type(value).__name__}")
+    try:
+        array = _np.asarray(value)
+    except ValueError as error:  # ragged nested sequences
+        raise TypeError(f"{name} must be a real number or a rectangular array-like: {error}") from None
+    if array.dtype.kind not in "biuf":
+        raise TypeError(f"{name} must hold real numbers, got an array of dtype {array.dtype}")
+    return _np.asarray(array, dtype=_np.float64, order="C")  # keeps 0-d arrays 0-d
+
+
+def _text(name, value):
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be a str, got {type(value).__name__}")
+    return value
+
+
+def zeta_of(zeta=None, *, beta=None, velocity=None, material=None):
+    """The damping parameter zeta (natural units) from exactly one of the three ways to give it.
+
+    zeta: float or array-like, >= 0.
+    beta [s^(1/5) m^(-1/5)] with velocity [m/s]: zeta = beta v^(1/5), arrays broadcast.
+    material (restitution.Material, with its dissipation) with velocity [m/s]: beta = material.beta.
+    Returns a float for scalar input, else a float64 array of the broadcast shape.
+    """
+    given = [zeta is not None, beta is not None, material is not None]
+    if sum(given) != 1:
+        raise TypeError("give exactly one of zeta, beta (with velocity) and material (with velocity)")
+    if zeta is not None:
+        if velocity is not None:
+            raise TypeError("velocity goes with beta or material, not with zeta")
+        if type(zeta) in _SCALARS:
+            return float(zeta)
+        array = _real_array("zeta", zeta)
+        return float(array) if array.ndim == 0 else array
+    if velocity is None:
+        raise TypeError("beta and material need velocity [m/s]")
+    if material is not None:
+        if not isinstance(material, Material):
+            raise TypeError(f"material must be a restitution.Material, got {type(material).__name__}")
+        beta = material.beta
+    if type(beta) in _SCALARS and type(velocity) in _SCALARS:
+        return _core.zeta_from(float(beta), float(velocity))
+    b, v = _np.broadcast_arrays(_real_array("beta", beta), _real_array("velocity", velocity))
+    zetas = _core.zetas_from(_np.asarray(b, order="C"), _np.asarray(v, order="C"))
+    return float(zetas) if zetas.ndim == 0 else zetas
+
+
+def eps(zeta=None, end="delayed-recovery", tolerance=1e-10, method="auto", *, beta=None, velocity=None,
+        material=None):
+    """Coefficient of restitution eps at one end of the collision.
+
+    zeta: float or array-like >= 0 (natural units), or instead beta [s^(1/5) m^(-1/5)] with velocity [m/s]
+        (arrays broadcast), or a Material with velocity [m/s].
+    end: "delayed-recovery" (the force vanishes; the physical end) or "naive" (the overlap vanishes).
+    tolerance: |eps - eps_exact| <= tolerance * min(eps, 1 - eps), in [1e-14, 1e-2] (CVODE methods: >= 1e-11,
+        taylor: >= 1e-13).
+    method: "auto" (CVODE, BDF or Adams per regime), "bdf", "adams" or "taylor" (Taylor series; fastest;
+        the naive end for zeta <= 100 only).
+    Returns a float for scalar input, else a float64 array of the same (broadcast) shape, computed on all
+    cores with the GIL released (Ctrl-C -> KeyboardInterrupt).
+    Raises ValueError (bad value, empty array; the message names the index), TypeError (wrong type),
+    NumericalFailure (accuracy not reached; names the index).
+    """
+    if type(zeta) is float and beta is None and material is None and velocity is None:
+        return _core.eps_scalar(zeta, end, tolerance, method)  # fast path; pybind11 checks the types
+    z = zeta_of(zeta, beta=beta, velocity=velocity, material=material)
+    if isinstance(z, float):
+        return _core.eps_scalar(z, _text("end", end), _tolerance(tolerance), _text("method", method))
+    return _core.eps_array(z, _text("end", end), _tolerance(tolerance), _text("method", method))
+
+
+def _tolerance(tolerance):
+    if isinstance(tolerance, bool) or not isinstance(tolerance, numbers.Real):
+        raise TypeError(f"tolerance must be a real number, got {type(tolerance).__name__}")
+    return float(tolerance)
+
+
+def solve(zeta=None, end="both", tolerance=1e-10, method="auto", trajectory=False, *, beta=None,
+          velocity=None, material=None):
+    """One collision in full: a CollisionResult with, in natural units,
+
+    .naive / .delayed_recovery: EndResult (eps, one_minus_eps, tau, x, velocity, dissipated_energy) or
+        None for the end not asked for; .max_compression (tau, x); .stats (steps, rhs_evaluations, ...);
+    .method (the one used), .zeta, .tolerance; with trajectory=True the numpy arrays .tau, .x, .velocity
+        (x') and .acceleration (x'') at every internal step and event.
+    zeta, beta/velocity or material/velocity as for eps() but scalar only; end "both" (default), "naive"
+    or "delayed-recovery". Raises ValueError, TypeError, NumericalFailure as eps() does.
+    """
+    z = zeta_of(zeta, beta=beta, velocity=velocity, material=material)
+    if not isinstance(z, float):
+        raise TypeError("solve() takes one collision: zeta (or beta, velocity) must be scalars; use eps() for arrays")
+    return _core.solve(z, _text("end", end), _tolerance(tolerance), _text("method", method), bool(trajectory))
+
+
+def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=1e-10, method="auto"):
+    """The damping that gives a measured eps in (0, 1) at the impact speed velocity [m/s].
+
+    Returns a Calibration: .zeta (natural units), .beta [s^(1/5) m^(-1/5)], .characteristic_velocity
+    (the 1999 paper's g* [m/s]), .dissipative_constant (A [s] for the material's elastic data, else None),
+    .eps_at_zeta, .solves. end as for eps(). Raises ValueError for eps outside (0, 1) or below eps(zeta = 1e4).
+    """
+    if material is not None and not isinstance(material, Material):
+        raise TypeError(f"material must be a restitution.Material, got {type(material).__name__}")
+    for name, value in (("eps", eps), ("velocity", velocity)):
+        if isinstance(value, bool) or not isinstance(value, numbers.Real):
+            raise TypeError(f"{name} must be a real number, got {type(value).__name__}")
+    return _core.calibrate(float(eps), float(velocity), _text("end", end), _tolerance(tolerance),
+                           _text("method", method), material)

@@ -1,0 +1,175 @@
+# Type stubs of the restitution package. Physical quantities in SI units (named in each docstring);
+# zeta, tau, x and the EndResult/CollisionResult fields in natural units (x'(0) = 1).
+from typing import Literal, Optional, Sequence, Tuple, Union, overload
+
+import numpy as np
+import numpy.typing as npt
+
+from . import series as series
+
+End = Literal["naive", "delayed-recovery"]
+Method = Literal["auto", "bdf", "adams", "taylor"]
+ArrayLike = Union[npt.ArrayLike, Sequence[float]]
+FloatArray = npt.NDArray[np.float64]
+
+class NumericalFailure(ArithmeticError):
+    """The solver could not deliver the requested accuracy (message names value and index)."""
+
+class EndResult:
+    @property
+    def eps(self) -> float: ...
+    @property
+    def one_minus_eps(self) -> float: ...
+    @property
+    def tau(self) -> float: ...
+    @property
+    def x(self) -> float: ...
+    @property
+    def velocity(self) -> float: ...
+    @property
+    def dissipated_energy(self) -> float: ...
+
+class MaxCompression:
+    @property
+    def tau(self) -> float: ...
+    @property
+    def x(self) -> float: ...
+
+class SolverStats:
+    @property
+    def steps(self) -> int: ...
+    @property
+    def rhs_evaluations(self) -> int: ...
+    @property
+    def jacobian_evaluations(self) -> int: ...
+    @property
+    def root_evaluations(self) -> int: ...
+    @property
+    def error_test_failures(self) -> int: ...
+    @property
+    def convergence_failures(self) -> int: ...
+
+class CollisionResult:
+    @property
+    def zeta(self) -> float: ...
+    @property
+    def tolerance(self) -> float: ...
+    @property
+    def method(self) -> str: ...
+    @property
+    def max_compression(self) -> MaxCompression: ...
+    @property
+    def naive(self) -> Optional[EndResult]: ...
+    @property
+    def delayed_recovery(self) -> Optional[EndResult]: ...
+    @property
+    def stats(self) -> SolverStats: ...
+    @property
+    def has_trajectory(self) -> bool: ...
+    @property
+    def tau(self) -> FloatArray: ...
+    @property
+    def x(self) -> FloatArray: ...
+    @property
+    def velocity(self) -> FloatArray: ...
+    @property
+    def acceleration(self) -> FloatArray: ...
+
+class Material:
+    def __init__(
+        self,
+        *,
+        young_modulus: float,  # Pa
+        poisson_ratio: float,
+        radius: Optional[float] = None,  # m
+        radii: Optional[Tuple[float, float]] = None,  # m
+        density: Optional[float] = None,  # kg/m^3
+        mass: Optional[float] = None,  # kg
+        masses: Optional[Tuple[float, float]] = None,  # kg
+        dissipative_constant: Optional[float] = None,  # A, s
+        viscosities: Optional[Tuple[float, float]] = None,  # eta1, eta2, Pa s
+    ) -> None: ...
+    @property
+    def young_modulus(self) -> float: ...
+    @property
+    def poisson_ratio(self) -> float: ...
+    @property
+    def radii(self) -> Tuple[float, float]: ...
+    @property
+    def density(self) -> Optional[float]: ...
+    @property
+    def masses(self) -> Optional[Tuple[float, float]]: ...
+    @property
+    def dissipative_constant(self) -> Optional[float]: ...
+    @property
+    def viscosities(self) -> Optional[Tuple[float, float]]: ...
+    @property
+    def effective_radius(self) -> float: ...  # m
+    @property
+    def effective_mass(self) -> float: ...  # kg
+    @property
+    def k(self) -> float: ...  # s^-2 m^-1/2
+    @property
+    def A(self) -> float: ...  # s
+    @property
+    def beta(self) -> float: ...  # s^(1/5) m^(-1/5)
+
+class Calibration:
+    @property
+    def zeta(self) -> float: ...
+    @property
+    def beta(self) -> float: ...  # s^(1/5) m^(-1/5)
+    @property
+    def eps_at_zeta(self) -> float: ...
+    @property
+    def characteristic_velocity(self) -> float: ...  # g*, m/s
+    @property
+    def dissipative_constant(self) -> Optional[float]: ...  # A, s
+    @property
+    def solves(self) -> int: ...
+
+@overload
+def zeta_of(zeta: float, *, beta: None = ..., velocity: None = ..., material: None = ...) -> float: ...
+@overload
+def zeta_of(
+    zeta: Optional[ArrayLike] = ...,
+    *,
+    beta: Optional[ArrayLike] = ...,
+    velocity: Optional[ArrayLike] = ...,
+    material: Optional[Material] = ...,
+) -> Union[float, FloatArray]: ...
+@overload
+def eps(
+    zeta: float, end: End = ..., tolerance: float = ..., method: Method = ..., *, beta: None = ...,
+    velocity: None = ..., material: None = ...
+) -> float: ...
+@overload
+def eps(
+    zeta: Optional[ArrayLike] = ...,
+    end: End = ...,
+    tolerance: float = ...,
+    method: Method = ...,
+    *,
+    beta: Optional[ArrayLike] = ...,
+    velocity: Optional[ArrayLike] = ...,  # m/s
+    material: Optional[Material] = ...,
+) -> Union[float, FloatArray]: ...
+def solve(
+    zeta: Optional[float] = ...,
+    end: Literal["naive", "delayed-recovery", "both"] = ...,
+    tolerance: float = ...,
+    method: Method = ...,
+    trajectory: bool = ...,
+    *,
+    beta: Optional[float] = ...,
+    velocity: Optional[float] = ...,  # m/s
+    material: Optional[Material] = ...,
+) -> CollisionResult: ...
+def calibrate(
+    eps: float,
+    velocity: float,  # m/s
+    end: End = ...,
+    material: Optional[Material] = ...,
+    tolerance: float = ...,
+    method: Method = ...,
+) -> Calibration: ...

@@ -1,0 +1,14 @@
+#pragma once
+// The parts of the extension module _restitution, one registration function per file; the public Python
+// API (argument conversion, broadcasting, docstrings) is restitution/__init__.py on top of these.
+#include <pybind11/pybind11.h>
+
+namespace restitution::python {
+
+void bind_errors(pybind11::module_& m);       // errors.cpp
+void bind_collision(pybind11::module_& m);    // collision.cpp: eps, solve and their result types
+void bind_material(pybind11::module_& m);     // material.cpp
+void bind_calibration(pybind11::module_& m);  // calibration.cpp
+void bind_series(pybind11::module_& m);       // series.cpp
+
+}  // namespace restitution::python

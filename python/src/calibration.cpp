@@ -1,0 +1,55 @@
+// restitution.calibrate: β (and A for a material) from a measured ε at an impact speed.
+#include <fmt/core.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+
+#include "bindings.hpp"
+#include "restitution/calibration.hpp"
+#include "restitution/material.hpp"
+#include "solve_options.hpp"
+
+namespace py = pybind11;
+
+namespace restitution::python {
+
+void bind_calibration(py::module_& m) {
+  py::class_<Calibration>(m, "Calibration", "The damping that gives a measured eps at an impact speed.")
+      .def_readonly("zeta", &Calibration::zeta,
+                    "zeta with eps(zeta) = eps at the requested end (natural units).")
+      .def_readonly("beta", &Calibration::beta, "beta = zeta / v^(1/5) [s^(1/5) m^(-1/5)].")
+      .def_readonly("eps_at_zeta", &Calibration::eps_at_zeta, "eps re-solved at zeta, for the record.")
+      .def_readonly("characteristic_velocity", &Calibration::characteristic_velocity_m_s,
+                    "The 1999 paper's g* = (C1 beta)^(-5) [m/s].")
+      .def_readonly("dissipative_constant", &Calibration::dissipative_constant_s,
+                    "A [s] for the material, or None without one.")
+      .def_readonly("solves", &Calibration::solves, "Collisions integrated by the root finder.")
+      .def("__repr__", [](const Calibration& c) {
+        return fmt::format(
+            "Calibration(zeta={:.17g}, beta={:.17g}, characteristic_velocity={:.17g}, "
+            "dissipative_constant={})",
+            c.zeta, c.beta, c.characteristic_velocity_m_s,
+            c.dissipative_constant_s ? fmt::format("{:.17g}", *c.dissipative_constant_s) : "None");
+      });
+  m.def(
+      "calibrate",
+      [](double eps, double velocity, const std::string& end, double tolerance, const std::string& method,
+         const std::optional<Material>& material) {
+        CalibrationRequest request;
+        request.eps = eps;
+        request.velocity_m_s = velocity;
+        const SolveOptions options = solve_options(end, tolerance, method, false);  // checks all three
+        request.end = end_from_name(end);
+        request.tolerance = options.tolerance;
+        request.method = options.method;
+        if (material) request.k = elastic_constants(*material).k;
+        const py::gil_scoped_release release;
+        CollisionSolver solver;
+        return calibrate(request, solver);
+      },
+      py::arg("eps"), py::arg("velocity"), py::arg("end"), py::arg("tolerance"), py::arg("method"),
+      py::arg("material"), "Calibration for one measured eps at one velocity [m/s].");
+}
+
+}  // namespace restitution::python

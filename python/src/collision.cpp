@@ -1,0 +1,184 @@
+// eps and solve: one collision or an array of them, with the library's result types as Python classes.
+#include <fmt/core.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <string>
+#include <vector>
+
+#include "array_index.hpp"
+#include "bindings.hpp"
+#include "parallel_solve.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/units.hpp"
+#include "solve_options.hpp"
+#include "taylor/taylor_engine.hpp"
+
+namespace py = pybind11;
+
+namespace restitution::python {
+namespace {
+
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// One solver per Python thread, kept between calls: building a solver allocates CVODE's memory, which
+// would cost more than a Taylor solve.
+CollisionSolver& thread_solver() {
+  thread_local CollisionSolver solver;
+  return solver;
+}
+
+CollisionResult solve_one(double zeta, const SolveOptions& options) {
+  const ContactLaw law = ContactLaw::hertz_natural(zeta);
+  const py::gil_scoped_release release;
+  return thread_solver().solve(law, options);
+}
+
+double eps_scalar(double zeta, const std::string& end, double tolerance, const std::string& method) {
+  const SolveOptions options = solve_options(end, tolerance, method, false);
+  return end_of(solve_one(zeta, options), end_from_name(end)).eps;
+}
+
+// The refusals that depend on ζ, checked before the sweep so that the message can name the index (the
+// sweep reports them without it).
+void check_point(double zeta, const SolveOptions& options) {
+  ContactLaw::hertz_natural(zeta);
+  if (options.method == Method::taylor && options.ends.naive && zeta > kTaylorNaiveZetaMax) {
+    throw InvalidInput(
+        fmt::format("method taylor computes the naive end only for zeta <= {:g}, got zeta={}: use "
+                    "method='auto' or 'bdf'",
+                    kTaylorNaiveZetaMax, zeta));
+  }
+}
+
+DoubleArray eps_array(const DoubleArray& zeta, const std::string& end, double tolerance,
+                      const std::string& method) {
+  const SolveOptions options = solve_options(end, tolerance, method, false);
+  const CollisionEnd which = end_from_name(end);
+  if (zeta.size() == 0) throw InvalidInput("zeta is an empty array: give at least one value");
+  const double* in = zeta.data();
+  check_elements(zeta, "zeta", [in, &options](std::size_t i) { check_point(in[i], options); });
+  const std::vector<double> zetas(in, in + zeta.size());
+  DoubleArray eps(std::vector<py::ssize_t>(zeta.shape(), zeta.shape() + zeta.ndim()));
+  double* out = eps.mutable_data();
+  const auto failure = parallel_solve(zetas, options, [out, which](std::size_t i, const CollisionResult& r) {
+    out[i] = end_of(r, which).eps;
+  });
+  if (failure) {
+    throw NumericalFailure(
+        fmt::format("{} (zeta at {})", failure->message, index_text(failure->index, zeta)));
+  }
+  return eps;
+}
+
+DoubleArray zetas_from(const DoubleArray& beta, const DoubleArray& velocity) {
+  if (beta.size() != velocity.size()) throw InvalidInput("beta and velocity must have the same size");
+  const double* b = beta.data();
+  const double* v = velocity.data();
+  DoubleArray zeta(std::vector<py::ssize_t>(beta.shape(), beta.shape() + beta.ndim()));
+  double* out = zeta.mutable_data();
+  check_elements(beta, "beta, velocity", [=](std::size_t i) { out[i] = zeta_from(b[i], v[i]); });
+  return zeta;
+}
+
+py::array_t<double> column(const std::vector<TrajectoryPoint>& points, double TrajectoryPoint::*field) {
+  py::array_t<double> values(static_cast<py::ssize_t>(points.size()));
+  double* out = values.mutable_data();
+  for (const TrajectoryPoint& p : points) *out++ = p.*field;
+  return values;
+}
+
+std::string end_repr(const EndResult& e) {
+  return fmt::format("EndResult(eps={:.17g}, one_minus_eps={:.17g}, tau={:.17g}, x={:.17g})", e.eps,
+                     e.one_minus_eps, e.tau, e.x);
+}
+
+void bind_result_types(py::module_& m) {
+  py::class_<EndResult>(m, "EndResult", "One end of the collision; times and lengths in natural units.")
+      .def_readonly("eps", &EndResult::eps, "Coefficient of restitution eps = -x'(tau_c)/x'(0).")
+      .def_readonly("one_minus_eps", &EndResult::one_minus_eps, "1 - eps, without cancellation as eps -> 1.")
+      .def_readonly("tau", &EndResult::tau, "Duration of the collision tau_c (natural units).")
+      .def_readonly("x", &EndResult::x, "Compression at the end (0 at the naive end; natural units).")
+      .def_readonly("velocity", &EndResult::velocity, "x'(tau_c) as integrated (natural units).")
+      .def_readonly("dissipated_energy", &EndResult::dissipated_energy,
+                    "Energy dissipated up to tau_c (natural units: the initial kinetic energy is 1/2).")
+      .def("__repr__", &end_repr);
+  py::class_<MaxCompression>(m, "MaxCompression", "The point of maximal compression (natural units).")
+      .def_readonly("tau", &MaxCompression::tau, "Time of maximal compression.")
+      .def_readonly("x", &MaxCompression::x, "Maximal compression.")
+      .def("__repr__", [](const MaxCompression& c) {
+        return fmt::format("MaxCompression(tau={:.17g}, x={:.17g})", c.tau, c.x);
+      });
+  py::class_<SolverStats>(m, "SolverStats", "Work done by the integrator, summed over the phases of a solve.")
+      .def_readonly("steps", &SolverStats::steps)
+      .def_readonly("rhs_evaluations", &SolverStats::rhs_evaluations)
+      .def_readonly("jacobian_evaluations", &SolverStats::jacobian_evaluations)
+      .def_readonly("root_evaluations", &SolverStats::root_evaluations)
+      .def_readonly("error_test_failures", &SolverStats::error_test_failures)
+      .def_readonly("convergence_failures", &SolverStats::convergence_failures)
+      .def("__repr__", [](const SolverStats& s) {
+        return fmt::format(
+            "SolverStats(steps={}, rhs_evaluations={}, jacobian_evaluations={}, root_evaluations={})",
+            s.steps, s.rhs_evaluations, s.jacobian_evaluations, s.root_evaluations);
+      });
+  py::class_<CollisionResult>(m, "CollisionResult",
+                              "One collision: both ends (or the one asked for), the maximal compression, the "
+                              "solver's statistics and, if asked for, the trajectory. Natural units.")
+      .def_readonly("zeta", &CollisionResult::parameter, "zeta = beta v^(1/5) (natural units).")
+      .def_readonly("tolerance", &CollisionResult::tolerance, "Requested accuracy of eps.")
+      .def_property_readonly(
+          "method", [](const CollisionResult& r) { return method_name(r.method); },
+          "The method actually used: bdf, adams or taylor.")
+      .def_readonly("max_compression", &CollisionResult::max_compression)
+      .def_readonly("naive", &CollisionResult::naive, "The naive end (x = 0), or None if not asked for.")
+      .def_readonly("delayed_recovery", &CollisionResult::delayed_recovery,
+                    "The delayed-recovery end (force = 0), or None if not asked for.")
+      .def_readonly("stats", &CollisionResult::stats)
+      .def_property_readonly(
+          "has_trajectory", [](const CollisionResult& r) { return !r.trajectory.empty(); },
+          "True when solved with trajectory=True.")
+      .def_property_readonly(
+          "tau", [](const CollisionResult& r) { return column(r.trajectory, &TrajectoryPoint::tau); },
+          "Trajectory times tau (natural units); empty unless trajectory=True.")
+      .def_property_readonly(
+          "x", [](const CollisionResult& r) { return column(r.trajectory, &TrajectoryPoint::x); },
+          "Trajectory compression x(tau) (natural units); empty unless trajectory=True.")
+      .def_property_readonly(
+          "velocity",
+          [](const CollisionResult& r) { return column(r.trajectory, &TrajectoryPoint::velocity); },
+          "Trajectory x'(tau) (natural units); empty unless trajectory=True.")
+      .def_property_readonly(
+          "acceleration",
+          [](const CollisionResult& r) { return column(r.trajectory, &TrajectoryPoint::acceleration); },
+          "Trajectory x''(tau) (natural units); empty unless trajectory=True.")
+      .def("__repr__", [](const CollisionResult& r) {
+        return fmt::format("CollisionResult(zeta={:.17g}, method={}, naive={}, delayed_recovery={})",
+                           r.parameter, method_name(r.method), r.naive ? end_repr(*r.naive) : "None",
+                           r.delayed_recovery ? end_repr(*r.delayed_recovery) : "None");
+      });
+}
+
+}  // namespace
+
+void bind_collision(py::module_& m) {
+  bind_result_types(m);
+  m.def("eps_scalar", &eps_scalar, py::arg("zeta"), py::arg("end"), py::arg("tolerance"), py::arg("method"),
+        "eps at one zeta (natural units), end naive or delayed-recovery.");
+  m.def("eps_array", &eps_array, py::arg("zeta"), py::arg("end"), py::arg("tolerance"), py::arg("method"),
+        "eps at every zeta of an array, on all cores with the GIL released; same shape out.");
+  m.def("zeta_from", &zeta_from, py::arg("beta"), py::arg("velocity"),
+        "zeta = beta v^(1/5); beta in s^(1/5) m^(-1/5), velocity in m/s.");
+  m.def("zetas_from", &zetas_from, py::arg("beta"), py::arg("velocity"),
+        "zeta = beta v^(1/5) elementwise for two arrays of the same shape.");
+  m.def(
+      "solve",
+      [](double zeta, const std::string& end, double tolerance, const std::string& method, bool trajectory) {
+        SolveOptions options = solve_options(end, tolerance, method, true);
+        options.keep_trajectory = trajectory;
+        return solve_one(zeta, options);
+      },
+      py::arg("zeta"), py::arg("end"), py::arg("tolerance"), py::arg("method"), py::arg("trajectory"),
+      "One collision at zeta (natural units); end naive, delayed-recovery or both.");
+}
+
+}  // namespace restitution::python

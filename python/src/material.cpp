@@ -1,0 +1,102 @@
+// restitution.Material: a pair of spheres of one material in SI units, the same fields as a scene's
+// [material] table, with the constants of their collision equation.
+#include <fmt/core.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <optional>
+
+#include "bindings.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/material.hpp"
+
+namespace py = pybind11;
+
+namespace restitution::python {
+namespace {
+
+using Pair = std::array<double, 2>;
+
+Material make_material(double young_modulus, double poisson_ratio, std::optional<double> radius,
+                       std::optional<Pair> radii, std::optional<double> density, std::optional<double> mass,
+                       std::optional<Pair> masses, std::optional<double> dissipative_constant,
+                       std::optional<Pair> viscosities) {
+  if (radius.has_value() == radii.has_value())
+    throw InvalidInput("material: give radius (both spheres) or radii = (R1, R2)");
+  if (mass && masses) throw InvalidInput("material: give mass or masses, not both");
+  Material m;
+  m.young_modulus_pa = young_modulus;
+  m.poisson_ratio = poisson_ratio;
+  m.radius1_m = radius ? *radius : (*radii)[0];
+  m.radius2_m = radius ? *radius : (*radii)[1];
+  m.density_kg_m3 = density;
+  if (mass) m.mass1_kg = m.mass2_kg = *mass;
+  if (masses) {
+    m.mass1_kg = (*masses)[0];
+    m.mass2_kg = (*masses)[1];
+  }
+  m.dissipative_constant_s = dissipative_constant;
+  if (viscosities) m.viscosities = Viscosities{(*viscosities)[0], (*viscosities)[1]};
+  (void)elastic_constants(m);  // the elastic data are checked now, the dissipation where it is needed
+  if (m.dissipative_constant_s || m.viscosities) (void)material_constants(m);
+  return m;
+}
+
+// Pairs go out as tuples (as they may come in), missing ones as None.
+py::object masses_of(const Material& m) {
+  if (!m.mass1_kg) return py::none();
+  return py::make_tuple(*m.mass1_kg, *m.mass2_kg);
+}
+
+py::object viscosities_of(const Material& m) {
+  if (!m.viscosities) return py::none();
+  return py::make_tuple(m.viscosities->eta1_pa_s, m.viscosities->eta2_pa_s);
+}
+
+}  // namespace
+
+void bind_material(py::module_& m) {
+  py::class_<Material>(m, "Material",
+                       "Two spheres of one viscoelastic material, in SI units (the fields of a scene's "
+                       "[material] table). Give radius or radii, density or mass or masses, and "
+                       "dissipative_constant or viscosities (or neither, for calibrate()). Raises ValueError "
+                       "naming the field that is out of range.")
+      .def(py::init(&make_material), py::kw_only(), py::arg("young_modulus"), py::arg("poisson_ratio"),
+           py::arg("radius") = py::none(), py::arg("radii") = py::none(), py::arg("density") = py::none(),
+           py::arg("mass") = py::none(), py::arg("masses") = py::none(),
+           py::arg("dissipative_constant") = py::none(), py::arg("viscosities") = py::none(),
+           "young_modulus Y [Pa] > 0, poisson_ratio nu in (-1, 0.5), radius R [m] or radii (R1, R2) [m], "
+           "density [kg/m^3] or mass [kg] or masses (m1, m2) [kg], dissipative_constant A [s] or "
+           "viscosities (eta1, eta2) [Pa s].")
+      .def_readonly("young_modulus", &Material::young_modulus_pa, "Young's modulus Y [Pa].")
+      .def_readonly("poisson_ratio", &Material::poisson_ratio, "Poisson ratio nu.")
+      .def_property_readonly(
+          "radii", [](const Material& x) { return py::make_tuple(x.radius1_m, x.radius2_m); },
+          "(R1, R2) [m].")
+      .def_readonly("density", &Material::density_kg_m3, "Density [kg/m^3], or None when masses are given.")
+      .def_property_readonly("masses", &masses_of, "(m1, m2) [kg] as given, or None when density is given.")
+      .def_readonly("dissipative_constant", &Material::dissipative_constant_s,
+                    "A [s] as given, or None (see A for the value from viscosities).")
+      .def_property_readonly("viscosities", &viscosities_of, "(eta1, eta2) [Pa s] as given, or None.")
+      .def_property_readonly(
+          "effective_radius", [](const Material& x) { return elastic_constants(x).effective_radius_m; },
+          "R_eff = R1 R2 / (R1 + R2) [m].")
+      .def_property_readonly(
+          "effective_mass", [](const Material& x) { return elastic_constants(x).effective_mass_kg; },
+          "m_eff = m1 m2 / (m1 + m2) [kg].")
+      .def_property_readonly(
+          "k", [](const Material& x) { return elastic_constants(x).k; },
+          "k = rho / m_eff [s^-2 m^-1/2], rho = 2 Y sqrt(R_eff) / (3 (1 - nu^2)).")
+      .def_property_readonly(
+          "A", [](const Material& x) { return material_constants(x).dissipative_constant_s; },
+          "Dissipative constant A [s] (given, or from the viscosities). ValueError without dissipation data.")
+      .def_property_readonly(
+          "beta", [](const Material& x) { return material_constants(x).hertz.beta; },
+          "beta = (3/2) A k^(2/5) [s^(1/5) m^(-1/5)], so that zeta = beta v^(1/5).")
+      .def("__repr__", [](const Material& x) {
+        return fmt::format("Material(young_modulus={}, poisson_ratio={}, radii=({}, {}), ...)",
+                           x.young_modulus_pa, x.poisson_ratio, x.radius1_m, x.radius2_m);
+      });
+}
+
+}  // namespace restitution::python

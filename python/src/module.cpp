@@ -1,0 +1,13 @@
+// The extension module _restitution: the library's solver, units, calibration and series for the
+// pure-Python package `restitution` (python/restitution/__init__.py).
+#include "bindings.hpp"
+
+PYBIND11_MODULE(_restitution, m) {
+  m.doc() = "Compiled core of the restitution package; use `import restitution` instead.";
+  restitution::python::bind_errors(m);
+  restitution::python::bind_collision(m);
+  restitution::python::bind_material(m);
+  restitution::python::bind_calibration(m);
+  auto series = m.def_submodule("series", "Analytic series and approximations of eps(zeta).");
+  restitution::python::bind_series(series);
+}

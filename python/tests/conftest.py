@@ -1,0 +1,30 @@
+"""Shared fixtures: the reference solutions of data/reference_solutions.csv (natural units)."""
+
+import csv
+import os
+import pathlib
+
+import pytest
+
+SOURCE_DIR = pathlib.Path(os.environ.get("RESTITUTION_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
+
+
+def _reference_rows():
+    with open(SOURCE_DIR / "data" / "reference_solutions.csv") as table:
+        lines = (line for line in table if not line.startswith("#"))
+        return [{key: float(value) if value else float("nan") for key, value in row.items()} for row in csv.DictReader(lines)]
+
+
+@pytest.fixture(scope="session")
+def reference():
+    """Rows with zeta, naive_eps, naive_one_minus_eps, delayed_eps, delayed_one_minus_eps, ... as floats."""
+    return _reference_rows()
+
+
+@pytest.fixture
+def steel():
+    """Two equal steel-like spheres, radius 1 cm (A chosen for eps of order 0.9 at 1 m/s)."""
+    import restitution
+
+    return restitution.Material(young_modulus=2.0e11, poisson_ratio=0.3, radius=0.01, density=7800.0,
+                                dissipative_constant=1.0e-6)

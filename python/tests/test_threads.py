@@ -1,0 +1,53 @@
+"""Long array calls release the GIL and stop with KeyboardInterrupt on SIGINT."""
+
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import restitution
+
+# BDF at zeta = 1 costs of the order of a millisecond per point: this call would take many seconds.
+LONG_CALL = dict(zeta=np.full(20000, 1.0), method="bdf")
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGINT"), reason="needs SIGINT")
+def test_sigint_interrupts_a_long_array_call():
+    timer = threading.Timer(0.3, os.kill, args=(os.getpid(), signal.SIGINT))
+    timer.start()
+    start = time.monotonic()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            restitution.eps(**LONG_CALL)
+    finally:
+        timer.cancel()
+    assert time.monotonic() - start < 5.0
+    assert restitution.eps([0.1, 0.2]).shape == (2,)  # the module is usable afterwards
+
+
+def test_another_thread_runs_during_a_long_call():
+    ticks = []
+    running = threading.Event()
+    done = threading.Event()
+
+    def count():
+        running.set()
+        while not done.is_set():
+            ticks.append(time.monotonic())
+            time.sleep(0.001)
+
+    thread = threading.Thread(target=count)
+    thread.start()
+    running.wait()
+    start = time.monotonic()
+    restitution.eps(np.full(400, 1.0), method="bdf")
+    end = time.monotonic()
+    done.set()
+    thread.join()
+    inside = [t for t in ticks if start < t < end]
+    assert end - start > 0.05
+    # With the GIL held the other thread could not tick at all during the call.
+    assert len(inside) >= 10, (len(inside), end - start)

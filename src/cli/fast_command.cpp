@@ -1,0 +1,74 @@
+// `restitution fast-table`: regenerates the fast ε(ζ) tables (src/fast/fast_table.h) from the reference
+// engine; `restitution export c-header`: writes the compiled tables as one self-contained C99 header.
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/output_files.hpp"
+#include "fast/c_header.hpp"
+#include "fast/table_generator.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/fast.hpp"
+
+namespace restitution::cli {
+namespace {
+
+struct FastTableOptions {
+  std::string out;
+  fast::GeneratorSettings settings;
+};
+
+void write_text(const std::string& out, const std::string& text) {
+  const std::filesystem::path path(out);
+  if (path.has_parent_path()) check_output_folder(path.parent_path());
+  write_file_atomically(path, text);
+}
+
+int run_fast_table(const FastTableOptions& o) {
+  const fast::TableData data = fast::generate_tables(o.settings);
+  write_text(o.out, fast::c_header_text(data));
+  fmt::print("wrote {}\n{}\n", o.out, data.settings);
+  return 0;
+}
+
+}  // namespace
+
+void add_fast_table_command(CLI::App& app, Action& chosen) {
+  auto o = std::make_shared<FastTableOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "fast-table",
+      "regenerate the fast eps(zeta) tables from the __float128 reference engine (about 2 minutes)");
+  cmd->add_option("--out", o->out, "header to write (the repository keeps src/fast/fast_table.h)")
+      ->required();
+  cmd->add_option("--degree", o->settings.degree, "polynomial degree per interval")->capture_default_str();
+  cmd->add_option("--per-unit", o->settings.per_unit, "intervals per unit of ln zeta")->capture_default_str();
+  cmd->add_option("--s-lo", o->settings.s_lo, "ln zeta where the tables start")->capture_default_str();
+  cmd->add_option("--s-hi-naive", o->settings.s_hi_naive, "ln zeta where the naive table ends")
+      ->capture_default_str();
+  cmd->add_option("--s-hi-delayed", o->settings.s_hi_delayed, "ln zeta where the delayed-recovery table ends")
+      ->capture_default_str();
+  cmd->add_option("--checks", o->settings.checks_per_interval, "random check points per interval")
+      ->capture_default_str();
+  cmd->add_option("--seed", o->settings.seed, "seed of the check points")->capture_default_str();
+  cmd->callback([o, &chosen] { chosen = [o] { return run_fast_table(*o); }; });
+}
+
+void add_export_command(CLI::App& app, Action& chosen) {
+  auto out = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand("export", "export the fast eps(zeta) tables for other programs");
+  cmd->require_subcommand(1);
+  CLI::App* header = cmd->add_subcommand(
+      "c-header", "one self-contained C99 header (also C++): eps, 1 - eps and the inverse for both ends");
+  header->add_option("--out", *out, "header file to write")->required();
+  header->callback([out, &chosen] {
+    chosen = [out] {
+      write_text(*out, fast::c_header());
+      fmt::print("wrote {}\n", *out);
+      return 0;
+    };
+  });
+}
+
+}  // namespace restitution::cli

@@ -1,0 +1,109 @@
+// The library's fast ε(ζ): thin checked wrappers around the C99 evaluation of the generated header, so that
+// the library and the exported header compute the same bits.
+#include "restitution/fast.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "fast/c_header.hpp"
+#include "restitution/errors.hpp"
+
+#include "fast/fast_table.h"  // generated C99 (`restitution fast-table`)
+
+namespace restitution::fast {
+namespace {
+
+const restitution_fast_end_& table_of(CollisionEnd end) {
+  return end == CollisionEnd::naive ? restitution_fast_naive_ : restitution_fast_delayed_;
+}
+
+void check_zeta(double zeta) {
+  if (!(zeta >= 0.0)) throw InvalidInput(fmt::format("zeta = {} must be >= 0", zeta));
+}
+
+void check_duration_zeta(double zeta, CollisionEnd end) {
+  check_zeta(zeta);
+  if (zeta > duration_zeta_max(end))
+    throw InvalidInput(
+        fmt::format("zeta = {} is beyond the fast table of the collision duration and maximal "
+                    "compression at the {} end (zeta <= {})",
+                    zeta, end_name(end), duration_zeta_max(end)));
+}
+
+std::vector<double> values(const double* data, int count) {
+  return {data, data + count};
+}
+
+EndTable end_table(const restitution_fast_end_& e) {
+  const int per_piece = RESTITUTION_FAST_DEGREE + 1;
+  EndTable t;
+  t.intervals = e.intervals;
+  t.logit = values(e.logit, e.intervals * per_piece);
+  t.log_tau = values(e.log_tau, e.intervals * per_piece);
+  t.g_lo = e.g_lo;
+  t.inverse_intervals = e.inverse_intervals;
+  t.inverse = values(e.inverse, e.inverse_intervals * per_piece);
+  t.small = values(e.small, RESTITUTION_FAST_SMALL_TERMS);
+  t.tau_zero = e.tau_zero;
+  t.tau_lo = e.tau_lo;
+  return t;
+}
+
+}  // namespace
+
+double eps(double zeta, CollisionEnd end) {
+  check_zeta(zeta);
+  return restitution_fast_eps_(&table_of(end), zeta, 0);
+}
+
+double one_minus_eps(double zeta, CollisionEnd end) {
+  check_zeta(zeta);
+  return restitution_fast_eps_(&table_of(end), zeta, 1);
+}
+
+double zeta_from_eps(double eps, CollisionEnd end) {
+  if (!(eps > 0.0 && eps <= 1.0)) throw InvalidInput(fmt::format("eps = {} is not in (0, 1]", eps));
+  return restitution_fast_zeta_(&table_of(end), eps);
+}
+
+double duration_zeta_max(CollisionEnd end) {
+  return std::exp(RESTITUTION_FAST_S_LO + table_of(end).intervals / RESTITUTION_FAST_PER_UNIT);
+}
+
+double collision_duration(double zeta, CollisionEnd end) {
+  check_duration_zeta(zeta, end);
+  return end == CollisionEnd::naive ? restitution_duration_naive(zeta)
+                                    : restitution_duration_delayed_recovery(zeta);
+}
+
+MaxCompression max_compression(double zeta) {
+  check_duration_zeta(zeta, CollisionEnd::delayed_recovery);
+  return {restitution_max_compression_time(zeta), restitution_max_compression(zeta)};
+}
+
+std::string c_header() {
+  TableData d;
+  d.settings = RESTITUTION_FAST_SETTINGS;
+  d.degree = RESTITUTION_FAST_DEGREE;
+  d.small_terms = RESTITUTION_FAST_SMALL_TERMS;
+  d.s_lo = RESTITUTION_FAST_S_LO;
+  d.per_unit = RESTITUTION_FAST_PER_UNIT;
+  d.zeta_lo = RESTITUTION_FAST_ZETA_LO;
+  d.naive = end_table(restitution_fast_naive_);
+  d.delayed = end_table(restitution_fast_delayed_);
+  const int count = restitution_fast_delayed_.intervals * (RESTITUTION_FAST_DEGREE + 1);
+  d.log_x_max = values(restitution_fast_log_x_max_, count);
+  d.log_tau_max = values(restitution_fast_log_tau_max_, count);
+  d.x_max_zero = RESTITUTION_FAST_X_MAX_ZERO;
+  d.tau_max_zero = RESTITUTION_FAST_TAU_MAX_ZERO;
+  d.x_max_lo = RESTITUTION_FAST_X_MAX_LO;
+  d.tau_max_lo = RESTITUTION_FAST_TAU_MAX_LO;
+  d.kappa = RESTITUTION_FAST_KAPPA;
+  d.x_m = RESTITUTION_FAST_X_M;
+  d.q = RESTITUTION_FAST_Q;
+  d.log_a = RESTITUTION_FAST_LOG_A;
+  return c_header_text(d);
+}
+
+}  // namespace restitution::fast

@@ -1,0 +1,333 @@
+#include "fast/table_generator.hpp"
+
+#include <fmt/core.h>
+#include <quadmath.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "restitution/errors.hpp"
+#include "reference/reference_solution.hpp"
+#include "series_study/series_coefficients.hpp"
+
+namespace restitution::fast {
+namespace {
+
+using Real = __float128;
+using Poly = std::vector<Real>;  // monomial coefficients in t ∈ [-1, 1], highest power first
+const Real kPi = 4 * atanq(1);
+
+Real horner(const Poly& p, Real t) {
+  Real v = p[0];
+  for (std::size_t k = 1; k < p.size(); ++k) v = v * t + p[k];
+  return v;
+}
+
+Real logit(const ReferenceEnd& e) {
+  return logq(e.eps) - logq(e.one_minus_eps);
+}
+
+// Chebyshev nodes of the first kind in t, where the interpolant is built.
+std::vector<Real> chebyshev_nodes(int degree) {
+  std::vector<Real> t(static_cast<std::size_t>(degree) + 1);
+  for (std::size_t j = 0; j < t.size(); ++j)
+    t[j] = cosq(kPi * (static_cast<Real>(j) + (Real(1) / 2)) / static_cast<Real>(t.size()));
+  return t;
+}
+
+// The interpolant through values at chebyshev_nodes, as monomials (the tables evaluate it by Horner's rule;
+// on intervals this short the coefficients decay, so nothing is lost to cancellation).
+Poly interpolate(const std::vector<Real>& values) {
+  const std::size_t n = values.size();
+  std::vector<Real> cheb(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    Real sum = 0;
+    for (std::size_t j = 0; j < n; ++j)
+      sum += values[j] *
+             cosq(kPi * static_cast<Real>(k) * (static_cast<Real>(j) + (Real(1) / 2)) / static_cast<Real>(n));
+    cheb[k] = sum * 2 / static_cast<Real>(n);
+  }
+  cheb[0] /= 2;
+  // T_{k-1}, T_k and the sum, lowest power first
+  std::vector<Real> previous(n, 0);
+  std::vector<Real> current(n, 0);
+  std::vector<Real> mono(n, 0);
+  previous[0] = 1;            // T_0
+  if (n > 1) current[1] = 1;  // T_1
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::vector<Real>& tk = k == 0 ? previous : current;
+    for (std::size_t i = 0; i < n; ++i) mono[i] += cheb[k] * tk[i];
+    if (k >= 1 && k + 1 < n) {  // T_{k+1} = 2 t T_k − T_{k−1}
+      std::vector<Real> next(n, 0);
+      for (std::size_t i = 0; i + 1 < n; ++i) next[i + 1] = 2 * current[i];
+      for (std::size_t i = 0; i < n; ++i) next[i] -= previous[i];
+      previous = current;
+      current = next;
+    }
+  }
+  return {mono.rbegin(), mono.rend()};
+}
+
+void append(std::vector<double>& table, const Poly& p) {
+  for (const Real c : p) table.push_back(static_cast<double>(c));
+}
+
+Poly rounded(const Poly& p) {
+  Poly r;
+  for (const Real c : p) r.push_back(static_cast<double>(c));
+  return r;
+}
+
+// The forward polynomials of one quantity on the grid, unrounded, for the inverse and the checks.
+struct Grid {
+  double s_lo, per_unit;
+  std::vector<Poly> pieces;
+  [[nodiscard]] Real s_hi() const { return s_lo + static_cast<Real>(pieces.size()) / per_unit; }
+  // The interpolant at s; `as_stored`: with its coefficients rounded to double, as the header holds them.
+  [[nodiscard]] Real at(Real s, bool as_stored = false) const {
+    const Real u = (s - s_lo) * per_unit;
+    const long i = std::clamp(static_cast<long>(floorq(u)), 0L, static_cast<long>(pieces.size()) - 1);
+    const Poly& p = pieces[static_cast<std::size_t>(i)];
+    return horner(as_stored ? rounded(p) : p, 2 * (u - i) - 1);
+  }
+};
+
+// s with g(s) = target by bisection (g decreases in s; checked by the caller).
+Real solve_for_s(const Grid& g, Real target) {
+  Real lo = g.s_lo;
+  Real hi = g.s_hi();
+  for (int k = 0; k < 130; ++k) {
+    const Real mid = (lo + hi) / 2;
+    (g.at(mid) > target ? lo : hi) = mid;
+  }
+  return (lo + hi) / 2;
+}
+
+void make_inverse(const Grid& forward, const std::vector<Real>& nodes, double per_unit, EndTable& end) {
+  const Real top = forward.at(forward.s_lo);
+  const Real bottom = forward.at(forward.s_hi());
+  for (Real s = forward.s_lo; s < forward.s_hi(); s += Real(1) / 100)
+    if (forward.at(s + Real(1) / 100) >= forward.at(s))
+      throw NumericalFailure(
+          fmt::format("ln(eps/(1-eps)) is not decreasing near ln zeta = {}", static_cast<double>(s)));
+  end.g_lo = std::ceil(static_cast<double>(bottom) * per_unit) / per_unit;
+  const double g_hi = std::floor(static_cast<double>(top) * per_unit) / per_unit;
+  end.inverse_intervals = static_cast<int>(std::lround((g_hi - end.g_lo) * per_unit));
+  for (int i = 0; i < end.inverse_intervals; ++i) {
+    std::vector<Real> values;
+    values.reserve(nodes.size());
+    for (const Real t : nodes)
+      values.push_back(solve_for_s(forward, end.g_lo + (static_cast<Real>(i) + (t + 1) / 2) / per_unit));
+    append(end.inverse, interpolate(values));
+  }
+}
+
+// (1 − ε)/ζ as a polynomial in w = sqrt ζ, highest power first, from the recomputed series (docs/series.md):
+// naive 1 − ε = −Σ c_k ζ^k, delayed recovery 1 − ε = −Σ h_k w^k.
+std::vector<double> small_series(int terms, bool naive) {
+  const series::Coefficients c = series::compute_coefficients(terms);
+  std::vector<double> p;
+  for (int j = terms - 1; j >= 0; --j) {
+    const auto k = static_cast<std::size_t>(j);
+    const double value = naive ? (j % 2 == 0 ? -c.c[k / 2 + 1] : 0.0) : -c.h[k + 2];
+    p.push_back(value == 0.0 ? 0.0 : value);  // never -0, which C reads back as the integer 0
+  }
+  return p;
+}
+
+struct Errors {
+  double eps = 0, tau = 0, x_max = 0, tau_max = 0;
+};
+
+double relative_eps_error(Real g_table, const ReferenceEnd& e) {
+  const Real eps = 1 / (1 + expq(-g_table));
+  const Real complement = 1 / (1 + expq(g_table));
+  const Real bound = std::min(e.eps, e.one_minus_eps);
+  return static_cast<double>(std::max(fabsq(eps - e.eps), fabsq(complement - e.one_minus_eps)) / bound);
+}
+
+double relative(Real value, Real exact) {
+  return static_cast<double>(fabsq(value / exact - 1));
+}
+
+// The interpolants of every tabulated quantity, from reference solves at the Chebyshev nodes of each
+// interval.
+struct Fits {
+  Grid g_naive, g_delayed, tau_naive, tau_delayed, x_max, tau_max;
+  long solves = 0;
+};
+
+Fits fit(const GeneratorSettings& s, int naive_intervals, int delayed_intervals,
+         const std::vector<Real>& nodes) {
+  const Grid empty{s.s_lo, s.per_unit, {}};
+  Fits f{empty, empty, empty, empty, empty, empty, 0};
+  for (int i = 0; i < delayed_intervals; ++i) {
+    const bool with_naive = i < naive_intervals;
+    std::vector<Real> gn;
+    std::vector<Real> gd;
+    std::vector<Real> tn;
+    std::vector<Real> td;
+    std::vector<Real> xm;
+    std::vector<Real> tm;
+    for (const Real t : nodes) {
+      const double zeta = std::exp(s.s_lo + (i + static_cast<double>((t + 1) / 2)) / s.per_unit);
+      const ReferenceSolution r = hertz_reference(zeta, with_naive);
+      ++f.solves;
+      gd.push_back(logit(*r.delayed_recovery));
+      td.push_back(logq(r.delayed_recovery->tau));
+      xm.push_back(logq(r.x_max));
+      tm.push_back(logq(r.tau_max));
+      if (with_naive) {
+        gn.push_back(logit(*r.naive));
+        tn.push_back(logq(r.naive->tau));
+      }
+    }
+    f.g_delayed.pieces.push_back(interpolate(gd));
+    f.tau_delayed.pieces.push_back(interpolate(td));
+    f.x_max.pieces.push_back(interpolate(xm));
+    f.tau_max.pieces.push_back(interpolate(tm));
+    if (with_naive) {
+      f.g_naive.pieces.push_back(interpolate(gn));
+      f.tau_naive.pieces.push_back(interpolate(tn));
+    }
+  }
+  return f;
+}
+
+std::vector<double> stored(const Grid& grid) {
+  std::vector<double> table;
+  for (const Poly& p : grid.pieces) append(table, p);
+  return table;
+}
+
+// Errors of the stored tables at random points of every interval, against fresh reference solves; one line
+// for the settings.
+std::string measured_errors(const GeneratorSettings& s, const Fits& f, long& solves) {
+  std::mt19937_64 rng(s.seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Errors naive;
+  Errors delayed;
+  long checks = 0;
+  const auto worse = [](double& worst, double e) { worst = std::max(worst, e); };
+  for (std::size_t i = 0; i < f.g_delayed.pieces.size(); ++i) {
+    const bool with_naive = i < f.g_naive.pieces.size();
+    for (int c = 0; c < s.checks_per_interval; ++c, ++checks, ++solves) {
+      const double zeta = std::exp(s.s_lo + (static_cast<double>(i) + unit(rng)) / s.per_unit);
+      const Real sv = logq(zeta);
+      const ReferenceSolution r = hertz_reference(zeta, with_naive);
+      worse(delayed.eps, relative_eps_error(f.g_delayed.at(sv, true), *r.delayed_recovery));
+      worse(delayed.tau, relative(expq(f.tau_delayed.at(sv, true)), r.delayed_recovery->tau));
+      worse(delayed.x_max, relative(expq(f.x_max.at(sv, true)), r.x_max));
+      worse(delayed.tau_max, relative(expq(f.tau_max.at(sv, true)), r.tau_max));
+      if (with_naive) {
+        worse(naive.eps, relative_eps_error(f.g_naive.at(sv, true), *r.naive));
+        worse(naive.tau, relative(expq(f.tau_naive.at(sv, true)), r.naive->tau));
+      }
+    }
+  }
+  return fmt::format(
+      "measured at {} random points (ln zeta uniform per interval), rounded tables in __float128:\n"
+      "  max |d eps| / min(eps, 1-eps): naive {:.2e}, delayed recovery {:.2e}\n"
+      "  max relative error of tau_c: naive {:.2e}, delayed recovery {:.2e}; x_max {:.2e}, tau_max {:.2e}",
+      checks, naive.eps, delayed.eps, naive.tau, delayed.tau, delayed.x_max, delayed.tau_max);
+}
+
+// Errors of the large-ζ laws just above their switch points, against the reference; one line.
+std::string law_errors(const GeneratorSettings& s, const TableData& d, long& solves) {
+  double law_naive = 0;
+  double law_delayed = 0;
+  for (const double zeta : {std::exp(s.s_hi_naive), 10.0, 30.0}) {
+    const ReferenceSolution r = hertz_reference(zeta, true);
+    ++solves;
+    const Real e = d.kappa * powq(zeta, -5);
+    law_naive = std::max(law_naive, relative(e, r.naive->eps));
+  }
+  for (const double zeta : {std::exp(s.s_hi_delayed), 3e5, 1e6}) {
+    const ReferenceSolution r = hertz_reference(zeta, false);
+    ++solves;
+    const Real sv = logq(zeta);
+    const Real delta = expq(-sv * 5 / 3);
+    const Real e = d.x_m * delta * (1 - (delta / d.q) * (sv * 10 / 3 + d.log_a - Real(5) / 2));
+    law_delayed = std::max(law_delayed, relative(e, r.delayed_recovery->eps));
+  }
+  return fmt::format(
+      "  asymptotic laws, relative: naive at zeta = e^{} 10 30: {:.2e}; delayed at zeta = e^{} 3e5 1e6: "
+      "{:.2e}",
+      s.s_hi_naive, law_naive, s.s_hi_delayed, law_delayed);
+}
+
+}  // namespace
+
+TableData generate_tables(const GeneratorSettings& s) {
+  if (s.degree < 2 || s.degree > 30) throw InvalidInput(fmt::format("degree {} is not in [2, 30]", s.degree));
+  if (!(s.per_unit >= 1 && s.per_unit <= 64 && s.per_unit == std::round(s.per_unit)))
+    throw InvalidInput(fmt::format("intervals per unit {} is not an integer in [1, 64]", s.per_unit));
+  if (!(s.s_lo >= -30 && s.s_lo < s.s_hi_naive && s.s_hi_naive <= s.s_hi_delayed && s.s_hi_naive <= 4 &&
+        s.s_hi_delayed <= std::log(1e6)))
+    throw InvalidInput(
+        "the table range must satisfy -30 <= s_lo < s_hi_naive <= min(4, s_hi_delayed), s_hi_delayed <= ln "
+        "1e6");
+  if (s.checks_per_interval < 0) throw InvalidInput("checks per interval must be >= 0");
+  TableData d;
+  d.degree = s.degree;
+  d.small_terms = 8;
+  d.s_lo = s.s_lo;
+  d.per_unit = s.per_unit;
+  d.zeta_lo = std::exp(s.s_lo);
+  d.naive.intervals = static_cast<int>(std::lround((s.s_hi_naive - s.s_lo) * s.per_unit));
+  d.delayed.intervals = static_cast<int>(std::lround((s.s_hi_delayed - s.s_lo) * s.per_unit));
+
+  const std::vector<Real> nodes = chebyshev_nodes(s.degree);
+  Fits f = fit(s, d.naive.intervals, d.delayed.intervals, nodes);
+  d.naive.logit = stored(f.g_naive);
+  d.naive.log_tau = stored(f.tau_naive);
+  d.delayed.logit = stored(f.g_delayed);
+  d.delayed.log_tau = stored(f.tau_delayed);
+  d.log_x_max = stored(f.x_max);
+  d.log_tau_max = stored(f.tau_max);
+  make_inverse(f.g_naive, nodes, s.per_unit, d.naive);
+  make_inverse(f.g_delayed, nodes, s.per_unit, d.delayed);
+  d.naive.small = small_series(d.small_terms, true);
+  d.delayed.small = small_series(d.small_terms, false);
+
+  const ReferenceSolution zero = hertz_reference(0.0);
+  const ReferenceSolution lo = hertz_reference(d.zeta_lo);
+  d.naive.tau_zero = static_cast<double>(zero.naive->tau);
+  d.delayed.tau_zero = static_cast<double>(zero.delayed_recovery->tau);
+  d.naive.tau_lo = static_cast<double>(lo.naive->tau);
+  d.delayed.tau_lo = static_cast<double>(lo.delayed_recovery->tau);
+  d.x_max_zero = static_cast<double>(zero.x_max);
+  d.tau_max_zero = static_cast<double>(zero.tau_max);
+  d.x_max_lo = static_cast<double>(lo.x_max);
+  d.tau_max_lo = static_cast<double>(lo.tau_max);
+
+  // Large-ζ laws (docs/asymptotics.md). κ from the reference at ζ = 30, where the correction to κ ζ^-5 is
+  // below 1e-30 relative.
+  const ReferenceSolution at30 = hertz_reference(30.0);
+  f.solves += 3;
+  d.kappa = static_cast<double>(at30.naive->eps * powq(30, 5));
+  const Real x_m = powq(Real(3) / 2, Real(2) / 3);
+  d.x_m = static_cast<double>(x_m);
+  d.q = static_cast<double>(cbrtq(Real(3) / 2));
+  d.log_a = static_cast<double>(logq(x_m) + logq(2) + logq(3) / 2 - kPi / (2 * sqrtq(3)));
+
+  const std::string measured = measured_errors(s, f, f.solves);
+  const std::string laws = law_errors(s, d, f.solves);
+  d.settings = fmt::format(
+      "generator: restitution fast-table --degree {} --per-unit {} --s-lo {} --s-hi-naive {} --s-hi-delayed "
+      "{} "
+      "--checks {} --seed {}\n"
+      "values: __float128 Taylor reference engine (restitution/reference_solution.hpp, two orders agreeing "
+      "to {:.0e}), {} solves\n"
+      "forward: Chebyshev interpolation at {} nodes per interval of ln zeta, as monomials in t in [-1, 1]\n"
+      "inverse: interpolation of ln zeta against ln(eps/(1-eps)) from the unrounded forward polynomials\n"
+      "below zeta_lo: series of docs/series.md, {} terms in sqrt(zeta); above: kappa zeta^-5, two-term "
+      "delayed law\n{}\n{}",
+      s.degree, s.per_unit, s.s_lo, s.s_hi_naive, s.s_hi_delayed, s.checks_per_interval, s.seed,
+      kReferenceAgreement, f.solves, s.degree + 1, d.small_terms, measured, laws);
+  return d;
+}
+
+}  // namespace restitution::fast

@@ -1,0 +1,27 @@
+#pragma once
+// Makes the fast tables (TableData) from the __float128 reference engine
+// (restitution/reference_solution.hpp): Chebyshev interpolation of g = ln(ε/(1 − ε)), ln τ_c, ln x_max and ln
+// τ_max in s = ln ζ at the Chebyshev nodes of each interval, converted to monomials; the inverse by
+// interpolating s(g) from the unrounded forward polynomials; the settings and the errors measured at random
+// check points recorded in TableData::settings.
+#include <cstdint>
+
+#include "fast/table_data.hpp"
+
+namespace restitution::fast {
+
+struct GeneratorSettings {
+  int degree = 12;           // polynomial degree per interval
+  double per_unit = 8;       // intervals per unit of ln ζ (and of g in the inverse)
+  double s_lo = -19;         // ln ζ where the tables start (the series holds below)
+  double s_hi_naive = 2;     // ln ζ where the naive table ends (κ ζ^-5 above)
+  double s_hi_delayed = 12;  // ln ζ where the delayed-recovery table ends (two-term law above)
+  int checks_per_interval = 2;
+  std::uint64_t seed = 13;
+};
+
+// Throws InvalidInput for settings out of range, NumericalFailure if a reference solve fails or g is not
+// monotone in s.
+TableData generate_tables(const GeneratorSettings& settings);
+
+}  // namespace restitution::fast

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# The library as a product: installs the build into a temporary prefix, checks the installed header set,
+# builds examples/cpp against the installed package from a separate folder (strict ISO C++, warnings as
+# errors: the public headers need no GNU extension), runs it and compares its ε at both ends with
+# data/reference_solutions.csv within the solver's accuracy contract |ε - ε_ref| <= tol · min(ε, 1 - ε).
+# Usage: install_consumer.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+build=$1
+source=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+cmake --install "$build" --prefix "$work/prefix" >/dev/null
+
+headers=$(cd "$work/prefix/include/restitution" && ls | tr '\n' ' ')
+expected="calibration.hpp collision_solver.hpp contact_law.hpp errors.hpp material.hpp restitution.hpp series.hpp series_tables.hpp units.hpp "
+if [ "$headers" != "$expected" ]; then
+  echo "installed headers: $headers"
+  echo "expected:          $expected"
+  exit 1
+fi
+if grep -nE '__float128|quadmath|<Eigen|<toml|<boost|<fmt|<sundials|<cvode' "$work/prefix/include/restitution/"*.hpp; then
+  echo "a public header needs a private dependency (above)"
+  exit 1
+fi
+for f in restitutionConfig.cmake restitutionConfigVersion.cmake restitutionTargets.cmake; do
+  test -f "$work/prefix/lib/cmake/restitution/$f" || { echo "missing lib/cmake/restitution/$f"; exit 1; }
+done
+
+cmake -S "$source/examples/cpp" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_CXX_EXTENSIONS=OFF \
+  -DCMAKE_CXX_FLAGS="-Wall -Wextra -Wpedantic -Werror" >/dev/null
+cmake --build "$work/build" >/dev/null
+
+# Default tolerance of SolveOptions: 1e-10. ζ spans the weakly and the strongly damped regime.
+status=0
+for zeta in 0.001 1 100 10000; do
+  output=$("$work/build/app" "$zeta")
+  awk -F, -v zeta="$zeta" -v out="$output" -v tol=1e-10 '
+    BEGIN { n = split(out, lines, "\n"); for (i = 1; i <= n; ++i) { split(lines[i], kv, " "); got[kv[1]] = kv[2] } }
+    /^#/ || $1 == "zeta" { next }
+    $1 + 0 == zeta + 0 {
+      found = 1
+      bad += check("naive", got["naive"], $4, $5)
+      bad += check("delayed-recovery", got["delayed-recovery"], $8, $9)
+    }
+    function check(end, eps, ref, ref_one_minus, m) {
+      if (ref == "") return 0  # the table has no naive end beyond zeta ~ 1e3
+      m = ref < ref_one_minus ? ref : ref_one_minus
+      if (eps == "" || (eps - ref > tol * m) || (ref - eps > tol * m)) {
+        printf "zeta %s %s: app %s, reference %s, allowed %.3g\n", zeta, end, eps, ref, tol * m
+        return 1
+      }
+      return 0
+    }
+    END { if (!found) { print "zeta " zeta " not in the reference table"; exit 1 } exit bad > 0 }
+  ' "$source/data/reference_solutions.csv" || status=1
+done
+[ $status -eq 0 ] && echo "installed package: headers, CMake package and example app check out"
+exit $status

@@ -1,0 +1,49 @@
+// One encoding of the end of a collision: CollisionEnd indexes results and selections, and has one spelling.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "restitution/collision_solver.hpp"
+#include "restitution/errors.hpp"
+
+namespace restitution {
+namespace {
+
+TEST(CollisionEnd, NamesRoundTripWithOneSpelling) {
+  EXPECT_STREQ(end_name(CollisionEnd::naive), "naive");
+  EXPECT_STREQ(end_name(CollisionEnd::delayed_recovery), "delayed-recovery");
+  for (const CollisionEnd end : kCollisionEnds) EXPECT_EQ(end_from_name(end_name(end)), end);
+  EXPECT_THROW(end_from_name("delayed_recovery"), InvalidInput);
+  EXPECT_NE(kCollisionEnds[0], kCollisionEnds[1]);
+}
+
+TEST(CollisionEnd, SelectionOfOneEndHoldsThatEndOnly) {
+  for (const CollisionEnd end : kCollisionEnds) {
+    const EndSelection selection = selection_of(end);
+    for (const CollisionEnd other : kCollisionEnds) EXPECT_EQ(selection[other], other == end);
+  }
+}
+
+TEST(CollisionEnd, ResultIndexedByEndIsTheNamedField) {
+  CollisionSolver solver;
+  const CollisionResult both = solver.solve(ContactLaw::hertz_natural(1.0), {});
+  EXPECT_EQ(&both[CollisionEnd::naive], &both.naive);
+  EXPECT_EQ(&both[CollisionEnd::delayed_recovery], &both.delayed_recovery);
+  // The delayed-recovery end comes first, with the larger ε (less time to dissipate).
+  EXPECT_GT(both[CollisionEnd::delayed_recovery]->eps, both[CollisionEnd::naive]->eps);
+  for (const CollisionEnd end : kCollisionEnds) {
+    SolveOptions options;
+    options.ends = selection_of(end);
+    const CollisionResult one = solver.solve(ContactLaw::hertz_natural(1.0), options);
+    ASSERT_TRUE(one[end].has_value());
+    for (const CollisionEnd other : kCollisionEnds) {
+      if (other != end) EXPECT_FALSE(one[other].has_value());
+    }
+    // Both solves honour |ε - ε_exact| <= tolerance · min(ε, 1 - ε) at this end.
+    const double eps = both[end]->eps;
+    EXPECT_NEAR(end_of(one, end).eps, eps, 2 * SolveOptions{}.tolerance * std::min(eps, 1 - eps));
+  }
+}
+
+}  // namespace
+}  // namespace restitution
