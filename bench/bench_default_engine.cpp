@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "restitution/collision_solver.hpp"
-#include "restitution/reference_solution.hpp"
-#include "restitution/work_precision.hpp"
+#include "reference/reference_solution.hpp"
+#include "reference/work_precision.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 
 #include "restitution/fast.hpp"
 #include "restitution/series.hpp"
-#include "restitution/series_coefficients.hpp"
+#include "series_study/series_coefficients.hpp"
 
 namespace {
 
