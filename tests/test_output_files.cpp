@@ -38,8 +38,8 @@ TEST(OutputFiles, UnwritableFolderIsAnInputError) {
   const fs::path folder = fresh_folder("file-in-the-way");
   fs::create_directories(folder);
   std::ofstream(folder / "plain-file") << "x";
-  EXPECT_THROW(check_output_folder(folder / "plain-file"), InvalidInput);
-  EXPECT_THROW(check_output_folder(folder / "plain-file" / "below"), InvalidInput);
+  EXPECT_THROW(check_output_folder(folder / "plain-file"), IoError);
+  EXPECT_THROW(check_output_folder(folder / "plain-file" / "below"), IoError);
   EXPECT_THROW(check_output_file(folder), InvalidInput);  // a folder where a file is expected
   fs::remove_all(folder);
 }

@@ -55,15 +55,15 @@ void check_output_folder(const fs::path& folder) {
   }
   if (!fs::exists(existing)) existing = ".";  // a relative path none of whose parts exists yet
   if (!fs::is_directory(existing)) {
-    throw InvalidInput(fmt::format("cannot create output folder '{}': '{}' is not a folder", folder.string(),
-                                   existing.string()));
+    throw IoError(fmt::format("cannot create output folder '{}': '{}' is not a folder", folder.string(),
+                              existing.string()));
   }
   // access(W_OK) says yes to root everywhere, /proc included: probe with a file that is removed at once.
   std::string probe = (existing / ".restitution-probe-XXXXXX").string();
   const int fd = mkstemp(probe.data());
   if (fd < 0) {
-    throw InvalidInput(fmt::format("cannot create output folder '{}': '{}' is not writable ({})",
-                                   folder.string(), existing.string(), std::strerror(errno)));
+    throw IoError(fmt::format("cannot create output folder '{}': '{}' is not writable ({})", folder.string(),
+                              existing.string(), std::strerror(errno)));
   }
   close(fd);
   unlink(probe.c_str());

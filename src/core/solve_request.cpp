@@ -6,7 +6,6 @@
 
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
-#include "taylor/taylor_engine.hpp"
 
 namespace restitution {
 
@@ -23,8 +22,9 @@ void check_solve_request(const ContactLaw& law, const SolveOptions& options) {
     // amplified accordingly. Measured against the closed form: CVODE (BDF) misses T = 1e-9 by 1.01x at r =
     // 0.9999 (floor 1.5e-9 there), Taylor misses T = 1e-12 by 4x at r = 0.999 (floor 2.2e-12).
     const double omega_squared = (1.0 - law.parameter) * (1.0 + law.parameter);
-    const double smallest = options.method == Method::taylor ? kMinTaylorTolerance / std::sqrt(omega_squared)
-                                                             : 3e-13 / omega_squared;
+    const double smallest = options.method == Method::taylor
+                                ? min_tolerance(Method::taylor) / std::sqrt(omega_squared)
+                                : 3e-13 / omega_squared;
     if (options.tolerance < smallest) {
       throw InvalidInput(fmt::format(
           "the naive end of the dash-pot at damping-ratio {} is delivered only to tolerance >= {:.2g} by "
