@@ -84,7 +84,8 @@ TEST(CliOutputs, RefusalsComeBeforeTheWork) {
         "work-precision --out " + file, "reference --out " + folder.string(),
         "series certify --order 12 --out " + folder.string(), "series validate --out " + file}) {
     const auto r = run_cli(command);
-    EXPECT_EQ(r.status, 2) << command << "\n" << r.err;
+    // 2 for the Taylor limit, 3 for a path that cannot be written: either way before the work.
+    EXPECT_TRUE(r.status == 2 || r.status == 3) << command << "\n" << r.err;
     EXPECT_FALSE(fs::exists(folder / "t.csv.partial")) << command;
   }
   fs::remove_all(folder);
