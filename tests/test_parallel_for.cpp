@@ -69,26 +69,31 @@ TEST(ParallelFor, PerPointFailuresRecordedByTheBodyLetTheRestGoOn) {
 }
 
 TEST(ParallelFor, AThrowingBodyStopsTheRunAndIsRethrownAfterTheJoin) {
-  std::atomic<int> started{0};
-  std::atomic<int> running{0};
-  try {
-    parallel_for({10000, 2, {}}, [&]() -> IndexBody {
-      return [&](std::size_t i) {
-        ++running;
-        ++started;
-        if (i == 5) {
+  // With two threads how many indices the other thread finishes before it sees the stop depends on the
+  // scheduler (a loaded machine may suspend the failing thread while the other runs to the end), so only
+  // the rethrow and the join are checked there; one thread shows that no index starts after the failure.
+  for (const unsigned threads : {1U, 2U}) {
+    std::atomic<int> started{0};
+    std::atomic<int> running{0};
+    try {
+      parallel_for({10000, threads, {}}, [&]() -> IndexBody {
+        return [&](std::size_t i) {
+          ++running;
+          ++started;
+          if (i == 5) {
+            --running;
+            throw std::logic_error("body failed at 5");
+          }
           --running;
-          throw std::logic_error("body failed at 5");
-        }
-        --running;
-      };
-    });
-    FAIL() << "no exception";
-  } catch (const std::logic_error& e) {
-    EXPECT_STREQ(e.what(), "body failed at 5");
+        };
+      });
+      FAIL() << "no exception";
+    } catch (const std::logic_error& e) {
+      EXPECT_STREQ(e.what(), "body failed at 5");
+    }
+    EXPECT_EQ(running.load(), 0);                    // every thread had finished its index: they were joined
+    if (threads == 1) EXPECT_EQ(started.load(), 6);  // indices 0..5, none after the failure
   }
-  EXPECT_EQ(running.load(), 0);      // every thread had finished its index: they were joined
-  EXPECT_LT(started.load(), 10000);  // and no new index started after the failure
 }
 
 TEST(ParallelFor, AThrowingPerThreadConstructorIsRethrownNotTerminate) {
