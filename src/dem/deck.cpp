@@ -57,6 +57,12 @@ double mindlin_ratio(const Pair& p) {
   return 3.0 * (1.0 - p.poisson_ratio) / (2.0 - p.poisson_ratio);
 }
 
+// The tangential spring and dashpot for normal ones (kn, gn) in a code's own units: Mindlin's stiffness and a
+// dashpot as strong as the normal one when mu > 0, none when frictionless.
+Coefficients tangential(const Pair& p, double kn, double gn, double mu) {
+  return mu > 0.0 ? Coefficients{mindlin_ratio(p) * kn, gn} : Coefficients{};
+}
+
 std::string friction_note(double mu) {
   return mu > 0.0 ? fmt::format(
                         "Coulomb friction mu = {} acts only tangentially: it does not change the normal eps "
@@ -110,8 +116,7 @@ void liggghts(Deck& d, const Pair& p, double a, double mu) {
   };
   // With friction: Mindlin's k_t = 8 G* (as LIGGGHTS's own `model hertz` computes it) and gamma_t =
   // gamma_n, the same choices as the LAMMPS lines.
-  const double kt = mu > 0.0 ? mindlin_ratio(p) * kn : 0.0;
-  const double gt = mu > 0.0 ? gn : 0.0;
+  const auto [kt, gt] = tangential(p, kn, gn, mu);
   d.parameters.push_back(
       {"kt", kt, "k_t = 8 G* (Mindlin) [Pa], multiplied by sqrt(R_eff xi); 0: frictionless"});
   d.parameters.push_back({"gammat", gt, "gamma_t = gamma_n [1/(m s)]; 0: frictionless"});
@@ -198,8 +203,7 @@ void chrono(Deck& d, const Pair& p, double a, double mu) {
       {"Gn", gn, "2 A E* / (m_eff sqrt(R_eff)) [m^-3/2 s^-1], multiplied by m_eff R_eff sqrt(xi)"},
   };
   // With friction: Mindlin's Kt = (8 G* / ((4/3) E*)) Kn and Gt = Gn, the same choices as the LAMMPS lines.
-  const double kt = mu > 0.0 ? mindlin_ratio(p) * kn : 0.0;
-  const double gt = mu > 0.0 ? gn : 0.0;
+  const auto [kt, gt] = tangential(p, kn, gn, mu);
   d.parameters.push_back(
       {"Kt", kt, "8 G* / sqrt(R_eff) (Mindlin) [Pa m^-1/2], scaled as Kn; 0: frictionless"});
   d.parameters.push_back({"Gt", gt, "Gt = Gn [m^-3/2 s^-1]; 0: frictionless"});
