@@ -203,6 +203,81 @@ TEST(DemCli, BadInputExitsWithTwoAndNamesTheProblem) {
   EXPECT_NE(no_material.err.find("--young-modulus"), std::string::npos) << no_material.err;
 }
 
+// Each code's name for the Coulomb coefficient in `parameters`, and the text its lines carry it as.
+struct FrictionSpelling {
+  const char* code;
+  const char* parameter;
+  double parameter_value;  // for mu = 0.5
+  const char* line_text;
+};
+
+TEST(DemCli, FrictionReachesEachCodesParametersAndLinesAndLeavesEpsAlone) {
+  const std::string material =
+      " --dissipative-constant 5.8e-5 --young-modulus 1e7 --poisson-ratio 0.45 --radius 0.01 --density 1100 "
+      "--json";
+  const double angle = std::atan(0.5);
+  for (const FrictionSpelling& f : {
+           FrictionSpelling{"lammps", "mu_s", 0.5, "tangential mindlin NULL 1 0.5 "},
+           FrictionSpelling{"liggghts", "coefficientFriction", 0.5,
+                            "coefficientFriction peratomtypepair 1 0.5"},
+           FrictionSpelling{"mercurydpm", "sliding_friction_coefficient", 0.5,
+                            "setSlidingFrictionCoefficient(0.5)"},
+           FrictionSpelling{"yade", "frictionAngle", angle, "frictionAngle=0.4636476090008061"},
+           FrictionSpelling{"chrono", "friction", 0.5, "SetFriction(0.5)"},
+       }) {
+    const auto with =
+        test_support::run_cli(std::string("dem --code ") + f.code + " --friction 0.5" + material);
+    const auto without = test_support::run_cli(std::string("dem --code ") + f.code + material);
+    ASSERT_EQ(with.status, 0) << with.err;
+    ASSERT_EQ(without.status, 0) << without.err;
+    const auto j = nlohmann::json::parse(with.out);
+    const auto j0 = nlohmann::json::parse(without.out);
+    EXPECT_EQ(j.at("friction").get<double>(), 0.5) << f.code;
+    EXPECT_NEAR(j.at("parameters").at(f.parameter).get<double>(), f.parameter_value, 1e-15) << f.code;
+    EXPECT_EQ(j0.at("parameters").at(f.parameter).get<double>(), 0.0) << f.code;
+    EXPECT_TRUE(contains(j.at("lines").get<std::vector<std::string>>(), f.line_text)) << f.code << "\n"
+                                                                                      << with.out;
+    EXPECT_TRUE(contains(j.at("notes").get<std::vector<std::string>>(), "does not change the normal eps"))
+        << f.code;
+    // Friction is tangential: the normal law, hence every ε, is untouched.
+    EXPECT_EQ(j.at("eps"), j0.at("eps")) << f.code;
+  }
+}
+
+TEST(DemDeck, FrictionStiffnessIsMindlinsAndFrictionlessLinesAreUnchanged) {
+  const dem::Pair pair = dem::pair_of(test_support::rubber_like());
+  // k_t = 8 G* with 1/G* = 2 (2 - nu) / G, G = Y / (2 (1 + nu)), against LIGGGHTS's kn = (4/3) E*.
+  const double nu = pair.poisson_ratio;
+  const double g_star = pair.young_modulus_pa / (2.0 * (1.0 + nu)) / (2.0 * (2.0 - nu));
+  const auto liggghts = dem::make_deck(Code::liggghts, CollisionEnd::delayed_recovery, pair, kA, 1.0, 0.3);
+  EXPECT_NEAR(liggghts.parameter("kt"), 8.0 * g_star, 1e-12 * 8.0 * g_star);
+  EXPECT_EQ(liggghts.parameter("gammat"), liggghts.parameter("gamman"));
+  EXPECT_TRUE(contains(liggghts.lines, "tangential history"));
+  const auto chrono = dem::make_deck(Code::chrono, CollisionEnd::delayed_recovery, pair, kA, 1.0, 0.3);
+  EXPECT_NEAR(chrono.parameter("Kt"), 8.0 * g_star / std::sqrt(pair.effective_radius_m),
+              1e-12 * chrono.parameter("Kt"));
+  for (Code code : {Code::lammps, Code::liggghts, Code::mercurydpm, Code::yade, Code::chrono}) {
+    const auto rough = dem::make_deck(code, CollisionEnd::delayed_recovery, pair, kA, 1.0, 0.3);
+    EXPECT_EQ(dem::deck_beta(rough, pair),
+              dem::deck_beta(dem::make_deck(code, CollisionEnd::delayed_recovery, pair, kA, 1.0), pair))
+        << dem::code_name(code);
+  }
+  const auto smooth = dem::make_deck(Code::lammps, CollisionEnd::delayed_recovery, pair, kA, 1.0);
+  EXPECT_TRUE(contains(smooth.lines, "tangential linear_nohistory 0 0"));
+  EXPECT_THROW((void)dem::make_deck(Code::yade, CollisionEnd::delayed_recovery, pair, kA, 1.0, -0.1),
+               InvalidInput);
+}
+
+TEST(DemCli, BadFrictionExitsWithTwoAndNamesFriction) {
+  const std::string material =
+      " --dissipative-constant 5.8e-5 --young-modulus 1e7 --poisson-ratio 0.45 --radius 0.01 --density 1100";
+  for (const char* bad : {"-0.1", "nan", "inf"}) {
+    const auto r = test_support::run_cli(std::string("dem --code lammps --friction ") + bad + material);
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_NE(r.err.find("--friction"), std::string::npos) << bad << ": " << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace restitution
 
@@ -244,6 +319,15 @@ TEST(DemScene, ParsesATaskAndNamesWhatIsWrong) {
   EXPECT_NE(scene_error("code = \"lammps\"\nmaterial = \"rubber\"\n").find("speeds"), std::string::npos);
   EXPECT_NE(scene_error("code = \"lammps\"\nmaterial = \"rubber\"\nspeeds = [-1]\n").find("speeds"),
             std::string::npos);
+  EXPECT_EQ(s.dems[0].friction, 0.0);
+  EXPECT_NE(scene_error("code = \"lammps\"\nmaterial = \"rubber\"\nspeeds = [1]\nfriction = -0.5\n")
+                .find("friction"),
+            std::string::npos);
+  const scene::Scene rough = scene::parse_scene(
+      std::string(kSceneHead) +
+          "[[dem]]\nname = \"d\"\ncode = \"lammps\"\nmaterial = \"rubber\"\nspeeds = [1]\nfriction = 0.5\n",
+      "dem.toml");
+  EXPECT_EQ(rough.dems[0].friction, 0.5);
 }
 
 }  // namespace

@@ -26,6 +26,7 @@ struct DemOptions {
   std::string end = "delayed-recovery";
   std::vector<double> speeds;
   double tolerance = 1e-10;
+  double friction = 0.0;  // Coulomb mu of the tangential model [1]
   bool json = false;
 };
 
@@ -46,6 +47,7 @@ struct DemResult {
   dem::Deck deck;
   double dissipative_constant_s = 0.0;
   double reference_velocity_m_s = 0.0;
+  double friction = 0.0;
   std::vector<SpeedEps> eps;
   std::vector<dem::SizeCheck> sizes;
   std::optional<YadeCheck> yade;
@@ -73,6 +75,7 @@ DemResult compute(const DemOptions& o) {
     // Refuse before calibrating: the deck would refuse anyway.
     (void)dem::make_deck(code, end, {}, 0.0, 1.0);
   }
+  dem::check_friction(o.friction);
   const Material material = material_from(o.material);
   const dem::Pair pair = dem::pair_of(material);
   const double k = elastic_constants(material).k;
@@ -80,7 +83,8 @@ DemResult compute(const DemOptions& o) {
   DemResult r;
   r.dissipative_constant_s = dissipative_constant(o, end, k, solver);
   r.reference_velocity_m_s = o.velocity.value_or(1.0);
-  r.deck = dem::make_deck(code, end, pair, r.dissipative_constant_s, r.reference_velocity_m_s);
+  r.friction = o.friction;
+  r.deck = dem::make_deck(code, end, pair, r.dissipative_constant_s, r.reference_velocity_m_s, o.friction);
   const double v = r.reference_velocity_m_s;
   const std::vector<double> speeds = o.speeds.empty() ? std::vector<double>{v / 10.0, v, 10.0 * v} : o.speeds;
   const double beta = dem::deck_beta(r.deck, pair);
@@ -102,7 +106,7 @@ void print_json(const DemResult& r) {
   json.begin_object();
   json.field("code", dem::code_name(r.deck.code)).field("end", end_name(r.deck.end));
   json.field("dissipative_constant_s", r.dissipative_constant_s);
-  json.field("reference_velocity_m_s", r.reference_velocity_m_s);
+  json.field("reference_velocity_m_s", r.reference_velocity_m_s).field("friction", r.friction);
   json.key("parameters").begin_object();
   for (const auto& p : r.deck.parameters) json.field(p.name, p.value);
   json.end_object();
@@ -183,6 +187,10 @@ void add_dem_command(CLI::App& app, Action& chosen) {
       ->capture_default_str();
   cmd->add_option("--speeds", o->speeds, "impact speeds in m/s to report eps at (default v/10, v, 10 v)");
   cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")
+      ->capture_default_str();
+  cmd->add_option("--friction", o->friction,
+                  "Coulomb friction coefficient mu >= 0 of the tangential model (0: frictionless); it does "
+                  "not change the head-on eps")
       ->capture_default_str();
   cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
   cmd->callback([o, &chosen] {

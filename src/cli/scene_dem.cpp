@@ -34,7 +34,8 @@ DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task) {
   const dem::Pair pair = dem::pair_of(material);
   CollisionSolver solver;
   const double a = dissipative_constant(scene, task, material, solver);
-  const dem::Deck deck = dem::make_deck(code, task.end, pair, a, task.velocity_m_s.value_or(1.0));
+  const dem::Deck deck =
+      dem::make_deck(code, task.end, pair, a, task.velocity_m_s.value_or(1.0), task.friction);
   const double beta = dem::deck_beta(deck, pair);
   std::vector<double> predicted;
   for (double v : task.speeds) predicted.push_back(dem::eps_for(beta, v, task.end, scene.tolerance, solver));

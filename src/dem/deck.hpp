@@ -51,9 +51,13 @@ struct Deck {
 };
 
 // The lines that give `pair` the law with dissipative constant A [s] ending at `end`. `reference_velocity`
-// [m/s] is YADE's vn. Throws InvalidInput when the code cannot end a collision at `end`.
+// [m/s] is YADE's vn. `friction` is the Coulomb coefficient mu [1] of the tangential model (0: frictionless);
+// it never changes the normal law, so the head-on ε is the same for every mu. Throws InvalidInput when the
+// code cannot end a collision at `end` or mu is not finite and >= 0 (naming --friction).
+// Throws InvalidInput naming --friction unless mu is finite and >= 0.
+void check_friction(double mu);
 Deck make_deck(Code code, CollisionEnd end, const Pair& pair, double dissipative_constant_s,
-               double reference_velocity_m_s);
+               double reference_velocity_m_s, double friction = 0.0);
 
 // β [s^{1/5} m^{-1/5}] the deck's parameters give `other` (a pair of the deck's material), read as the code
 // reads them; equals the law's β for the deck's own pair.

@@ -116,6 +116,7 @@ struct DemTask {
   CollisionEnd end = CollisionEnd::delayed_recovery;
   std::vector<double> speeds;  // impact speeds of the comparison [m/s]
   bool run_code = true;        // LAMMPS and LIGGGHTS: run the code at each speed
+  double friction = 0.0;       // Coulomb mu of the tangential model [1]; 0: frictionless
   int line = 0;
 };
 

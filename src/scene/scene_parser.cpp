@@ -352,6 +352,12 @@ class Parser {
     check_positive(r, "speeds", *speeds);
     d.speeds = *speeds;
     d.run_code = r.flag("run").value_or(true);
+    d.friction = r.number("friction").value_or(0.0);
+    try {
+      dem::check_friction(d.friction);
+    } catch (const InvalidInput& e) {
+      r.fail("friction", e.what());
+    }
     return d;
   }
 

@@ -4,6 +4,8 @@
 // Both codes integrate with velocity-Verlet, first order in the time step here (the damping force is taken
 // at the half-step velocity), so cli/dem_runner.hpp runs each deck at dt = T/2000 and T/20000, T the natural
 // time of the fastest collision, and extrapolates: ε = (10 ε_fine - ε_coarse) / 9.
+// Two more cases add Coulomb friction (--friction 0.5): the codes must accept the tangential lines, and a
+// head-on collision must still end with the frictionless ε.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -43,16 +45,18 @@ struct Case {
   std::string code;
   Material material;
   std::string end;
+  double friction = 0.0;  // --friction: the Coulomb mu of the tangential model
 };
 
 // Names the case in test listings (instead of googletest's byte dump of the struct).
 void PrintTo(const Case& c, std::ostream* os) {
-  *os << c.code << " " << c.material.name << " " << c.end;
+  *os << c.code << " " << c.material.name << " " << c.end << " friction " << c.friction;
 }
 
 std::string case_name(const testing::TestParamInfo<Case>& info) {
   std::string end = info.param.end == "naive" ? "naive" : "delayed";
-  return info.param.code + "_" + info.param.material.name + "_" + end;
+  return info.param.code + "_" + info.param.material.name + "_" + end +
+         (info.param.friction > 0.0 ? "_friction" : "");
 }
 
 restitution::dem::Pair pair_of(const Material& m) {
@@ -81,7 +85,7 @@ TEST_P(DemIntegration, CodeMeasuresTheEpsRestitutionPredicts) {
   args << "dem --code " << c.code << " --end " << c.end << " --eps " << m.eps << " --velocity " << v
        << " --young-modulus " << m.young_pa << " --poisson-ratio " << m.poisson << " --radius " << m.radius_m
        << " --density " << m.density_kg_m3 << " --speeds " << speeds[0] << " " << speeds[1] << " "
-       << speeds[2] << " --json";
+       << speeds[2] << " --friction " << c.friction << " --json";
   const auto outcome = restitution::test_support::run_cli(args.str());
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   const json out = json::parse(outcome.out);
@@ -117,6 +121,8 @@ std::vector<Case> cases() {
       for (const char* end : {"delayed-recovery", "naive"}) all.push_back({code, m, end});
     }
   }
+  all.push_back({"lammps", kMaterials[0], "delayed-recovery", 0.5});
+  all.push_back({"liggghts", kMaterials[1], "delayed-recovery", 0.5});
   return all;
 }
 
