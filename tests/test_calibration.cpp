@@ -55,6 +55,18 @@ TEST(Calibration, RootReproducesEpsAtBothEndsAndManyTargets) {
   }
 }
 
+// Small ε (issue 12, item 1): the root finder must work on log ε itself, since 1 - ε rounds to 1 and
+// log1p(-(1 - ε)) loses every digit of ε below about 1e-8. ε(ζ) re-solved at the root must hold the
+// tolerance.
+TEST(Calibration, SmallNaiveTargetsHoldTheTolerance) {
+  CollisionSolver solver;
+  SolveOptions o;
+  for (const double eps : {1e-8, 1e-12, 1e-16, 1e-25}) {
+    const double zeta = zeta_for_eps(eps, CollisionEnd::naive, o, solver);
+    EXPECT_NEAR(eps_at(zeta, CollisionEnd::naive) / eps, 1.0, 5e-10) << "eps " << eps;
+  }
+}
+
 TEST(Calibration, BetaScalesWithTheFifthRootOfVelocity) {
   const Calibration at_1 = calibrated(0.7, 1.0);
   const Calibration at_32 = calibrated(0.7, 32.0);
@@ -76,7 +88,9 @@ TEST(Calibration, RejectsTargetsOutsideTheRange) {
   SolveOptions o;
   EXPECT_THROW((void)zeta_for_eps(1.0, CollisionEnd::naive, o, solver), InvalidInput);
   EXPECT_THROW((void)zeta_for_eps(0.0, CollisionEnd::naive, o, solver), InvalidInput);
+  // Below ε at the largest checked ζ (delayed recovery: ε(1e6) ~ 1.3e-10; naive: ε(1e6) ~ 5e-30).
   EXPECT_THROW((void)zeta_for_eps(1e-12, CollisionEnd::delayed_recovery, o, solver), InvalidInput);
+  EXPECT_THROW((void)zeta_for_eps(1e-31, CollisionEnd::naive, o, solver), InvalidInput);
   CalibrationRequest request;
   request.eps = 0.5;
   request.velocity_m_s = -1.0;

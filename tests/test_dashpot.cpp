@@ -149,6 +149,28 @@ TEST(DashpotSolver, BothMethodsMeetTheContractOnAGrid) {
   }
 }
 
+// Near critical damping the naive ε is tiny (3e-31 at r = 0.999) and the two modes cancel there to
+// 1/sqrt(1 - r²): every engine must still hold the tolerance, or refuse it (issue 12, item 3).
+TEST(DashpotSolver, NearCriticalNaiveEndHoldsTheTolerance) {
+  CollisionSolver solver;
+  for (const Method method : {Method::bdf, Method::adams, Method::taylor}) {
+    for (const auto& [r, tol] : {std::pair{0.99, 1e-10}, std::pair{0.999, 2e-10}, std::pair{0.9999, 2e-9}}) {
+      SCOPED_TRACE(testing::Message() << method_name(method) << " r=" << r);
+      SolveOptions o = options(tol, method);
+      o.ends = {true, false};
+      // 1 - r² as (1 - r)(1 + r): r·r would round to an error of 5e-11 in ε at r = 0.9999.
+      const double eps = std::exp(-r * M_PI / std::sqrt((1.0 - r) * (1.0 + r)));
+      EXPECT_NEAR(solver.solve(ContactLaw::linear_dashpot(r), o).naive->eps / eps, 1.0, tol);
+    }
+  }
+  SolveOptions tight = options(1e-12, Method::taylor);
+  tight.ends = {true, false};
+  EXPECT_THROW(solver.solve(ContactLaw::linear_dashpot(0.999), tight), InvalidInput);
+  SolveOptions cvode = options(1e-9, Method::bdf);
+  cvode.ends = {true, false};
+  EXPECT_THROW(solver.solve(ContactLaw::linear_dashpot(0.9999), cvode), InvalidInput);
+}
+
 TEST(DashpotSolver, NaiveEndOfOverdampedDashpotIsAnInputError) {
   CollisionSolver solver;
   SolveOptions o = options(1e-8);

@@ -51,6 +51,33 @@ TEST(ExtremeZeta, TinyDampingFollowsTheSmallZetaSeries) {
   }
 }
 
+// Down to the smallest doubles (issue 12, items 2 and 4): 1 - ε = C1 ζ for every engine and both ends,
+// where the delayed-recovery end lies within rounding of u = 0 (ζ <= 1e-295 for CVODE) or the Taylor
+// engine's root finder must locate u ~ sqrt(ζ) to its own relative accuracy.
+TEST(ExtremeZeta, VanishingDampingKeepsOneMinusEpsRelativeAccuracy) {
+  const double c1 = c1_closed_form();
+  for (const Method method : {Method::automatic, Method::bdf, Method::taylor}) {
+    for (const double zeta : {1e-80, 1e-90, 1e-200, 1e-300}) {
+      const CollisionResult r = solve(zeta, 1e-10, {true, true}, method);
+      for (const EndResult& e : {*r.naive, *r.delayed_recovery}) {
+        EXPECT_NEAR(e.one_minus_eps / (c1 * zeta), 1.0, 1e-10) << method_name(method) << " zeta=" << zeta;
+      }
+    }
+  }
+}
+
+// The (β, v) form at extreme speeds: its own lengths v^{4/5} underflow, the result depends only on ζ.
+TEST(ExtremeZeta, ExtremeSpeedsInTheBetaVelocityForm) {
+  CollisionSolver solver;
+  SolveOptions options;
+  for (const auto& [beta, v] : {std::pair{0.0, 1e-300}, std::pair{0.2, 1e-150}, std::pair{1e-30, 1e150}}) {
+    const CollisionResult scaled = solver.solve(ContactLaw::hertz_scaled(beta, v), options);
+    const CollisionResult natural = solver.solve(ContactLaw::hertz_natural(beta * std::pow(v, 0.2)), options);
+    EXPECT_DOUBLE_EQ(scaled.naive->one_minus_eps, natural.naive->one_minus_eps) << beta << " " << v;
+    EXPECT_DOUBLE_EQ(scaled.delayed_recovery->eps, natural.delayed_recovery->eps) << beta << " " << v;
+  }
+}
+
 TEST(ExtremeZeta, NaiveEndFollowsKappaOverZetaToTheFifth) {
   const double kappa = asymptotics::naive_prefactor().value;
   for (const double zeta : {1e4, 1e5}) {

@@ -9,6 +9,7 @@
 
 #include <fstream>
 
+#include "cli/io_error.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -23,7 +24,7 @@ fs::path fresh_folder(const char* name) {
 
 TEST(OutputFiles, AtomicWriteLeavesOnlyTheFinalFile) {
   const fs::path folder = fresh_folder("atomic");
-  prepare_output_folder(folder / "nested");
+  check_output_folder(folder / "nested");
   write_file_atomically(folder / "nested" / "a.csv", "x,y\n1,2\n");
   std::ifstream in(folder / "nested" / "a.csv");
   std::string first;
@@ -33,14 +34,53 @@ TEST(OutputFiles, AtomicWriteLeavesOnlyTheFinalFile) {
   fs::remove_all(folder);
 }
 
-TEST(OutputFiles, UnwritableFolderIsAnIoError) {
-  EXPECT_THROW(prepare_output_folder("/proc/restitution-cannot-exist"), IoError);
+TEST(OutputFiles, UnwritableOutputsAreRefused) {
   const fs::path folder = fresh_folder("file-in-the-way");
   fs::create_directories(folder);
   std::ofstream(folder / "plain-file") << "x";
-  EXPECT_THROW(prepare_output_folder(folder / "plain-file"), IoError);
-  EXPECT_THROW(write_file_atomically(folder / "missing" / "a.csv", "x"), IoError);
+  EXPECT_THROW(check_output_folder(folder / "plain-file"), IoError);
+  EXPECT_THROW(check_output_folder(folder / "plain-file" / "below"), IoError);
+  EXPECT_THROW(check_output_file(folder), InvalidInput);  // a folder where a file is expected
   fs::remove_all(folder);
+}
+
+// Checking a folder creates nothing: a run that fails before writing leaves no empty folder (item 11).
+TEST(OutputFiles, CheckingCreatesNothingAndTheFirstWriteCreatesTheFolder) {
+  const fs::path folder = fresh_folder("lazy");
+  check_output_folder(folder / "a" / "b");
+  EXPECT_FALSE(fs::exists(folder));
+  write_file_atomically(folder / "a" / "b" / "t.csv", "x\n");
+  EXPECT_TRUE(fs::is_regular_file(folder / "a" / "b" / "t.csv"));
+  fs::remove_all(folder);
+}
+
+// A symlink is followed and its target replaced; the link stays a link (item 8).
+TEST(OutputFiles, SymlinkTargetIsReplacedAndTheLinkKept) {
+  const fs::path folder = fresh_folder("symlink");
+  fs::create_directories(folder / "data");
+  std::ofstream(folder / "data" / "real.csv") << "old\n";
+  fs::create_symlink("data/real.csv", folder / "link.csv");
+  write_file_atomically(folder / "link.csv", "new\n");
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(folder / "link.csv")));
+  std::ifstream in(folder / "data" / "real.csv");
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "new");
+  EXPECT_FALSE(fs::exists(folder / "data" / "real.csv.tmp"));
+  // A dangling link: its target is created.
+  fs::create_symlink("data/later.csv", folder / "dangling.csv");
+  write_file_atomically(folder / "dangling.csv", "x\n");
+  EXPECT_TRUE(fs::is_regular_file(folder / "data" / "later.csv"));
+  fs::remove_all(folder);
+}
+
+// Devices, FIFOs and /dev/stdout are written in place, never replaced by a regular file (item 8).
+TEST(OutputFiles, StreamsAreWrittenInPlace) {
+  EXPECT_TRUE(output_target("/dev/null").in_place);
+  EXPECT_TRUE(output_target("/dev/stdout").in_place);
+  write_file_atomically("/dev/null", "x\n");
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  EXPECT_THROW(write_file_atomically("/dev/full", "x\n"), IoError);
 }
 
 TEST(OutputFiles, NumbersHaveSeventeenDigits) {

@@ -84,7 +84,7 @@ TEST(SceneParser, WrongTypesAndRangesNameTheKey) {
   EXPECT_EQ(error_of("output = \"o\"\ntolerance = 1.0\n"),
             "test.toml:2: tolerance: expected a value in [1e-11, 0.01]");
   EXPECT_EQ(error_of("output = \"o\"\n[[sweep]]\nzeta = [0.1, -1]\n"),
-            "test.toml:3: sweep[0].zeta: expected 0 <= zeta <= 1e4, got -1");
+            "test.toml:3: sweep[0].zeta: expected 0 <= zeta <= 1e+06 (the checked range), got -1");
   EXPECT_EQ(
       error_of("output = \"o\"\n[[sweep]]\nzeta = 1\nends = \"middle\"\n"),
       "test.toml:4: sweep[0].ends: expected \"naive\", \"delayed-recovery\" or \"both\", got \"middle\"");
@@ -129,6 +129,16 @@ TEST(SceneParser, SubjectsMustBeUnambiguous) {
 TEST(SceneParser, SyntaxErrorsCarryTheLine) {
   const std::string e = error_of("output = \"o\"\n\n[[sweep]\n");
   EXPECT_EQ(e.rfind("test.toml:3: ", 0), 0U) << e;
+}
+
+// Issue 12, item 20: log-spaced ranges start and end at exactly the numbers written.
+TEST(SceneParser, LogRangesEndAtTheNumbersGiven) {
+  const Scene s = parse_scene(
+      "output = \"o\"\n[[sweep]]\nbeta = 0.2\nvelocity = {from = 0.01, to = 1e300, points = 7, spacing = "
+      "\"log\"}\n",
+      "t.toml");
+  EXPECT_EQ(s.sweeps[0].velocity_m_s.front(), 0.01);
+  EXPECT_EQ(s.sweeps[0].velocity_m_s.back(), 1e300);
 }
 
 TEST(SceneParser, QuickSettingsKeepTheEndsOfEveryRange) {

@@ -32,7 +32,8 @@ struct Calibration {
 };
 
 // ζ at which ε(ζ) = eps for the given end, to a relative accuracy of about options.tolerance in ζ.
-// Throws InvalidInput when eps is not in (0, 1) or lies below ε(ζ = 1e4), the solver's range.
+// Throws InvalidInput when eps is not in (0, 1) or lies below ε(kLargestCheckedZeta), outside the checked
+// range.
 double zeta_for_eps(double eps, CollisionEnd end, const SolveOptions& options, CollisionSolver& solver,
                     int* solves = nullptr);
 

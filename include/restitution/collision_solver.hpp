@@ -65,6 +65,10 @@ void check_solve_options(const SolveOptions& options);
 // check_solve_options plus the ends that do not exist for this law (the naive end of an overdamped dash-pot):
 // every engine checks its request with it.
 void check_solve_request(const ContactLaw& law, const SolveOptions& options);
+// Throws InvalidInput for everything CollisionSolver::solve would refuse for this law and these options
+// (the checks above, an end that does not exist, an engine's limits) without integrating: callers with
+// many points check them all before computing any.
+void check_solvable(const ContactLaw& law, const SolveOptions& options);
 
 // All times and lengths below are in the natural scaling (x'(0) = 1) whatever form the law was given in.
 struct EndResult {

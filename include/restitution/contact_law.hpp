@@ -16,6 +16,13 @@ namespace restitution {
 
 enum class LawKind { viscoelastic_hertz, linear_dashpot };
 
+// The contracted range of ζ: every ζ in [0, kLargestCheckedZeta] is checked against the reference solutions
+// (docs/accuracy.md). The front ends (CLI, sweeps, scenes, calibration) refuse larger ζ with
+// require_checked_zeta; the solver itself still accepts them (tests probe beyond the range).
+inline constexpr double kLargestCheckedZeta = 1e6;
+// Throws InvalidInput naming ζ and the checked range when zeta > kLargestCheckedZeta (or is not finite).
+void require_checked_zeta(double zeta);
+
 const char* law_name(LawKind kind);  // "viscoelastic-hertz" | "linear-dashpot"
 
 struct ContactLaw {

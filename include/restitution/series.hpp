@@ -17,6 +17,12 @@ double c1_closed_form();            // sqrt(π)/(2^{1/5} 5^{2/5}) Γ(3/5)/Γ(21/
 double undamped_max_time();         // τ_max0 = (4/5)^{3/5} Γ(2/5) Γ(1/2) / (2 Γ(9/10)) = 1.6093...
 double undamped_max_compression();  // b_0 = (5/4)^{2/5}
 
+// Radii of convergence in ζ (docs/series.md: Domb-Sykes and root tests on the recomputed coefficients). The
+// naive series is limited by a singularity at ζ ≈ -1.39, the delayed-recovery series by a complex pair at
+// |ζ| ≈ 1.10; beyond them the partial sums diverge however many terms are taken.
+inline constexpr double kNaiveSeriesRadius = 1.39;
+inline constexpr double kDelayedRecoverySeriesRadius = 1.10;
+
 // Naive series ε = 1 + Σ_{k=1}^{N} c_k ζ^k; c holds c_1 ... c_N.
 Value naive_series(double zeta, std::span<const double> c);
 // Delayed-recovery series ε = Σ_{k=0}^{N} h_k ζ^{k/2}; h holds h_0 = 1, h_1 ... h_N.

@@ -82,13 +82,14 @@ void add_calibrate_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--end", o->end, "end of the collision the measurement corresponds to")
       ->check(CLI::IsMember({"naive", "delayed-recovery"}))
       ->capture_default_str();
-  cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")
+  cmd->add_option("--tolerance", o->tolerance,
+                  "accuracy of each eps, in [1e-11, 1e-2] (taylor: [1e-13, 1e-2])")
       ->capture_default_str();
   cmd->add_option(
          "--method", o->method,
-         "integration method: bdf, adams or auto; or fast: the certified table (restitution/fast.hpp, "
-         "1e-13, no integration, any eps in (0, 1))")
-      ->check(CLI::IsMember({"bdf", "adams", "auto", "fast"}))
+         "integration method: bdf, adams, auto or taylor (the naive end only for zeta <= 100); or fast: "
+         "the certified table (restitution/fast.hpp, 1e-13, no integration, any eps in (0, 1))")
+      ->check(CLI::IsMember({"bdf", "adams", "auto", "taylor", "fast"}))
       ->capture_default_str();
   add_material_options(*cmd, o->material);
   cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");

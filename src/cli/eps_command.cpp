@@ -31,9 +31,14 @@ ContactLaw law_from(const EpsOptions& o) {
   if (o.damping_ratio) throw InvalidInput("--damping-ratio belongs to --law linear-dashpot");
   if (o.zeta) {
     if (o.beta || o.velocity) throw InvalidInput("give either --zeta or --beta with --velocity, not both");
+    require_checked_zeta(*o.zeta);
     return ContactLaw::hertz_natural(*o.zeta);
   }
-  if (o.beta && o.velocity) return ContactLaw::hertz_scaled(*o.beta, *o.velocity);
+  if (o.beta && o.velocity) {
+    const ContactLaw law = ContactLaw::hertz_scaled(*o.beta, *o.velocity);
+    require_checked_zeta(law.parameter);
+    return law;
+  }
   if (o.beta || o.velocity) throw InvalidInput("--beta and --velocity go together");
   throw InvalidInput("give --zeta, or --beta with --velocity");
 }
@@ -88,7 +93,9 @@ void add_eps_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--damping-ratio", o->damping_ratio,
                   "damping ratio r > 0 of the linear dash-pot x'' + 2r x' + x = 0");
   add_solver_options(*cmd, o->solver);
-  cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
+  cmd->add_flag("--json", o->json,
+                "print one JSON object (17 significant digits); the tolerance holds for eps when eps is small "
+                "and for one_minus_eps when eps is near 1");
   cmd->callback([o, &chosen] { chosen = [o] { return run_eps(*o); }; });
 }
 

@@ -22,7 +22,7 @@ struct FastTableOptions {
 
 void write_text(const std::string& out, const std::string& text) {
   const std::filesystem::path path(out);
-  if (path.has_parent_path()) prepare_output_folder(path.parent_path());
+  if (path.has_parent_path()) check_output_folder(path.parent_path());
   write_file_atomically(path, text);
 }
 

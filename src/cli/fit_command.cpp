@@ -8,6 +8,7 @@
 #include "analysis/power_law_fit.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
+#include "restitution/errors.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -16,7 +17,7 @@ struct FitOptions {
   std::string end;
   double zeta_min = 0.0;
   double zeta_max = 0.0;
-  int points = 9;
+  long long points = 9;  // signed and wide: a huge or negative count is reported, not wrapped
   double tolerance = 1e-10;
   bool json = false;
 };
@@ -30,9 +31,16 @@ DerivedLaw derived_law(CollisionEnd end) {
   return {asymptotics::kDelayedRecoveryExponent, asymptotics::delayed_recovery_prefactor()};
 }
 
+// A power law over a range gains nothing from more points than this; each point is two solves.
+constexpr long long kMaxFitPoints = 100000;
+
 int run_fit(const FitOptions& o) {
   const CollisionEnd end = end_from_name(o.end);
-  const std::vector<double> zetas = log_grid(o.zeta_min, o.zeta_max, o.points);
+  if (o.points > kMaxFitPoints) {
+    throw InvalidInput(fmt::format("--points must be at most {}, got {}", kMaxFitPoints, o.points));
+  }
+  const std::vector<double> zetas = log_grid(o.zeta_min, o.zeta_max, static_cast<int>(o.points));
+  require_checked_zeta(o.zeta_max);
   CollisionSolver solver;
   SolveOptions options;
   options.tolerance = o.tolerance;
@@ -89,7 +97,9 @@ int run_fit(const FitOptions& o) {
 void add_fit_command(CLI::App& app, Action& chosen) {
   auto o = std::make_shared<FitOptions>();
   CLI::App* cmd = app.add_subcommand("fit", "least-squares power law of eps against zeta at one end");
-  cmd->add_option("--end", o->end, "naive or delayed-recovery")->required();
+  cmd->add_option("--end", o->end, "end of the collision: naive or delayed-recovery")
+      ->required()
+      ->check(CLI::IsMember({"naive", "delayed-recovery"}));
   cmd->add_option("--zeta-min", o->zeta_min, "smallest zeta of the fit (> 0)")->required();
   cmd->add_option("--zeta-max", o->zeta_max, "largest zeta of the fit")->required();
   cmd->add_option("--points", o->points, "log-spaced points, ends included (>= 3)")->capture_default_str();

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/io_error.hpp"
 #include "cli/parse_errors.hpp"
 #include "restitution/errors.hpp"
 
@@ -15,6 +16,7 @@ int run(int argc, char** argv) {
   using namespace restitution;
   CLI::App app{"restitution: coefficient of normal restitution of colliding viscoelastic spheres",
                "restitution"};
+  app.set_version_flag("--version", "restitution " RESTITUTION_VERSION);
   app.require_subcommand(1);
   app.footer(
       "Exit status: 0 done, 1 numerical failure, 2 bad usage or input, 3 I/O failure (an output file or\n"
@@ -41,6 +43,9 @@ int run(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp&) {
     std::fputs(app.help("", CLI::AppFormatMode::All).c_str(), stdout);
     return 0;
+  } catch (const CLI::CallForVersion& e) {
+    std::printf("%s\n", e.what());
+    return 0;
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "restitution: error: %s\n", cli::describe_parse_error(app, e).c_str());
     return 2;
@@ -48,6 +53,9 @@ int run(int argc, char** argv) {
 
   try {
     return chosen ? chosen() : 2;
+  } catch (const cli::IoError& e) {
+    std::fprintf(stderr, "restitution: I/O error: %s\n", cli::one_line(e.what()).c_str());
+    return 3;
   } catch (const InvalidInput& e) {
     std::fprintf(stderr, "restitution: error: %s\n", cli::one_line(e.what()).c_str());
     return 2;
@@ -67,7 +75,12 @@ int run(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   try {
-    return run(argc, argv);
+    const int status = run(argc, argv);
+    restitution::cli::flush_standard_output();  // a result (or help) that never reached stdout is no success
+    return status;
+  } catch (const restitution::cli::IoError& e) {
+    std::fprintf(stderr, "restitution: I/O error: %s\n", restitution::cli::one_line(e.what()).c_str());
+    return 3;
   } catch (...) {  // the last line of defence: never an abort or a stack trace
     std::fputs("restitution: failure: unexpected error\n", stderr);
     return 1;

@@ -4,12 +4,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <system_error>
 
+#include "cli/io_error.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -37,32 +40,85 @@ std::string quoted(const std::string& text) {
 
 }  // namespace
 
-void prepare_output_folder(const fs::path& folder) {
-  std::error_code error;
-  fs::create_directories(folder, error);
-  if (error || !fs::is_directory(folder)) {
-    throw IoError(fmt::format("cannot create output folder '{}': {}", folder.string(),
-                              error ? error.message() : "not a folder"));
-  }
-  if (access(folder.c_str(), W_OK) != 0) {
-    throw IoError(fmt::format("output folder '{}' is not writable", folder.string()));
+void flush_standard_output() {
+  if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
+    throw IoError(fmt::format("cannot write to standard output: {}", std::strerror(errno)));
   }
 }
 
+void check_output_folder(const fs::path& folder) {
+  std::error_code error;
+  fs::path existing = folder.empty() ? fs::path(".") : folder;
+  while (!fs::exists(fs::symlink_status(existing, error)) && existing.has_parent_path() &&
+         existing.parent_path() != existing) {
+    existing = existing.parent_path();
+  }
+  if (!fs::exists(existing)) existing = ".";  // a relative path none of whose parts exists yet
+  if (!fs::is_directory(existing)) {
+    throw IoError(fmt::format("cannot create output folder '{}': '{}' is not a folder", folder.string(),
+                              existing.string()));
+  }
+  // access(W_OK) says yes to root everywhere, /proc included: probe with a file that is removed at once.
+  std::string probe = (existing / ".restitution-probe-XXXXXX").string();
+  const int fd = mkstemp(probe.data());
+  if (fd < 0) {
+    throw IoError(fmt::format("cannot create output folder '{}': '{}' is not writable ({})", folder.string(),
+                              existing.string(), std::strerror(errno)));
+  }
+  close(fd);
+  unlink(probe.c_str());
+}
+
+void check_output_file(const fs::path& path) {
+  const OutputTarget target = output_target(path);
+  if (!target.in_place) check_output_folder(target.path.parent_path());
+}
+
+OutputTarget output_target(const fs::path& path) {
+  std::error_code error;
+  const fs::file_status followed = fs::status(path, error);
+  if (fs::is_directory(followed)) {
+    throw InvalidInput(fmt::format("'{}' is a folder, not a file", path.string()));
+  }
+  if (fs::exists(followed) && !fs::is_regular_file(followed)) return {path, true};  // device, FIFO, socket
+  fs::path at = path;
+  for (int hops = 0; fs::is_symlink(fs::symlink_status(at, error)); ++hops) {
+    if (hops == 40) throw InvalidInput(fmt::format("'{}': too many levels of symbolic links", path.string()));
+    const fs::path link = fs::read_symlink(at, error);
+    if (error) throw InvalidInput(fmt::format("cannot read the link '{}': {}", at.string(), error.message()));
+    at = link.is_absolute() ? link : at.parent_path() / link;
+    // /dev/stdout -> /proc/self/fd/1: an open stream, whatever file it happens to be.
+    if (at.lexically_normal().string().rfind("/proc/", 0) == 0) return {path, true};
+  }
+  return {at.lexically_normal(), false};
+}
+
 void write_file_atomically(const fs::path& path, const std::string& content) {
-  const fs::path temporary = path.string() + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw IoError(fmt::format("cannot write '{}'", temporary.string()));
+  const OutputTarget target = output_target(path);
+  if (target.in_place) {
+    std::ofstream out(target.path, std::ios::binary);
     out << content;
     out.flush();
-    if (!out) throw IoError(fmt::format("cannot write '{}'", temporary.string()));
+    if (!out) throw IoError(fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno)));
+    return;
   }
+  const fs::path temporary = target.path.string() + ".tmp";
   std::error_code error;
-  fs::rename(temporary, path, error);
+  if (target.path.has_parent_path()) fs::create_directories(target.path.parent_path(), error);
+  if (error) {
+    throw IoError(fmt::format("cannot create the folder of '{}': {}", target.path.string(), error.message()));
+  }
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) throw IoError(fmt::format("cannot write '{}': {}", temporary.string(), std::strerror(errno)));
+    out << content;
+    out.flush();
+    if (!out) throw IoError(fmt::format("cannot write '{}': {}", temporary.string(), std::strerror(errno)));
+  }
+  fs::rename(temporary, target.path, error);
   if (error) {
     fs::remove(temporary, error);
-    throw IoError(fmt::format("cannot write '{}'", path.string()));
+    throw IoError(fmt::format("cannot write '{}'", target.path.string()));
   }
 }
 

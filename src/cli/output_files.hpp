@@ -6,12 +6,28 @@
 
 namespace restitution::cli {
 
-// Creates the folder (and parents) if needed; throws InvalidInput naming it when it cannot be created or
-// written to.
-void prepare_output_folder(const std::filesystem::path& folder);
+// Checks, without creating anything, that files can be written into the folder: it exists and is
+// writable, or its nearest existing ancestor is a writable folder. Throws InvalidInput naming it. Commands
+// call it before their work; the folder itself is created by the first write_file_atomically into it, so
+// a run that fails before writing leaves no empty folder behind.
+void check_output_folder(const std::filesystem::path& folder);
 
-// Writes the whole content to path.tmp, flushes, then renames it to path: a reader never sees a
-// half-written file under the final name. Throws InvalidInput naming the file on failure.
+// check_output_folder for the folder a file named on the command line will be written into (see
+// output_target; a stream is always writable here). Throws InvalidInput when the path is a folder.
+void check_output_file(const std::filesystem::path& path);
+
+// Where a file named on the command line is written. A symlink is followed to its target, which is then
+// replaced (the link stays); a device, FIFO or socket, and a link into /proc such as /dev/stdout, name an
+// open stream rather than a place and are written in place, never replaced. Throws InvalidInput for a folder.
+struct OutputTarget {
+  std::filesystem::path path;  // the file to create or replace, or the stream to write into
+  bool in_place = false;       // true: write straight into path (no temporary file, no rename)
+};
+OutputTarget output_target(const std::filesystem::path& path);
+
+// Writes the whole content to target.tmp, flushes, then renames it onto the target: a reader never sees a
+// half-written file under the final name (streams are written in place; see output_target). Throws
+// IoError naming the file when the write fails.
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
 
 // A double with 17 significant digits ("nan"/"inf" for non-finite values), as in CSV tables.

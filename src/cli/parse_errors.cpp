@@ -20,7 +20,9 @@ const CLI::Option* find_option(const CLI::App& app, const std::string& name) {
 
 std::string expected_value(const CLI::Option* option) {
   if (option == nullptr) return "a valid value";
-  const std::string type = option->get_type_name();
+  // A checked option's type reads "UINT:UINT in [1 - 1024]": its first word is the type.
+  std::string type = option->get_type_name();
+  type = type.substr(0, type.find_first_of(": "));
   if (type == "FLOAT") return "a number";
   if (type == "UINT") return "a whole number >= 0";
   if (type == "INT") return "a whole number";

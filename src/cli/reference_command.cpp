@@ -40,10 +40,10 @@ int run_reference(const ReferenceOptions& o) {
     return 0;
   }
   if (o.out.empty()) throw InvalidInput("give --out FILE (or --zeta Z for one value)");
+  check_output_file(o.out);  // before the work, not after
   std::vector<ReferenceSolution> solutions;
   for (const double zeta : reference_zeta_grid()) solutions.push_back(hertz_reference(zeta));
   const std::filesystem::path path(o.out);
-  if (path.has_parent_path()) prepare_output_folder(path.parent_path());
   write_file_atomically(path, reference_csv(solutions));
   fmt::print("wrote {} reference solutions to {}\n", solutions.size(), path.string());
   return 0;

@@ -46,8 +46,8 @@ int run_scene_file(const RunOptions& o) {
   if (o.quick) scene::make_quick(s, kQuickPoints);
   const fs::path folder = o.output.empty() ? s.output : fs::path(o.output);
   scene::Plan plan =
-      scene::plan_scene(s);       // refuses points outside the solver's range before a folder exists
-  prepare_output_folder(folder);  // fail before the work, not after
+      scene::plan_scene(s);     // refuses points outside the solver's range before a folder exists
+  check_output_folder(folder);  // fail before the work, not after
 
   scene::RunSettings settings;
   settings.threads = o.threads;
@@ -80,11 +80,12 @@ void add_run_command(CLI::App& app, Action& chosen) {
   CLI::App* cmd =
       app.add_subcommand("run", "run a scene file: tables, plots and a report (default: the 2008 paper)");
   cmd->add_option("scene", o->scene, "scene file (TOML); default scenes/default.toml");
-  cmd->add_option("--output", o->output, "output folder (default: the scene's `output`)");
+  cmd->add_option("--output,--out", o->output, "output folder (default: the scene's `output`)");
   cmd->add_flag(
       "--quick", o->quick,
       fmt::format("small settings for CI: at most {} points per range, tolerance >= 1e-8", kQuickPoints));
-  cmd->add_option("--threads", o->threads, "worker threads (default: one per core)");
+  cmd->add_option("--threads", o->threads, "worker threads, in [1, 1024] (default: one per core)")
+      ->check(CLI::Range(1U, 1024U));
   cmd->callback([o, &chosen] { chosen = [o] { return run_scene_file(*o); }; });
 }
 

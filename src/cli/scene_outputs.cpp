@@ -54,7 +54,36 @@ std::string markdown_rows(const Table& t, const std::vector<std::string>& column
     for (const auto& c : columns) cells.push_back(g(t.rows[i][t.column(c)]));
     out += "| " + join(cells, " | ") + " |\n";
   }
+  if (shown < n) {
+    out += fmt::format(
+        "\n{} of {} rows shown, spread evenly from the first to the last; every row is in the CSV.\n", shown,
+        n);
+  }
   return out;
+}
+
+// The largest |relative difference| of an approximation from the numerics, with the points it is taken over
+// (an approximation compared at no point, e.g. a naive-end law on a delayed-recovery-only sweep, says so).
+std::string difference_summary(const Table& t, const std::string& label) {
+  const std::size_t c = t.column("rel_diff_" + label);
+  const std::size_t z = t.column("zeta");
+  double worst = 0.0;
+  double lo = 0.0;
+  double hi = 0.0;
+  std::size_t compared = 0;
+  for (const auto& row : t.rows) {
+    if (!std::isfinite(row[c])) continue;
+    lo = compared == 0 ? row[z] : std::min(lo, row[z]);
+    hi = compared == 0 ? row[z] : std::max(hi, row[z]);
+    worst = std::max(worst, std::abs(row[c]));
+    ++compared;
+  }
+  if (compared == 0)
+    return "not compared (no point of this sweep has both this approximation and the numerics)";
+  return fmt::format(
+      "largest |relative difference| from the numerics: {:.3g}, over {} of {} points, {:.4g} <= zeta "
+      "<= {:.4g}",
+      worst, compared, t.rows.size(), lo, hi);
 }
 
 class SceneWriter {
@@ -166,14 +195,7 @@ class SceneWriter {
                       end_name(f.end), g(f.prefactor), g(f.exponent), g(f.exponent_uncertainty), f.points);
     }
     for (const auto& a : extras.approximations) {
-      const std::size_t c = t.column("rel_diff_" + a.label);
-      double worst = 0.0;
-      for (const auto& row : t.rows) {
-        if (std::isfinite(row[c])) worst = std::max(worst, std::abs(row[c]));
-      }
-      report_ +=
-          fmt::format("* `{}`: {}; largest |relative difference| from the numerics over this sweep: {:.3g}\n",
-                      a.label, a.source, worst);
+      report_ += fmt::format("* `{}`: {}; {}\n", a.label, a.source, difference_summary(t, a.label));
     }
     if (!extras.approximations.empty()) report_ += "\n";
     for (const auto& n : extras.notes) report_ += "*" + n + "*\n\n";
@@ -431,8 +453,16 @@ class SceneWriter {
 
 WrittenOutputs write_scene_outputs(const scene::Scene& scene, const scene::SceneResults& results,
                                    const fs::path& folder, double seconds) {
-  prepare_output_folder(folder);
-  return SceneWriter(scene, results, folder).write(seconds);
+  check_output_folder(folder);
+  // A write that fails half-way must not leave a folder that looks like a result (item 11 of issue 12).
+  const bool existed = fs::exists(folder);
+  try {
+    return SceneWriter(scene, results, folder).write(seconds);
+  } catch (...) {
+    std::error_code ignored;
+    if (!existed) fs::remove_all(folder, ignored);
+    throw;
+  }
 }
 
 }  // namespace restitution::cli

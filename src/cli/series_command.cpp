@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/series_reports.hpp"
+#include "restitution/errors.hpp"
 #include "restitution/series.hpp"
 #include "series_study/series_named.hpp"
 
@@ -68,6 +69,17 @@ struct EvalOptions {
 };
 
 int run_eval(const EvalOptions& o) {
+  if (o.kind == "naive" || o.kind == "delayed-recovery") {
+    const double radius =
+        o.kind == "naive" ? series::kNaiveSeriesRadius : series::kDelayedRecoverySeriesRadius;
+    if (o.zeta >= radius) {
+      throw InvalidInput(
+          fmt::format("zeta = {} is outside the radius of convergence of the {} series (zeta < {:g}, "
+                      "docs/series.md): its partial sums diverge there; use an approximant "
+                      "(--kind pade-2011-3-6) or `restitution eps`",
+                      o.zeta, o.kind, radius));
+    }
+  }
   const auto [values, terms] =
       series::evaluate_by_kind(o.kind, std::span(&o.zeta, 1), o.terms, o.coefficients == "published", "--");
   const series::Value& v = values.front();
@@ -103,7 +115,10 @@ void add_eval(CLI::App& parent, Action& chosen) {
                   "naive, delayed-recovery, pade-1999, simple-theory-1999, pade-2011-1-4, pade-2011-3-6")
       ->required()
       ->check(CLI::IsMember(series::evaluation_kinds()));
-  cmd->add_option("--zeta", o->zeta, "zeta = beta v^{1/5} >= 0")->required();
+  cmd->add_option("--zeta", o->zeta,
+                  "zeta = beta v^{1/5} >= 0; the series only below their radius of convergence (naive 1.39, "
+                  "delayed-recovery 1.10)")
+      ->required();
   cmd->add_option("--terms", o->terms, "series terms: c_1..c_N or h_0..h_N (default: 40 naive, 60 delayed)");
   cmd->add_option("--coefficients", o->coefficients, "computed (default) or published (2008 Tables III, V)")
       ->check(CLI::IsMember({"computed", "published"}));

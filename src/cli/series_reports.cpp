@@ -117,7 +117,7 @@ void print_validation_summary(const series::ValidationReport& r) {
 
 int run_series_validation(const std::string& folder_name) {
   const std::filesystem::path folder(folder_name);
-  prepare_output_folder(folder);
+  check_output_folder(folder);
   const series::ValidationReport report = series::validate(series::ValidationOptions{});
   const auto csv = folder / "series_validation.csv";
   const auto json = folder / "series_validation.json";
@@ -134,6 +134,7 @@ int run_series_validation(const std::string& folder_name) {
 }
 
 int run_series_certify(int order, const std::string& file) {
+  if (!file.empty()) check_output_file(file);  // before the work, not after
   const series::CertifiedCoefficients k = series::certify_coefficients(order);
   std::string csv = "series,k,value,certified_digits\n";
   auto rows = [&csv](const char* name, const std::vector<series::CertifiedValue>& values) {
@@ -154,7 +155,6 @@ int run_series_certify(int order, const std::string& file) {
     return 0;
   }
   const std::filesystem::path path(file);
-  if (path.has_parent_path()) prepare_output_folder(path.parent_path());
   write_file_atomically(path, csv);
   const std::filesystem::path published_path =
       path.parent_path() / (path.stem().string() + "_published_check" + path.extension().string());

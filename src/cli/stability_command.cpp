@@ -110,7 +110,7 @@ void print_table(const StabilityReport& report) {
 int run_stability(const StabilityCliOptions& o) {
   StabilityOptions options;
   options.tolerance = o.tolerance;
-  if (!o.out.empty()) prepare_output_folder(o.out);
+  if (!o.out.empty()) check_output_folder(o.out);
   const StabilityReport report = stability_report(stability_grid(o.points_per_decade), options);
   if (!o.out.empty()) {
     const std::filesystem::path folder(o.out);

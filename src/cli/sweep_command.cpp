@@ -4,8 +4,10 @@
 #include <fmt/core.h>
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -13,6 +15,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/io_error.hpp"
 #include "cli/options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/sweep_table.hpp"
@@ -82,6 +85,8 @@ class PartialFile {
  public:
   PartialFile(const fs::path& path, std::size_t keep_bytes, const std::string& preamble) : path_(path) {
     if (keep_bytes > 0) fs::resize_file(path, keep_bytes);  // drop a half-written last line
+    std::error_code error;
+    if (path.has_parent_path()) fs::create_directories(path.parent_path(), error);
     file_ = std::fopen(path.c_str(), keep_bytes > 0 ? "ab" : "wb");
     if (file_ == nullptr) throw IoError(fmt::format("--out: cannot write '{}'", path.string()));
     if (keep_bytes == 0) write(preamble);
@@ -94,7 +99,7 @@ class PartialFile {
 
   void write(const std::string& lines) {
     if (std::fputs(lines.c_str(), file_) < 0 || std::fflush(file_) != 0) {
-      throw IoError(fmt::format("--out: cannot write '{}' (disk full?)", path_.string()));
+      throw IoError(fmt::format("--out: cannot write '{}': {}", path_.string(), std::strerror(errno)));
     }
   }
 
@@ -113,17 +118,33 @@ int run_sweep_command(const SweepOptions& o) {
   const std::vector<double> zetas =
       zeta_values({o.zeta_min, o.zeta_max, static_cast<std::size_t>(o.points), o.log});
   const SolveOptions solve = solve_options(o.solver);
-  check_solve_options(solve);
-  const fs::path out(o.out);
-  if (out.filename().empty() || fs::is_directory(out)) {
+  check_sweep(zetas, solve);  // every point, before the first file is touched
+  if (fs::path(o.out).filename().empty() || fs::is_directory(o.out)) {
     throw InvalidInput(fmt::format("--out '{}' must name a file, not a folder", o.out));
   }
-  prepare_output_folder(out.has_parent_path() ? out.parent_path() : fs::path("."));
-  const fs::path partial_path = o.out + ".partial";
+  // A symlink is followed: FILE.partial is kept beside the file it points to, which is replaced at the end.
+  const OutputTarget target = output_target(o.out);
+  if (target.in_place) {
+    throw InvalidInput(
+        fmt::format("--out '{}' is not a regular file (a device, FIFO or /dev/stdout): a sweep "
+                    "keeps FILE.partial beside its file for --resume; give a file name",
+                    o.out));
+  }
+  const fs::path& out = target.path;
+  check_output_folder(out.has_parent_path() ? out.parent_path() : fs::path("."));
+  const fs::path partial_path = out.string() + ".partial";
   const std::string settings = settings_line(o);
   const std::string header = sweep_header(solve.ends);
 
   PartialSweep done;
+  if (o.resume && !fs::exists(partial_path) && fs::exists(out)) {
+    // The sweep finished (FILE.partial is removed only then): recomputing it all would not be a resume.
+    fmt::print(stderr,
+               "restitution: nothing to resume: '{}' is complete (no '{}'); delete it to compute the sweep "
+               "again\n",
+               o.out, partial_path.string());
+    return 0;
+  }
   if (fs::exists(partial_path)) {
     if (!o.resume) {
       throw InvalidInput(

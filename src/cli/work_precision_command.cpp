@@ -24,12 +24,12 @@ struct WorkPrecisionOptions {
 
 int run_work_precision(const WorkPrecisionOptions& o) {
   if (o.repeats < 1) throw InvalidInput(fmt::format("--repeats must be >= 1, got {}", o.repeats));
+  const std::filesystem::path folder(o.out);
+  check_output_folder(folder);  // before the measurements, not after
   const std::filesystem::path reference =
       o.reference.empty() ? default_reference_file() : std::filesystem::path(o.reference);
   const std::vector<WorkPrecisionRow> rows =
       measure_work_precision(read_reference_file(reference), o.repeats, o.engines);
-  const std::filesystem::path folder(o.out);
-  prepare_output_folder(folder);
   const WorkPrecisionFiles written = write_work_precision_files(rows, folder, "work_precision");
   if (!written.plot_warning.empty())
     std::fprintf(stderr, "restitution: warning: %s\n", written.plot_warning.c_str());

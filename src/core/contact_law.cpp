@@ -18,6 +18,14 @@ void require_finite_nonnegative(double value, const char* name) {
 
 }  // namespace
 
+void require_checked_zeta(double zeta) {
+  require_finite_nonnegative(zeta, "zeta");
+  if (zeta > kLargestCheckedZeta) {
+    throw InvalidInput(
+        fmt::format("zeta = {} is outside the checked range 0 <= zeta <= {:g}", zeta, kLargestCheckedZeta));
+  }
+}
+
 const char* law_name(LawKind kind) {
   return kind == LawKind::viscoelastic_hertz ? "viscoelastic-hertz" : "linear-dashpot";
 }

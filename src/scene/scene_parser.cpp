@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -20,7 +21,7 @@ namespace {
 
 using detail::TomlReader;
 
-constexpr double kLargestZeta = 1e4;  // the solver's validated range
+constexpr std::size_t kMaxNameLength = 100;  // well below the 255 bytes a file name may have
 
 bool is_name(const std::string& s) {
   return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
@@ -157,7 +158,21 @@ class Parser {
   std::string read_name(TomlReader& r, const char* kind) {
     std::string name = r.text("name").value_or(fmt::format("{}{}", kind, ++unnamed_));
     if (!is_name(name)) r.fail("name", "use letters, digits, '-' and '_' only (it names output files)");
+    if (name.size() > kMaxNameLength) {
+      r.fail("name", fmt::format("at most {} characters (it names output files), got {}", kMaxNameLength,
+                                 name.size()));
+    }
     if (!names_.insert(name).second) r.fail("name", fmt::format("\"{}\" is used twice", name));
+    // Two tasks must not write the same file: a work-precision study also writes NAME_summary.csv.
+    std::vector<std::string> stems = {name};
+    if (std::string_view(kind) == "work_precision") stems.push_back(name + "_summary");
+    for (const std::string& stem : stems) {
+      const auto [at, inserted] = stems_.emplace(stem, fmt::format("{} \"{}\"", kind, name));
+      if (!inserted) {
+        r.fail("name", fmt::format("{} \"{}\" would write {}.csv, which {} writes too", kind, name, stem,
+                                   at->second));
+      }
+    }
     return name;
   }
 
@@ -180,7 +195,8 @@ class Parser {
 
   static void check_zeta(TomlReader& r, const std::vector<double>& zeta) {
     r.check_each(
-        "zeta", zeta, [](double z) { return z >= 0.0 && z <= kLargestZeta; }, "0 <= zeta <= 1e4");
+        "zeta", zeta, [](double z) { return z >= 0.0 && z <= kLargestCheckedZeta; },
+        fmt::format("0 <= zeta <= {:g} (the checked range)", kLargestCheckedZeta));
   }
   static void check_positive(TomlReader& r, const char* key, const std::vector<double>& values) {
     r.check_each(
@@ -386,6 +402,7 @@ class Parser {
   TomlReader root_;
   Scene scene_;
   std::set<std::string> names_;
+  std::map<std::string, std::string> stems_;  // output file stem -> the task that writes it
   int unnamed_ = 0;
 };
 

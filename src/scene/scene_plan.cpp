@@ -12,8 +12,6 @@
 namespace restitution::scene {
 namespace {
 
-constexpr double kLargestZeta = 1e4;
-
 class JobTable {
  public:
   explicit JobTable(std::vector<SolveJob>& jobs) : jobs_(jobs) {}
@@ -42,11 +40,11 @@ PlannedPoint physical_point(double velocity_m_s, double beta, std::optional<doub
   p.beta = beta;
   p.k = k;
   p.parameter = zeta_from(beta, velocity_m_s);
-  if (p.parameter > kLargestZeta) {
+  if (p.parameter > kLargestCheckedZeta) {
     throw InvalidInput(
-        fmt::format("{}: velocity {} m/s with beta {} gives zeta = {:g} > 1e4, outside the "
-                    "solver's range",
-                    task, velocity_m_s, beta, p.parameter));
+        fmt::format("{}: velocity {} m/s with beta {} gives zeta = {:g}, outside the checked "
+                    "range 0 <= zeta <= {:g}",
+                    task, velocity_m_s, beta, p.parameter, kLargestCheckedZeta));
   }
   return p;
 }

@@ -114,7 +114,9 @@ std::optional<std::vector<double>> TomlReader::numbers(std::string_view key) {
     if (n == 1 && *to != *from) r.fail("points", "one point needs from = to");
     for (long i = 0; i < n; ++i) {
       const double s = n == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(n - 1);
+      // The ends are the numbers the user wrote (exp(log(0.01)) is 0.010000000000000004).
       values.push_back(i == n - 1 ? *to
+                       : i == 0   ? *from
                        : log      ? std::exp(std::log(*from) + s * (std::log(*to) - std::log(*from)))
                                   : *from + s * (*to - *from));
     }

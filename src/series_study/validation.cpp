@@ -72,6 +72,7 @@ std::vector<double> log_grid(const ValidationOptions& o) {
   const int intervals = std::max(1, static_cast<int>(std::ceil(decades * o.points_per_decade - 1e-9)));
   std::vector<double> grid;
   for (int i = 0; i <= intervals; ++i) grid.push_back(o.zeta_min * std::pow(10.0, decades * i / intervals));
+  grid.back() = o.zeta_max;  // the number asked for, not its rounded exp(log(...))
   return grid;
 }
 

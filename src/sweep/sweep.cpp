@@ -61,10 +61,17 @@ class SweepRun {
 
 }  // namespace
 
+void check_sweep(const std::vector<double>& zetas, const SolveOptions& options) {
+  check_solve_options(options);
+  for (const double zeta : zetas) {
+    require_checked_zeta(zeta);
+    check_solvable(ContactLaw::hertz_natural(zeta), options);
+  }
+}
+
 SweepSummary run_sweep(const std::vector<double>& zetas, const SolveOptions& options,
                        const SweepControl& control) {
-  check_solve_options(options);
-  for (const double zeta : zetas) ContactLaw::hertz_natural(zeta);  // throws InvalidInput naming zeta
+  check_sweep(zetas, options);
   if (!control.already_done.empty() && control.already_done.size() != zetas.size()) {
     throw InvalidInput("already_done must be empty or hold one flag per point of the sweep");
   }

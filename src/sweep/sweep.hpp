@@ -54,6 +54,10 @@ struct SweepSummary {
   bool stopped = false;      // stop_requested ended the sweep before every point was finished
 };
 
+// Throws InvalidInput naming the first ζ that is outside the checked range or that the options cannot be
+// solved at (e.g. the Taylor engine's naive end beyond ζ = 100): run it before writing anything.
+void check_sweep(const std::vector<double>& zetas, const SolveOptions& options);
+
 // Solves the Hertz law at every ζ with the same options. Throws InvalidInput for bad options before any
 // point is computed; a NumericalFailure at one point marks that point failed and the sweep goes on.
 SweepSummary run_sweep(const std::vector<double>& zetas, const SolveOptions& options,

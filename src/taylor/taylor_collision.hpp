@@ -270,8 +270,8 @@ class TaylorCollision {
         return ValueSlope<Real>{zeta_ * y.value + uq * uq, zeta_ * y.slope + 2 * uq};
       };
       if (settings_.delayed_recovery && !out_.delayed_recovery && zeta_ > 0 && force(step).value <= 0) {
-        const Real th = polynomial_root(force, Real(0), step);
-        const Real ue = u + th;
+        const Real ue = delayed_root_u(c, p, u, step, polynomial_root(force, Real(0), step));
+        const Real th = ue - u;
         out_.delayed_recovery = TaylorPoint<Real>{evaluate(c[0], p, th).value, ue * ue,
                                                   evaluate(c[1], p, th).value, evaluate(c[2], p, th).value};
         if (!pending()) return;
@@ -287,6 +287,24 @@ class TaylorCollision {
       if (zeta_ != 0) fail("no delayed-recovery end before the overlap vanished", s[0]);
       out_.delayed_recovery = end;
     }
+  }
+
+  // u at the delayed-recovery end, where u² = -ζ y. polynomial_root locates the step fraction θ to a rounding
+  // error of the step, i.e. u = u0 + θ to an absolute ~1e-16; for small ζ the root lies at u ~ sqrt(ζ) and
+  // that error would swamp it (and U(x) = 0.4 u^5 with it). Newton on u itself, from the double estimate
+  // sqrt(-ζ y), keeps its relative accuracy: y varies slowly near the end, so one or two steps converge.
+  Real delayed_root_u(const Coefficients<Real>& c, int p, Real u0, Real step, Real theta) const {
+    const double guess = -static_cast<double>(zeta_ * evaluate(c[1], p, theta).value);
+    if (!(guess > 0)) return u0 + theta;
+    Real ue = Real(std::sqrt(guess));
+    for (int iteration = 0; iteration < 4; ++iteration) {
+      const ValueSlope<Real> y = evaluate(c[1], p, ue - u0);
+      const Real slope = zeta_ * y.slope + 2 * ue;
+      if (slope == 0) break;
+      ue -= (zeta_ * y.value + ue * ue) / slope;
+    }
+    const bool in_step = ue >= u0 + step && ue <= u0;  // step < 0: from u0 down to u0 + step
+    return in_step ? ue : u0 + theta;
   }
 
   TaylorSettings settings_;

@@ -47,8 +47,19 @@ taylor::TaylorSettings settings_for(const ContactLaw& law, const SolveOptions& o
     s.end_switch_u_max = 1.0 / (z * z);
     s.time_limit = 1000.0 * (1.0 + p) * (1.0 + std::log1p(p));
   } else {
-    const double velocity = p > 1.0 ? 1.0 / (4.0 * p * p) : 1.0;
-    s.time_floor = {1e-2 * (p > 1.0 ? 0.5 / p : 1.0), 1e-2 * velocity, 1e-2 / z};
+    double velocity = p > 1.0 ? 1.0 / (4.0 * p * p) : 1.0;
+    double x = p > 1.0 ? 0.5 / p : 1.0;
+    if (options.ends.naive && p < 1.0) {
+      // The naive end is approached with x ~ ε (τ_c - τ), ε = exp(-πr/ω) (3e-31 at r = 0.999), and the two
+      // modes cancel there to 1/ω: resolve x and x' on ε's scale and tighten the step error by ω/10 (as the
+      // CVODE tolerance policy does).
+      const double omega = std::sqrt(1.0 - p * p);
+      const double eps = std::exp(-M_PI * p / omega);
+      velocity = std::min(velocity, eps);
+      x = std::min(x, eps);
+      s.tolerance = std::max(s.tolerance * std::min(1.0, 0.1 * omega), kSmallestLocalTolerance);
+    }
+    s.time_floor = {1e-2 * x, 1e-2 * velocity, 1e-2 / z};
     s.time_limit = 1000.0 * (1.0 + p);
   }
   return s;
@@ -72,7 +83,7 @@ EndResult end_result(const ContactLaw& law, const taylor::TaylorPoint<double>& p
 
 }  // namespace
 
-CollisionResult solve_with_taylor(const ContactLaw& law, const SolveOptions& options) {
+void check_taylor_request(const ContactLaw& law, const SolveOptions& options) {
   check_solve_request(law, options);
   if (options.keep_trajectory) {
     throw InvalidInput("method taylor does not record trajectories: use --method bdf or adams");
@@ -85,6 +96,11 @@ CollisionResult solve_with_taylor(const ContactLaw& law, const SolveOptions& opt
                     "zeta={}: use --method bdf",
                     kTaylorNaiveZetaMax, law.parameter));
   }
+}
+
+CollisionResult solve_with_taylor(const ContactLaw& law, const SolveOptions& options) {
+  check_taylor_request(law, options);
+  const bool hertz = law.kind == LawKind::viscoelastic_hertz;
   taylor::TaylorCollision<double> run(settings_for(law, options), law.parameter);
   taylor::TaylorOutcome<double> out;
   try {

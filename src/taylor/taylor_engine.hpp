@@ -19,5 +19,7 @@ inline constexpr double kTaylorNaiveZetaMax = 100.0;
 // Throws InvalidInput for options outside the engine's range (tolerance, trajectory, the naive end beyond
 // kTaylorNaiveZetaMax) and NumericalFailure if the integration fails.
 CollisionResult solve_with_taylor(const ContactLaw& law, const SolveOptions& options);
+// The InvalidInput checks of solve_with_taylor alone, without integrating.
+void check_taylor_request(const ContactLaw& law, const SolveOptions& options);
 
 }  // namespace restitution

@@ -12,15 +12,14 @@
 namespace restitution {
 namespace {
 
-constexpr double kLargestZeta = 1e4;  // the solver's validated range (README, Accuracy)
-
-// log ε at the requested end, from 1 - ε so that it keeps its relative accuracy as ε -> 1.
+// log ε at the requested end from whichever of ε and 1 - ε carries the relative accuracy: 1 - ε as ε -> 1
+// (log1p), ε itself when it is small (1 - ε rounds to 1 below ε ~ 1e-16 and loses digits well before).
 double log_eps(double zeta, CollisionEnd end, SolveOptions options, CollisionSolver& solver) {
   options.ends = selection_of(end);
   options.keep_trajectory = false;
   const CollisionResult r = solver.solve(ContactLaw::hertz_natural(zeta), options);
   const EndResult& e = end_of(r, end);
-  return std::log1p(-e.one_minus_eps);
+  return e.eps < 0.5 ? std::log(e.eps) : std::log1p(-e.one_minus_eps);
 }
 
 void check_measured_eps(double eps) {
@@ -47,15 +46,15 @@ double zeta_for_eps(double eps, CollisionEnd end, const SolveOptions& options, C
   double f_lo = f(lo);
   double f_hi = f(hi);
   while (f_hi > 0.0) {
-    if (hi >= kLargestZeta) {
+    if (hi >= kLargestCheckedZeta) {
       throw InvalidInput(
           fmt::format("eps = {} is below eps(zeta = {:g}) = {:.6g} at the {} end: outside the "
-                      "solver's range",
-                      eps, kLargestZeta, std::exp(f_hi + target), end_name(end)));
+                      "checked range",
+                      eps, kLargestCheckedZeta, std::exp(f_hi + target), end_name(end)));
     }
     lo = hi;
     f_lo = f_hi;
-    hi = std::min(4.0 * hi, kLargestZeta);
+    hi = std::min(4.0 * hi, kLargestCheckedZeta);
     f_hi = f(hi);
   }
   if (f_hi == 0.0) return hi;
