@@ -11,7 +11,7 @@ zeta = beta v^(1/5)) to a certified accuracy |eps - eps_exact| <= tolerance * mi
 Errors: ValueError for bad input (the message names the argument, the value and, for arrays, the index);
 TypeError for arguments of the wrong type or combination; restitution.NumericalFailure (an ArithmeticError)
 when the solver cannot deliver the accuracy. Array calls run on all cores without the GIL and stop with
-KeyboardInterrupt on Ctrl-C.
+KeyboardInterrupt on Ctrl-C. restitution.fast gives the same eps from the certified table, ~20 ns a value.
 """
 
 import numbers
@@ -19,12 +19,12 @@ import numbers
 import numpy as _np
 
 from . import _restitution as _core
-from . import series
+from . import fast, series
 from ._restitution import CollisionResult, EndResult, Calibration, Material, MaxCompression
 from ._restitution import NumericalFailure, SolverStats
 
 __all__ = ["eps", "solve", "calibrate", "zeta_of", "Material", "NumericalFailure", "CollisionResult",
-           "EndResult", "MaxCompression", "SolverStats", "Calibration", "series"]
+           "EndResult", "MaxCompression", "SolverStats", "Calibration", "series", "fast"]
 
 _SCALARS = (float, int)
 

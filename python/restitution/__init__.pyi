@@ -5,6 +5,7 @@ from typing import Literal, Optional, Sequence, Tuple, Union, overload
 import numpy as np
 import numpy.typing as npt
 
+from . import fast as fast
 from . import series as series
 
 End = Literal["naive", "delayed-recovery"]

@@ -10,5 +10,6 @@ void bind_collision(pybind11::module_& m);    // collision.cpp: eps, solve and t
 void bind_material(pybind11::module_& m);     // material.cpp
 void bind_calibration(pybind11::module_& m);  // calibration.cpp
 void bind_series(pybind11::module_& m);       // series.cpp
+void bind_fast(pybind11::module_& m);         // fast.cpp: the certified fast table
 
 }  // namespace restitution::python

@@ -1,4 +1,4 @@
-// The extension module _restitution: the library's solver, units, calibration and series for the
+// The extension module _restitution: the library's solver, units, calibration, series and fast table for the
 // pure-Python package `restitution` (python/restitution/__init__.py).
 #include "bindings.hpp"
 
@@ -10,4 +10,6 @@ PYBIND11_MODULE(_restitution, m) {
   restitution::python::bind_calibration(m);
   auto series = m.def_submodule("series", "Analytic series and approximations of eps(zeta).");
   restitution::python::bind_series(series);
+  auto fast = m.def_submodule("fast", "The certified fast table of eps(zeta) and its inverse.");
+  restitution::python::bind_fast(fast);
 }

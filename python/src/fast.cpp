@@ -1,0 +1,70 @@
+// restitution.fast: the library's certified fast table (restitution/fast.hpp) for one value or an array.
+#include "restitution/fast.hpp"
+
+#include <fmt/core.h>
+#include <pybind11/numpy.h>
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "array_index.hpp"
+#include "bindings.hpp"
+#include "restitution/errors.hpp"
+
+namespace py = pybind11;
+
+namespace restitution::python {
+namespace {
+
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using FastFunction = double (*)(double, CollisionEnd);
+
+// Applies f to every element with the GIL released (a table lookup each: no thread pool). The first
+// InvalidInput stops the loop and comes back, with the GIL held, naming the element's index.
+DoubleArray apply(FastFunction f, const DoubleArray& in, const std::string& end, const char* name) {
+  const CollisionEnd which = end_from_name(end);
+  if (in.size() == 0) throw InvalidInput(fmt::format("{} is an empty array: give at least one value", name));
+  DoubleArray out(std::vector<py::ssize_t>(in.shape(), in.shape() + in.ndim()));
+  const double* x = in.data();
+  double* y = out.mutable_data();
+  const auto size = static_cast<std::size_t>(in.size());
+  std::optional<std::size_t> bad;
+  std::string message;
+  {
+    const py::gil_scoped_release release;
+    for (std::size_t i = 0; i < size; ++i) {
+      try {
+        y[i] = f(x[i], which);
+      } catch (const InvalidInput& e) {
+        bad = i;
+        message = e.what();
+        break;
+      }
+    }
+  }
+  if (bad) throw InvalidInput(fmt::format("{} ({} at {})", message, name, index_text(*bad, in)));
+  return out;
+}
+
+void def_pair(py::module_& m, const char* name, FastFunction f, const char* argument, const char* doc) {
+  m.def(
+      name, [f](double x, const std::string& end) { return f(x, end_from_name(end)); }, py::arg(argument),
+      py::arg("end"), doc);
+  m.def((std::string(name) + "_array").c_str(),
+        [f, argument](const DoubleArray& x, const std::string& end) { return apply(f, x, end, argument); },
+        py::arg(argument), py::arg("end"), doc);
+}
+
+}  // namespace
+
+void bind_fast(py::module_& m) {
+  def_pair(m, "eps", &fast::eps, "zeta", "eps(zeta) from the certified fast table; zeta >= 0 natural units.");
+  def_pair(m, "one_minus_eps", &fast::one_minus_eps, "zeta",
+           "1 - eps(zeta) to its own relative accuracy; zeta >= 0 natural units.");
+  def_pair(m, "zeta_from_eps", &fast::zeta_from_eps, "eps",
+           "zeta (natural units) with eps(zeta) = eps in (0, 1].");
+}
+
+}  // namespace restitution::python
