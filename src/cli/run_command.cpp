@@ -11,6 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/output_files.hpp"
+#include "cli/progress.hpp"
 #include "cli/scene_outputs.hpp"
 #include "cli/work_precision_files.hpp"
 #include "restitution/errors.hpp"
@@ -52,13 +53,8 @@ int run_scene_file(const RunOptions& o) {
   scene::RunSettings settings;
   settings.threads = o.threads;
   settings.reference_file = default_reference_file();
-  const bool terminal = isatty(fileno(stderr)) != 0;
-  if (terminal) {
-    settings.progress = [](std::size_t done, std::size_t total) {
-      if (done == total || done % 16 == 0) std::fprintf(stderr, "\r  %zu/%zu collisions", done, total);
-      if (done == total) std::fputc('\n', stderr);
-    };
-  }
+  ProgressLine progress("collisions");
+  settings.progress = progress.callback();
   const auto start = std::chrono::steady_clock::now();
   const scene::SceneResults results = scene::run_scene(s, std::move(plan), settings);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
