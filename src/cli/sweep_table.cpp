@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli/output_files.hpp"
+#include "cli/physical_columns.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -37,6 +38,28 @@ std::string quoted_field(const std::string& text) {
   return out + "\"";
 }
 
+// The requested ends, in column order.
+std::vector<const EndColumn*> requested(const EndSelection& ends) {
+  std::vector<const EndColumn*> out;
+  for (const EndColumn& end : kEnds) {
+    if (ends.*end.requested) out.push_back(&end);
+  }
+  return out;
+}
+
+CollisionEnd end_of_column(const EndColumn& column) {
+  return column.member == &CollisionResult::naive ? CollisionEnd::naive : CollisionEnd::delayed_recovery;
+}
+
+// Columns after the maximal compression's for a material: its SI durations and maximal compression.
+std::vector<std::string> si_columns(const EndSelection& ends, const VelocityAxis* velocity) {
+  std::vector<std::string> columns;
+  if (velocity == nullptr || !velocity->k) return columns;
+  for (const EndColumn* end : requested(ends)) columns.push_back(duration_column(end_of_column(*end)));
+  for (const std::string& c : si_max_compression_columns()) columns.push_back(c);
+  return columns;
+}
+
 [[noreturn]] void damaged(const std::filesystem::path& path, std::size_t line, const std::string& why) {
   throw InvalidInput(
       fmt::format("--resume: {}:{}: {}; delete it to start the sweep afresh", path.string(), line, why));
@@ -44,37 +67,53 @@ std::string quoted_field(const std::string& text) {
 
 }  // namespace
 
-std::string sweep_header(const EndSelection& ends) {
+std::string sweep_header(const EndSelection& ends, const VelocityAxis* velocity) {
   std::string header = "zeta";
-  for (const EndColumn& end : kEnds) {
-    if (!(ends.*end.requested)) continue;
-    for (const char* column : {"eps", "one_minus_eps", "tau", "x"})
-      header += fmt::format(",{}_{}", end.prefix, column);
+  if (velocity != nullptr) {
+    for (const std::string& c : velocity_columns()) header += "," + c;
   }
-  return header + ",max_compression_tau,max_compression_x,steps,status,error";
+  for (const EndColumn* end : requested(ends)) {
+    for (const char* column : {"eps", "one_minus_eps", "tau", "x"})
+      header += fmt::format(",{}_{}", end->prefix, column);
+  }
+  header += ",max_compression_tau,max_compression_x";
+  for (const std::string& c : si_columns(ends, velocity)) header += "," + c;
+  return header + ",steps,status,error";
 }
 
-std::string sweep_row(const SweepPoint& point, const EndSelection& ends) {
+std::string sweep_row(const SweepPoint& point, const EndSelection& ends, const VelocityAxis* velocity) {
   std::string row = number17(point.zeta);
+  double v = 0.0;
+  if (velocity != nullptr) {
+    v = velocity->velocity_m_s.at(point.index);
+    row += fmt::format(",{},{}", number17(v), number17(velocity->beta));
+  }
+  const auto ends_wanted = requested(ends);
   if (!point.result) {
-    int empty = kTrailingNumbers;
-    for (const EndColumn& end : kEnds) empty += (ends.*end.requested) ? kNumbersPerEnd : 0;
-    for (int i = 0; i < empty; ++i) row += ',';
+    const std::size_t empty =
+        kTrailingNumbers + kNumbersPerEnd * ends_wanted.size() + si_columns(ends, velocity).size();
+    row += std::string(empty, ',');
     row += ",failed,";
     row += quoted_field(point.error);
     return row;
   }
   const CollisionResult& r = *point.result;
-  for (const EndColumn& end : kEnds) {
-    if (!(ends.*end.requested)) continue;
-    const EndResult& e = *(r.*end.member);
-    for (const double value : {e.eps, e.one_minus_eps, e.tau, e.x}) {
-      row += ',';
-      row += number17(value);
-    }
+  const auto add = [&row](double value) {
+    row += ',';
+    row += number17(value);
+  };
+  for (const EndColumn* end : ends_wanted) {
+    const EndResult& e = *(r.*end->member);
+    for (const double value : {e.eps, e.one_minus_eps, e.tau, e.x}) add(value);
   }
-  row += fmt::format(",{},{},{},ok,", number17(r.max_compression.tau), number17(r.max_compression.x),
-                     r.stats.steps);
+  add(r.max_compression.tau);
+  add(r.max_compression.x);
+  if (velocity != nullptr && velocity->k) {
+    const NaturalScales scales = natural_scales(*velocity->k, v);
+    for (const EndColumn* end : ends_wanted) add(duration_s(*(r.*end->member), scales));
+    for (const double value : si_max_compression(r.max_compression, scales)) add(value);
+  }
+  row += fmt::format(",{},ok,", r.stats.steps);
   return row;
 }
 
