@@ -4,10 +4,8 @@
 // finished; SIGINT/SIGTERM stop the sweep after the points in progress; --resume continues from FILE.partial.
 #include <fmt/core.h>
 
-#include <atomic>
 #include <cerrno>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -22,6 +20,7 @@
 #include "cli/options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/progress.hpp"
+#include "cli/stop_signals.hpp"
 #include "cli/sweep_grid.hpp"
 #include "cli/sweep_table.hpp"
 #include "restitution/errors.hpp"
@@ -32,38 +31,6 @@
 namespace restitution::cli {
 namespace {
 namespace fs = std::filesystem;
-
-// The signal that asked the sweep to stop (0: none). The only mutable global of the program: a signal
-// handler can do nothing but set a lock-free atomic.
-std::atomic<int> stop_signal{0};  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)
-static_assert(std::atomic<int>::is_always_lock_free);
-
-extern "C" void request_stop(int signal_number) {
-  stop_signal.store(signal_number);
-}
-
-// Routes SIGINT and SIGTERM to request_stop while a sweep runs; restores the previous handlers after.
-class StopSignals {
- public:
-  StopSignals() {
-    stop_signal.store(0);
-    struct sigaction action {};
-    action.sa_handler = request_stop;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &previous_int_);
-    sigaction(SIGTERM, &action, &previous_term_);
-  }
-  ~StopSignals() {
-    sigaction(SIGINT, &previous_int_, nullptr);
-    sigaction(SIGTERM, &previous_term_, nullptr);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
-
- private:
-  struct sigaction previous_int_ {};
-  struct sigaction previous_term_ {};
-};
 
 constexpr long long kMaxThreads = 1024;
 
@@ -165,7 +132,7 @@ int run_sweep_command(const SweepOptions& o) {
     rows[index] = row;
     control.already_done[index] = true;
   }
-  control.stop_requested = [] { return stop_signal.load() != 0; };
+  control.stop_requested = [] { return stop_signal_received() != 0; };
   control.point_finished = [&](const SweepPoint& point) {
     rows[point.index] = sweep_row(point, solve.ends, velocity);
     partial.write(fmt::format("{},{}\n", point.index, rows[point.index]));
@@ -180,7 +147,7 @@ int run_sweep_command(const SweepOptions& o) {
   }
   const std::size_t finished = summary.computed + summary.skipped;
   if (summary.stopped) {
-    const int signal_number = stop_signal.load();
+    const int signal_number = stop_signal_received();
     fmt::print(
         stderr,
         "restitution: interrupted by signal {}: {} of {} points finished and kept in '{}'; run the same "
