@@ -100,7 +100,7 @@ def test_series_errors():
         restitution.series.coefficients("naive", 61)
     with pytest.raises(ValueError, match="kind must be one of"):
         restitution.series.coefficients("wrong", 3)
-    with pytest.raises(ValueError, match="terms applies to kind naive and delayed-recovery only, not pade-1999"):
+    with pytest.raises(ValueError, match="terms applies to kind naive-series and delayed-recovery-series only, not pade-1999"):
         restitution.series.eval("pade-1999", 0.1, terms=3)
     with pytest.raises(ValueError, match="zeta at index 1"):
         restitution.series.eval("naive", [0.1, -0.1])

@@ -1,5 +1,6 @@
 // The scene file -> Scene values. Only this file (with toml_reader) knows TOML.
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,7 @@
 #include "scene/scene_approximations.hpp"
 #include "scene/toml_ascii.hpp"
 #include "scene/toml_reader.hpp"
+#include "series_study/series_named.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -45,13 +47,9 @@ EndSelection read_ends(TomlReader& r, EndSelection fallback = {}) {
 }
 
 series::Approximation approximation_from(const TomlReader& r, const std::string& name) {
-  std::string known;
-  for (const detail::ApproximationInfo& info : detail::kApproximations) {
-    if (name == info.name) return info.kind;
-    if (!known.empty()) known += ", ";
-    known += info.name;
-  }
-  r.fail("approximations", fmt::format("unknown approximation \"{}\" (known: {})", name, known));
+  if (const auto kind = series::approximation_named(name)) return *kind;
+  r.fail("approximations", fmt::format("unknown approximation \"{}\" (known: {})", name,
+                                       fmt::join(series::evaluation_kinds(), ", ")));
 }
 
 CollisionEnd read_end(TomlReader& r) {
