@@ -22,14 +22,7 @@ namespace fs = std::filesystem;
 using test_support::run_cli;
 using test_support::slurp;
 
-struct TempFolder {
-  fs::path path;
-  TempFolder() {
-    char name[] = "/tmp/restitution-vsweep-XXXXXX";
-    path = mkdtemp(name);
-  }
-  ~TempFolder() { fs::remove_all(path); }
-};
+using test_support::TempFolder;
 
 // A CSV file as a header and rows of fields.
 struct Csv {

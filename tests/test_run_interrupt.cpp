@@ -20,14 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 using test_support::slurp;
 
-struct TempFolder {
-  fs::path path;
-  TempFolder() {
-    char name[] = "/tmp/restitution-interrupt-XXXXXX";
-    path = mkdtemp(name);
-  }
-  ~TempFolder() { fs::remove_all(path); }
-};
+using test_support::TempFolder;
 
 struct Outcome {
   int raw = 0;  // wait status
