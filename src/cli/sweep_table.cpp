@@ -13,17 +13,8 @@
 namespace restitution::cli {
 namespace {
 
-struct EndColumn {
-  const char* prefix;
-  std::optional<EndResult> CollisionResult::*member;
-  bool EndSelection::*requested;
-};
-constexpr EndColumn kEnds[] = {
-    {"naive", &CollisionResult::naive, &EndSelection::naive},
-    {"delayed_recovery", &CollisionResult::delayed_recovery, &EndSelection::delayed_recovery},
-};
-constexpr int kNumbersPerEnd = 4;
-constexpr int kTrailingNumbers = 3;  // max_compression tau and x, steps
+constexpr std::size_t kNumbersPerEnd = 4;
+constexpr std::size_t kTrailingNumbers = 3;  // max_compression tau and x, steps
 
 // A CSV field: quoted, inner quotes doubled, line breaks flattened so that one row stays one line.
 std::string quoted_field(const std::string& text) {
@@ -38,24 +29,11 @@ std::string quoted_field(const std::string& text) {
   return out + "\"";
 }
 
-// The requested ends, in column order.
-std::vector<const EndColumn*> requested(const EndSelection& ends) {
-  std::vector<const EndColumn*> out;
-  for (const EndColumn& end : kEnds) {
-    if (ends.*end.requested) out.push_back(&end);
-  }
-  return out;
-}
-
-CollisionEnd end_of_column(const EndColumn& column) {
-  return column.member == &CollisionResult::naive ? CollisionEnd::naive : CollisionEnd::delayed_recovery;
-}
-
 // Columns after the maximal compression's for a material: its SI durations and maximal compression.
-std::vector<std::string> si_columns(const EndSelection& ends, const VelocityAxis* velocity) {
+std::vector<std::string> si_columns(EndSet ends, const VelocityAxis* velocity) {
   std::vector<std::string> columns;
   if (velocity == nullptr || !velocity->k) return columns;
-  for (const EndColumn* end : requested(ends)) columns.push_back(duration_column(end_of_column(*end)));
+  for (const CollisionEnd end : ends.members()) columns.push_back(duration_column(end));
   for (const std::string& c : si_max_compression_columns()) columns.push_back(c);
   return columns;
 }
@@ -67,31 +45,30 @@ std::vector<std::string> si_columns(const EndSelection& ends, const VelocityAxis
 
 }  // namespace
 
-std::string sweep_header(const EndSelection& ends, const VelocityAxis* velocity) {
+std::string sweep_header(EndSet ends, const VelocityAxis* velocity) {
   std::string header = "zeta";
   if (velocity != nullptr) {
     for (const std::string& c : velocity_columns()) header += "," + c;
   }
-  for (const EndColumn* end : requested(ends)) {
+  for (const CollisionEnd end : ends.members()) {
     for (const char* column : {"eps", "one_minus_eps", "tau", "x"})
-      header += fmt::format(",{}_{}", end->prefix, column);
+      header += fmt::format(",{}_{}", end_key(end), column);
   }
   header += ",max_compression_tau,max_compression_x";
   for (const std::string& c : si_columns(ends, velocity)) header += "," + c;
   return header + ",steps,status,error";
 }
 
-std::string sweep_row(const SweepPoint& point, const EndSelection& ends, const VelocityAxis* velocity) {
+std::string sweep_row(const SweepPoint& point, EndSet ends, const VelocityAxis* velocity) {
   std::string row = number17(point.zeta);
   double v = 0.0;
   if (velocity != nullptr) {
     v = velocity->velocity_m_s.at(point.index);
     row += fmt::format(",{},{}", number17(v), number17(velocity->beta));
   }
-  const auto ends_wanted = requested(ends);
   if (!point.result) {
     const std::size_t empty =
-        kTrailingNumbers + kNumbersPerEnd * ends_wanted.size() + si_columns(ends, velocity).size();
+        kTrailingNumbers + kNumbersPerEnd * ends.members().size() + si_columns(ends, velocity).size();
     row += std::string(empty, ',');
     row += ",failed,";
     row += quoted_field(point.error);
@@ -102,15 +79,15 @@ std::string sweep_row(const SweepPoint& point, const EndSelection& ends, const V
     row += ',';
     row += number17(value);
   };
-  for (const EndColumn* end : ends_wanted) {
-    const EndResult& e = *(r.*end->member);
+  for (const CollisionEnd end : ends.members()) {
+    const EndResult& e = *r[end];
     for (const double value : {e.eps, e.one_minus_eps, e.tau, e.x}) add(value);
   }
   add(r.max_compression.tau);
   add(r.max_compression.x);
   if (velocity != nullptr && velocity->k) {
     const NaturalScales scales = natural_scales(*velocity->k, v);
-    for (const EndColumn* end : ends_wanted) add(duration_s(*(r.*end->member), scales));
+    for (const CollisionEnd end : ends.members()) add(duration_s(*r[end], scales));
     for (const double value : si_max_compression(r.max_compression, scales)) add(value);
   }
   row += fmt::format(",{},ok,", r.stats.steps);

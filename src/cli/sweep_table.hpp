@@ -25,10 +25,9 @@ struct VelocityAxis {
 // The CSV columns for the requested ends: zeta, (for a velocity axis: velocity_m_s, beta), per end eps,
 // one_minus_eps, tau, x, then the maximal compression's tau and x, (for a material: duration_s per end,
 // time_of_max_compression_s, max_compression_m), steps, status ("ok" | "failed") and error.
-std::string sweep_header(const EndSelection& ends, const VelocityAxis* velocity = nullptr);
+std::string sweep_header(EndSet ends, const VelocityAxis* velocity = nullptr);
 // One CSV row (no newline); a failed point has empty numbers, status "failed" and the quoted message.
-std::string sweep_row(const SweepPoint& point, const EndSelection& ends,
-                      const VelocityAxis* velocity = nullptr);
+std::string sweep_row(const SweepPoint& point, EndSet ends, const VelocityAxis* velocity = nullptr);
 
 // The finished rows of an interrupted sweep, read back from its partial file.
 struct PartialSweep {
