@@ -25,7 +25,9 @@ VelocityAxis velocity_subject(const SweepOptions& o) {
         "give --zeta-min/--zeta-max, or --velocity-min/--velocity-max with --beta or a material, not both");
   }
   if (!o.velocity_min || !o.velocity_max) {
-    throw InvalidInput("an impact-speed sweep needs --velocity-min and --velocity-max (m/s)");
+    throw InvalidInput(
+        fmt::format("an impact-speed sweep needs --velocity-min and --velocity-max (m/s): --{} is required",
+                    o.velocity_min ? "velocity-max" : "velocity-min"));
   }
   const bool material = o.material.any() || o.dissipative_constant;
   if (o.beta.has_value() == material) {
@@ -63,9 +65,13 @@ SweepGrid sweep_grid(const SweepOptions& o) {
   const auto points = static_cast<std::size_t>(o.points);
   SweepGrid grid;
   if (!velocity_form(o)) {
-    if (!o.zeta_min || !o.zeta_max) {
+    if (!o.zeta_min && !o.zeta_max) {
       throw InvalidInput(
           "give --zeta-min and --zeta-max, or --velocity-min/--velocity-max with --beta or a material");
+    }
+    if (!o.zeta_min || !o.zeta_max) {
+      throw InvalidInput(fmt::format("--{} is required with --{}", o.zeta_min ? "zeta-max" : "zeta-min",
+                                     o.zeta_min ? "zeta-min" : "zeta-max"));
     }
     grid.zetas = zeta_values({*o.zeta_min, *o.zeta_max, points, o.log});
     return grid;
