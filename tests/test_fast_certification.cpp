@@ -59,7 +59,7 @@ TEST(FastCertification, AgreesWithTheTaylorEngineOnRandomZeta) {
   Worst worst_naive, worst_delayed, worst_duration;
   long naive_points = 0, delayed_points = 0;
   for (const double zeta : certification_points()) {
-    options.ends.naive = zeta <= kTaylorNaiveZetaMax;
+    options.ends = zeta <= kTaylorNaiveZetaMax ? EndSet::both() : EndSet{CollisionEnd::delayed_recovery};
     const CollisionResult r = solve_with_taylor(ContactLaw::hertz_natural(zeta), options);
     const auto check = [&](const EndResult& end, CollisionEnd which, Worst& worst) {
       const double e = std::max(relative(fast::eps(zeta, which), end.eps),
@@ -67,18 +67,20 @@ TEST(FastCertification, AgreesWithTheTaylorEngineOnRandomZeta) {
       worst.update(e, zeta);
       ASSERT_LE(e, kAllowed) << end_name(which) << " at zeta " << zeta;
     };
-    check(*r.delayed_recovery, CollisionEnd::delayed_recovery, worst_delayed);
+    const auto& delayed = *r[CollisionEnd::delayed_recovery];
+    check(delayed, CollisionEnd::delayed_recovery, worst_delayed);
     const MaxCompression m = fast::max_compression(zeta);
     for (const double e :
-         {relative(fast::collision_duration(zeta, CollisionEnd::delayed_recovery), r.delayed_recovery->tau),
+         {relative(fast::collision_duration(zeta, CollisionEnd::delayed_recovery), delayed.tau),
           relative(m.x, r.max_compression.x), relative(m.tau, r.max_compression.tau)}) {
       worst_duration.update(e, zeta);
       ASSERT_LE(e, kDurationAllowed) << "tau_c, x_max or tau_max at zeta " << zeta;
     }
     ++delayed_points;
-    if (r.naive) {
-      check(*r.naive, CollisionEnd::naive, worst_naive);
-      const double e = relative(fast::collision_duration(zeta, CollisionEnd::naive), r.naive->tau);
+    if (r[CollisionEnd::naive]) {
+      check(*r[CollisionEnd::naive], CollisionEnd::naive, worst_naive);
+      const double e =
+          relative(fast::collision_duration(zeta, CollisionEnd::naive), r[CollisionEnd::naive]->tau);
       worst_duration.update(e, zeta);
       ASSERT_LE(e, kDurationAllowed) << "naive tau_c at zeta " << zeta;
       ++naive_points;
@@ -108,10 +110,10 @@ TEST(FastCertification, NaiveEndAgainstTheReferenceAbove100) {
   Worst worst_tau;
   for (const double zeta : log_uniform(100, 700, 4, 31)) {
     const ReferenceSolution r = hertz_reference(zeta, true);
-    const auto eps = static_cast<double>(r.naive->eps);
+    const auto eps = static_cast<double>(r.ends[CollisionEnd::naive]->eps);
     const double e = relative(fast::eps(zeta, CollisionEnd::naive), eps);
-    const double t =
-        relative(fast::collision_duration(zeta, CollisionEnd::naive), static_cast<double>(r.naive->tau));
+    const double t = relative(fast::collision_duration(zeta, CollisionEnd::naive),
+                              static_cast<double>(r.ends[CollisionEnd::naive]->tau));
     worst_eps.update(e, zeta);
     worst_tau.update(t, zeta);
     EXPECT_LE(e, kAllowed) << zeta;
@@ -135,12 +137,12 @@ TEST(FastCertification, DurationsAgainstTheReference) {
     const ReferenceSolution r = hertz_reference(zeta, naive);
     const MaxCompression m = fast::max_compression(zeta);
     std::vector<double> errors{relative(fast::collision_duration(zeta, CollisionEnd::delayed_recovery),
-                                        static_cast<double>(r.delayed_recovery->tau)),
+                                        static_cast<double>(r.ends[CollisionEnd::delayed_recovery]->tau)),
                                relative(m.x, static_cast<double>(r.x_max)),
                                relative(m.tau, static_cast<double>(r.tau_max))};
     if (naive)
-      errors.push_back(
-          relative(fast::collision_duration(zeta, CollisionEnd::naive), static_cast<double>(r.naive->tau)));
+      errors.push_back(relative(fast::collision_duration(zeta, CollisionEnd::naive),
+                                static_cast<double>(r.ends[CollisionEnd::naive]->tau)));
     for (const double e : errors) {
       worst.update(e, zeta);
       EXPECT_LE(e, kAllowed) << zeta;
@@ -155,16 +157,17 @@ TEST(FastCertification, DurationsAgainstTheReference) {
 TEST(FastCertification, NaiveEndAgainstCvodeTo1e5) {
   SolveOptions options;
   options.tolerance = kMinTolerance;
-  options.ends.delayed_recovery = false;
+  options.ends = EndSet{CollisionEnd::naive};
   CollisionSolver solver;
   Worst worst_eps;
   Worst worst_tau;
   for (const double zeta : log_uniform(100, 1e5, 40, 37)) {
     const CollisionResult r = solver.solve(ContactLaw::hertz_natural(zeta), options);
-    const double e = relative(fast::eps(zeta, CollisionEnd::naive), r.naive->eps);
+    const double e = relative(fast::eps(zeta, CollisionEnd::naive), r[CollisionEnd::naive]->eps);
     worst_eps.update(e, zeta);
     EXPECT_LE(e, kMinTolerance + kAllowed) << zeta;
-    const double t = relative(fast::collision_duration(zeta, CollisionEnd::naive), r.naive->tau);
+    const double t =
+        relative(fast::collision_duration(zeta, CollisionEnd::naive), r[CollisionEnd::naive]->tau);
     worst_tau.update(t, zeta);
     EXPECT_LE(t, 1e-9) << zeta;  // CVODE's τ_c is not bound by its tolerance in ε
   }

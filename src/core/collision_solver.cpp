@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -43,14 +44,14 @@ const char* end_name(CollisionEnd end) {
   return end == CollisionEnd::naive ? "naive" : "delayed-recovery";
 }
 
+const char* end_key(CollisionEnd end) {
+  return end == CollisionEnd::naive ? "naive" : "delayed_recovery";
+}
+
 CollisionEnd end_from_name(const std::string& name) {
   if (name == "naive") return CollisionEnd::naive;
   if (name == "delayed-recovery") return CollisionEnd::delayed_recovery;
   throw InvalidInput(fmt::format("end must be naive or delayed-recovery, got '{}'", name));
-}
-
-EndSelection selection_of(CollisionEnd end) {
-  return {end == CollisionEnd::naive, end == CollisionEnd::delayed_recovery};
 }
 
 const EndResult& end_of(const CollisionResult& result, CollisionEnd end) {
@@ -73,12 +74,12 @@ double min_tolerance(Method method) {
   return method == Method::taylor ? kMinTaylorTolerance : kMinTolerance;
 }
 
-Method resolve_method(const ContactLaw& law, Method requested, const EndSelection& ends) {
+Method resolve_method(const ContactLaw& law, Method requested, EndSet ends) {
   if (requested != Method::automatic) return requested;
   // Measured (docs/accuracy.md): Adams is cheaper while the damping is weak, BDF once it makes the
   // problem stiff. Only the naive tail is stiff: up to the delayed-recovery end Adams takes 2-4x fewer
   // steps than BDF at every ζ up to 1e4.
-  if (!ends.naive) return Method::adams;
+  if (!ends.contains(CollisionEnd::naive)) return Method::adams;
   return law.parameter < 5.0 ? Method::adams : Method::bdf;
 }
 
@@ -114,9 +115,9 @@ Point point_of(Form form, double t, const State& s) {
   return {s[detail::kFirst], t * t, s[detail::kVelocity], s[detail::kDissipation]};
 }
 
-const char* end_names(const EndSelection& ends) {
-  if (ends.naive && ends.delayed_recovery) return "both ends";
-  return ends.naive ? "the naive end" : "the delayed-recovery end";
+const char* end_names(EndSet ends) {
+  if (ends == EndSet::both()) return "both ends";
+  return ends.contains(CollisionEnd::naive) ? "the naive end" : "the delayed-recovery end";
 }
 
 // ε from the velocity at the end, 1-ε from the energy balance 1-ε^2 = 2(D + U(x_end))/v0^2, which keeps
@@ -178,8 +179,9 @@ class CollisionRun {
   };
 
   [[nodiscard]] bool pending() const {
-    return (options_.ends.naive && !result_.value.naive) ||
-           (options_.ends.delayed_recovery && !result_.value.delayed_recovery);
+    return std::any_of(kCollisionEnds.begin(), kCollisionEnds.end(), [this](CollisionEnd end) {
+      return options_.ends.contains(end) && !result_.value[end];
+    });
   }
 
   [[nodiscard]] NumericalFailure failure(const std::string& what) const {
@@ -235,7 +237,8 @@ class CollisionRun {
     int count = 0;
     if (is_start) {
       events[static_cast<std::size_t>(count++)] = Event::velocity_halved;
-    } else if (options_.ends.delayed_recovery && !result_.value.delayed_recovery) {
+    } else if (options_.ends.contains(CollisionEnd::delayed_recovery) &&
+               !result_.value[CollisionEnd::delayed_recovery]) {
       events[static_cast<std::size_t>(count++)] = Event::delayed_recovery_end;
     }
     begin(settings, u0, state, events.data(), count);
@@ -244,7 +247,7 @@ class CollisionRun {
       const Point p = point_of(Form::compression, step.t, step.state);
       if (step.reached_stop || step.events_found[0]) {
         if (!is_start && step.events_found[0]) {
-          result_.value.delayed_recovery = end_result(law_, p);
+          result_.value[CollisionEnd::delayed_recovery] = end_result(law_, p);
           if (!pending()) {
             finish_phase();
             return p;
@@ -263,16 +266,18 @@ class CollisionRun {
     if (!pending()) return;
     // Reached u = 0: the naive end, exactly.
     const Point naive{c.tau, 0.0, c.velocity, c.dissipation};
-    if (options_.ends.naive) result_.value.naive = end_result(law_, naive);
-    if (options_.ends.delayed_recovery && !result_.value.delayed_recovery) {
+    if (options_.ends.contains(CollisionEnd::naive))
+      result_.value[CollisionEnd::naive] = end_result(law_, naive);
+    if (options_.ends.contains(CollisionEnd::delayed_recovery) &&
+        !result_.value[CollisionEnd::delayed_recovery]) {
       // The force factor ζx' + x reaches zero at x ≈ ζ|x'| (natural units), which for ζ below about 1e-295
       // lies within rounding of u = 0 where CVODE cannot separate it from the naive end. The ends then
       // differ in 1 - ε by a relative O(ζ^{3/2}): take the naive end's ε at x = ζ|x'|.
       if (law_.damping > kIndistinguishableEndsZeta || law_.kind != LawKind::viscoelastic_hertz) {
         throw failure("no delayed-recovery end before the overlap vanished");
       }
-      result_.value.delayed_recovery = end_result(law_, naive);
-      result_.value.delayed_recovery->x = law_.damping * -naive.velocity;
+      result_.value[CollisionEnd::delayed_recovery] = end_result(law_, naive);
+      result_.value[CollisionEnd::delayed_recovery]->x = law_.damping * -naive.velocity;
     }
   }
 
@@ -288,11 +293,11 @@ class CollisionRun {
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
     events[static_cast<std::size_t>(count++)] = Event::max_compression;
-    if (options_.ends.delayed_recovery)
+    if (options_.ends.contains(CollisionEnd::delayed_recovery))
       events[static_cast<std::size_t>(count++)] = Event::delayed_recovery_end;
     if (switch_x > 0.0) {
       events[static_cast<std::size_t>(count++)] = Event::below_switch;
-    } else if (options_.ends.naive) {
+    } else if (options_.ends.contains(CollisionEnd::naive)) {
       events[static_cast<std::size_t>(count++)] = Event::naive_end;
     }
     begin(settings, tau0, state, events.data(), count);
@@ -311,11 +316,11 @@ class CollisionRun {
             integrator_.ignore_event(static_cast<int>(i));
             break;
           case Event::delayed_recovery_end:
-            result_.value.delayed_recovery = end_result(law_, p);
+            result_.value[CollisionEnd::delayed_recovery] = end_result(law_, p);
             integrator_.ignore_event(static_cast<int>(i));
             break;
           case Event::naive_end:
-            result_.value.naive = end_result(law_, p);
+            result_.value[CollisionEnd::naive] = end_result(law_, p);
             break;
           case Event::below_switch:
             finish_phase();

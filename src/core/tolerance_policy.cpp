@@ -25,7 +25,7 @@ void check_solve_options(const SolveOptions& options) {
   if (options.max_steps_per_phase < 1) {
     throw InvalidInput(fmt::format("max_steps_per_phase must be >= 1, got {}", options.max_steps_per_phase));
   }
-  if (!options.ends.naive && !options.ends.delayed_recovery) {
+  if (!options.ends.contains(CollisionEnd::naive) && !options.ends.contains(CollisionEnd::delayed_recovery)) {
     throw InvalidInput("no end of the collision requested: ask for naive, delayed-recovery or both");
   }
 }
@@ -48,14 +48,14 @@ struct Magnitudes {
   double dissipation = 1.0;
 };
 
-Magnitudes hertz_magnitudes(double zeta, const EndSelection& ends) {
+Magnitudes hertz_magnitudes(double zeta, const EndSet& ends) {
   Magnitudes m;
   const double z = std::max(zeta, 1.0);
   // Large ζ: x_max ~ (3/(2ζ))^{2/3}; the delayed end has ε ~ ζ^{-5/3}; the naive end is reached through
   // x ~ ζ^{-4} with ε ~ ζ^{-5} (docs/design.md §4).
   m.x = std::pow(z, -2.0 / 3.0);
   m.velocity = std::pow(z, -5.0 / 3.0);
-  if (ends.naive) {
+  if (ends.contains(CollisionEnd::naive)) {
     m.x = std::pow(z, -4.0);
     m.velocity = std::pow(z, -5.0);
   }
@@ -63,14 +63,14 @@ Magnitudes hertz_magnitudes(double zeta, const EndSelection& ends) {
   return m;
 }
 
-Magnitudes dashpot_magnitudes(double r, const EndSelection& ends) {
+Magnitudes dashpot_magnitudes(double r, const EndSet& ends) {
   Magnitudes m;
   if (r > 1.0) {
     // Overdamped: x_max ~ 1/(2r) and, at the delayed-recovery end, ε ~ 1/(4 r^2) for large r.
     m.x = 1.0 / (2.0 * r);
     m.velocity = 1.0 / (4.0 * r * r);
   }
-  if (ends.naive && r < 1.0) {
+  if (ends.contains(CollisionEnd::naive) && r < 1.0) {
     // The naive end is approached with x ~ ε (τ_c - τ): near critical damping (ε ~ 1e-31 at r = 0.999)
     // x must be resolved down to ε's scale, not to one.
     const double eps = std::exp(-M_PI * r / std::sqrt(1.0 - r * r));
@@ -84,16 +84,17 @@ Magnitudes dashpot_magnitudes(double r, const EndSelection& ends) {
 // Near critical damping the dash-pot's two modes e^{(-r ± iω)τ} are each 1/(2ω) times larger than x'
 // at the naive end, where they cancel (ω = sqrt(1 - r²)): the local errors are amplified by about 1/ω in
 // ε there (measured error ratio 10 at r = 0.999 and 20 at r = 0.9999 with the plain rtol).
-double conditioning(const ContactLaw& law, const EndSelection& ends) {
+double conditioning(const ContactLaw& law, const EndSet& ends) {
   const double r = law.parameter;
-  if (law.kind != LawKind::linear_dashpot || !ends.naive || r >= 1.0) return 1.0;
+  if (law.kind != LawKind::linear_dashpot || !ends.contains(CollisionEnd::naive) || r >= 1.0) return 1.0;
   return std::min(1.0, 0.1 * std::sqrt(1.0 - r * r));
 }
 
-double time_limit(const ContactLaw& law, const EndSelection& ends) {
+double time_limit(const ContactLaw& law, const EndSet& ends) {
   if (law.kind == LawKind::linear_dashpot) {
     const double r = law.parameter;
-    return (ends.naive && r < 1.0) ? 100.0 * (10.0 + M_PI / std::sqrt(1.0 - r * r)) : 1000.0;
+    return (ends.contains(CollisionEnd::naive) && r < 1.0) ? 100.0 * (10.0 + M_PI / std::sqrt(1.0 - r * r))
+                                                           : 1000.0;
   }
   // Naive tail: slow relaxation over ~ζ·ln(ζ^{10/3}) (docs/design.md §4); generous margin.
   const double zeta = law.parameter;
