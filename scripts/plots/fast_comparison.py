@@ -86,8 +86,12 @@ def main(exe, bench_csv, reference_csv, png_path, md_path):
                 if zeta > ZETA_MAX * 1.0001:
                     break
                 # every name `series validate` writes is a kind `series eval` takes
-                v = json.loads(subprocess.run([exe, "series", "eval", "--kind", name, "--zeta", repr(zeta), "--json"],
-                                              check=True, capture_output=True, text=True).stdout)
+                run = subprocess.run([exe, "series", "eval", "--kind", name, "--zeta", repr(zeta), "--json"],
+                                     capture_output=True, text=True)
+                if run.returncode == 2 and "radius of convergence" in run.stderr:
+                    break  # a series' curve ends at its radius: past it the partial sums diverge
+                run.check_returncode()
+                v = json.loads(run.stdout)
                 curves[name].append((zeta, error(funcs, end, zeta, v["eps"], v["one_minus_eps"])))
         with open(reference_csv, newline="") as f:
             ref = [r for r in csv.DictReader(line for line in f if not line.startswith("#"))
