@@ -2,6 +2,7 @@
 // and the exported C header (same text as the compiled one; compiled by gcc and g++, same bits).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include <bit>
@@ -23,6 +24,11 @@
 #include "restitution/fast.hpp"
 
 namespace {
+
+// A folder of this process's own, so that two checkouts testing at once do not delete each other's files.
+std::filesystem::path per_process_folder(const std::string& name) {
+  return std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
+}
 
 using namespace restitution;
 using restitution::test_support::reference_rows;
@@ -210,7 +216,7 @@ std::string source_file(const std::string& relative) {
 // The generated header in the source tree is what the library compiled, and what `export c-header` writes.
 TEST(FastHeader, ExportIsTheCompiledHeader) {
   EXPECT_EQ(fast::c_header(), source_file("src/fast/fast_table.h"));
-  const auto dir = std::filesystem::temp_directory_path() / "restitution-fast-export";
+  const auto dir = per_process_folder("restitution-fast-export");
   std::filesystem::create_directories(dir);
   const auto out = test_support::run_cli("export c-header --out " + (dir / "r.h").string());
   ASSERT_EQ(out.status, 0) << out.err;
@@ -223,7 +229,7 @@ TEST(FastHeader, ExportIsTheCompiledHeader) {
 // The generator end to end on a small range: it runs, records its settings, measures errors inside the
 // contract; bad settings exit with status 2.
 TEST(FastTable, GeneratorOnASmallRange) {
-  const auto dir = std::filesystem::temp_directory_path() / "restitution-fast-table";
+  const auto dir = per_process_folder("restitution-fast-table");
   std::filesystem::create_directories(dir);
   const std::string out = (dir / "t.h").string();
   const auto r = test_support::run_cli(
@@ -298,7 +304,7 @@ double max_compression_tau(double zeta, CollisionEnd /*end*/) {
 }
 
 TEST(FastHeader, CompilesAsC99AndCxxAndAgreesBitForBit) {
-  const auto dir = std::filesystem::temp_directory_path() / "restitution-fast-header";
+  const auto dir = per_process_folder("restitution-fast-header");
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "restitution_fast.h") << fast::c_header();
   std::ofstream(dir / "driver.c") << kDriver;
