@@ -15,9 +15,10 @@
 namespace restitution {
 namespace {
 
-bool accepts(const WorkPrecisionEngine& engine, bool naive, double zeta) {
+bool accepts(const WorkPrecisionEngine& engine, CollisionEnd end, double zeta) {
   if (engine.method == Method::adams && zeta > 100.0) return false;
-  if (engine.method == Method::taylor && naive && zeta > kTaylorNaiveZetaMax) return false;
+  if (engine.method == Method::taylor && end == CollisionEnd::naive && zeta > kTaylorNaiveZetaMax)
+    return false;
   return true;
 }
 
@@ -39,12 +40,12 @@ double contract_error(const EndResult& result, const ReferenceEndValues& referen
   return scale > 0 ? difference / scale : difference;
 }
 
-SolveOptions work_precision_options(const WorkPrecisionEngine& engine, bool naive, double tolerance) {
+SolveOptions work_precision_options(const WorkPrecisionEngine& engine, CollisionEnd end, double tolerance) {
   SolveOptions options;
   options.method = engine.method;
   options.smooth_ends = engine.smooth_ends;
   options.tolerance = tolerance;
-  options.ends = EndSet{naive ? CollisionEnd::naive : CollisionEnd::delayed_recovery};
+  options.ends = EndSet{end};
   return options;
 }
 
@@ -102,18 +103,17 @@ std::vector<WorkPrecisionRow> measure_work_precision(
   std::vector<double> samples(static_cast<std::size_t>(std::max(repeats, 1)));
   for (const WorkPrecisionEngine& engine : all) {
     if (!measured(engine)) continue;
-    for (const bool naive : {false, true}) {
+    for (const CollisionEnd end : {CollisionEnd::delayed_recovery, CollisionEnd::naive}) {
       for (const double tolerance : work_precision_tolerances()) {
         if (tolerance < min_tolerance(engine.method)) continue;
         if (progress) progress(done, groups);
         ++done;
         for (const double zeta : work_precision_zetas()) {
           const ReferenceRow* row = reference_row_for(reference, zeta);
-          if (row == nullptr || !accepts(engine, naive, zeta)) continue;
-          const auto& ref =
-              naive ? row->ends[CollisionEnd::naive] : row->ends[CollisionEnd::delayed_recovery];
+          if (row == nullptr || !accepts(engine, end, zeta)) continue;
+          const auto& ref = row->ends[end];
           if (!ref) continue;
-          const SolveOptions options = work_precision_options(engine, naive, tolerance);
+          const SolveOptions options = work_precision_options(engine, end, tolerance);
           const ContactLaw law = ContactLaw::hertz_natural(zeta);
           CollisionResult result = solver.solve(law, options);
           for (double& sample : samples) {
@@ -123,11 +123,8 @@ std::vector<WorkPrecisionRow> measure_work_precision(
           }
           std::nth_element(samples.begin(), samples.begin() + static_cast<long>(samples.size() / 2),
                            samples.end());
-          const EndResult& end =
-              naive ? *result[CollisionEnd::naive] : *result[CollisionEnd::delayed_recovery];
-          rows.push_back({engine.name, naive ? "naive" : "delayed-recovery", tolerance, zeta,
-                          contract_error(end, *ref), samples[samples.size() / 2],
-                          result.stats.rhs_evaluations, result.stats.steps});
+          rows.push_back({engine.name, end_name(end), tolerance, zeta, contract_error(*result[end], *ref),
+                          samples[samples.size() / 2], result.stats.rhs_evaluations, result.stats.steps});
         }
       }
     }

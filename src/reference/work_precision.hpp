@@ -39,7 +39,7 @@ const ReferenceRow* reference_row_for(const std::vector<ReferenceRow>& reference
 // T·(1-ε); 1-ε carries the accuracy there); the absolute difference where min(ε*, 1-ε*) = 0 (ζ = 0).
 double contract_error(const EndResult& result, const ReferenceEndValues& reference);
 // The options of one work-precision point: one end only, so that its cost is measured alone.
-SolveOptions work_precision_options(const WorkPrecisionEngine& engine, bool naive, double tolerance);
+SolveOptions work_precision_options(const WorkPrecisionEngine& engine, CollisionEnd end, double tolerance);
 
 // Measures every (engine, end, tolerance, ζ) the engine accepts and the reference holds. Adams (a non-stiff
 // method) is measured for ζ <= 100 only. Each point is solved once to warm up, then `repeats` times.

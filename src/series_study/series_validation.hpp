@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "restitution/collision_solver.hpp"
 #include "restitution/series.hpp"
 
 namespace restitution::series {
@@ -21,7 +22,7 @@ struct ValidationOptions {
 struct Candidate {
   std::string name;         // an approximation name (series_named.hpp), a series with its coefficients:
                             // "naive-series:published", "naive-series:computed-40", "pade-1999", ...
-  bool delayed_recovery;    // compared with the delayed-recovery end, else with the naive end
+  CollisionEnd end;         // the end the solver is compared with
   std::string description;  // coefficients and source
 };
 
@@ -33,7 +34,7 @@ struct PointError {
 
 struct ValidationRow {
   double zeta = 0;
-  Value naive, delayed;            // solver
+  PerEnd<Value> solver;            // the solver's ε and 1-ε at each end
   std::vector<PointError> errors;  // one per candidate, same order as ValidationReport::candidates
 };
 
