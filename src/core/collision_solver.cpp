@@ -372,7 +372,23 @@ CollisionResult CollisionSolver::solve(const ContactLaw& given, const SolveOptio
   const ContactLaw law = given.is_natural() ? given : given.natural_form();
   if (options.method == Method::taylor) return solve_with_taylor(law, options);
   const detail::SolvePlan plan = detail::plan_solve(law, options);
-  return CollisionRun(law, options, plan, impl_->integrator(plan.method)).run();
+  CollisionResult result = CollisionRun(law, options, plan, impl_->integrator(plan.method)).run();
+  // A naive end whose conditioning only the solve reveals (constant damping close to the largest ζ with a
+  // naive end): solve again with the local tolerances tightened accordingly.
+  const double conditioning = result.naive ? law.naive_end_conditioning(result.naive->eps) : 1.0;
+  if (conditioning >= 1.0) return result;
+  const detail::SolvePlan refined = detail::plan_solve(law, options, conditioning);
+  if (refined.relative_tolerance < detail::kSmallestRelativeTolerance) {
+    throw InvalidInput(fmt::format(
+        "the naive end of law {} at zeta={} (eps ~ {:.2g}: close to the largest zeta with a naive end, "
+        "docs/contact_laws.md) is delivered only to tolerance >= {:.2g}, got {:g}",
+        law_name(law.kind()), law.zeta(), result.naive->eps,
+        options.tolerance * detail::kSmallestRelativeTolerance / refined.relative_tolerance,
+        options.tolerance));
+  }
+  CollisionResult second = CollisionRun(law, options, refined, impl_->integrator(refined.method)).run();
+  second.stats += result.stats;
+  return second;
 }
 
 }  // namespace restitution
