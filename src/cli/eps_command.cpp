@@ -64,8 +64,9 @@ void print_table(const CollisionResult& r) {
     fmt::print("  {:<18} {:>22.15g} {:>22.15g} {:>20.12g} {:>20.12g}\n", name, e.eps, e.one_minus_eps, e.tau,
                e.x);
   };
-  if (r.naive) row("naive", *r.naive);
-  if (r.delayed_recovery) row("delayed-recovery", *r.delayed_recovery);
+  for (const CollisionEnd end : kCollisionEnds) {
+    if (r[end]) row(end_name(end), *r[end]);
+  }
   fmt::print("  solver: {} steps, {} right-hand sides, {} Jacobians, {} root functions\n", r.stats.steps,
              r.stats.rhs_evaluations, r.stats.jacobian_evaluations, r.stats.root_evaluations);
 }
