@@ -22,7 +22,12 @@ struct EpsOptions {
 };
 
 ContactLaw law_from(const EpsOptions& o) {
-  const LawKind kind = law_from_name(o.law);
+  LawKind kind{};
+  try {
+    kind = law_from_name(o.law);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("--law: {}", e.what()));
+  }
   if (kind != LawKind::viscoelastic_hertz && (o.beta || o.velocity)) {
     throw InvalidInput(
         fmt::format("--beta and --velocity belong to --law viscoelastic-hertz; --law {} takes {}", o.law,
