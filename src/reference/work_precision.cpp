@@ -79,21 +79,34 @@ std::vector<double> work_precision_tolerances() {
   return t;
 }
 
-std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<ReferenceRow>& reference, int repeats,
-                                                     const std::vector<std::string>& engines) {
+std::vector<WorkPrecisionRow> measure_work_precision(
+    const std::vector<ReferenceRow>& reference, int repeats, const std::vector<std::string>& engines,
+    const std::function<void(std::size_t done, std::size_t total)>& progress) {
   const std::vector<WorkPrecisionEngine> all = work_precision_engines();
   for (const std::string& name : engines) {
     if (!is_work_precision_engine(name))
       throw InvalidInput(fmt::format("unknown engine '{}' (known: {})", name, work_precision_engine_names()));
   }
+  const auto measured = [&engines](const WorkPrecisionEngine& engine) {
+    return engines.empty() || std::find(engines.begin(), engines.end(), engine.name) != engines.end();
+  };
+  std::size_t groups = 0;  // (engine, end, tolerance) triples, the unit of progress
+  for (const WorkPrecisionEngine& engine : all) {
+    if (!measured(engine)) continue;
+    for (const double tolerance : work_precision_tolerances())
+      groups += tolerance < min_tolerance(engine.method) ? 0 : 2;
+  }
+  std::size_t done = 0;
   std::vector<WorkPrecisionRow> rows;
   CollisionSolver solver;
   std::vector<double> samples(static_cast<std::size_t>(std::max(repeats, 1)));
   for (const WorkPrecisionEngine& engine : all) {
-    if (!engines.empty() && std::find(engines.begin(), engines.end(), engine.name) == engines.end()) continue;
+    if (!measured(engine)) continue;
     for (const bool naive : {false, true}) {
       for (const double tolerance : work_precision_tolerances()) {
         if (tolerance < min_tolerance(engine.method)) continue;
+        if (progress) progress(done, groups);
+        ++done;
         for (const double zeta : work_precision_zetas()) {
           const ReferenceRow* row = reference_row_for(reference, zeta);
           if (row == nullptr || !accepts(engine, naive, zeta)) continue;
@@ -119,6 +132,7 @@ std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<Reference
       }
     }
   }
+  if (progress) progress(done, groups);
   return rows;
 }
 

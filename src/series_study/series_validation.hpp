@@ -19,7 +19,8 @@ struct ValidationOptions {
 
 // One approximation as validated: its name, the end it describes, and how it was built.
 struct Candidate {
-  std::string name;         // e.g. "naive-table-III", "naive-40", "pade-1999", ...
+  std::string name;         // an approximation name (series_named.hpp), a series with its coefficients:
+                            // "naive-series:published", "naive-series:computed-40", "pade-1999", ...
   bool delayed_recovery;    // compared with the delayed-recovery end, else with the naive end
   std::string description;  // coefficients and source
 };

@@ -10,6 +10,7 @@
 #include "restitution/errors.hpp"
 #include "restitution/series_tables.hpp"
 #include "series_study/series_coefficients.hpp"
+#include "series_study/series_named.hpp"
 #include "series_study/series_validation.hpp"
 
 namespace restitution::series {
@@ -34,20 +35,18 @@ std::vector<Approximant> approximants(const ValidationOptions& o, const Coeffici
   c.resize(static_cast<std::size_t>(o.naive_order));
   std::vector<double> h = computed.h;
   h.resize(static_cast<std::size_t>(o.delayed_order) + 1);
-  // The 1999 Padé form with the recomputed a_3 = -c_3/C1³, a_4 = c_4/C1⁴ in place of the printed ones.
-  const double c1 = -computed.c[1];
-  const Pade1999 corrected =
-      pade_1999_coefficients(0.6, -computed.c[3] / std::pow(c1, 3), computed.c[4] / std::pow(c1, 4));
+  const Pade1999 corrected = pade_1999_corrected();
   const Pade1999 printed = pade_1999_published();
   return {
-      {{"naive-table-III", false, "naive series, c_1..c_10 of the 2008 paper's Table III"},
+      {{"naive-series:published", false, "naive series, c_1..c_10 of the 2008 paper's Table III"},
        [](double z) { return naive_series(z, published::kTable3C); }},
-      {{fmt::format("naive-{}", o.naive_order), false,
+      {{fmt::format("naive-series:computed-{}", o.naive_order), false,
         fmt::format("naive series, recomputed c_1..c_{}", o.naive_order)},
        [c](double z) { return naive_series(z, c); }},
-      {{"delayed-recovery-table-V", true, "delayed-recovery series, h_0..h_20 of the 2008 paper's Table V"},
+      {{"delayed-recovery-series:published", true,
+        "delayed-recovery series, h_0..h_20 of the 2008 paper's Table V"},
        [](double z) { return delayed_recovery_series(z, published::kTable5H); }},
-      {{fmt::format("delayed-recovery-{}", o.delayed_order), true,
+      {{fmt::format("delayed-recovery-series:computed-{}", o.delayed_order), true,
         fmt::format("delayed-recovery series, recomputed h_0..h_{}", o.delayed_order)},
        [h](double z) { return delayed_recovery_series(z, h); }},
       {{"pade-1999", false, "1999 Padé [1/4] in w = C1 zeta, d_k from Table I with a_3, a_4 of Eq. (33)"},
@@ -91,11 +90,7 @@ double local_slope(double step, double eps_at_zeta, double eps_at_step) {
 }
 
 Approximation closed_form_kind(const std::string& name) {
-  if (name.rfind("pade-1999", 0) == 0) return Approximation::pade_1999;
-  if (name == "simple-theory-1999") return Approximation::simple_theory_1999;
-  if (name == "pade-2011-1-4") return Approximation::pade_2011_1_4;
-  if (name == "pade-2011-3-6") return Approximation::pade_2011_3_6;
-  return name.rfind("naive", 0) == 0 ? Approximation::naive_series : Approximation::delayed_recovery_series;
+  return *approximation_named(name.substr(0, name.find(':')));  // every candidate is named so
 }
 
 // Least-squares line y = intercept + slope x.
