@@ -20,7 +20,9 @@ enum class Method { bdf, adams, automatic, taylor };
 const char* method_name(Method method);            // "bdf" | "adams" | "auto" | "taylor"
 Method method_from_name(const std::string& name);  // the inverse; throws InvalidInput naming the value
 
-// One end of the collision, for callers that ask for a single end.
+// One end of the collision, for callers that ask for a single end. naive: the overlap returns to x = 0
+// ("clamp off"); delayed_recovery: the total force first reaches 0, c_d x' + c_s x^{a-b} = 0, where a DEM
+// code that zeroes an attractive force separates the spheres ("clamp on"; docs/contact_laws.md).
 enum class CollisionEnd { naive, delayed_recovery };
 const char* end_name(CollisionEnd end);               // "naive" | "delayed-recovery"
 CollisionEnd end_from_name(const std::string& name);  // throws InvalidInput naming the value
@@ -86,8 +88,8 @@ struct SolveOptions {
   Method method = Method::automatic;
   EndSet ends = EndSet::both();
   bool keep_trajectory = false;  // record (τ, x, x', x'') at every internal step and at every event
-  // Hertz law only: integrate in u = sqrt(x) near x = 0, where the solution is analytic in u but not in τ
-  // (docs/design.md §4). false integrates in τ throughout, for comparison.
+  // Laws with ContactLaw::smoothing_root() q > 1: integrate in u = x^{1/q} near x = 0, where the solution
+  // is analytic in u but not in τ (docs/design.md §4). false integrates in τ throughout, for comparison.
   bool smooth_ends = true;
   // Most internal CVODE steps per phase of the collision; beyond it the solve fails with CVODE's "too much
   // work" (flag -1). The default never binds on the collisions of this project (at most a few thousand
@@ -147,7 +149,9 @@ struct TrajectoryPoint {
 
 struct CollisionResult {
   LawKind law = LawKind::viscoelastic_hertz;
-  double parameter = 0.0;  // ζ (Hertz) or r (dash-pot)
+  double parameter = 0.0;  // ζ, or the damping ratio r = ζ/2 for the linear dash-pot
+  // ε does not depend on the impact speed for this law (speed_exponent(law) == 0: Tsuji, the dash-pot).
+  bool speed_independent = false;
   double tolerance = 0.0;
   Method method = Method::bdf;  // the method actually used (never automatic)
   MaxCompression max_compression;
