@@ -63,10 +63,11 @@ TEST(DampingRecipes, LiggghtsHertzWithoutClampIsExact) {
 }
 
 TEST(DampingRecipes, ThorntonFitHitsItsTargetWithTheClamp) {
-  // Thornton et al. 2013 fitted (B6)-(B7) to the clamped Hertz-Tsuji collision; its γ(0.5) = 0.2330.
+  // Thornton et al. 2013 fitted (B6)-(B7) to the clamped Hertz-Tsuji collision; its γ(0.5) = 0.2330. The fit
+  // misses by 2e-4 at e = 0.3 to 0.8 and by 1.9e-3 at 0.95 (measured).
   EXPECT_NEAR(thornton_2013_damping_ratio(0.5), 0.2330249, 1e-6);
   for (double e : {0.3, 0.5, 0.8, 0.95}) {
-    EXPECT_NEAR(actual_eps(Recipe::thornton_2013, e, Clamp::on), e, 1e-3) << e;
+    EXPECT_NEAR(actual_eps(Recipe::thornton_2013, e, Clamp::on), e, 2.5e-3) << e;
     EXPECT_LT(actual_eps(Recipe::thornton_2013, e, Clamp::off), e) << e;
   }
 }

@@ -14,6 +14,17 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.colors import TwoSlopeNorm  # noqa: E402
 
 
+def edges(values, log):
+    """Cell edges around sorted centres: midpoints (geometric on a log axis), the ends mirrored."""
+    if len(values) == 1:
+        return [values[0] / 2, values[0] * 2] if log else [values[0] - 0.5, values[0] + 0.5]
+    if log:
+        mids = [math.sqrt(a * b) for a, b in zip(values, values[1:])]
+        return [values[0] ** 2 / mids[0]] + mids + [values[-1] ** 2 / mids[-1]]
+    mids = [(a + b) / 2 for a, b in zip(values, values[1:])]
+    return [2 * values[0] - mids[0]] + mids + [2 * values[-1] - mids[-1]]
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("csv")
@@ -32,7 +43,7 @@ def main():
                 r["relative_error_clamp_" + clamp])
         finite = [abs(v) for line in grid for v in line if math.isfinite(v)] or [1.0]
         bound = max(max(finite), 1e-12)
-        mesh = ax.pcolormesh(eps, speeds, grid, shading="nearest", cmap="RdBu_r",
+        mesh = ax.pcolormesh(edges(eps, False), edges(speeds, True), grid, shading="flat", cmap="RdBu_r",
                              norm=TwoSlopeNorm(vcenter=0.0, vmin=-bound, vmax=bound))
         ax.set_yscale("log")
         ax.set_xlabel("requested eps")

@@ -69,17 +69,24 @@ DampingSection damping_section(const scene::Scene& scene, const scene::DampingCh
     }
     map.csv += "\n";
   }
-  std::string joined;
-  for (const auto& c : columns) joined += (joined.empty() ? "" : ",") + c;
+  // Clamp on solid, clamp off dashed, actual = requested as points.
+  std::string on;
+  std::string off;
+  for (const auto& c : columns) {
+    std::string& list = c.ends_with("_on") ? on : off;
+    list += (list.empty() ? "" : ",") + c;
+  }
   map.args = {"--x",      "requested_eps",
-              "--y",      joined,
-              "--dashed", "requested_eps",
+              "--y",      on,
+              "--dashed", off,
+              "--points", "requested_eps",
               "--title",  task.title,
               "--xlabel", "requested eps",
               "--ylabel", fmt::format("actual eps (speed-dependent recipes at {:g} m/s)", v_ref)};
   map.caption = fmt::format(
       "Actual against requested ε for {} recipes, clamp on (force clamped at zero: the delayed-recovery end) "
-      "and off (the naive end); the dashed line is actual = requested. A missing point without the clamp is "
+      "and off (the naive end, dashed); the points are actual = requested. A missing point without the clamp "
+      "is "
       "an overdamped Tsuji member (ζ >= sqrt(5)): the overlap never returns to 0.\n\n",
       task.recipes.size());
   s.plots.push_back(map);

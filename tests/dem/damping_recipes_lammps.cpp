@@ -1,13 +1,14 @@
 // Runs Debian's LAMMPS on head-on collisions with the damping recipes as LAMMPS applies them and checks the ε
 // it measures against `restitution damping-check`: `damping tsuji` with and without `limit_damping`, and
 // `damping viscoelastic` with the η_n0 `restitution dem` calibrates (the lammps-viscoelastic recipe).
-// As in dem_integration.cpp, each deck runs at dt = T/2000 and T/20000 and ε is Richardson-extrapolated
-// (LAMMPS' velocity-Verlet is first order in dt for a velocity-dependent force).
+// As in dem_integration.cpp, each deck runs at dt = T/n and T/(10 n) (n = 2000; 5000 for Tsuji) and ε is
+// Richardson-extrapolated (LAMMPS' velocity-Verlet is first order in dt for a velocity-dependent force).
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -41,10 +42,11 @@ json run_json(const std::string& arguments) {
 
 // LAMMPS' extrapolated ε at `speeds` agrees with `predicted` within 1e-6 min(ε, 1 - ε).
 void expect_lammps_gives(const restitution::dem::Deck& deck, const std::vector<double>& speeds,
-                         const std::vector<double>& predicted) {
+                         const std::vector<double>& predicted, int coarse_steps_per_time) {
   const std::string program = restitution::cli::dem_program(restitution::dem::Code::lammps);
   ASSERT_FALSE(program.empty()) << "lmp not found on PATH: scripts/setup installs Debian's lammps";
-  const auto measured = restitution::cli::measure_dem_eps(program, deck, steel(), speeds, 2000);
+  const auto measured =
+      restitution::cli::measure_dem_eps(program, deck, steel(), speeds, coarse_steps_per_time);
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     ASSERT_TRUE(std::isfinite(measured.extrapolated[i])) << "no eps at v = " << speeds[i] << ":\n"
                                                          << measured.output;
@@ -52,6 +54,9 @@ void expect_lammps_gives(const restitution::dem::Deck& deck, const std::vector<d
     const double tolerance = 1e-6 * std::min(predicted[i], 1.0 - predicted[i]);
     EXPECT_NEAR(measured.extrapolated[i], predicted[i], tolerance)
         << "v = " << speeds[i] << " m/s: coarse " << measured.coarse[i] << ", fine " << measured.fine[i];
+    std::ostringstream error;
+    error << std::scientific << std::setprecision(2) << (measured.extrapolated[i] - predicted[i]) / tolerance;
+    testing::Test::RecordProperty("error_over_tolerance_" + std::to_string(i), error.str());
   }
 }
 
@@ -78,7 +83,9 @@ TEST_P(LammpsTsuji, MeasuresTheEpsDampingCheckPredicts) {
   deck.lines = {"pair_style granular", coeff.str()};
   // Speed-independent: the same ε at three speeds two decades apart.
   const std::vector<double> speeds{0.1, 1.0, 10.0};
-  expect_lammps_gives(deck, speeds, std::vector<double>(speeds.size(), predicted));
+  // The Tsuji force's x^{1/4} leaves a larger remainder after the first-order extrapolation than the
+  // viscoelastic one (measured: up to 0.8 of the bound at T/2000): a finer pair of runs keeps a margin.
+  expect_lammps_gives(deck, speeds, std::vector<double>(speeds.size(), predicted), 5000);
 }
 
 std::string tsuji_name(const testing::TestParamInfo<TsujiCase>& case_info) {
@@ -113,7 +120,7 @@ TEST_P(LammpsViscoelastic, MeasuresTheEpsDampingCheckPredicts) {
   restitution::dem::Deck deck;
   deck.code = restitution::dem::Code::lammps;
   deck.lines = lines.at("lines").get<std::vector<std::string>>();
-  expect_lammps_gives(deck, speeds, predicted);
+  expect_lammps_gives(deck, speeds, predicted, 2000);
 }
 
 std::string clamp_case_name(const testing::TestParamInfo<const char*>& case_info) {
