@@ -137,6 +137,7 @@ int run(const DampingCheckOptions& o) {
   const std::vector<double> eps = o.map ? damping_check::map_eps_grid() : std::vector<double>{*o.eps};
   CollisionSolver solver;
   std::vector<CheckResult> results;
+  results.reserve(eps.size());
   for (double e : eps) results.push_back(damping_check::check_recipe(request_of(o, e), solver));
   if (o.json) {
     print_json(o, eps, results);

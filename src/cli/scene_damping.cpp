@@ -131,6 +131,7 @@ DampingSection damping_section(const scene::Scene& scene, const scene::DampingCh
   for (const std::string& name : task.recipes) {
     const Recipe recipe = damping_check::recipe_from_name(name);
     std::vector<std::vector<std::vector<double>>> by_eps;
+    by_eps.reserve(requested.size());
     for (double e : requested) by_eps.push_back(actual(recipe, e, speeds, v_ref, scene.tolerance, solver));
     for (int c = 0; c < 2; ++c) {
       md += fmt::format("| {} | {} |", name, c == 0 ? "on" : "off");

@@ -104,7 +104,7 @@ double thornton_2013_damping_ratio(double eps) {
   static constexpr std::array<double, 10> h{-6.918798, -16.41105, 146.8049,  -796.4559, 2928.711,
                                             -7206.864, 11494.29,  -11342.18, 6276.757,  -1489.915};
   double alpha = 0.0;
-  for (auto it = h.rbegin(); it != h.rend(); ++it) alpha = (alpha + *it) * eps;
+  for (std::size_t i = h.size(); i-- > 0;) alpha = (alpha + h[i]) * eps;  // Horner, from h_10 down
   return std::sqrt(1.0 / (1.0 - (1.0 + eps) * (1.0 + eps) * std::exp(alpha)) - 1.0);
 }
 

@@ -112,7 +112,8 @@ TEST_P(LammpsViscoelastic, MeasuresTheEpsDampingCheckPredicts) {
   const json lines = run_json(args.str());
   const json check = run_json("damping-check --recipe lammps-viscoelastic --eps 0.6 --velocity 1 --clamp " +
                               clamp + " --velocity-min 0.25 --velocity-max 4 --points 3 --json");
-  std::vector<double> speeds, predicted;
+  std::vector<double> speeds;
+  std::vector<double> predicted;
   for (const auto& p : check.at("points")) {
     speeds.push_back(p.at("velocity_m_s").get<double>());
     predicted.push_back(p.at("actual_eps").get<double>());
