@@ -13,10 +13,10 @@ namespace {
 
 TEST(ContactLaw, NaturalHertzHasUnitStiffnessAndSpeed) {
   const ContactLaw law = ContactLaw::hertz_natural(0.7);
-  EXPECT_EQ(law.kind, LawKind::viscoelastic_hertz);
-  EXPECT_DOUBLE_EQ(law.damping, 0.7);
-  EXPECT_DOUBLE_EQ(law.stiffness, 1.0);
-  EXPECT_DOUBLE_EQ(law.initial_velocity, 1.0);
+  EXPECT_EQ(law.kind(), LawKind::viscoelastic_hertz);
+  EXPECT_DOUBLE_EQ(law.damping(), 0.7);
+  EXPECT_DOUBLE_EQ(law.stiffness(), 1.0);
+  EXPECT_DOUBLE_EQ(law.initial_velocity(), 1.0);
   // x'' = -sqrt(x)(ζ x' + x)
   EXPECT_DOUBLE_EQ(law.acceleration(0.25, 0.5), -0.5 * (0.7 * 0.5 + 0.25));
 }
@@ -25,8 +25,8 @@ TEST(ContactLaw, ScaledHertzFollowsEquation23) {
   const double beta = 0.2;
   const double v = 3.0;
   const ContactLaw law = ContactLaw::hertz_scaled(beta, v);
-  EXPECT_DOUBLE_EQ(law.parameter, beta * std::pow(v, 0.2));
-  EXPECT_DOUBLE_EQ(law.initial_velocity, std::pow(v, 0.8));
+  EXPECT_DOUBLE_EQ(law.parameter(), beta * std::pow(v, 0.2));
+  EXPECT_DOUBLE_EQ(law.initial_velocity(), std::pow(v, 0.8));
   const double x = 0.3;
   const double xdot = -0.1;
   const double expected =
@@ -35,7 +35,7 @@ TEST(ContactLaw, ScaledHertzFollowsEquation23) {
   // In natural variables X = x / v^{4/5}: c_d x' + c_s x = v^{2/5} (ζ X' + X).
   const double X = x / std::pow(v, 0.8);
   const double Xdot = xdot / std::pow(v, 0.8);
-  EXPECT_NEAR(law.force_factor(x, xdot), std::pow(v, 0.4) * (law.parameter * Xdot + X), 1e-14);
+  EXPECT_NEAR(law.force_factor(x, xdot), std::pow(v, 0.4) * (law.parameter() * Xdot + X), 1e-14);
 }
 
 TEST(ContactLaw, HertzHasNoForceWithoutOverlap) {
@@ -74,7 +74,7 @@ TEST(ContactLaw, JacobianMatchesFiniteDifferences) {
         const double didv =
             (law.dissipation_integrand(x, v + 1e-7) - law.dissipation_integrand(x, v - 1e-7)) / 2e-7;
         const double scale = 1.0 + std::abs(dadx);
-        EXPECT_NEAR(law.dacceleration_dx(x, v), dadx, 1e-6 * scale) << law_name(law.kind) << " x=" << x;
+        EXPECT_NEAR(law.dacceleration_dx(x, v), dadx, 1e-6 * scale) << law_name(law.kind()) << " x=" << x;
         EXPECT_NEAR(law.dacceleration_dv(x), dadv, 1e-6);
         EXPECT_NEAR(law.ddissipation_integrand_dx(x, v), didx, 1e-6 * (1.0 + std::abs(didx)));
         EXPECT_NEAR(law.ddissipation_integrand_dv(x, v), didv, 1e-6);
@@ -90,7 +90,7 @@ TEST(ContactLaw, ElasticEnergyIsTheIntegralOfTheElasticForce) {
   double integral = 0.0;  // midpoint rule of c_s w(s) s
   for (int i = 0; i < n; ++i) {
     const double s = (i + 0.5) * x / n;
-    integral += law.stiffness * law.shape(s) * s * x / n;
+    integral += law.stiffness() * law.shape(s) * s * x / n;
   }
   EXPECT_NEAR(law.elastic_energy(x), integral, 1e-7);
 }

@@ -43,9 +43,8 @@ TEST(NumericalFailure, TooMuchWorkNamesZetaEndToleranceAndFlag) {
 
 TEST(NumericalFailure, NoEndBeforeTheTimeLimit) {
   // Without stiffness nor damping the spheres never stop approaching: no maximal compression and no end
-  // before the time limit. ContactLaw's fields are public; the factories would refuse nothing here.
-  ContactLaw free_flight = ContactLaw::hertz_natural(0.0);
-  free_flight.stiffness = 0.0;
+  // before the time limit. The factories would refuse nothing here: built unchecked.
+  const ContactLaw free_flight = ContactLaw::unchecked(LawKind::viscoelastic_hertz, 0.0, 0.0);
   SolveOptions options;
   options.tolerance = 1e-6;
   expect_names(failure_message(free_flight, options),
@@ -55,8 +54,8 @@ TEST(NumericalFailure, NoEndBeforeTheTimeLimit) {
 TEST(NumericalFailure, NonFiniteRightHandSideIsAFailureNotANumber) {
   // A law whose force is not a number (a broken law built by hand): CVODE's error test or corrector
   // fails repeatedly; what comes back must be an error naming the flag, never a NaN ε.
-  ContactLaw broken = ContactLaw::hertz_natural(1.0);
-  broken.stiffness = std::numeric_limits<double>::quiet_NaN();
+  const ContactLaw broken =
+      ContactLaw::unchecked(LawKind::viscoelastic_hertz, 1.0, std::numeric_limits<double>::quiet_NaN());
   SolveOptions options;
   options.tolerance = 1e-8;
   for (const Method method : {Method::bdf, Method::adams}) {

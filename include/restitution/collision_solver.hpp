@@ -30,7 +30,7 @@ inline constexpr std::array<CollisionEnd, 2> kCollisionEnds{CollisionEnd::naive,
 // Which ends a solve computes. Kept as two flags because most callers ask for both; index it by CollisionEnd.
 struct EndSelection {
   bool naive = true;             // end where the overlap vanishes, x = 0
-  bool delayed_recovery = true;  // end where the force vanishes, c_d x' + c_s x = 0
+  bool delayed_recovery = true;  // end where the force vanishes ("clamp on"), c_d x' + c_s x^{a-b} = 0
   [[nodiscard]] bool operator[](CollisionEnd end) const {
     return end == CollisionEnd::naive ? naive : delayed_recovery;
   }
@@ -42,8 +42,8 @@ struct SolveOptions {
   Method method = Method::automatic;
   EndSelection ends;
   bool keep_trajectory = false;  // record (τ, x, x', x'') at every internal step and at every event
-  // Hertz law only: integrate in u = sqrt(x) near x = 0, where the solution is analytic in u but not in τ
-  // (docs/design.md §4). false integrates in τ throughout, for comparison.
+  // Laws with ContactLaw::smoothing_root() q > 1: integrate in u = x^{1/q} near x = 0, where the solution
+  // is analytic in u but not in τ (docs/design.md §4). false integrates in τ throughout, for comparison.
   bool smooth_ends = true;
   // Most internal CVODE steps per phase of the collision; beyond it the solve fails with CVODE's "too much
   // work" (flag -1). The default never binds on the collisions of this project (at most a few thousand
@@ -103,7 +103,9 @@ struct TrajectoryPoint {
 
 struct CollisionResult {
   LawKind law = LawKind::viscoelastic_hertz;
-  double parameter = 0.0;  // ζ (Hertz) or r (dash-pot)
+  double parameter = 0.0;  // ζ, or the damping ratio r = ζ/2 for the linear dash-pot
+  // ε does not depend on the impact speed for this law (speed_exponent(law) == 0: Tsuji, the dash-pot).
+  bool speed_independent = false;
   double tolerance = 0.0;
   Method method = Method::bdf;  // the method actually used (never automatic)
   MaxCompression max_compression;

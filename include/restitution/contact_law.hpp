@@ -1,20 +1,45 @@
 #pragma once
 // Contact laws: the equation of motion of the compression x(τ), written once for every engine.
 //
-// Every law here has the form
-//     x'' = -w(x) · (c_d · x' + c_s · x),   x(0) = 0,  x'(0) = v0,
-// with w(x) = sqrt(x) for viscoelastic Hertz spheres and w(x) = 1 for the linear dash-pot. For Hertz
-// spheres w(x) = 0 at x <= 0 (no force without overlap; sqrt of a trial step's negative x is never taken).
-// The dash-pot keeps its smooth continuation past x = 0: only trial steps and the root finder see x < 0,
-// and a force switched off there would put a jump exactly at the naive end and spoil its location. The force
-// vanishes where c_d x' + c_s x = 0: that is the root function of the delayed-recovery end (docs/design.md
-// §1). The dissipated energy per unit (scaled) mass grows as dD/dτ = c_d · w(x) · x'^2, so D = c_d ∫ w(x)
-// x'^2 dτ; the elastic energy is U(x) = c_s ∫_0^x w(s) s ds.
+// The family (docs/contact_laws.md), in natural units (x'(0) = 1):
+//     x'' + ζ x^b x' + x^a = 0,   x(0) = 0,  x'(0) = 1,
+// one member per LawKind (exponents a, b in src/core/law_family.cpp). The engines see it as
+//     x'' = -w(x) · (c_d · x' + c_s · x^{a-b}),   w(x) = x^b,
+// with c_d = ζ, c_s = 1 in natural units (the 2008 paper's scaled Hertz form has other c_d, c_s, x'(0)).
+// A non-integer power of x is 0 at x <= 0 (no force without overlap; the root of a trial step's negative x
+// is never taken); an integer power keeps its smooth continuation (the linear dash-pot: only trial steps
+// and the root finder see x < 0, and a force switched off there would put a jump exactly at the naive end).
+// The force vanishes where c_d x' + c_s x^{a-b} = 0: the root function of the force-zero end ("clamp on",
+// CollisionEnd::delayed_recovery, docs/design.md §1). The dissipated energy per unit (scaled) mass grows as
+// dD/dτ = c_d · w(x) · x'^2; the elastic energy is U(x) = c_s x^{a+1}/(a+1).
+#include <array>
 #include <cmath>
+#include <string>
 
 namespace restitution {
 
-enum class LawKind { viscoelastic_hertz, linear_dashpot };
+// Named members: viscoelastic Hertz (a = 3/2, b = 1/2), linear dash-pot (1, 0), Tsuji (3/2, 1/4), Hertz with
+// constant damping (3/2, 0).
+enum class LawKind { viscoelastic_hertz, linear_dashpot, tsuji_hertz, hertz_constant_damping };
+inline constexpr std::array<LawKind, 4> kLawKinds{LawKind::viscoelastic_hertz, LawKind::linear_dashpot,
+                                                  LawKind::tsuji_hertz, LawKind::hertz_constant_damping};
+
+// "viscoelastic-hertz" | "linear-dashpot" | "tsuji-hertz" | "hertz-constant-damping"
+const char* law_name(LawKind kind);
+LawKind law_from_name(const std::string& name);  // the inverse; throws InvalidInput naming the value
+
+// The exponents of a member: elastic force ∝ x^a, damping force ∝ x^b x'.
+struct LawExponents {
+  double elastic = 1.5;  // a
+  double damping = 0.5;  // b
+};
+LawExponents law_exponents(LawKind kind);
+
+// d ln ζ / d ln v = b + (b+1)(1-a)/(1+a) for the DEM force of ContactLaw::physical: 1/5 for viscoelastic
+// Hertz, -1/5 for constant damping, 0 for Tsuji and the linear dash-pot (ε independent of the impact speed).
+double speed_exponent(LawKind kind);
+// True where speed_exponent is zero (to rounding).
+bool speed_independent(LawKind kind);
 
 // The contracted range of ζ: every ζ in [0, kLargestCheckedZeta] is checked against the reference solutions
 // (docs/accuracy.md). The front ends (CLI, sweeps, scenes, calibration) refuse larger ζ with
@@ -23,42 +48,126 @@ inline constexpr double kLargestCheckedZeta = 1e6;
 // Throws InvalidInput naming ζ and the checked range when zeta > kLargestCheckedZeta (or is not finite).
 void require_checked_zeta(double zeta);
 
-const char* law_name(LawKind kind);  // "viscoelastic-hertz" | "linear-dashpot"
+namespace detail {
+// x^e for x > 0. The quarter exponents of the named members are written with sqrt, which is correctly
+// rounded (std::pow is not) and several times faster.
+inline double positive_power(double x, double e) {
+  if (e == 0.0) return 1.0;
+  if (e == 1.0) return x;
+  if (e == 0.5) return std::sqrt(x);
+  if (e == 1.5) return x * std::sqrt(x);
+  if (e == 0.25) return std::sqrt(std::sqrt(x));
+  if (e == 0.75) return std::sqrt(x) * std::sqrt(std::sqrt(x));
+  if (e == 1.25) return x * std::sqrt(std::sqrt(x));
+  return std::pow(x, e);
+}
+// x^e continued to x <= 0: smoothly for an integer e, by 0 otherwise (see the header comment).
+inline double continued_power(double x, double e) {
+  if (x > 0.0) return positive_power(x, e);
+  if (e == 0.0) return 1.0;
+  if (e == 1.0) return x;
+  return e == std::floor(e) ? std::pow(x, e) : 0.0;
+}
+}  // namespace detail
 
-struct ContactLaw {
-  LawKind kind = LawKind::viscoelastic_hertz;
-  double damping = 0.0;           // c_d
-  double stiffness = 1.0;         // c_s
-  double initial_velocity = 1.0;  // v0 = x'(0) in the law's own units
-  double parameter = 0.0;         // ζ = β v^{1/5} (Hertz) or the damping ratio r (dash-pot)
-  // Natural scaling (x'(0) = 1): x_natural = x / length_scale, τ_natural = τ / time_scale.
-  double length_scale = 1.0;
-  double time_scale = 1.0;
+// Natural-unit magnitudes (x'(0) = 1) of the smallest compression, velocity and dissipation integral that
+// decide the requested results: the tolerance policies scale absolute tolerances with them.
+struct ResolutionScales {
+  double x = 1.0;
+  double velocity = 1.0;
+  double dissipation = 1.0;
+};
 
+// Whether the naive end (x back to 0) exists: for every ζ (viscoelastic Hertz), below a critical ζ known in
+// closed form (the dash-pot, Tsuji), or decided by the solve (constant damping: the overlap may approach 0
+// only as τ -> ∞; ContactLaw::naive_end_excluded certifies it).
+enum class NaiveEndExistence { always, below_critical_zeta, decided_by_solve };
+
+// ε and 1 - ε at an end, each computed in the form that keeps its relative accuracy.
+struct EndValues {
+  double eps = 0.0;
+  double one_minus_eps = 0.0;
+};
+
+// A member of the family with its coefficients: a value with invariants, built by the factories below.
+class ContactLaw {
+ public:
+  // The natural viscoelastic Hertz law at ζ = 0 (undamped Hertz spheres).
+  ContactLaw() = default;
+
+  // The natural form x'' + ζ x^b x' + x^a = 0, x'(0) = 1 of a member; ζ >= 0 finite (> 0 for the dash-pot).
+  static ContactLaw natural(LawKind kind, double zeta);
+  // A DEM force F = k ξ^a + γ ξ^b ξ' on effective mass m at impact speed v (SI: k in N/m^a, γ in
+  // N s/m^{1+b}, m in kg, v in m/s), as its natural form: ζ = (γ/m) v^b T^{b+1} with the time scale
+  // T = (v^{1-a} m/k)^{1/(1+a)} s and the length scale v·T m. Throws InvalidInput naming a bad argument.
+  static ContactLaw physical(LawKind kind, double stiffness_N_per_m_a, double damping_coefficient,
+                             double effective_mass_kg, double impact_speed_m_s);
   // Viscoelastic Hertz in natural units: x'' + ζ x' sqrt(x) + x^{3/2} = 0, x'(0) = 1.
   static ContactLaw hertz_natural(double zeta);
   // Viscoelastic Hertz in the 2008 paper's scaling (its Eq. 23):
   // x'' + β v^{-1/5} x' sqrt(x) + v^{-2/5} x^{3/2} = 0, x'(0) = v^{4/5};
   // β in s^{1/5} m^{-1/5} (after the paper's scaling of length and time), v the impact speed.
   static ContactLaw hertz_scaled(double beta, double velocity);
-  // Linear dash-pot x'' + 2 r x' + x = 0, x'(0) = 1 (time in units of 1/ω0; r = β/ω0 of the 2008 paper).
+  // Linear dash-pot x'' + 2 r x' + x = 0, x'(0) = 1 (time in units of 1/ω0; r = β/ω0 of the 2008 paper):
+  // the member linear_dashpot at ζ = 2r.
   static ContactLaw linear_dashpot(double damping_ratio);
+  // Coefficients taken as given, no check at all: only for tests of how the engines report a broken law
+  // (a NaN force, no stiffness).
+  static ContactLaw unchecked(LawKind kind, double damping, double stiffness);
 
-  [[nodiscard]] double shape(double x) const {
-    if (kind == LawKind::linear_dashpot) return 1.0;
-    return x > 0.0 ? std::sqrt(x) : 0.0;
+  [[nodiscard]] LawKind kind() const { return kind_; }
+  [[nodiscard]] double zeta() const { return zeta_; }  // ζ of the natural form
+  // The parameter results are labelled with: ζ, or the damping ratio r = ζ/2 for the linear dash-pot.
+  [[nodiscard]] double parameter() const { return kind_ == LawKind::linear_dashpot ? 0.5 * zeta_ : zeta_; }
+  // "zeta" | "damping-ratio": the name of parameter() in messages.
+  [[nodiscard]] const char* parameter_name() const;
+  [[nodiscard]] double damping() const { return damping_; }                    // c_d
+  [[nodiscard]] double stiffness() const { return stiffness_; }                // c_s
+  [[nodiscard]] double initial_velocity() const { return initial_velocity_; }  // x'(0) in the law's units
+  // x_natural = x / length_scale, τ_natural = τ / time_scale (1 for a natural law).
+  [[nodiscard]] double length_scale() const { return length_scale_; }
+  [[nodiscard]] double time_scale() const { return time_scale_; }
+  [[nodiscard]] bool is_natural() const { return initial_velocity_ == 1.0 && time_scale_ == 1.0; }
+  // The same law in natural units (ContactLaw::natural(kind(), zeta())).
+  [[nodiscard]] ContactLaw natural_form() const;
+  [[nodiscard]] double elastic_exponent() const { return a_; }  // a
+  [[nodiscard]] double damping_exponent() const { return b_; }  // b
+  [[nodiscard]] bool speed_independent() const { return restitution::speed_independent(kind_); }
+
+  // The smooth variable near x = 0: u = x^{1/q} with q the smallest integer making q·a and q·b integers
+  // (2 for viscoelastic Hertz and constant damping, 4 for Tsuji, 1 for the dash-pot). The solution has terms
+  // τ^{b+2}, τ^{a+2}, ... at τ = 0: analytic in u, not in τ (docs/design.md §4).
+  [[nodiscard]] int smoothing_root() const { return q_; }
+  [[nodiscard]] double compression_of(double u) const {  // x = u^q
+    if (q_ == 2) return u * u;
+    if (q_ == 4) return (u * u) * (u * u);
+    return q_ == 1 ? u : std::pow(u, q_);
   }
+  [[nodiscard]] double dcompression_du(double u) const {  // q u^{q-1}
+    if (q_ == 2) return 2.0 * u;
+    if (q_ == 4) return 4.0 * u * u * u;
+    return q_ == 1 ? 1.0 : q_ * std::pow(u, q_ - 1);
+  }
+  [[nodiscard]] double smooth_variable(double x) const {  // u = x^{1/q}
+    if (q_ == 2) return std::sqrt(x);
+    if (q_ == 4) return std::sqrt(std::sqrt(x));
+    return q_ == 1 ? x : std::pow(x, 1.0 / q_);
+  }
+
+  [[nodiscard]] double shape(double x) const { return detail::continued_power(x, b_); }  // w(x) = x^b
   [[nodiscard]] double shape_derivative(double x) const {
-    if (x <= 0.0 || kind == LawKind::linear_dashpot) return 0.0;
-    return 0.5 / std::sqrt(x);
+    if (x <= 0.0 || b_ == 0.0) return 0.0;
+    return b_ / detail::positive_power(x, 1.0 - b_);
   }
-  // c_d x' + c_s x: the force divided by w(x); it changes sign at the delayed-recovery end.
-  [[nodiscard]] double force_factor(double x, double v) const { return damping * v + stiffness * x; }
+  // c_d x' + c_s x^{a-b}: the force divided by w(x); it changes sign at the force-zero end.
+  [[nodiscard]] double force_factor(double x, double v) const {
+    return damping_ * v + stiffness_ * detail::continued_power(x, a_ - b_);
+  }
   [[nodiscard]] double acceleration(double x, double v) const { return -shape(x) * force_factor(x, v); }
   [[nodiscard]] double dacceleration_dx(double x, double v) const {
-    return -(shape_derivative(x) * force_factor(x, v) + shape(x) * stiffness);
+    return -(shape_derivative(x) * force_factor(x, v) + shape(x) * (stiffness_ * elastic_slope(x)));
   }
-  [[nodiscard]] double dacceleration_dv(double x) const { return -shape(x) * damping; }
+  [[nodiscard]] double dacceleration_dv(double x) const { return -shape(x) * damping_; }
   // The dissipated energy is D = c_d · ∫ w(x) x'^2 dτ; the integrand is kept free of c_d so that it stays
   // of order one as c_d -> 0 and D keeps full relative accuracy.
   [[nodiscard]] double dissipation_integrand(double x, double v) const { return shape(x) * v * v; }
@@ -66,11 +175,61 @@ struct ContactLaw {
     return shape_derivative(x) * v * v;
   }
   [[nodiscard]] double ddissipation_integrand_dv(double x, double v) const { return 2.0 * shape(x) * v; }
+  // U(x) = c_s x^{a+1}/(a+1), 0 without overlap (written x·x·x^{a-1}: every member has a >= 1).
   [[nodiscard]] double elastic_energy(double x) const {
     if (x <= 0.0) return 0.0;
-    return kind == LawKind::viscoelastic_hertz ? stiffness * 0.4 * x * x * std::sqrt(x)
-                                               : stiffness * 0.5 * x * x;
+    return stiffness_ * energy_coefficient_ * x * x * detail::positive_power(x, a_ - 1.0);
   }
+
+  // ε and 1 - ε at an end reached at compression x (law's units) with velocity `velocity` and dissipation
+  // integral I = ∫ w(x) x'^2 dτ: ε from the velocity, 1 - ε from the energy balance
+  // 1 - ε² = 2(c_d I + U(x))/v0², each where it keeps full relative accuracy (ε <= 1/2 and ε > 1/2).
+  [[nodiscard]] EndValues end_values(double x, double velocity, double dissipation_integral) const;
+
+  // What the tolerance policies need (natural units unless said otherwise), derived from the scaling of
+  // the member (docs/contact_laws.md): the magnitudes that decide the requested ends, a factor (<= 1) on the
+  // local tolerance where the end is ill-conditioned, and a time limit (law's own τ) no end lies beyond.
+  [[nodiscard]] ResolutionScales resolution_scales(bool naive_end) const;
+  [[nodiscard]] double conditioning(bool naive_end) const;
+  [[nodiscard]] double time_limit(bool naive_end) const;
+
+  [[nodiscard]] NaiveEndExistence naive_end_existence() const;
+  // For below_critical_zeta: whether the naive end exists at this ζ (ζ < 2 sqrt(b+1): r < 1 for the
+  // dash-pot, ζ < sqrt(5) for Tsuji); for always true; for decided_by_solve true (the solve decides).
+  [[nodiscard]] bool naive_end_may_exist() const;
+  // For decided_by_solve: a function of the state that is <= 0 only where the overlap provably never
+  // returns to 0 (x > 0, x' <= 0 in the invariant region x' >= -k x^{b+1}, x^{a-2b-1} < ζ²/(4(b+1)),
+  // k = ζ/(2(b+1)): docs/contact_laws.md), positive before maximal compression; natural units.
+  [[nodiscard]] double naive_end_excluded(double x, double v) const;
+  // Below this ζ the force-zero end lies within rounding of x = 0 (ζ|x'| = x^{a-b} there): the two ends
+  // differ in 1 - ε by a relative ζ^{(b+1)/(a-b)} < 1e-30, and the engines report the naive end's ε for it.
+  [[nodiscard]] double indistinguishable_ends_zeta() const;
+  // The compression at the force-zero end for such a ζ, from the velocity there.
+  [[nodiscard]] double force_zero_compression(double velocity) const {
+    return detail::positive_power(damping_ * -velocity / stiffness_, 1.0 / (a_ - b_));
+  }
+
+ private:
+  ContactLaw(LawKind kind, double zeta);
+  // d x^{a-b}/dx
+  [[nodiscard]] double elastic_slope(double x) const {
+    const double e = a_ - b_;
+    if (e == 1.0) return 1.0;
+    if (x <= 0.0) return e == std::floor(e) ? e * std::pow(x, e - 1.0) : 0.0;
+    return e * detail::positive_power(x, e - 1.0);
+  }
+
+  LawKind kind_ = LawKind::viscoelastic_hertz;
+  double a_ = 1.5;
+  double b_ = 0.5;
+  int q_ = 2;
+  double energy_coefficient_ = 0.4;  // 1/(a+1)
+  double zeta_ = 0.0;
+  double damping_ = 0.0;
+  double stiffness_ = 1.0;
+  double initial_velocity_ = 1.0;
+  double length_scale_ = 1.0;
+  double time_scale_ = 1.0;
 };
 
 }  // namespace restitution

@@ -22,21 +22,28 @@ struct EpsOptions {
 };
 
 ContactLaw law_from(const EpsOptions& o) {
-  if (o.law == "linear-dashpot") {
-    if (o.zeta || o.beta || o.velocity)
-      throw InvalidInput("--law linear-dashpot takes --damping-ratio, not --zeta, --beta or --velocity");
-    if (!o.damping_ratio) throw InvalidInput("--law linear-dashpot needs --damping-ratio");
-    return ContactLaw::linear_dashpot(*o.damping_ratio);
+  const LawKind kind = law_from_name(o.law);
+  if (kind != LawKind::viscoelastic_hertz && (o.beta || o.velocity)) {
+    throw InvalidInput(
+        fmt::format("--beta and --velocity belong to --law viscoelastic-hertz; --law {} takes {}", o.law,
+                    kind == LawKind::linear_dashpot ? "--damping-ratio or --zeta" : "--zeta"));
   }
-  if (o.damping_ratio) throw InvalidInput("--damping-ratio belongs to --law linear-dashpot");
+  if (o.damping_ratio && kind != LawKind::linear_dashpot) {
+    throw InvalidInput("--damping-ratio belongs to --law linear-dashpot");
+  }
+  if (kind == LawKind::linear_dashpot) {
+    if (o.zeta && o.damping_ratio) throw InvalidInput("give either --zeta or --damping-ratio, not both");
+    if (o.damping_ratio) return ContactLaw::linear_dashpot(*o.damping_ratio);
+    if (!o.zeta) throw InvalidInput("--law linear-dashpot needs --damping-ratio (or --zeta = 2 r)");
+  }
   if (o.zeta) {
     if (o.beta || o.velocity) throw InvalidInput("give either --zeta or --beta with --velocity, not both");
     require_checked_zeta(*o.zeta);
-    return ContactLaw::hertz_natural(*o.zeta);
+    return ContactLaw::natural(kind, *o.zeta);
   }
   if (o.beta && o.velocity) {
     const ContactLaw law = ContactLaw::hertz_scaled(*o.beta, *o.velocity);
-    require_checked_zeta(law.parameter);
+    require_checked_zeta(law.parameter());
     return law;
   }
   if (o.beta || o.velocity) throw InvalidInput("--beta and --velocity go together");
@@ -44,10 +51,11 @@ ContactLaw law_from(const EpsOptions& o) {
 }
 
 void print_table(const CollisionResult& r) {
-  const bool hertz = r.law == LawKind::viscoelastic_hertz;
+  const bool dashpot = r.law == LawKind::linear_dashpot;
   fmt::print("{} collision, {} = {}, tolerance {:g} (relative to min(eps, 1-eps)), method {}\n",
-             law_name(r.law), hertz ? "zeta" : "damping ratio r", r.parameter, r.tolerance,
+             law_name(r.law), dashpot ? "damping ratio r" : "zeta", r.parameter, r.tolerance,
              method_name(r.method));
+  if (r.speed_independent) fmt::print("eps does not depend on the impact speed for this law\n");
   fmt::print("times and lengths in natural units (x'(0) = 1)\n");
   fmt::print("  maximal compression   tau = {:.12g}   x = {:.12g}\n", r.max_compression.tau,
              r.max_compression.x);
@@ -83,12 +91,16 @@ int run_eps(const EpsOptions& o) {
 void add_eps_command(CLI::App& app, Action& chosen) {
   auto o = std::make_shared<EpsOptions>();
   CLI::App* cmd = app.add_subcommand("eps", "coefficient of restitution of one collision");
-  cmd->add_option("--zeta", o->zeta, "zeta = beta v^{1/5} >= 0 (natural form of the equation)");
+  cmd->add_option(
+      "--zeta", o->zeta,
+      "zeta >= 0 of the natural form x'' + zeta x^b x' + x^a = 0 (viscoelastic Hertz: zeta = beta "
+      "v^{1/5}; linear dash-pot: zeta = 2 r)");
   cmd->add_option("--beta", o->beta,
                   "beta >= 0 in s^{1/5} m^{-1/5} (with --velocity: the 2008 paper's Eq. 23)");
   cmd->add_option("--velocity", o->velocity, "impact speed v > 0 (scaled as in the 2008 paper's Eq. 23)");
-  cmd->add_option("--law", o->law, "contact law: viscoelastic-hertz or linear-dashpot")
-      ->check(CLI::IsMember({"viscoelastic-hertz", "linear-dashpot"}))
+  cmd->add_option("--law", o->law,
+                  "contact law: viscoelastic-hertz, tsuji-hertz, hertz-constant-damping or linear-dashpot "
+                  "(docs/contact_laws.md)")
       ->default_str("viscoelastic-hertz");
   cmd->add_option("--damping-ratio", o->damping_ratio,
                   "damping ratio r > 0 of the linear dash-pot x'' + 2r x' + x = 0");

@@ -15,9 +15,9 @@ void write_end(JsonWriter& json, const char* name, const EndResult& end) {
 }  // namespace
 
 void write_collision_fields(JsonWriter& json, const CollisionResult& result) {
-  const bool hertz = result.law == LawKind::viscoelastic_hertz;
-  json.field(hertz ? "zeta" : "damping_ratio", result.parameter);
+  json.field(result.law == LawKind::linear_dashpot ? "damping_ratio" : "zeta", result.parameter);
   json.field("law", law_name(result.law));
+  json.field("speed_independent", result.speed_independent);
   json.field("tolerance", result.tolerance);
   json.field("method", method_name(result.method));
   json.key("max_compression").begin_object();

@@ -79,7 +79,7 @@ Method resolve_method(const ContactLaw& law, Method requested, const EndSelectio
   // problem stiff. Only the naive tail is stiff: up to the delayed-recovery end Adams takes 2-4x fewer
   // steps than BDF at every ζ up to 1e4.
   if (!ends.naive) return Method::adams;
-  return law.parameter < 5.0 ? Method::adams : Method::bdf;
+  return law.parameter() < 5.0 ? Method::adams : Method::bdf;
 }
 
 struct CollisionSolver::Impl {
@@ -101,17 +101,14 @@ CollisionSolver& CollisionSolver::operator=(CollisionSolver&&) noexcept = defaul
 
 namespace {
 
-// Below this ζ the two ends differ in 1 - ε by less than 1e-30 relative (see end_phase).
-constexpr double kIndistinguishableEndsZeta = 1e-20;
-
 // A point of the trajectory in the law's own units, whatever form produced it.
 struct Point {
   double tau, x, velocity, dissipation;
 };
 
-Point point_of(Form form, double t, const State& s) {
+Point point_of(const ContactLaw& law, Form form, double t, const State& s) {
   if (form == Form::time) return {t, s[detail::kFirst], s[detail::kVelocity], s[detail::kDissipation]};
-  return {s[detail::kFirst], t * t, s[detail::kVelocity], s[detail::kDissipation]};
+  return {s[detail::kFirst], law.compression_of(t), s[detail::kVelocity], s[detail::kDissipation]};
 }
 
 const char* end_names(const EndSelection& ends) {
@@ -119,26 +116,17 @@ const char* end_names(const EndSelection& ends) {
   return ends.naive ? "the naive end" : "the delayed-recovery end";
 }
 
-// ε from the velocity at the end, 1-ε from the energy balance 1-ε^2 = 2(D + U(x_end))/v0^2, which keeps
-// full relative accuracy as ε -> 1; each is reported from the form that is accurate in its regime.
 EndResult end_result(const ContactLaw& law, const Point& p) {
   EndResult end;
-  const double v0 = law.initial_velocity;
-  const double eps_from_velocity = -p.velocity / v0;
+  const double v0 = law.initial_velocity();
   const double x = std::max(p.x, 0.0);  // a root located a rounding error past x = 0
-  const double one_minus_eps_squared =
-      2.0 * (law.damping * p.dissipation + law.elastic_energy(x)) / (v0 * v0);
-  if (eps_from_velocity > 0.5) {
-    end.one_minus_eps = one_minus_eps_squared / (1.0 + eps_from_velocity);
-    end.eps = 1.0 - end.one_minus_eps;
-  } else {
-    end.eps = eps_from_velocity;
-    end.one_minus_eps = 1.0 - eps_from_velocity;
-  }
-  end.tau = p.tau / law.time_scale;
-  end.x = x / law.length_scale;
+  const EndValues values = law.end_values(x, p.velocity, p.dissipation);
+  end.eps = values.eps;
+  end.one_minus_eps = values.one_minus_eps;
+  end.tau = p.tau / law.time_scale();
+  end.x = x / law.length_scale();
   end.velocity = p.velocity / v0;
-  end.dissipated_energy = law.damping * p.dissipation / (v0 * v0);
+  end.dissipated_energy = law.damping() * p.dissipation / (v0 * v0);
   return end;
 }
 
@@ -148,21 +136,22 @@ class CollisionRun {
   CollisionRun(const ContactLaw& law, const SolveOptions& options, const detail::SolvePlan& plan,
                CvodeIntegrator& integrator)
       : law_(law), options_(options), plan_(plan), integrator_(integrator) {
-    result_.value.law = law.kind;
-    result_.value.parameter = law.parameter;
+    result_.value.law = law.kind();
+    result_.value.parameter = law.parameter();
+    result_.value.speed_independent = law.speed_independent();
     result_.value.tolerance = options.tolerance;
     result_.value.method = plan.method;
   }
 
   CollisionResult run() {
-    const State start{0.0, law_.initial_velocity, 0.0};
-    if (options_.keep_trajectory) record({0.0, 0.0, law_.initial_velocity, 0.0});
+    const State start{0.0, law_.initial_velocity(), 0.0};
+    if (options_.keep_trajectory) record({0.0, 0.0, law_.initial_velocity(), 0.0});
     if (!plan_.smooth_ends) {
       time_phase(Form::time, 0.0, start, /*switch_x=*/-1.0);
     } else {
       // Start: u from 0 until x' has halved (or x = start_phase_x); then τ around maximal compression
       // until x falls below 0.9 times the compression where the start phase ended; then u down to 0.
-      const Point a = compression_phase(0.0, std::sqrt(plan_.start_phase_x), start, true);
+      const Point a = compression_phase(0.0, law_.smooth_variable(plan_.start_phase_x), start, true);
       Point b = a;
       if (pending()) b = time_phase(Form::time, a.tau, {a.x, a.velocity, a.dissipation}, 0.9 * a.x);
       if (pending()) end_phase(b);
@@ -183,16 +172,34 @@ class CollisionRun {
   }
 
   [[nodiscard]] NumericalFailure failure(const std::string& what) const {
-    const char* parameter = law_.kind == LawKind::viscoelastic_hertz ? "zeta" : "damping-ratio";
-    return NumericalFailure{
-        fmt::format("{} (law {}, {}={}, {}, tolerance {:g}, method {})", what, law_name(law_.kind), parameter,
-                    law_.parameter, end_names(options_.ends), options_.tolerance, method_name(plan_.method))};
+    return NumericalFailure{fmt::format("{} (law {}, {}={}, {}, tolerance {:g}, method {})", what,
+                                        law_name(law_.kind()), law_.parameter_name(), law_.parameter(),
+                                        end_names(options_.ends), options_.tolerance,
+                                        method_name(plan_.method))};
+  }
+
+  // The naive end was requested but the state entered a region from which x never returns to 0.
+  [[noreturn]] void no_naive_end(const Point& p) {
+    finish_phase();
+    throw InvalidInput(fmt::format(
+        "the naive end does not exist for law {} at zeta={}: from tau={:.6g} (x={:.6g}, x'={:.6g}) the "
+        "overlap "
+        "approaches 0 only as tau -> infinity (eps = 0 in the sense of the overdamped dash-pot); ask for the "
+        "delayed-recovery end",
+        law_name(law_.kind()), law_.zeta(), p.tau, p.x, p.velocity));
+  }
+
+  // Whether a phase watches Event::naive_end_excluded: the naive end is pending and only the solve can tell
+  // whether it exists.
+  [[nodiscard]] bool watch_naive_end_exclusion() const {
+    return options_.ends.naive && !result_.value.naive &&
+           law_.naive_end_existence() == NaiveEndExistence::decided_by_solve && law_.zeta() > 0.0;
   }
 
   void record(const Point& p) {
     result_.value.trajectory.push_back(
-        {p.tau / law_.time_scale, p.x / law_.length_scale, p.velocity / law_.initial_velocity,
-         law_.acceleration(p.x, p.velocity) * law_.time_scale / law_.initial_velocity});
+        {p.tau / law_.time_scale(), p.x / law_.length_scale(), p.velocity / law_.initial_velocity(),
+         law_.acceleration(p.x, p.velocity) * law_.time_scale() / law_.initial_velocity()});
   }
 
   void begin(const detail::PhaseSettings& settings, double t0, const State& state, const Event* events,
@@ -207,7 +214,7 @@ class CollisionRun {
   CvodeIntegrator::Step advance() {
     try {
       CvodeIntegrator::Step step = integrator_.advance();
-      if (options_.keep_trajectory) record(point_of(form_, step.t, step.state));
+      if (options_.keep_trajectory) record(point_of(law_, form_, step.t, step.state));
       return step;
     } catch (const NumericalFailure& e) {
       result_.value.stats += integrator_.phase_stats();
@@ -219,7 +226,7 @@ class CollisionRun {
 
   void found_max_compression(const Point& p) {
     if (result_.max_compression_found) return;
-    result_.value.max_compression = {p.tau / law_.time_scale, p.x / law_.length_scale};
+    result_.value.max_compression = {p.tau / law_.time_scale(), p.x / law_.length_scale()};
     result_.max_compression_found = true;
   }
 
@@ -238,11 +245,14 @@ class CollisionRun {
     } else if (options_.ends.delayed_recovery && !result_.value.delayed_recovery) {
       events[static_cast<std::size_t>(count++)] = Event::delayed_recovery_end;
     }
+    const int excluded = !is_start && watch_naive_end_exclusion() ? count++ : -1;
+    if (excluded >= 0) events[static_cast<std::size_t>(excluded)] = Event::naive_end_excluded;
     begin(settings, u0, state, events.data(), count);
     while (true) {
       const CvodeIntegrator::Step step = advance();
-      const Point p = point_of(Form::compression, step.t, step.state);
-      if (step.reached_stop || step.events_found[0]) {
+      const Point p = point_of(law_, Form::compression, step.t, step.state);
+      if (excluded >= 0 && step.events_found[static_cast<std::size_t>(excluded)]) no_naive_end(p);
+      if (step.reached_stop || (count > 0 && excluded != 0 && step.events_found[0])) {
         if (!is_start && step.events_found[0]) {
           result_.value.delayed_recovery = end_result(law_, p);
           if (!pending()) {
@@ -259,20 +269,22 @@ class CollisionRun {
   }
 
   void end_phase(const Point& b) {
-    const Point c = compression_phase(std::sqrt(b.x), 0.0, {b.tau, b.velocity, b.dissipation}, false);
+    const Point c =
+        compression_phase(law_.smooth_variable(b.x), 0.0, {b.tau, b.velocity, b.dissipation}, false);
     if (!pending()) return;
     // Reached u = 0: the naive end, exactly.
     const Point naive{c.tau, 0.0, c.velocity, c.dissipation};
     if (options_.ends.naive) result_.value.naive = end_result(law_, naive);
     if (options_.ends.delayed_recovery && !result_.value.delayed_recovery) {
-      // The force factor ζx' + x reaches zero at x ≈ ζ|x'| (natural units), which for ζ below about 1e-295
-      // lies within rounding of u = 0 where CVODE cannot separate it from the naive end. The ends then
-      // differ in 1 - ε by a relative O(ζ^{3/2}): take the naive end's ε at x = ζ|x'|.
-      if (law_.damping > kIndistinguishableEndsZeta || law_.kind != LawKind::viscoelastic_hertz) {
+      // The force factor ζx' + x^{a-b} reaches zero at x = (ζ|x'|)^{1/(a-b)} (natural units), which for tiny
+      // ζ (below about 1e-295 for viscoelastic Hertz) lies within rounding of u = 0 where CVODE cannot
+      // separate it from the naive end. The ends then differ in 1 - ε by a relative ζ^{(b+1)/(a-b)}
+      // (ζ^{3/2} for Hertz): take the naive end's ε at that x.
+      if (law_.damping() > law_.indistinguishable_ends_zeta()) {
         throw failure("no delayed-recovery end before the overlap vanished");
       }
       result_.value.delayed_recovery = end_result(law_, naive);
-      result_.value.delayed_recovery->x = law_.damping * -naive.velocity;
+      result_.value.delayed_recovery->x = law_.force_zero_compression(naive.velocity);
     }
   }
 
@@ -295,13 +307,14 @@ class CollisionRun {
     } else if (options_.ends.naive) {
       events[static_cast<std::size_t>(count++)] = Event::naive_end;
     }
+    if (watch_naive_end_exclusion()) events[static_cast<std::size_t>(count++)] = Event::naive_end_excluded;
     begin(settings, tau0, state, events.data(), count);
     while (true) {
       const CvodeIntegrator::Step step = advance();
-      const Point p = point_of(form, step.t, step.state);
+      const Point p = point_of(law_, form, step.t, step.state);
       if (step.reached_stop) {
         finish_phase();
-        throw failure(fmt::format("no end of the collision before tau={:g}", p.tau / law_.time_scale));
+        throw failure(fmt::format("no end of the collision before tau={:g}", p.tau / law_.time_scale()));
       }
       for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
         if (!step.events_found[i]) continue;
@@ -320,6 +333,8 @@ class CollisionRun {
           case Event::below_switch:
             finish_phase();
             return p;
+          case Event::naive_end_excluded:
+            no_naive_end(p);
           case Event::velocity_halved:
             break;
         }
@@ -350,15 +365,11 @@ void check_solvable(const ContactLaw& law, const SolveOptions& options) {
 }
 
 CollisionResult CollisionSolver::solve(const ContactLaw& given, const SolveOptions& options) {
-  // Every result is reported in natural units, and a Hertz law depends only on ζ: integrate the natural
+  // Every result is reported in natural units, and a law depends only on its ζ: integrate the natural
   // form, whose magnitudes are of order one, rather than the (β, v) form, whose lengths and velocities
   // (v^{4/5}) under- or overflow the absolute tolerances at extreme speeds (v = 1e-150 m/s).
-  // Only a well-formed (β, v) law is converted; a hand-made one (tests of failures) is integrated as given.
-  const bool scaled = given.kind == LawKind::viscoelastic_hertz && given.initial_velocity != 1.0 &&
-                      given.time_scale == 1.0 && std::isfinite(given.damping) &&
-                      std::isfinite(given.stiffness) && std::isfinite(given.initial_velocity) &&
-                      std::isfinite(given.parameter);
-  const ContactLaw law = scaled ? ContactLaw::hertz_natural(given.parameter) : given;
+  // Hand-made laws (ContactLaw::unchecked, tests of failures) are natural and integrated as given.
+  const ContactLaw law = given.is_natural() ? given : given.natural_form();
   if (options.method == Method::taylor) return solve_with_taylor(law, options);
   const detail::SolvePlan plan = detail::plan_solve(law, options);
   return CollisionRun(law, options, plan, impl_->integrator(plan.method)).run();

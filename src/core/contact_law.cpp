@@ -1,8 +1,8 @@
 #include "restitution/contact_law.hpp"
 
 #include <fmt/core.h>
-#include <cmath>
 
+#include <cmath>
 #include <string>
 
 #include "restitution/errors.hpp"
@@ -16,6 +16,23 @@ void require_finite_nonnegative(double value, const char* name) {
   }
 }
 
+void require_finite_positive(double value, const char* name) {
+  if (!std::isfinite(value) || value <= 0.0) {
+    throw InvalidInput(fmt::format("{} must be finite and > 0, got {}", name, value));
+  }
+}
+
+// The smallest q with q·a and q·b integers (the exponents are rational with small denominators).
+int smoothing_root_of(const LawExponents& e) {
+  for (int q = 1; q <= 64; ++q) {
+    const double qa = q * e.elastic;
+    const double qb = q * e.damping;
+    if (qa == std::round(qa) && qb == std::round(qb)) return q;
+  }
+  throw InvalidInput(fmt::format("the exponents a={} b={} are not rationals with a denominator <= 64",
+                                 e.elastic, e.damping));
+}
+
 }  // namespace
 
 void require_checked_zeta(double zeta) {
@@ -26,49 +43,95 @@ void require_checked_zeta(double zeta) {
   }
 }
 
-const char* law_name(LawKind kind) {
-  return kind == LawKind::viscoelastic_hertz ? "viscoelastic-hertz" : "linear-dashpot";
+ContactLaw::ContactLaw(LawKind kind, double zeta) : kind_(kind), zeta_(zeta), damping_(zeta) {
+  const LawExponents e = law_exponents(kind);
+  a_ = e.elastic;
+  b_ = e.damping;
+  q_ = smoothing_root_of(e);
+  energy_coefficient_ = 1.0 / (a_ + 1.0);
+}
+
+const char* ContactLaw::parameter_name() const {
+  return kind_ == LawKind::linear_dashpot ? "damping-ratio" : "zeta";
+}
+
+ContactLaw ContactLaw::natural(LawKind kind, double zeta) {
+  if (kind == LawKind::linear_dashpot) {
+    // The dash-pot's ζ = 2r keeps the refusal of r = 0 of linear_dashpot.
+    require_finite_positive(zeta, "zeta of the linear dash-pot");
+  } else {
+    require_finite_nonnegative(zeta, "zeta");
+  }
+  return {kind, zeta};
+}
+
+ContactLaw ContactLaw::physical(LawKind kind, double stiffness_N_per_m_a, double damping_coefficient,
+                                double effective_mass_kg, double impact_speed_m_s) {
+  require_finite_positive(stiffness_N_per_m_a, "stiffness");
+  require_finite_nonnegative(damping_coefficient, "damping coefficient");
+  require_finite_positive(effective_mass_kg, "effective mass");
+  require_finite_positive(impact_speed_m_s, "impact speed");
+  const auto [a, b] = law_exponents(kind);
+  const double time_scale_s = std::pow(
+      std::pow(impact_speed_m_s, 1.0 - a) * effective_mass_kg / stiffness_N_per_m_a, 1.0 / (1.0 + a));
+  const double zeta = damping_coefficient / effective_mass_kg * std::pow(impact_speed_m_s, b) *
+                      std::pow(time_scale_s, b + 1.0);
+  if (!std::isfinite(zeta) || !(time_scale_s > 0.0)) {
+    throw InvalidInput(fmt::format(
+        "stiffness={}, damping coefficient={}, mass={} kg and speed={} m/s give a natural zeta outside the "
+        "range of double",
+        stiffness_N_per_m_a, damping_coefficient, effective_mass_kg, impact_speed_m_s));
+  }
+  return natural(kind, zeta);
 }
 
 ContactLaw ContactLaw::hertz_natural(double zeta) {
   require_finite_nonnegative(zeta, "zeta");
-  ContactLaw law;
-  law.kind = LawKind::viscoelastic_hertz;
-  law.damping = zeta;
-  law.parameter = zeta;
-  return law;
+  return {LawKind::viscoelastic_hertz, zeta};
 }
 
 ContactLaw ContactLaw::hertz_scaled(double beta, double velocity) {
   require_finite_nonnegative(beta, "beta");
-  if (!std::isfinite(velocity) || velocity <= 0.0) {
-    throw InvalidInput(fmt::format("velocity must be finite and > 0, got {}", velocity));
-  }
-  ContactLaw law;
-  law.kind = LawKind::viscoelastic_hertz;
-  law.damping = beta * std::pow(velocity, -0.2);
-  law.stiffness = std::pow(velocity, -0.4);
-  law.initial_velocity = std::pow(velocity, 0.8);
-  law.parameter = beta * std::pow(velocity, 0.2);
-  if (!std::isfinite(law.damping) || !std::isfinite(law.stiffness) || law.initial_velocity <= 0.0 ||
-      !std::isfinite(law.initial_velocity) || !std::isfinite(law.parameter)) {
+  require_finite_positive(velocity, "velocity");
+  ContactLaw law(LawKind::viscoelastic_hertz, beta * std::pow(velocity, 0.2));
+  law.damping_ = beta * std::pow(velocity, -0.2);
+  law.stiffness_ = std::pow(velocity, -0.4);
+  law.initial_velocity_ = std::pow(velocity, 0.8);
+  if (!std::isfinite(law.damping_) || !std::isfinite(law.stiffness_) || law.initial_velocity_ <= 0.0 ||
+      !std::isfinite(law.initial_velocity_) || !std::isfinite(law.zeta_)) {
     throw InvalidInput(fmt::format(
         "beta={} and velocity={} give a scaled equation outside the range of double", beta, velocity));
   }
   // x scales as v^{4/5}; τ is the same in both forms (x = v^{4/5} X turns Eq. 23 into the natural form).
-  law.length_scale = law.initial_velocity;
+  law.length_scale_ = law.initial_velocity_;
   return law;
 }
 
 ContactLaw ContactLaw::linear_dashpot(double damping_ratio) {
-  if (!std::isfinite(damping_ratio) || damping_ratio <= 0.0) {
-    throw InvalidInput(fmt::format("damping-ratio must be finite and > 0, got {}", damping_ratio));
-  }
-  ContactLaw law;
-  law.kind = LawKind::linear_dashpot;
-  law.damping = 2.0 * damping_ratio;
-  law.parameter = damping_ratio;
+  require_finite_positive(damping_ratio, "damping-ratio");
+  return {LawKind::linear_dashpot, 2.0 * damping_ratio};
+}
+
+ContactLaw ContactLaw::unchecked(LawKind kind, double damping, double stiffness) {
+  ContactLaw law(kind, damping);
+  law.stiffness_ = stiffness;
   return law;
+}
+
+ContactLaw ContactLaw::natural_form() const {
+  return {kind_, zeta_};
+}
+
+EndValues ContactLaw::end_values(double x, double velocity, double dissipation_integral) const {
+  const double v0 = initial_velocity_;
+  const double eps_from_velocity = -velocity / v0;
+  if (eps_from_velocity > 0.5) {
+    const double one_minus_eps_squared =
+        2.0 * (damping_ * dissipation_integral + elastic_energy(x)) / (v0 * v0);
+    const double one_minus_eps = one_minus_eps_squared / (1.0 + eps_from_velocity);
+    return {1.0 - one_minus_eps, one_minus_eps};
+  }
+  return {eps_from_velocity, 1.0 - eps_from_velocity};
 }
 
 }  // namespace restitution

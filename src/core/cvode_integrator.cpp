@@ -23,8 +23,8 @@ int right_hand_side(sunrealtype t, N_Vector y, N_Vector ydot, void* user_data) n
     d[kVelocity] = law.acceleration(s[kFirst], v);
     d[kDissipation] = law.dissipation_integrand(s[kFirst], v);
   } else {
-    const double x = t * t;
-    const double dtau_du = 2.0 * t / v;
+    const double x = law.compression_of(t);
+    const double dtau_du = law.dcompression_du(t) / v;
     d[kFirst] = dtau_du;
     d[kVelocity] = law.acceleration(x, v) * dtau_du;
     d[kDissipation] = law.dissipation_integrand(x, v) * dtau_du;
@@ -47,9 +47,9 @@ int jacobian(sunrealtype t, N_Vector y, N_Vector /*fy*/, SUNMatrix J, void* user
     SM_ELEMENT_D(J, kDissipation, kFirst) = law.ddissipation_integrand_dx(x, v);
     SM_ELEMENT_D(J, kDissipation, kVelocity) = law.ddissipation_integrand_dv(x, v);
   } else {
-    // Only x' appears on the right-hand side: d/dx' of g(x')·2u/x' is 2u (g'·x' - g)/x'^2.
-    const double x = t * t;
-    const double scale = 2.0 * t / (v * v);
+    // Only x' appears on the right-hand side: d/dx' of g(x')·q u^{q-1}/x' is q u^{q-1} (g'·x' - g)/x'^2.
+    const double x = law.compression_of(t);
+    const double scale = law.dcompression_du(t) / (v * v);
     SM_ELEMENT_D(J, kFirst, kVelocity) = -scale;
     SM_ELEMENT_D(J, kVelocity, kVelocity) = scale * (law.dacceleration_dv(x) * v - law.acceleration(x, v));
     SM_ELEMENT_D(J, kDissipation, kVelocity) =
@@ -61,7 +61,7 @@ int jacobian(sunrealtype t, N_Vector y, N_Vector /*fy*/, SUNMatrix J, void* user
 int event_functions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data) noexcept {
   const Data& data = *static_cast<Data*>(user_data);
   const double* s = N_VGetArrayPointer(y);
-  const double x = data.form == Form::time ? s[kFirst] : t * t;
+  const double x = data.form == Form::time ? s[kFirst] : data.law->compression_of(t);
   const double v = s[kVelocity];
   for (std::size_t i = 0; i < static_cast<std::size_t>(data.event_count); ++i) {
     if (data.ignored[i]) {
@@ -79,10 +79,13 @@ int event_functions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data) 
         g[i] = data.law->force_factor(x, v);
         break;
       case Event::velocity_halved:
-        g[i] = v - 0.5 * data.law->initial_velocity;
+        g[i] = v - 0.5 * data.law->initial_velocity();
         break;
       case Event::below_switch:
         g[i] = x - data.switch_x;
+        break;
+      case Event::naive_end_excluded:
+        g[i] = data.law->naive_end_excluded(x, v);
         break;
     }
   }

@@ -5,10 +5,11 @@
 //
 // Two forms of the same system, chosen per phase of the collision:
 //  * time form, independent variable τ, state (x, x', I);
-//  * compression form, independent variable u = sqrt(x), state (τ, x', I), valid while x' != 0:
-//        dτ/du = 2u/x',  dx'/du = 2u·a(u², x')/x',  dI/du = 2u·w(u²)·x'
-//    For Hertz spheres (w = sqrt(x) = u) this is analytic in u, where the time form has sqrt(τ)-type
-//    singularities at x = 0 that cost CVODE its order (docs/design.md §4).
+//  * compression form, independent variable u = x^{1/q} (ContactLaw::smoothing_root; q = 2 for Hertz
+//    spheres), state (τ, x', I), valid while x' != 0:
+//        dτ/du = q u^{q-1}/x',  dx'/du = q u^{q-1}·a(u^q, x')/x',  dI/du = q u^{q-1}·w(u^q)·x'
+//    This is analytic in u, where the time form has τ^{b+2}-type singularities at x = 0 that cost CVODE its
+//    order (docs/design.md §4).
 // I = ∫ w(x) x'^2 dτ is the dissipation integral (the dissipated energy is D = c_d · I).
 #include <array>
 #include <string>
@@ -34,6 +35,7 @@ enum class Event {
   delayed_recovery_end,  // c_d x' + c_s x = 0
   velocity_halved,       // x' = x'(0)/2: leave the compression form of the start
   below_switch,          // x = switch_x while decompressing: enter the compression form of the end
+  naive_end_excluded,    // the state enters a region from which x never returns to 0 (ContactLaw)
 };
 inline constexpr int kMaxEvents = 4;
 

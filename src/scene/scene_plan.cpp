@@ -17,7 +17,7 @@ class JobTable {
   explicit JobTable(std::vector<SolveJob>& jobs) : jobs_(jobs) {}
 
   std::size_t add(const ContactLaw& law, EndSelection ends, bool trajectory) {
-    const auto key = std::make_pair(static_cast<int>(law.kind), law.parameter);
+    const auto key = std::make_pair(static_cast<int>(law.kind()), law.parameter());
     auto [it, inserted] = index_.try_emplace(key, jobs_.size());
     if (inserted) jobs_.push_back(SolveJob{law, {false, false}, false});
     SolveJob& job = jobs_[it->second];

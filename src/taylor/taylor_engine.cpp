@@ -23,25 +23,24 @@ constexpr double kSmallestLocalTolerance = 1e-17;
 taylor::TaylorSettings settings_for(const ContactLaw& law, const SolveOptions& options) {
   taylor::TaylorSettings s;
   s.tolerance = std::max(options.tolerance * kLocalFactor, kSmallestLocalTolerance);
-  if (law.kind == LawKind::viscoelastic_hertz && law.parameter > 1.0) {
+  if (law.kind() == LawKind::viscoelastic_hertz && law.parameter() > 1.0) {
     // Large ζ: after the delayed-recovery end the force factor ζx' + x stays within ~ζ^{-5/3} x of zero
     // (x' relaxes onto -x/ζ), so a looser local error could keep it positive and miss the end.
-    s.tolerance = std::min(s.tolerance, 1e-3 * std::pow(law.parameter, -5.0 / 3.0));
+    s.tolerance = std::min(s.tolerance, 1e-3 * std::pow(law.parameter(), -5.0 / 3.0));
   }
   s.order = std::clamp(static_cast<int>(std::ceil(-0.5 * std::log(s.tolerance))) + 1 + kExtraOrder, 6,
                        taylor::kMaxOrder);
   s.naive = options.ends.naive;
   s.max_steps = options.max_steps_per_phase;  // bounds the whole solve, more strictly than per phase
   s.delayed_recovery = options.ends.delayed_recovery;
-  const double p = law.parameter;
+  const double p = law.parameter();
   const double z = std::max(p, 1.0);
-  if (law.kind == LawKind::viscoelastic_hertz) {
-    // Scales of what decides the result (as in the CVODE tolerance policy): for large ζ the delayed end has
-    // ε ~ ζ^{-5/3} at x ~ ζ^{-2/3}, the naive end ε ~ ζ^{-5} reached through x ~ ζ^{-4}.
-    const double velocity = options.ends.naive ? std::pow(z, -5.0) : std::pow(z, -5.0 / 3.0);
-    const double x = options.ends.naive ? std::pow(z, -4.0) : std::pow(z, -2.0 / 3.0);
-    s.compression_floor = {1e-2, 1e-2 * velocity, 1e-2 / z};
-    s.time_floor = {1e-2 * std::sqrt(x), 1e-2 * velocity, 1e-2 / z};
+  if (law.kind() == LawKind::viscoelastic_hertz) {
+    // Scales of what decides the result (the law's, as in the CVODE tolerance policy): for large ζ the
+    // delayed end has ε ~ ζ^{-5/3} at x ~ ζ^{-2/3}, the naive end ε ~ ζ^{-5} reached through x ~ ζ^{-4}.
+    const ResolutionScales m = law.resolution_scales(options.ends.naive);
+    s.compression_floor = {1e-2, 1e-2 * m.velocity, 1e-2 / z};
+    s.time_floor = {1e-2 * std::sqrt(m.x), 1e-2 * m.velocity, 1e-2 / z};
     // Below u ~ 1/ζ² the damping no longer dominates and the compression form is not stiff; above it,
     // for large ζ, the slow tail stays in the time form.
     s.end_switch_u_max = 1.0 / (z * z);
@@ -66,11 +65,9 @@ taylor::TaylorSettings settings_for(const ContactLaw& law, const SolveOptions& o
 }
 
 EndResult end_result(const ContactLaw& law, const taylor::TaylorPoint<double>& p) {
-  const bool hertz = law.kind == LawKind::viscoelastic_hertz;
-  const double damping = hertz ? law.parameter : 2.0 * law.parameter;
+  const double damping = law.damping();
   const double x = std::max(p.x, 0.0);
-  const double elastic = hertz ? 0.4 * x * x * std::sqrt(x) : 0.5 * x * x;
-  const auto values = taylor::end_values(damping, elastic, p);
+  const EndValues values = law.end_values(x, p.y, p.dissipation);
   EndResult end;
   end.eps = values.eps;
   end.one_minus_eps = values.one_minus_eps;
@@ -88,30 +85,37 @@ void check_taylor_request(const ContactLaw& law, const SolveOptions& options) {
   if (options.keep_trajectory) {
     throw InvalidInput("method taylor does not record trajectories: use --method bdf or adams");
   }
-  const bool hertz = law.kind == LawKind::viscoelastic_hertz;
-  if (hertz && options.ends.naive && law.parameter > kTaylorNaiveZetaMax) {
+  if (law.kind() != LawKind::viscoelastic_hertz && law.kind() != LawKind::linear_dashpot) {
+    throw InvalidInput(fmt::format(
+        "method taylor does not support law {}: its recurrences cover viscoelastic-hertz and linear-dashpot; "
+        "use the default method (auto) or bdf/adams",
+        law_name(law.kind())));
+  }
+  const bool hertz = law.kind() == LawKind::viscoelastic_hertz;
+  if (hertz && options.ends.naive && law.parameter() > kTaylorNaiveZetaMax) {
     throw InvalidInput(
         fmt::format("method taylor computes the naive end only for zeta <= {:g} (the overdamped naive tail "
                     "is stiff), got "
                     "zeta={}: use --method bdf",
-                    kTaylorNaiveZetaMax, law.parameter));
+                    kTaylorNaiveZetaMax, law.parameter()));
   }
 }
 
 CollisionResult solve_with_taylor(const ContactLaw& law, const SolveOptions& options) {
   check_taylor_request(law, options);
-  const bool hertz = law.kind == LawKind::viscoelastic_hertz;
-  taylor::TaylorCollision<double> run(settings_for(law, options), law.parameter);
+  const bool hertz = law.kind() == LawKind::viscoelastic_hertz;
+  taylor::TaylorCollision<double> run(settings_for(law, options), law.parameter());
   taylor::TaylorOutcome<double> out;
   try {
-    out = hertz ? run.hertz(law.parameter) : run.dashpot(2.0 * law.parameter, 1.0);
+    out = hertz ? run.hertz(law.zeta()) : run.dashpot(law.damping(), law.stiffness());
   } catch (const NumericalFailure& e) {
     throw NumericalFailure(fmt::format("{} (law {}, method taylor, tolerance {:g})", e.what(),
-                                       law_name(law.kind), options.tolerance));
+                                       law_name(law.kind()), options.tolerance));
   }
   CollisionResult result;
-  result.law = law.kind;
-  result.parameter = law.parameter;
+  result.law = law.kind();
+  result.parameter = law.parameter();
+  result.speed_independent = law.speed_independent();
   result.tolerance = options.tolerance;
   result.method = Method::taylor;
   result.max_compression = {out.tau_max, out.x_max};

@@ -1,0 +1,121 @@
+// The scales of a contact law that the engines' tolerance policies need, derived from the member's
+// exponents (docs/contact_laws.md): where its ends lie, how small the quantities deciding them become,
+// and whether the naive end exists.
+#include <algorithm>
+#include <cmath>
+
+#include "restitution/contact_law.hpp"
+
+namespace restitution {
+namespace {
+
+// 1 - a + 2b: the sign decides how the overlap behaves as x -> 0. Positive (viscoelastic Hertz): inertia
+// wins near x = 0 and the naive end always exists, reached through x ~ ζ^{-2/(1-a+2b)} at large ζ. Zero
+// (the dash-pot, Tsuji): the law is scale-invariant near x = 0 and the naive end exists for ζ < 2 sqrt(b+1).
+// Negative (constant damping): damping wins near x = 0 and the overlap may only approach 0 as τ -> ∞.
+double naive_balance(double a, double b) {
+  return 1.0 - a + 2.0 * b;
+}
+
+// Scale-invariant members: ρ = ζ / (2 sqrt(b+1)) plays the dash-pot's damping ratio r (ρ = r there) and the
+// naive end has ε = exp(-π ρ / sqrt(1 - ρ²)) (docs/contact_laws.md).
+double critical_ratio(double zeta, double b) {
+  return zeta / (2.0 * std::sqrt(b + 1.0));
+}
+
+}  // namespace
+
+NaiveEndExistence ContactLaw::naive_end_existence() const {
+  const double balance = naive_balance(a_, b_);
+  if (balance > 0.0) return NaiveEndExistence::always;
+  if (balance == 0.0) return NaiveEndExistence::below_critical_zeta;
+  return NaiveEndExistence::decided_by_solve;
+}
+
+bool ContactLaw::naive_end_may_exist() const {
+  if (naive_end_existence() != NaiveEndExistence::below_critical_zeta) return true;
+  return critical_ratio(zeta_, b_) < 1.0;
+}
+
+double ContactLaw::naive_end_excluded(double x, double v) const {
+  // In the region x' >= -k x^{b+1} with k = ζ/(2(b+1)), d/dτ (x' + k x^{b+1}) = k(ζ - k(b+1)) x^{2b+1} - x^a
+  // on its boundary, positive while x^{a-2b-1} < ζ²/(4(b+1)): for a - 2b - 1 > 0 every smaller x keeps it
+  // positive, so once x' <= 0 the state never leaves the region, where x decays at most like a power or an
+  // exponential of τ and never reaches 0.
+  const double k = zeta_ / (2.0 * (b_ + 1.0));
+  const double x_certified = std::pow(zeta_ * zeta_ / (4.0 * (b_ + 1.0)), 1.0 / (a_ - 2.0 * b_ - 1.0));
+  const double outside = -(v + k * detail::continued_power(x, b_ + 1.0));
+  return std::max({outside, x - x_certified, v});
+}
+
+double ContactLaw::indistinguishable_ends_zeta() const {
+  return std::pow(1e-30, (a_ - b_) / (b_ + 1.0));
+}
+
+ResolutionScales ContactLaw::resolution_scales(bool naive_end) const {
+  ResolutionScales m;
+  if (kind_ == LawKind::linear_dashpot) {
+    // The dash-pot's own (measured, docs/accuracy.md) scales, in its damping ratio r.
+    const double r = parameter();
+    if (r > 1.0) {
+      // Overdamped: x_max ~ 1/(2r) and, at the delayed-recovery end, ε ~ 1/(4 r^2) for large r.
+      m.x = 1.0 / (2.0 * r);
+      m.velocity = 1.0 / (4.0 * r * r);
+    }
+    if (naive_end && r < 1.0) {
+      // The naive end is approached with x ~ ε (τ_c - τ): near critical damping (ε ~ 1e-31 at r = 0.999)
+      // x must be resolved down to ε's scale, not to one.
+      const double eps = std::exp(-M_PI * r / std::sqrt(1.0 - r * r));
+      m.velocity = std::min(m.velocity, eps);
+      m.x = std::min(m.x, eps);
+    }
+    m.dissipation = 1.0 / std::max(1.0, r);
+    return m;
+  }
+  const double z = std::max(zeta_, 1.0);
+  // Large ζ: the damping stops the compression at x_max ~ ζ^{-1/(b+1)}; the force-zero end follows at that
+  // x with x' ~ x^{a-b}/ζ ~ ζ^{-(a+1)/(b+1)} (viscoelastic Hertz: ζ^{-2/3}, ζ^{-5/3}).
+  m.x = std::pow(z, -1.0 / (b_ + 1.0));
+  m.velocity = std::pow(z, -(a_ + 1.0) / (b_ + 1.0));
+  if (naive_end) {
+    const double balance = naive_balance(a_, b_);
+    if (balance > 0.0) {
+      // The naive end is reached through the scale where x'', ζ x^b x' and x^a balance: x ~ ζ^{-2/balance},
+      // x' ~ ζ^{1 - 2(1+b)/balance} (viscoelastic Hertz: ζ^{-4}, ζ^{-5}; docs/design.md §4).
+      m.x = std::pow(z, -2.0 / balance);
+      m.velocity = std::pow(z, 1.0 - 2.0 * (1.0 + b_) / balance);
+    } else if (balance == 0.0) {
+      // As for the dash-pot near critical damping: resolve x and x' down to ε's scale.
+      const double rho = critical_ratio(zeta_, b_);
+      if (rho < 1.0) {
+        const double eps = std::exp(-M_PI * rho / std::sqrt(1.0 - rho * rho));
+        m.velocity = std::min(m.velocity, eps);
+        m.x = std::min(m.x, eps);
+      }
+    }
+  }
+  m.dissipation = 1.0 / z;
+  return m;
+}
+
+double ContactLaw::conditioning(bool naive_end) const {
+  // Near critical damping the two modes of a scale-invariant member cancel at the naive end to
+  // ω = sqrt(1 - ρ²) and amplify the local errors by about 1/ω in ε (measured on the dash-pot: error ratio 10
+  // at r = 0.999 and 20 at r = 0.9999 with the plain rtol).
+  if (!naive_end || naive_end_existence() != NaiveEndExistence::below_critical_zeta) return 1.0;
+  const double rho = kind_ == LawKind::linear_dashpot ? parameter() : critical_ratio(zeta_, b_);
+  if (rho >= 1.0) return 1.0;
+  return std::min(1.0, 0.1 * std::sqrt(1.0 - rho * rho));
+}
+
+double ContactLaw::time_limit(bool naive_end) const {
+  if (kind_ == LawKind::linear_dashpot) {
+    const double r = parameter();
+    return (naive_end && r < 1.0) ? 100.0 * (10.0 + M_PI / std::sqrt(1.0 - r * r)) : 1000.0;
+  }
+  // Viscoelastic Hertz's naive tail relaxes slowly over ~ζ·ln(ζ^{10/3}) (docs/design.md §4); generous
+  // margin, also for the ends of the other members (their ends lie earlier or are certified absent).
+  return time_scale_ * 1000.0 * (1.0 + zeta_) * (1.0 + std::log1p(zeta_));
+}
+
+}  // namespace restitution
