@@ -193,6 +193,11 @@ class ContactLaw {
   [[nodiscard]] double conditioning(bool naive_end) const;
   [[nodiscard]] double time_limit(bool naive_end) const;
 
+  // For decided_by_solve: a factor (<= 1) on the local tolerance for a naive end with this ε, found by a
+  // first solve. Close to the largest ζ with a naive end the trajectory passes close to the saddle at x = 0
+  // and ε's absolute error stays ~1e-3 · tolerance while ε -> 0 (measured against an independent
+  // integration, tests/test_contact_law_family.cpp); 1 for the other members.
+  [[nodiscard]] double naive_end_conditioning(double naive_eps) const;
   [[nodiscard]] NaiveEndExistence naive_end_existence() const;
   // For below_critical_zeta: whether the naive end exists at this ζ (ζ < 2 sqrt(b+1): r < 1 for the
   // dash-pot, ζ < sqrt(5) for Tsuji); for always true; for decided_by_solve true (the solve decides).

@@ -42,14 +42,15 @@ constexpr double kLocalToGlobal = 0.002;
 
 }  // namespace
 
-SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options) {
+SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options, double conditioning) {
   check_solve_request(law, options);
   SolvePlan plan;
   plan.method = resolve_method(law, options.method, options.ends);
   // The smooth variable u = x^{1/q} pays where the solution is not analytic in τ at x = 0 (q > 1).
   plan.smooth_ends = options.smooth_ends && law.smoothing_root() > 1;
   const ResolutionScales m = law.resolution_scales(options.ends.naive);
-  const double rtol = options.tolerance * kLocalToGlobal * law.conditioning(options.ends.naive);
+  const double rtol =
+      options.tolerance * kLocalToGlobal * law.conditioning(options.ends.naive) * conditioning;
   plan.relative_tolerance = rtol;
   // Absolute tolerances in the law's own units: lengths scale with length_scale, velocities with v0,
   // times with time_scale, the dissipation integral ∫ w(x) x'^2 dτ with w(length) · v0^2 · time.

@@ -19,7 +19,12 @@ struct SolvePlan {
 };
 
 // Throws InvalidInput for a tolerance outside [kMinTolerance, kMaxTolerance], no end requested, or an end
-// that does not exist for this law.
-SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options);
+// that does not exist for this law. `conditioning` (<= 1) tightens the local tolerances further, for an end
+// found ill-conditioned by a first solve (ContactLaw::naive_end_conditioning).
+SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options, double conditioning = 1.0);
+
+// Below this relative tolerance CVODE's steps drown in double rounding: a conditioning that asks for less
+// cannot be delivered.
+inline constexpr double kSmallestRelativeTolerance = 4e-15;
 
 }  // namespace restitution::detail
