@@ -4,8 +4,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -203,6 +207,65 @@ TEST(DampingCheckCli, BadInputExitsTwoNamingTheProblem) {
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_NE(r.err.find(needle), std::string::npos) << args << ": " << r.err;
   }
+}
+
+// The shipped scene: every recipe in the map, an error map per speed-dependent recipe, the findings table;
+// liggghts-hertz without the clamp on the diagonal (it is exact there).
+TEST(DampingCheckScene, ShippedSceneWritesTheMapsAndTheFindings) {
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("restitution-damping-scene-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(folder);
+  setenv("RESTITUTION_PYTHON", "/nonexistent/python3", 1);  // the plots are not what is tested here
+  const auto r = test_support::run_cli(
+      "run " RESTITUTION_SOURCE_DIR "/scenes/damping_check.toml --quick --output " + folder.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream csv(folder / "recipes.csv");
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::string> header;
+  std::stringstream names(line);
+  for (std::string name; std::getline(names, name, ',');) header.push_back(name);
+  ASSERT_EQ(header.size(), 1 + 2 * kRecipes.size());
+  const auto exact = static_cast<std::size_t>(
+      std::find(header.begin(), header.end(), "liggghts-hertz_clamp_off") - header.begin());
+  ASSERT_LT(exact, header.size());
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    std::vector<double> cells;
+    std::stringstream values(line);
+    for (std::string cell; std::getline(values, cell, ',');) cells.push_back(std::stod(cell));
+    EXPECT_NEAR(cells[exact], cells[0], 1e-8) << line;
+    ++rows;
+  }
+  EXPECT_GE(rows, 3);
+  for (const char* recipe : {"lammps-viscoelastic", "yade-pade-3-6", "pade-1-4"}) {
+    EXPECT_TRUE(std::filesystem::exists(folder / (std::string("recipes_") + recipe + "_error.csv")))
+        << recipe;
+  }
+  EXPECT_FALSE(std::filesystem::exists(folder / "recipes_lammps-tsuji_error.csv"));  // speed-independent
+  const std::string report = test_support::slurp((folder / "report.md").string());
+  EXPECT_NE(report.find("| lammps-tsuji | on | 0.5026 | 0.6458 | 0.8577 | 0.9654 |"), std::string::npos)
+      << report;
+  std::filesystem::remove_all(folder);
+}
+
+TEST(DampingCheckScene, MisspelledKeysAndUnknownRecipesNameFileAndLine) {
+  const std::filesystem::path scene = std::filesystem::temp_directory_path() /
+                                      ("restitution-damping-bad-" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(scene)
+      << "output = \"/tmp/never\"\n[[damping_check]]\nname = \"x\"\nrecipe = [\"lammps-tsuji\"]\n";
+  auto r = test_support::run_cli("run " + scene.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(":4: damping_check[0].recipe: unknown key"), std::string::npos) << r.err;
+  std::ofstream(scene) << "output = \"/tmp/never\"\n[[damping_check]]\nrecipes = [\"tsuji\"]\neps = [0.5]\n";
+  r = test_support::run_cli("run " + scene.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(":3: damping_check[0].recipes: unknown recipe 'tsuji'"), std::string::npos) << r.err;
+  std::ofstream(scene) << "output = \"/tmp/never\"\n[[damping_check]]\neps = [0.5, 1.0]\n";
+  r = test_support::run_cli("run " + scene.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(":3: damping_check[0].eps"), std::string::npos) << r.err;
+  std::filesystem::remove(scene);
 }
 
 }  // namespace
