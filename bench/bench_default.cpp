@@ -35,16 +35,18 @@ void default_solve(benchmark::State& state, double zeta) {
     result = solver.solve(law, options);
     benchmark::DoNotOptimize(result);
   }
-  state.counters["eps_naive"] = result.naive->eps;
-  state.counters["eps_delayed"] = result.delayed_recovery->eps;
+  state.counters["eps_naive"] = result[CollisionEnd::naive]->eps;
+  state.counters["eps_delayed"] = result[CollisionEnd::delayed_recovery]->eps;
   const ReferenceRow* row = reference_row_for(rows(), zeta);
-  if (row != nullptr && row->naive) {
-    state.counters["err_naive"] = contract_error(*result.naive, *row->naive);
+  if (row != nullptr && row->ends[CollisionEnd::naive]) {
+    state.counters["err_naive"] =
+        contract_error(*result[CollisionEnd::naive], *row->ends[CollisionEnd::naive]);
   } else {
-    state.counters["err_naive_vs_law"] = law_error(*result.naive, zeta);
+    state.counters["err_naive_vs_law"] = law_error(*result[CollisionEnd::naive], zeta);
   }
-  if (row != nullptr && row->delayed_recovery) {
-    state.counters["err_delayed"] = contract_error(*result.delayed_recovery, *row->delayed_recovery);
+  if (row != nullptr && row->ends[CollisionEnd::delayed_recovery]) {
+    state.counters["err_delayed"] =
+        contract_error(*result[CollisionEnd::delayed_recovery], *row->ends[CollisionEnd::delayed_recovery]);
   }
   state.counters["steps"] = static_cast<double>(result.stats.steps);
 }

@@ -39,7 +39,7 @@ void solve_rows(benchmark::State& state, const std::vector<ReferenceRow>& rows, 
   CollisionSolver solver;
   SolveOptions options;
   options.tolerance = kTolerance;
-  options.ends = {naive, !naive};
+  options.ends = EndSet{naive ? CollisionEnd::naive : CollisionEnd::delayed_recovery};
   std::vector<ContactLaw> laws;
   laws.reserve(rows.size());
   for (const ReferenceRow& row : rows) laws.push_back(ContactLaw::hertz_natural(row.zeta));
@@ -47,8 +47,9 @@ void solve_rows(benchmark::State& state, const std::vector<ReferenceRow>& rows, 
   long steps = 0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const CollisionResult r = solver.solve(laws[i], options);
-    const EndResult& end = naive ? *r.naive : *r.delayed_recovery;
-    worst = std::max(worst, contract_error(end, naive ? *rows[i].naive : *rows[i].delayed_recovery));
+    const EndResult& end = naive ? *r[CollisionEnd::naive] : *r[CollisionEnd::delayed_recovery];
+    worst = std::max(worst, contract_error(end, naive ? *rows[i].ends[CollisionEnd::naive]
+                                                      : *rows[i].ends[CollisionEnd::delayed_recovery]));
     steps += r.stats.steps;
   }
   for (auto _ : state) {  // NOLINT(clang-analyzer-deadcode.DeadStores): the benchmark loop idiom

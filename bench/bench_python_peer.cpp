@@ -17,7 +17,7 @@ SolveOptions peer_options() {
   SolveOptions options;
   options.tolerance = 1e-10;
   options.method = Method::taylor;
-  options.ends = {false, true};
+  options.ends = EndSet{CollisionEnd::delayed_recovery};
   return options;
 }
 
@@ -26,7 +26,9 @@ void BM_SweepPeer(benchmark::State& state) {
   const SolveOptions options = peer_options();
   std::vector<double> eps(zetas.size());
   SweepControl control;  // all hardware threads, results stored as the module stores them
-  control.point_finished = [&eps](const SweepPoint& p) { eps[p.index] = p.result->delayed_recovery->eps; };
+  control.point_finished = [&eps](const SweepPoint& p) {
+    eps[p.index] = (*p.result)[CollisionEnd::delayed_recovery]->eps;
+  };
   for (auto _ : state) {
     const SweepSummary summary = run_sweep(zetas, options, control);
     if (summary.failed > 0) state.SkipWithError("points failed");
@@ -42,7 +44,7 @@ void BM_ScalarPeer(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
     const CollisionResult r = solver.solve(ContactLaw::hertz_natural(zetas[i]), options);
-    benchmark::DoNotOptimize(r.delayed_recovery->eps);
+    benchmark::DoNotOptimize(r[CollisionEnd::delayed_recovery]->eps);
     i = (i + 1) % zetas.size();
   }
 }

@@ -29,9 +29,9 @@ void solve_case(benchmark::State& state, const WorkPrecisionEngine& engine, bool
     result = solver.solve(law, options);
     benchmark::DoNotOptimize(result);
   }
-  const EndResult& end = naive ? *result.naive : *result.delayed_recovery;
+  const EndResult& end = naive ? *result[CollisionEnd::naive] : *result[CollisionEnd::delayed_recovery];
   if (const ReferenceRow* row = reference_row_for(rows(), zeta)) {
-    const auto& ref = naive ? row->naive : row->delayed_recovery;
+    const auto& ref = naive ? row->ends[CollisionEnd::naive] : row->ends[CollisionEnd::delayed_recovery];
     if (ref) state.counters["error"] = contract_error(end, *ref);
   }
   state.counters["rhs"] = static_cast<double>(result.stats.rhs_evaluations);

@@ -16,7 +16,7 @@ void BM_Sweep(benchmark::State& state) {
   const std::vector<double> zetas = zeta_values({1e-4, 1e4, kPoints, true});
   SolveOptions options;
   options.tolerance = 1e-10;
-  options.ends = {false, true};
+  options.ends = EndSet{CollisionEnd::delayed_recovery};
   SweepControl control;
   control.threads = static_cast<unsigned>(state.range(0));
   std::size_t failed = 0;

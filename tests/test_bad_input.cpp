@@ -69,7 +69,7 @@ const std::vector<BadInput> kCases = {
     {"eps --law linear-dashpot --damping-ratio 0", "damping-ratio must be finite and > 0"},
     {"eps --law linear-dashpot --damping-ratio nan", "damping-ratio must be finite and > 0"},
     {"eps --law linear-dashpot --damping-ratio 2", "naive end does not exist"},
-    {"eps --law linear-dashpot --damping-ratio 0.5 --zeta 1", "takes --damping-ratio, not --zeta"},
+    {"eps --law linear-dashpot --damping-ratio 0.5 --zeta 1", "either --zeta or --damping-ratio, not both"},
     {"eps --zeta 1 --damping-ratio 0.5", "--damping-ratio belongs to --law linear-dashpot"},
     {"eps --law hooke --zeta 1", "--law"},
     // Solver options.

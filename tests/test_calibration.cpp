@@ -19,9 +19,9 @@ namespace {
 double eps_at(double zeta, CollisionEnd end) {
   CollisionSolver solver;
   SolveOptions o;
-  o.ends = {end == CollisionEnd::naive, end == CollisionEnd::delayed_recovery};
+  o.ends = EndSet{end};
   const CollisionResult r = solver.solve(ContactLaw::hertz_natural(zeta), o);
-  return end == CollisionEnd::naive ? r.naive->eps : r.delayed_recovery->eps;
+  return end == CollisionEnd::naive ? r[CollisionEnd::naive]->eps : r[CollisionEnd::delayed_recovery]->eps;
 }
 
 Calibration calibrated(double eps, double velocity_m_s, std::optional<double> k = std::nullopt) {

@@ -69,8 +69,9 @@ TEST(CliEps, TaylorMethodMatchesTheReferenceAndItsRange) {
   EXPECT_EQ(j["method"], "taylor");
   const ReferenceRow* row = reference_row_for(test_support::reference_rows(), 1.0);
   ASSERT_NE(row, nullptr);
-  EXPECT_NEAR(j["delayed_recovery"]["eps"].get<double>(), row->delayed_recovery->eps, 1e-12);
-  EXPECT_NEAR(j["naive"]["eps"].get<double>(), row->naive->eps, 1e-12);
+  EXPECT_NEAR(j["delayed_recovery"]["eps"].get<double>(), row->ends[CollisionEnd::delayed_recovery]->eps,
+              1e-12);
+  EXPECT_NEAR(j["naive"]["eps"].get<double>(), row->ends[CollisionEnd::naive]->eps, 1e-12);
   const auto too_tight = run_cli("eps --zeta 1 --method taylor --tolerance 1e-14");
   EXPECT_EQ(too_tight.status, 2);
   EXPECT_NE(too_tight.err.find("below what the Taylor engine can deliver (1e-13)"), std::string::npos)

@@ -22,7 +22,7 @@ namespace {
 SolveOptions options_for(CollisionEnd end, double tolerance) {
   SolveOptions options;
   options.tolerance = tolerance;
-  options.ends = selection_of(end);
+  options.ends = EndSet{end};
   return options;
 }
 
@@ -267,7 +267,7 @@ TEST(LawFamily, PhysicalLawDependsOnlyOnZeta) {
   CollisionSolver solver;
   SolveOptions options;
   options.tolerance = 1e-10;
-  options.ends = selection_of(CollisionEnd::delayed_recovery);
+  options.ends = EndSet{CollisionEnd::delayed_recovery};
   for (const LawKind kind : kLawKinds) {
     const auto [a, b] = law_exponents(kind);
     const double k = 2e5;
@@ -293,7 +293,7 @@ TEST(LawFamily, SpeedIndependentLawsSaySoAndHoldIt) {
   CollisionSolver solver;
   SolveOptions options;
   options.tolerance = 1e-10;
-  options.ends = selection_of(CollisionEnd::delayed_recovery);
+  options.ends = EndSet{CollisionEnd::delayed_recovery};
   for (const LawKind kind : {LawKind::tsuji_hertz, LawKind::linear_dashpot}) {
     const ContactLaw first = ContactLaw::physical(kind, 1e6, 5.0, 0.02, 0.01);
     const CollisionResult natural = solver.solve(ContactLaw::natural(kind, first.zeta()), options);
@@ -329,7 +329,7 @@ TEST(LawFamily, MissingNaiveEndsAreReportedNotIntegratedForever) {
     EXPECT_NE(constant.find("hertz-constant-damping"), std::string::npos) << constant;
   }
   // The force-zero end exists there.
-  options.ends = selection_of(CollisionEnd::delayed_recovery);
+  options.ends = EndSet{CollisionEnd::delayed_recovery};
   CollisionSolver solver;
   EXPECT_GT(end_of(solver.solve(ContactLaw::natural(LawKind::tsuji_hertz, 3.0), options),
                    CollisionEnd::delayed_recovery)

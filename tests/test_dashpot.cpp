@@ -108,23 +108,26 @@ TEST(DashpotSolver, MatchesClosedFormsInAllRegimes) {
                          1.0 - 1e-6, 1.0, 1.0 + 1e-6, 1.5, 3.0, 10.0}) {
     SCOPED_TRACE(testing::Message() << "r=" << r);
     SolveOptions o = options(tol);
-    o.ends.naive = r < 0.99;  // closer to r = 1 the naive ε = exp(-πr/ω) underflows double
+    if (r >= 0.99)
+      o.ends.erase(CollisionEnd::naive);  // closer to r = 1 the naive ε = exp(-πr/ω) underflows double
     const CollisionResult result = solver.solve(ContactLaw::linear_dashpot(r), o);
-    ASSERT_TRUE(result.delayed_recovery);
+    ASSERT_TRUE(result[CollisionEnd::delayed_recovery]);
     const double t_delayed = dashpot_delayed_duration(r);
     const double eps_delayed = -exact_velocity(r, t_delayed);
     const double scale_d = std::min(eps_delayed, 1.0 - eps_delayed);
-    EXPECT_NEAR(result.delayed_recovery->eps, eps_delayed, tol * scale_d);
-    EXPECT_NEAR(result.delayed_recovery->one_minus_eps, 1.0 - eps_delayed, tol * scale_d);
-    EXPECT_NEAR(result.delayed_recovery->tau, t_delayed, 1e-8 * t_delayed);
-    if (o.ends.naive) {
-      ASSERT_TRUE(result.naive);
+    EXPECT_NEAR(result[CollisionEnd::delayed_recovery]->eps, eps_delayed, tol * scale_d);
+    EXPECT_NEAR(result[CollisionEnd::delayed_recovery]->one_minus_eps, 1.0 - eps_delayed, tol * scale_d);
+    EXPECT_NEAR(result[CollisionEnd::delayed_recovery]->tau, t_delayed, 1e-8 * t_delayed);
+    if (o.ends.contains(CollisionEnd::naive)) {
+      ASSERT_TRUE(result[CollisionEnd::naive]);
       const double eps_naive = paper_naive_eps(r);
       const double scale_n = std::min(eps_naive, 1.0 - eps_naive);
-      EXPECT_NEAR(result.naive->eps, eps_naive, tol * scale_n);
-      EXPECT_NEAR(result.naive->one_minus_eps, 1.0 - eps_naive, tol * scale_n);
-      EXPECT_NEAR(result.naive->tau, dashpot_naive_duration(r), 1e-8 * dashpot_naive_duration(r));
-      EXPECT_GT(result.delayed_recovery->eps, result.naive->eps);  // delayed recovery ends earlier, faster
+      EXPECT_NEAR(result[CollisionEnd::naive]->eps, eps_naive, tol * scale_n);
+      EXPECT_NEAR(result[CollisionEnd::naive]->one_minus_eps, 1.0 - eps_naive, tol * scale_n);
+      EXPECT_NEAR(result[CollisionEnd::naive]->tau, dashpot_naive_duration(r),
+                  1e-8 * dashpot_naive_duration(r));
+      EXPECT_GT(result[CollisionEnd::delayed_recovery]->eps,
+                result[CollisionEnd::naive]->eps);  // delayed recovery ends earlier, faster
     }
   }
 }
@@ -136,13 +139,13 @@ TEST(DashpotSolver, BothMethodsMeetTheContractOnAGrid) {
       for (double r = 0.01; r <= 10.0; r *= 1.7) {
         SCOPED_TRACE(testing::Message() << method_name(method) << " tol=" << tol << " r=" << r);
         SolveOptions o = options(tol, method);
-        o.ends.naive = r < 0.99;
+        if (r >= 0.99) o.ends.erase(CollisionEnd::naive);
         const CollisionResult result = solver.solve(ContactLaw::linear_dashpot(r), o);
         const double eps = -exact_velocity(r, dashpot_delayed_duration(r));
-        EXPECT_NEAR(result.delayed_recovery->eps, eps, tol * std::min(eps, 1.0 - eps));
-        if (o.ends.naive) {
+        EXPECT_NEAR(result[CollisionEnd::delayed_recovery]->eps, eps, tol * std::min(eps, 1.0 - eps));
+        if (o.ends.contains(CollisionEnd::naive)) {
           const double eps_n = paper_naive_eps(r);
-          EXPECT_NEAR(result.naive->eps, eps_n, tol * std::min(eps_n, 1.0 - eps_n));
+          EXPECT_NEAR(result[CollisionEnd::naive]->eps, eps_n, tol * std::min(eps_n, 1.0 - eps_n));
         }
       }
     }
@@ -157,24 +160,24 @@ TEST(DashpotSolver, NearCriticalNaiveEndHoldsTheTolerance) {
     for (const auto& [r, tol] : {std::pair{0.99, 1e-10}, std::pair{0.999, 2e-10}, std::pair{0.9999, 2e-9}}) {
       SCOPED_TRACE(testing::Message() << method_name(method) << " r=" << r);
       SolveOptions o = options(tol, method);
-      o.ends = {true, false};
+      o.ends = EndSet{CollisionEnd::naive};
       // 1 - r² as (1 - r)(1 + r): r·r would round to an error of 5e-11 in ε at r = 0.9999.
       const double eps = std::exp(-r * M_PI / std::sqrt((1.0 - r) * (1.0 + r)));
-      EXPECT_NEAR(solver.solve(ContactLaw::linear_dashpot(r), o).naive->eps / eps, 1.0, tol);
+      EXPECT_NEAR(solver.solve(ContactLaw::linear_dashpot(r), o)[CollisionEnd::naive]->eps / eps, 1.0, tol);
     }
   }
   SolveOptions tight = options(1e-12, Method::taylor);
-  tight.ends = {true, false};
+  tight.ends = EndSet{CollisionEnd::naive};
   EXPECT_THROW(solver.solve(ContactLaw::linear_dashpot(0.999), tight), InvalidInput);
   SolveOptions cvode = options(1e-9, Method::bdf);
-  cvode.ends = {true, false};
+  cvode.ends = EndSet{CollisionEnd::naive};
   EXPECT_THROW(solver.solve(ContactLaw::linear_dashpot(0.9999), cvode), InvalidInput);
 }
 
 TEST(DashpotSolver, NaiveEndOfOverdampedDashpotIsAnInputError) {
   CollisionSolver solver;
   SolveOptions o = options(1e-8);
-  o.ends.delayed_recovery = false;
+  o.ends.erase(CollisionEnd::delayed_recovery);
   EXPECT_THROW(solver.solve(ContactLaw::linear_dashpot(1.0), o), InvalidInput);
   EXPECT_THROW(solver.solve(ContactLaw::linear_dashpot(2.0), o), InvalidInput);
 }

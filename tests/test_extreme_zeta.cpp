@@ -18,7 +18,7 @@ namespace {
 using test_support::c1_closed_form;
 using test_support::undamped_max_time;
 
-CollisionResult solve(double zeta, double tolerance, EndSelection ends = {},
+CollisionResult solve(double zeta, double tolerance, EndSet ends = EndSet::both(),
                       Method method = Method::automatic) {
   CollisionSolver solver;
   SolveOptions options;
@@ -30,7 +30,7 @@ CollisionResult solve(double zeta, double tolerance, EndSelection ends = {},
 
 TEST(ExtremeZeta, ZeroDampingIsElasticAndBothEndsCoincide) {
   const CollisionResult r = solve(0.0, 1e-10);
-  for (const EndResult& e : {*r.naive, *r.delayed_recovery}) {
+  for (const EndResult& e : {*r[CollisionEnd::naive], *r[CollisionEnd::delayed_recovery]}) {
     EXPECT_EQ(e.eps, 1.0);
     EXPECT_EQ(e.one_minus_eps, 0.0);
     EXPECT_NEAR(e.tau, 2.0 * undamped_max_time(), 1e-9);
@@ -44,7 +44,7 @@ TEST(ExtremeZeta, TinyDampingFollowsTheSmallZetaSeries) {
   for (const double zeta : {1e-12, 1e-8}) {
     const CollisionResult r = solve(zeta, 1e-10);
     const double series = c1 * zeta - 0.6 * c1 * c1 * zeta * zeta;
-    for (const EndResult& e : {*r.naive, *r.delayed_recovery}) {
+    for (const EndResult& e : {*r[CollisionEnd::naive], *r[CollisionEnd::delayed_recovery]}) {
       EXPECT_NEAR(e.one_minus_eps / series, 1.0, 1e-10) << "zeta=" << zeta;
       EXPECT_DOUBLE_EQ(e.eps + e.one_minus_eps, 1.0);
     }
@@ -58,8 +58,8 @@ TEST(ExtremeZeta, VanishingDampingKeepsOneMinusEpsRelativeAccuracy) {
   const double c1 = c1_closed_form();
   for (const Method method : {Method::automatic, Method::bdf, Method::taylor}) {
     for (const double zeta : {1e-80, 1e-90, 1e-200, 1e-300}) {
-      const CollisionResult r = solve(zeta, 1e-10, {true, true}, method);
-      for (const EndResult& e : {*r.naive, *r.delayed_recovery}) {
+      const CollisionResult r = solve(zeta, 1e-10, EndSet::both(), method);
+      for (const EndResult& e : {*r[CollisionEnd::naive], *r[CollisionEnd::delayed_recovery]}) {
         EXPECT_NEAR(e.one_minus_eps / (c1 * zeta), 1.0, 1e-10) << method_name(method) << " zeta=" << zeta;
       }
     }
@@ -73,50 +73,56 @@ TEST(ExtremeZeta, ExtremeSpeedsInTheBetaVelocityForm) {
   for (const auto& [beta, v] : {std::pair{0.0, 1e-300}, std::pair{0.2, 1e-150}, std::pair{1e-30, 1e150}}) {
     const CollisionResult scaled = solver.solve(ContactLaw::hertz_scaled(beta, v), options);
     const CollisionResult natural = solver.solve(ContactLaw::hertz_natural(beta * std::pow(v, 0.2)), options);
-    EXPECT_DOUBLE_EQ(scaled.naive->one_minus_eps, natural.naive->one_minus_eps) << beta << " " << v;
-    EXPECT_DOUBLE_EQ(scaled.delayed_recovery->eps, natural.delayed_recovery->eps) << beta << " " << v;
+    EXPECT_DOUBLE_EQ(scaled[CollisionEnd::naive]->one_minus_eps, natural[CollisionEnd::naive]->one_minus_eps)
+        << beta << " " << v;
+    EXPECT_DOUBLE_EQ(scaled[CollisionEnd::delayed_recovery]->eps,
+                     natural[CollisionEnd::delayed_recovery]->eps)
+        << beta << " " << v;
   }
 }
 
 TEST(ExtremeZeta, NaiveEndFollowsKappaOverZetaToTheFifth) {
   const double kappa = asymptotics::naive_prefactor().value;
   for (const double zeta : {1e4, 1e5}) {
-    const CollisionResult r = solve(zeta, 1e-10, {true, false});
-    EXPECT_NEAR(r.naive->eps / asymptotics::naive_eps(zeta, kappa), 1.0, 1e-10) << "zeta=" << zeta;
-    EXPECT_EQ(r.naive->x, 0.0);
+    const CollisionResult r = solve(zeta, 1e-10, EndSet{CollisionEnd::naive});
+    EXPECT_NEAR(r[CollisionEnd::naive]->eps / asymptotics::naive_eps(zeta, kappa), 1.0, 1e-10)
+        << "zeta=" << zeta;
+    EXPECT_EQ(r[CollisionEnd::naive]->x, 0.0);
   }
 }
 
 TEST(ExtremeZeta, DelayedEndFollowsTheTwoTermLaw) {
   for (const double zeta : {1e4, 1e5, 1e6}) {
-    const CollisionResult r = solve(zeta, 1e-10, {false, true});
+    const CollisionResult r = solve(zeta, 1e-10, EndSet{CollisionEnd::delayed_recovery});
     const double delta = std::pow(zeta, -5.0 / 3.0);
     const double omitted = 10.0 * std::pow(delta * std::log(delta), 2);  // O(δ² ln² δ), generous constant
-    const double eps = r.delayed_recovery->eps;
+    const double eps = r[CollisionEnd::delayed_recovery]->eps;
     EXPECT_NEAR(eps / asymptotics::delayed_recovery_eps(zeta, 2), 1.0, 1e-10 + omitted) << "zeta=" << zeta;
     // The leading term alone misses by the first correction, which the numerics must resolve.
     EXPECT_GT(std::abs(eps / asymptotics::delayed_recovery_eps(zeta, 1) - 1.0), 10.0 * (1e-10 + omitted));
     // At the end ζ x' + x = 0, so x_end = ζ ε.
-    EXPECT_NEAR(r.delayed_recovery->x / (zeta * eps), 1.0, 1e-12);
+    EXPECT_NEAR(r[CollisionEnd::delayed_recovery]->x / (zeta * eps), 1.0, 1e-12);
   }
 }
 
 // 1 - ε² = 2 (D + U(x_end)), U(x) = (2/5) x^{5/2}: ε here comes from the velocity, D from the integral.
 TEST(ExtremeZeta, EnergyBalanceHoldsAtLargeZeta) {
   const CollisionResult r = solve(1e5, 1e-10);
-  for (const EndResult& e : {*r.naive, *r.delayed_recovery}) {
+  for (const EndResult& e : {*r[CollisionEnd::naive], *r[CollisionEnd::delayed_recovery]}) {
     const double elastic = 0.4 * std::pow(e.x, 2.5);
     EXPECT_NEAR(e.eps * e.eps + 2.0 * (e.dissipated_energy + elastic), 1.0, 1e-10);
   }
 }
 
 TEST(ExtremeZeta, FarEndsAreSelfConvergent) {
-  const CollisionResult loose_naive = solve(1e5, 1e-9, {true, false});
-  const CollisionResult tight_naive = solve(1e5, 1e-11, {true, false});
-  EXPECT_NEAR(loose_naive.naive->eps / tight_naive.naive->eps, 1.0, 1e-9);
-  const CollisionResult loose_delayed = solve(1e6, 1e-9, {false, true});
-  const CollisionResult tight_delayed = solve(1e6, 1e-11, {false, true});
-  EXPECT_NEAR(loose_delayed.delayed_recovery->eps / tight_delayed.delayed_recovery->eps, 1.0, 1e-9);
+  const CollisionResult loose_naive = solve(1e5, 1e-9, EndSet{CollisionEnd::naive});
+  const CollisionResult tight_naive = solve(1e5, 1e-11, EndSet{CollisionEnd::naive});
+  EXPECT_NEAR(loose_naive[CollisionEnd::naive]->eps / tight_naive[CollisionEnd::naive]->eps, 1.0, 1e-9);
+  const CollisionResult loose_delayed = solve(1e6, 1e-9, EndSet{CollisionEnd::delayed_recovery});
+  const CollisionResult tight_delayed = solve(1e6, 1e-11, EndSet{CollisionEnd::delayed_recovery});
+  EXPECT_NEAR(
+      loose_delayed[CollisionEnd::delayed_recovery]->eps / tight_delayed[CollisionEnd::delayed_recovery]->eps,
+      1.0, 1e-9);
 }
 
 // Beyond the contracted range (ζ <= 1e6) a solve either still matches the derived laws or fails with a
@@ -127,8 +133,10 @@ TEST(ExtremeZeta, BeyondTheRangeEitherRightOrLoud) {
   for (const double zeta : {1e8, 1e12, 1e20}) {
     try {
       const CollisionResult r = solve(zeta, 1e-10);
-      EXPECT_NEAR(r.naive->eps / asymptotics::naive_eps(zeta, kappa), 1.0, 1e-9) << "zeta=" << zeta;
-      EXPECT_NEAR(r.delayed_recovery->eps / asymptotics::delayed_recovery_eps(zeta, 2), 1.0, 1e-9)
+      EXPECT_NEAR(r[CollisionEnd::naive]->eps / asymptotics::naive_eps(zeta, kappa), 1.0, 1e-9)
+          << "zeta=" << zeta;
+      EXPECT_NEAR(r[CollisionEnd::delayed_recovery]->eps / asymptotics::delayed_recovery_eps(zeta, 2), 1.0,
+                  1e-9)
           << "zeta=" << zeta;
     } catch (const NumericalFailure& e) {
       EXPECT_NE(std::string(e.what()).find(fmt::format("zeta={}", zeta)), std::string::npos) << e.what();
@@ -140,7 +148,7 @@ TEST(ExtremeZeta, AdamsOnTheStiffTailFailsClearlyWithinTheWorkBound) {
   CollisionSolver solver;
   SolveOptions options;
   options.method = Method::adams;
-  options.ends = {true, false};
+  options.ends = EndSet{CollisionEnd::naive};
   options.max_steps_per_phase = 20000;
   try {
     solver.solve(ContactLaw::hertz_natural(1e4), options);

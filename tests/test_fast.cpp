@@ -42,7 +42,7 @@ double contract_error(double zeta, CollisionEnd end, double eps, double one_minu
 TEST(Fast, EveryReferenceRowWithinTheContract) {
   for (const ReferenceRow& row : reference_rows()) {
     for (const CollisionEnd end : kEnds) {
-      const auto& values = end == CollisionEnd::naive ? row.naive : row.delayed_recovery;
+      const auto& values = row.ends[end];
       if (!values) continue;
       EXPECT_LE(contract_error(row.zeta, end, values->eps, values->one_minus_eps), kContract)
           << "zeta " << row.zeta << " " << end_name(end);

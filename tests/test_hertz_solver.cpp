@@ -34,7 +34,7 @@ TEST(HertzSolver, UndampedCollisionIsElasticAndSymmetric) {
     const double tau_max = test_support::undamped_max_time();
     EXPECT_NEAR(r.max_compression.x, test_support::undamped_max_compression(), 1e-10);
     EXPECT_NEAR(r.max_compression.tau, tau_max, 1e-10);
-    for (const EndResult& e : {*r.naive, *r.delayed_recovery}) {
+    for (const EndResult& e : {*r[CollisionEnd::naive], *r[CollisionEnd::delayed_recovery]}) {
       EXPECT_NEAR(e.eps, 1.0, 1e-12);
       EXPECT_NEAR(e.one_minus_eps, 0.0, 1e-12);
       EXPECT_NEAR(e.tau, 2.0 * tau_max, 1e-9);
@@ -48,21 +48,22 @@ TEST(HertzSolver, SmallZetaMatchesC1ClosedFormAndPublishedSeries) {
   CollisionSolver solver;
   const double zeta = 1e-8;
   const CollisionResult r = solver.solve(ContactLaw::hertz_natural(zeta), options(1e-10));
-  EXPECT_NEAR(r.naive->one_minus_eps / zeta + kPaperC[1] * zeta, c1_closed_form(), 2e-10 * c1_closed_form());
+  EXPECT_NEAR(r[CollisionEnd::naive]->one_minus_eps / zeta + kPaperC[1] * zeta, c1_closed_form(),
+              2e-10 * c1_closed_form());
   // Published c_1 = -1.153448854 has ten digits and differs from the closed form in the ninth.
-  EXPECT_NEAR(r.naive->one_minus_eps / zeta + kPaperC[1] * zeta, -kPaperC[0], 5e-9);
+  EXPECT_NEAR(r[CollisionEnd::naive]->one_minus_eps / zeta + kPaperC[1] * zeta, -kPaperC[0], 5e-9);
 
   // At ζ = 1e-3 the published four-term series (c1 from the closed form) is good to ~c5 ζ^5 = 2e-16.
   const double z = 1e-3;
   const CollisionResult s = solver.solve(ContactLaw::hertz_natural(z), options(1e-10));
   const double series =
       c1_closed_form() * z - kPaperC[1] * z * z - kPaperC[2] * z * z * z - kPaperC[3] * z * z * z * z;
-  EXPECT_NEAR(s.naive->one_minus_eps, series, 1e-10 * series);
+  EXPECT_NEAR(s[CollisionEnd::naive]->one_minus_eps, series, 1e-10 * series);
   // Delayed recovery: 1 - ε = -Σ h_k ζ^{k/2}; h_5 = 4/15 is exact (2008 paper, Eq. C5).
   double delayed_series = c1_closed_form() * z;
   for (int k = 4; k <= 8; ++k) delayed_series -= kPaperH[k] * std::pow(z, 0.5 * k);
-  EXPECT_NEAR(s.delayed_recovery->one_minus_eps, delayed_series, 1e-9 * delayed_series);
-  EXPECT_GT(s.delayed_recovery->eps, s.naive->eps);
+  EXPECT_NEAR(s[CollisionEnd::delayed_recovery]->one_minus_eps, delayed_series, 1e-9 * delayed_series);
+  EXPECT_GT(s[CollisionEnd::delayed_recovery]->eps, s[CollisionEnd::naive]->eps);
 }
 
 TEST(HertzSolver, BetaVelocityFormDependsOnlyOnZeta) {
@@ -75,7 +76,8 @@ TEST(HertzSolver, BetaVelocityFormDependsOnlyOnZeta) {
       const CollisionResult a = solver.solve(scaled, options(1e-9));
       const CollisionResult b = solver.solve(ContactLaw::hertz_natural(zeta), options(1e-9));
       for (const auto& [ea, eb] :
-           {std::pair{*a.naive, *b.naive}, std::pair{*a.delayed_recovery, *b.delayed_recovery}}) {
+           {std::pair{*a[CollisionEnd::naive], *b[CollisionEnd::naive]},
+            std::pair{*a[CollisionEnd::delayed_recovery], *b[CollisionEnd::delayed_recovery]}}) {
         const double scale = relative_error_bound(eb);
         EXPECT_NEAR(ea.eps, eb.eps, 2e-9 * scale);
         EXPECT_NEAR(ea.one_minus_eps, eb.one_minus_eps, 2e-9 * scale);
@@ -93,7 +95,7 @@ TEST(HertzSolver, EnergyBalanceHoldsAtBothEnds) {
   CollisionSolver solver;
   for (const double zeta : {1e-4, 0.1, 1.0, 10.0, 300.0}) {
     const CollisionResult r = solver.solve(ContactLaw::hertz_natural(zeta), options(1e-10));
-    for (const EndResult& e : {*r.naive, *r.delayed_recovery}) {
+    for (const EndResult& e : {*r[CollisionEnd::naive], *r[CollisionEnd::delayed_recovery]}) {
       const double kinetic = 0.5 * e.velocity * e.velocity;
       const double elastic = 0.4 * std::pow(e.x, 2.5);
       EXPECT_NEAR(kinetic + elastic, 0.5 - e.dissipated_energy, 1e-11) << "zeta=" << zeta;
@@ -107,12 +109,13 @@ TEST(HertzSolver, DelayedRecoveryEndsEarlierWithLargerEps) {
   CollisionSolver solver;
   for (const double zeta : {1e-6, 0.01, 0.5, 3.0, 100.0}) {
     const CollisionResult r = solver.solve(ContactLaw::hertz_natural(zeta), options(1e-8));
-    EXPECT_LT(r.delayed_recovery->tau, r.naive->tau);
-    EXPECT_GT(r.delayed_recovery->eps, r.naive->eps);
-    EXPECT_GT(r.delayed_recovery->x, 0.0);
-    EXPECT_LT(r.max_compression.tau, r.delayed_recovery->tau);
+    EXPECT_LT(r[CollisionEnd::delayed_recovery]->tau, r[CollisionEnd::naive]->tau);
+    EXPECT_GT(r[CollisionEnd::delayed_recovery]->eps, r[CollisionEnd::naive]->eps);
+    EXPECT_GT(r[CollisionEnd::delayed_recovery]->x, 0.0);
+    EXPECT_LT(r.max_compression.tau, r[CollisionEnd::delayed_recovery]->tau);
     // the force vanishes there: ζ x' + x = 0
-    EXPECT_NEAR(zeta * -r.delayed_recovery->eps + r.delayed_recovery->x, 0.0, 1e-7 * r.delayed_recovery->x);
+    EXPECT_NEAR(zeta * -r[CollisionEnd::delayed_recovery]->eps + r[CollisionEnd::delayed_recovery]->x, 0.0,
+                1e-7 * r[CollisionEnd::delayed_recovery]->x);
   }
 }
 
@@ -124,9 +127,11 @@ TEST(HertzSolver, MethodsAndFormulationsAgree) {
       SolveOptions o = options(1e-8, Method::adams);
       o.smooth_ends = smooth;
       const CollisionResult r = solver.solve(ContactLaw::hertz_natural(zeta), o);
-      EXPECT_NEAR(r.naive->eps, ref.naive->eps, 1e-8 * relative_error_bound(*ref.naive)) << zeta << smooth;
-      EXPECT_NEAR(r.delayed_recovery->eps, ref.delayed_recovery->eps,
-                  1e-8 * relative_error_bound(*ref.delayed_recovery));
+      EXPECT_NEAR(r[CollisionEnd::naive]->eps, ref[CollisionEnd::naive]->eps,
+                  1e-8 * relative_error_bound(*ref[CollisionEnd::naive]))
+          << zeta << smooth;
+      EXPECT_NEAR(r[CollisionEnd::delayed_recovery]->eps, ref[CollisionEnd::delayed_recovery]->eps,
+                  1e-8 * relative_error_bound(*ref[CollisionEnd::delayed_recovery]));
     }
   }
 }
@@ -134,19 +139,20 @@ TEST(HertzSolver, MethodsAndFormulationsAgree) {
 TEST(HertzSolver, OnlyRequestedEndsAreComputed) {
   CollisionSolver solver;
   SolveOptions delayed = options(1e-8);
-  delayed.ends.naive = false;
+  delayed.ends.erase(CollisionEnd::naive);
   SolveOptions both = options(1e-8);
   const CollisionResult d = solver.solve(ContactLaw::hertz_natural(50.0), delayed);
   const CollisionResult b = solver.solve(ContactLaw::hertz_natural(50.0), both);
-  EXPECT_FALSE(d.naive);
-  ASSERT_TRUE(d.delayed_recovery);
+  EXPECT_FALSE(d[CollisionEnd::naive]);
+  ASSERT_TRUE(d[CollisionEnd::delayed_recovery]);
   // the naive tail (a slow relaxation over ~ζ ln ζ) is not integrated when only delayed recovery is asked
   EXPECT_LT(d.stats.steps, b.stats.steps);
   delayed.keep_trajectory = true;
   const CollisionResult t = solver.solve(ContactLaw::hertz_natural(50.0), delayed);
-  EXPECT_EQ(t.trajectory.back().tau, t.delayed_recovery->tau);
-  EXPECT_LT(t.delayed_recovery->tau, 0.01 * b.naive->tau);
-  EXPECT_NEAR(d.delayed_recovery->eps, b.delayed_recovery->eps, 1e-8 * d.delayed_recovery->eps);
+  EXPECT_EQ(t.trajectory.back().tau, t[CollisionEnd::delayed_recovery]->tau);
+  EXPECT_LT(t[CollisionEnd::delayed_recovery]->tau, 0.01 * b[CollisionEnd::naive]->tau);
+  EXPECT_NEAR(d[CollisionEnd::delayed_recovery]->eps, b[CollisionEnd::delayed_recovery]->eps,
+              1e-8 * d[CollisionEnd::delayed_recovery]->eps);
 }
 
 TEST(HertzSolver, TrajectoryIsKeptOnlyWhenAsked) {
@@ -163,7 +169,7 @@ TEST(HertzSolver, TrajectoryIsKeptOnlyWhenAsked) {
     const auto& p = r.trajectory[i];
     EXPECT_NEAR(p.acceleration, -std::sqrt(std::max(p.x, 0.0)) * (0.5 * p.velocity + p.x), 1e-12);
   }
-  EXPECT_NEAR(r.trajectory.back().tau, r.naive->tau, 1e-12);
+  EXPECT_NEAR(r.trajectory.back().tau, r[CollisionEnd::naive]->tau, 1e-12);
 }
 
 TEST(HertzSolver, StatisticsAreCounted) {
@@ -182,8 +188,8 @@ TEST(HertzSolver, SolverIsReusableAcrossLawsAndMethods) {
   solver.solve(ContactLaw::linear_dashpot(0.3), options(1e-6, Method::bdf));
   solver.solve(ContactLaw::hertz_natural(40.0), options(1e-6, Method::adams));
   const CollisionResult again = solver.solve(ContactLaw::hertz_natural(0.7), options(1e-9));
-  EXPECT_EQ(first.naive->eps, again.naive->eps);
-  EXPECT_EQ(first.delayed_recovery->eps, again.delayed_recovery->eps);
+  EXPECT_EQ(first[CollisionEnd::naive]->eps, again[CollisionEnd::naive]->eps);
+  EXPECT_EQ(first[CollisionEnd::delayed_recovery]->eps, again[CollisionEnd::delayed_recovery]->eps);
   EXPECT_EQ(first.stats.steps, again.stats.steps);
 }
 
@@ -194,7 +200,7 @@ TEST(HertzSolver, RejectsBadRequests) {
     EXPECT_THROW(solver.solve(law, options(tol)), InvalidInput) << tol;
   }
   SolveOptions none = options(1e-8);
-  none.ends = {false, false};
+  none.ends = EndSet{};
   EXPECT_THROW(solver.solve(law, none), InvalidInput);
 }
 

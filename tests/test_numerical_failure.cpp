@@ -31,7 +31,7 @@ TEST(NumericalFailure, TooMuchWorkNamesZetaEndToleranceAndFlag) {
   SolveOptions options;
   options.tolerance = 1e-9;
   options.max_steps_per_phase = 3;
-  options.ends = {false, true};
+  options.ends = EndSet{CollisionEnd::delayed_recovery};
   for (const Method method : {Method::bdf, Method::adams}) {
     options.method = method;
     const std::string message = failure_message(ContactLaw::hertz_natural(2.5), options);
@@ -63,7 +63,8 @@ TEST(NumericalFailure, NonFiniteRightHandSideIsAFailureNotANumber) {
     CollisionSolver solver;
     try {
       const CollisionResult r = solver.solve(broken, options);
-      ADD_FAILURE() << "solved a NaN law: eps " << (r.naive ? r.naive->eps : -1.0);
+      ADD_FAILURE() << "solved a NaN law: eps "
+                    << (r[CollisionEnd::naive] ? r[CollisionEnd::naive]->eps : -1.0);
     } catch (const NumericalFailure& e) {
       expect_names(e.what(), {"zeta=1", "tolerance 1e-08", std::string("method ") + method_name(method)});
       EXPECT_TRUE(std::string(e.what()).find("flag -") != std::string::npos ||
@@ -89,8 +90,8 @@ TEST(NumericalFailure, TheSolverIsUsableAfterAFailure) {
   EXPECT_THROW(solver.solve(ContactLaw::hertz_natural(1.0), starved), NumericalFailure);
   const SolveOptions normal;
   CollisionSolver fresh;
-  EXPECT_EQ(solver.solve(ContactLaw::hertz_natural(1.0), normal).naive->eps,
-            fresh.solve(ContactLaw::hertz_natural(1.0), normal).naive->eps);
+  EXPECT_EQ(solver.solve(ContactLaw::hertz_natural(1.0), normal)[CollisionEnd::naive]->eps,
+            fresh.solve(ContactLaw::hertz_natural(1.0), normal)[CollisionEnd::naive]->eps);
 }
 
 TEST(NumericalFailure, MaxStepsMustBePositive) {

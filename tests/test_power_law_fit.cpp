@@ -55,9 +55,9 @@ TEST(NaivePrefactor, AgreesWithTheHighPrecisionValueAndTheSolver) {
   CollisionSolver solver;
   SolveOptions options;
   options.tolerance = 1e-11;
-  options.ends = selection_of(CollisionEnd::naive);
+  options.ends = EndSet{CollisionEnd::naive};
   // Corrections fall off like exp(-2 q ζ^{5/3}): already below the tolerance at ζ = 10.
-  const double eps = solver.solve(ContactLaw::hertz_natural(10.0), options).naive->eps;
+  const double eps = solver.solve(ContactLaw::hertz_natural(10.0), options)[CollisionEnd::naive]->eps;
   EXPECT_NEAR(eps / asymptotics::naive_eps(10.0, kappa.value), 1.0, 1e-11);
 }
 

@@ -59,7 +59,7 @@ zeta = [1, 10]
   EXPECT_EQ(s.method, Method::bdf);
   ASSERT_EQ(s.sweeps.size(), 2U);
   EXPECT_EQ(s.sweeps[0].zeta, (std::vector<double>{0, 0.25, 0.5, 0.75, 1}));
-  EXPECT_FALSE(s.sweeps[0].ends.naive);
+  EXPECT_FALSE(s.sweeps[0].ends.contains(CollisionEnd::naive));
   EXPECT_FALSE(s.sweeps[0].quantities.duration);
   EXPECT_NEAR(s.sweeps[1].velocity_m_s[1], 1.0, 1e-15);
   EXPECT_EQ(s.sweeps[1].velocity_m_s[2], 10.0);

@@ -19,7 +19,7 @@
 namespace restitution::scene {
 namespace {
 
-CollisionResult direct(double zeta, EndSelection ends, bool trajectory) {
+CollisionResult direct(double zeta, EndSet ends, bool trajectory) {
   CollisionSolver solver;
   SolveOptions o;
   o.ends = ends;
@@ -40,12 +40,12 @@ TEST(SceneRun, DelayedRecoveryOnlyNeverIntegratesTheNaiveTail) {
   ASSERT_EQ(r.solved.size(), 2U);
   for (std::size_t i = 0; i < 2; ++i) {
     const double zeta = s.sweeps[0].zeta[i];
-    EXPECT_FALSE(r.solved[i].naive.has_value());
-    ASSERT_TRUE(r.solved[i].delayed_recovery.has_value());
+    EXPECT_FALSE(r.solved[i][CollisionEnd::naive].has_value());
+    ASSERT_TRUE(r.solved[i][CollisionEnd::delayed_recovery].has_value());
     EXPECT_TRUE(r.solved[i].trajectory.empty());
-    expect_same_stats(r.solved[i].stats, direct(zeta, {false, true}, false).stats);
+    expect_same_stats(r.solved[i].stats, direct(zeta, EndSet{CollisionEnd::delayed_recovery}, false).stats);
     // Going on to the naive end costs more steps: the scene did not pay for them.
-    EXPECT_LT(r.solved[i].stats.steps, direct(zeta, {true, true}, false).stats.steps);
+    EXPECT_LT(r.solved[i].stats.steps, direct(zeta, EndSet::both(), false).stats.steps);
   }
 }
 
@@ -60,10 +60,10 @@ TEST(SceneRun, OneSolveIsSharedByEveryOutputThatNeedsIt) {
   EXPECT_EQ(r.plan.sweeps[1][0].job, r.plan.sweeps[0][1].job);
   EXPECT_EQ(r.plan.trajectories[0].job, r.plan.sweeps[0][0].job);
   const CollisionResult& half = r.solved[r.plan.sweeps[0][0].job];
-  expect_same_stats(half.stats, direct(0.5, {true, true}, true).stats);
+  expect_same_stats(half.stats, direct(0.5, EndSet::both(), true).stats);
   EXPECT_FALSE(half.trajectory.empty());
   const CollisionResult& one = r.solved[r.plan.sweeps[0][1].job];
-  expect_same_stats(one.stats, direct(1.0, {true, true}, false).stats);
+  expect_same_stats(one.stats, direct(1.0, EndSet::both(), false).stats);
   EXPECT_TRUE(one.trajectory.empty());
   // The total is the field-by-field sum (SolverStats operator+=).
   EXPECT_EQ(r.total.steps, half.stats.steps + one.stats.steps);
@@ -97,10 +97,10 @@ TEST(SceneRun, ApproximationsAreEvaluatedBesideTheNumerics) {
   const SceneResults r = run_scene(s, plan_scene(s));
   const auto& columns = r.sweeps[0].approximations;
   ASSERT_EQ(columns.size(), 3U);  // two approximations and the naive large-ζ law
-  const double eps_small = r.solved[r.plan.sweeps[0][0].job].naive->eps;
+  const double eps_small = r.solved[r.plan.sweeps[0][0].job][CollisionEnd::naive]->eps;
   EXPECT_NEAR(columns[0].eps[0] / eps_small, 1.0, 1e-10);  // the series at ζ = 0.01
   EXPECT_NEAR(columns[1].eps[0] / eps_small, 1.0, 1e-6);   // the Padé agrees with the series at small ζ
-  const double eps_large = r.solved[r.plan.sweeps[0][1].job].naive->eps;
+  const double eps_large = r.solved[r.plan.sweeps[0][1].job][CollisionEnd::naive]->eps;
   EXPECT_NEAR(columns[2].eps[1] / eps_large, 1.0, 1e-9);  // κ ζ^{-5} at ζ = 20
   EXPECT_THROW((void)parse_scene("output = \"o\"\n[[sweep]]\nzeta = 1\napproximations = [\"taylor\"]\n", "t"),
                InvalidInput);
@@ -130,8 +130,9 @@ TEST(SceneRun, ResultsDoNotDependOnTheNumberOfThreads) {
   const SceneResults b = run_scene(s, plan_scene(s), three);
   EXPECT_EQ(calls, 12U);
   for (std::size_t i = 0; i < a.solved.size(); ++i) {
-    EXPECT_EQ(a.solved[i].naive->eps, b.solved[i].naive->eps);
-    EXPECT_EQ(a.solved[i].delayed_recovery->eps, b.solved[i].delayed_recovery->eps);
+    EXPECT_EQ(a.solved[i][CollisionEnd::naive]->eps, b.solved[i][CollisionEnd::naive]->eps);
+    EXPECT_EQ(a.solved[i][CollisionEnd::delayed_recovery]->eps,
+              b.solved[i][CollisionEnd::delayed_recovery]->eps);
   }
 }
 

@@ -42,11 +42,13 @@ TEST(SeriesApproximations, RecomputedSeriesMatchSolverInsideTheirRange) {
     const CollisionResult r = solve(solver, zeta);
     const Value naive = naive_series(zeta, naive_terms(40));
     const Value delayed = delayed_recovery_series(zeta, delayed_terms(60));
-    EXPECT_NEAR(naive.eps, r.naive->eps, 3e-11 * r.naive->eps);
-    EXPECT_NEAR(naive.one_minus_eps, r.naive->one_minus_eps, 3e-11 * r.naive->one_minus_eps);
-    EXPECT_NEAR(delayed.eps, r.delayed_recovery->eps, 3e-11 * r.delayed_recovery->eps);
-    EXPECT_NEAR(delayed.one_minus_eps, r.delayed_recovery->one_minus_eps,
-                3e-11 * r.delayed_recovery->one_minus_eps);
+    EXPECT_NEAR(naive.eps, r[CollisionEnd::naive]->eps, 3e-11 * r[CollisionEnd::naive]->eps);
+    EXPECT_NEAR(naive.one_minus_eps, r[CollisionEnd::naive]->one_minus_eps,
+                3e-11 * r[CollisionEnd::naive]->one_minus_eps);
+    EXPECT_NEAR(delayed.eps, r[CollisionEnd::delayed_recovery]->eps,
+                3e-11 * r[CollisionEnd::delayed_recovery]->eps);
+    EXPECT_NEAR(delayed.one_minus_eps, r[CollisionEnd::delayed_recovery]->one_minus_eps,
+                3e-11 * r[CollisionEnd::delayed_recovery]->one_minus_eps);
   }
 }
 
@@ -66,7 +68,7 @@ TEST(SeriesApproximations, PublishedSeriesCarryTheirC1Error) {
   CollisionSolver solver;
   const CollisionResult r = solve(solver, 1e-4);
   const Value table3 = naive_series(1e-4, published::kTable3C);
-  const double error = std::abs(table3.one_minus_eps / r.naive->one_minus_eps - 1.0);
+  const double error = std::abs(table3.one_minus_eps / r[CollisionEnd::naive]->one_minus_eps - 1.0);
   EXPECT_GT(error, 3e-9);
   EXPECT_LT(error, 4e-9);
 }

@@ -38,11 +38,11 @@ void expect_identical(const CollisionResult& a, const CollisionResult& b, double
   EXPECT_EQ(a.max_compression.x, b.max_compression.x) << zeta;
   EXPECT_EQ(a.stats.steps, b.stats.steps) << zeta;
   EXPECT_EQ(a.stats.rhs_evaluations, b.stats.rhs_evaluations) << zeta;
-  for (const auto member : {&CollisionResult::naive, &CollisionResult::delayed_recovery}) {
-    ASSERT_EQ((a.*member).has_value(), (b.*member).has_value()) << zeta;
-    if (!(a.*member)) continue;
-    const EndResult& x = *(a.*member);
-    const EndResult& y = *(b.*member);
+  for (const CollisionEnd end : kCollisionEnds) {
+    ASSERT_EQ(a[end].has_value(), b[end].has_value()) << zeta;
+    if (!a[end]) continue;
+    const EndResult& x = *a[end];
+    const EndResult& y = *b[end];
     EXPECT_EQ(x.eps, y.eps) << zeta;
     EXPECT_EQ(x.one_minus_eps, y.one_minus_eps) << zeta;
     EXPECT_EQ(x.tau, y.tau) << zeta;
@@ -144,7 +144,7 @@ TEST(Sweep, NumericalFailureMarksThePointAndTheRestGoesOn) {
   // With at most 400 CVODE steps per phase the long naive tail of large ζ cannot be integrated (it needs
   // thousands of steps), while small ζ need far fewer.
   SolveOptions options = quick_options();
-  options.ends = {true, false};
+  options.ends = EndSet{CollisionEnd::naive};
   options.max_steps_per_phase = 400;
   const std::vector<double> zetas{0.01, 0.5, 300.0, 1.0, 1000.0};
   const std::vector<SweepPoint> points = sweep_in_order(zetas, options, 2);
@@ -197,7 +197,7 @@ TEST(Sweep, BadOptionsAreRefusedBeforeAnyPoint) {
 // --- The CSV table -----------------------------------------------------------------------------------
 
 TEST(SweepTable, FailedRowsKeepTheColumnsAndQuoteTheMessage) {
-  const EndSelection both;
+  const EndSet both = EndSet::both();
   const std::string header = cli::sweep_header(both);
   SweepPoint failed;
   failed.zeta = 2.5;
@@ -246,7 +246,7 @@ TEST(CliSweep, WritesRowsInZetaOrderMatchingTheLibrary) {
       "zeta,delayed_recovery_eps,delayed_recovery_one_minus_eps,delayed_recovery_tau,delayed_recovery_x,"
       "max_compression_tau,max_compression_x,steps,status,error");
   SolveOptions options = quick_options();
-  options.ends = {false, true};
+  options.ends = EndSet{CollisionEnd::delayed_recovery};
   const std::vector<double> zetas = zeta_values({0.01, 100.0, 9, true});
   CollisionSolver solver;
   for (std::size_t i = 0; i < zetas.size(); ++i) {

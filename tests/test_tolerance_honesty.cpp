@@ -33,9 +33,11 @@ TEST(ToleranceHonesty, ErrorStaysBelowRequestedTolerance) {
       const CollisionResult r = solver.solve(law, o);
       // The reference itself carries an error of up to ~1e-11 relative.
       const double allowed = tolerance + 1e-11;
-      EXPECT_LE(contract_error(*r.naive, *reference.naive), allowed)
+      EXPECT_LE(contract_error(*r[CollisionEnd::naive], *reference[CollisionEnd::naive]), allowed)
           << "naive zeta=" << zeta << " T=" << tolerance;
-      EXPECT_LE(contract_error(*r.delayed_recovery, *reference.delayed_recovery), allowed)
+      EXPECT_LE(
+          contract_error(*r[CollisionEnd::delayed_recovery], *reference[CollisionEnd::delayed_recovery]),
+          allowed)
           << "delayed zeta=" << zeta << " T=" << tolerance;
       ++checked;
     }

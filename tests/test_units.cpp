@@ -153,16 +153,16 @@ TEST(Units, NaturalUnitsConvertBackToSecondsAndMetres) {
   const SiCollision si = integrate_si(c.hertz.k, c.hertz.gamma, v);
   CollisionSolver solver;
   SolveOptions options;
-  options.ends = {true, false};
+  options.ends = EndSet{CollisionEnd::naive};
   const CollisionResult r = solver.solve(ContactLaw::hertz_natural(zeta_from(c.hertz.beta, v)), options);
   const NaturalScales s = natural_scales(c.hertz.k, v);
-  EXPECT_NEAR(r.naive->tau * s.time_s, si.duration_s, 1e-6 * si.duration_s);
+  EXPECT_NEAR(r[CollisionEnd::naive]->tau * s.time_s, si.duration_s, 1e-6 * si.duration_s);
   EXPECT_NEAR(r.max_compression.x * s.length_m, si.max_compression_m, 1e-6 * si.max_compression_m);
-  EXPECT_NEAR(r.naive->eps, si.rebound_m_s / v, 1e-6);
+  EXPECT_NEAR(r[CollisionEnd::naive]->eps, si.rebound_m_s / v, 1e-6);
   // The (β, v) form of Eq. 23 gives the same ε (τ unchanged, x reported in natural units).
   const CollisionResult scaled = solver.solve(ContactLaw::hertz_scaled(c.hertz.beta, v), options);
-  EXPECT_NEAR(scaled.naive->eps, r.naive->eps, 1e-9);
-  EXPECT_NEAR(scaled.naive->tau, r.naive->tau, 1e-8);
+  EXPECT_NEAR(scaled[CollisionEnd::naive]->eps, r[CollisionEnd::naive]->eps, 1e-9);
+  EXPECT_NEAR(scaled[CollisionEnd::naive]->tau, r[CollisionEnd::naive]->tau, 1e-8);
 }
 
 TEST(Units, CharacteristicVelocityOfThe1999Paper) {

@@ -43,7 +43,8 @@ double eps_scalar(double zeta, const std::string& end, double tolerance, const s
 // sweep reports them without it).
 void check_point(double zeta, const SolveOptions& options) {
   ContactLaw::hertz_natural(zeta);
-  if (options.method == Method::taylor && options.ends.naive && zeta > kTaylorNaiveZetaMax) {
+  if (options.method == Method::taylor && options.ends.contains(CollisionEnd::naive) &&
+      zeta > kTaylorNaiveZetaMax) {
     throw InvalidInput(
         fmt::format("method taylor computes the naive end only for zeta <= {:g}, got zeta={}: use "
                     "method='auto' or 'bdf'",
@@ -130,9 +131,12 @@ void bind_result_types(py::module_& m) {
           "method", [](const CollisionResult& r) { return method_name(r.method); },
           "The method actually used: bdf, adams or taylor.")
       .def_readonly("max_compression", &CollisionResult::max_compression)
-      .def_readonly("naive", &CollisionResult::naive, "The naive end (x = 0), or None if not asked for.")
-      .def_readonly("delayed_recovery", &CollisionResult::delayed_recovery,
-                    "The delayed-recovery end (force = 0), or None if not asked for.")
+      .def_property_readonly(
+          "naive", [](const CollisionResult& r) { return r[CollisionEnd::naive]; },
+          "The naive end (x = 0), or None if not asked for.")
+      .def_property_readonly(
+          "delayed_recovery", [](const CollisionResult& r) { return r[CollisionEnd::delayed_recovery]; },
+          "The delayed-recovery end (force = 0), or None if not asked for.")
       .def_readonly("stats", &CollisionResult::stats)
       .def_property_readonly(
           "has_trajectory", [](const CollisionResult& r) { return !r.trajectory.empty(); },
@@ -152,9 +156,11 @@ void bind_result_types(py::module_& m) {
           [](const CollisionResult& r) { return column(r.trajectory, &TrajectoryPoint::acceleration); },
           "Trajectory x''(tau) (natural units); empty unless trajectory=True.")
       .def("__repr__", [](const CollisionResult& r) {
-        return fmt::format("CollisionResult(zeta={:.17g}, method={}, naive={}, delayed_recovery={})",
-                           r.parameter, method_name(r.method), r.naive ? end_repr(*r.naive) : "None",
-                           r.delayed_recovery ? end_repr(*r.delayed_recovery) : "None");
+        std::string ends;
+        for (const CollisionEnd end : kCollisionEnds)
+          ends += fmt::format(", {}={}", end_key(end), r[end] ? end_repr(*r[end]) : "None");
+        return fmt::format("CollisionResult(zeta={:.17g}, method={}{})", r.parameter, method_name(r.method),
+                           ends);
       });
 }
 

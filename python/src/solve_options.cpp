@@ -10,11 +10,11 @@ SolveOptions solve_options(const std::string& end, double tolerance, const std::
                            bool both_allowed) {
   SolveOptions options;
   if (both_allowed && end == "both") {
-    options.ends = {true, true};
+    options.ends = EndSet::both();
   } else if (both_allowed && end != "naive" && end != "delayed-recovery") {
     throw InvalidInput(fmt::format("end must be naive, delayed-recovery or both, got '{}'", end));
   } else {
-    options.ends = selection_of(end_from_name(end));
+    options.ends = EndSet{end_from_name(end)};
   }
   options.tolerance = tolerance;
   options.method = method_from_name(method);

@@ -43,7 +43,7 @@ LocalSlope local_slope(CollisionSolver& solver, double zeta, CollisionEnd end, d
   constexpr double kStep = 0.05;  // in ln ζ
   SolveOptions options;
   options.tolerance = tolerance;
-  options.ends = selection_of(end);
+  options.ends = EndSet{end};
   const auto log_eps = [&](double log_zeta) {
     const CollisionResult r = solver.solve(ContactLaw::hertz_natural(std::exp(log_zeta)), options);
     return std::log(end_of(r, end).eps);

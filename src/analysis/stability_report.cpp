@@ -30,7 +30,7 @@ StabilityPoint check_point(CollisionSolver& solver, double zeta, CollisionEnd en
   const ContactLaw law = ContactLaw::hertz_natural(zeta);
   SolveOptions options;
   options.tolerance = o.tolerance;
-  options.ends = selection_of(end);
+  options.ends = EndSet{end};
   const CollisionResult production = solver.solve(law, options);
   StabilityPoint p;
   p.zeta = zeta;

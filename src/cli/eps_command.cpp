@@ -22,7 +22,12 @@ struct EpsOptions {
 };
 
 ContactLaw law_from(const EpsOptions& o) {
-  const LawKind kind = law_from_name(o.law);
+  LawKind kind{};
+  try {
+    kind = law_from_name(o.law);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("--law: {}", e.what()));
+  }
   if (kind != LawKind::viscoelastic_hertz && (o.beta || o.velocity)) {
     throw InvalidInput(
         fmt::format("--beta and --velocity belong to --law viscoelastic-hertz; --law {} takes {}", o.law,
@@ -64,8 +69,9 @@ void print_table(const CollisionResult& r) {
     fmt::print("  {:<18} {:>22.15g} {:>22.15g} {:>20.12g} {:>20.12g}\n", name, e.eps, e.one_minus_eps, e.tau,
                e.x);
   };
-  if (r.naive) row("naive", *r.naive);
-  if (r.delayed_recovery) row("delayed-recovery", *r.delayed_recovery);
+  for (const CollisionEnd end : kCollisionEnds) {
+    if (r[end]) row(end_name(end), *r[end]);
+  }
   fmt::print("  solver: {} steps, {} right-hand sides, {} Jacobians, {} root functions\n", r.stats.steps,
              r.stats.rhs_evaluations, r.stats.jacobian_evaluations, r.stats.root_evaluations);
 }

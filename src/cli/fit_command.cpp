@@ -44,7 +44,7 @@ int run_fit(const FitOptions& o) {
   CollisionSolver solver;
   SolveOptions options;
   options.tolerance = o.tolerance;
-  options.ends = selection_of(end);
+  options.ends = EndSet{end};
   std::vector<double> eps;
   std::vector<LocalSlope> slopes;
   for (const double zeta : zetas) {

@@ -14,8 +14,8 @@ struct SolverArguments {
   std::string method = "auto";
 };
 
-inline EndSelection end_selection(const std::string& end) {
-  return {end != "delayed-recovery", end != "naive"};
+inline EndSet end_selection(const std::string& end) {
+  return end == "both" ? EndSet::both() : EndSet{end_from_name(end)};
 }
 
 inline Method method_from(const std::string& name) {

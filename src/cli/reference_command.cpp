@@ -31,11 +31,11 @@ int run_reference(const ReferenceOptions& o) {
     fmt::print("zeta {:.17g}: agreement of the two orders {:.3g}, {} steps\n", s.parameter, s.agreement,
                s.steps);
     fmt::print("  maximal compression  tau = {}  x = {}\n", digits(s.tau_max), digits(s.x_max));
-    for (const auto& [name, end] :
-         {std::pair{"naive", &s.naive}, std::pair{"delayed-recovery", &s.delayed_recovery}}) {
-      if (!*end) continue;
-      fmt::print("  {:<17} eps = {}  1-eps = {}\n  {:<17} tau = {}  x = {}\n", name, digits((*end)->eps),
-                 digits((*end)->one_minus_eps), "", digits((*end)->tau), digits((*end)->x));
+    for (const CollisionEnd e : kCollisionEnds) {
+      const auto& end = s.ends[e];
+      if (!end) continue;
+      fmt::print("  {:<17} eps = {}  1-eps = {}\n  {:<17} tau = {}  x = {}\n", end_name(e), digits(end->eps),
+                 digits(end->one_minus_eps), "", digits(end->tau), digits(end->x));
     }
     return 0;
   }

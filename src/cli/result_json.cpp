@@ -23,8 +23,9 @@ void write_collision_fields(JsonWriter& json, const CollisionResult& result) {
   json.key("max_compression").begin_object();
   json.field("tau", result.max_compression.tau).field("x", result.max_compression.x);
   json.end_object();
-  if (result.naive) write_end(json, "naive", *result.naive);
-  if (result.delayed_recovery) write_end(json, "delayed_recovery", *result.delayed_recovery);
+  for (const CollisionEnd end : kCollisionEnds) {
+    if (result[end]) write_end(json, end_key(end), *result[end]);
+  }
   const SolverStats& s = result.stats;
   json.key("stats").begin_object();
   json.field("steps", s.steps)

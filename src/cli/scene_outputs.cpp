@@ -33,13 +33,6 @@ std::string join(const std::vector<std::string>& items, const char* separator = 
   return out;
 }
 
-std::vector<CollisionEnd> ends_of(const EndSelection& e) {
-  std::vector<CollisionEnd> out;
-  if (e.naive) out.push_back(CollisionEnd::naive);
-  if (e.delayed_recovery) out.push_back(CollisionEnd::delayed_recovery);
-  return out;
-}
-
 // A markdown table of up to `limit` rows spread evenly over the table (first and last included).
 std::string markdown_rows(const Table& t, const std::vector<std::string>& columns, std::size_t limit) {
   std::string out = "| " + join(columns, " | ") + " |";
@@ -153,8 +146,8 @@ class SceneWriter {
     const bool physical = !s.velocity_m_s.empty();
     const std::string x = physical ? "velocity_m_s" : "zeta";
     std::vector<std::string> eps_columns;
-    for (const CollisionEnd e : ends_of(s.ends)) {
-      if (s.quantities.eps) eps_columns.push_back(std::string("eps_") + end_column(e));
+    for (const CollisionEnd e : s.ends.members()) {
+      if (s.quantities.eps) eps_columns.push_back(std::string("eps_") + end_key(e));
     }
     std::vector<std::string> dashed;
     std::vector<std::string> differences;
@@ -186,8 +179,8 @@ class SceneWriter {
       shown.push_back(differences[k]);
     }
     if (s.empirical) shown.emplace_back("eps_empirical");
-    for (const CollisionEnd e : ends_of(s.ends)) {
-      const std::string c = std::string("duration_s_") + end_column(e);
+    for (const CollisionEnd e : s.ends.members()) {
+      const std::string c = std::string("duration_s_") + end_key(e);
       if (std::find(t.columns.begin(), t.columns.end(), c) != t.columns.end()) shown.push_back(c);
     }
     if (std::find(t.columns.begin(), t.columns.end(), "max_compression_m") != t.columns.end()) {
@@ -227,7 +220,7 @@ class SceneWriter {
 
   std::string describe_sweep(const scene::Sweep& s, const Table& t) {
     std::vector<std::string> names;
-    for (const CollisionEnd e : ends_of(s.ends)) names.emplace_back(end_name(e));
+    for (const CollisionEnd e : s.ends.members()) names.emplace_back(end_name(e));
     const std::string ends = join(names, " and ");
     const auto& points = results_.plan.sweeps[&s - scene_.sweeps.data()];
     std::string what;
@@ -266,8 +259,9 @@ class SceneWriter {
     double worst = 0.0;
     double at = 0.0;
     const std::size_t e = t.column("eps_empirical");
-    const CollisionEnd end = s.ends.naive ? CollisionEnd::naive : CollisionEnd::delayed_recovery;
-    const std::size_t n = t.column(std::string("eps_") + end_column(end));
+    const CollisionEnd end =
+        s.ends.contains(CollisionEnd::naive) ? CollisionEnd::naive : CollisionEnd::delayed_recovery;
+    const std::size_t n = t.column(std::string("eps_") + end_key(end));
     for (const auto& row : t.rows) {
       if (!(row[e] < 1.0)) continue;
       const double d = std::abs(row[n] / row[e] - 1.0);
@@ -292,8 +286,8 @@ class SceneWriter {
     const Table t = trajectory_table(results_, i);
     write_file(tr.name + ".csv", t.csv());
     std::vector<std::string> marks;
-    for (const CollisionEnd e : ends_of(tr.ends)) {
-      const auto& end = e == CollisionEnd::naive ? r.naive : r.delayed_recovery;
+    for (const CollisionEnd e : tr.ends.members()) {
+      const auto& end = r[e];
       marks.push_back(fmt::format("{}:{:.17g}", end_name(e), end->tau));
     }
     report_ += fmt::format("## {}\n\n", tr.title);
@@ -310,10 +304,10 @@ class SceneWriter {
     json_.field("kind", "trajectory")
         .field("zeta", p.parameter)
         .field("points", static_cast<long>(t.rows.size()));
-    for (const CollisionEnd e : ends_of(tr.ends)) {
-      const EndResult& end = *(e == CollisionEnd::naive ? r.naive : r.delayed_recovery);
+    for (const CollisionEnd e : tr.ends.members()) {
+      const EndResult& end = *r[e];
       report_ += fmt::format("| {} | {} | {} | {} |\n", end_name(e), g(end.tau), g(end.eps), g(end.x));
-      json_.key(end_column(e)).begin_object();
+      json_.key(end_key(e)).begin_object();
       json_.field("tau", end.tau).field("eps", end.eps).field("x", end.x);
       json_.end_object();
     }
@@ -331,10 +325,10 @@ class SceneWriter {
     std::vector<std::string> numeric;
     std::vector<std::string> exact;
     std::vector<std::string> errors;
-    for (const CollisionEnd e : ends_of(d.ends)) {
-      numeric.push_back(std::string("eps_") + end_column(e));
-      exact.push_back(std::string("eps_exact_") + end_column(e));
-      errors.push_back(std::string("relative_error_") + end_column(e));
+    for (const CollisionEnd e : d.ends.members()) {
+      numeric.push_back(std::string("eps_") + end_key(e));
+      exact.push_back(std::string("eps_exact_") + end_key(e));
+      errors.push_back(std::string("relative_error_") + end_key(e));
     }
     report_ += plot("scene_xy", d.name,
                     {"--x", "damping_ratio", "--points", join(numeric), "--y", join(exact), "--error",

@@ -17,15 +17,8 @@ constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 
 const EndResult* end_if_computed(const CollisionResult* r, CollisionEnd end) {
   if (r == nullptr) return nullptr;
-  const auto& e = end == CollisionEnd::naive ? r->naive : r->delayed_recovery;
+  const auto& e = (*r)[end];
   return e ? &*e : nullptr;
-}
-
-std::vector<CollisionEnd> requested(const EndSelection& ends) {
-  std::vector<CollisionEnd> out;
-  if (ends.naive) out.push_back(CollisionEnd::naive);
-  if (ends.delayed_recovery) out.push_back(CollisionEnd::delayed_recovery);
-  return out;
 }
 
 }  // namespace
@@ -54,24 +47,20 @@ std::size_t Table::column(const std::string& name) const {
   throw std::logic_error("no column " + name);
 }
 
-const char* end_column(CollisionEnd end) {
-  return end == CollisionEnd::naive ? "naive" : "delayed_recovery";
-}
-
 Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results, std::size_t index) {
   const scene::Sweep& s = scene.sweeps[index];
   const auto& points = results.plan.sweeps[index];
   const scene::SweepExtras& extras = results.sweeps[index];
   const bool physical = !s.velocity_m_s.empty();
   const bool si = physical && points.front().k.has_value();
-  const auto ends = requested(s.ends);
+  const auto ends = s.ends.members();
   const scene::Quantities& q = s.quantities;
 
   Table t;
   t.columns = {"zeta"};
   if (physical) t.columns.insert(t.columns.end(), {"velocity_m_s", "beta"});
   for (const CollisionEnd e : ends) {
-    const std::string n = end_column(e);
+    const std::string n = end_key(e);
     if (q.eps) t.columns.push_back("eps_" + n);
     if (q.one_minus_eps) t.columns.push_back("one_minus_eps_" + n);
     if (q.duration) t.columns.push_back("tau_" + n);
@@ -140,9 +129,9 @@ Table dashpot_table(const scene::Scene& scene, const scene::SceneResults& result
   const scene::DashpotCheck& d = scene.dashpots[index];
   Table t;
   t.columns = {"damping_ratio"};
-  const auto ends = requested(d.ends);
+  const auto ends = d.ends.members();
   for (const CollisionEnd e : ends) {
-    const std::string n = end_column(e);
+    const std::string n = end_key(e);
     t.columns.insert(t.columns.end(), {"eps_" + n, "eps_exact_" + n, "relative_error_" + n});
   }
   for (const scene::PlannedPoint& p : results.plan.dashpots[index]) {

@@ -20,9 +20,6 @@ struct Table {
   [[nodiscard]] std::size_t column(const std::string& name) const;  // index; throws if absent
 };
 
-// Suffix of an end in column names: "naive" | "delayed_recovery".
-const char* end_column(CollisionEnd end);
-
 // index: of the task in the scene (Scene::sweeps, ::trajectories, ::dashpots).
 Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results, std::size_t index);
 Table trajectory_table(const scene::SceneResults& results, std::size_t index);

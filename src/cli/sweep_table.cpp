@@ -12,15 +12,6 @@
 namespace restitution::cli {
 namespace {
 
-struct EndColumn {
-  const char* prefix;
-  std::optional<EndResult> CollisionResult::*member;
-  bool EndSelection::*requested;
-};
-constexpr EndColumn kEnds[] = {
-    {"naive", &CollisionResult::naive, &EndSelection::naive},
-    {"delayed_recovery", &CollisionResult::delayed_recovery, &EndSelection::delayed_recovery},
-};
 constexpr int kNumbersPerEnd = 4;
 constexpr int kTrailingNumbers = 3;  // max_compression tau and x, steps
 
@@ -44,30 +35,27 @@ std::string quoted_field(const std::string& text) {
 
 }  // namespace
 
-std::string sweep_header(const EndSelection& ends) {
+std::string sweep_header(EndSet ends) {
   std::string header = "zeta";
-  for (const EndColumn& end : kEnds) {
-    if (!(ends.*end.requested)) continue;
+  for (const CollisionEnd end : ends.members()) {
     for (const char* column : {"eps", "one_minus_eps", "tau", "x"})
-      header += fmt::format(",{}_{}", end.prefix, column);
+      header += fmt::format(",{}_{}", end_key(end), column);
   }
   return header + ",max_compression_tau,max_compression_x,steps,status,error";
 }
 
-std::string sweep_row(const SweepPoint& point, const EndSelection& ends) {
+std::string sweep_row(const SweepPoint& point, EndSet ends) {
   std::string row = number17(point.zeta);
   if (!point.result) {
-    int empty = kTrailingNumbers;
-    for (const EndColumn& end : kEnds) empty += (ends.*end.requested) ? kNumbersPerEnd : 0;
+    const int empty = kTrailingNumbers + kNumbersPerEnd * static_cast<int>(ends.members().size());
     for (int i = 0; i < empty; ++i) row += ',';
     row += ",failed,";
     row += quoted_field(point.error);
     return row;
   }
   const CollisionResult& r = *point.result;
-  for (const EndColumn& end : kEnds) {
-    if (!(ends.*end.requested)) continue;
-    const EndResult& e = *(r.*end.member);
+  for (const CollisionEnd end : ends.members()) {
+    const EndResult& e = *r[end];
     for (const double value : {e.eps, e.one_minus_eps, e.tau, e.x}) {
       row += ',';
       row += number17(value);

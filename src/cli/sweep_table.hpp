@@ -14,9 +14,9 @@ namespace restitution::cli {
 
 // The CSV columns for the requested ends: zeta, per end eps, one_minus_eps, tau, x, then the maximal
 // compression's tau and x, steps, status ("ok" | "failed") and error.
-std::string sweep_header(const EndSelection& ends);
+std::string sweep_header(EndSet ends);
 // One CSV row (no newline); a failed point has empty numbers, status "failed" and the quoted message.
-std::string sweep_row(const SweepPoint& point, const EndSelection& ends);
+std::string sweep_row(const SweepPoint& point, EndSet ends);
 
 // The finished rows of an interrupted sweep, read back from its partial file.
 struct PartialSweep {

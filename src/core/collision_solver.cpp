@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -43,14 +44,14 @@ const char* end_name(CollisionEnd end) {
   return end == CollisionEnd::naive ? "naive" : "delayed-recovery";
 }
 
+const char* end_key(CollisionEnd end) {
+  return end == CollisionEnd::naive ? "naive" : "delayed_recovery";
+}
+
 CollisionEnd end_from_name(const std::string& name) {
   if (name == "naive") return CollisionEnd::naive;
   if (name == "delayed-recovery") return CollisionEnd::delayed_recovery;
   throw InvalidInput(fmt::format("end must be naive or delayed-recovery, got '{}'", name));
-}
-
-EndSelection selection_of(CollisionEnd end) {
-  return {end == CollisionEnd::naive, end == CollisionEnd::delayed_recovery};
 }
 
 const EndResult& end_of(const CollisionResult& result, CollisionEnd end) {
@@ -73,12 +74,12 @@ double min_tolerance(Method method) {
   return method == Method::taylor ? kMinTaylorTolerance : kMinTolerance;
 }
 
-Method resolve_method(const ContactLaw& law, Method requested, const EndSelection& ends) {
+Method resolve_method(const ContactLaw& law, Method requested, EndSet ends) {
   if (requested != Method::automatic) return requested;
   // Measured (docs/accuracy.md): Adams is cheaper while the damping is weak, BDF once it makes the
   // problem stiff. Only the naive tail is stiff: up to the delayed-recovery end Adams takes 2-4x fewer
   // steps than BDF at every ζ up to 1e4.
-  if (!ends.naive) return Method::adams;
+  if (!ends.contains(CollisionEnd::naive)) return Method::adams;
   return law.parameter() < 5.0 ? Method::adams : Method::bdf;
 }
 
@@ -111,9 +112,9 @@ Point point_of(const ContactLaw& law, Form form, double t, const State& s) {
   return {s[detail::kFirst], law.compression_of(t), s[detail::kVelocity], s[detail::kDissipation]};
 }
 
-const char* end_names(const EndSelection& ends) {
-  if (ends.naive && ends.delayed_recovery) return "both ends";
-  return ends.naive ? "the naive end" : "the delayed-recovery end";
+const char* end_names(EndSet ends) {
+  if (ends == EndSet::both()) return "both ends";
+  return ends.contains(CollisionEnd::naive) ? "the naive end" : "the delayed-recovery end";
 }
 
 EndResult end_result(const ContactLaw& law, const Point& p) {
@@ -167,8 +168,9 @@ class CollisionRun {
   };
 
   [[nodiscard]] bool pending() const {
-    return (options_.ends.naive && !result_.value.naive) ||
-           (options_.ends.delayed_recovery && !result_.value.delayed_recovery);
+    return std::any_of(kCollisionEnds.begin(), kCollisionEnds.end(), [this](CollisionEnd end) {
+      return options_.ends.contains(end) && !result_.value[end];
+    });
   }
 
   [[nodiscard]] NumericalFailure failure(const std::string& what) const {
@@ -192,7 +194,7 @@ class CollisionRun {
   // Whether a phase watches Event::naive_end_excluded: the naive end is pending and only the solve can tell
   // whether it exists.
   [[nodiscard]] bool watch_naive_end_exclusion() const {
-    return options_.ends.naive && !result_.value.naive &&
+    return options_.ends.contains(CollisionEnd::naive) && !result_.value[CollisionEnd::naive] &&
            law_.naive_end_existence() == NaiveEndExistence::decided_by_solve && law_.zeta() > 0.0;
   }
 
@@ -242,7 +244,8 @@ class CollisionRun {
     int count = 0;
     if (is_start) {
       events[static_cast<std::size_t>(count++)] = Event::velocity_halved;
-    } else if (options_.ends.delayed_recovery && !result_.value.delayed_recovery) {
+    } else if (options_.ends.contains(CollisionEnd::delayed_recovery) &&
+               !result_.value[CollisionEnd::delayed_recovery]) {
       events[static_cast<std::size_t>(count++)] = Event::delayed_recovery_end;
     }
     const int excluded = !is_start && watch_naive_end_exclusion() ? count++ : -1;
@@ -254,7 +257,7 @@ class CollisionRun {
       if (excluded >= 0 && step.events_found[static_cast<std::size_t>(excluded)]) no_naive_end(p);
       if (step.reached_stop || (count > 0 && excluded != 0 && step.events_found[0])) {
         if (!is_start && step.events_found[0]) {
-          result_.value.delayed_recovery = end_result(law_, p);
+          result_.value[CollisionEnd::delayed_recovery] = end_result(law_, p);
           if (!pending()) {
             finish_phase();
             return p;
@@ -274,8 +277,10 @@ class CollisionRun {
     if (!pending()) return;
     // Reached u = 0: the naive end, exactly.
     const Point naive{c.tau, 0.0, c.velocity, c.dissipation};
-    if (options_.ends.naive) result_.value.naive = end_result(law_, naive);
-    if (options_.ends.delayed_recovery && !result_.value.delayed_recovery) {
+    if (options_.ends.contains(CollisionEnd::naive))
+      result_.value[CollisionEnd::naive] = end_result(law_, naive);
+    if (options_.ends.contains(CollisionEnd::delayed_recovery) &&
+        !result_.value[CollisionEnd::delayed_recovery]) {
       // The force factor ζx' + x^{a-b} reaches zero at x = (ζ|x'|)^{1/(a-b)} (natural units), which for tiny
       // ζ (below about 1e-295 for viscoelastic Hertz) lies within rounding of u = 0 where CVODE cannot
       // separate it from the naive end. The ends then differ in 1 - ε by a relative ζ^{(b+1)/(a-b)}
@@ -283,8 +288,8 @@ class CollisionRun {
       if (law_.damping() > law_.indistinguishable_ends_zeta()) {
         throw failure("no delayed-recovery end before the overlap vanished");
       }
-      result_.value.delayed_recovery = end_result(law_, naive);
-      result_.value.delayed_recovery->x = law_.force_zero_compression(naive.velocity);
+      result_.value[CollisionEnd::delayed_recovery] = end_result(law_, naive);
+      result_.value[CollisionEnd::delayed_recovery]->x = law_.force_zero_compression(naive.velocity);
     }
   }
 
@@ -300,11 +305,11 @@ class CollisionRun {
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
     events[static_cast<std::size_t>(count++)] = Event::max_compression;
-    if (options_.ends.delayed_recovery)
+    if (options_.ends.contains(CollisionEnd::delayed_recovery))
       events[static_cast<std::size_t>(count++)] = Event::delayed_recovery_end;
     if (switch_x > 0.0) {
       events[static_cast<std::size_t>(count++)] = Event::below_switch;
-    } else if (options_.ends.naive) {
+    } else if (options_.ends.contains(CollisionEnd::naive)) {
       events[static_cast<std::size_t>(count++)] = Event::naive_end;
     }
     if (watch_naive_end_exclusion()) events[static_cast<std::size_t>(count++)] = Event::naive_end_excluded;
@@ -324,11 +329,11 @@ class CollisionRun {
             integrator_.ignore_event(static_cast<int>(i));
             break;
           case Event::delayed_recovery_end:
-            result_.value.delayed_recovery = end_result(law_, p);
+            result_.value[CollisionEnd::delayed_recovery] = end_result(law_, p);
             integrator_.ignore_event(static_cast<int>(i));
             break;
           case Event::naive_end:
-            result_.value.naive = end_result(law_, p);
+            result_.value[CollisionEnd::naive] = end_result(law_, p);
             break;
           case Event::below_switch:
             finish_phase();
@@ -375,14 +380,15 @@ CollisionResult CollisionSolver::solve(const ContactLaw& law, const SolveOptions
   CollisionResult result = CollisionRun(natural, options, plan, impl_->integrator(plan.method)).run();
   // A naive end whose conditioning only the solve reveals (constant damping close to the largest ζ with a
   // naive end): solve again with the local tolerances tightened accordingly.
-  const double conditioning = result.naive ? natural.naive_end_conditioning(result.naive->eps) : 1.0;
+  const auto& naive = result[CollisionEnd::naive];
+  const double conditioning = naive ? natural.naive_end_conditioning(naive->eps) : 1.0;
   if (conditioning >= 1.0) return result;
   const detail::SolvePlan refined = detail::plan_solve(natural, options, conditioning);
   if (refined.relative_tolerance < detail::kSmallestRelativeTolerance) {
     throw InvalidInput(fmt::format(
         "the naive end of natural {} at zeta={} (eps ~ {:.2g}: close to the largest zeta with a naive end, "
         "docs/contact_laws.md) is delivered only to tolerance >= {:.2g}, got {:g}",
-        law_name(natural.kind()), natural.zeta(), result.naive->eps,
+        law_name(natural.kind()), natural.zeta(), naive->eps,
         options.tolerance * detail::kSmallestRelativeTolerance / refined.relative_tolerance,
         options.tolerance));
   }

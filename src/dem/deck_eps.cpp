@@ -12,7 +12,7 @@ double eps_for(double beta, double velocity_m_s, CollisionEnd end, double tolera
   const double zeta = zeta_from(beta, velocity_m_s);
   if (zeta == 0.0) return 1.0;
   SolveOptions options;
-  options.ends = selection_of(end);
+  options.ends = EndSet{end};
   options.tolerance = tolerance;
   options.keep_trajectory = false;
   return end_of(solver.solve(ContactLaw::hertz_natural(zeta), options), end).eps;

@@ -175,13 +175,13 @@ Fits fit(const GeneratorSettings& s, int naive_intervals, int delayed_intervals,
       const double zeta = std::exp(s.s_lo + (i + static_cast<double>((t + 1) / 2)) / s.per_unit);
       const ReferenceSolution r = hertz_reference(zeta, with_naive);
       ++f.solves;
-      gd.push_back(logit(*r.delayed_recovery));
-      td.push_back(logq(r.delayed_recovery->tau));
+      gd.push_back(logit(*r.ends[CollisionEnd::delayed_recovery]));
+      td.push_back(logq(r.ends[CollisionEnd::delayed_recovery]->tau));
       xm.push_back(logq(r.x_max));
       tm.push_back(logq(r.tau_max));
       if (with_naive) {
-        gn.push_back(logit(*r.naive));
-        tn.push_back(logq(r.naive->tau));
+        gn.push_back(logit(*r.ends[CollisionEnd::naive]));
+        tn.push_back(logq(r.ends[CollisionEnd::naive]->tau));
       }
     }
     f.g_delayed.pieces.push_back(interpolate(gd));
@@ -217,13 +217,15 @@ std::string measured_errors(const GeneratorSettings& s, const Fits& f, long& sol
       const double zeta = std::exp(s.s_lo + (static_cast<double>(i) + unit(rng)) / s.per_unit);
       const Real sv = logq(zeta);
       const ReferenceSolution r = hertz_reference(zeta, with_naive);
-      worse(delayed.eps, relative_eps_error(f.g_delayed.at(sv, true), *r.delayed_recovery));
-      worse(delayed.tau, relative(expq(f.tau_delayed.at(sv, true)), r.delayed_recovery->tau));
+      worse(delayed.eps,
+            relative_eps_error(f.g_delayed.at(sv, true), *r.ends[CollisionEnd::delayed_recovery]));
+      worse(delayed.tau,
+            relative(expq(f.tau_delayed.at(sv, true)), r.ends[CollisionEnd::delayed_recovery]->tau));
       worse(delayed.x_max, relative(expq(f.x_max.at(sv, true)), r.x_max));
       worse(delayed.tau_max, relative(expq(f.tau_max.at(sv, true)), r.tau_max));
       if (with_naive) {
-        worse(naive.eps, relative_eps_error(f.g_naive.at(sv, true), *r.naive));
-        worse(naive.tau, relative(expq(f.tau_naive.at(sv, true)), r.naive->tau));
+        worse(naive.eps, relative_eps_error(f.g_naive.at(sv, true), *r.ends[CollisionEnd::naive]));
+        worse(naive.tau, relative(expq(f.tau_naive.at(sv, true)), r.ends[CollisionEnd::naive]->tau));
       }
     }
   }
@@ -242,7 +244,7 @@ std::string law_errors(const GeneratorSettings& s, const TableData& d, long& sol
     const ReferenceSolution r = hertz_reference(zeta, true);
     ++solves;
     const Real e = d.kappa * powq(zeta, -5);
-    law_naive = std::max(law_naive, relative(e, r.naive->eps));
+    law_naive = std::max(law_naive, relative(e, r.ends[CollisionEnd::naive]->eps));
   }
   for (const double zeta : {std::exp(s.s_hi_delayed), 3e5, 1e6}) {
     const ReferenceSolution r = hertz_reference(zeta, false);
@@ -250,7 +252,7 @@ std::string law_errors(const GeneratorSettings& s, const TableData& d, long& sol
     const Real sv = logq(zeta);
     const Real delta = expq(-sv * 5 / 3);
     const Real e = d.x_m * delta * (1 - (delta / d.q) * (sv * 10 / 3 + d.log_a - Real(5) / 2));
-    law_delayed = std::max(law_delayed, relative(e, r.delayed_recovery->eps));
+    law_delayed = std::max(law_delayed, relative(e, r.ends[CollisionEnd::delayed_recovery]->eps));
   }
   return fmt::format(
       "  asymptotic laws, relative: naive at zeta = e^{} 10 30: {:.2e}; delayed at zeta = e^{} 3e5 1e6: "
@@ -294,10 +296,10 @@ TableData generate_tables(const GeneratorSettings& s) {
 
   const ReferenceSolution zero = hertz_reference(0.0);
   const ReferenceSolution lo = hertz_reference(d.zeta_lo);
-  d.naive.tau_zero = static_cast<double>(zero.naive->tau);
-  d.delayed.tau_zero = static_cast<double>(zero.delayed_recovery->tau);
-  d.naive.tau_lo = static_cast<double>(lo.naive->tau);
-  d.delayed.tau_lo = static_cast<double>(lo.delayed_recovery->tau);
+  d.naive.tau_zero = static_cast<double>(zero.ends[CollisionEnd::naive]->tau);
+  d.delayed.tau_zero = static_cast<double>(zero.ends[CollisionEnd::delayed_recovery]->tau);
+  d.naive.tau_lo = static_cast<double>(lo.ends[CollisionEnd::naive]->tau);
+  d.delayed.tau_lo = static_cast<double>(lo.ends[CollisionEnd::delayed_recovery]->tau);
   d.x_max_zero = static_cast<double>(zero.x_max);
   d.tau_max_zero = static_cast<double>(zero.tau_max);
   d.x_max_lo = static_cast<double>(lo.x_max);
@@ -307,7 +309,7 @@ TableData generate_tables(const GeneratorSettings& s) {
   // below 1e-30 relative.
   const ReferenceSolution at30 = hertz_reference(30.0);
   f.solves += 3;
-  d.kappa = static_cast<double>(at30.naive->eps * powq(30, 5));
+  d.kappa = static_cast<double>(at30.ends[CollisionEnd::naive]->eps * powq(30, 5));
   const Real x_m = powq(Real(3) / 2, Real(2) / 3);
   d.x_m = static_cast<double>(x_m);
   d.q = static_cast<double>(cbrtq(Real(3) / 2));

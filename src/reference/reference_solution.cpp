@@ -32,8 +32,7 @@ TaylorSettings hertz_settings(double zeta, bool naive, const Run& run) {
   TaylorSettings s;
   s.order = run.order;
   s.tolerance = run.tolerance;
-  s.naive = naive;
-  s.delayed_recovery = true;
+  s.ends = naive ? EndSet::both() : EndSet{CollisionEnd::delayed_recovery};
   const double z = std::max(zeta, 1.0);
   // Floors far below every value that matters, so that the control is relative.
   const double velocity = naive ? std::pow(z, -5.0) : std::pow(z, -5.0 / 3.0);
@@ -58,8 +57,9 @@ ReferenceSolution solution_of(double parameter, Real damping, bool hertz, const 
   s.parameter = parameter;
   s.tau_max = out.tau_max;
   s.x_max = out.x_max;
-  if (out.naive) s.naive = end_of(damping, hertz, *out.naive);
-  if (out.delayed_recovery) s.delayed_recovery = end_of(damping, hertz, *out.delayed_recovery);
+  for (const CollisionEnd end : kCollisionEnds) {
+    if (out.ends[end]) s.ends[end] = end_of(damping, hertz, *out.ends[end]);
+  }
   s.steps = out.steps;
   return s;
 }
@@ -80,10 +80,11 @@ double end_difference(const std::optional<ReferenceEnd>& a, const std::optional<
 
 // The finer solution with the agreement of the two; throws if they disagree beyond kReferenceAgreement.
 ReferenceSolution compare(ReferenceSolution coarse, ReferenceSolution fine, const char* law) {
-  fine.agreement =
-      std::max({relative(coarse.tau_max, fine.tau_max, fine.tau_max),
-                relative(coarse.x_max, fine.x_max, fine.x_max), end_difference(coarse.naive, fine.naive),
-                end_difference(coarse.delayed_recovery, fine.delayed_recovery)});
+  fine.agreement = std::max({relative(coarse.tau_max, fine.tau_max, fine.tau_max),
+                             relative(coarse.x_max, fine.x_max, fine.x_max),
+                             end_difference(coarse.ends[CollisionEnd::naive], fine.ends[CollisionEnd::naive]),
+                             end_difference(coarse.ends[CollisionEnd::delayed_recovery],
+                                            fine.ends[CollisionEnd::delayed_recovery])});
   if (!(fine.agreement <= kReferenceAgreement)) {
     throw NumericalFailure(
         fmt::format("reference solution for {} at parameter {}: the two orders differ by {:g} > {:g}", law,
@@ -131,7 +132,7 @@ ReferenceSolution dashpot_reference(double damping_ratio) {
     TaylorSettings s;
     s.order = run.order;
     s.tolerance = run.tolerance;
-    s.naive = damping_ratio < 1.0;
+    if (damping_ratio >= 1.0) s.ends.erase(CollisionEnd::naive);
     s.time_floor = {1e-8, 1e-8, 1e-8};
     s.time_limit = 1000.0 * (1.0 + damping_ratio);
     taylor::TaylorCollision<Real> collision(s, damping_ratio);
@@ -156,10 +157,10 @@ std::string reference_csv(const std::vector<ReferenceSolution>& solutions) {
   out += '\n';
   for (const ReferenceSolution& s : solutions) {
     out += fmt::format("{:.17g},{},{}", s.parameter, text(s.tau_max), text(s.x_max));
-    for (const auto* end : {&s.naive, &s.delayed_recovery}) {
-      if (*end) {
-        out += fmt::format(",{},{},{},{}", text((*end)->eps), text((*end)->one_minus_eps), text((*end)->tau),
-                           text((*end)->x));
+    for (const CollisionEnd e : kCollisionEnds) {
+      if (const auto& end = s.ends[e]) {
+        out += fmt::format(",{},{},{},{}", text(end->eps), text(end->one_minus_eps), text(end->tau),
+                           text(end->x));
       } else {
         out += ",,,,";
       }
@@ -197,7 +198,10 @@ std::vector<ReferenceRow> read_reference_file(const std::filesystem::path& path)
       if (f[i].empty()) return std::nullopt;
       return ReferenceEndValues{value(i), value(i + 1), value(i + 2), value(i + 3)};
     };
-    rows.push_back({value(0), value(1), value(2), end_at(3), end_at(7), value(11)});
+    ReferenceRow row{value(0), value(1), value(2), {}, value(11)};
+    row.ends[CollisionEnd::naive] = end_at(3);
+    row.ends[CollisionEnd::delayed_recovery] = end_at(7);
+    rows.push_back(row);
   }
   if (!header_seen) throw InvalidInput(fmt::format("{}: no header line", path.string()));
   return rows;

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "restitution/collision_solver.hpp"
+
 namespace restitution {
 
 // Largest ζ for which the reference holds the naive end: the overdamped naive tail is stiff and costs the
@@ -23,7 +25,7 @@ struct ReferenceEnd {
 struct ReferenceSolution {
   double parameter = 0;  // ζ (Hertz) or the damping ratio r (dash-pot)
   __float128 tau_max = 0, x_max = 0;
-  std::optional<ReferenceEnd> naive, delayed_recovery;
+  PerEnd<std::optional<ReferenceEnd>> ends;
   double agreement = 0;  // largest relative difference between the two orders over every value above
   long steps = 0;        // Taylor steps of the higher order
 };
@@ -49,7 +51,7 @@ struct ReferenceEndValues {
 struct ReferenceRow {
   double zeta = 0;
   double tau_max = 0, x_max = 0;
-  std::optional<ReferenceEndValues> naive, delayed_recovery;
+  PerEnd<std::optional<ReferenceEndValues>> ends;
   double agreement = 0;
 };
 

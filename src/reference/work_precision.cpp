@@ -44,7 +44,7 @@ SolveOptions work_precision_options(const WorkPrecisionEngine& engine, bool naiv
   options.method = engine.method;
   options.smooth_ends = engine.smooth_ends;
   options.tolerance = tolerance;
-  options.ends = {naive, !naive};
+  options.ends = EndSet{naive ? CollisionEnd::naive : CollisionEnd::delayed_recovery};
   return options;
 }
 
@@ -97,7 +97,8 @@ std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<Reference
         for (const double zeta : work_precision_zetas()) {
           const ReferenceRow* row = reference_row_for(reference, zeta);
           if (row == nullptr || !accepts(engine, naive, zeta)) continue;
-          const auto& ref = naive ? row->naive : row->delayed_recovery;
+          const auto& ref =
+              naive ? row->ends[CollisionEnd::naive] : row->ends[CollisionEnd::delayed_recovery];
           if (!ref) continue;
           const SolveOptions options = work_precision_options(engine, naive, tolerance);
           const ContactLaw law = ContactLaw::hertz_natural(zeta);
@@ -109,7 +110,8 @@ std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<Reference
           }
           std::nth_element(samples.begin(), samples.begin() + static_cast<long>(samples.size() / 2),
                            samples.end());
-          const EndResult& end = naive ? *result.naive : *result.delayed_recovery;
+          const EndResult& end =
+              naive ? *result[CollisionEnd::naive] : *result[CollisionEnd::delayed_recovery];
           rows.push_back({engine.name, naive ? "naive" : "delayed-recovery", tolerance, zeta,
                           contract_error(end, *ref), samples[samples.size() / 2],
                           result.stats.rhs_evaluations, result.stats.steps});

@@ -45,7 +45,7 @@ struct Sweep {
   std::string name;
   std::string title;
   std::string note;  // free text for the report: what to look for
-  EndSelection ends;
+  EndSet ends = EndSet::both();
   Quantities quantities;
   std::vector<double> zeta;          // the variable when no velocity is given
   std::vector<double> velocity_m_s;  // the variable with beta, material or characteristic_velocity
@@ -66,7 +66,7 @@ struct Sweep {
 struct Trajectory {
   std::string name;
   std::string title;
-  EndSelection ends;
+  EndSet ends = EndSet::both();
   std::optional<double> zeta;
   std::optional<double> velocity_m_s;
   std::optional<double> beta;
@@ -87,7 +87,7 @@ struct CalibrationTask {
 struct DashpotCheck {
   std::string name;
   std::string title;
-  EndSelection ends;
+  EndSet ends = EndSet::both();
   std::vector<double> damping_ratio;
   int line = 0;
 };

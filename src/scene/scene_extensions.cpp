@@ -65,11 +65,7 @@ void add_power_law_fits(const Sweep& sweep, const std::vector<double>& zeta,
   if (sweep.asymptotics) {
     // The derived laws: naive ε = κ ζ^{-5}, delayed recovery with its first correction (docs/asymptotics.md).
     const double kappa = asymptotics::naive_prefactor().value;
-    const std::pair<CollisionEnd, bool> laws[] = {
-        {CollisionEnd::naive, sweep.ends.naive},
-        {CollisionEnd::delayed_recovery, sweep.ends.delayed_recovery}};
-    for (const auto& [end, wanted] : laws) {
-      if (!wanted) continue;
+    for (const CollisionEnd end : sweep.ends.members()) {
       ApproximationColumn column;
       column.end = end;
       column.label = end == CollisionEnd::naive ? "naive_asymptotic" : "delayed_recovery_asymptotic";
@@ -85,10 +81,7 @@ void add_power_law_fits(const Sweep& sweep, const std::vector<double>& zeta,
     }
   }
   if (!sweep.fit) return;
-  const std::pair<CollisionEnd, bool> ends[] = {
-      {CollisionEnd::naive, sweep.ends.naive}, {CollisionEnd::delayed_recovery, sweep.ends.delayed_recovery}};
-  for (const auto& [end, wanted] : ends) {
-    if (!wanted) continue;
+  for (const CollisionEnd end : sweep.ends.members()) {
     std::vector<double> z;
     std::vector<double> eps;
     for (std::size_t i = 0; i < zeta.size(); ++i) {

@@ -30,18 +30,18 @@ bool is_name(const std::string& s) {
   });
 }
 
-EndSelection read_ends(TomlReader& r, EndSelection fallback = {}) {
+EndSet read_ends(TomlReader& r, EndSet fallback = EndSet::both()) {
   const auto words = r.words("ends");
   if (!words) return fallback;
-  EndSelection ends{false, false};
+  EndSet ends;
   for (const std::string& w : *words) {
-    if (w == "naive" || w == "both") ends.naive = true;
-    if (w == "delayed-recovery" || w == "both") ends.delayed_recovery = true;
+    if (w == "naive" || w == "both") ends.insert(CollisionEnd::naive);
+    if (w == "delayed-recovery" || w == "both") ends.insert(CollisionEnd::delayed_recovery);
     if (w != "naive" && w != "delayed-recovery" && w != "both") {
       r.fail("ends", fmt::format(R"(expected "naive", "delayed-recovery" or "both", got "{}")", w));
     }
   }
-  if (!ends.naive && !ends.delayed_recovery) r.fail("ends", "no end requested");
+  if (ends.empty()) r.fail("ends", "no end requested");
   return ends;
 }
 
@@ -258,8 +258,10 @@ class Parser {
     }
     s.asymptotics = r.flag("asymptotics").value_or(false);
     if (r.flag("compare_series").value_or(false)) {
-      if (s.ends.naive) s.approximations.push_back(series::Approximation::naive_series);
-      if (s.ends.delayed_recovery) s.approximations.push_back(series::Approximation::delayed_recovery_series);
+      if (s.ends.contains(CollisionEnd::naive))
+        s.approximations.push_back(series::Approximation::naive_series);
+      if (s.ends.contains(CollisionEnd::delayed_recovery))
+        s.approximations.push_back(series::Approximation::delayed_recovery_series);
     }
     if (const toml::table* e = r.table("empirical")) {
       TomlReader er(*e, r.child_path("empirical"), r.file_name());

@@ -16,13 +16,12 @@ class JobTable {
  public:
   explicit JobTable(std::vector<SolveJob>& jobs) : jobs_(jobs) {}
 
-  std::size_t add(const ContactLaw& law, EndSelection ends, bool trajectory) {
+  std::size_t add(const ContactLaw& law, EndSet ends, bool trajectory) {
     const auto key = std::make_pair(static_cast<int>(law.kind()), law.parameter());
     auto [it, inserted] = index_.try_emplace(key, jobs_.size());
-    if (inserted) jobs_.push_back(SolveJob{law, {false, false}, false});
+    if (inserted) jobs_.push_back(SolveJob{law, EndSet{}, false});
     SolveJob& job = jobs_[it->second];
-    job.ends.naive = job.ends.naive || ends.naive;
-    job.ends.delayed_recovery = job.ends.delayed_recovery || ends.delayed_recovery;
+    job.ends = job.ends | ends;
     job.keep_trajectory = job.keep_trajectory || trajectory;
     return it->second;
   }
@@ -51,8 +50,9 @@ PlannedPoint physical_point(double velocity_m_s, double beta, std::optional<doub
 
 }  // namespace
 
-EndSelection dashpot_ends(const EndSelection& requested, double damping_ratio) {
-  return {requested.naive && damping_ratio < 1.0, requested.delayed_recovery};
+EndSet dashpot_ends(EndSet requested, double damping_ratio) {
+  if (damping_ratio >= 1.0) requested.erase(CollisionEnd::naive);
+  return requested;
 }
 
 Plan plan_scene(const Scene& scene) {
@@ -102,8 +102,8 @@ Plan plan_scene(const Scene& scene) {
     for (const double r : d.damping_ratio) {
       PlannedPoint p;
       p.parameter = r;
-      const EndSelection ends = dashpot_ends(d.ends, r);
-      if (ends.naive || ends.delayed_recovery) p.job = table.add(ContactLaw::linear_dashpot(r), ends, false);
+      const EndSet ends = dashpot_ends(d.ends, r);
+      if (!ends.empty()) p.job = table.add(ContactLaw::linear_dashpot(r), ends, false);
       points.push_back(p);
     }
     plan.dashpots.push_back(std::move(points));

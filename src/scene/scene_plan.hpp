@@ -13,7 +13,7 @@ namespace restitution::scene {
 
 struct SolveJob {
   ContactLaw law;  // always in natural units (ζ or the damping ratio r)
-  EndSelection ends{false, false};
+  EndSet ends;
   bool keep_trajectory = false;
 };
 
@@ -40,6 +40,6 @@ struct Plan {
 Plan plan_scene(const Scene& scene);
 
 // The ends a dash-pot collision has: no naive end (x never returns to 0) for r >= 1.
-EndSelection dashpot_ends(const EndSelection& requested, double damping_ratio);
+EndSet dashpot_ends(EndSet requested, double damping_ratio);
 
 }  // namespace restitution::scene

@@ -167,7 +167,8 @@ ValidationReport validate(const ValidationOptions& options) {
   auto reference = [&](double zeta) { return solver.solve(ContactLaw::hertz_natural(zeta), solve); };
   for (const double zeta : log_grid(options)) {
     const CollisionResult r = reference(zeta);
-    ValidationRow row{zeta, to_value(*r.naive), to_value(*r.delayed_recovery), {}};
+    ValidationRow row{
+        zeta, to_value(*r[CollisionEnd::naive]), to_value(*r[CollisionEnd::delayed_recovery]), {}};
     for (const Approximant& a : approx)
       row.errors.push_back(compare(a.evaluate(zeta), a.candidate.delayed_recovery ? row.delayed : row.naive));
     report.rows.push_back(std::move(row));
@@ -187,8 +188,8 @@ ValidationReport validate(const ValidationOptions& options) {
       s.crossings.push_back(c);
     }
     const bool delayed = approx[i].candidate.delayed_recovery;
-    const EndResult& e0 = delayed ? *at.delayed_recovery : *at.naive;
-    const EndResult& e1 = delayed ? *after.delayed_recovery : *after.naive;
+    const EndResult& e0 = delayed ? *at[CollisionEnd::delayed_recovery] : *at[CollisionEnd::naive];
+    const EndResult& e1 = delayed ? *after[CollisionEnd::delayed_recovery] : *after[CollisionEnd::naive];
     s.large_zeta.solver_slope = local_slope(kLargeZetaStep, e0.eps, e1.eps);
     s.large_zeta.approximation_slope = local_slope(kLargeZetaStep, approx[i].evaluate(kLargeZeta).eps,
                                                    approx[i].evaluate(kLargeZeta * kLargeZetaStep).eps);

@@ -22,6 +22,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 #include "taylor/taylor_series.hpp"
 
@@ -45,8 +46,7 @@ Real unit_roundoff() {
 struct TaylorSettings {
   int order = 20;
   double tolerance = 1e-16;  // local truncation error per step, relative to the component scales
-  bool naive = true;
-  bool delayed_recovery = true;
+  EndSet ends = EndSet::both();
   // Component scales are max(|s_i|, floor_i); floors per form: compression (τ, y, I), time (u|x, y, I).
   std::array<double, kComponents> compression_floor{1e-2, 1e-2, 1e-2};
   std::array<double, kComponents> time_floor{1e-2, 1e-2, 1e-2};
@@ -66,7 +66,7 @@ template <class Real>
 struct TaylorOutcome {
   bool max_found = false;
   Real tau_max = 0, x_max = 0;
-  std::optional<TaylorPoint<Real>> naive, delayed_recovery;
+  PerEnd<std::optional<TaylorPoint<Real>>> ends;
   long steps = 0;
 };
 
@@ -135,14 +135,16 @@ class TaylorCollision {
         return ValueSlope<Real>{damping * y.value + stiffness * x.value,
                                 damping * y.slope + stiffness * x.slope};
       };
-      if (settings_.delayed_recovery && !out_.delayed_recovery && force(h).value <= 0) {
+      if (settings_.ends.contains(CollisionEnd::delayed_recovery) &&
+          !out_.ends[CollisionEnd::delayed_recovery] && force(h).value <= 0) {
         const Real th = polynomial_root(force, Real(0), h);
-        out_.delayed_recovery = point_at(c, p, th, tau, /*time_form_x=*/true);
+        out_.ends[CollisionEnd::delayed_recovery] = point_at(c, p, th, tau, /*time_form_x=*/true);
       }
-      if (settings_.naive && !out_.naive && out_.max_found && next[0] <= 0) {
+      if (settings_.ends.contains(CollisionEnd::naive) && !out_.ends[CollisionEnd::naive] && out_.max_found &&
+          next[0] <= 0) {
         const Real th = polynomial_root([&](Real q) { return evaluate(c[0], p, q); }, Real(0), h);
-        out_.naive = point_at(c, p, th, tau, true);
-        out_.naive->x = 0;
+        out_.ends[CollisionEnd::naive] = point_at(c, p, th, tau, true);
+        out_.ends[CollisionEnd::naive]->x = 0;
       }
       tau += h;
       s = next;
@@ -152,7 +154,9 @@ class TaylorCollision {
 
  private:
   [[nodiscard]] bool pending() const {
-    return (settings_.naive && !out_.naive) || (settings_.delayed_recovery && !out_.delayed_recovery);
+    return (settings_.ends.contains(CollisionEnd::naive) && !out_.ends[CollisionEnd::naive]) ||
+           (settings_.ends.contains(CollisionEnd::delayed_recovery) &&
+            !out_.ends[CollisionEnd::delayed_recovery]);
   }
 
   [[noreturn]] void fail(const char* what, Real tau) const {
@@ -237,9 +241,10 @@ class TaylorCollision {
         return ValueSlope<Real>{zeta_ * y.value + uu.value * uu.value,
                                 zeta_ * y.slope + 2 * uu.value * uu.slope};
       };
-      if (settings_.delayed_recovery && !out_.delayed_recovery && zeta_ > 0 && force(h).value <= 0) {
+      if (settings_.ends.contains(CollisionEnd::delayed_recovery) &&
+          !out_.ends[CollisionEnd::delayed_recovery] && zeta_ > 0 && force(h).value <= 0) {
         const Real th = polynomial_root(force, Real(0), h);
-        out_.delayed_recovery = point_at(c, p, th, tau, false);
+        out_.ends[CollisionEnd::delayed_recovery] = point_at(c, p, th, tau, false);
         if (!pending()) return;
       }
       tau += h;
@@ -269,11 +274,12 @@ class TaylorCollision {
         const Real uq = u + q;
         return ValueSlope<Real>{zeta_ * y.value + uq * uq, zeta_ * y.slope + 2 * uq};
       };
-      if (settings_.delayed_recovery && !out_.delayed_recovery && zeta_ > 0 && force(step).value <= 0) {
+      if (settings_.ends.contains(CollisionEnd::delayed_recovery) &&
+          !out_.ends[CollisionEnd::delayed_recovery] && zeta_ > 0 && force(step).value <= 0) {
         const Real ue = delayed_root_u(c, p, u, step, polynomial_root(force, Real(0), step));
         const Real th = ue - u;
-        out_.delayed_recovery = TaylorPoint<Real>{evaluate(c[0], p, th).value, ue * ue,
-                                                  evaluate(c[1], p, th).value, evaluate(c[2], p, th).value};
+        out_.ends[CollisionEnd::delayed_recovery] = TaylorPoint<Real>{
+            evaluate(c[0], p, th).value, ue * ue, evaluate(c[1], p, th).value, evaluate(c[2], p, th).value};
         if (!pending()) return;
       }
       s = next;
@@ -281,11 +287,12 @@ class TaylorCollision {
       u += step;
     }
     const TaylorPoint<Real> end{s[0], Real(0), s[1], s[2]};
-    if (settings_.naive) out_.naive = end;
-    if (settings_.delayed_recovery && !out_.delayed_recovery) {
+    if (settings_.ends.contains(CollisionEnd::naive)) out_.ends[CollisionEnd::naive] = end;
+    if (settings_.ends.contains(CollisionEnd::delayed_recovery) &&
+        !out_.ends[CollisionEnd::delayed_recovery]) {
       // ζx' + x can only reach zero at x = 0 when ζ = 0, where both ends coincide.
       if (zeta_ != 0) fail("no delayed-recovery end before the overlap vanished", s[0]);
-      out_.delayed_recovery = end;
+      out_.ends[CollisionEnd::delayed_recovery] = end;
     }
   }
 

@@ -30,15 +30,14 @@ taylor::TaylorSettings settings_for(const ContactLaw& law, const SolveOptions& o
   }
   s.order = std::clamp(static_cast<int>(std::ceil(-0.5 * std::log(s.tolerance))) + 1 + kExtraOrder, 6,
                        taylor::kMaxOrder);
-  s.naive = options.ends.naive;
+  s.ends = options.ends;
   s.max_steps = options.max_steps_per_phase;  // bounds the whole solve, more strictly than per phase
-  s.delayed_recovery = options.ends.delayed_recovery;
   const double p = law.parameter();
   const double z = std::max(p, 1.0);
   if (law.kind() == LawKind::viscoelastic_hertz) {
     // Scales of what decides the result (the law's, as in the CVODE tolerance policy): for large ζ the
     // delayed end has ε ~ ζ^{-5/3} at x ~ ζ^{-2/3}, the naive end ε ~ ζ^{-5} reached through x ~ ζ^{-4}.
-    const ResolutionScales m = law.resolution_scales(options.ends.naive);
+    const ResolutionScales m = law.resolution_scales(options.ends.contains(CollisionEnd::naive));
     s.compression_floor = {1e-2, 1e-2 * m.velocity, 1e-2 / z};
     s.time_floor = {1e-2 * std::sqrt(m.x), 1e-2 * m.velocity, 1e-2 / z};
     // Below u ~ 1/ζ² the damping no longer dominates and the compression form is not stiff; above it,
@@ -48,7 +47,7 @@ taylor::TaylorSettings settings_for(const ContactLaw& law, const SolveOptions& o
   } else {
     double velocity = p > 1.0 ? 1.0 / (4.0 * p * p) : 1.0;
     double x = p > 1.0 ? 0.5 / p : 1.0;
-    if (options.ends.naive && p < 1.0) {
+    if (options.ends.contains(CollisionEnd::naive) && p < 1.0) {
       // The naive end is approached with x ~ ε (τ_c - τ), ε = exp(-πr/ω) (3e-31 at r = 0.999), and the two
       // modes cancel there to 1/ω: resolve x and x' on ε's scale and tighten the step error by ω/10 (as the
       // CVODE tolerance policy does).
@@ -92,7 +91,7 @@ void check_taylor_request(const ContactLaw& law, const SolveOptions& options) {
         law_name(law.kind())));
   }
   const bool hertz = law.kind() == LawKind::viscoelastic_hertz;
-  if (hertz && options.ends.naive && law.parameter() > kTaylorNaiveZetaMax) {
+  if (hertz && options.ends.contains(CollisionEnd::naive) && law.parameter() > kTaylorNaiveZetaMax) {
     throw InvalidInput(
         fmt::format("method taylor computes the naive end only for zeta <= {:g} (the overdamped naive tail "
                     "is stiff), got "
@@ -119,8 +118,9 @@ CollisionResult solve_with_taylor(const ContactLaw& law, const SolveOptions& opt
   result.tolerance = options.tolerance;
   result.method = Method::taylor;
   result.max_compression = {out.tau_max, out.x_max};
-  if (out.naive) result.naive = end_result(law, *out.naive);
-  if (out.delayed_recovery) result.delayed_recovery = end_result(law, *out.delayed_recovery);
+  for (const CollisionEnd end : kCollisionEnds) {
+    if (out.ends[end]) result[end] = end_result(law, *out.ends[end]);
+  }
   // One Taylor expansion per step: counted as the engine's right-hand-side evaluations (each costs O(p²)).
   result.stats.steps = out.steps;
   result.stats.rhs_evaluations = out.steps;

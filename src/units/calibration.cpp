@@ -15,7 +15,7 @@ namespace {
 // log ε at the requested end from whichever of ε and 1 - ε carries the relative accuracy: 1 - ε as ε -> 1
 // (log1p), ε itself when it is small (1 - ε rounds to 1 below ε ~ 1e-16 and loses digits well before).
 double log_eps(double zeta, CollisionEnd end, SolveOptions options, CollisionSolver& solver) {
-  options.ends = selection_of(end);
+  options.ends = EndSet{end};
   options.keep_trajectory = false;
   const CollisionResult r = solver.solve(ContactLaw::hertz_natural(zeta), options);
   const EndResult& e = end_of(r, end);
