@@ -2,6 +2,7 @@
 // (Padé [1/4] and [3/6] of 2011, the 1999 Padé, the series), per call, over random arguments: ζ log-uniform
 // over every interval of the tables (1e-10 ... 1e7, series and asymptotic laws included), and over
 // [1e-4, 1e4] for the comparison with the approximations; ε for the inverse log-uniform in ε and in 1 − ε.
+// The collision duration and the maximal compression over the same ζ as ε.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -74,10 +75,16 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark(("fast_zeta_from_eps/" + tag).c_str(), [end](benchmark::State& s) {
       run(s, eps_values(), [end](double e) { return fast::zeta_from_eps(e, end); });
     });
+    benchmark::RegisterBenchmark(("fast_collision_duration/all/" + tag).c_str(), [end](benchmark::State& s) {
+      run(s, all_zeta(), [end](double z) { return fast::collision_duration(z, end); });
+    });
     benchmark::RegisterBenchmark(("fast_eps/dem/" + tag).c_str(), [end](benchmark::State& s) {
       run(s, dem_zeta(), [end](double z) { return fast::eps(z, end); });
     });
   }
+  benchmark::RegisterBenchmark("fast_max_compression/all", [](benchmark::State& s) {
+    run(s, all_zeta(), [](double z) { return fast::max_compression(z); });
+  });
   benchmark::RegisterBenchmark("pade_2011_1_4/dem", [](benchmark::State& s) {
     run(s, dem_zeta(), [](double z) { return series::pade_2011_1_4(z).eps; });
   });

@@ -2,6 +2,7 @@
 // and the exported C header (same text as the compiled one; compiled by gcc and g++, same bits).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include <bit>
@@ -23,6 +24,11 @@
 #include "restitution/fast.hpp"
 
 namespace {
+
+// A folder of this process's own, so that two checkouts testing at once do not delete each other's files.
+std::filesystem::path per_process_folder(const std::string& name) {
+  return std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
+}
 
 using namespace restitution;
 using restitution::test_support::reference_rows;
@@ -46,17 +52,53 @@ TEST(Fast, EveryReferenceRowWithinTheContract) {
       if (!values) continue;
       EXPECT_LE(contract_error(row.zeta, end, values->eps, values->one_minus_eps), kContract)
           << "zeta " << row.zeta << " " << end_name(end);
-      if (row.zeta <= fast::duration_zeta_max(end)) {
-        EXPECT_NEAR(fast::collision_duration(row.zeta, end) / values->tau, 1.0, kContract)
-            << "tau_c at zeta " << row.zeta << " " << end_name(end);
-      }
+      EXPECT_NEAR(fast::collision_duration(row.zeta, end) / values->tau, 1.0, kContract)
+          << "tau_c at zeta " << row.zeta << " " << end_name(end);
     }
-    if (row.zeta <= fast::duration_zeta_max(CollisionEnd::delayed_recovery)) {
-      const MaxCompression m = fast::max_compression(row.zeta);
-      EXPECT_NEAR(m.x / row.x_max, 1.0, kContract) << "x_max at zeta " << row.zeta;
-      EXPECT_NEAR(m.tau / row.tau_max, 1.0, kContract) << "tau_max at zeta " << row.zeta;
-    }
+    const MaxCompression m = fast::max_compression(row.zeta);
+    EXPECT_NEAR(m.x / row.x_max, 1.0, kContract) << "x_max at zeta " << row.zeta;
+    EXPECT_NEAR(m.tau / row.tau_max, 1.0, kContract) << "tau_max at zeta " << row.zeta;
   }
+}
+
+// The durations and the maximal compression switch from their tables to their large-ζ laws (naive τ_c at
+// ζ = e^6, the others at e^12) without a visible step, and the laws have their derived limits: τ_c grows
+// like (10/3) ζ ln ζ at the naive end; ζ^{2/3} x_max → (3/2)^{2/3}; ζ^{2/3} τ_c and ζ^{2/3} τ_max grow like
+// (10/3) ln ζ / q and (5/3) ln ζ / q, q = (3/2)^{1/3}, at the delayed-recovery end.
+TEST(Fast, DurationsContinuousAtTheLawsAndTheirLimits) {
+  // The relative step of f at ln ζ = s0: the change of ln f across ±h, less what its slope (measured across
+  // ±H, off the switch's influence) accounts for.
+  const auto step = [](auto f, double s0) {
+    const auto ln_f = [&f](double s) { return std::log(f(std::exp(s))); };
+    const double h = 1e-9;
+    const double wide = 1e-4;
+    const double slope = (ln_f(s0 + wide) - ln_f(s0 - wide)) / (2 * wide);
+    return std::abs(ln_f(s0 + h) - ln_f(s0 - h) - 2 * h * slope);
+  };
+  const auto naive_tau = [](double z) { return fast::collision_duration(z, CollisionEnd::naive); };
+  const auto delayed_tau = [](double z) {
+    return fast::collision_duration(z, CollisionEnd::delayed_recovery);
+  };
+  const auto x_max = [](double z) { return fast::max_compression(z).x; };
+  const auto tau_max = [](double z) { return fast::max_compression(z).tau; };
+  EXPECT_LT(step(naive_tau, 6.0), 1e-13);
+  EXPECT_LT(step(delayed_tau, 12.0), 1e-13);
+  EXPECT_LT(step(x_max, 12.0), 1e-13);
+  EXPECT_LT(step(tau_max, 12.0), 1e-13);
+  const double q = std::cbrt(1.5);
+  const double big = 1e300;
+  const double s = std::log(big);
+  const double scale = std::pow(big, 2.0 / 3.0);
+  EXPECT_NEAR(naive_tau(big) / (big * s), 10.0 / 3.0, 1e-2);
+  // exp(−(2/3) ln ζ) rounds its argument, 460 here: 460 · 1.1e-16 relative
+  EXPECT_NEAR(x_max(big) * scale, std::pow(1.5, 2.0 / 3.0), 1e-13);
+  EXPECT_NEAR(delayed_tau(big) * scale / s, 10.0 / (3.0 * q), 1e-2);
+  EXPECT_NEAR(tau_max(big) * scale / s, 5.0 / (3.0 * q), 1e-2);
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(naive_tau(inf), inf);
+  EXPECT_EQ(delayed_tau(inf), 0.0);
+  EXPECT_EQ(x_max(inf), 0.0);
+  EXPECT_EQ(tau_max(inf), 0.0);
 }
 
 TEST(Fast, LimitsAndDomain) {
@@ -70,7 +112,7 @@ TEST(Fast, LimitsAndDomain) {
     EXPECT_THROW(fast::one_minus_eps(std::nan(""), end), InvalidInput);
     for (const double bad : {0.0, -0.5, 1.0 + 1e-15, std::nan("")})
       EXPECT_THROW(fast::zeta_from_eps(bad, end), InvalidInput) << bad;
-    EXPECT_THROW(fast::collision_duration(2.0 * fast::duration_zeta_max(end), end), InvalidInput);
+    EXPECT_THROW(fast::collision_duration(-1.0, end), InvalidInput);
   }
   EXPECT_THROW(fast::max_compression(-1.0), InvalidInput);
 }
@@ -174,7 +216,7 @@ std::string source_file(const std::string& relative) {
 // The generated header in the source tree is what the library compiled, and what `export c-header` writes.
 TEST(FastHeader, ExportIsTheCompiledHeader) {
   EXPECT_EQ(fast::c_header(), source_file("src/fast/fast_table.h"));
-  const auto dir = std::filesystem::temp_directory_path() / "restitution-fast-export";
+  const auto dir = per_process_folder("restitution-fast-export");
   std::filesystem::create_directories(dir);
   const auto out = test_support::run_cli("export c-header --out " + (dir / "r.h").string());
   ASSERT_EQ(out.status, 0) << out.err;
@@ -187,11 +229,12 @@ TEST(FastHeader, ExportIsTheCompiledHeader) {
 // The generator end to end on a small range: it runs, records its settings, measures errors inside the
 // contract; bad settings exit with status 2.
 TEST(FastTable, GeneratorOnASmallRange) {
-  const auto dir = std::filesystem::temp_directory_path() / "restitution-fast-table";
+  const auto dir = per_process_folder("restitution-fast-table");
   std::filesystem::create_directories(dir);
   const std::string out = (dir / "t.h").string();
-  const auto r = test_support::run_cli("fast-table --out " + out +
-                                       " --s-lo 0 --s-hi-naive 0.25 --s-hi-delayed 0.25 --checks 3");
+  const auto r = test_support::run_cli(
+      "fast-table --out " + out +
+      " --s-lo 0 --s-hi-naive 0.25 --s-hi-naive-duration 0.25 --s-hi-delayed 0.25 --checks 3");
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string text = test_support::slurp(out);
   EXPECT_NE(text.find("--s-lo 0 --s-hi-naive 0.25"), std::string::npos);
@@ -211,7 +254,7 @@ TEST(FastTable, GeneratorOnASmallRange) {
   std::filesystem::remove_all(dir);
 }
 
-// A C program on the header: reads arguments as hex floats, prints the six functions as hex floats.
+// A C program on the header: reads arguments as hex floats, prints the ten functions as hex floats.
 constexpr const char* kDriver = R"C(#include "restitution_fast.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -221,9 +264,11 @@ int main(int argc, char **argv) {
   if (argc < 2 || !in) return 3;
   while (fgets(line, sizeof line, in)) {
     double z = strtod(line, NULL);
-    printf("%a %a %a %a %a %a\n", restitution_eps_naive(z), restitution_eps_delayed_recovery(z),
+    printf("%a %a %a %a %a %a ", restitution_eps_naive(z), restitution_eps_delayed_recovery(z),
            restitution_one_minus_eps_naive(z), restitution_one_minus_eps_delayed_recovery(z),
            restitution_zeta_from_eps_naive(z), restitution_zeta_from_eps_delayed_recovery(z));
+    printf("%a %a %a %a\n", restitution_duration_naive(z), restitution_duration_delayed_recovery(z),
+           restitution_max_compression(z), restitution_max_compression_time(z));
   }
   fclose(in);
   return 0;
@@ -251,8 +296,15 @@ double library_or_nan(double (*f)(double, CollisionEnd), double x, CollisionEnd 
   }
 }
 
+double max_compression_x(double zeta, CollisionEnd /*end*/) {
+  return fast::max_compression(zeta).x;
+}
+double max_compression_tau(double zeta, CollisionEnd /*end*/) {
+  return fast::max_compression(zeta).tau;
+}
+
 TEST(FastHeader, CompilesAsC99AndCxxAndAgreesBitForBit) {
-  const auto dir = std::filesystem::temp_directory_path() / "restitution-fast-header";
+  const auto dir = per_process_folder("restitution-fast-header");
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "restitution_fast.h") << fast::c_header();
   std::ofstream(dir / "driver.c") << kDriver;
@@ -285,7 +337,11 @@ TEST(FastHeader, CompilesAsC99AndCxxAndAgreesBitForBit) {
                                  library_or_nan(fast::one_minus_eps, x, CollisionEnd::naive),
                                  library_or_nan(fast::one_minus_eps, x, CollisionEnd::delayed_recovery),
                                  library_or_nan(fast::zeta_from_eps, x, CollisionEnd::naive),
-                                 library_or_nan(fast::zeta_from_eps, x, CollisionEnd::delayed_recovery)};
+                                 library_or_nan(fast::zeta_from_eps, x, CollisionEnd::delayed_recovery),
+                                 library_or_nan(fast::collision_duration, x, CollisionEnd::naive),
+                                 library_or_nan(fast::collision_duration, x, CollisionEnd::delayed_recovery),
+                                 library_or_nan(max_compression_x, x, CollisionEnd::naive),
+                                 library_or_nan(max_compression_tau, x, CollisionEnd::naive)};
       for (const double want : expected) {
         ASSERT_TRUE(fields >> field);
         const double got = std::strtod(field.c_str(), nullptr);

@@ -2,9 +2,11 @@
 // 17 significant digits, exit statuses).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "cli_runner.hpp"
 #include "restitution/series.hpp"
@@ -85,7 +87,8 @@ TEST(CliSeries, BadInputExitsWithStatusTwo) {
 }
 
 TEST(CliSeries, ValidateWritesCsvJsonAndPlot) {
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "restitution-series-validate";
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("restitution-series-validate-" + std::to_string(::getpid()));
   std::filesystem::remove_all(folder);
   const auto outcome = run_cli("series validate --out " + folder.string());
   ASSERT_EQ(outcome.status, 0) << outcome.err;

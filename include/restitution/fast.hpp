@@ -20,16 +20,13 @@ double one_minus_eps(double zeta, CollisionEnd end);
 // of min(ε, 1 − ε) within the certified range. Throws InvalidInput for eps outside (0, 1].
 double zeta_from_eps(double eps, CollisionEnd end);
 
-// Largest ζ at which the tables of τ_c and of the maximal compression hold (naive, delayed-recovery end);
-// beyond them the functions below throw InvalidInput (no certified asymptotic law is implemented there).
-double duration_zeta_max(CollisionEnd end);
-
-// Collision duration τ_c in natural units (time in units of the scaling of contact_law.hpp), for
-// 0 <= ζ <= duration_zeta_max(end).
+// Collision duration τ_c in natural units (time in units of the scaling of contact_law.hpp), ζ >= 0 (+inf
+// gives +inf at the naive end, 0 at the delayed-recovery end): tables in ln ζ, large-ζ laws above them
+// (docs/fast.md states each one's relative error). Throws InvalidInput for ζ < 0 or NaN.
 double collision_duration(double zeta, CollisionEnd end);
 
-// Maximal compression x_max and the time τ_max at which it is reached, natural units, for
-// 0 <= ζ <= duration_zeta_max(CollisionEnd::delayed_recovery).
+// Maximal compression x_max and the time τ_max at which it is reached, natural units, ζ >= 0 (+inf gives
+// 0, 0); as collision_duration.
 MaxCompression max_compression(double zeta);
 
 // The self-contained C99 header (also valid C++) holding the same tables and evaluation: the text of

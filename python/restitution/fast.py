@@ -2,7 +2,8 @@
 
 Piecewise polynomials in ln zeta, fitted to the quad-precision reference engine: |eps - eps_exact| <=
 1e-13 * min(eps, 1 - eps) for 0 <= zeta <= 1e6 (delayed-recovery end) and 1e5 (naive end); beyond, the
-large-zeta asymptotic law. No ODE solve (the library's cost per value: docs/fast.md); the same bits as the
+large-zeta asymptotic law. The collision duration and the maximal compression likewise, for every zeta >= 0
+(their accuracy: docs/fast.md). No ODE solve (the library's cost per value: docs/fast.md); the same bits as the
 C++ functions restitution::fast::eps, one_minus_eps and zeta_from_eps and the exported C header.
 
     >>> restitution.fast.eps(0.1)                                # float in, float out
@@ -17,7 +18,7 @@ import restitution as _package  # its argument checks, looked up at call time (t
 
 from ._restitution import fast as _core
 
-__all__ = ["eps", "one_minus_eps", "zeta_from_eps"]
+__all__ = ["eps", "one_minus_eps", "zeta_from_eps", "collision_duration", "max_compression"]
 
 
 def _call(name, argument, value, end):
@@ -56,3 +57,23 @@ def zeta_from_eps(eps, end="delayed-recovery"):
     Raises ValueError for NaN or eps outside (0, 1] (naming the index in an array) or an unknown end.
     """
     return _call("zeta_from_eps", "eps", eps, end)
+
+
+def collision_duration(zeta, end="delayed-recovery"):
+    """Collision duration tau_c (natural units) at zeta >= 0 (natural units; +inf gives +inf at the naive end,
+    0 at the delayed-recovery end): the table, above it the large-zeta law (relative accuracy in docs/fast.md).
+    Arguments, shapes, errors as eps().
+    """
+    return _call("collision_duration", "zeta", zeta, end)
+
+
+def max_compression(zeta):
+    """(tau_max, x_max): time and size of the maximal compression (natural units) at zeta >= 0 (natural
+    units), floats for scalar input, else two float64 arrays of the input's shape. Errors as eps().
+    """
+    if type(zeta) in (float, int):
+        return _core.max_compression(float(zeta))
+    array = _package._real_array("zeta", zeta)
+    if array.ndim == 0:
+        return _core.max_compression(float(array))
+    return _core.max_compression_array(array)

@@ -57,6 +57,14 @@ void def_pair(py::module_& m, const char* name, FastFunction f, const char* argu
         py::arg(argument), py::arg("end"), doc);
 }
 
+// The maximal compression's two numbers as FastFunctions (it has no end), for apply().
+double max_compression_tau(double zeta, CollisionEnd /*end*/) {
+  return fast::max_compression(zeta).tau;
+}
+double max_compression_x(double zeta, CollisionEnd /*end*/) {
+  return fast::max_compression(zeta).x;
+}
+
 }  // namespace
 
 void bind_fast(py::module_& m) {
@@ -65,6 +73,25 @@ void bind_fast(py::module_& m) {
            "1 - eps(zeta) to its own relative accuracy; zeta >= 0 natural units.");
   def_pair(m, "zeta_from_eps", &fast::zeta_from_eps, "eps",
            "zeta (natural units) with eps(zeta) = eps in (0, 1].");
+  def_pair(
+      m, "collision_duration", &fast::collision_duration, "zeta",
+      "collision duration tau_c (natural units) at zeta >= 0, from the fast table and its large-zeta law.");
+  const char* compression =
+      "(tau_max, x_max), natural units, at zeta >= 0, from the fast table and its laws.";
+  m.def(
+      "max_compression",
+      [](double zeta) {
+        const MaxCompression c = fast::max_compression(zeta);
+        return py::make_tuple(c.tau, c.x);
+      },
+      py::arg("zeta"), compression);
+  m.def(
+      "max_compression_array",
+      [](const DoubleArray& zeta) {
+        return py::make_tuple(apply(&max_compression_tau, zeta, "delayed-recovery", "zeta"),
+                              apply(&max_compression_x, zeta, "delayed-recovery", "zeta"));
+      },
+      py::arg("zeta"), compression);
 }
 
 }  // namespace restitution::python

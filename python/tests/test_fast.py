@@ -69,6 +69,32 @@ def test_inverse_round_trip(end):
     assert restitution.fast.zeta_from_eps(float(eps[3]), end=end) == zetas[3]
 
 
+@pytest.mark.parametrize("end", ENDS)
+def test_durations_match_reference_solutions(reference, end):
+    prefix = ENDS[end]
+    rows = [row for row in reference if not math.isnan(row[prefix + "_eps"])]
+    zetas = np.array([row["zeta"] for row in rows])
+    np.testing.assert_allclose(restitution.fast.collision_duration(zetas, end=end),
+                               [row[prefix + "_tau"] for row in rows], rtol=1e-13, atol=0)
+    tau_max, x_max = restitution.fast.max_compression(zetas)
+    np.testing.assert_allclose(tau_max, [row["tau_max"] for row in rows], rtol=1e-13, atol=0)
+    np.testing.assert_allclose(x_max, [row["x_max"] for row in rows], rtol=1e-13, atol=0)
+    assert restitution.fast.max_compression(float(zetas[5])) == (tau_max[5], x_max[5])
+    assert restitution.fast.collision_duration(float(zetas[5]), end) == restitution.fast.collision_duration(
+        zetas, end)[5]
+
+
+def test_durations_for_every_zeta():
+    fast = restitution.fast
+    assert fast.collision_duration(math.inf, "naive") == math.inf
+    assert fast.collision_duration(1e300) == 0.0 or fast.collision_duration(1e300) < 1e-190
+    assert fast.max_compression(np.array([1e-3, 1e7]))[1].shape == (2,)
+    with pytest.raises(ValueError, match=r"zeta = -1 must be >= 0$"):
+        fast.max_compression(-1.0)
+    with pytest.raises(ValueError, match=r"zeta = nan must be >= 0 \(zeta at index 1\)"):
+        fast.collision_duration([1.0, math.nan])
+
+
 def test_shapes():
     fast = restitution.fast
     assert isinstance(fast.eps(1.0), float) and isinstance(fast.eps(1), float)

@@ -87,8 +87,12 @@ def main(exe, bench_csv, reference_csv, png_path, md_path):
                     break
                 kind = {"naive-40": "naive", "delayed-recovery-60": "delayed-recovery"}.get(name, name)
                 terms = {"naive-40": ["--terms", "40"], "delayed-recovery-60": ["--terms", "60"]}.get(name, [])
-                v = json.loads(subprocess.run([exe, "series", "eval", "--kind", kind, "--zeta", repr(zeta), "--json"]
-                                              + terms, check=True, capture_output=True, text=True).stdout)
+                run = subprocess.run([exe, "series", "eval", "--kind", kind, "--zeta", repr(zeta), "--json"] + terms,
+                                     capture_output=True, text=True)
+                if run.returncode == 2 and "radius of convergence" in run.stderr:
+                    break  # a series' curve ends at its radius: past it the partial sums diverge
+                run.check_returncode()
+                v = json.loads(run.stdout)
                 curves[name].append((zeta, error(funcs, end, zeta, v["eps"], v["one_minus_eps"])))
         with open(reference_csv, newline="") as f:
             ref = [r for r in csv.DictReader(line for line in f if not line.startswith("#"))

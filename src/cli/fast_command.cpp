@@ -47,6 +47,9 @@ void add_fast_table_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--s-lo", o->settings.s_lo, "ln zeta where the tables start")->capture_default_str();
   cmd->add_option("--s-hi-naive", o->settings.s_hi_naive, "ln zeta where the naive table ends")
       ->capture_default_str();
+  cmd->add_option("--s-hi-naive-duration", o->settings.s_hi_naive_duration,
+                  "ln zeta where the naive table of the collision duration ends")
+      ->capture_default_str();
   cmd->add_option("--s-hi-delayed", o->settings.s_hi_delayed, "ln zeta where the delayed-recovery table ends")
       ->capture_default_str();
   cmd->add_option("--checks", o->settings.checks_per_interval, "random check points per interval")

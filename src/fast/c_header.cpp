@@ -73,15 +73,25 @@ static inline double restitution_fast_zeta_(const restitution_fast_end_ *e, doub
   return exp(-0.6 * log(z));
 }
 
-/* A table of ln f on the forward grid, with f linear between zeta = 0 and zeta_lo; NaN outside. */
+/* A large-zeta law (docs/fast.md), delta = zeta^(-5/3):
+   e^(power s) [c1 s + c0 + delta (d2 s^2 + d1 s + d0) + delta^2 e0]. */
+static inline double restitution_fast_law_at_(const restitution_fast_law_ *w, double s) {
+  double delta = exp(-(5.0 / 3.0) * s);
+  return exp(w->power * s) * (w->c1 * s + w->c0 + delta * ((w->d2 * s + w->d1) * s + w->d0 + delta * w->e0));
+}
+
+/* A table of ln f on the forward grid, f linear between zeta = 0 and zeta_lo, the law above; NaN for
+   negative or NaN zeta. */
 static inline double restitution_fast_log_table_(const double *coef, int intervals, double zero, double lo,
-                                                 double zeta) {
-  double u;
+                                                 const restitution_fast_law_ *law, double zeta) {
+  double s, u;
   if (!(zeta >= 0.0)) return NAN;
   if (zeta < RESTITUTION_FAST_ZETA_LO) return zero + (lo - zero) * (zeta / RESTITUTION_FAST_ZETA_LO);
-  u = (log(zeta) - RESTITUTION_FAST_S_LO) * RESTITUTION_FAST_PER_UNIT;
-  if (!(u <= (double)intervals)) return NAN;
-  return exp(restitution_fast_piece_(coef, intervals, u));
+  if (zeta > 1.79769313486231570e308) return law->power > 0.0 ? HUGE_VAL : 0.0;
+  s = log(zeta);
+  u = (s - RESTITUTION_FAST_S_LO) * RESTITUTION_FAST_PER_UNIT;
+  if (u < (double)intervals) return exp(restitution_fast_piece_(coef, intervals, u));
+  return restitution_fast_law_at_(law, s);
 }
 
 /* The public functions. */
@@ -105,21 +115,24 @@ static inline double restitution_zeta_from_eps_delayed_recovery(double eps) {
 }
 static inline double restitution_duration_naive(double zeta) {
   const restitution_fast_end_ *e = &restitution_fast_naive_;
-  return restitution_fast_log_table_(e->log_tau, e->intervals, e->tau_zero, e->tau_lo, zeta);
+  return restitution_fast_log_table_(e->log_tau, e->tau_intervals, e->tau_zero, e->tau_lo, &e->tau_law, zeta);
 }
 static inline double restitution_duration_delayed_recovery(double zeta) {
   const restitution_fast_end_ *e = &restitution_fast_delayed_;
-  return restitution_fast_log_table_(e->log_tau, e->intervals, e->tau_zero, e->tau_lo, zeta);
+  return restitution_fast_log_table_(e->log_tau, e->tau_intervals, e->tau_zero, e->tau_lo, &e->tau_law, zeta);
 }
 static inline double restitution_max_compression(double zeta) {
-  return restitution_fast_log_table_(restitution_fast_log_x_max_, restitution_fast_delayed_.intervals,
-                                     RESTITUTION_FAST_X_MAX_ZERO, RESTITUTION_FAST_X_MAX_LO, zeta);
+  return restitution_fast_log_table_(restitution_fast_log_x_max_, restitution_fast_delayed_.tau_intervals,
+                                     RESTITUTION_FAST_X_MAX_ZERO, RESTITUTION_FAST_X_MAX_LO,
+                                     &restitution_fast_x_max_law_, zeta);
 }
 static inline double restitution_max_compression_time(double zeta) {
-  return restitution_fast_log_table_(restitution_fast_log_tau_max_, restitution_fast_delayed_.intervals,
-                                     RESTITUTION_FAST_TAU_MAX_ZERO, RESTITUTION_FAST_TAU_MAX_LO, zeta);
+  return restitution_fast_log_table_(restitution_fast_log_tau_max_, restitution_fast_delayed_.tau_intervals,
+                                     RESTITUTION_FAST_TAU_MAX_ZERO, RESTITUTION_FAST_TAU_MAX_LO,
+                                     &restitution_fast_tau_max_law_, zeta);
 }
 
+/* clang-format on */
 /* NOLINTEND */
 #endif /* RESTITUTION_FAST_H */
 )C";
@@ -173,18 +186,25 @@ void end_tables(std::ostringstream& out, const std::string& tag, const EndTable&
   array(out, "restitution_fast_" + tag + "_small_", e.small, 4);
 }
 
+std::string law(const Law& w) {
+  return fmt::format("{{{}, {}, {}, {}, {}, {}, {}}}", number(w.power), number(w.c1), number(w.c0),
+                     number(w.d2), number(w.d1), number(w.d0), number(w.e0));
+}
+
 void end_struct(std::ostringstream& out, const std::string& tag, const EndTable& e, bool naive) {
   const std::string p = "restitution_fast_" + tag;
-  out << "static const restitution_fast_end_ " << p << "_ = {" << e.intervals << ", " << p << "_logit_, " << p
-      << "_log_tau_, " << number(e.g_lo) << ", " << e.inverse_intervals << ", " << p << "_inverse_, " << p
-      << "_small_, " << number(e.tau_zero) << ", " << number(e.tau_lo) << ", " << (naive ? 1 : 0) << "};\n";
+  out << "static const restitution_fast_end_ " << p << "_ = {" << e.intervals << ", " << p << "_logit_, "
+      << e.tau_intervals << ", " << p << "_log_tau_, " << law(e.tau_law) << ", " << number(e.g_lo) << ", "
+      << e.inverse_intervals << ", " << p << "_inverse_, " << p << "_small_, " << number(e.tau_zero) << ", "
+      << number(e.tau_lo) << ", " << (naive ? 1 : 0) << "};\n";
 }
 
 }  // namespace
 
 std::string c_header_text(const TableData& d) {
   std::ostringstream out;
-  out << R"(/* restitution_fast.h: the coefficient of normal restitution eps of viscoelastic spheres, certified fast.
+  out << R"(/* clang-format off */
+/* restitution_fast.h: the coefficient of normal restitution eps of viscoelastic spheres, certified fast.
  * Self-contained C99 (also valid C++), needs only <math.h> (link with -lm). Made by the project
  * "restitution" (`restitution export c-header`); the method and the accuracy are in its docs/fast.md.
  *
@@ -197,17 +217,16 @@ std::string c_header_text(const TableData& d) {
  *   double restitution_one_minus_eps_delayed_recovery(double zeta)
  *   double restitution_zeta_from_eps_naive(double eps)            the inverse, eps in (0, 1] (1 gives 0)
  *   double restitution_zeta_from_eps_delayed_recovery(double eps)
- *   double restitution_duration_naive(double zeta)                collision duration tau_c (table range only)
+ *   double restitution_duration_naive(double zeta)                collision duration tau_c, zeta >= 0
  *   double restitution_duration_delayed_recovery(double zeta)
- *   double restitution_max_compression(double zeta)               x_max and its time (table range only)
+ *   double restitution_max_compression(double zeta)               x_max and its time tau_max, zeta >= 0
  *   double restitution_max_compression_time(double zeta)
  *
- * Every function returns NaN for an argument outside its domain (negative or NaN zeta, eps outside (0, 1],
- * zeta beyond the table for the durations and the maximal compression: RESTITUTION_FAST_S_LO +
- * intervals / RESTITUTION_FAST_PER_UNIT in ln zeta).
+ * Every function returns NaN for an argument outside its domain (negative or NaN zeta, eps outside (0, 1]).
  * Accuracy: |eps - exact| <= 1e-13 min(eps, 1 - eps) for zeta in [0, 1e6] (delayed recovery) and [0, 1e5]
  * (naive); beyond, the error of the asymptotic law (naive: exponentially small; delayed recovery:
  * about 0.4 (zeta^(-5/3) ln zeta^(-5/3))^2 relative). The inverse returns a zeta whose eps meets the same bound.
+ * tau_c, x_max, tau_max: the relative errors measured against the reference, in RESTITUTION_FAST_SETTINGS.
  */
 #ifndef RESTITUTION_FAST_H
 #define RESTITUTION_FAST_H
@@ -237,10 +256,18 @@ std::string c_header_text(const TableData& d) {
   define(out, "TAU_MAX_ZERO", d.tau_max_zero);
   define(out, "TAU_MAX_LO", d.tau_max_lo);
   out << R"(
+/* A large-zeta law of a duration or of the maximal compression. */
+typedef struct {
+  double power, c1, c0, d2, d1, d0, e0;
+} restitution_fast_law_;
+
 /* One end of the collision: forward tables in s = ln zeta, inverse table in g = ln(eps / (1 - eps)). */
 typedef struct {
   int intervals;
-  const double *logit, *log_tau;
+  const double *logit;
+  int tau_intervals;
+  const double *log_tau;
+  restitution_fast_law_ tau_law;
   double g_lo;
   int inverse_intervals;
   const double *inverse, *small;
@@ -256,6 +283,8 @@ typedef struct {
   array(out, "restitution_fast_log_tau_max_", d.log_tau_max, per_line);
   end_struct(out, "naive", d.naive, true);
   end_struct(out, "delayed", d.delayed, false);
+  out << "static const restitution_fast_law_ restitution_fast_x_max_law_ = " << law(d.x_max_law) << ";\n";
+  out << "static const restitution_fast_law_ restitution_fast_tau_max_law_ = " << law(d.tau_max_law) << ";\n";
   out << estrin_function(d.degree) << kEvaluation;
   return out.str();
 }

@@ -22,17 +22,12 @@ void check_zeta(double zeta) {
   if (!(zeta >= 0.0)) throw InvalidInput(fmt::format("zeta = {} must be >= 0", zeta));
 }
 
-void check_duration_zeta(double zeta, CollisionEnd end) {
-  check_zeta(zeta);
-  if (zeta > duration_zeta_max(end))
-    throw InvalidInput(
-        fmt::format("zeta = {} is beyond the fast table of the collision duration and maximal "
-                    "compression at the {} end (zeta <= {})",
-                    zeta, end_name(end), duration_zeta_max(end)));
-}
-
 std::vector<double> values(const double* data, int count) {
   return {data, data + count};
+}
+
+Law law(const restitution_fast_law_& w) {
+  return {w.power, w.c1, w.c0, w.d2, w.d1, w.d0, w.e0};
 }
 
 EndTable end_table(const restitution_fast_end_& e) {
@@ -40,7 +35,9 @@ EndTable end_table(const restitution_fast_end_& e) {
   EndTable t;
   t.intervals = e.intervals;
   t.logit = values(e.logit, e.intervals * per_piece);
-  t.log_tau = values(e.log_tau, e.intervals * per_piece);
+  t.tau_intervals = e.tau_intervals;
+  t.log_tau = values(e.log_tau, e.tau_intervals * per_piece);
+  t.tau_law = law(e.tau_law);
   t.g_lo = e.g_lo;
   t.inverse_intervals = e.inverse_intervals;
   t.inverse = values(e.inverse, e.inverse_intervals * per_piece);
@@ -67,18 +64,14 @@ double zeta_from_eps(double eps, CollisionEnd end) {
   return restitution_fast_zeta_(&table_of(end), eps);
 }
 
-double duration_zeta_max(CollisionEnd end) {
-  return std::exp(RESTITUTION_FAST_S_LO + table_of(end).intervals / RESTITUTION_FAST_PER_UNIT);
-}
-
 double collision_duration(double zeta, CollisionEnd end) {
-  check_duration_zeta(zeta, end);
+  check_zeta(zeta);
   return end == CollisionEnd::naive ? restitution_duration_naive(zeta)
                                     : restitution_duration_delayed_recovery(zeta);
 }
 
 MaxCompression max_compression(double zeta) {
-  check_duration_zeta(zeta, CollisionEnd::delayed_recovery);
+  check_zeta(zeta);
   return {restitution_max_compression_time(zeta), restitution_max_compression(zeta)};
 }
 
@@ -92,13 +85,15 @@ std::string c_header() {
   d.zeta_lo = RESTITUTION_FAST_ZETA_LO;
   d.naive = end_table(restitution_fast_naive_);
   d.delayed = end_table(restitution_fast_delayed_);
-  const int count = restitution_fast_delayed_.intervals * (RESTITUTION_FAST_DEGREE + 1);
+  const int count = restitution_fast_delayed_.tau_intervals * (RESTITUTION_FAST_DEGREE + 1);
   d.log_x_max = values(restitution_fast_log_x_max_, count);
   d.log_tau_max = values(restitution_fast_log_tau_max_, count);
   d.x_max_zero = RESTITUTION_FAST_X_MAX_ZERO;
   d.tau_max_zero = RESTITUTION_FAST_TAU_MAX_ZERO;
   d.x_max_lo = RESTITUTION_FAST_X_MAX_LO;
   d.tau_max_lo = RESTITUTION_FAST_TAU_MAX_LO;
+  d.x_max_law = law(restitution_fast_x_max_law_);
+  d.tau_max_law = law(restitution_fast_tau_max_law_);
   d.kappa = RESTITUTION_FAST_KAPPA;
   d.x_m = RESTITUTION_FAST_X_M;
   d.q = RESTITUTION_FAST_Q;

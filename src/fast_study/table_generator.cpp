@@ -159,12 +159,12 @@ struct Fits {
   long solves = 0;
 };
 
-Fits fit(const GeneratorSettings& s, int naive_intervals, int delayed_intervals,
+Fits fit(const GeneratorSettings& s, int naive_intervals, int naive_tau_intervals, int delayed_intervals,
          const std::vector<Real>& nodes) {
   const Grid empty{s.s_lo, s.per_unit, {}};
   Fits f{empty, empty, empty, empty, empty, empty, 0};
   for (int i = 0; i < delayed_intervals; ++i) {
-    const bool with_naive = i < naive_intervals;
+    const bool with_naive = i < naive_tau_intervals;
     std::vector<Real> gn;
     std::vector<Real> gd;
     std::vector<Real> tn;
@@ -188,10 +188,8 @@ Fits fit(const GeneratorSettings& s, int naive_intervals, int delayed_intervals,
     f.tau_delayed.pieces.push_back(interpolate(td));
     f.x_max.pieces.push_back(interpolate(xm));
     f.tau_max.pieces.push_back(interpolate(tm));
-    if (with_naive) {
-      f.g_naive.pieces.push_back(interpolate(gn));
-      f.tau_naive.pieces.push_back(interpolate(tn));
-    }
+    if (i < naive_intervals) f.g_naive.pieces.push_back(interpolate(gn));
+    if (with_naive) f.tau_naive.pieces.push_back(interpolate(tn));
   }
   return f;
 }
@@ -212,7 +210,7 @@ std::string measured_errors(const GeneratorSettings& s, const Fits& f, long& sol
   long checks = 0;
   const auto worse = [](double& worst, double e) { worst = std::max(worst, e); };
   for (std::size_t i = 0; i < f.g_delayed.pieces.size(); ++i) {
-    const bool with_naive = i < f.g_naive.pieces.size();
+    const bool with_naive = i < f.tau_naive.pieces.size();
     for (int c = 0; c < s.checks_per_interval; ++c, ++checks, ++solves) {
       const double zeta = std::exp(s.s_lo + (static_cast<double>(i) + unit(rng)) / s.per_unit);
       const Real sv = logq(zeta);
@@ -223,10 +221,10 @@ std::string measured_errors(const GeneratorSettings& s, const Fits& f, long& sol
             relative(expq(f.tau_delayed.at(sv, true)), r.ends[CollisionEnd::delayed_recovery]->tau));
       worse(delayed.x_max, relative(expq(f.x_max.at(sv, true)), r.x_max));
       worse(delayed.tau_max, relative(expq(f.tau_max.at(sv, true)), r.tau_max));
-      if (with_naive) {
-        worse(naive.eps, relative_eps_error(f.g_naive.at(sv, true), *r.ends[CollisionEnd::naive]));
+      if (with_naive)
         worse(naive.tau, relative(expq(f.tau_naive.at(sv, true)), r.ends[CollisionEnd::naive]->tau));
-      }
+      if (i < f.g_naive.pieces.size())
+        worse(naive.eps, relative_eps_error(f.g_naive.at(sv, true), *r.ends[CollisionEnd::naive]));
     }
   }
   return fmt::format(
@@ -260,17 +258,155 @@ std::string law_errors(const GeneratorSettings& s, const TableData& d, long& sol
       s.s_hi_naive, law_naive, s.s_hi_delayed, law_delayed);
 }
 
+// A law at s, in __float128, with its coefficients as stored (doubles).
+Real law_at(const Law& w, Real s) {
+  const Real delta = expq(-s * 5 / 3);
+  return expq(w.power * s) * (w.c1 * s + w.c0 + delta * ((w.d2 * s + w.d1) * s + w.d0 + delta * w.e0));
+}
+
+// The solution of a small dense system, by Gaussian elimination with partial pivoting.
+std::vector<Real> solve_linear(std::vector<std::vector<Real>> a, std::vector<Real> b) {
+  const std::size_t n = b.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t pivot = k;
+    for (std::size_t i = k + 1; i < n; ++i)
+      if (fabsq(a[i][k]) > fabsq(a[pivot][k])) pivot = i;
+    std::swap(a[k], a[pivot]);
+    std::swap(b[k], b[pivot]);
+    for (std::size_t i = k + 1; i < n; ++i) {
+      const Real m = a[i][k] / a[k][k];
+      for (std::size_t j = k; j < n; ++j) a[i][j] -= m * a[k][j];
+      b[i] -= m * b[k];
+    }
+  }
+  std::vector<Real> x(n);
+  for (std::size_t k = n; k-- > 0;) {
+    Real sum = b[k];
+    for (std::size_t j = k + 1; j < n; ++j) sum -= a[k][j] * x[j];
+    x[k] = sum / a[k][k];
+  }
+  return x;
+}
+
+struct Sample {
+  Real s, value;
+};
+
+// The free constants of a law with the derived power and c1, through as many samples as it has: c0, d2, d1,
+// d0 at the delayed-recovery end (the O(δ) drift of docs/asymptotics.md carries powers of ln ζ), c0, d0, e0
+// at the naive end (corrections in powers of δ alone: measured, a δ ln ζ term fits worse by 1e4). The δ
+// columns are scaled to order one so that the elimination sees comparable pivots.
+Law fit_law(double power, double c1, bool naive, const std::vector<Sample>& at) {
+  std::vector<std::vector<Real>> a;
+  std::vector<Real> b;
+  const Real scale = expq(at.front().s * 5 / 3);
+  for (const Sample& p : at) {
+    const Real delta = expq(-p.s * 5 / 3) * scale;
+    a.push_back(naive ? std::vector<Real>{1, delta, delta * delta}
+                      : std::vector<Real>{1, delta * p.s * p.s, delta * p.s, delta});
+    b.push_back(p.value * expq(-power * p.s) - c1 * p.s);
+  }
+  const std::vector<Real> x = solve_linear(a, b);
+  const auto unscaled = [&](std::size_t k, int powers) {
+    return static_cast<double>(x[k] * (powers == 1 ? scale : scale * scale));
+  };
+  if (naive) return {power, c1, static_cast<double>(x[0]), 0, 0, unscaled(1, 1), unscaled(2, 2)};
+  return {power, c1, static_cast<double>(x[0]), unscaled(1, 1), unscaled(2, 1), unscaled(3, 1), 0};
+}
+
+double law_error(const Law& w, const Sample& p) {
+  return relative(law_at(w, p.s), p.value);
+}
+
+// Reference values of the durations and of the maximal compression at ln ζ = s.
+struct Durations {
+  Sample naive_tau, delayed_tau, x_max, tau_max;
+};
+
+Durations durations_at(Real s, bool naive, long& solves) {
+  const ReferenceSolution r = hertz_reference(static_cast<double>(expq(s)), naive);
+  ++solves;
+  const Real sv = logq(r.parameter);  // the ζ solved, as rounded to double
+  return {{sv, naive ? r.ends[CollisionEnd::naive]->tau : Real(0)},
+          {sv, r.ends[CollisionEnd::delayed_recovery]->tau},
+          {sv, r.x_max},
+          {sv, r.tau_max}};
+}
+
+// The large-ζ laws of τ_c (both ends), x_max and τ_max (docs/fast.md derives them): their free constants
+// fitted through reference solves from the end of each table on (naive: up to 0.5 above it, where the
+// reference still costs seconds), their errors measured at reference
+// solves between those (and, for x_max, whose law is derived completely, at all of them). One line each.
+std::string fit_laws(const GeneratorSettings& s, TableData& d, long& solves) {
+  const Real q = d.q;
+  const Real log_a = d.log_a;
+  const Real x_m = d.x_m;
+  // x_max = X_m ζ^{-2/3} [1 − (δ/q)((5/3) ln ζ + ln A − ln q − 3/2)]
+  d.x_max_law = {-2.0 / 3.0,
+                 0,
+                 d.x_m,
+                 0,
+                 static_cast<double>(-x_m * 5 / (3 * q)),
+                 static_cast<double>(-(x_m / q) * (log_a - logq(q) - Real(3) / 2))};
+  std::vector<Durations> fit_delayed;
+  std::vector<Durations> check_delayed;
+  const double span = std::log(1e6) - s.s_hi_delayed;
+  for (int k = 0; k < 4; ++k)
+    fit_delayed.push_back(durations_at(s.s_hi_delayed + k * span / 3, false, solves));
+  for (int k = 0; k < 3; ++k)
+    check_delayed.push_back(durations_at(s.s_hi_delayed + (k + 0.5) * span / 3, false, solves));
+  std::vector<Durations> fit_naive;
+  std::vector<Durations> check_naive;
+  for (const double ds : {0.0, 0.25, 0.5})
+    fit_naive.push_back(durations_at(s.s_hi_naive_duration + ds, true, solves));
+  for (const double ds : {0.1, 0.6})
+    check_naive.push_back(durations_at(s.s_hi_naive_duration + ds, true, solves));
+
+  const auto samples = [](const std::vector<Durations>& v, Sample Durations::*which) {
+    std::vector<Sample> out;
+    for (const Durations& p : v) out.push_back(p.*which);
+    return out;
+  };
+  d.naive.tau_law = fit_law(1.0, 10.0 / 3.0, true, samples(fit_naive, &Durations::naive_tau));
+  d.delayed.tau_law = fit_law(-2.0 / 3.0, static_cast<double>(10 / (3 * q)), false,
+                              samples(fit_delayed, &Durations::delayed_tau));
+  d.tau_max_law =
+      fit_law(-2.0 / 3.0, static_cast<double>(5 / (3 * q)), false, samples(fit_delayed, &Durations::tau_max));
+
+  const auto worst = [](const Law& w, const std::vector<Sample>& v) {
+    double e = 0;
+    for (const Sample& p : v) e = std::max(e, law_error(w, p));
+    return e;
+  };
+  std::vector<Sample> x_max_all = samples(fit_delayed, &Durations::x_max);
+  for (const Sample& p : samples(check_delayed, &Durations::x_max)) x_max_all.push_back(p);
+  return fmt::format(
+      "  laws of tau_c, x_max, tau_max above the tables, relative error at reference points between the fit "
+      "points: tau_c naive {:.2e} (zeta = e^({}+0.1, +0.6)), tau_c delayed {:.2e}, tau_max {:.2e}; x_max "
+      "(derived, at all 7 points from e^{}) {:.2e}\n"
+      "  fitted c0 minus derived: tau_c delayed {:.2e} (ln A / q), tau_max {:.2e} ((ln A - ln q) / q)",
+      worst(d.naive.tau_law, samples(check_naive, &Durations::naive_tau)), s.s_hi_naive_duration,
+      worst(d.delayed.tau_law, samples(check_delayed, &Durations::delayed_tau)),
+      worst(d.tau_max_law, samples(check_delayed, &Durations::tau_max)), s.s_hi_delayed,
+      worst(d.x_max_law, x_max_all), d.delayed.tau_law.c0 - static_cast<double>(log_a / q),
+      d.tau_max_law.c0 - static_cast<double>((log_a - logq(q)) / q));
+}
+
 }  // namespace
 
 TableData generate_tables(const GeneratorSettings& s) {
   if (s.degree < 2 || s.degree > 30) throw InvalidInput(fmt::format("degree {} is not in [2, 30]", s.degree));
   if (!(s.per_unit >= 1 && s.per_unit <= 64 && s.per_unit == std::round(s.per_unit)))
     throw InvalidInput(fmt::format("intervals per unit {} is not an integer in [1, 64]", s.per_unit));
+  // The laws above the tables are fitted to reference solves up to 0.6 above s_hi_naive_duration (the naive
+  // reference stops at ζ = 1e3) and up to ζ = 1e6 (where the delayed one stops).
   if (!(s.s_lo >= -30 && s.s_lo < s.s_hi_naive && s.s_hi_naive <= s.s_hi_delayed && s.s_hi_naive <= 4 &&
-        s.s_hi_delayed <= std::log(1e6)))
+        s.s_hi_naive <= s.s_hi_naive_duration && s.s_hi_naive_duration <= s.s_hi_delayed &&
+        s.s_hi_naive_duration + 0.6 <= std::log(kReferenceNaiveZetaMax) &&
+        s.s_hi_delayed <= std::log(1e6) - 1))
     throw InvalidInput(
-        "the table range must satisfy -30 <= s_lo < s_hi_naive <= min(4, s_hi_delayed), s_hi_delayed <= ln "
-        "1e6");
+        "the table range must satisfy -30 <= s_lo < s_hi_naive <= min(4, s_hi_naive_duration), "
+        "s_hi_naive_duration <= min(s_hi_delayed, ln 1e3 - 0.6), s_hi_delayed <= ln 1e6 - 1");
   if (s.checks_per_interval < 0) throw InvalidInput("checks per interval must be >= 0");
   TableData d;
   d.degree = s.degree;
@@ -280,9 +416,11 @@ TableData generate_tables(const GeneratorSettings& s) {
   d.zeta_lo = std::exp(s.s_lo);
   d.naive.intervals = static_cast<int>(std::lround((s.s_hi_naive - s.s_lo) * s.per_unit));
   d.delayed.intervals = static_cast<int>(std::lround((s.s_hi_delayed - s.s_lo) * s.per_unit));
+  d.naive.tau_intervals = static_cast<int>(std::lround((s.s_hi_naive_duration - s.s_lo) * s.per_unit));
+  d.delayed.tau_intervals = d.delayed.intervals;
 
   const std::vector<Real> nodes = chebyshev_nodes(s.degree);
-  Fits f = fit(s, d.naive.intervals, d.delayed.intervals, nodes);
+  Fits f = fit(s, d.naive.intervals, d.naive.tau_intervals, d.delayed.intervals, nodes);
   d.naive.logit = stored(f.g_naive);
   d.naive.log_tau = stored(f.tau_naive);
   d.delayed.logit = stored(f.g_delayed);
@@ -317,18 +455,21 @@ TableData generate_tables(const GeneratorSettings& s) {
 
   const std::string measured = measured_errors(s, f, f.solves);
   const std::string laws = law_errors(s, d, f.solves);
+  const std::string duration_laws = fit_laws(s, d, f.solves);
   d.settings = fmt::format(
-      "generator: restitution fast-table --degree {} --per-unit {} --s-lo {} --s-hi-naive {} --s-hi-delayed "
-      "{} "
-      "--checks {} --seed {}\n"
+      "generator: restitution fast-table --degree {} --per-unit {} --s-lo {} --s-hi-naive {} "
+      "--s-hi-naive-duration {} --s-hi-delayed {} --checks {} --seed {}\n"
       "values: __float128 Taylor reference engine (restitution/reference_solution.hpp, two orders agreeing "
       "to {:.0e}), {} solves\n"
       "forward: Chebyshev interpolation at {} nodes per interval of ln zeta, as monomials in t in [-1, 1]\n"
       "inverse: interpolation of ln zeta against ln(eps/(1-eps)) from the unrounded forward polynomials\n"
       "below zeta_lo: series of docs/series.md, {} terms in sqrt(zeta); above: kappa zeta^-5, two-term "
-      "delayed law\n{}\n{}",
-      s.degree, s.per_unit, s.s_lo, s.s_hi_naive, s.s_hi_delayed, s.checks_per_interval, s.seed,
-      kReferenceAgreement, f.solves, s.degree + 1, d.small_terms, measured, laws);
+      "delayed law; tau_c naive tabulated to e^{}, then zeta ((10/3) s + c0 + d0 delta + e0 delta^2), s = "
+      "ln zeta, delta = zeta^(-5/3); delayed tau_c, tau_max: zeta^(-2/3) (c1 s + c0 + delta (d2 s^2 + d1 s + "
+      "d0)); x_max derived\n{}\n{}\n{}",
+      s.degree, s.per_unit, s.s_lo, s.s_hi_naive, s.s_hi_naive_duration, s.s_hi_delayed,
+      s.checks_per_interval, s.seed, kReferenceAgreement, f.solves, s.degree + 1, d.small_terms,
+      s.s_hi_naive_duration, measured, laws, duration_laws);
   return d;
 }
 

@@ -3,7 +3,8 @@
 // (restitution/reference_solution.hpp): Chebyshev interpolation of g = ln(ε/(1 − ε)), ln τ_c, ln x_max and ln
 // τ_max in s = ln ζ at the Chebyshev nodes of each interval, converted to monomials; the inverse by
 // interpolating s(g) from the unrounded forward polynomials; the settings and the errors measured at random
-// check points recorded in TableData::settings.
+// check points recorded in TableData::settings; the large-ζ laws of the durations and of the maximal
+// compression (docs/fast.md), their free constants fitted to reference solves just above the tables.
 #include <cstdint>
 
 #include "fast/table_data.hpp"
@@ -11,11 +12,12 @@
 namespace restitution::fast {
 
 struct GeneratorSettings {
-  int degree = 12;           // polynomial degree per interval
-  double per_unit = 8;       // intervals per unit of ln ζ (and of g in the inverse)
-  double s_lo = -19;         // ln ζ where the tables start (the series holds below)
-  double s_hi_naive = 2;     // ln ζ where the naive table ends (κ ζ^-5 above)
-  double s_hi_delayed = 12;  // ln ζ where the delayed-recovery table ends (two-term law above)
+  int degree = 12;                 // polynomial degree per interval
+  double per_unit = 8;             // intervals per unit of ln ζ (and of g in the inverse)
+  double s_lo = -19;               // ln ζ where the tables start (the series holds below)
+  double s_hi_naive = 2;           // ln ζ where the naive table of g ends (κ ζ^-5 above)
+  double s_hi_naive_duration = 6;  // ln ζ where the naive table of τ_c ends (its law above)
+  double s_hi_delayed = 12;        // ln ζ where the delayed-recovery table ends (two-term law above)
   int checks_per_interval = 2;
   std::uint64_t seed = 13;
 };
