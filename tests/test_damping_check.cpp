@@ -49,7 +49,7 @@ TEST(DampingRecipes, LiggghtsBetaIsTheDashpotDampingRatio) {
   // It is the damping ratio r of the linear dash-pot x'' + 2 r x' + x = 0 whose naive end gives ε = e.
   CollisionSolver solver;
   SolveOptions options;
-  options.ends = selection_of(CollisionEnd::naive);
+  options.ends = EndSet{CollisionEnd::naive};
   for (double e : {0.1, 0.5, 0.9}) {
     const auto r = solver.solve(ContactLaw::linear_dashpot(-liggghts_beta(e)), options);
     EXPECT_NEAR(end_of(r, CollisionEnd::naive).eps, e, 1e-9 * e) << e;
@@ -112,7 +112,7 @@ TEST(DampingRecipes, TsujiRecipesAreSpeedIndependentInPhysicalUnits) {
   ASSERT_TRUE(s.speed_independent());
   const double gamma = s.code_value * std::sqrt(m * k);
   SolveOptions options;
-  options.ends = selection_of(CollisionEnd::delayed_recovery);
+  options.ends = EndSet{CollisionEnd::delayed_recovery};
   const double natural = actual_eps(Recipe::lammps_tsuji, 0.5, Clamp::on);
   for (double v : {0.01, 1.0, 100.0}) {
     const auto r = solver.solve(ContactLaw::physical(LawKind::tsuji_hertz, k, gamma, m, v), options);

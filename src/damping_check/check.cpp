@@ -71,7 +71,7 @@ CheckResult check_recipe(const CheckRequest& request, CollisionSolver& solver) {
     speeds.assign(request.speeds_m_s.begin(), request.speeds_m_s.end());
   }
   for (Clamp clamp : request.clamps) {
-    options.ends = selection_of(end_for(clamp));
+    options.ends = EndSet{end_for(clamp)};
     for (const auto& v : speeds) {
       CheckPoint p;
       p.clamp = clamp;
