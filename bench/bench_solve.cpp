@@ -19,19 +19,19 @@ const std::vector<ReferenceRow>& rows() {
   return r;
 }
 
-void solve_case(benchmark::State& state, const WorkPrecisionEngine& engine, bool naive, double zeta,
+void solve_case(benchmark::State& state, const WorkPrecisionEngine& engine, CollisionEnd which, double zeta,
                 double tolerance) {
   CollisionSolver solver;
-  const SolveOptions options = work_precision_options(engine, naive, tolerance);
+  const SolveOptions options = work_precision_options(engine, which, tolerance);
   const ContactLaw law = ContactLaw::hertz_natural(zeta);
   CollisionResult result = solver.solve(law, options);
   for (auto _ : state) {  // NOLINT(clang-analyzer-deadcode.DeadStores): the benchmark loop idiom
     result = solver.solve(law, options);
     benchmark::DoNotOptimize(result);
   }
-  const EndResult& end = naive ? *result[CollisionEnd::naive] : *result[CollisionEnd::delayed_recovery];
+  const EndResult& end = *result[which];
   if (const ReferenceRow* row = reference_row_for(rows(), zeta)) {
-    const auto& ref = naive ? row->ends[CollisionEnd::naive] : row->ends[CollisionEnd::delayed_recovery];
+    const auto& ref = row->ends[which];
     if (ref) state.counters["error"] = contract_error(end, *ref);
   }
   state.counters["rhs"] = static_cast<double>(result.stats.rhs_evaluations);
@@ -45,14 +45,15 @@ void register_cases() {
   for (const WorkPrecisionEngine& engine : work_precision_engines()) {
     const bool taylor = engine.method == Method::taylor;
     const double tolerance = taylor ? 1e-12 : 1e-10;
-    for (const bool naive : {false, true}) {
+    for (const CollisionEnd end : {CollisionEnd::delayed_recovery, CollisionEnd::naive}) {
+      const bool naive = end == CollisionEnd::naive;
       for (const double zeta : decades) {
         if (naive && zeta > (taylor ? 10.0 : 100.0)) continue;
         if (!taylor && zeta > 100.0) continue;
         const std::string name = "solve/" + engine.name + (naive ? "/naive" : "/delayed") +
                                  "/zeta=" + std::to_string(zeta).substr(0, 8) +
                                  "/T=" + (taylor ? "1e-12" : "1e-10");
-        benchmark::RegisterBenchmark(name.c_str(), solve_case, engine, naive, zeta, tolerance)
+        benchmark::RegisterBenchmark(name.c_str(), solve_case, engine, end, zeta, tolerance)
             ->Unit(benchmark::kMicrosecond);
       }
     }

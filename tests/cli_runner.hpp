@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -43,5 +44,17 @@ inline CliOutcome run_cli(const std::string& arguments) {
   std::remove(err_name);
   return outcome;
 }
+
+// A fresh folder under /tmp, removed with everything in it at the end of the scope.
+struct TempFolder {
+  std::filesystem::path path;
+  TempFolder() {
+    char name[] = "/tmp/restitution-test-XXXXXX";
+    path = mkdtemp(name);
+  }
+  ~TempFolder() { std::filesystem::remove_all(path); }
+  TempFolder(const TempFolder&) = delete;
+  TempFolder& operator=(const TempFolder&) = delete;
+};
 
 }  // namespace restitution::test_support

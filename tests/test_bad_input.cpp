@@ -160,7 +160,7 @@ const std::vector<BadInput> kCases = {
     {"series eval --kind naive --zeta nan --terms 3", "zeta must be finite and >= 0, got nan"},
     {"series eval --kind naive --zeta 1 --terms -2", "terms -2 out of range"},
     {"series eval --kind pade-1999 --zeta 1 --terms 3",
-     "--terms applies to --kind naive and delayed-recovery"},
+     "--terms applies to --kind naive-series and delayed-recovery-series only"},
     {"series eval --kind naive --zeta 1 --coefficients maybe", "--coefficients: maybe not in"},
     {"series validate --out /proc/no-such", "cannot create output folder", 3},
 };

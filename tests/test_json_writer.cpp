@@ -2,8 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <random>
 
 namespace restitution::cli {
 namespace {
@@ -18,18 +22,65 @@ TEST(JsonWriter, NestedObjectsAndArraysParse) {
   EXPECT_EQ(j["inner"]["flag"], true);
 }
 
-TEST(JsonWriter, SeventeenDigitsRoundTripAndNonFiniteIsNull) {
+TEST(JsonWriter, KeysStayInTheOrderWritten) {
+  JsonWriter w;
+  w.begin_object().field("zeta", 1L).field("law", "hertz").key("a").begin_array().end_array().end_object();
+  EXPECT_EQ(w.str(), R"({"zeta":1,"law":"hertz","a":[]})");
+}
+
+TEST(JsonWriter, ShortestRoundTripAndNonFiniteIsNull) {
   JsonWriter w;
   const double third = 1.0 / 3.0;
-  w.begin_array().value(third).value(std::numeric_limits<double>::infinity()).end_array();
-  EXPECT_EQ(w.str(), "[0.33333333333333331,null]");
+  w.begin_array().value(third).value(0.1).value(std::numeric_limits<double>::infinity());
+  w.value(std::numeric_limits<double>::quiet_NaN()).end_array();
+  EXPECT_EQ(w.str(), "[0.3333333333333333,0.1,null,null]");
   EXPECT_EQ(nlohmann::json::parse(w.str())[0].get<double>(), third);
 }
 
-TEST(JsonWriter, EscapesControlCharacters) {
+// The contract of every JSON output: each number reads back to the very double that was written.
+TEST(JsonWriter, EveryDoubleReadsBackBitForBit) {
+  std::vector<double> values{0.0,
+                             -0.0,
+                             1.0,
+                             1e-10,
+                             1.0 - 1e-16,
+                             std::numeric_limits<double>::min(),
+                             std::numeric_limits<double>::denorm_min(),
+                             std::numeric_limits<double>::max(),
+                             std::numeric_limits<double>::lowest(),
+                             std::numeric_limits<double>::epsilon()};
+  std::mt19937_64 bits(20261123);
+  while (values.size() < 20000) {
+    const double v = std::bit_cast<double>(bits());
+    if (std::isfinite(v)) values.push_back(v);
+  }
   JsonWriter w;
-  w.begin_object().field("k", "a\nb\x01").end_object();
+  w.begin_array();
+  for (const double v : values) w.value(v);
+  w.end_array();
+  const auto j = nlohmann::json::parse(w.str());
+  ASSERT_EQ(j.size(), values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const double back = j[i].get<double>();
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(back), std::bit_cast<std::uint64_t>(values[i])) << values[i];
+  }
+}
+
+TEST(JsonWriter, EscapesControlCharactersAndKeepsUtf8) {
+  JsonWriter w;
+  w.begin_object().field("k", "a\nb\x01").field("greek", "ε ζ").end_object();
   EXPECT_EQ(nlohmann::json::parse(w.str())["k"], "a\nb\x01");
+  EXPECT_NE(w.str().find("ε ζ"), std::string::npos);
+}
+
+TEST(JsonWriter, InvalidUtf8IsReplacedNotRefused) {
+  JsonWriter w;
+  w.begin_object()
+      .field("file",
+             "a\xff"
+             "b")
+      .end_object();
+  EXPECT_NO_THROW(static_cast<void>(nlohmann::json::parse(w.str())));
 }
 
 }  // namespace

@@ -112,6 +112,34 @@ TEST(SceneParser, MaterialErrorsNameTheMaterialAndTheKey) {
             std::string::npos);
 }
 
+// Issue 12, item 18: a material only calibrated needs no damping (the calibration computes it); the tasks
+// that compute with its damping say so at their own line.
+TEST(SceneParser, DampingIsNeededOnlyWhereItIsUsed) {
+  const std::string elastic =
+      "output = \"o\"\n[materials.ice]\nyoung_modulus = 7e9\npoisson_ratio = 0.3\ndensity = 917\n"
+      "radius = 0.01\n";
+  const Scene s =
+      parse_scene(elastic + "[[calibration]]\neps = 0.8\nvelocity = 1\nmaterial = \"ice\"\n", "t");
+  EXPECT_FALSE(s.materials.at("ice").dissipative_constant_s.has_value());
+  EXPECT_EQ(
+      error_of(elastic + "[[sweep]]\nmaterial = \"ice\"\nvelocity = 1\n"),
+      "test.toml:8: sweep[0].material: [materials.ice] has neither dissipative_constant nor viscosities, "
+      "which a sweep needs (only a calibration can do without: it computes them)");
+  EXPECT_NE(error_of(elastic + "[[trajectory]]\nmaterial = \"ice\"\nvelocity = 1\n")
+                .find("test.toml:8: trajectory[0].material: [materials.ice] has neither"),
+            std::string::npos);
+  EXPECT_NE(error_of(elastic + "[[dem]]\ncode = \"lammps\"\nmaterial = \"ice\"\nspeeds = [1]\n")
+                .find("which a dem task without eps needs"),
+            std::string::npos);
+  EXPECT_EQ(error_of(elastic + "[[dem]]\ncode = \"lammps\"\nmaterial = \"ice\"\neps = 0.8\nvelocity = 1\n"
+                               "speeds = [1]\n"),
+            "accepted");
+  // Both kinds of damping at once is still an error, and it is found at the material.
+  EXPECT_NE(error_of(elastic + "dissipative_constant = 1e-6\nviscosities = [1, 1]\n")
+                .find("give exactly one of dissipative_constant and viscosities"),
+            std::string::npos);
+}
+
 TEST(SceneParser, SubjectsMustBeUnambiguous) {
   EXPECT_NE(error_of("output = \"o\"\n[[sweep]]\nzeta = 1\nbeta = 0.2\n").find("give zeta alone"),
             std::string::npos);

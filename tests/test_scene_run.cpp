@@ -89,6 +89,22 @@ TEST(SceneRun, PhysicalSweepsUseZetaFromBetaAndVelocity) {
   EXPECT_THROW((void)plan_scene(far), InvalidInput);
 }
 
+// Issue 12, item 18: a calibrated material without damping gives the same A as with any damping given.
+TEST(SceneRun, CalibrationIgnoresAndNeedsNoDampingOfTheMaterial) {
+  const std::string material =
+      "output = \"o\"\n[materials.ice]\nyoung_modulus = 7e9\npoisson_ratio = 0.3\ndensity = 917\n"
+      "radius = 0.01\n";
+  const std::string task = "[[calibration]]\neps = 0.8\nvelocity = 1\nmaterial = \"ice\"\n";
+  const Scene bare = parse_scene(material + task, "t");
+  const Scene damped = parse_scene(material + "dissipative_constant = 3e-4\n" + task, "t");
+  const SceneResults a = run_scene(bare, plan_scene(bare));
+  const SceneResults b = run_scene(damped, plan_scene(damped));
+  ASSERT_TRUE(a.calibrations[0].calibration.dissipative_constant_s.has_value());
+  EXPECT_EQ(*a.calibrations[0].calibration.dissipative_constant_s,
+            *b.calibrations[0].calibration.dissipative_constant_s);
+  EXPECT_NEAR(a.calibrations[0].calibration.eps_at_zeta, 0.8, 1e-9);
+}
+
 TEST(SceneRun, ApproximationsAreEvaluatedBesideTheNumerics) {
   const Scene s = parse_scene(
       "output = \"o\"\n[[sweep]]\nzeta = [0.01, 20]\nends = \"naive\"\n"

@@ -163,7 +163,7 @@ TEST(SeriesApproximations, ValidationReportOnASmallGrid) {
     if (!std::isnan(x[1].zeta_eps)) EXPECT_GE(x[1].zeta_eps, x[2].zeta_eps);
   }
   // the recomputed naive series is exact to the solver's accuracy below ζ = 0.5
-  EXPECT_EQ(r.candidates[1].name, "naive-40");
+  EXPECT_EQ(r.candidates[1].name, "naive-series:computed-40");
   for (const ValidationRow& row : r.rows)
     if (row.zeta < 0.5) EXPECT_LT(row.errors[1].relative_error_one_minus, 1e-10) << row.zeta;
   // large ζ: the solver's local slope is near -5 (naive) and near -5/3 (delayed recovery)

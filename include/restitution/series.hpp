@@ -51,6 +51,7 @@ enum class Approximation {
   naive_series,
   delayed_recovery_series,
   pade_1999,
+  pade_1999_corrected,  // the 1999 Padé form with the recomputed a_3, a_4 (series_study)
   simple_theory_1999,
   pade_2011_1_4,
   pade_2011_3_6

@@ -83,11 +83,12 @@ def eps(zeta=None, end="delayed-recovery", tolerance=1e-10, method="auto", *, be
         material=None):
     """Coefficient of restitution eps at one end of the collision.
 
-    zeta: float or array-like >= 0 (natural units), or instead beta [s^(1/5) m^(-1/5)] with velocity [m/s]
+    zeta: float or array-like in the checked range 0 <= zeta <= 1e6 (natural units; above it ValueError, as
+        on the command line), or instead beta [s^(1/5) m^(-1/5)] with velocity [m/s]
         (arrays broadcast), or a Material with velocity [m/s].
     end: "delayed-recovery" (the force vanishes; the physical end) or "naive" (the overlap vanishes).
-    tolerance: |eps - eps_exact| <= tolerance * min(eps, 1 - eps), in [1e-14, 1e-2] (CVODE methods: >= 1e-11,
-        taylor: >= 1e-13).
+    tolerance: |eps - eps_exact| <= tolerance * min(eps, 1 - eps), in [1e-11, 1e-2] for the CVODE methods,
+        [1e-13, 1e-2] for taylor.
     method: "auto" (CVODE, BDF or Adams per regime), "bdf", "adams" or "taylor" (Taylor series; fastest;
         the naive end for zeta <= 100 only).
     Returns a float for scalar input, else a float64 array of the same (broadcast) shape, computed on all
@@ -131,7 +132,7 @@ def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=1e
 
     Returns a Calibration: .zeta (natural units), .beta [s^(1/5) m^(-1/5)], .characteristic_velocity
     (the 1999 paper's g* [m/s]), .dissipative_constant (A [s] for the material's elastic data, else None),
-    .eps_at_zeta, .solves. end as for eps(). Raises ValueError for eps outside (0, 1) or below eps(zeta = 1e4).
+    .eps_at_zeta, .solves. end as for eps(). Raises ValueError for eps outside (0, 1) or below eps(zeta = 1e6) (the checked range).
     """
     if material is not None and not isinstance(material, Material):
         raise TypeError(f"material must be a restitution.Material, got {type(material).__name__}")

@@ -35,8 +35,10 @@ def coefficients(kind, count):
 def eval(kind, zeta, terms=None, coefficients="computed"):  # noqa: A001 (the name the issue asks for)
     """eps of a series or closed-form approximation at zeta >= 0 (float or array-like; same shape out).
 
-    kind: "naive", "delayed-recovery" (series; terms = c_1..c_N or h_0..h_N, default 40 and 60),
-    "pade-1999", "simple-theory-1999", "pade-2011-1-4", "pade-2011-3-6" (no terms).
+    kind: "naive-series", "delayed-recovery-series" (terms = c_1..c_N or h_0..h_N, default 40 and 60; the
+    old spellings "naive", "delayed-recovery" are aliases; "NAME:published" / "NAME:computed-N" name the
+    coefficients as series validate does), "pade-1999", "pade-1999-corrected", "simple-theory-1999",
+    "pade-2011-1-4", "pade-2011-3-6" (no terms): the names scene files use (evaluation_kinds).
     coefficients: "computed" (recomputed here) or "published" (2008 paper, Tables III and V).
     The series diverge beyond their radius of convergence; see docs/series.md.
     Raises ValueError naming kind, zeta (and its index), terms or coefficients.

@@ -9,6 +9,7 @@
 #include "array_index.hpp"
 #include "bindings.hpp"
 #include "parallel_solve.hpp"
+#include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
 #include "solve_options.hpp"
@@ -30,6 +31,7 @@ CollisionSolver& thread_solver() {
 
 CollisionResult solve_one(double zeta, const SolveOptions& options) {
   const ContactLaw law = ContactLaw::hertz_natural(zeta);
+  require_checked_zeta(zeta);  // the same contract as the command line
   const py::gil_scoped_release release;
   return thread_solver().solve(law, options);
 }
@@ -43,6 +45,7 @@ double eps_scalar(double zeta, const std::string& end, double tolerance, const s
 // sweep reports them without it).
 void check_point(double zeta, const SolveOptions& options) {
   ContactLaw::hertz_natural(zeta);
+  require_checked_zeta(zeta);
   if (options.method == Method::taylor && options.ends.contains(CollisionEnd::naive) &&
       zeta > kTaylorNaiveZetaMax) {
     throw InvalidInput(

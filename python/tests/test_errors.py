@@ -100,7 +100,7 @@ def test_series_errors():
         restitution.series.coefficients("naive", 61)
     with pytest.raises(ValueError, match="kind must be one of"):
         restitution.series.coefficients("wrong", 3)
-    with pytest.raises(ValueError, match="terms applies to kind naive and delayed-recovery only, not pade-1999"):
+    with pytest.raises(ValueError, match="terms applies to kind naive-series and delayed-recovery-series only, not pade-1999"):
         restitution.series.eval("pade-1999", 0.1, terms=3)
     with pytest.raises(ValueError, match="zeta at index 1"):
         restitution.series.eval("naive", [0.1, -0.1])
@@ -108,3 +108,22 @@ def test_series_errors():
 
 def test_numerical_failure_is_an_arithmetic_error():
     assert issubclass(restitution.NumericalFailure, ArithmeticError)
+
+
+def test_zeta_beyond_the_checked_range_is_refused_like_the_cli():
+    # One contract for every entry point: 0 <= zeta <= 1e6 (kLargestCheckedZeta), refused above it.
+    checked = r"outside the checked range 0 <= zeta <= 1e\+06"
+    with pytest.raises(ValueError, match=checked):
+        restitution.eps(2e6)
+    with pytest.raises(ValueError, match=checked + r".*\(zeta at index 1\)"):
+        restitution.eps([1.0, 1e7])
+    with pytest.raises(ValueError, match=checked):
+        restitution.solve(1e10)
+    with pytest.raises(ValueError, match=checked):
+        restitution.eps(beta=10.0, velocity=1e31)  # zeta = 10 * (1e31)^(1/5) = 1e7
+    assert restitution.eps(1e6) > 0.0  # the end of the range itself is computed
+
+
+def test_calibration_below_the_checked_range_is_refused():
+    with pytest.raises(ValueError, match="checked range"):
+        restitution.calibrate(1e-12, velocity=1.0)

@@ -128,3 +128,12 @@ def test_material_with_viscosities_follows_the_1999_formula():
     expected = (3 * eta2 - eta1) ** 2 / (3 * (3 * eta2 + 2 * eta1)) * (1 - nu ** 2) * (1 - 2 * nu) / (young * nu ** 2)
     assert material.A == pytest.approx(expected, rel=1e-14)
     assert material.viscosities == (eta1, eta2) and material.dissipative_constant is None
+
+
+def test_series_eval_takes_every_approximation_name_and_the_old_aliases():
+    zeta = [0.2, 0.6]
+    for kind in restitution.series.evaluation_kinds:
+        assert restitution.series.eval(kind, zeta).shape == (2,)
+    assert list(restitution.series.eval("naive", zeta)) == list(restitution.series.eval("naive-series", zeta))
+    assert list(restitution.series.eval("naive-series:published", zeta)) == list(
+        restitution.series.eval("naive-series", zeta, coefficients="published"))

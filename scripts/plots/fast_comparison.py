@@ -27,8 +27,8 @@ APPROXIMATIONS = [
     ("pade-2011-1-4", "delayed", "pade_2011_1_4/dem", "Padé [1/4] 2011"),
     ("pade-2011-3-6", "delayed", "pade_2011_3_6/dem", "Padé [3/6] 2011"),
     ("pade-1999", "naive", "pade_1999/dem", "Padé 1999"),
-    ("naive-40", "naive", "naive_series_40/dem", "naive series, 40 terms"),
-    ("delayed-recovery-60", "delayed", "delayed_recovery_series_60/dem", "delayed series, 60 terms"),
+    ("naive-series:computed-40", "naive", "naive_series_40/dem", "naive series, 40 terms"),
+    ("delayed-recovery-series:computed-60", "delayed", "delayed_recovery_series_60/dem", "delayed series, 60 terms"),
 ]
 FAST = {"naive": "fast_eps/dem/naive", "delayed": "fast_eps/dem/delayed-recovery"}
 
@@ -85,9 +85,8 @@ def main(exe, bench_csv, reference_csv, png_path, md_path):
                 zeta = last * 10 ** (k / 4)
                 if zeta > ZETA_MAX * 1.0001:
                     break
-                kind = {"naive-40": "naive", "delayed-recovery-60": "delayed-recovery"}.get(name, name)
-                terms = {"naive-40": ["--terms", "40"], "delayed-recovery-60": ["--terms", "60"]}.get(name, [])
-                run = subprocess.run([exe, "series", "eval", "--kind", kind, "--zeta", repr(zeta), "--json"] + terms,
+                # every name `series validate` writes is a kind `series eval` takes
+                run = subprocess.run([exe, "series", "eval", "--kind", name, "--zeta", repr(zeta), "--json"],
                                      capture_output=True, text=True)
                 if run.returncode == 2 and "radius of convergence" in run.stderr:
                     break  # a series' curve ends at its radius: past it the partial sums diverge

@@ -32,7 +32,7 @@ def main(csv_path, png_path):
 
     top.plot(zeta, col["naive_eps"], "k-", lw=2, label="solver, naive end")
     top.plot(zeta, col["delayed_eps"], "b-", lw=2, label="solver, delayed recovery")
-    series_styles = {"naive-table-III": ("k", "o"), "delayed-recovery-table-V": ("b", "s")}
+    series_styles = {"naive-series:published": ("k", "o"), "delayed-recovery-series:published": ("b", "s")}
     for name, (color, marker) in series_styles.items():
         if name + "_eps" in col:
             top.plot(zeta[::3], col[name + "_eps"][::3], color=color, marker=marker, ls="none", mfc="none",

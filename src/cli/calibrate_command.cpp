@@ -92,7 +92,8 @@ void add_calibrate_command(CLI::App& app, Action& chosen) {
       ->check(CLI::IsMember({"bdf", "adams", "auto", "taylor", "fast"}))
       ->capture_default_str();
   add_material_options(*cmd, o->material);
-  cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
+  cmd->add_flag("--json", o->json,
+                "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, &chosen] { chosen = [o] { return run_calibrate(*o); }; });
 }
 

@@ -192,7 +192,8 @@ void add_dem_command(CLI::App& app, Action& chosen) {
                   "Coulomb friction coefficient mu >= 0 of the tangential model (0: frictionless); it does "
                   "not change the head-on eps")
       ->capture_default_str();
-  cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
+  cmd->add_flag("--json", o->json,
+                "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, &chosen] {
     chosen = [o] {
       const DemResult r = compute(*o);

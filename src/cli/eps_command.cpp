@@ -111,10 +111,10 @@ void add_eps_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--damping-ratio", o->damping_ratio,
                   "damping ratio r > 0 of the linear dash-pot x'' + 2r x' + x = 0");
   add_solver_options(*cmd, o->solver);
-  cmd->add_flag(
-      "--json", o->json,
-      "print one JSON object (17 significant digits); the tolerance holds for eps when eps is small "
-      "and for one_minus_eps when eps is near 1");
+  cmd->add_flag("--json", o->json,
+                "print one JSON object (numbers in the shortest form that reads back to the same double); "
+                "the tolerance holds for eps when eps is small "
+                "and for one_minus_eps when eps is near 1");
   cmd->callback([o, &chosen] { chosen = [o] { return run_eps(*o); }; });
 }
 

@@ -8,6 +8,7 @@
 #include "analysis/power_law_fit.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
+#include "cli/progress.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -47,9 +48,13 @@ int run_fit(const FitOptions& o) {
   options.ends = EndSet{end};
   std::vector<double> eps;
   std::vector<LocalSlope> slopes;
-  for (const double zeta : zetas) {
-    eps.push_back(end_of(solver.solve(ContactLaw::hertz_natural(zeta), options), end).eps);
-    slopes.push_back(local_slope(solver, zeta, end, kMinTolerance));
+  {
+    ProgressLine progress("fit");
+    for (const double zeta : zetas) {
+      eps.push_back(end_of(solver.solve(ContactLaw::hertz_natural(zeta), options), end).eps);
+      slopes.push_back(local_slope(solver, zeta, end, kMinTolerance));
+      progress.update(eps.size(), zetas.size());
+    }
   }
   const PowerLawFit fit = fit_power_law(zetas, eps);
   const DerivedLaw derived = derived_law(end);
@@ -105,7 +110,8 @@ void add_fit_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--points", o->points, "log-spaced points, ends included (>= 3)")->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance, "accuracy of each fitted eps, in [1e-11, 1e-2]")
       ->capture_default_str();
-  cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
+  cmd->add_flag("--json", o->json,
+                "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, &chosen] { chosen = [o] { return run_fit(*o); }; });
 }
 

@@ -1,118 +1,87 @@
 #include "cli/json_writer.hpp"
 
-#include <fmt/core.h>
-
 #include <cmath>
+#include <stdexcept>
+#include <utility>
 
 namespace restitution::cli {
 
-void JsonWriter::separate() {
-  if (after_key_) {
-    after_key_ = false;
-    return;
+nlohmann::ordered_json& JsonWriter::put(nlohmann::ordered_json value) {
+  if (open_.empty()) {
+    document_ = std::move(value);
+    return document_;
   }
-  if (!first_in_scope_.empty()) {
-    if (!first_in_scope_.back()) out_ += ',';
-    first_in_scope_.back() = false;
+  nlohmann::ordered_json& scope = *open_.back();
+  if (scope.is_object()) {
+    if (!key_) throw std::logic_error("JsonWriter: a value in an object needs a key first");
+    nlohmann::ordered_json& slot = scope[*key_];
+    key_.reset();
+    slot = std::move(value);
+    return slot;
   }
+  scope.push_back(std::move(value));
+  return scope.back();
+}
+
+void JsonWriter::close() {
+  if (open_.empty()) throw std::logic_error("JsonWriter: nothing open to close");
+  open_.pop_back();
 }
 
 JsonWriter& JsonWriter::begin_object() {
-  separate();
-  out_ += '{';
-  first_in_scope_.push_back(true);
+  open_.push_back(&put(nlohmann::ordered_json::object()));
   return *this;
 }
 
 JsonWriter& JsonWriter::end_object() {
-  out_ += '}';
-  first_in_scope_.pop_back();
+  close();
   return *this;
 }
 
 JsonWriter& JsonWriter::begin_array() {
-  separate();
-  out_ += '[';
-  first_in_scope_.push_back(true);
+  open_.push_back(&put(nlohmann::ordered_json::array()));
   return *this;
 }
 
 JsonWriter& JsonWriter::end_array() {
-  out_ += ']';
-  first_in_scope_.pop_back();
+  close();
   return *this;
 }
 
 JsonWriter& JsonWriter::key(std::string_view name) {
-  separate();
-  write_string(name);
-  out_ += ':';
-  after_key_ = true;
+  key_ = std::string(name);
   return *this;
 }
 
 JsonWriter& JsonWriter::value(double number) {
-  separate();
-  if (std::isfinite(number)) {
-    out_ += fmt::format("{:.17g}", number);
-  } else {
-    out_ += "null";
-  }
+  // nlohmann writes non-finite numbers as null too; said here so that the contract does not hang on it.
+  put(std::isfinite(number) ? nlohmann::ordered_json(number) : nlohmann::ordered_json(nullptr));
   return *this;
 }
 
 JsonWriter& JsonWriter::value(long number) {
-  separate();
-  out_ += fmt::format("{}", number);
+  put(number);
   return *this;
 }
 
 JsonWriter& JsonWriter::value(bool flag) {
-  separate();
-  out_ += flag ? "true" : "false";
+  put(flag);
   return *this;
 }
 
 JsonWriter& JsonWriter::null() {
-  separate();
-  out_ += "null";
+  put(nullptr);
   return *this;
 }
 
 JsonWriter& JsonWriter::value(std::string_view text) {
-  separate();
-  write_string(text);
+  put(std::string(text));
   return *this;
 }
 
-void JsonWriter::write_string(std::string_view text) {
-  out_ += '"';
-  for (const char c : text) {
-    switch (c) {
-      case '"':
-        out_ += "\\\"";
-        break;
-      case '\\':
-        out_ += "\\\\";
-        break;
-      case '\n':
-        out_ += "\\n";
-        break;
-      case '\t':
-        out_ += "\\t";
-        break;
-      case '\r':
-        out_ += "\\r";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          out_ += fmt::format("\\u{:04x}", static_cast<int>(c));
-        } else {
-          out_ += c;
-        }
-    }
-  }
-  out_ += '"';
+std::string JsonWriter::str() const {
+  // Text that is not valid UTF-8 (a file name, say) is written with replacement characters, not refused.
+  return document_.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
 }  // namespace restitution::cli

@@ -1,6 +1,9 @@
 #pragma once
-// A minimal streaming JSON writer for the command-line contract: numbers with 17 significant digits
-// (non-finite numbers as null), strings escaped, objects and arrays nested. Writes to a std::string.
+// The streaming interface the commands use to build their JSON, backed by nlohmann::ordered_json (keys
+// stay in the order written). Serialisation is nlohmann's: compact, strings escaped, UTF-8 passed through,
+// doubles in the shortest form that reads back to the same double, non-finite numbers as null.
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,14 +29,20 @@ class JsonWriter {
     key(name);
     return value(v);
   }
-  [[nodiscard]] const std::string& str() const { return out_; }
+  // The document written so far, serialised (compact, one line).
+  [[nodiscard]] std::string str() const;
 
  private:
-  void separate();
-  void write_string(std::string_view text);
-  std::string out_;
-  std::vector<bool> first_in_scope_;
-  bool after_key_ = false;
+  // Places a value under the pending key of the innermost open object, or appends it to the innermost open
+  // array, or makes it the document; returns where it now lives.
+  nlohmann::ordered_json& put(nlohmann::ordered_json value);
+  void close();
+
+  nlohmann::ordered_json document_;
+  // The open containers, innermost last. A container only grows while it is innermost, so the pointers to
+  // its ancestors' elements stay valid.
+  std::vector<nlohmann::ordered_json*> open_;
+  std::optional<std::string> key_;
 };
 
 }  // namespace restitution::cli

@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/io_error.hpp"
 #include "cli/parse_errors.hpp"
+#include "cli/stop_signals.hpp"
 #include "restitution/errors.hpp"
 
 namespace {
@@ -53,6 +54,9 @@ int run(int argc, char** argv) {
 
   try {
     return chosen ? chosen() : 2;
+  } catch (const cli::Interrupted& e) {
+    std::fprintf(stderr, "restitution: %s: stopped, nothing half-written\n", e.what());
+    return 128 + e.signal_number();
   } catch (const cli::IoError& e) {
     std::fprintf(stderr, "restitution: I/O error: %s\n", cli::one_line(e.what()).c_str());
     return 3;

@@ -1,8 +1,12 @@
 #include "cli/output_files.hpp"
 
+#include <fcntl.h>
 #include <fmt/core.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <cerrno>
 #include <cmath>
@@ -13,6 +17,7 @@
 #include <system_error>
 
 #include "cli/io_error.hpp"
+#include "cli/stop_signals.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -32,10 +37,34 @@ fs::path scripts_folder() {
   return chosen != nullptr ? fs::path(chosen) : fs::path(RESTITUTION_SCRIPTS_DIR);
 }
 
-std::string quoted(const std::string& text) {
-  std::string out = "'";
-  for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
+// Runs the program (no shell: nothing to quote) with stdout and stderr into /dev/null and waits for it,
+// through signals that interrupt the wait. Returns its wait status, -1 when it could not be started.
+int run_quietly(const std::vector<std::string>& command) {
+  std::vector<char*> argv;
+  for (const std::string& a : command) argv.push_back(const_cast<char*>(a.c_str()));  // NOLINT: POSIX API
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  pid_t child = 0;
+  const int spawned = posix_spawnp(&child, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return -1;
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0) {
+    if (errno != EINTR) return -1;
+  }
+  return status;
+}
+
+// A child killed by SIGINT or SIGTERM was stopped by the user (Ctrl-C reaches the whole process group), as
+// was this process when its own handler saw the signal: stop the command rather than carry on without it.
+void stop_if_signalled(int status) {
+  if (status > 0 && WIFSIGNALED(status) && (WTERMSIG(status) == SIGINT || WTERMSIG(status) == SIGTERM)) {
+    throw Interrupted(WTERMSIG(status));
+  }
+  throw_if_interrupted();
 }
 
 }  // namespace
@@ -132,15 +161,16 @@ std::string run_plot_script(const std::string& script, const std::vector<std::st
   const fs::path path = scripts_folder() / "plots" / (script + ".py");
   if (!fs::exists(path)) return fmt::format("no plot: script {} not found", path.string());
   const std::string python = python_interpreter();
-  const std::string probe = quoted(python) + " -c 'import matplotlib' >/dev/null 2>&1";
-  if (std::system(probe.c_str()) != 0) {
+  const int probe = run_quietly({python, "-c", "import matplotlib"});
+  stop_if_signalled(probe);  // a probe killed by Ctrl-C says nothing about matplotlib
+  if (probe != 0) {
     return fmt::format(
         "no plot: {} cannot import matplotlib (install python3-matplotlib: bash scripts/setup)", python);
   }
-  std::string command = quoted(python) + " " + quoted(path.string());
-  for (const std::string& a : arguments) command += " " + quoted(a);
-  command += " >/dev/null 2>&1";
-  const int status = std::system(command.c_str());
+  std::vector<std::string> command = {python, path.string()};
+  command.insert(command.end(), arguments.begin(), arguments.end());
+  const int status = run_quietly(command);
+  stop_if_signalled(status);
   if (status != 0) {
     return fmt::format("no plot: {} failed with status {}", path.filename().string(),
                        WIFEXITED(status) ? WEXITSTATUS(status) : -1);

@@ -35,7 +35,8 @@ std::string number17(double value);
 
 // Runs scripts/plots/<script>.py with Debian's /usr/bin/python3 and the given arguments. Returns an empty
 // string on success, otherwise one line saying why no plot was made (matplotlib missing, script failed):
-// callers warn on stderr and keep the data they wrote.
+// callers warn on stderr and keep the data they wrote. Throws Interrupted when the script (or this process)
+// got SIGINT or SIGTERM.
 std::string run_plot_script(const std::string& script, const std::vector<std::string>& arguments);
 
 }  // namespace restitution::cli

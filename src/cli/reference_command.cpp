@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/output_files.hpp"
+#include "cli/progress.hpp"
 #include "reference/reference_solution.hpp"
 #include "restitution/errors.hpp"
 
@@ -42,7 +43,14 @@ int run_reference(const ReferenceOptions& o) {
   if (o.out.empty()) throw InvalidInput("give --out FILE (or --zeta Z for one value)");
   check_output_file(o.out);  // before the work, not after
   std::vector<ReferenceSolution> solutions;
-  for (const double zeta : reference_zeta_grid()) solutions.push_back(hertz_reference(zeta));
+  {
+    const std::vector<double> grid = reference_zeta_grid();
+    ProgressLine progress("reference solutions");
+    for (const double zeta : grid) {
+      solutions.push_back(hertz_reference(zeta));
+      progress.update(solutions.size(), grid.size());
+    }
+  }
   const std::filesystem::path path(o.out);
   write_file_atomically(path, reference_csv(solutions));
   fmt::print("wrote {} reference solutions to {}\n", solutions.size(), path.string());

@@ -1,7 +1,6 @@
 // `restitution run [SCENE]`: runs a scene file (default: scenes/default.toml, the 2008 paper) and writes its
 // tables, plots and report into the scene's output folder.
 #include <fmt/core.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -11,7 +10,9 @@
 
 #include "cli/commands.hpp"
 #include "cli/output_files.hpp"
+#include "cli/progress.hpp"
 #include "cli/scene_outputs.hpp"
+#include "cli/stop_signals.hpp"
 #include "cli/work_precision_files.hpp"
 #include "restitution/errors.hpp"
 #include "scene/scene.hpp"
@@ -52,16 +53,14 @@ int run_scene_file(const RunOptions& o) {
   scene::RunSettings settings;
   settings.threads = o.threads;
   settings.reference_file = default_reference_file();
-  const bool terminal = isatty(fileno(stderr)) != 0;
-  if (terminal) {
-    settings.progress = [](std::size_t done, std::size_t total) {
-      if (done == total || done % 16 == 0) std::fprintf(stderr, "\r  %zu/%zu collisions", done, total);
-      if (done == total) std::fputc('\n', stderr);
-    };
-  }
+  ProgressLine progress("collisions");
+  settings.progress = progress.callback();
   const auto start = std::chrono::steady_clock::now();
   const scene::SceneResults results = scene::run_scene(s, std::move(plan), settings);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // Ctrl-C while computing ends the process at once (nothing is written yet); while writing and plotting
+  // it is caught, so that the run stops between files and exits 130 (main) with nothing half-written.
+  const StopSignals signals;
   const WrittenOutputs written = write_scene_outputs(s, results, folder, seconds);
   for (const auto& w : written.warnings) std::fprintf(stderr, "restitution: warning: %s\n", w.c_str());
   fmt::print("scene {}: {} collisions in {:.2f} s{}\n", path.string(), results.collisions, seconds,

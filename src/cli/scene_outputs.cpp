@@ -11,6 +11,7 @@
 #include "cli/scene_damping.hpp"
 #include "cli/scene_dem.hpp"
 #include "cli/scene_tables.hpp"
+#include "cli/stop_signals.hpp"
 #include "cli/work_precision_files.hpp"
 #include "restitution/series.hpp"
 #include "restitution/units.hpp"
@@ -115,12 +116,13 @@ class SceneWriter {
     footer(seconds);
     json_.end_object();
     write_file("summary.json", json_.str() + "\n");
-    write_file("report.md", report_);
+    write_file("report.md", report_);  // last: its presence says the folder is complete
     return std::move(out_);
   }
 
  private:
   void write_file(const std::string& name, const std::string& content) {
+    throw_if_interrupted();  // Ctrl-C stops the run here, between files, never inside one
     write_file_atomically(folder_ / name, content);
     out_.files.push_back(name);
   }
@@ -467,10 +469,13 @@ WrittenOutputs write_scene_outputs(const scene::Scene& scene, const scene::Scene
   check_output_folder(folder);
   // A write that fails half-way must not leave a folder that looks like a result (item 11 of issue 12).
   const bool existed = fs::exists(folder);
+  // The report of an earlier run would describe files this run replaces: gone until the new one is written,
+  // so that a run that stops half-way leaves no folder that looks complete.
+  std::error_code ignored;
+  if (existed) fs::remove(folder / "report.md", ignored);
   try {
     return SceneWriter(scene, results, folder).write(seconds);
   } catch (...) {
-    std::error_code ignored;
     if (!existed) fs::remove_all(folder, ignored);
     throw;
   }

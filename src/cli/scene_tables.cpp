@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "cli/output_files.hpp"
+#include "cli/physical_columns.hpp"
 #include "reference/dashpot_closed_form.hpp"
 #include "restitution/units.hpp"
 
@@ -58,17 +59,20 @@ Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results,
 
   Table t;
   t.columns = {"zeta"};
-  if (physical) t.columns.insert(t.columns.end(), {"velocity_m_s", "beta"});
+  if (physical) t.columns.insert(t.columns.end(), velocity_columns().begin(), velocity_columns().end());
   for (const CollisionEnd e : ends) {
     const std::string n = end_key(e);
     if (q.eps) t.columns.push_back("eps_" + n);
     if (q.one_minus_eps) t.columns.push_back("one_minus_eps_" + n);
     if (q.duration) t.columns.push_back("tau_" + n);
-    if (q.duration && si) t.columns.push_back("duration_s_" + n);
+    if (q.duration && si) t.columns.push_back(duration_column(e));
   }
   if (q.max_compression) {
     t.columns.insert(t.columns.end(), {"tau_max_compression", "x_max_compression"});
-    if (si) t.columns.insert(t.columns.end(), {"time_of_max_compression_s", "max_compression_m"});
+    if (si) {
+      const auto& si_columns = si_max_compression_columns();
+      t.columns.insert(t.columns.end(), si_columns.begin(), si_columns.end());
+    }
   }
   for (const auto& a : extras.approximations) {
     t.columns.push_back("eps_" + a.label);
@@ -88,13 +92,14 @@ Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results,
       if (q.eps) row.push_back(found ? end->eps : kNone);
       if (q.one_minus_eps) row.push_back(found ? end->one_minus_eps : kNone);
       if (q.duration) row.push_back(found ? end->tau : kNone);
-      if (q.duration && si) row.push_back(found ? end->tau * scales.time_s : kNone);
+      if (q.duration && si) row.push_back(found ? duration_s(*end, scales) : kNone);
     }
     if (q.max_compression) {
       row.insert(row.end(), {r->max_compression.tau, r->max_compression.x});
-      if (si)
-        row.insert(row.end(),
-                   {r->max_compression.tau * scales.time_s, r->max_compression.x * scales.length_m});
+      if (si) {
+        const std::vector<double> values = si_max_compression(r->max_compression, scales);
+        row.insert(row.end(), values.begin(), values.end());
+      }
     }
     for (const auto& a : extras.approximations) {
       // Relative difference from the numerics at the end the approximation describes, when computed.

@@ -1,6 +1,7 @@
 // `restitution series coefficients|eval|validate|certify`: the analytic series, their recomputed
 // coefficients and their validation against the solver.
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <memory>
 #include <optional>
@@ -69,9 +70,10 @@ struct EvalOptions {
 };
 
 int run_eval(const EvalOptions& o) {
-  if (o.kind == "naive" || o.kind == "delayed-recovery") {
-    const double radius =
-        o.kind == "naive" ? series::kNaiveSeriesRadius : series::kDelayedRecoverySeriesRadius;
+  const auto kind = series::approximation_named(o.kind.substr(0, o.kind.find(':')));
+  if (kind == series::Approximation::naive_series || kind == series::Approximation::delayed_recovery_series) {
+    const double radius = kind == series::Approximation::naive_series ? series::kNaiveSeriesRadius
+                                                                      : series::kDelayedRecoverySeriesRadius;
     if (o.zeta >= radius) {
       throw InvalidInput(
           fmt::format("zeta = {} is outside the radius of convergence of the {} series (zeta < {:g}, "
@@ -80,18 +82,19 @@ int run_eval(const EvalOptions& o) {
                       o.zeta, o.kind, radius));
     }
   }
-  const auto [values, terms] =
+  const auto [values, terms, published] =
       series::evaluate_by_kind(o.kind, std::span(&o.zeta, 1), o.terms, o.coefficients == "published", "--");
   const series::Value& v = values.front();
+  const char* coefficients = published ? "published" : "computed";
   if (o.json) {
     JsonWriter json;
     json.begin_object().field("kind", o.kind).field("zeta", o.zeta);
-    if (terms > 0) json.field("terms", terms).field("coefficients", o.coefficients);
+    if (terms > 0) json.field("terms", terms).field("coefficients", coefficients);
     json.field("eps", v.eps).field("one_minus_eps", v.one_minus_eps).end_object();
     fmt::print("{}\n", json.str());
   } else {
     fmt::print("{} at zeta = {}{}: eps = {:.17g}, 1 - eps = {:.17g}\n", o.kind, o.zeta,
-               terms > 0 ? fmt::format(" ({} terms, {} coefficients)", terms, o.coefficients) : "", v.eps,
+               terms > 0 ? fmt::format(" ({} terms, {} coefficients)", terms, coefficients) : "", v.eps,
                v.one_minus_eps);
   }
   return 0;
@@ -111,15 +114,20 @@ void add_coefficients(CLI::App& parent, Action& chosen) {
 void add_eval(CLI::App& parent, Action& chosen) {
   auto o = std::make_shared<EvalOptions>();
   CLI::App* cmd = parent.add_subcommand("eval", "evaluate one series or approximation at zeta");
-  cmd->add_option("--kind", o->kind,
-                  "naive, delayed-recovery, pade-1999, simple-theory-1999, pade-2011-1-4, pade-2011-3-6")
-      ->required()
-      ->check(CLI::IsMember(series::evaluation_kinds()));
+  cmd->add_option(
+         "--kind", o->kind,
+         fmt::format("{} (the names scenes and `series validate` use; naive and delayed-recovery are "
+                     "aliases of the two series, and NAME:published or NAME:computed-N choose a "
+                     "series' coefficients)",
+                     fmt::join(series::evaluation_kinds(), ", ")))
+      ->required();
   cmd->add_option("--zeta", o->zeta,
                   "zeta = beta v^{1/5} >= 0; the series only below their radius of convergence (naive 1.39, "
                   "delayed-recovery 1.10)")
       ->required();
-  cmd->add_option("--terms", o->terms, "series terms: c_1..c_N or h_0..h_N (default: 40 naive, 60 delayed)");
+  cmd->add_option(
+      "--terms", o->terms,
+      "series terms: c_1..c_N or h_0..h_N (default: 40 naive-series, 60 delayed-recovery-series)");
   cmd->add_option("--coefficients", o->coefficients, "computed (default) or published (2008 Tables III, V)")
       ->check(CLI::IsMember({"computed", "published"}));
   cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");

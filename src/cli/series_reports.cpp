@@ -22,8 +22,10 @@ std::string validation_csv(const series::ValidationReport& r) {
     csv += fmt::format(",{0}_eps,{0}_one_minus_eps,{0}_rel_err_eps,{0}_rel_err_one_minus_eps", c.name);
   csv += "\n";
   for (const auto& row : r.rows) {
-    std::vector<double> fields{row.zeta, row.naive.eps, row.naive.one_minus_eps, row.delayed.eps,
-                               row.delayed.one_minus_eps};
+    std::vector<double> fields{row.zeta, row.solver[CollisionEnd::naive].eps,
+                               row.solver[CollisionEnd::naive].one_minus_eps,
+                               row.solver[CollisionEnd::delayed_recovery].eps,
+                               row.solver[CollisionEnd::delayed_recovery].one_minus_eps};
     for (const auto& e : row.errors)
       fields.insert(fields.end(),
                     {e.value.eps, e.value.one_minus_eps, e.relative_error_eps, e.relative_error_one_minus});
@@ -50,10 +52,7 @@ std::string validation_json(const series::ValidationReport& r) {
   for (std::size_t i = 0; i < r.candidates.size(); ++i) {
     const auto& c = r.candidates[i];
     const auto& s = r.summaries[i];
-    j.begin_object()
-        .field("name", c.name)
-        .field("end", c.delayed_recovery ? "delayed-recovery" : "naive")
-        .field("description", c.description);
+    j.begin_object().field("name", c.name).field("end", end_name(c.end)).field("description", c.description);
     j.key("first_zeta_exceeding").begin_array();
     for (const auto& x : s.crossings)
       j.begin_object()
@@ -104,8 +103,8 @@ void print_validation_summary(const series::ValidationReport& r) {
       eps += crossing_text(x.zeta_eps);
       one_minus += crossing_text(x.zeta_one_minus_eps);
     }
-    fmt::print("  {:<26} {:<17} {:>26} {:>26}\n", r.candidates[i].name,
-               r.candidates[i].delayed_recovery ? "delayed-recovery" : "naive", eps, one_minus);
+    fmt::print("  {:<26} {:<17} {:>26} {:>26}\n", r.candidates[i].name, end_name(r.candidates[i].end), eps,
+               one_minus);
   }
   fmt::print("convergence radius in zeta (ratio / root / Domb-Sykes):\n");
   for (const auto& x : r.radii)

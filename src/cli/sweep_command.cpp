@@ -1,11 +1,11 @@
-// `restitution sweep`: ε over a grid of ζ, in parallel, into one CSV file. Nothing finished is lost: each
+// `restitution sweep`: ε over a grid of ζ, or of impact speeds with β or a material, in parallel, into one
+// CSV file. Nothing finished is lost: each
 // finished row is appended to FILE.partial and flushed; FILE appears (atomically) only when every point is
 // finished; SIGINT/SIGTERM stop the sweep after the points in progress; --resume continues from FILE.partial.
 #include <fmt/core.h>
 
-#include <atomic>
 #include <cerrno>
-#include <csignal>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -16,68 +16,36 @@
 
 #include "cli/commands.hpp"
 #include "cli/io_error.hpp"
+#include "cli/material_options.hpp"
 #include "cli/options.hpp"
 #include "cli/output_files.hpp"
+#include "cli/progress.hpp"
+#include "cli/stop_signals.hpp"
+#include "cli/sweep_grid.hpp"
 #include "cli/sweep_table.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/material.hpp"
+#include "restitution/units.hpp"
 #include "sweep/sweep.hpp"
 
 namespace restitution::cli {
 namespace {
 namespace fs = std::filesystem;
 
-// The signal that asked the sweep to stop (0: none). The only mutable global of the program: a signal
-// handler can do nothing but set a lock-free atomic.
-std::atomic<int> stop_signal{0};  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)
-static_assert(std::atomic<int>::is_always_lock_free);
-
-extern "C" void request_stop(int signal_number) {
-  stop_signal.store(signal_number);
-}
-
-// Routes SIGINT and SIGTERM to request_stop while a sweep runs; restores the previous handlers after.
-class StopSignals {
- public:
-  StopSignals() {
-    stop_signal.store(0);
-    struct sigaction action {};
-    action.sa_handler = request_stop;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &previous_int_);
-    sigaction(SIGTERM, &action, &previous_term_);
-  }
-  ~StopSignals() {
-    sigaction(SIGINT, &previous_int_, nullptr);
-    sigaction(SIGTERM, &previous_term_, nullptr);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
-
- private:
-  struct sigaction previous_int_ {};
-  struct sigaction previous_term_ {};
-};
-
 constexpr long long kMaxThreads = 1024;
 
-struct SweepOptions {
-  double zeta_min = 0.0;
-  double zeta_max = 0.0;
-  long long points = 0;
-  bool log = false;
-  SolverArguments solver;
-  std::optional<long long> threads;  // default: all cores
-  std::string out;
-  bool resume = false;
-};
-
 // The first line of the partial file: a resumed sweep must have the same settings.
-std::string settings_line(const SweepOptions& o) {
-  return fmt::format(
-      "# restitution sweep: zeta-min={} zeta-max={} points={} spacing={} end={} method={} "
-      "tolerance={}",
-      number17(o.zeta_min), number17(o.zeta_max), o.points, o.log ? "log" : "linear", o.solver.end,
-      o.solver.method, number17(o.solver.tolerance));
+std::string settings_line(const SweepOptions& o, const SweepGrid& grid) {
+  std::string range = fmt::format("zeta-min={} zeta-max={}", number17(o.zeta_min.value_or(0.0)),
+                                  number17(o.zeta_max.value_or(0.0)));
+  if (grid.velocity) {
+    range = fmt::format("velocity-min={} velocity-max={} beta={}", number17(*o.velocity_min),
+                        number17(*o.velocity_max), number17(grid.velocity->beta));
+    if (grid.velocity->k) range += fmt::format(" k={}", number17(*grid.velocity->k));
+  }
+  return fmt::format("# restitution sweep: {} points={} spacing={} end={} method={} tolerance={}", range,
+                     o.points, o.log ? "log" : "linear", o.solver.end, o.solver.method,
+                     number17(o.solver.tolerance));
 }
 
 // Appends finished rows to the partial file, flushing each so that a killed process loses none.
@@ -109,14 +77,13 @@ class PartialFile {
 };
 
 int run_sweep_command(const SweepOptions& o) {
-  // Signed on the command line so that a negative count is reported as such, not wrapped around.
-  if (o.points < 1) throw InvalidInput(fmt::format("--points must be >= 1, got {}", o.points));
   if (o.threads && (*o.threads < 1 || *o.threads > kMaxThreads)) {
     throw InvalidInput(
         fmt::format("--threads must lie in [1, {}] (default: all cores), got {}", kMaxThreads, *o.threads));
   }
-  const std::vector<double> zetas =
-      zeta_values({o.zeta_min, o.zeta_max, static_cast<std::size_t>(o.points), o.log});
+  const SweepGrid grid = sweep_grid(o);
+  const std::vector<double>& zetas = grid.zetas;
+  const VelocityAxis* velocity = grid.velocity ? &*grid.velocity : nullptr;
   const SolveOptions solve = solve_options(o.solver);
   check_sweep(zetas, solve);  // every point, before the first file is touched
   if (fs::path(o.out).filename().empty() || fs::is_directory(o.out)) {
@@ -133,8 +100,8 @@ int run_sweep_command(const SweepOptions& o) {
   const fs::path& out = target.path;
   check_output_folder(out.has_parent_path() ? out.parent_path() : fs::path("."));
   const fs::path partial_path = out.string() + ".partial";
-  const std::string settings = settings_line(o);
-  const std::string header = sweep_header(solve.ends);
+  const std::string settings = settings_line(o, grid);
+  const std::string header = sweep_header(solve.ends, velocity);
 
   PartialSweep done;
   if (o.resume && !fs::exists(partial_path) && fs::exists(out)) {
@@ -165,20 +132,22 @@ int run_sweep_command(const SweepOptions& o) {
     rows[index] = row;
     control.already_done[index] = true;
   }
-  control.stop_requested = [] { return stop_signal.load() != 0; };
+  control.stop_requested = [] { return stop_signal_received() != 0; };
   control.point_finished = [&](const SweepPoint& point) {
-    rows[point.index] = sweep_row(point, solve.ends);
+    rows[point.index] = sweep_row(point, solve.ends, velocity);
     partial.write(fmt::format("{},{}\n", point.index, rows[point.index]));
   };
 
   SweepSummary summary;
   {
     const StopSignals signals;
+    ProgressLine progress("sweep");  // ended before any message below
+    control.progress = progress.callback();
     summary = run_sweep(zetas, solve, control);
   }
   const std::size_t finished = summary.computed + summary.skipped;
   if (summary.stopped) {
-    const int signal_number = stop_signal.load();
+    const int signal_number = stop_signal_received();
     fmt::print(
         stderr,
         "restitution: interrupted by signal {}: {} of {} points finished and kept in '{}'; run the same "
@@ -205,11 +174,21 @@ int run_sweep_command(const SweepOptions& o) {
 
 void add_sweep_command(CLI::App& app, Action& chosen) {
   auto o = std::make_shared<SweepOptions>();
-  CLI::App* cmd = app.add_subcommand("sweep", "eps over a grid of zeta, in parallel, into a CSV file");
-  cmd->add_option("--zeta-min", o->zeta_min, "smallest zeta >= 0")->required();
-  cmd->add_option("--zeta-max", o->zeta_max, "largest zeta >= zeta-min")->required();
-  cmd->add_option("--points", o->points, "number of zeta values, >= 1 (both bounds included)")->required();
-  cmd->add_flag("--log", o->log, "space zeta logarithmically (needs zeta-min > 0); default: linearly");
+  CLI::App* cmd = app.add_subcommand(
+      "sweep",
+      "eps over a grid of zeta, or of impact speeds with beta or a material, in parallel, into a CSV file");
+  cmd->add_option("--zeta-min", o->zeta_min, "smallest zeta >= 0 (natural units)");
+  cmd->add_option("--zeta-max", o->zeta_max, "largest zeta >= zeta-min");
+  cmd->add_option("--velocity-min", o->velocity_min,
+                  "instead of zeta: smallest impact speed in m/s (with --beta or a material)");
+  cmd->add_option("--velocity-max", o->velocity_max, "largest impact speed in m/s");
+  cmd->add_option("--beta", o->beta, "beta in s^(1/5) m^(-1/5): zeta = beta v^(1/5)");
+  add_material_options(*cmd, o->material);
+  cmd->add_option(
+      "--dissipative-constant", o->dissipative_constant,
+      "material: the dissipative constant A in s (adds SI columns: durations, maximal compression)");
+  cmd->add_option("--points", o->points, "number of grid values, >= 1 (both bounds included)")->required();
+  cmd->add_flag("--log", o->log, "space the grid logarithmically (needs a minimum > 0); default: linearly");
   add_solver_options(*cmd, o->solver);
   cmd->add_option("--threads", o->threads, "worker threads, >= 1 (default: all cores)");
   cmd->add_option("--out", o->out, "the CSV file to write (FILE.partial holds the rows while it runs)")

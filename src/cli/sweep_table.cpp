@@ -7,13 +7,14 @@
 #include <sstream>
 
 #include "cli/output_files.hpp"
+#include "cli/physical_columns.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
 namespace {
 
-constexpr int kNumbersPerEnd = 4;
-constexpr int kTrailingNumbers = 3;  // max_compression tau and x, steps
+constexpr std::size_t kNumbersPerEnd = 4;
+constexpr std::size_t kTrailingNumbers = 3;  // max_compression tau and x, steps
 
 // A CSV field: quoted, inner quotes doubled, line breaks flattened so that one row stays one line.
 std::string quoted_field(const std::string& text) {
@@ -28,6 +29,15 @@ std::string quoted_field(const std::string& text) {
   return out + "\"";
 }
 
+// Columns after the maximal compression's for a material: its SI durations and maximal compression.
+std::vector<std::string> si_columns(EndSet ends, const VelocityAxis* velocity) {
+  std::vector<std::string> columns;
+  if (velocity == nullptr || !velocity->k) return columns;
+  for (const CollisionEnd end : ends.members()) columns.push_back(duration_column(end));
+  for (const std::string& c : si_max_compression_columns()) columns.push_back(c);
+  return columns;
+}
+
 [[noreturn]] void damaged(const std::filesystem::path& path, std::size_t line, const std::string& why) {
   throw InvalidInput(
       fmt::format("--resume: {}:{}: {}; delete it to start the sweep afresh", path.string(), line, why));
@@ -35,34 +45,52 @@ std::string quoted_field(const std::string& text) {
 
 }  // namespace
 
-std::string sweep_header(EndSet ends) {
+std::string sweep_header(EndSet ends, const VelocityAxis* velocity) {
   std::string header = "zeta";
+  if (velocity != nullptr) {
+    for (const std::string& c : velocity_columns()) header += "," + c;
+  }
   for (const CollisionEnd end : ends.members()) {
     for (const char* column : {"eps", "one_minus_eps", "tau", "x"})
       header += fmt::format(",{}_{}", end_key(end), column);
   }
-  return header + ",max_compression_tau,max_compression_x,steps,status,error";
+  header += ",max_compression_tau,max_compression_x";
+  for (const std::string& c : si_columns(ends, velocity)) header += "," + c;
+  return header + ",steps,status,error";
 }
 
-std::string sweep_row(const SweepPoint& point, EndSet ends) {
+std::string sweep_row(const SweepPoint& point, EndSet ends, const VelocityAxis* velocity) {
   std::string row = number17(point.zeta);
+  double v = 0.0;
+  if (velocity != nullptr) {
+    v = velocity->velocity_m_s.at(point.index);
+    row += fmt::format(",{},{}", number17(v), number17(velocity->beta));
+  }
   if (!point.result) {
-    const int empty = kTrailingNumbers + kNumbersPerEnd * static_cast<int>(ends.members().size());
-    for (int i = 0; i < empty; ++i) row += ',';
+    const std::size_t empty =
+        kTrailingNumbers + kNumbersPerEnd * ends.members().size() + si_columns(ends, velocity).size();
+    row += std::string(empty, ',');
     row += ",failed,";
     row += quoted_field(point.error);
     return row;
   }
   const CollisionResult& r = *point.result;
+  const auto add = [&row](double value) {
+    row += ',';
+    row += number17(value);
+  };
   for (const CollisionEnd end : ends.members()) {
     const EndResult& e = *r[end];
-    for (const double value : {e.eps, e.one_minus_eps, e.tau, e.x}) {
-      row += ',';
-      row += number17(value);
-    }
+    for (const double value : {e.eps, e.one_minus_eps, e.tau, e.x}) add(value);
   }
-  row += fmt::format(",{},{},{},ok,", number17(r.max_compression.tau), number17(r.max_compression.x),
-                     r.stats.steps);
+  add(r.max_compression.tau);
+  add(r.max_compression.x);
+  if (velocity != nullptr && velocity->k) {
+    const NaturalScales scales = natural_scales(*velocity->k, v);
+    for (const CollisionEnd end : ends.members()) add(duration_s(*r[end], scales));
+    for (const double value : si_max_compression(r.max_compression, scales)) add(value);
+  }
+  row += fmt::format(",{},ok,", r.stats.steps);
   return row;
 }
 

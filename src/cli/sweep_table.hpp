@@ -5,18 +5,29 @@
 #include <cstddef>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "restitution/collision_solver.hpp"
 #include "sweep/sweep.hpp"
 
 namespace restitution::cli {
 
-// The CSV columns for the requested ends: zeta, per end eps, one_minus_eps, tau, x, then the maximal
-// compression's tau and x, steps, status ("ok" | "failed") and error.
-std::string sweep_header(EndSet ends);
+// The impact speeds of an ε(v) sweep, ζ_i = β v_i^{1/5}; with k (ρ/m_eff of a material, s^-2 m^-1/2) the
+// table also holds SI times and lengths.
+struct VelocityAxis {
+  std::vector<double> velocity_m_s;  // parallel to the sweep's ζ values
+  double beta = 0.0;                 // s^{1/5} m^{-1/5}
+  std::optional<double> k;
+};
+
+// The CSV columns for the requested ends: zeta, (for a velocity axis: velocity_m_s, beta), per end eps,
+// one_minus_eps, tau, x, then the maximal compression's tau and x, (for a material: duration_s per end,
+// time_of_max_compression_s, max_compression_m), steps, status ("ok" | "failed") and error.
+std::string sweep_header(EndSet ends, const VelocityAxis* velocity = nullptr);
 // One CSV row (no newline); a failed point has empty numbers, status "failed" and the quoted message.
-std::string sweep_row(const SweepPoint& point, EndSet ends);
+std::string sweep_row(const SweepPoint& point, EndSet ends, const VelocityAxis* velocity = nullptr);
 
 // The finished rows of an interrupted sweep, read back from its partial file.
 struct PartialSweep {

@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/output_files.hpp"
+#include "cli/progress.hpp"
 #include "cli/work_precision_files.hpp"
 #include "reference/work_precision.hpp"
 #include "restitution/errors.hpp"
@@ -28,8 +29,11 @@ int run_work_precision(const WorkPrecisionOptions& o) {
   check_output_folder(folder);  // before the measurements, not after
   const std::filesystem::path reference =
       o.reference.empty() ? default_reference_file() : std::filesystem::path(o.reference);
-  const std::vector<WorkPrecisionRow> rows =
-      measure_work_precision(read_reference_file(reference), o.repeats, o.engines);
+  std::vector<WorkPrecisionRow> rows;
+  {
+    ProgressLine progress("work-precision (engine, end, tolerance)");
+    rows = measure_work_precision(read_reference_file(reference), o.repeats, o.engines, progress.callback());
+  }
   const WorkPrecisionFiles written = write_work_precision_files(rows, folder, "work_precision");
   if (!written.plot_warning.empty())
     std::fprintf(stderr, "restitution: warning: %s\n", written.plot_warning.c_str());

@@ -15,9 +15,10 @@
 namespace restitution {
 namespace {
 
-bool accepts(const WorkPrecisionEngine& engine, bool naive, double zeta) {
+bool accepts(const WorkPrecisionEngine& engine, CollisionEnd end, double zeta) {
   if (engine.method == Method::adams && zeta > 100.0) return false;
-  if (engine.method == Method::taylor && naive && zeta > kTaylorNaiveZetaMax) return false;
+  if (engine.method == Method::taylor && end == CollisionEnd::naive && zeta > kTaylorNaiveZetaMax)
+    return false;
   return true;
 }
 
@@ -39,12 +40,12 @@ double contract_error(const EndResult& result, const ReferenceEndValues& referen
   return scale > 0 ? difference / scale : difference;
 }
 
-SolveOptions work_precision_options(const WorkPrecisionEngine& engine, bool naive, double tolerance) {
+SolveOptions work_precision_options(const WorkPrecisionEngine& engine, CollisionEnd end, double tolerance) {
   SolveOptions options;
   options.method = engine.method;
   options.smooth_ends = engine.smooth_ends;
   options.tolerance = tolerance;
-  options.ends = EndSet{naive ? CollisionEnd::naive : CollisionEnd::delayed_recovery};
+  options.ends = EndSet{end};
   return options;
 }
 
@@ -79,28 +80,40 @@ std::vector<double> work_precision_tolerances() {
   return t;
 }
 
-std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<ReferenceRow>& reference, int repeats,
-                                                     const std::vector<std::string>& engines) {
+std::vector<WorkPrecisionRow> measure_work_precision(
+    const std::vector<ReferenceRow>& reference, int repeats, const std::vector<std::string>& engines,
+    const std::function<void(std::size_t done, std::size_t total)>& progress) {
   const std::vector<WorkPrecisionEngine> all = work_precision_engines();
   for (const std::string& name : engines) {
     if (!is_work_precision_engine(name))
       throw InvalidInput(fmt::format("unknown engine '{}' (known: {})", name, work_precision_engine_names()));
   }
+  const auto measured = [&engines](const WorkPrecisionEngine& engine) {
+    return engines.empty() || std::find(engines.begin(), engines.end(), engine.name) != engines.end();
+  };
+  std::size_t groups = 0;  // (engine, end, tolerance) triples, the unit of progress
+  for (const WorkPrecisionEngine& engine : all) {
+    if (!measured(engine)) continue;
+    for (const double tolerance : work_precision_tolerances())
+      groups += tolerance < min_tolerance(engine.method) ? 0 : 2;
+  }
+  std::size_t done = 0;
   std::vector<WorkPrecisionRow> rows;
   CollisionSolver solver;
   std::vector<double> samples(static_cast<std::size_t>(std::max(repeats, 1)));
   for (const WorkPrecisionEngine& engine : all) {
-    if (!engines.empty() && std::find(engines.begin(), engines.end(), engine.name) == engines.end()) continue;
-    for (const bool naive : {false, true}) {
+    if (!measured(engine)) continue;
+    for (const CollisionEnd end : {CollisionEnd::delayed_recovery, CollisionEnd::naive}) {
       for (const double tolerance : work_precision_tolerances()) {
         if (tolerance < min_tolerance(engine.method)) continue;
+        if (progress) progress(done, groups);
+        ++done;
         for (const double zeta : work_precision_zetas()) {
           const ReferenceRow* row = reference_row_for(reference, zeta);
-          if (row == nullptr || !accepts(engine, naive, zeta)) continue;
-          const auto& ref =
-              naive ? row->ends[CollisionEnd::naive] : row->ends[CollisionEnd::delayed_recovery];
+          if (row == nullptr || !accepts(engine, end, zeta)) continue;
+          const auto& ref = row->ends[end];
           if (!ref) continue;
-          const SolveOptions options = work_precision_options(engine, naive, tolerance);
+          const SolveOptions options = work_precision_options(engine, end, tolerance);
           const ContactLaw law = ContactLaw::hertz_natural(zeta);
           CollisionResult result = solver.solve(law, options);
           for (double& sample : samples) {
@@ -110,15 +123,13 @@ std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<Reference
           }
           std::nth_element(samples.begin(), samples.begin() + static_cast<long>(samples.size() / 2),
                            samples.end());
-          const EndResult& end =
-              naive ? *result[CollisionEnd::naive] : *result[CollisionEnd::delayed_recovery];
-          rows.push_back({engine.name, naive ? "naive" : "delayed-recovery", tolerance, zeta,
-                          contract_error(end, *ref), samples[samples.size() / 2],
-                          result.stats.rhs_evaluations, result.stats.steps});
+          rows.push_back({engine.name, end_name(end), tolerance, zeta, contract_error(*result[end], *ref),
+                          samples[samples.size() / 2], result.stats.rhs_evaluations, result.stats.steps});
         }
       }
     }
   }
+  if (progress) progress(done, groups);
   return rows;
 }
 

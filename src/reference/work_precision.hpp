@@ -2,6 +2,7 @@
 // Error against run time: every engine (CVODE BDF and Adams with and without the smooth formulation at the
 // ends, the Taylor engine) on a fixed ζ set and tolerance ladder, both ends, measured against the reference
 // solutions (data/reference_solutions.csv).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,13 +39,15 @@ const ReferenceRow* reference_row_for(const std::vector<ReferenceRow>& reference
 // T·(1-ε); 1-ε carries the accuracy there); the absolute difference where min(ε*, 1-ε*) = 0 (ζ = 0).
 double contract_error(const EndResult& result, const ReferenceEndValues& reference);
 // The options of one work-precision point: one end only, so that its cost is measured alone.
-SolveOptions work_precision_options(const WorkPrecisionEngine& engine, bool naive, double tolerance);
+SolveOptions work_precision_options(const WorkPrecisionEngine& engine, CollisionEnd end, double tolerance);
 
 // Measures every (engine, end, tolerance, ζ) the engine accepts and the reference holds. Adams (a non-stiff
 // method) is measured for ζ <= 100 only. Each point is solved once to warm up, then `repeats` times.
 // `engines` names a subset of work_precision_engines() (empty: all); throws InvalidInput for an unknown name.
-std::vector<WorkPrecisionRow> measure_work_precision(const std::vector<ReferenceRow>& reference, int repeats,
-                                                     const std::vector<std::string>& engines = {});
+// `progress` (optional) is called with (done, total) after each (engine, end, tolerance) measured.
+std::vector<WorkPrecisionRow> measure_work_precision(
+    const std::vector<ReferenceRow>& reference, int repeats, const std::vector<std::string>& engines = {},
+    const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 
 // The rows of one (engine, end, tolerance) over the ζ set: the worst error, the mean and the worst of the
 // per-point median times.

@@ -14,13 +14,15 @@
 #include "restitution/series.hpp"
 #include "restitution/series_tables.hpp"
 #include "scene/scene_approximations.hpp"
+#include "series_study/series_named.hpp"
 
 namespace restitution::scene::detail {
 namespace {
 
 using series::Approximation;
 
-double evaluate(Approximation a, double zeta) {
+// `corrected`: the recomputed Padé 1999 coefficients, computed once per column.
+double evaluate(Approximation a, double zeta, const series::Pade1999& corrected) {
   namespace published = series::published;
   switch (a) {
     case Approximation::naive_series:
@@ -29,6 +31,8 @@ double evaluate(Approximation a, double zeta) {
       return series::delayed_recovery_series(zeta, published::kTable5H).eps;
     case Approximation::pade_1999:
       return series::pade_1999(zeta, series::pade_1999_published()).eps;
+    case Approximation::pade_1999_corrected:
+      return series::pade_1999(zeta, corrected).eps;
     case Approximation::simple_theory_1999:
       return series::simple_theory_1999(zeta).eps;
     case Approximation::pade_2011_1_4:
@@ -55,7 +59,9 @@ void add_approximations(const Sweep& sweep, const std::vector<double>& zeta, Swe
     column.label = info.label;
     column.source = info.source;
     column.end = info.end;
-    for (const double z : zeta) column.eps.push_back(evaluate(a, z));
+    const series::Pade1999 corrected =
+        a == Approximation::pade_1999_corrected ? series::pade_1999_corrected() : series::Pade1999{};
+    for (const double z : zeta) column.eps.push_back(evaluate(a, z, corrected));
     extras.approximations.push_back(std::move(column));
   }
 }

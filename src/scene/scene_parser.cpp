@@ -1,5 +1,6 @@
 // The scene file -> Scene values. Only this file (with toml_reader) knows TOML.
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "scene/scene_approximations.hpp"
 #include "scene/toml_ascii.hpp"
 #include "scene/toml_reader.hpp"
+#include "series_study/series_named.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -46,13 +48,9 @@ EndSet read_ends(TomlReader& r, EndSet fallback = EndSet::both()) {
 }
 
 series::Approximation approximation_from(const TomlReader& r, const std::string& name) {
-  std::string known;
-  for (const detail::ApproximationInfo& info : detail::kApproximations) {
-    if (name == info.name) return info.kind;
-    if (!known.empty()) known += ", ";
-    known += info.name;
-  }
-  r.fail("approximations", fmt::format("unknown approximation \"{}\" (known: {})", name, known));
+  if (const auto kind = series::approximation_named(name)) return *kind;
+  r.fail("approximations", fmt::format("unknown approximation \"{}\" (known: {})", name,
+                                       fmt::join(series::evaluation_kinds(), ", ")));
 }
 
 CollisionEnd read_end(TomlReader& r) {
@@ -61,6 +59,10 @@ CollisionEnd read_end(TomlReader& r) {
   if (w != "delayed-recovery")
     r.fail("end", fmt::format(R"(expected "naive" or "delayed-recovery", got "{}")", w));
   return CollisionEnd::delayed_recovery;
+}
+
+bool has_dissipation(const Material& m) {
+  return m.dissipative_constant_s.has_value() || m.viscosities.has_value();
 }
 
 Material read_material(TomlReader& r) {
@@ -95,7 +97,12 @@ Material read_material(TomlReader& r) {
   }
   r.finish();
   try {
-    (void)material_constants(m);
+    // Without dissipation the material can still be calibrated (which computes A): validate what is given.
+    if (has_dissipation(m)) {
+      (void)material_constants(m);
+    } else {
+      (void)elastic_constants(m);
+    }
   } catch (const InvalidInput& e) {
     r.fail("", e.what());
   }
@@ -201,6 +208,17 @@ class Parser {
     return name;
   }
 
+  // For the tasks that compute with the material's damping (not calibrations, which compute it).
+  void require_dissipation(const TomlReader& r, const std::optional<std::string>& name,
+                           std::string_view task) const {
+    if (name && !has_dissipation(scene_.materials.at(*name))) {
+      r.fail("material",
+             fmt::format("[materials.{}] has neither dissipative_constant nor viscosities, which {} needs "
+                         "(only a calibration can do without: it computes them)",
+                         *name, task));
+    }
+  }
+
   static void check_zeta(TomlReader& r, const std::vector<double>& zeta) {
     r.check_each(
         "zeta", zeta, [](double z) { return z >= 0.0 && z <= kLargestCheckedZeta; },
@@ -235,6 +253,7 @@ class Parser {
     const auto velocity = r.numbers("velocity");
     s.beta = r.number("beta");
     s.material = read_material_name(r);
+    require_dissipation(r, s.material, "a sweep");
     s.characteristic_velocity_m_s = r.number("characteristic_velocity");
     const int subjects = static_cast<int>(s.beta.has_value()) + static_cast<int>(s.material.has_value()) +
                          static_cast<int>(s.characteristic_velocity_m_s.has_value());
@@ -302,6 +321,7 @@ class Parser {
     t.velocity_m_s = r.number("velocity");
     t.beta = r.number("beta");
     t.material = read_material_name(r);
+    require_dissipation(r, t.material, "a trajectory");
     if (t.zeta) {
       if (t.velocity_m_s || t.beta || t.material)
         r.fail("zeta", "give zeta alone, or velocity with beta or material");
@@ -355,6 +375,7 @@ class Parser {
       r.fail("eps", fmt::format("expected a value in (0, 1), got {}", *d.eps));
     }
     if (d.eps && !d.velocity_m_s) r.fail("eps", "needs velocity, the impact speed it was measured at (m/s)");
+    if (!d.eps) require_dissipation(r, d.material, "a dem task without eps");
     if (d.velocity_m_s) check_positive(r, "velocity", {*d.velocity_m_s});
     d.end = read_end(r);
     const auto speeds = r.numbers("speeds");

@@ -81,10 +81,8 @@ SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& setting
     request.tolerance = scene.tolerance;
     request.method = scene.method;
     CalibrationOutcome outcome;
-    if (task.material) {
-      outcome.material = material_constants(scene.materials.at(*task.material));
-      request.k = outcome.material->hertz.k;
-    }
+    // Only the elastic part: the material's damping, if it has any, is what the calibration computes.
+    if (task.material) request.k = elastic_constants(scene.materials.at(*task.material)).k;
     outcome.calibration = calibrate(request, solver);
     out.collisions += static_cast<std::size_t>(outcome.calibration.solves);
     out.calibrations.push_back(outcome);

@@ -47,7 +47,6 @@ struct SweepExtras {
 
 struct CalibrationOutcome {
   Calibration calibration;
-  std::optional<MaterialConstants> material;
 };
 
 // A [[stability]] or [[work_precision]] study: summary lines for the report and, for work precision, the

@@ -55,6 +55,7 @@ double power_series(double zeta, std::span<const double> coefficients) {
 double implied_large_zeta_exponent(Approximation a) {
   switch (a) {
     case Approximation::pade_1999:  // (d1 w)/(d5 w⁴)
+    case Approximation::pade_1999_corrected:
       return -3.0;
     case Approximation::simple_theory_1999:  // ε^{1/5} -> w^{-1/3}
       return -5.0 / 3.0;

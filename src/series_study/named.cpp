@@ -1,8 +1,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <functional>
 #include <span>
+#include <utility>
 
 #include "restitution/errors.hpp"
 #include "restitution/series_tables.hpp"
@@ -30,6 +33,50 @@ std::vector<double> slice(const std::vector<double>& v, int first, int last) {
   return {v.begin() + first, v.begin() + last + 1};
 }
 
+constexpr std::pair<Approximation, const char*> kApproximationNames[] = {
+    {Approximation::naive_series, "naive-series"},
+    {Approximation::delayed_recovery_series, "delayed-recovery-series"},
+    {Approximation::pade_1999, "pade-1999"},
+    {Approximation::pade_1999_corrected, "pade-1999-corrected"},
+    {Approximation::simple_theory_1999, "simple-theory-1999"},
+    {Approximation::pade_2011_1_4, "pade-2011-1-4"},
+    {Approximation::pade_2011_3_6, "pade-2011-3-6"},
+};
+
+// A series name with its coefficients spelled in: KIND:published or KIND:computed-N (the names of the
+// series variants in `series validate`), or a plain name with the coefficients of the options.
+struct SeriesVariant {
+  std::string kind;
+  std::optional<int> terms;
+  bool published = false;
+};
+
+SeriesVariant series_variant(const std::string& name, std::optional<int> terms, bool published,
+                             std::string_view prefix) {
+  const std::size_t colon = name.find(':');
+  if (colon == std::string::npos) return {name, terms, published};
+  const std::string kind = name.substr(0, colon);
+  const std::string variant = name.substr(colon + 1);
+  if (terms || published) {
+    throw InvalidInput(
+        fmt::format("{0}kind {1} names its coefficients: give no {0}terms or {0}coefficients", prefix, name));
+  }
+  const std::optional<Approximation> a = approximation_named(kind);
+  const bool is_series =
+      a && (*a == Approximation::naive_series || *a == Approximation::delayed_recovery_series);
+  if (is_series && variant == "published") return {kind, std::nullopt, true};
+  constexpr std::string_view computed = "computed-";
+  if (is_series && variant.rfind(computed, 0) == 0) {
+    const std::string count = variant.substr(computed.size());
+    if (!count.empty() && count.size() < 4 && std::all_of(count.begin(), count.end(), ::isdigit)) {
+      return {kind, std::stoi(count), false};
+    }
+  }
+  throw InvalidInput(
+      fmt::format("{}kind '{}': only naive-series and delayed-recovery-series take :published or :computed-N",
+                  prefix, name));
+}
+
 }  // namespace
 
 const std::vector<std::string>& coefficient_kinds() {
@@ -37,9 +84,34 @@ const std::vector<std::string>& coefficient_kinds() {
   return kinds;
 }
 
+const char* approximation_name(Approximation kind) {
+  for (const auto& [k, name] : kApproximationNames) {
+    if (k == kind) return name;
+  }
+  return "unknown";
+}
+
+std::optional<Approximation> approximation_named(std::string_view name) {
+  if (name == "naive") return Approximation::naive_series;
+  if (name == "delayed-recovery") return Approximation::delayed_recovery_series;
+  for (const auto& [kind, spelled] : kApproximationNames) {
+    if (name == spelled) return kind;
+  }
+  return std::nullopt;
+}
+
+Pade1999 pade_1999_corrected() {
+  const Coefficients k = compute_coefficients(4);
+  const double c1 = -k.c[1];
+  return pade_1999_coefficients(0.6, -k.c[3] / std::pow(c1, 3), k.c[4] / std::pow(c1, 4));
+}
+
 const std::vector<std::string>& evaluation_kinds() {
-  static const std::vector<std::string> kinds = {
-      "naive", "delayed-recovery", "pade-1999", "simple-theory-1999", "pade-2011-1-4", "pade-2011-3-6"};
+  static const std::vector<std::string> kinds = [] {
+    std::vector<std::string> names;
+    for (const auto& entry : kApproximationNames) names.emplace_back(entry.second);
+    return names;
+  }();
   return kinds;
 }
 
@@ -57,14 +129,23 @@ std::vector<NamedCoefficients> coefficients_by_kind(const std::string& kind, int
 
 NamedEvaluation evaluate_by_kind(const std::string& kind, std::span<const double> zetas,
                                  std::optional<int> terms, bool published, std::string_view prefix) {
-  check_kind(kind, evaluation_kinds(), prefix);
+  const SeriesVariant variant = series_variant(kind, terms, published, prefix);
+  const std::optional<Approximation> named = approximation_named(variant.kind);
+  if (!named) {
+    throw InvalidInput(
+        fmt::format("{}kind must be one of {} (or the aliases naive, delayed-recovery), got '{}'", prefix,
+                    fmt::join(evaluation_kinds(), ", "), kind));
+  }
+  terms = variant.terms;
+  published = variant.published;
   std::function<Value(double)> evaluate;
   int used = 0;
-  if (kind == "naive" || kind == "delayed-recovery") {
-    const bool naive = kind == "naive";
+  const bool naive = *named == Approximation::naive_series;
+  if (naive || *named == Approximation::delayed_recovery_series) {
+    const std::string coefficient_kind = naive ? "naive" : "delayed-recovery";
     const int available =
         published ? static_cast<int>(naive ? published::kTable3C.size() : published::kTable5H.size() - 1)
-                  : max_count(kind);
+                  : max_count(coefficient_kind);
     used = terms.value_or(published ? available : (naive ? 40 : 60));
     if (used < 1 || used > available)
       throw InvalidInput(
@@ -75,7 +156,7 @@ NamedEvaluation evaluate_by_kind(const std::string& kind, std::span<const double
       coefficients = naive ? slice({published::kTable3C.begin(), published::kTable3C.end()}, 0, used - 1)
                            : slice({published::kTable5H.begin(), published::kTable5H.end()}, 0, used);
     } else {
-      const Coefficients k = compute_coefficients(order_for(kind, used));
+      const Coefficients k = compute_coefficients(order_for(coefficient_kind, used));
       coefficients = naive ? slice(k.c, 1, used) : slice(k.h, 0, used);
     }
     evaluate = [naive, c = std::move(coefficients)](double zeta) {
@@ -84,17 +165,28 @@ NamedEvaluation evaluate_by_kind(const std::string& kind, std::span<const double
   } else {
     if (terms) {
       throw InvalidInput(
-          fmt::format("{0}terms applies to {0}kind naive and delayed-recovery only, not {1}", prefix, kind));
+          fmt::format("{0}terms applies to {0}kind naive-series and delayed-recovery-series only, not {1}",
+                      prefix, kind));
     }
-    if (kind == "pade-1999") {
-      evaluate = [d = pade_1999_published()](double zeta) { return pade_1999(zeta, d); };
-    } else if (kind == "simple-theory-1999") {
-      evaluate = simple_theory_1999;
-    } else {
-      evaluate = kind == "pade-2011-1-4" ? pade_2011_1_4 : pade_2011_3_6;
+    switch (*named) {
+      case Approximation::pade_1999:
+        evaluate = [d = pade_1999_published()](double zeta) { return pade_1999(zeta, d); };
+        break;
+      case Approximation::pade_1999_corrected:
+        evaluate = [d = pade_1999_corrected()](double zeta) { return pade_1999(zeta, d); };
+        break;
+      case Approximation::simple_theory_1999:
+        evaluate = simple_theory_1999;
+        break;
+      case Approximation::pade_2011_1_4:
+        evaluate = pade_2011_1_4;
+        break;
+      default:
+        evaluate = pade_2011_3_6;
+        break;
     }
   }
-  NamedEvaluation result{{}, used};
+  NamedEvaluation result{{}, used, published};
   result.values.reserve(zetas.size());
   for (std::size_t i = 0; i < zetas.size(); ++i) {
     try {

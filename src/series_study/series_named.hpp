@@ -14,7 +14,19 @@ namespace restitution::series {
 
 // Coefficient kinds: naive (c_1..c_N), delayed-recovery (h_0..h_N), max-compression (a_1..a_N, b_0..b_N).
 const std::vector<std::string>& coefficient_kinds();
-// Evaluation kinds: naive, delayed-recovery, pade-1999, simple-theory-1999, pade-2011-1-4, pade-2011-3-6.
+// The approximations by name: one spelling each, the same in scene files, `series eval`, `series validate`
+// and Python: naive-series, delayed-recovery-series, pade-1999, pade-1999-corrected, simple-theory-1999,
+// pade-2011-1-4, pade-2011-3-6.
+const char* approximation_name(Approximation kind);
+// The approximation a name spells; also the two aliases "naive" and "delayed-recovery" of the series
+// (their spelling before the names were unified, kept so that existing scripts keep working).
+std::optional<Approximation> approximation_named(std::string_view name);
+// The 1999 paper's Padé [1/4] form (Table I) with a_3 = -c_3/C1³, a_4 = c_4/C1⁴ from the recomputed c_k
+// in place of the printed a_3, a_4 of Eq. (33).
+Pade1999 pade_1999_corrected();
+
+// Evaluation kinds: the approximation names above. evaluate_by_kind also takes the aliases and, for the two
+// series, the names `series validate` gives its variants: KIND:published and KIND:computed-N.
 const std::vector<std::string>& evaluation_kinds();
 
 // One list of coefficients: symbol ("c", "h", "a", "b"), the index of values[0], the values.
@@ -31,7 +43,8 @@ std::vector<NamedCoefficients> coefficients_by_kind(const std::string& kind, int
 
 struct NamedEvaluation {
   std::vector<Value> values;  // one per zeta
-  int terms = 0;  // series terms used (c_1..c_N or h_0..h_N); 0 for the closed-form approximations
+  int terms = 0;           // series terms used (c_1..c_N or h_0..h_N); 0 for the closed-form approximations
+  bool published = false;  // the series' coefficients were the published tables
 };
 // The series or approximation `kind` at every zeta >= 0 (natural units); the coefficients are computed once.
 // terms applies to the two series only (default: 40 naive, 60 delayed-recovery; all of a published table);

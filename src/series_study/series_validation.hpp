@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "restitution/collision_solver.hpp"
 #include "restitution/series.hpp"
 
 namespace restitution::series {
@@ -19,8 +20,9 @@ struct ValidationOptions {
 
 // One approximation as validated: its name, the end it describes, and how it was built.
 struct Candidate {
-  std::string name;         // e.g. "naive-table-III", "naive-40", "pade-1999", ...
-  bool delayed_recovery;    // compared with the delayed-recovery end, else with the naive end
+  std::string name;         // an approximation name (series_named.hpp), a series with its coefficients:
+                            // "naive-series:published", "naive-series:computed-40", "pade-1999", ...
+  CollisionEnd end;         // the end the solver is compared with
   std::string description;  // coefficients and source
 };
 
@@ -32,7 +34,7 @@ struct PointError {
 
 struct ValidationRow {
   double zeta = 0;
-  Value naive, delayed;            // solver
+  PerEnd<Value> solver;            // the solver's ε and 1-ε at each end
   std::vector<PointError> errors;  // one per candidate, same order as ValidationReport::candidates
 };
 

@@ -10,6 +10,7 @@
 #include "restitution/errors.hpp"
 #include "restitution/series_tables.hpp"
 #include "series_study/series_coefficients.hpp"
+#include "series_study/series_named.hpp"
 #include "series_study/series_validation.hpp"
 
 namespace restitution::series {
@@ -34,31 +35,32 @@ std::vector<Approximant> approximants(const ValidationOptions& o, const Coeffici
   c.resize(static_cast<std::size_t>(o.naive_order));
   std::vector<double> h = computed.h;
   h.resize(static_cast<std::size_t>(o.delayed_order) + 1);
-  // The 1999 Padé form with the recomputed a_3 = -c_3/C1³, a_4 = c_4/C1⁴ in place of the printed ones.
-  const double c1 = -computed.c[1];
-  const Pade1999 corrected =
-      pade_1999_coefficients(0.6, -computed.c[3] / std::pow(c1, 3), computed.c[4] / std::pow(c1, 4));
+  const Pade1999 corrected = pade_1999_corrected();
   const Pade1999 printed = pade_1999_published();
   return {
-      {{"naive-table-III", false, "naive series, c_1..c_10 of the 2008 paper's Table III"},
+      {{"naive-series:published", CollisionEnd::naive,
+        "naive series, c_1..c_10 of the 2008 paper's Table III"},
        [](double z) { return naive_series(z, published::kTable3C); }},
-      {{fmt::format("naive-{}", o.naive_order), false,
+      {{fmt::format("naive-series:computed-{}", o.naive_order), CollisionEnd::naive,
         fmt::format("naive series, recomputed c_1..c_{}", o.naive_order)},
        [c](double z) { return naive_series(z, c); }},
-      {{"delayed-recovery-table-V", true, "delayed-recovery series, h_0..h_20 of the 2008 paper's Table V"},
+      {{"delayed-recovery-series:published", CollisionEnd::delayed_recovery,
+        "delayed-recovery series, h_0..h_20 of the 2008 paper's Table V"},
        [](double z) { return delayed_recovery_series(z, published::kTable5H); }},
-      {{fmt::format("delayed-recovery-{}", o.delayed_order), true,
+      {{fmt::format("delayed-recovery-series:computed-{}", o.delayed_order), CollisionEnd::delayed_recovery,
         fmt::format("delayed-recovery series, recomputed h_0..h_{}", o.delayed_order)},
        [h](double z) { return delayed_recovery_series(z, h); }},
-      {{"pade-1999", false, "1999 Padé [1/4] in w = C1 zeta, d_k from Table I with a_3, a_4 of Eq. (33)"},
+      {{"pade-1999", CollisionEnd::naive,
+        "1999 Padé [1/4] in w = C1 zeta, d_k from Table I with a_3, a_4 of Eq. (33)"},
        [printed](double z) { return pade_1999(z, printed); }},
-      {{"pade-1999-corrected", false, "1999 Padé [1/4] form (Table I) with the recomputed a_3, a_4"},
+      {{"pade-1999-corrected", CollisionEnd::naive,
+        "1999 Padé [1/4] form (Table I) with the recomputed a_3, a_4"},
        [corrected](double z) { return pade_1999(z, corrected); }},
-      {{"simple-theory-1999", false, "1999 simple theory eps + w eps^{3/5} = 1 (Eq. 27)"},
+      {{"simple-theory-1999", CollisionEnd::naive, "1999 simple theory eps + w eps^{3/5} = 1 (Eq. 27)"},
        [](double z) { return simple_theory_1999(z); }},
-      {{"pade-2011-1-4", true, "Mueller & Poeschel 2011 Padé [1/4] in sqrt(zeta)"},
+      {{"pade-2011-1-4", CollisionEnd::delayed_recovery, "Mueller & Poeschel 2011 Padé [1/4] in sqrt(zeta)"},
        [](double z) { return pade_2011_1_4(z); }},
-      {{"pade-2011-3-6", true, "Mueller & Poeschel 2011 Padé [3/6] in sqrt(zeta)"},
+      {{"pade-2011-3-6", CollisionEnd::delayed_recovery, "Mueller & Poeschel 2011 Padé [3/6] in sqrt(zeta)"},
        [](double z) { return pade_2011_3_6(z); }},
   };
 }
@@ -91,11 +93,7 @@ double local_slope(double step, double eps_at_zeta, double eps_at_step) {
 }
 
 Approximation closed_form_kind(const std::string& name) {
-  if (name.rfind("pade-1999", 0) == 0) return Approximation::pade_1999;
-  if (name == "simple-theory-1999") return Approximation::simple_theory_1999;
-  if (name == "pade-2011-1-4") return Approximation::pade_2011_1_4;
-  if (name == "pade-2011-3-6") return Approximation::pade_2011_3_6;
-  return name.rfind("naive", 0) == 0 ? Approximation::naive_series : Approximation::delayed_recovery_series;
+  return *approximation_named(name.substr(0, name.find(':')));  // every candidate is named so
 }
 
 // Least-squares line y = intercept + slope x.
@@ -167,10 +165,10 @@ ValidationReport validate(const ValidationOptions& options) {
   auto reference = [&](double zeta) { return solver.solve(ContactLaw::hertz_natural(zeta), solve); };
   for (const double zeta : log_grid(options)) {
     const CollisionResult r = reference(zeta);
-    ValidationRow row{
-        zeta, to_value(*r[CollisionEnd::naive]), to_value(*r[CollisionEnd::delayed_recovery]), {}};
+    ValidationRow row{zeta, {}, {}};
+    for (const CollisionEnd end : kCollisionEnds) row.solver[end] = to_value(*r[end]);
     for (const Approximant& a : approx)
-      row.errors.push_back(compare(a.evaluate(zeta), a.candidate.delayed_recovery ? row.delayed : row.naive));
+      row.errors.push_back(compare(a.evaluate(zeta), row.solver[a.candidate.end]));
     report.rows.push_back(std::move(row));
   }
 
@@ -187,9 +185,8 @@ ValidationReport validate(const ValidationOptions& options) {
       }
       s.crossings.push_back(c);
     }
-    const bool delayed = approx[i].candidate.delayed_recovery;
-    const EndResult& e0 = delayed ? *at[CollisionEnd::delayed_recovery] : *at[CollisionEnd::naive];
-    const EndResult& e1 = delayed ? *after[CollisionEnd::delayed_recovery] : *after[CollisionEnd::naive];
+    const EndResult& e0 = *at[approx[i].candidate.end];
+    const EndResult& e1 = *after[approx[i].candidate.end];
     s.large_zeta.solver_slope = local_slope(kLargeZetaStep, e0.eps, e1.eps);
     s.large_zeta.approximation_slope = local_slope(kLargeZetaStep, approx[i].evaluate(kLargeZeta).eps,
                                                    approx[i].evaluate(kLargeZeta * kLargeZetaStep).eps);

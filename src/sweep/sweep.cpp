@@ -12,8 +12,9 @@ namespace {
 
 class SweepRun {
  public:
-  SweepRun(const std::vector<double>& zetas, const SolveOptions& options, const SweepControl& control)
-      : zetas_(zetas), options_(options), control_(control) {}
+  SweepRun(const std::vector<double>& zetas, const SolveOptions& options, const SweepControl& control,
+           std::size_t skipped)
+      : zetas_(zetas), options_(options), control_(control), skipped_(skipped) {}
 
   SweepSummary run(unsigned threads) {
     detail::ParallelRun run{zetas_.size(), threads, control_.stop_requested};
@@ -50,12 +51,14 @@ class SweepRun {
     ++summary_.computed;
     if (!point.result) ++summary_.failed;
     if (control_.point_finished) control_.point_finished(point);
+    if (control_.progress) control_.progress(skipped_ + summary_.computed, zetas_.size());
   }
 
   const std::vector<double>& zetas_;
   const SolveOptions& options_;
   const SweepControl& control_;
-  std::mutex mutex_;  // guards summary_ and the callback
+  std::size_t skipped_;  // points finished before this run, counted in the progress
+  std::mutex mutex_;     // guards summary_ and the callback
   SweepSummary summary_;
 };
 
@@ -79,7 +82,7 @@ SweepSummary run_sweep(const std::vector<double>& zetas, const SolveOptions& opt
       static_cast<std::size_t>(std::count(control.already_done.begin(), control.already_done.end(), true));
   const std::size_t remaining = zetas.size() - skipped;
   SweepSummary summary =
-      SweepRun(zetas, options, control).run(detail::thread_count(control.threads, remaining));
+      SweepRun(zetas, options, control, skipped).run(detail::thread_count(control.threads, remaining));
   summary.skipped = skipped;
   summary.stopped = summary.stopped && summary.computed + skipped < zetas.size();
   return summary;

@@ -15,16 +15,18 @@
 namespace restitution {
 
 // ζ_i for i = 0 … points-1 from zeta_min to zeta_max (both included exactly), equally spaced in ζ or,
-// with logarithmic spacing, in ln ζ.
+// with logarithmic spacing, in ln ζ. The same grid serves other variables (impact speeds): `variable`
+// names the bounds in messages ("zeta" -> zeta-min, zeta-max).
 struct ZetaGrid {
   double zeta_min = 0.0;
   double zeta_max = 1.0;
   std::size_t points = 2;
   bool logarithmic = false;
+  const char* variable = "zeta";
 };
 inline constexpr std::size_t kMaxSweepPoints = 10'000'000;
 
-// Throws InvalidInput naming zeta-min, zeta-max or points: non-finite or negative bounds, min > max,
+// Throws InvalidInput naming VARIABLE-min, VARIABLE-max or points: non-finite or negative bounds, min > max,
 // logarithmic spacing with zeta-min = 0, points outside [1, kMaxSweepPoints], one point with min != max.
 std::vector<double> zeta_values(const ZetaGrid& grid);
 
@@ -43,6 +45,9 @@ struct SweepControl {
   // Called once per finished point, never concurrently (the sweep serializes the calls), in completion
   // order, which may differ from grid order. An exception thrown here stops the sweep and is rethrown.
   std::function<void(const SweepPoint&)> point_finished;
+  // Called after each finished point with (points finished, points in the sweep), already finished ones
+  // counted: never concurrently, `done` increasing by one per call up to the total.
+  std::function<void(std::size_t done, std::size_t total)> progress;
   // Indices of points already finished (by an interrupted run): they are not computed again.
   std::vector<bool> already_done;
 };

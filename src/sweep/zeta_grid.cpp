@@ -9,29 +9,30 @@
 namespace restitution {
 namespace {
 
-void require_bound(double value, const char* name) {
+void require_bound(double value, const char* variable, const char* bound) {
   if (!std::isfinite(value) || value < 0.0) {
-    throw InvalidInput(fmt::format("{} must be a finite number >= 0, got {}", name, value));
+    throw InvalidInput(fmt::format("{}-{} must be a finite number >= 0, got {}", variable, bound, value));
   }
 }
 
 }  // namespace
 
 std::vector<double> zeta_values(const ZetaGrid& grid) {
-  require_bound(grid.zeta_min, "zeta-min");
-  require_bound(grid.zeta_max, "zeta-max");
+  const char* v = grid.variable;
+  require_bound(grid.zeta_min, v, "min");
+  require_bound(grid.zeta_max, v, "max");
   if (grid.zeta_min > grid.zeta_max) {
     throw InvalidInput(
-        fmt::format("zeta-min ({}) must not exceed zeta-max ({})", grid.zeta_min, grid.zeta_max));
+        fmt::format("{0}-min ({1}) must not exceed {0}-max ({2})", v, grid.zeta_min, grid.zeta_max));
   }
   if (grid.points < 1 || grid.points > kMaxSweepPoints) {
     throw InvalidInput(fmt::format("points must lie in [1, {}], got {}", kMaxSweepPoints, grid.points));
   }
   if (grid.points == 1 && grid.zeta_min != grid.zeta_max) {
-    throw InvalidInput("points = 1 needs zeta-min = zeta-max (one point cannot span a range)");
+    throw InvalidInput(fmt::format("points = 1 needs {0}-min = {0}-max (one point cannot span a range)", v));
   }
   if (grid.logarithmic && grid.zeta_min == 0.0) {
-    throw InvalidInput("logarithmic spacing needs zeta-min > 0");
+    throw InvalidInput(fmt::format("logarithmic spacing needs {}-min > 0", v));
   }
   std::vector<double> zetas(grid.points);
   const auto last = static_cast<double>(grid.points - 1);

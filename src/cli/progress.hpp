@@ -1,0 +1,37 @@
+#pragma once
+// The progress line every long command draws on stderr: "\r  what: done/total (percent)", redrawn at most
+// ten times a second and once at the end. Only on a terminal: when stderr is a file or a pipe (tests,
+// scripts) nothing is written. The library reports progress through callbacks; this draws them.
+#include <chrono>
+#include <cstddef>
+#include <cstdio>
+#include <functional>
+#include <string>
+
+namespace restitution::cli {
+
+class ProgressLine {
+ public:
+  // Draws on stderr when it is a terminal.
+  explicit ProgressLine(std::string what);
+  // Draws on `stream` when `enabled` (tests).
+  ProgressLine(std::string what, std::FILE* stream, bool enabled);
+  ~ProgressLine();  // ends an unfinished line so that what follows starts on its own line
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+
+  void update(std::size_t done, std::size_t total);
+  // update() as a callback for the library (the line must outlive it).
+  [[nodiscard]] std::function<void(std::size_t, std::size_t)> callback();
+  [[nodiscard]] bool enabled() const { return enabled_; }
+
+ private:
+  std::string what_;
+  std::FILE* stream_;
+  bool enabled_;
+  bool open_ = false;      // a line is drawn and not yet ended by a newline
+  bool finished_ = false;  // the line reached its total and was ended
+  std::chrono::steady_clock::time_point last_draw_{};
+};
+
+}  // namespace restitution::cli

@@ -1,0 +1,95 @@
+#include "cli/sweep_grid.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <utility>
+
+#include "restitution/contact_law.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/material.hpp"
+#include "restitution/units.hpp"
+#include "sweep/sweep.hpp"
+
+namespace restitution::cli {
+namespace {
+
+bool velocity_form(const SweepOptions& o) {
+  return o.velocity_min || o.velocity_max || o.beta || o.dissipative_constant || o.material.any();
+}
+
+// β (and k for a material) of the ε(v) forms; throws InvalidInput naming what is missing or mixed.
+VelocityAxis velocity_subject(const SweepOptions& o) {
+  if (o.zeta_min || o.zeta_max) {
+    throw InvalidInput(
+        "give --zeta-min/--zeta-max, or --velocity-min/--velocity-max with --beta or a material, not both");
+  }
+  if (!o.velocity_min || !o.velocity_max) {
+    throw InvalidInput(
+        fmt::format("an impact-speed sweep needs --velocity-min and --velocity-max (m/s): --{} is required",
+                    o.velocity_min ? "velocity-max" : "velocity-min"));
+  }
+  const bool material = o.material.any() || o.dissipative_constant;
+  if (o.beta.has_value() == material) {
+    throw InvalidInput(
+        "--velocity-min/--velocity-max need exactly one of --beta and a material (--young-modulus, "
+        "--poisson-ratio, --radius, --density or --mass, --dissipative-constant)");
+  }
+  VelocityAxis axis;
+  if (o.beta) {
+    if (!std::isfinite(*o.beta) || *o.beta < 0.0) {
+      throw InvalidInput(
+          fmt::format("--beta must be a finite number >= 0 (s^(1/5) m^(-1/5)), got {}", *o.beta));
+    }
+    axis.beta = *o.beta;
+    return axis;
+  }
+  Material m = material_from(o.material);
+  if (!o.dissipative_constant) {
+    throw InvalidInput(
+        "a material sweep needs --dissipative-constant (A in s; `restitution calibrate` computes it from a "
+        "measured eps)");
+  }
+  m.dissipative_constant_s = *o.dissipative_constant;
+  const MaterialConstants c = material_constants(m);
+  axis.beta = c.hertz.beta;
+  axis.k = c.hertz.k;
+  return axis;
+}
+
+}  // namespace
+
+SweepGrid sweep_grid(const SweepOptions& o) {
+  // Signed on the command line so that a negative count is reported as such, not wrapped around.
+  if (o.points < 1) throw InvalidInput(fmt::format("--points must be >= 1, got {}", o.points));
+  const auto points = static_cast<std::size_t>(o.points);
+  SweepGrid grid;
+  if (!velocity_form(o)) {
+    if (!o.zeta_min && !o.zeta_max) {
+      throw InvalidInput(
+          "give --zeta-min and --zeta-max, or --velocity-min/--velocity-max with --beta or a material");
+    }
+    if (!o.zeta_min || !o.zeta_max) {
+      throw InvalidInput(fmt::format("--{} is required with --{}", o.zeta_min ? "zeta-max" : "zeta-min",
+                                     o.zeta_min ? "zeta-min" : "zeta-max"));
+    }
+    grid.zetas = zeta_values({*o.zeta_min, *o.zeta_max, points, o.log});
+    return grid;
+  }
+  VelocityAxis axis = velocity_subject(o);
+  axis.velocity_m_s = zeta_values({*o.velocity_min, *o.velocity_max, points, o.log, "velocity"});
+  for (const double v : axis.velocity_m_s) {
+    const double zeta = zeta_from(axis.beta, v);
+    if (zeta > kLargestCheckedZeta) {
+      throw InvalidInput(
+          fmt::format("velocity {} m/s with beta {} gives zeta = {:g}, outside the checked "
+                      "range 0 <= zeta <= {:g}",
+                      v, axis.beta, zeta, kLargestCheckedZeta));
+    }
+    grid.zetas.push_back(zeta);
+  }
+  grid.velocity = std::move(axis);
+  return grid;
+}
+
+}  // namespace restitution::cli
