@@ -8,6 +8,7 @@
 
 #include "cli/json_writer.hpp"
 #include "cli/output_files.hpp"
+#include "cli/scene_damping.hpp"
 #include "cli/scene_dem.hpp"
 #include "cli/scene_tables.hpp"
 #include "cli/stop_signals.hpp"
@@ -99,12 +100,16 @@ class SceneWriter {
     for (std::size_t i = 0; i < scene_.dashpots.size(); ++i)
       order.emplace_back(scene_.dashpots[i].line, 2, i);
     for (std::size_t i = 0; i < scene_.dems.size(); ++i) order.emplace_back(scene_.dems[i].line, 3, i);
+    for (std::size_t i = 0; i < scene_.damping_checks.size(); ++i) {
+      order.emplace_back(scene_.damping_checks[i].line, 4, i);
+    }
     std::sort(order.begin(), order.end());
     for (const auto& [line, kind, i] : order) {
       if (kind == 0) sweep(i);
       if (kind == 1) trajectory(i);
       if (kind == 2) dashpot(i);
       if (kind == 3) dem(i);
+      if (kind == 4) damping_check(i);
     }
     calibrations();
     studies();
@@ -358,6 +363,18 @@ class SceneWriter {
     report_ += plot("scene_xy", task.name, section.plot_args);
     report_ += section.markdown;
     for (auto& w : section.warnings) out_.warnings.push_back(fmt::format("{}: {}", task.name, w));
+  }
+
+  void damping_check(std::size_t i) {
+    const scene::DampingCheckTask& task = scene_.damping_checks[i];
+    const DampingSection section = damping_section(scene_, task);
+    report_ += fmt::format("## {}\n\n", task.title);
+    for (const DampingPlot& p : section.plots) {
+      write_file(p.name + ".csv", p.csv);
+      report_ += plot(p.script, p.name, p.args);
+      report_ += p.caption;
+    }
+    report_ += section.findings;
   }
 
   void calibrations() {

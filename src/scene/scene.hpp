@@ -120,6 +120,18 @@ struct DemTask {
   int line = 0;
 };
 
+// The damping recipes of DEM codes (docs/damping.md): the ε each recipe really gives against the requested
+// one, clamp on and off, and the relative error over requested ε × impact speed for the speed-dependent ones.
+struct DampingCheckTask {
+  std::string name;
+  std::string title;
+  std::vector<std::string> recipes;  // recipe names (damping_check/recipes.hpp); default: every recipe
+  std::vector<double> eps;           // requested ε in (0, 1); default 0.05, 0.10, ..., 0.95, 0.99
+  double velocity_m_s = 1.0;         // reference speed of the speed-dependent recipes [m/s]
+  std::vector<double> speeds;        // impact speeds of the error maps [m/s]; default 0.1 to 10, 9 points
+  int line = 0;
+};
+
 struct Scene {
   std::string file_name;
   std::string title;
@@ -134,6 +146,7 @@ struct Scene {
   std::vector<DashpotCheck> dashpots;
   std::vector<ExternalStudy> studies;
   std::vector<DemTask> dems;
+  std::vector<DampingCheckTask> damping_checks;
 };
 
 // Parses and validates a scene. file_name is used in messages only. Throws InvalidInput.

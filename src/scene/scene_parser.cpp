@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "damping_check/check.hpp"
 #include "dem/deck.hpp"
 #include "reference/work_precision.hpp"
 #include "restitution/errors.hpp"
@@ -143,6 +144,7 @@ class Parser {
     each("calibration", [this](TomlReader& r) { scene_.calibrations.push_back(read_calibration(r)); });
     each("dashpot", [this](TomlReader& r) { scene_.dashpots.push_back(read_dashpot(r)); });
     each("dem", [this](TomlReader& r) { scene_.dems.push_back(read_dem(r)); });
+    each("damping_check", [this](TomlReader& r) { scene_.damping_checks.push_back(read_damping_check(r)); });
     for (const char* kind : {"work_precision", "stability"}) {
       each(kind, [this, kind](TomlReader& r) { scene_.studies.push_back(read_study(r, kind)); });
     }
@@ -173,6 +175,12 @@ class Parser {
     // Two tasks must not write the same file: a work-precision study also writes NAME_summary.csv.
     std::vector<std::string> stems = {name};
     if (std::string_view(kind) == "work_precision") stems.push_back(name + "_summary");
+    // A damping check may write an error map NAME_<recipe>_error.csv per recipe.
+    if (std::string_view(kind) == "damping_check") {
+      for (damping_check::Recipe recipe : damping_check::kRecipes) {
+        stems.push_back(fmt::format("{}_{}_error", name, damping_check::recipe_name(recipe)));
+      }
+    }
     for (const std::string& stem : stems) {
       const auto [at, inserted] = stems_.emplace(stem, fmt::format("{} \"{}\"", kind, name));
       if (!inserted) {
@@ -384,6 +392,37 @@ class Parser {
     return d;
   }
 
+  DampingCheckTask read_damping_check(TomlReader& r) {
+    DampingCheckTask d;
+    d.line = r.line();
+    d.name = read_name(r, "damping_check");
+    d.title = r.text("title").value_or(d.name);
+    if (const auto recipes = r.words("recipes")) {
+      if (recipes->empty()) r.fail("recipes", "empty: leave the key out for every recipe");
+      for (const std::string& name : *recipes) {
+        try {
+          (void)damping_check::recipe_from_name(name);
+        } catch (const InvalidInput& e) {
+          r.fail("recipes", e.what());
+        }
+      }
+      d.recipes = *recipes;
+    } else {
+      for (damping_check::Recipe recipe : damping_check::kRecipes)
+        d.recipes.emplace_back(recipe_name(recipe));
+    }
+    d.eps = r.numbers("eps").value_or(damping_check::map_eps_grid());
+    if (d.eps.empty()) r.fail("eps", "empty: leave the key out for 0.05 to 0.99");
+    r.check_each(
+        "eps", d.eps, [](double e) { return e > 0.0 && e < 1.0; }, "a value in (0, 1)");
+    d.velocity_m_s = r.number("velocity").value_or(1.0);
+    check_positive(r, "velocity", {d.velocity_m_s});
+    d.speeds = r.numbers("speeds").value_or(damping_check::speed_grid(0.1, 10.0, 9));
+    if (d.speeds.empty()) r.fail("speeds", "empty: leave the key out for 0.1 to 10 m/s");
+    check_positive(r, "speeds", d.speeds);
+    return d;
+  }
+
   DashpotCheck read_dashpot(TomlReader& r) {
     DashpotCheck d;
     read_heading(r, "dashpot", d);
@@ -473,6 +512,10 @@ void make_quick(Scene& scene, std::size_t points) {
   }
   for (DashpotCheck& d : scene.dashpots) thin(d.damping_ratio);
   for (DemTask& d : scene.dems) thin(d.speeds);
+  for (DampingCheckTask& d : scene.damping_checks) {
+    thin(d.eps);
+    thin(d.speeds);
+  }
   for (ExternalStudy& s : scene.studies) {
     thin(s.zeta);
     s.repeats = 1;

@@ -1,0 +1,91 @@
+#include "damping_check/check.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <string>
+
+#include "restitution/errors.hpp"
+
+namespace restitution::damping_check {
+
+const char* clamp_name(Clamp clamp) {
+  return clamp == Clamp::on ? "on" : "off";
+}
+
+CollisionEnd end_for(Clamp clamp) {
+  return clamp == Clamp::on ? CollisionEnd::delayed_recovery : CollisionEnd::naive;
+}
+
+std::vector<Clamp> clamps_from_name(const std::string& name) {
+  if (name == "on") return {Clamp::on};
+  if (name == "off") return {Clamp::off};
+  if (name == "both") return {Clamp::on, Clamp::off};
+  throw InvalidInput(fmt::format("clamp must be on, off or both, got '{}'", name));
+}
+
+std::vector<double> speed_grid(double v_min_m_s, double v_max_m_s, int points) {
+  if (!std::isfinite(v_min_m_s) || v_min_m_s <= 0.0) {
+    throw InvalidInput(fmt::format("--velocity-min must be finite and > 0 m/s, got {}", v_min_m_s));
+  }
+  if (!std::isfinite(v_max_m_s) || v_max_m_s < v_min_m_s) {
+    throw InvalidInput(fmt::format("--velocity-max must be finite and >= --velocity-min ({}), got {}",
+                                   v_min_m_s, v_max_m_s));
+  }
+  if (points < 1 || points > 1000)
+    throw InvalidInput(fmt::format("--points must be in [1, 1000], got {}", points));
+  std::vector<double> speeds{v_min_m_s};
+  for (int i = 1; i < points; ++i) {
+    speeds.push_back(v_min_m_s * std::pow(v_max_m_s / v_min_m_s, static_cast<double>(i) / (points - 1)));
+  }
+  return speeds;
+}
+
+std::vector<double> map_eps_grid() {
+  std::vector<double> grid;
+  for (int i = 1; i <= 19; ++i) grid.push_back(0.05 * i);
+  grid.push_back(0.99);
+  return grid;
+}
+
+CheckResult check_recipe(const CheckRequest& request, CollisionSolver& solver) {
+  if (request.clamps.empty()) throw InvalidInput("no clamp to check: give on, off or both");
+  const auto positive = [](double v, const char* what) {
+    if (!std::isfinite(v) || v <= 0.0)
+      throw InvalidInput(fmt::format("{} must be finite and > 0, got {}", what, v));
+  };
+  positive(request.reference_velocity_m_s, "reference velocity (m/s)");
+  for (double v : request.speeds_m_s) positive(v, "impact speed (m/s)");
+  SolveOptions options;
+  options.tolerance = request.tolerance;
+  check_solve_options(options);
+
+  CheckResult result;
+  result.setting = recipe_setting(request.recipe, request.eps_requested, request.tolerance, solver);
+  std::vector<std::optional<double>> speeds;
+  if (result.setting.speed_independent()) {
+    speeds.emplace_back();
+  } else {
+    if (request.speeds_m_s.empty())
+      throw InvalidInput("no impact speed to check this speed-dependent recipe at");
+    speeds.assign(request.speeds_m_s.begin(), request.speeds_m_s.end());
+  }
+  for (Clamp clamp : request.clamps) {
+    options.ends = EndSet{end_for(clamp)};
+    for (const auto& v : speeds) {
+      CheckPoint p;
+      p.clamp = clamp;
+      p.velocity_m_s = v;
+      p.zeta = v ? result.setting.zeta_at(*v, request.reference_velocity_m_s) : result.setting.zeta_reference;
+      require_checked_zeta(p.zeta);
+      const ContactLaw law = ContactLaw::natural(result.setting.law, p.zeta);
+      if (clamp == Clamp::on || law.naive_end_may_exist()) {
+        p.actual_eps = end_of(solver.solve(law, options), end_for(clamp)).eps;
+      }
+      result.points.push_back(p);
+    }
+  }
+  return result;
+}
+
+}  // namespace restitution::damping_check
