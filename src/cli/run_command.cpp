@@ -63,7 +63,10 @@ int run_scene_file(const RunOptions& o) {
   const StopSignals signals;
   const WrittenOutputs written = write_scene_outputs(s, results, folder, seconds);
   for (const auto& w : written.warnings) std::fprintf(stderr, "restitution: warning: %s\n", w.c_str());
-  fmt::print("scene {}: {} collisions in {:.2f} s{}\n", path.string(), results.collisions, seconds,
+  // [[dem]] and [[damping_check]] sections solve their collisions while their outputs are written.
+  const bool own_solves = !s.dems.empty() || !s.damping_checks.empty();
+  fmt::print("scene {}: {} planned collisions in {:.2f} s{}{}\n", path.string(), results.collisions, seconds,
+             own_solves ? " (dem and damping_check sections solve their own, not counted)" : "",
              o.quick ? " (quick settings)" : "");
   fmt::print("wrote {}/: ", folder.string());
   for (std::size_t i = 0; i < written.files.size(); ++i)

@@ -441,9 +441,12 @@ class SceneWriter {
         "its "
         "solve) plus {} for calibrations, in {:.2f} s; tolerance {} on ε relative to min(ε, 1 - ε), method "
         "{}; "
-        "{} steps, {} right-hand-side evaluations in total. {}\n",
+        "{} steps, {} right-hand-side evaluations in total{}. {}\n",
         scene_.file_name, results_.plan.jobs.size(), results_.collisions - results_.plan.jobs.size(), seconds,
         g(scene_.tolerance), method_name(scene_.method), s.steps, s.rhs_evaluations,
+        scene_.dems.empty() && scene_.damping_checks.empty()
+            ? ""
+            : " (the [[dem]] and [[damping_check]] sections solve their own collisions, not counted here)",
         scene_.description.empty() ? "" : "\n\n" + scene_.description + "\n");
     json_.field("collisions", static_cast<long>(results_.collisions));
     json_.field("distinct_collisions", static_cast<long>(results_.plan.jobs.size()));
