@@ -229,6 +229,12 @@ class Parser {
         key, values, [](double v) { return v > 0.0; }, "a value > 0");
   }
 
+  // A coefficient of restitution: strictly between 0 and 1.
+  static void check_eps(TomlReader& r, const char* key, const std::vector<double>& values) {
+    r.check_each(
+        key, values, [](double e) { return e > 0.0 && e < 1.0; }, "a value in (0, 1)");
+  }
+
   Sweep read_sweep(TomlReader& r) {
     Sweep s;
     read_heading(r, "sweep", s);
@@ -344,7 +350,7 @@ class Parser {
     const auto velocity = r.number("velocity");
     if (!eps) r.fail("eps", "missing");
     if (!velocity) r.fail("velocity", "missing (m/s)");
-    if (*eps <= 0.0 || *eps >= 1.0) r.fail("eps", fmt::format("expected a value in (0, 1), got {}", *eps));
+    check_eps(r, "eps", {*eps});
     check_positive(r, "velocity", {*velocity});
     c.eps = *eps;
     c.velocity_m_s = *velocity;
@@ -371,9 +377,7 @@ class Parser {
     d.material = *material;
     d.eps = r.number("eps");
     d.velocity_m_s = r.number("velocity");
-    if (d.eps && (*d.eps <= 0.0 || *d.eps >= 1.0)) {
-      r.fail("eps", fmt::format("expected a value in (0, 1), got {}", *d.eps));
-    }
+    if (d.eps) check_eps(r, "eps", {*d.eps});
     if (d.eps && !d.velocity_m_s) r.fail("eps", "needs velocity, the impact speed it was measured at (m/s)");
     if (!d.eps) require_dissipation(r, d.material, "a dem task without eps");
     if (d.velocity_m_s) check_positive(r, "velocity", {*d.velocity_m_s});
@@ -413,8 +417,7 @@ class Parser {
     }
     d.eps = r.numbers("eps").value_or(damping_check::map_eps_grid());
     if (d.eps.empty()) r.fail("eps", "empty: leave the key out for 0.05 to 0.99");
-    r.check_each(
-        "eps", d.eps, [](double e) { return e > 0.0 && e < 1.0; }, "a value in (0, 1)");
+    check_eps(r, "eps", d.eps);
     d.velocity_m_s = r.number("velocity").value_or(1.0);
     check_positive(r, "velocity", {d.velocity_m_s});
     d.speeds = r.numbers("speeds").value_or(damping_check::speed_grid(0.1, 10.0, 9));
