@@ -6,6 +6,7 @@
 #include <string>
 
 #include "restitution/errors.hpp"
+#include "sweep/sweep.hpp"
 
 namespace restitution::damping_check {
 
@@ -34,11 +35,12 @@ std::vector<double> speed_grid(double v_min_m_s, double v_max_m_s, int points) {
   }
   if (points < 1 || points > 1000)
     throw InvalidInput(fmt::format("--points must be in [1, 1000], got {}", points));
-  std::vector<double> speeds{v_min_m_s};
-  for (int i = 1; i < points; ++i) {
-    speeds.push_back(v_min_m_s * std::pow(v_max_m_s / v_min_m_s, static_cast<double>(i) / (points - 1)));
-  }
-  return speeds;
+  // The sweep's grid: log-spaced with both ends exactly the speeds given.
+  return zeta_values({.zeta_min = v_min_m_s,
+                      .zeta_max = points == 1 ? v_min_m_s : v_max_m_s,
+                      .points = static_cast<std::size_t>(points),
+                      .logarithmic = true,
+                      .variable = "velocity"});
 }
 
 std::vector<double> map_eps_grid() {
