@@ -20,67 +20,12 @@ enum class Method { bdf, adams, automatic, taylor };
 const char* method_name(Method method);            // "bdf" | "adams" | "auto" | "taylor"
 Method method_from_name(const std::string& name);  // the inverse; throws InvalidInput naming the value
 
-// One end of the collision, for callers that ask for a single end. naive: the overlap returns to x = 0
-// ("clamp off"); delayed_recovery: the total force first reaches 0, c_d x' + c_s x^{a-b} = 0, where a DEM
-// code that zeroes an attractive force separates the spheres ("clamp on"; docs/contact_laws.md).
-enum class CollisionEnd { naive, delayed_recovery };
+// The ends of the collision (CollisionEnd, EndSet, PerEnd) are defined in contact_law.hpp, next to the law
+// that decides where they lie. Their names in text:
 const char* end_name(CollisionEnd end);               // "naive" | "delayed-recovery"
 CollisionEnd end_from_name(const std::string& name);  // throws InvalidInput naming the value
 // The end as an identifier, for JSON keys and CSV column prefixes: "naive" | "delayed_recovery".
 const char* end_key(CollisionEnd end);
-
-// Both ends, in the order a collision reaches them last (for loops over the ends).
-inline constexpr std::array<CollisionEnd, 2> kCollisionEnds{CollisionEnd::naive,
-                                                            CollisionEnd::delayed_recovery};
-
-// A set of collision ends: which ends a solve computes. Built from CollisionEnd values, e.g.
-// EndSet{CollisionEnd::naive}; an EndSet{} is empty.
-class EndSet {
- public:
-  constexpr EndSet() = default;
-  constexpr EndSet(std::initializer_list<CollisionEnd> ends) {
-    for (const CollisionEnd end : ends) insert(end);
-  }
-  [[nodiscard]] static constexpr EndSet both() {
-    return {CollisionEnd::naive, CollisionEnd::delayed_recovery};
-  }
-
-  [[nodiscard]] constexpr bool contains(CollisionEnd end) const { return (bits_ & bit(end)) != 0U; }
-  [[nodiscard]] constexpr bool empty() const { return bits_ == 0U; }
-  constexpr void insert(CollisionEnd end) { bits_ |= bit(end); }
-  constexpr void erase(CollisionEnd end) { bits_ &= ~bit(end); }
-  // The union of two sets.
-  [[nodiscard]] constexpr EndSet operator|(EndSet other) const {
-    EndSet out;
-    out.bits_ = bits_ | other.bits_;
-    return out;
-  }
-  constexpr bool operator==(const EndSet& other) const = default;
-  // The members in the order of kCollisionEnds (for loops over the requested ends).
-  [[nodiscard]] std::vector<CollisionEnd> members() const {
-    std::vector<CollisionEnd> out;
-    for (const CollisionEnd end : kCollisionEnds) {
-      if (contains(end)) out.push_back(end);
-    }
-    return out;
-  }
-
- private:
-  static constexpr unsigned bit(CollisionEnd end) { return 1U << static_cast<unsigned>(end); }
-  unsigned bits_ = 0;
-};
-
-// One value per collision end, indexed by CollisionEnd (the only way to reach a value).
-template <typename T>
-class PerEnd {
- public:
-  [[nodiscard]] constexpr const T& operator[](CollisionEnd end) const { return values_[index(end)]; }
-  [[nodiscard]] constexpr T& operator[](CollisionEnd end) { return values_[index(end)]; }
-
- private:
-  static constexpr std::size_t index(CollisionEnd end) { return static_cast<std::size_t>(end); }
-  std::array<T, 2> values_{};
-};
 
 struct SolveOptions {
   // Accuracy the caller gets: |ε - ε_exact| <= tolerance · min(ε, 1 - ε) for every reported end.

@@ -14,7 +14,10 @@
 // dD/dτ = c_d · w(x) · x'^2; the elastic energy is U(x) = c_s x^{a+1}/(a+1).
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace restitution {
 
@@ -69,6 +72,64 @@ inline double continued_power(double x, double e) {
   return e == std::floor(e) ? std::pow(x, e) : 0.0;
 }
 }  // namespace detail
+
+// One end of the collision, for callers that ask for a single end. naive: the overlap returns to x = 0
+// ("clamp off"); delayed_recovery: the total force first reaches 0, c_d x' + c_s x^{a-b} = 0, where a DEM
+// code that zeroes an attractive force separates the spheres ("clamp on"; docs/contact_laws.md).
+enum class CollisionEnd { naive, delayed_recovery };
+
+// Both ends, in the order a collision reaches them last (for loops over the ends).
+inline constexpr std::array<CollisionEnd, 2> kCollisionEnds{CollisionEnd::naive,
+                                                            CollisionEnd::delayed_recovery};
+
+// A set of collision ends: which ends a solve computes. Built from CollisionEnd values, e.g.
+// EndSet{CollisionEnd::naive}; an EndSet{} is empty.
+class EndSet {
+ public:
+  constexpr EndSet() = default;
+  constexpr EndSet(std::initializer_list<CollisionEnd> ends) {
+    for (const CollisionEnd end : ends) insert(end);
+  }
+  [[nodiscard]] static constexpr EndSet both() {
+    return {CollisionEnd::naive, CollisionEnd::delayed_recovery};
+  }
+
+  [[nodiscard]] constexpr bool contains(CollisionEnd end) const { return (bits_ & bit(end)) != 0U; }
+  [[nodiscard]] constexpr bool empty() const { return bits_ == 0U; }
+  constexpr void insert(CollisionEnd end) { bits_ |= bit(end); }
+  constexpr void erase(CollisionEnd end) { bits_ &= ~bit(end); }
+  // The union of two sets.
+  [[nodiscard]] constexpr EndSet operator|(EndSet other) const {
+    EndSet out;
+    out.bits_ = bits_ | other.bits_;
+    return out;
+  }
+  constexpr bool operator==(const EndSet& other) const = default;
+  // The members in the order of kCollisionEnds (for loops over the requested ends).
+  [[nodiscard]] std::vector<CollisionEnd> members() const {
+    std::vector<CollisionEnd> out;
+    for (const CollisionEnd end : kCollisionEnds) {
+      if (contains(end)) out.push_back(end);
+    }
+    return out;
+  }
+
+ private:
+  static constexpr unsigned bit(CollisionEnd end) { return 1U << static_cast<unsigned>(end); }
+  unsigned bits_ = 0;
+};
+
+// One value per collision end, indexed by CollisionEnd (the only way to reach a value).
+template <typename T>
+class PerEnd {
+ public:
+  [[nodiscard]] constexpr const T& operator[](CollisionEnd end) const { return values_[index(end)]; }
+  [[nodiscard]] constexpr T& operator[](CollisionEnd end) { return values_[index(end)]; }
+
+ private:
+  static constexpr std::size_t index(CollisionEnd end) { return static_cast<std::size_t>(end); }
+  std::array<T, 2> values_{};
+};
 
 // Natural-unit magnitudes (x'(0) = 1) of the smallest compression, velocity and dissipation integral that
 // decide the requested results: the tolerance policies scale absolute tolerances with them.
@@ -135,8 +196,8 @@ class ContactLaw {
   [[nodiscard]] bool speed_independent() const { return restitution::speed_independent(kind_); }
 
   // The smooth variable near x = 0: u = x^{1/q} with q the smallest integer making q·a and q·b integers
-  // (2 for viscoelastic Hertz and constant damping, 4 for Tsuji, 1 for the dash-pot). The solution has terms
-  // τ^{b+2}, τ^{a+2}, ... at τ = 0: analytic in u, not in τ (docs/design.md §4).
+  // (2 for viscoelastic Hertz and constant damping, 4 for Tsuji, 1 for the dash-pot). The solution has
+  // terms τ^{b+2}, τ^{a+2}, ... at τ = 0: analytic in u, not in τ (docs/design.md §4).
   [[nodiscard]] int smoothing_root() const { return q_; }
   [[nodiscard]] double compression_of(double u) const {  // x = u^q
     if (q_ == 2) return u * u;
@@ -187,11 +248,12 @@ class ContactLaw {
   [[nodiscard]] EndValues end_values(double x, double velocity, double dissipation_integral) const;
 
   // What the tolerance policies need (natural units unless said otherwise), derived from the scaling of
-  // the member (docs/contact_laws.md): the magnitudes that decide the requested ends, a factor (<= 1) on the
-  // local tolerance where the end is ill-conditioned, and a time limit (law's own τ) no end lies beyond.
-  [[nodiscard]] ResolutionScales resolution_scales(bool naive_end) const;
-  [[nodiscard]] double conditioning(bool naive_end) const;
-  [[nodiscard]] double time_limit(bool naive_end) const;
+  // the member (docs/contact_laws.md): the magnitudes that decide the requested ends, a factor (<= 1) on
+  // the local tolerance where the end is ill-conditioned, and a time limit (law's own τ) no end lies
+  // beyond.
+  [[nodiscard]] ResolutionScales resolution_scales(EndSet ends) const;
+  [[nodiscard]] double conditioning(EndSet ends) const;
+  [[nodiscard]] double time_limit(EndSet ends) const;
 
   // For decided_by_solve: a factor (<= 1) on the local tolerance for a naive end with this ε, found by a
   // first solve. Close to the largest ζ with a naive end the trajectory passes close to the saddle at x = 0

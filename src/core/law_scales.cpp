@@ -58,7 +58,8 @@ double ContactLaw::indistinguishable_ends_zeta() const {
   return std::pow(1e-30, (a_ - b_) / (b_ + 1.0));
 }
 
-ResolutionScales ContactLaw::resolution_scales(bool naive_end) const {
+ResolutionScales ContactLaw::resolution_scales(EndSet ends) const {
+  const bool naive_end = ends.contains(CollisionEnd::naive);
   ResolutionScales m;
   if (kind_ == LawKind::linear_dashpot) {
     // The dash-pot's own (measured, docs/accuracy.md) scales, in its damping ratio r.
@@ -104,7 +105,8 @@ ResolutionScales ContactLaw::resolution_scales(bool naive_end) const {
   return m;
 }
 
-double ContactLaw::conditioning(bool naive_end) const {
+double ContactLaw::conditioning(EndSet ends) const {
+  const bool naive_end = ends.contains(CollisionEnd::naive);
   // Near critical damping the two modes of a scale-invariant member cancel at the naive end to
   // ω = sqrt(1 - ρ²) and amplify the local errors by about 1/ω in ε (measured on the dash-pot: error ratio 10
   // at r = 0.999 and 20 at r = 0.9999 with the plain rtol).
@@ -114,7 +116,8 @@ double ContactLaw::conditioning(bool naive_end) const {
   return std::min(1.0, 0.1 * std::sqrt(1.0 - rho * rho));
 }
 
-double ContactLaw::time_limit(bool naive_end) const {
+double ContactLaw::time_limit(EndSet ends) const {
+  const bool naive_end = ends.contains(CollisionEnd::naive);
   if (kind_ == LawKind::linear_dashpot) {
     const double r = parameter();
     return (naive_end && r < 1.0) ? 100.0 * (10.0 + M_PI / std::sqrt(1.0 - r * r)) : 1000.0;

@@ -48,9 +48,8 @@ SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options, double 
   plan.method = resolve_method(law, options.method, options.ends);
   // The smooth variable u = x^{1/q} pays where the solution is not analytic in τ at x = 0 (q > 1).
   plan.smooth_ends = options.smooth_ends && law.smoothing_root() > 1;
-  const ResolutionScales m = law.resolution_scales(options.ends.contains(CollisionEnd::naive));
-  const double rtol = options.tolerance * kLocalToGlobal *
-                      law.conditioning(options.ends.contains(CollisionEnd::naive)) * conditioning;
+  const ResolutionScales m = law.resolution_scales(options.ends);
+  const double rtol = options.tolerance * kLocalToGlobal * law.conditioning(options.ends) * conditioning;
   plan.relative_tolerance = rtol;
   // Absolute tolerances in the law's own units: lengths scale with length_scale, velocities with v0,
   // times with time_scale, the dissipation integral ∫ w(x) x'^2 dτ with w(length) · v0^2 · time.
@@ -61,7 +60,7 @@ SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options, double 
                         law.initial_velocity() * law.time_scale();
   plan.absolute_tolerance_time = {x_atol, v_atol, i_atol};
   plan.absolute_tolerance_compression = {floor * law.time_scale(), v_atol, i_atol};
-  plan.time_limit = law.time_limit(options.ends.contains(CollisionEnd::naive));
+  plan.time_limit = law.time_limit(options.ends);
   // The start phase ends where x' has halved, or at x = 1/2 (natural), whichever comes first.
   plan.start_phase_x = 0.5 * law.length_scale();
   plan.max_steps = options.max_steps_per_phase;

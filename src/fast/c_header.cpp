@@ -179,7 +179,13 @@ void array(std::ostringstream& out, const std::string& name, const std::vector<d
   out << "};\n";
 }
 
-void end_tables(std::ostringstream& out, const std::string& tag, const EndTable& e, int per_line) {
+// The end's tag in the C names: restitution_fast_naive_, restitution_fast_delayed_.
+std::string c_tag(CollisionEnd end) {
+  return end == CollisionEnd::naive ? "naive" : "delayed";
+}
+
+void end_tables(std::ostringstream& out, CollisionEnd end, const EndTable& e, int per_line) {
+  const std::string tag = c_tag(end);
   array(out, "restitution_fast_" + tag + "_logit_", e.logit, per_line);
   array(out, "restitution_fast_" + tag + "_log_tau_", e.log_tau, per_line);
   array(out, "restitution_fast_" + tag + "_inverse_", e.inverse, per_line);
@@ -191,12 +197,12 @@ std::string law(const Law& w) {
                      number(w.d2), number(w.d1), number(w.d0), number(w.e0));
 }
 
-void end_struct(std::ostringstream& out, const std::string& tag, const EndTable& e, bool naive) {
-  const std::string p = "restitution_fast_" + tag;
+void end_struct(std::ostringstream& out, CollisionEnd end, const EndTable& e) {
+  const std::string p = "restitution_fast_" + c_tag(end);
   out << "static const restitution_fast_end_ " << p << "_ = {" << e.intervals << ", " << p << "_logit_, "
       << e.tau_intervals << ", " << p << "_log_tau_, " << law(e.tau_law) << ", " << number(e.g_lo) << ", "
       << e.inverse_intervals << ", " << p << "_inverse_, " << p << "_small_, " << number(e.tau_zero) << ", "
-      << number(e.tau_lo) << ", " << (naive ? 1 : 0) << "};\n";
+      << number(e.tau_lo) << ", " << (end == CollisionEnd::naive ? 1 : 0) << "};\n";
 }
 
 }  // namespace
@@ -277,12 +283,10 @@ typedef struct {
 
 )";
   const int per_line = d.degree + 1;
-  end_tables(out, "naive", d.naive, per_line);
-  end_tables(out, "delayed", d.delayed, per_line);
+  for (const CollisionEnd end : kCollisionEnds) end_tables(out, end, d.ends[end], per_line);
   array(out, "restitution_fast_log_x_max_", d.log_x_max, per_line);
   array(out, "restitution_fast_log_tau_max_", d.log_tau_max, per_line);
-  end_struct(out, "naive", d.naive, true);
-  end_struct(out, "delayed", d.delayed, false);
+  for (const CollisionEnd end : kCollisionEnds) end_struct(out, end, d.ends[end]);
   out << "static const restitution_fast_law_ restitution_fast_x_max_law_ = " << law(d.x_max_law) << ";\n";
   out << "static const restitution_fast_law_ restitution_fast_tau_max_law_ = " << law(d.tau_max_law) << ";\n";
   out << estrin_function(d.degree) << kEvaluation;

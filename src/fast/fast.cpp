@@ -83,8 +83,8 @@ std::string c_header() {
   d.s_lo = RESTITUTION_FAST_S_LO;
   d.per_unit = RESTITUTION_FAST_PER_UNIT;
   d.zeta_lo = RESTITUTION_FAST_ZETA_LO;
-  d.naive = end_table(restitution_fast_naive_);
-  d.delayed = end_table(restitution_fast_delayed_);
+  d.ends[CollisionEnd::naive] = end_table(restitution_fast_naive_);
+  d.ends[CollisionEnd::delayed_recovery] = end_table(restitution_fast_delayed_);
   const int count = restitution_fast_delayed_.tau_intervals * (RESTITUTION_FAST_DEGREE + 1);
   d.log_x_max = values(restitution_fast_log_x_max_, count);
   d.log_tau_max = values(restitution_fast_log_tau_max_, count);

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "restitution/contact_law.hpp"
+
 namespace restitution::fast {
 
 // A large-ζ law of a duration or of the maximal compression, natural units, s = ln ζ, δ = ζ^{-5/3}:
@@ -39,7 +41,7 @@ struct TableData {
   double s_lo = 0;      // ln ζ_lo, start of every forward table
   double per_unit = 0;  // intervals per unit of s (and of g in the inverse tables)
   double zeta_lo = 0;   // exp(s_lo) rounded
-  EndTable naive, delayed;
+  PerEnd<EndTable> ends;
   // Maximal compression on the delayed-recovery grid: ln x_max(s), ln τ_max(s), and their values at 0 and
   // ζ_lo; their laws above the grid.
   std::vector<double> log_x_max, log_tau_max;

@@ -126,8 +126,9 @@ void make_inverse(const Grid& forward, const std::vector<Real>& nodes, double pe
 
 // (1 − ε)/ζ as a polynomial in w = sqrt ζ, highest power first, from the recomputed series (docs/series.md):
 // naive 1 − ε = −Σ c_k ζ^k, delayed recovery 1 − ε = −Σ h_k w^k.
-std::vector<double> small_series(int terms, bool naive) {
+std::vector<double> small_series(int terms, CollisionEnd end) {
   const series::Coefficients c = series::compute_coefficients(terms);
+  const bool naive = end == CollisionEnd::naive;
   std::vector<double> p;
   for (int j = terms - 1; j >= 0; --j) {
     const auto k = static_cast<std::size_t>(j);
@@ -135,6 +136,11 @@ std::vector<double> small_series(int terms, bool naive) {
     p.push_back(value == 0.0 ? 0.0 : value);  // never -0, which C reads back as the integer 0
   }
   return p;
+}
+
+// The ends of a reference solve: the delayed-recovery end always, the naive end where a table needs it.
+EndSet reference_ends(bool with_naive) {
+  return with_naive ? EndSet::both() : EndSet{CollisionEnd::delayed_recovery};
 }
 
 struct Errors {
@@ -173,7 +179,7 @@ Fits fit(const GeneratorSettings& s, int naive_intervals, int naive_tau_interval
     std::vector<Real> tm;
     for (const Real t : nodes) {
       const double zeta = std::exp(s.s_lo + (i + static_cast<double>((t + 1) / 2)) / s.per_unit);
-      const ReferenceSolution r = hertz_reference(zeta, with_naive);
+      const ReferenceSolution r = hertz_reference(zeta, reference_ends(with_naive));
       ++f.solves;
       gd.push_back(logit(*r.ends[CollisionEnd::delayed_recovery]));
       td.push_back(logq(r.ends[CollisionEnd::delayed_recovery]->tau));
@@ -214,7 +220,7 @@ std::string measured_errors(const GeneratorSettings& s, const Fits& f, long& sol
     for (int c = 0; c < s.checks_per_interval; ++c, ++checks, ++solves) {
       const double zeta = std::exp(s.s_lo + (static_cast<double>(i) + unit(rng)) / s.per_unit);
       const Real sv = logq(zeta);
-      const ReferenceSolution r = hertz_reference(zeta, with_naive);
+      const ReferenceSolution r = hertz_reference(zeta, reference_ends(with_naive));
       worse(delayed.eps,
             relative_eps_error(f.g_delayed.at(sv, true), *r.ends[CollisionEnd::delayed_recovery]));
       worse(delayed.tau,
@@ -239,13 +245,13 @@ std::string law_errors(const GeneratorSettings& s, const TableData& d, long& sol
   double law_naive = 0;
   double law_delayed = 0;
   for (const double zeta : {std::exp(s.s_hi_naive), 10.0, 30.0}) {
-    const ReferenceSolution r = hertz_reference(zeta, true);
+    const ReferenceSolution r = hertz_reference(zeta);
     ++solves;
     const Real e = d.kappa * powq(zeta, -5);
     law_naive = std::max(law_naive, relative(e, r.ends[CollisionEnd::naive]->eps));
   }
   for (const double zeta : {std::exp(s.s_hi_delayed), 3e5, 1e6}) {
-    const ReferenceSolution r = hertz_reference(zeta, false);
+    const ReferenceSolution r = hertz_reference(zeta, EndSet{CollisionEnd::delayed_recovery});
     ++solves;
     const Real sv = logq(zeta);
     const Real delta = expq(-sv * 5 / 3);
@@ -296,7 +302,8 @@ struct Sample {
 // d0 at the delayed-recovery end (the O(δ) drift of docs/asymptotics.md carries powers of ln ζ), c0, d0, e0
 // at the naive end (corrections in powers of δ alone: measured, a δ ln ζ term fits worse by 1e4). The δ
 // columns are scaled to order one so that the elimination sees comparable pivots.
-Law fit_law(double power, double c1, bool naive, const std::vector<Sample>& at) {
+Law fit_law(double power, double c1, CollisionEnd end, const std::vector<Sample>& at) {
+  const bool naive = end == CollisionEnd::naive;
   std::vector<std::vector<Real>> a;
   std::vector<Real> b;
   const Real scale = expq(at.front().s * 5 / 3);
@@ -323,8 +330,9 @@ struct Durations {
   Sample naive_tau, delayed_tau, x_max, tau_max;
 };
 
-Durations durations_at(Real s, bool naive, long& solves) {
-  const ReferenceSolution r = hertz_reference(static_cast<double>(expq(s)), naive);
+Durations durations_at(Real s, EndSet ends, long& solves) {
+  const ReferenceSolution r = hertz_reference(static_cast<double>(expq(s)), ends);
+  const bool naive = ends.contains(CollisionEnd::naive);
   ++solves;
   const Real sv = logq(r.parameter);  // the ζ solved, as rounded to double
   return {{sv, naive ? r.ends[CollisionEnd::naive]->tau : Real(0)},
@@ -338,6 +346,8 @@ Durations durations_at(Real s, bool naive, long& solves) {
 // reference still costs seconds), their errors measured at reference
 // solves between those (and, for x_max, whose law is derived completely, at all of them). One line each.
 std::string fit_laws(const GeneratorSettings& s, TableData& d, long& solves) {
+  EndTable& naive = d.ends[CollisionEnd::naive];
+  EndTable& delayed = d.ends[CollisionEnd::delayed_recovery];
   const Real q = d.q;
   const Real log_a = d.log_a;
   const Real x_m = d.x_m;
@@ -348,30 +358,31 @@ std::string fit_laws(const GeneratorSettings& s, TableData& d, long& solves) {
                  0,
                  static_cast<double>(-x_m * 5 / (3 * q)),
                  static_cast<double>(-(x_m / q) * (log_a - logq(q) - Real(3) / 2))};
+  const EndSet delayed_only{CollisionEnd::delayed_recovery};
   std::vector<Durations> fit_delayed;
   std::vector<Durations> check_delayed;
   const double span = std::log(1e6) - s.s_hi_delayed;
   for (int k = 0; k < 4; ++k)
-    fit_delayed.push_back(durations_at(s.s_hi_delayed + k * span / 3, false, solves));
+    fit_delayed.push_back(durations_at(s.s_hi_delayed + k * span / 3, delayed_only, solves));
   for (int k = 0; k < 3; ++k)
-    check_delayed.push_back(durations_at(s.s_hi_delayed + (k + 0.5) * span / 3, false, solves));
+    check_delayed.push_back(durations_at(s.s_hi_delayed + (k + 0.5) * span / 3, delayed_only, solves));
   std::vector<Durations> fit_naive;
   std::vector<Durations> check_naive;
   for (const double ds : {0.0, 0.25, 0.5})
-    fit_naive.push_back(durations_at(s.s_hi_naive_duration + ds, true, solves));
+    fit_naive.push_back(durations_at(s.s_hi_naive_duration + ds, EndSet::both(), solves));
   for (const double ds : {0.1, 0.6})
-    check_naive.push_back(durations_at(s.s_hi_naive_duration + ds, true, solves));
+    check_naive.push_back(durations_at(s.s_hi_naive_duration + ds, EndSet::both(), solves));
 
   const auto samples = [](const std::vector<Durations>& v, Sample Durations::*which) {
     std::vector<Sample> out;
     for (const Durations& p : v) out.push_back(p.*which);
     return out;
   };
-  d.naive.tau_law = fit_law(1.0, 10.0 / 3.0, true, samples(fit_naive, &Durations::naive_tau));
-  d.delayed.tau_law = fit_law(-2.0 / 3.0, static_cast<double>(10 / (3 * q)), false,
-                              samples(fit_delayed, &Durations::delayed_tau));
-  d.tau_max_law =
-      fit_law(-2.0 / 3.0, static_cast<double>(5 / (3 * q)), false, samples(fit_delayed, &Durations::tau_max));
+  naive.tau_law = fit_law(1.0, 10.0 / 3.0, CollisionEnd::naive, samples(fit_naive, &Durations::naive_tau));
+  delayed.tau_law = fit_law(-2.0 / 3.0, static_cast<double>(10 / (3 * q)), CollisionEnd::delayed_recovery,
+                            samples(fit_delayed, &Durations::delayed_tau));
+  d.tau_max_law = fit_law(-2.0 / 3.0, static_cast<double>(5 / (3 * q)), CollisionEnd::delayed_recovery,
+                          samples(fit_delayed, &Durations::tau_max));
 
   const auto worst = [](const Law& w, const std::vector<Sample>& v) {
     double e = 0;
@@ -385,10 +396,10 @@ std::string fit_laws(const GeneratorSettings& s, TableData& d, long& solves) {
       "points: tau_c naive {:.2e} (zeta = e^({}+0.1, +0.6)), tau_c delayed {:.2e}, tau_max {:.2e}; x_max "
       "(derived, at all 7 points from e^{}) {:.2e}\n"
       "  fitted c0 minus derived: tau_c delayed {:.2e} (ln A / q), tau_max {:.2e} ((ln A - ln q) / q)",
-      worst(d.naive.tau_law, samples(check_naive, &Durations::naive_tau)), s.s_hi_naive_duration,
-      worst(d.delayed.tau_law, samples(check_delayed, &Durations::delayed_tau)),
+      worst(naive.tau_law, samples(check_naive, &Durations::naive_tau)), s.s_hi_naive_duration,
+      worst(delayed.tau_law, samples(check_delayed, &Durations::delayed_tau)),
       worst(d.tau_max_law, samples(check_delayed, &Durations::tau_max)), s.s_hi_delayed,
-      worst(d.x_max_law, x_max_all), d.delayed.tau_law.c0 - static_cast<double>(log_a / q),
+      worst(d.x_max_law, x_max_all), delayed.tau_law.c0 - static_cast<double>(log_a / q),
       d.tau_max_law.c0 - static_cast<double>((log_a - logq(q)) / q));
 }
 
@@ -409,35 +420,37 @@ TableData generate_tables(const GeneratorSettings& s) {
         "s_hi_naive_duration <= min(s_hi_delayed, ln 1e3 - 0.6), s_hi_delayed <= ln 1e6 - 1");
   if (s.checks_per_interval < 0) throw InvalidInput("checks per interval must be >= 0");
   TableData d;
+  EndTable& naive = d.ends[CollisionEnd::naive];
+  EndTable& delayed = d.ends[CollisionEnd::delayed_recovery];
   d.degree = s.degree;
   d.small_terms = 8;
   d.s_lo = s.s_lo;
   d.per_unit = s.per_unit;
   d.zeta_lo = std::exp(s.s_lo);
-  d.naive.intervals = static_cast<int>(std::lround((s.s_hi_naive - s.s_lo) * s.per_unit));
-  d.delayed.intervals = static_cast<int>(std::lround((s.s_hi_delayed - s.s_lo) * s.per_unit));
-  d.naive.tau_intervals = static_cast<int>(std::lround((s.s_hi_naive_duration - s.s_lo) * s.per_unit));
-  d.delayed.tau_intervals = d.delayed.intervals;
+  naive.intervals = static_cast<int>(std::lround((s.s_hi_naive - s.s_lo) * s.per_unit));
+  delayed.intervals = static_cast<int>(std::lround((s.s_hi_delayed - s.s_lo) * s.per_unit));
+  naive.tau_intervals = static_cast<int>(std::lround((s.s_hi_naive_duration - s.s_lo) * s.per_unit));
+  delayed.tau_intervals = delayed.intervals;
 
   const std::vector<Real> nodes = chebyshev_nodes(s.degree);
-  Fits f = fit(s, d.naive.intervals, d.naive.tau_intervals, d.delayed.intervals, nodes);
-  d.naive.logit = stored(f.g_naive);
-  d.naive.log_tau = stored(f.tau_naive);
-  d.delayed.logit = stored(f.g_delayed);
-  d.delayed.log_tau = stored(f.tau_delayed);
+  Fits f = fit(s, naive.intervals, naive.tau_intervals, delayed.intervals, nodes);
+  naive.logit = stored(f.g_naive);
+  naive.log_tau = stored(f.tau_naive);
+  delayed.logit = stored(f.g_delayed);
+  delayed.log_tau = stored(f.tau_delayed);
   d.log_x_max = stored(f.x_max);
   d.log_tau_max = stored(f.tau_max);
-  make_inverse(f.g_naive, nodes, s.per_unit, d.naive);
-  make_inverse(f.g_delayed, nodes, s.per_unit, d.delayed);
-  d.naive.small = small_series(d.small_terms, true);
-  d.delayed.small = small_series(d.small_terms, false);
+  make_inverse(f.g_naive, nodes, s.per_unit, naive);
+  make_inverse(f.g_delayed, nodes, s.per_unit, delayed);
+  naive.small = small_series(d.small_terms, CollisionEnd::naive);
+  delayed.small = small_series(d.small_terms, CollisionEnd::delayed_recovery);
 
   const ReferenceSolution zero = hertz_reference(0.0);
   const ReferenceSolution lo = hertz_reference(d.zeta_lo);
-  d.naive.tau_zero = static_cast<double>(zero.ends[CollisionEnd::naive]->tau);
-  d.delayed.tau_zero = static_cast<double>(zero.ends[CollisionEnd::delayed_recovery]->tau);
-  d.naive.tau_lo = static_cast<double>(lo.ends[CollisionEnd::naive]->tau);
-  d.delayed.tau_lo = static_cast<double>(lo.ends[CollisionEnd::delayed_recovery]->tau);
+  naive.tau_zero = static_cast<double>(zero.ends[CollisionEnd::naive]->tau);
+  delayed.tau_zero = static_cast<double>(zero.ends[CollisionEnd::delayed_recovery]->tau);
+  naive.tau_lo = static_cast<double>(lo.ends[CollisionEnd::naive]->tau);
+  delayed.tau_lo = static_cast<double>(lo.ends[CollisionEnd::delayed_recovery]->tau);
   d.x_max_zero = static_cast<double>(zero.x_max);
   d.tau_max_zero = static_cast<double>(zero.tau_max);
   d.x_max_lo = static_cast<double>(lo.x_max);

@@ -28,11 +28,12 @@ struct Run {
 constexpr Run kCoarse{32, 1e-31};
 constexpr Run kFine{40, 1e-33};
 
-TaylorSettings hertz_settings(double zeta, bool naive, const Run& run) {
+TaylorSettings hertz_settings(double zeta, EndSet ends, const Run& run) {
   TaylorSettings s;
   s.order = run.order;
   s.tolerance = run.tolerance;
-  s.ends = naive ? EndSet::both() : EndSet{CollisionEnd::delayed_recovery};
+  s.ends = ends;
+  const bool naive = ends.contains(CollisionEnd::naive);
   const double z = std::max(zeta, 1.0);
   // Floors far below every value that matters, so that the control is relative.
   const double velocity = naive ? std::pow(z, -5.0) : std::pow(z, -5.0 / 3.0);
@@ -114,12 +115,17 @@ constexpr const char* kHeader =
 
 }  // namespace
 
-ReferenceSolution hertz_reference(double zeta, bool naive) {
+ReferenceSolution hertz_reference(double zeta, EndSet ends) {
   if (!std::isfinite(zeta) || zeta < 0)
     throw InvalidInput(fmt::format("zeta must be finite and >= 0, got {}", zeta));
-  const bool with_naive = naive && zeta <= kReferenceNaiveZetaMax;
+  if (zeta > kReferenceNaiveZetaMax) ends.erase(CollisionEnd::naive);
+  if (ends.empty())
+    throw InvalidInput(
+        fmt::format("no end to compute at zeta={}: the reference holds the naive end only for "
+                    "zeta <= {:g}",
+                    zeta, kReferenceNaiveZetaMax));
   auto solve = [&](const Run& run) {
-    taylor::TaylorCollision<Real> collision(hertz_settings(zeta, with_naive, run), zeta);
+    taylor::TaylorCollision<Real> collision(hertz_settings(zeta, ends, run), zeta);
     return solution_of(zeta, zeta, true, collision.hertz(Real(zeta)));
   };
   return compare(solve(kCoarse), solve(kFine), "viscoelastic-hertz");

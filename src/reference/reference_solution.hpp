@@ -30,10 +30,10 @@ struct ReferenceSolution {
   long steps = 0;        // Taylor steps of the higher order
 };
 
-// Viscoelastic Hertz in natural units; the naive end only if asked and ζ <= kReferenceNaiveZetaMax.
-// Throws NumericalFailure if the integration fails or the two orders disagree by more than
-// kReferenceAgreement.
-ReferenceSolution hertz_reference(double zeta, bool naive = true);
+// Viscoelastic Hertz in natural units at the requested ends, the naive end only for ζ <=
+// kReferenceNaiveZetaMax. Throws InvalidInput when that leaves no end, NumericalFailure if the integration
+// fails or the two orders disagree by more than kReferenceAgreement.
+ReferenceSolution hertz_reference(double zeta, EndSet ends = EndSet::both());
 // Linear dash-pot x'' + 2r x' + x = 0 (natural units), both ends where they exist (naive for r < 1).
 ReferenceSolution dashpot_reference(double damping_ratio);
 

@@ -37,7 +37,7 @@ taylor::TaylorSettings settings_for(const ContactLaw& law, const SolveOptions& o
   if (law.kind() == LawKind::viscoelastic_hertz) {
     // Scales of what decides the result (the law's, as in the CVODE tolerance policy): for large ζ the
     // delayed end has ε ~ ζ^{-5/3} at x ~ ζ^{-2/3}, the naive end ε ~ ζ^{-5} reached through x ~ ζ^{-4}.
-    const ResolutionScales m = law.resolution_scales(options.ends.contains(CollisionEnd::naive));
+    const ResolutionScales m = law.resolution_scales(options.ends);
     s.compression_floor = {1e-2, 1e-2 * m.velocity, 1e-2 / z};
     s.time_floor = {1e-2 * std::sqrt(m.x), 1e-2 * m.velocity, 1e-2 / z};
     // Below u ~ 1/ζ² the damping no longer dominates and the compression form is not stiff; above it,
