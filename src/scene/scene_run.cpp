@@ -1,12 +1,12 @@
 #include "scene/scene_run.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <mutex>
 #include <utility>
 
 #include "parallel/parallel_for.hpp"
 #include "restitution/material.hpp"
+#include "scene/scene_comparisons.hpp"
 #include "scene/scene_extensions.hpp"
 
 namespace restitution::scene {
@@ -54,22 +54,30 @@ SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& setting
     const Sweep& s = scene.sweeps[i];
     const std::vector<PlannedPoint>& points = out.plan.sweeps[i];
     std::vector<double> zeta;
-    std::vector<const CollisionResult*> results;
+    detail::PointResults results;
     for (const PlannedPoint& p : points) {
       zeta.push_back(p.parameter);
       results.push_back(result_of(out, p));
     }
     SweepExtras extras;
     detail::add_approximations(s, zeta, extras);
+    detail::compare_approximations(zeta, results, extras);
     detail::add_power_law_fits(s, zeta, results, extras);
     if (s.empirical) {
-      for (const PlannedPoint& p : points) {
-        extras.empirical_eps.push_back(
-            s.empirical->coefficient *
-            std::pow(*p.velocity_m_s / s.empirical->velocity_unit_m_s, s.empirical->exponent));
-      }
+      std::vector<double> velocity_m_s;
+      for (const PlannedPoint& p : points) velocity_m_s.push_back(*p.velocity_m_s);
+      detail::add_empirical(*s.empirical, s.ends, velocity_m_s, results, extras);
     }
     out.sweeps.push_back(std::move(extras));
+  }
+  for (std::size_t i = 0; i < scene.dashpots.size(); ++i) {
+    std::vector<double> damping_ratio;
+    detail::PointResults results;
+    for (const PlannedPoint& p : out.plan.dashpots[i]) {
+      damping_ratio.push_back(p.parameter);
+      results.push_back(result_of(out, p));
+    }
+    out.dashpots.push_back(detail::check_dashpot(scene.dashpots[i], damping_ratio, results));
   }
 
   CollisionSolver solver;
