@@ -331,7 +331,7 @@ class SceneWriter {
 
   void damping_check(std::size_t i) {
     const scene::DampingCheckTask& task = scene_.damping_checks[i];
-    const DampingSection section = damping_section(scene_, task);
+    const DampingSection section = damping_section(task, results_.damping_checks[i]);
     report_ += fmt::format("## {}\n\n", task.title);
     for (const DampingPlot& p : section.plots) {
       write_file(p.name + ".csv", p.csv);

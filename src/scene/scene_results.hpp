@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "damping_check/grid.hpp"
 #include "reference/work_precision.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/collision_solver.hpp"

@@ -4,6 +4,7 @@
 #include <mutex>
 #include <utility>
 
+#include "damping_check/grid.hpp"
 #include "parallel/parallel_for.hpp"
 #include "restitution/material.hpp"
 #include "scene/scene_comparisons.hpp"
@@ -94,6 +95,16 @@ SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& setting
     outcome.calibration = calibrate(request, solver);
     out.collisions += static_cast<std::size_t>(outcome.calibration.solves);
     out.calibrations.push_back(outcome);
+  }
+  for (const DampingCheckTask& task : scene.damping_checks) {
+    damping_check::GridRequest request;
+    for (const std::string& name : task.recipes)
+      request.recipes.push_back(damping_check::recipe_from_name(name));
+    request.eps = task.eps;
+    request.reference_velocity_m_s = task.velocity_m_s;
+    request.speeds_m_s = task.speeds;
+    request.tolerance = scene.tolerance;
+    out.damping_checks.push_back(damping_check::check_grid(request, solver));
   }
   for (const ExternalStudy& study : scene.studies)
     out.studies.push_back(detail::run_study(study, scene.tolerance, settings.reference_file));

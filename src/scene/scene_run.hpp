@@ -27,6 +27,8 @@ struct SceneResults {
   std::vector<SweepExtras> sweeps;       // parallel to Scene::sweeps
   std::vector<DashpotOutcome> dashpots;  // parallel to Scene::dashpots
   std::vector<CalibrationOutcome> calibrations;
+  // Parallel to Scene::damping_checks; their solves are not counted in `total` or `collisions`.
+  std::vector<damping_check::GridResult> damping_checks;
   std::vector<StudyOutcome> studies;  // parallel to Scene::studies
   SolverStats total;                  // summed over the planned collisions (not the calibrations)
   std::size_t collisions = 0;         // collisions integrated, calibrations included
