@@ -15,12 +15,6 @@ namespace {
 
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 
-const EndResult* end_if_computed(const CollisionResult* r, CollisionEnd end) {
-  if (r == nullptr) return nullptr;
-  const auto& e = (*r)[end];
-  return e ? &*e : nullptr;
-}
-
 }  // namespace
 
 std::string Table::csv() const {
@@ -86,7 +80,7 @@ Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results,
     std::vector<double> row = {p.parameter};
     if (physical) row.insert(row.end(), {*p.velocity_m_s, *p.beta});
     for (const CollisionEnd e : ends) {
-      const EndResult* end = end_if_computed(r, e);
+      const EndResult* end = scene::end_if_computed(r, e);
       const bool found = end != nullptr;
       if (q.eps) row.push_back(found ? end->eps : kNone);
       if (q.one_minus_eps) row.push_back(found ? end->one_minus_eps : kNone);

@@ -5,17 +5,12 @@
 #include <limits>
 
 #include "reference/dashpot_closed_form.hpp"
+#include "scene/scene_run.hpp"
 
 namespace restitution::scene::detail {
 namespace {
 
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-
-const EndResult* end_if_computed(const CollisionResult* r, CollisionEnd end) {
-  if (r == nullptr) return nullptr;
-  const auto& e = (*r)[end];
-  return e ? &*e : nullptr;
-}
 
 ApproximationComparison comparison_of(const std::vector<double>& zeta,
                                       const std::vector<double>& difference) {

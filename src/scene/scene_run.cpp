@@ -44,6 +44,12 @@ const CollisionResult* result_of(const SceneResults& results, const PlannedPoint
   return point.job == kNoJob ? nullptr : &results.solved[point.job];
 }
 
+const EndResult* end_if_computed(const CollisionResult* result, CollisionEnd end) {
+  if (result == nullptr) return nullptr;
+  const auto& e = (*result)[end];
+  return e ? &*e : nullptr;
+}
+
 SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& settings) {
   SceneResults out;
   out.plan = std::move(plan);

@@ -40,5 +40,7 @@ SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& setting
 
 // The result of a planned point (nullptr when the point needed no integration).
 const CollisionResult* result_of(const SceneResults& results, const PlannedPoint& point);
+// The end of a result (nullptr when there is no result or that end was not computed).
+const EndResult* end_if_computed(const CollisionResult* result, CollisionEnd end);
 
 }  // namespace restitution::scene
