@@ -25,13 +25,15 @@ ByClamp actual(Recipe recipe, double eps, const std::vector<double>& speeds, con
 
 std::vector<double> relative_errors(const std::vector<double>& actual, double requested) {
   std::vector<double> errors;
+  errors.reserve(actual.size());
   for (const double a : actual) errors.push_back((a - requested) / requested);
   return errors;
 }
 
 }  // namespace
 
-GridResult check_grid(const GridRequest& g, CollisionSolver& solver) {
+GridResult check_grid(const GridRequest& request, CollisionSolver& solver) {
+  const GridRequest& g = request;
   const double v_ref = g.reference_velocity_m_s;
   GridResult out;
   out.findings_speeds_m_s = {v_ref / 10.0, v_ref, 10.0 * v_ref};

@@ -72,6 +72,7 @@ SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& setting
     detail::add_power_law_fits(s, zeta, results, extras);
     if (s.empirical) {
       std::vector<double> velocity_m_s;
+      velocity_m_s.reserve(points.size());
       for (const PlannedPoint& p : points) velocity_m_s.push_back(*p.velocity_m_s);
       detail::add_empirical(*s.empirical, s.ends, velocity_m_s, results, extras);
     }
