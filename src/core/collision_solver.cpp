@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 #include "core/cvode_integrator.hpp"
 #include "core/tolerance_policy.hpp"
@@ -134,14 +135,16 @@ EndResult end_result(const ContactLaw& law, const Point& p) {
 // Runs the phases of one collision on one integrator and collects what was asked for.
 class CollisionRun {
  public:
+  // `tail`, if given, takes over from `integrator` at the delayed-recovery end while the naive end is
+  // pending (a stiff method for the overdamped tail after a non-stiff one for the collision itself).
   CollisionRun(const ContactLaw& law, const SolveOptions& options, const detail::SolvePlan& plan,
-               CvodeIntegrator& integrator)
-      : law_(law), options_(options), plan_(plan), integrator_(integrator) {
+               CvodeIntegrator& integrator, CvodeIntegrator* tail = nullptr)
+      : law_(law), options_(options), plan_(plan), integrator_(&integrator), tail_(tail) {
     result_.value.law = law.kind();
     result_.value.parameter = law.parameter();
     result_.value.speed_independent = law.speed_independent();
     result_.value.tolerance = options.tolerance;
-    result_.value.method = plan.method;
+    result_.value.method = plan.tail_method.value_or(plan.method);
   }
 
   CollisionResult run() {
@@ -207,7 +210,7 @@ class CollisionRun {
   void begin(const detail::PhaseSettings& settings, double t0, const State& state, const Event* events,
              int count) {
     try {
-      integrator_.start(law_, settings, t0, state, events, count);
+      integrator_->start(law_, settings, t0, state, events, count);
     } catch (const NumericalFailure& e) {
       throw failure(e.what());
     }
@@ -215,16 +218,16 @@ class CollisionRun {
 
   CvodeIntegrator::Step advance() {
     try {
-      CvodeIntegrator::Step step = integrator_.advance();
+      CvodeIntegrator::Step step = integrator_->advance();
       if (options_.keep_trajectory) record(point_of(law_, form_, step.t, step.state));
       return step;
     } catch (const NumericalFailure& e) {
-      result_.value.stats += integrator_.phase_stats();
+      result_.value.stats += integrator_->phase_stats();
       throw failure(e.what());
     }
   }
 
-  void finish_phase() { result_.value.stats += integrator_.phase_stats(); }
+  void finish_phase() { result_.value.stats += integrator_->phase_stats(); }
 
   void found_max_compression(const Point& p) {
     if (result_.max_compression_found) return;
@@ -262,7 +265,7 @@ class CollisionRun {
             finish_phase();
             return p;
           }
-          integrator_.ignore_event(0);
+          integrator_->ignore_event(0);
           continue;
         }
         finish_phase();
@@ -305,7 +308,9 @@ class CollisionRun {
     std::array<Event, detail::kMaxEvents> events{};
     int count = 0;
     events[static_cast<std::size_t>(count++)] = Event::max_compression;
-    if (options_.ends.contains(CollisionEnd::delayed_recovery))
+    // The delayed-recovery end is watched also where only the tail method needs it (to take over there).
+    if ((options_.ends.contains(CollisionEnd::delayed_recovery) || tail_ != nullptr) &&
+        !result_.value[CollisionEnd::delayed_recovery])
       events[static_cast<std::size_t>(count++)] = Event::delayed_recovery_end;
     if (switch_x > 0.0) {
       events[static_cast<std::size_t>(count++)] = Event::below_switch;
@@ -326,11 +331,17 @@ class CollisionRun {
         switch (events[i]) {
           case Event::max_compression:
             found_max_compression(p);
-            integrator_.ignore_event(static_cast<int>(i));
+            integrator_->ignore_event(static_cast<int>(i));
             break;
           case Event::delayed_recovery_end:
-            result_.value[CollisionEnd::delayed_recovery] = end_result(law_, p);
-            integrator_.ignore_event(static_cast<int>(i));
+            if (options_.ends.contains(CollisionEnd::delayed_recovery))
+              result_.value[CollisionEnd::delayed_recovery] = end_result(law_, p);
+            integrator_->ignore_event(static_cast<int>(i));
+            if (tail_ != nullptr && pending()) {
+              finish_phase();
+              integrator_ = std::exchange(tail_, nullptr);
+              return time_phase(form, p.tau, step.state, switch_x);
+            }
             break;
           case Event::naive_end:
             result_.value[CollisionEnd::naive] = end_result(law_, p);
@@ -354,7 +365,8 @@ class CollisionRun {
   const ContactLaw& law_;
   const SolveOptions& options_;
   const detail::SolvePlan& plan_;
-  CvodeIntegrator& integrator_;
+  CvodeIntegrator* integrator_;
+  CvodeIntegrator* tail_;
   Form form_ = Form::time;
   Accumulated result_;
 };
@@ -376,8 +388,12 @@ CollisionResult CollisionSolver::solve(const ContactLaw& law, const SolveOptions
   // Hand-made laws (ContactLaw::unchecked) are natural and integrated as given.
   const ContactLaw natural = law.is_natural() ? law : law.natural_form();
   if (options.method == Method::taylor) return solve_with_taylor(natural, options);
+  const auto run_plan = [&](const detail::SolvePlan& plan) {
+    CvodeIntegrator* tail = plan.tail_method ? &impl_->integrator(*plan.tail_method) : nullptr;
+    return CollisionRun(natural, options, plan, impl_->integrator(plan.method), tail).run();
+  };
   const detail::SolvePlan plan = detail::plan_solve(natural, options);
-  CollisionResult result = CollisionRun(natural, options, plan, impl_->integrator(plan.method)).run();
+  CollisionResult result = run_plan(plan);
   // A naive end whose conditioning only the solve reveals (constant damping close to the largest ζ with a
   // naive end): solve again with the local tolerances tightened accordingly.
   const auto& naive = result[CollisionEnd::naive];
@@ -392,7 +408,7 @@ CollisionResult CollisionSolver::solve(const ContactLaw& law, const SolveOptions
         options.tolerance * detail::kSmallestRelativeTolerance / refined.relative_tolerance,
         options.tolerance));
   }
-  CollisionResult second = CollisionRun(natural, options, refined, impl_->integrator(refined.method)).run();
+  CollisionResult second = run_plan(refined);
   second.stats += result.stats;
   return second;
 }
