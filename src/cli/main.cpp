@@ -57,15 +57,12 @@ int run(int argc, char** argv) {
   } catch (const cli::Interrupted& e) {
     std::fprintf(stderr, "restitution: %s: stopped, nothing half-written\n", e.what());
     return 128 + e.signal_number();
-  } catch (const cli::IoError& e) {
+  } catch (const IoError& e) {  // cli::IoError is the library's IoError
     std::fprintf(stderr, "restitution: I/O error: %s\n", cli::one_line(e.what()).c_str());
     return 3;
   } catch (const InvalidInput& e) {
     std::fprintf(stderr, "restitution: error: %s\n", cli::one_line(e.what()).c_str());
     return 2;
-  } catch (const IoError& e) {
-    std::fprintf(stderr, "restitution: I/O error: %s\n", cli::one_line(e.what()).c_str());
-    return 3;
   } catch (const NumericalFailure& e) {
     std::fprintf(stderr, "restitution: numerical failure: %s\n", cli::one_line(e.what()).c_str());
     return 1;
@@ -82,7 +79,7 @@ int main(int argc, char** argv) {
     const int status = run(argc, argv);
     restitution::cli::flush_standard_output();  // a result (or help) that never reached stdout is no success
     return status;
-  } catch (const restitution::cli::IoError& e) {
+  } catch (const restitution::IoError& e) {
     std::fprintf(stderr, "restitution: I/O error: %s\n", restitution::cli::one_line(e.what()).c_str());
     return 3;
   } catch (...) {  // the last line of defence: never an abort or a stack trace

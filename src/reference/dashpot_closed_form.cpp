@@ -23,8 +23,10 @@ double dashpot_delayed_duration(double r) {
     return std::atan2(2.0 * r * w, 2.0 * r * r - 1.0) / w;  // the branch in (0, π)
   }
   if (r > 1.0) {
-    const double w = std::sqrt(r * r - 1.0);
-    return std::atanh(2.0 * r * w / (2.0 * r * r - 1.0)) / w;
+    // atanh(2rw / (2r² − 1)) = 2 acosh(r): the same value without an argument near 1, whose rounding cost
+    // ~1e-12 relative (r = 10) in the atanh form.
+    const double w = std::sqrt((r - 1.0) * (r + 1.0));  // r - 1 is exact; r² - 1 would cancel near r = 1
+    return 2.0 * std::acosh(r) / w;
   }
   return 2.0;
 }
