@@ -58,9 +58,10 @@ TEST(FastCertification, AgreesWithTheTaylorEngineOnRandomZeta) {
   options.method = Method::taylor;
   Worst worst_naive, worst_delayed, worst_duration;
   long naive_points = 0, delayed_points = 0;
+  TaylorEngine taylor;
   for (const double zeta : certification_points()) {
     options.ends = zeta <= kTaylorNaiveZetaMax ? EndSet::both() : EndSet{CollisionEnd::delayed_recovery};
-    const CollisionResult r = solve_with_taylor(ContactLaw::hertz_natural(zeta), options);
+    const CollisionResult r = taylor.solve(ContactLaw::hertz_natural(zeta), options);
     const auto check = [&](const EndResult& end, CollisionEnd which, Worst& worst) {
       const double e = std::max(relative(fast::eps(zeta, which), end.eps),
                                 relative(fast::one_minus_eps(zeta, which), end.one_minus_eps));

@@ -1,7 +1,7 @@
 #pragma once
-// The collision solver: shoots the equation of motion of a ContactLaw with CVODE and detects the
-// end(s) of the collision as events. One solver holds one CVODE integrator per method and reuses it
-// across solves; use one solver per thread.
+// The collision solver: shoots the equation of motion of a ContactLaw with the engine of the requested
+// method (CVODE BDF/Adams or the Taylor method) and detects the end(s) of the collision. One solver holds
+// its engines' integrators and reuses them across solves; use one solver per thread.
 #include <array>
 #include <cstddef>
 #include <initializer_list>
@@ -178,7 +178,7 @@ class CollisionSolver {
   CollisionSolver& operator=(const CollisionSolver&) = delete;
 
   // Throws InvalidInput for options out of range or an end that does not exist (the naive end of an
-  // overdamped dash-pot), NumericalFailure when CVODE fails.
+  // overdamped dash-pot), NumericalFailure when the integration fails.
   CollisionResult solve(const ContactLaw& law, const SolveOptions& options);
 
  private:

@@ -2,23 +2,15 @@
 
 #include <fmt/core.h>
 
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <optional>
-#include <utility>
+#include <memory>
+#include <string>
 
-#include "core/cvode_integrator.hpp"
-#include "core/tolerance_policy.hpp"
+#include "core/cvode_engine.hpp"
+#include "engine/engine.hpp"
 #include "restitution/errors.hpp"
 #include "taylor/taylor_engine.hpp"
 
 namespace restitution {
-
-using detail::CvodeIntegrator;
-using detail::Event;
-using detail::Form;
-using detail::State;
 
 const char* method_name(Method method) {
   switch (method) {
@@ -75,25 +67,25 @@ double min_tolerance(Method method) {
   return method == Method::taylor ? kMinTaylorTolerance : kMinTolerance;
 }
 
-Method resolve_method(const ContactLaw& law, Method requested, EndSet ends) {
-  if (requested != Method::automatic) return requested;
-  // Measured (docs/accuracy.md): Adams is cheaper while the damping is weak, BDF once it makes the
-  // problem stiff. Only the naive tail is stiff: up to the delayed-recovery end Adams takes 2-4x fewer
-  // steps than BDF at every ζ up to 1e4.
-  if (!ends.contains(CollisionEnd::naive)) return Method::adams;
-  return law.parameter() < 5.0 ? Method::adams : Method::bdf;
-}
+namespace {
+
+// The engines, one per kind, and which computes a method: the Taylor engine for taylor, CVODE for bdf, adams
+// and automatic (CVODE resolves automatic to BDF or Adams itself). The one place that maps methods to
+// engines.
+struct Engines {
+  CvodeEngine cvode;
+  TaylorEngine taylor;
+
+  Engine& operator()(Method method) {
+    if (method == Method::taylor) return taylor;
+    return cvode;
+  }
+};
+
+}  // namespace
 
 struct CollisionSolver::Impl {
-  sundials::Context context;
-  std::optional<CvodeIntegrator> bdf;
-  std::optional<CvodeIntegrator> adams;
-
-  CvodeIntegrator& integrator(Method method) {
-    auto& slot = method == Method::adams ? adams : bdf;
-    if (!slot) slot.emplace(method, context);
-    return *slot;
-  }
+  Engines engines;
 };
 
 CollisionSolver::CollisionSolver() : impl_(std::make_unique<Impl>()) {}
@@ -101,284 +93,9 @@ CollisionSolver::~CollisionSolver() = default;
 CollisionSolver::CollisionSolver(CollisionSolver&&) noexcept = default;
 CollisionSolver& CollisionSolver::operator=(CollisionSolver&&) noexcept = default;
 
-namespace {
-
-// A point of the trajectory in the law's own units, whatever form produced it.
-struct Point {
-  double tau, x, velocity, dissipation;
-};
-
-Point point_of(const ContactLaw& law, Form form, double t, const State& s) {
-  if (form == Form::time) return {t, s[detail::kFirst], s[detail::kVelocity], s[detail::kDissipation]};
-  return {s[detail::kFirst], law.compression_of(t), s[detail::kVelocity], s[detail::kDissipation]};
-}
-
-const char* end_names(EndSet ends) {
-  if (ends == EndSet::both()) return "both ends";
-  return ends.contains(CollisionEnd::naive) ? "the naive end" : "the delayed-recovery end";
-}
-
-EndResult end_result(const ContactLaw& law, const Point& p) {
-  EndResult end;
-  const double v0 = law.initial_velocity();
-  const double x = std::max(p.x, 0.0);  // a root located a rounding error past x = 0
-  const EndValues values = law.end_values(x, p.velocity, p.dissipation);
-  end.eps = values.eps;
-  end.one_minus_eps = values.one_minus_eps;
-  end.tau = p.tau / law.time_scale();
-  end.x = x / law.length_scale();
-  end.velocity = p.velocity / v0;
-  end.dissipated_energy = law.damping() * p.dissipation / (v0 * v0);
-  return end;
-}
-
-// Runs the phases of one collision on one integrator and collects what was asked for.
-class CollisionRun {
- public:
-  // `tail`, if given, takes over from `integrator` at the delayed-recovery end while the naive end is
-  // pending (a stiff method for the overdamped tail after a non-stiff one for the collision itself).
-  CollisionRun(const ContactLaw& law, const SolveOptions& options, const detail::SolvePlan& plan,
-               CvodeIntegrator& integrator, CvodeIntegrator* tail = nullptr)
-      : law_(law), options_(options), plan_(plan), integrator_(&integrator), tail_(tail) {
-    result_.value.law = law.kind();
-    result_.value.parameter = law.parameter();
-    result_.value.speed_independent = law.speed_independent();
-    result_.value.tolerance = options.tolerance;
-    result_.value.method = plan.tail_method.value_or(plan.method);
-  }
-
-  CollisionResult run() {
-    const State start{0.0, law_.initial_velocity(), 0.0};
-    if (options_.keep_trajectory) record({0.0, 0.0, law_.initial_velocity(), 0.0});
-    if (!plan_.smooth_ends) {
-      time_phase(Form::time, 0.0, start, /*switch_x=*/-1.0);
-    } else {
-      // Start: u from 0 until x' has halved (or x = start_phase_x); then τ around maximal compression
-      // until x falls below 0.9 times the compression where the start phase ended; then u down to 0.
-      const Point a = compression_phase(0.0, law_.smooth_variable(plan_.start_phase_x), start, true);
-      Point b = a;
-      if (pending()) b = time_phase(Form::time, a.tau, {a.x, a.velocity, a.dissipation}, 0.9 * a.x);
-      if (pending()) end_phase(b);
-    }
-    if (!result_.max_compression_found) throw failure("the collision ended without a maximal compression");
-    return std::move(result_.value);
-  }
-
- private:
-  struct Accumulated {
-    CollisionResult value;
-    bool max_compression_found = false;
-  };
-
-  [[nodiscard]] bool pending() const {
-    return std::any_of(kCollisionEnds.begin(), kCollisionEnds.end(), [this](CollisionEnd end) {
-      return options_.ends.contains(end) && !result_.value[end];
-    });
-  }
-
-  [[nodiscard]] NumericalFailure failure(const std::string& what) const {
-    return NumericalFailure{fmt::format("{} (law {}, {}={}, {}, tolerance {:g}, method {})", what,
-                                        law_name(law_.kind()), law_.parameter_name(), law_.parameter(),
-                                        end_names(options_.ends), options_.tolerance,
-                                        method_name(plan_.method))};
-  }
-
-  // The naive end was requested but the state entered a region from which x never returns to 0.
-  [[noreturn]] void no_naive_end(const Point& p) {
-    finish_phase();
-    throw InvalidInput(fmt::format(
-        "the naive end does not exist for law {} at zeta={}: from tau={:.6g} (x={:.6g}, x'={:.6g}) the "
-        "overlap "
-        "approaches 0 only as tau -> infinity (eps = 0 in the sense of the overdamped dash-pot); ask for the "
-        "delayed-recovery end",
-        law_name(law_.kind()), law_.zeta(), p.tau, p.x, p.velocity));
-  }
-
-  // Whether a phase watches Event::naive_end_excluded: the naive end is pending and only the solve can tell
-  // whether it exists.
-  [[nodiscard]] bool watch_naive_end_exclusion() const {
-    return options_.ends.contains(CollisionEnd::naive) && !result_.value[CollisionEnd::naive] &&
-           law_.naive_end_existence() == NaiveEndExistence::decided_by_solve && law_.zeta() > 0.0;
-  }
-
-  void record(const Point& p) {
-    result_.value.trajectory.push_back(
-        {p.tau / law_.time_scale(), p.x / law_.length_scale(), p.velocity / law_.initial_velocity(),
-         law_.acceleration(p.x, p.velocity) * law_.time_scale() / law_.initial_velocity()});
-  }
-
-  void begin(const detail::PhaseSettings& settings, double t0, const State& state, const Event* events,
-             int count) {
-    try {
-      integrator_->start(law_, settings, t0, state, events, count);
-    } catch (const NumericalFailure& e) {
-      throw failure(e.what());
-    }
-  }
-
-  CvodeIntegrator::Step advance() {
-    try {
-      CvodeIntegrator::Step step = integrator_->advance();
-      if (options_.keep_trajectory) record(point_of(law_, form_, step.t, step.state));
-      return step;
-    } catch (const NumericalFailure& e) {
-      result_.value.stats += integrator_->phase_stats();
-      throw failure(e.what());
-    }
-  }
-
-  void finish_phase() { result_.value.stats += integrator_->phase_stats(); }
-
-  void found_max_compression(const Point& p) {
-    if (result_.max_compression_found) return;
-    result_.value.max_compression = {p.tau / law_.time_scale(), p.x / law_.length_scale()};
-    result_.max_compression_found = true;
-  }
-
-  // Compression form from u0 towards u_stop. Going up (the start) it stops where x' has halved; going
-  // down (the end) it watches the delayed-recovery end and reaches the naive end exactly at u = 0.
-  Point compression_phase(double u0, double u_stop, const State& state, bool is_start) {
-    form_ = Form::compression;
-    detail::PhaseSettings settings{Form::compression, plan_.relative_tolerance,
-                                   plan_.absolute_tolerance_compression, u_stop};
-    settings.max_steps = plan_.max_steps;
-    settings.every_step = options_.keep_trajectory;
-    std::array<Event, detail::kMaxEvents> events{};
-    int count = 0;
-    if (is_start) {
-      events[static_cast<std::size_t>(count++)] = Event::velocity_halved;
-    } else if (options_.ends.contains(CollisionEnd::delayed_recovery) &&
-               !result_.value[CollisionEnd::delayed_recovery]) {
-      events[static_cast<std::size_t>(count++)] = Event::delayed_recovery_end;
-    }
-    const int excluded = !is_start && watch_naive_end_exclusion() ? count++ : -1;
-    if (excluded >= 0) events[static_cast<std::size_t>(excluded)] = Event::naive_end_excluded;
-    begin(settings, u0, state, events.data(), count);
-    while (true) {
-      const CvodeIntegrator::Step step = advance();
-      const Point p = point_of(law_, Form::compression, step.t, step.state);
-      if (excluded >= 0 && step.events_found[static_cast<std::size_t>(excluded)]) no_naive_end(p);
-      if (step.reached_stop || (count > 0 && excluded != 0 && step.events_found[0])) {
-        if (!is_start && step.events_found[0]) {
-          result_.value[CollisionEnd::delayed_recovery] = end_result(law_, p);
-          if (!pending()) {
-            finish_phase();
-            return p;
-          }
-          integrator_->ignore_event(0);
-          continue;
-        }
-        finish_phase();
-        return p;
-      }
-    }
-  }
-
-  void end_phase(const Point& b) {
-    const Point c =
-        compression_phase(law_.smooth_variable(b.x), 0.0, {b.tau, b.velocity, b.dissipation}, false);
-    if (!pending()) return;
-    // Reached u = 0: the naive end, exactly.
-    const Point naive{c.tau, 0.0, c.velocity, c.dissipation};
-    if (options_.ends.contains(CollisionEnd::naive))
-      result_.value[CollisionEnd::naive] = end_result(law_, naive);
-    if (options_.ends.contains(CollisionEnd::delayed_recovery) &&
-        !result_.value[CollisionEnd::delayed_recovery]) {
-      // The force factor ζx' + x^{a-b} reaches zero at x = (ζ|x'|)^{1/(a-b)} (natural units), which for tiny
-      // ζ (below about 1e-295 for viscoelastic Hertz) lies within rounding of u = 0 where CVODE cannot
-      // separate it from the naive end. The ends then differ in 1 - ε by a relative ζ^{(b+1)/(a-b)}
-      // (ζ^{3/2} for Hertz): take the naive end's ε at that x.
-      if (law_.damping() > law_.indistinguishable_ends_zeta()) {
-        throw failure("no delayed-recovery end before the overlap vanished");
-      }
-      result_.value[CollisionEnd::delayed_recovery] = end_result(law_, naive);
-      result_.value[CollisionEnd::delayed_recovery]->x = law_.force_zero_compression(naive.velocity);
-    }
-  }
-
-  // Time form from τ0. With switch_x > 0 it hands over to the end phase once x < switch_x on the way back;
-  // otherwise it watches the naive end itself.
-  Point time_phase(Form form, double tau0, const State& state, double switch_x) {
-    form_ = form;
-    detail::PhaseSettings settings{form, plan_.relative_tolerance, plan_.absolute_tolerance_time,
-                                   plan_.time_limit};
-    settings.switch_x = switch_x;
-    settings.max_steps = plan_.max_steps;
-    settings.every_step = options_.keep_trajectory;
-    std::array<Event, detail::kMaxEvents> events{};
-    int count = 0;
-    events[static_cast<std::size_t>(count++)] = Event::max_compression;
-    // The delayed-recovery end is watched also where only the tail method needs it (to take over there).
-    if ((options_.ends.contains(CollisionEnd::delayed_recovery) || tail_ != nullptr) &&
-        !result_.value[CollisionEnd::delayed_recovery])
-      events[static_cast<std::size_t>(count++)] = Event::delayed_recovery_end;
-    if (switch_x > 0.0) {
-      events[static_cast<std::size_t>(count++)] = Event::below_switch;
-    } else if (options_.ends.contains(CollisionEnd::naive)) {
-      events[static_cast<std::size_t>(count++)] = Event::naive_end;
-    }
-    if (watch_naive_end_exclusion()) events[static_cast<std::size_t>(count++)] = Event::naive_end_excluded;
-    begin(settings, tau0, state, events.data(), count);
-    while (true) {
-      const CvodeIntegrator::Step step = advance();
-      const Point p = point_of(law_, form, step.t, step.state);
-      if (step.reached_stop) {
-        finish_phase();
-        throw failure(fmt::format("no end of the collision before tau={:g}", p.tau / law_.time_scale()));
-      }
-      for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
-        if (!step.events_found[i]) continue;
-        switch (events[i]) {
-          case Event::max_compression:
-            found_max_compression(p);
-            integrator_->ignore_event(static_cast<int>(i));
-            break;
-          case Event::delayed_recovery_end:
-            if (options_.ends.contains(CollisionEnd::delayed_recovery))
-              result_.value[CollisionEnd::delayed_recovery] = end_result(law_, p);
-            integrator_->ignore_event(static_cast<int>(i));
-            if (tail_ != nullptr && pending()) {
-              finish_phase();
-              integrator_ = std::exchange(tail_, nullptr);
-              return time_phase(form, p.tau, step.state, switch_x);
-            }
-            break;
-          case Event::naive_end:
-            result_.value[CollisionEnd::naive] = end_result(law_, p);
-            break;
-          case Event::below_switch:
-            finish_phase();
-            return p;
-          case Event::naive_end_excluded:
-            no_naive_end(p);
-          case Event::velocity_halved:
-            break;
-        }
-      }
-      if (!pending()) {
-        finish_phase();
-        return p;
-      }
-    }
-  }
-
-  const ContactLaw& law_;
-  const SolveOptions& options_;
-  const detail::SolvePlan& plan_;
-  CvodeIntegrator* integrator_;
-  CvodeIntegrator* tail_;
-  Form form_ = Form::time;
-  Accumulated result_;
-};
-
-}  // namespace
-
 void check_solvable(const ContactLaw& law, const SolveOptions& options) {
-  if (options.method == Method::taylor) {
-    check_taylor_request(law, options);
-  } else {
-    check_solve_request(law, options);
-  }
+  Engines engines;  // cheap: no engine allocates anything before its first solve
+  engines(options.method).check(law, options);
 }
 
 CollisionResult CollisionSolver::solve(const ContactLaw& law, const SolveOptions& options) {
@@ -387,30 +104,7 @@ CollisionResult CollisionSolver::solve(const ContactLaw& law, const SolveOptions
   // (v^{4/5}) under- or overflow the absolute tolerances at extreme speeds (v = 1e-150 m/s).
   // Hand-made laws (ContactLaw::unchecked) are natural and integrated as given.
   const ContactLaw natural = law.is_natural() ? law : law.natural_form();
-  if (options.method == Method::taylor) return solve_with_taylor(natural, options);
-  const auto run_plan = [&](const detail::SolvePlan& plan) {
-    CvodeIntegrator* tail = plan.tail_method ? &impl_->integrator(*plan.tail_method) : nullptr;
-    return CollisionRun(natural, options, plan, impl_->integrator(plan.method), tail).run();
-  };
-  const detail::SolvePlan plan = detail::plan_solve(natural, options);
-  CollisionResult result = run_plan(plan);
-  // A naive end whose conditioning only the solve reveals (constant damping close to the largest ζ with a
-  // naive end): solve again with the local tolerances tightened accordingly.
-  const auto& naive = result[CollisionEnd::naive];
-  const double conditioning = naive ? natural.naive_end_conditioning(naive->eps) : 1.0;
-  if (conditioning >= 1.0) return result;
-  const detail::SolvePlan refined = detail::plan_solve(natural, options, conditioning);
-  if (refined.relative_tolerance < detail::kSmallestRelativeTolerance) {
-    throw InvalidInput(fmt::format(
-        "the naive end of natural {} at zeta={} (eps ~ {:.2g}: close to the largest zeta with a naive end, "
-        "docs/contact_laws.md) is delivered only to tolerance >= {:.2g}, got {:g}",
-        law_name(natural.kind()), natural.zeta(), naive->eps,
-        options.tolerance * detail::kSmallestRelativeTolerance / refined.relative_tolerance,
-        options.tolerance));
-  }
-  CollisionResult second = run_plan(refined);
-  second.stats += result.stats;
-  return second;
+  return impl_->engines(options.method).solve(natural, options);
 }
 
 }  // namespace restitution

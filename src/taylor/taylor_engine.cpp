@@ -79,7 +79,7 @@ EndResult end_result(const ContactLaw& law, const taylor::TaylorPoint<double>& p
 
 }  // namespace
 
-void check_taylor_request(const ContactLaw& law, const SolveOptions& options) {
+void TaylorEngine::check(const ContactLaw& law, const SolveOptions& options) const {
   check_solve_request(law, options);
   if (options.keep_trajectory) {
     throw InvalidInput("method taylor does not record trajectories: use --method bdf or adams");
@@ -100,8 +100,8 @@ void check_taylor_request(const ContactLaw& law, const SolveOptions& options) {
   }
 }
 
-CollisionResult solve_with_taylor(const ContactLaw& law, const SolveOptions& options) {
-  check_taylor_request(law, options);
+CollisionResult TaylorEngine::solve(const ContactLaw& law, const SolveOptions& options) {
+  check(law, options);
   const bool hertz = law.kind() == LawKind::viscoelastic_hertz;
   taylor::TaylorCollision<double> run(settings_for(law, options), law.parameter());
   taylor::TaylorOutcome<double> out;

@@ -3,6 +3,7 @@
 // smooth formulation of the collision (u = sqrt(x) near x = 0, τ around maximal compression; docs/design.md
 // §4). Same results and accuracy contract as the CVODE engine; reached through CollisionSolver::solve with
 // Method::taylor, or directly here (it holds no state).
+#include "engine/engine.hpp"
 #include "restitution/collision_solver.hpp"
 
 namespace restitution {
@@ -16,10 +17,13 @@ inline constexpr double kMinTaylorTolerance = 1e-13;
 // ~ζ^{5/3} steps; CVODE's BDF is the engine there.
 inline constexpr double kTaylorNaiveZetaMax = 100.0;
 
-// Throws InvalidInput for options outside the engine's range (tolerance, trajectory, the naive end beyond
-// kTaylorNaiveZetaMax) and NumericalFailure if the integration fails.
-CollisionResult solve_with_taylor(const ContactLaw& law, const SolveOptions& options);
-// The InvalidInput checks of solve_with_taylor alone, without integrating.
-void check_taylor_request(const ContactLaw& law, const SolveOptions& options);
+class TaylorEngine final : public Engine {
+ public:
+  // Refuses options outside the engine's range: the tolerance, trajectories, laws other than
+  // viscoelastic Hertz and the dash-pot, the naive end beyond kTaylorNaiveZetaMax.
+  void check(const ContactLaw& law, const SolveOptions& options) const override;
+  // Integrates `law` as given: the caller (CollisionSolver) passes the natural form.
+  CollisionResult solve(const ContactLaw& law, const SolveOptions& options) override;
+};
 
 }  // namespace restitution

@@ -1,0 +1,33 @@
+#pragma once
+// The CVODE engine (`--method bdf|adams|auto`): BDF or Adams on the smooth formulation, with tolerances from
+// the tolerance policy. Holds one integrator per method, reused across solves; one engine per thread.
+#include <optional>
+
+#include "core/cvode_integrator.hpp"
+#include "engine/engine.hpp"
+#include "sundials/handles.hpp"
+
+namespace restitution {
+
+class CvodeEngine final : public Engine {
+ public:
+  CvodeEngine() = default;  // allocates no SUNDIALS object before the first solve: cheap for a check
+  ~CvodeEngine() override = default;
+  CvodeEngine(const CvodeEngine&) = delete;
+  CvodeEngine& operator=(const CvodeEngine&) = delete;
+  CvodeEngine(CvodeEngine&&) = delete;
+  CvodeEngine& operator=(CvodeEngine&&) = delete;
+
+  void check(const ContactLaw& law, const SolveOptions& options) const override;
+  // Method::automatic is resolved here, to BDF or Adams (resolve_method).
+  CollisionResult solve(const ContactLaw& law, const SolveOptions& options) override;
+
+ private:
+  detail::CvodeIntegrator& integrator(Method method);
+
+  std::optional<sundials::Context> context_;  // before the integrators, which use it until destroyed
+  std::optional<detail::CvodeIntegrator> bdf_;
+  std::optional<detail::CvodeIntegrator> adams_;
+};
+
+}  // namespace restitution
