@@ -10,6 +10,7 @@
 #include "cli_runner.hpp"
 #include "dem/deck.hpp"
 #include "dem/deck_eps.hpp"
+#include "dem/lines_check.hpp"
 #include "dem/yade_conversion.hpp"
 #include "material_examples.hpp"
 #include "restitution/errors.hpp"
@@ -82,6 +83,50 @@ INSTANTIATE_TEST_SUITE_P(Dem, EachCode,
                          testing::Values(Code::lammps, Code::liggghts, Code::mercurydpm, Code::yade,
                                          Code::chrono),
                          [](const auto& info) { return std::string(dem::code_name(info.param)); });
+
+TEST(DemLines, CalibratedLinesGiveTheMeasuredEpsAtItsSpeed) {
+  // Calibrated to ε = 0.7 at 2 m/s, the lines give that ε at 2 m/s, and the speeds and the A agree with an
+  // independent solve of the law.
+  for (const Code code : {Code::lammps, Code::yade}) {
+    dem::LinesRequest request;
+    request.code = code;
+    request.material = test_support::rubber_like();
+    request.damping.eps = 0.7;
+    request.damping.velocity_m_s = 2.0;
+    request.speeds_m_s = {0.5, 2.0, 8.0};
+    const dem::LinesResult r = dem::check_lines(request);
+    ASSERT_EQ(r.eps.size(), 3U);
+    EXPECT_NEAR(r.eps[1].eps, 0.7, 1e-9) << dem::code_name(code);
+    const dem::Pair pair = dem::pair_of(request.material);
+    CollisionSolver solver;
+    for (const auto& e : r.eps) {
+      EXPECT_NEAR(e.eps,
+                  dem::eps_for(law_beta(pair, r.dissipative_constant_s), e.velocity_m_s,
+                               CollisionEnd::delayed_recovery, 1e-10, solver),
+                  1e-9);
+    }
+    EXPECT_EQ(r.yade.has_value(), code == Code::yade);
+  }
+}
+
+TEST(DemLines, ComparisonWithoutTheCodeCarriesOnlyThePrediction) {
+  const Material m = test_support::rubber_like();
+  const dem::CodeComparison c =
+      dem::compare_with_code(Code::lammps, m, {kA, std::nullopt, std::nullopt},
+                             CollisionEnd::delayed_recovery, {0.1, 1.0}, 0.0, 1e-10, Method::automatic, "");
+  EXPECT_EQ(c.dissipative_constant_s, kA);
+  EXPECT_FALSE(c.measured.has_value());
+  EXPECT_TRUE(c.relative_difference.empty());
+  ASSERT_EQ(c.predicted_eps.size(), 2U);
+  CollisionSolver solver;
+  const double beta = law_beta(dem::pair_of(m), kA);
+  EXPECT_NEAR(c.predicted_eps[0], dem::eps_for(beta, 0.1, CollisionEnd::delayed_recovery, 1e-10, solver),
+              1e-9);
+  EXPECT_GT(c.predicted_eps[0], c.predicted_eps[1]);  // ε falls with the impact speed
+  EXPECT_THROW(dem::compare_with_code(Code::lammps, m, {kA, 0.5, 1.0}, CollisionEnd::delayed_recovery, {1.0},
+                                      0.0, 1e-10, Method::automatic, ""),
+               InvalidInput);  // A given and calibrated: which one?
+}
 
 TEST(DemDeck, OtherSizesGetWhatEachConventionImplies) {
   const dem::Pair pair = dem::pair_of(test_support::rubber_like());

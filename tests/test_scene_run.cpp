@@ -171,22 +171,36 @@ TEST(SceneRun, WorkPrecisionStudyMeasuresAgainstTheReferenceAndSummarises) {
     EXPECT_EQ(study.work_precision[i].zeta, direct[i].zeta);
     EXPECT_EQ(study.work_precision[i].error, direct[i].error);
   }
-  // A heading and one line per engine and end, whose best error is the smallest worst-over-ζ error.
-  ASSERT_EQ(study.summary.size(), 1U + 4U);
-  double best_bdf_naive = 1.0;
-  for (const double tolerance : work_precision_tolerances()) {
-    double worst = -1.0;
-    for (const WorkPrecisionRow& row : direct) {
-      if (row.engine == "bdf" && row.end == "naive" && row.tolerance == tolerance)
-        worst = std::max(worst, row.error);
+  EXPECT_EQ(study.gap, StudyGap::none);
+  EXPECT_EQ(study.reference_file, settings.reference_file);
+  // One highlight per engine and end, whose best error is the smallest worst-over-ζ error of the ladder and
+  // whose quoted group is the one at 1e-10.
+  ASSERT_EQ(study.work_precision_highlights.size(), 4U);
+  for (const WorkPrecisionHighlight& h : study.work_precision_highlights) {
+    SCOPED_TRACE(h.best.engine + " " + h.best.end);
+    EXPECT_EQ(h.quoted.engine, h.best.engine);
+    EXPECT_EQ(h.quoted.end, h.best.end);
+    double best = 1.0;
+    for (const double tolerance : work_precision_tolerances()) {
+      double worst = -1.0;
+      for (const WorkPrecisionRow& row : direct) {
+        if (row.engine == h.best.engine && row.end == h.best.end && row.tolerance == tolerance)
+          worst = std::max(worst, row.error);
+      }
+      if (worst >= 0.0) best = std::min(best, worst);
+      if (tolerance == kQuotedTolerance) EXPECT_EQ(h.quoted.max_error, worst);
     }
-    if (worst >= 0.0) best_bdf_naive = std::min(best_bdf_naive, worst);
+    EXPECT_EQ(h.best.max_error, best);
+    EXPECT_EQ(h.quoted.tolerance, kQuotedTolerance);
   }
-  const std::string bdf_naive = fmt::format("bdf, naive end: best error {:.3g} ", best_bdf_naive);
-  EXPECT_TRUE(std::any_of(study.summary.begin(), study.summary.end(), [&](const std::string& line) {
-    return line.rfind(bdf_naive, 0) == 0;
-  })) << bdf_naive;
-  for (const std::string& line : study.summary) EXPECT_EQ(line.find("not available"), std::string::npos);
+}
+
+TEST(SceneRun, StudiesWithoutInputSayWhy) {
+  const Scene s = parse_scene("output = \"o\"\n[[work_precision]]\nname = \"wp\"\n", "t");
+  const SceneResults r = run_scene(s, plan_scene(s));  // no reference file in the settings
+  ASSERT_EQ(r.studies.size(), 1U);
+  EXPECT_EQ(r.studies[0].gap, StudyGap::no_reference_file);
+  EXPECT_TRUE(r.studies[0].work_precision.empty());
 }
 
 TEST(SceneRun, WorkPrecisionStudyRejectsUnknownEnginesAndBadRepeats) {

@@ -98,7 +98,9 @@ struct CollisionResult {
   // ε does not depend on the impact speed for this law (speed_exponent(law) == 0: Tsuji, the dash-pot).
   bool speed_independent = false;
   double tolerance = 0.0;
-  Method method = Method::bdf;  // the method actually used (never automatic)
+  // The method actually used (never automatic); auto's naive end at ζ >= 5 reports bdf, which takes over
+  // from adams at the delayed-recovery end (docs/accuracy.md).
+  Method method = Method::bdf;
   MaxCompression max_compression;
   SolverStats stats;
   std::vector<TrajectoryPoint> trajectory;  // empty unless SolveOptions::keep_trajectory

@@ -14,11 +14,15 @@ double small_part(const EndResult& r) {
   return r.eps < 0.5 ? r.eps : r.one_minus_eps;
 }
 
-std::string failure_reason(const NumericalFailure& e) {
-  std::string what = e.what();
+void record_failure(const NumericalFailure& e, EngineCheck& check) {
+  const std::string what = e.what();
   // The solver's step bound (SolveOptions::max_steps_per_phase) was reached.
-  if (what.find("too much work") != std::string::npos) return "too much work (stiff)";
-  return what;
+  if (what.find("too much work") != std::string::npos) {
+    check.failure = EngineFailure::too_much_work;
+  } else {
+    check.failure = EngineFailure::other;
+    check.failure_message = what;
+  }
 }
 
 double decade_of(double zeta) {
@@ -45,7 +49,7 @@ StabilityPoint check_point(CollisionSolver& solver, double zeta, CollisionEnd en
   tight.method = production.method;
   p.self_convergence = relative_difference(p.result, end_of(solver.solve(law, tight), end));
   if (p.self_convergence > o.tolerance)
-    p.flags.push_back(fmt::format("self-convergence {:.3g} > tolerance", p.self_convergence));
+    p.flags.push_back({StabilityFlagKind::self_convergence, production.method, p.self_convergence});
 
   for (const Method method : kCrossCheckedMethods) {
     EngineCheck check;
@@ -63,13 +67,12 @@ StabilityPoint check_point(CollisionSolver& solver, double zeta, CollisionEnd en
         check.steps = r.stats.steps;
         check.relative_difference = relative_difference(end_of(r, end), p.result);
       } catch (const NumericalFailure& e) {
-        check.failure = failure_reason(e);
+        record_failure(e, check);
       }
     }
     // Each result is within T/3 of the truth by contract, so two engines may differ by up to 2T/3.
     if (check.solved && check.relative_difference > o.tolerance)
-      p.flags.push_back(
-          fmt::format("{} differs by {:.3g} > tolerance", method_name(method), check.relative_difference));
+      p.flags.push_back({StabilityFlagKind::engine_difference, method, check.relative_difference});
     p.engines.push_back(check);
   }
   return p;

@@ -20,12 +20,28 @@ struct StabilityOptions {
   long max_steps_per_phase = 200000;
 };
 
+// Why a cross-check engine has no result.
+enum class EngineFailure {
+  none,
+  too_much_work,  // the step bound (max_steps_per_phase) was reached: the problem is stiff for this engine
+  other,          // any other numerical failure; EngineCheck::failure_message says which
+};
+
 struct EngineCheck {
   Method method = Method::bdf;
   bool solved = false;
   double relative_difference = 0.0;  // against the production result (0 when it is the production method)
   long steps = 0;
-  std::string failure;  // why there is no result (e.g. "too much work (stiff)")
+  EngineFailure failure = EngineFailure::none;
+  std::string failure_message;  // the solver's error message, for EngineFailure::other
+};
+
+// A check that exceeded the tolerance: the self-convergence, or the difference of a cross-check engine.
+enum class StabilityFlagKind { self_convergence, engine_difference };
+struct StabilityFlag {
+  StabilityFlagKind kind = StabilityFlagKind::self_convergence;
+  Method method = Method::bdf;  // the engine, for engine_difference
+  double value = 0.0;           // the relative difference that exceeded the tolerance
 };
 
 struct StabilityPoint {
@@ -37,7 +53,7 @@ struct StabilityPoint {
   long rhs_evaluations = 0;
   double self_convergence = 0.0;  // |Δ min(ε, 1-ε)| / min(ε, 1-ε) between T and T/100
   std::vector<EngineCheck> engines;
-  std::vector<std::string> flags;  // empty: every check within the tolerance
+  std::vector<StabilityFlag> flags;  // empty: every check within the tolerance
 };
 
 struct DecadeSummary {

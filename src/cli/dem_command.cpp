@@ -10,11 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/material_options.hpp"
-#include "dem/deck.hpp"
-#include "dem/deck_eps.hpp"
-#include "dem/yade_conversion.hpp"
-#include "restitution/calibration.hpp"
-#include "restitution/errors.hpp"
+#include "dem/lines_check.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -30,78 +26,19 @@ struct DemOptions {
   bool json = false;
 };
 
-struct SpeedEps {
-  double velocity_m_s = 0.0;
-  double eps = 0.0;
-};
-
-// What YADE's own (en, vn) -> A conversion makes of the true ε at vn: the error a user typing the measured
-// ε would get.
-struct YadeCheck {
-  double true_eps = 0.0;
-  double dissipative_constant_s = 0.0;
-  double eps_at_vn = 0.0;
-};
-
-struct DemResult {
-  dem::Deck deck;
-  double dissipative_constant_s = 0.0;
-  double reference_velocity_m_s = 0.0;
-  double friction = 0.0;
-  std::vector<SpeedEps> eps;
-  std::vector<dem::SizeCheck> sizes;
-  std::optional<YadeCheck> yade;
-};
-
-double dissipative_constant(const DemOptions& o, CollisionEnd end, double k, CollisionSolver& solver) {
-  if (o.dissipative_constant.has_value() == o.eps.has_value()) {
-    throw InvalidInput("give either --eps and --velocity (calibrate) or --dissipative-constant");
-  }
-  if (o.dissipative_constant) return *o.dissipative_constant;
-  if (!o.velocity) throw InvalidInput("--eps needs --velocity, the impact speed it was measured at");
-  CalibrationRequest request;
-  request.eps = *o.eps;
-  request.velocity_m_s = *o.velocity;
-  request.end = end;
+dem::LinesResult compute(const DemOptions& o) {
+  dem::LinesRequest request;
+  request.code = dem::code_from_name(o.code);
+  request.end = end_from_name(o.end);
+  request.material = material_from(o.material);
+  request.damping = {o.dissipative_constant, o.eps, o.velocity};
+  request.speeds_m_s = o.speeds;
   request.tolerance = o.tolerance;
-  request.k = k;
-  return *calibrate(request, solver).dissipative_constant_s;
+  request.friction = o.friction;
+  return dem::check_lines(request);
 }
 
-DemResult compute(const DemOptions& o) {
-  const dem::Code code = dem::code_from_name(o.code);
-  const CollisionEnd end = o.end == "naive" ? CollisionEnd::naive : CollisionEnd::delayed_recovery;
-  if (dem::always_clamps(code) && end == CollisionEnd::naive) {
-    // Refuse before calibrating: the deck would refuse anyway.
-    (void)dem::make_deck(code, end, {}, 0.0, 1.0);
-  }
-  dem::check_friction(o.friction);
-  const Material material = material_from(o.material);
-  const dem::Pair pair = dem::pair_of(material);
-  const double k = elastic_constants(material).k;
-  CollisionSolver solver;
-  DemResult r;
-  r.dissipative_constant_s = dissipative_constant(o, end, k, solver);
-  r.reference_velocity_m_s = o.velocity.value_or(1.0);
-  r.friction = o.friction;
-  r.deck = dem::make_deck(code, end, pair, r.dissipative_constant_s, r.reference_velocity_m_s, o.friction);
-  const double v = r.reference_velocity_m_s;
-  const std::vector<double> speeds = o.speeds.empty() ? std::vector<double>{v / 10.0, v, 10.0 * v} : o.speeds;
-  const double beta = dem::deck_beta(r.deck, pair);
-  for (double s : speeds) r.eps.push_back({s, dem::eps_for(beta, s, end, o.tolerance, solver)});
-  r.sizes = dem::size_checks(r.deck, pair, r.dissipative_constant_s, v, {0.5, 2.0}, o.tolerance, solver);
-  if (code == dem::Code::yade) {
-    YadeCheck y;
-    y.true_eps = dem::eps_for(hertz_constants(k, r.dissipative_constant_s).beta, v, end, o.tolerance, solver);
-    y.dissipative_constant_s = dem::yade_dissipative_constant(y.true_eps, v, k);
-    y.eps_at_vn =
-        dem::eps_for(hertz_constants(k, y.dissipative_constant_s).beta, v, end, o.tolerance, solver);
-    r.yade = y;
-  }
-  return r;
-}
-
-void print_json(const DemResult& r) {
+void print_json(const dem::LinesResult& r) {
   JsonWriter json;
   json.begin_object();
   json.field("code", dem::code_name(r.deck.code)).field("end", end_name(r.deck.end));
@@ -139,7 +76,7 @@ void print_json(const DemResult& r) {
   fmt::print("{}\n", json.str());
 }
 
-void print_text(const DemResult& r) {
+void print_text(const dem::LinesResult& r) {
   const bool cpp = r.deck.code == dem::Code::mercurydpm || r.deck.code == dem::Code::chrono;
   const char* c = cpp ? "//" : "#";
   fmt::print("{} restitution dem --code {}: viscoelastic Hertz law, A = {:.10g} s, {} end\n", c,
@@ -196,7 +133,7 @@ void add_dem_command(CLI::App& app, Action& chosen) {
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, &chosen] {
     chosen = [o] {
-      const DemResult r = compute(*o);
+      const dem::LinesResult r = compute(*o);
       if (o->json) {
         print_json(r);
       } else {

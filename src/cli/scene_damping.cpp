@@ -3,36 +3,13 @@
 #include <fmt/core.h>
 
 #include <cmath>
-#include <limits>
 #include <string>
-
-#include "damping_check/check.hpp"
 
 namespace restitution::cli {
 namespace {
 
-using damping_check::CheckRequest;
-using damping_check::Clamp;
-using damping_check::Recipe;
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// The actual ε of `recipe` for each clamp (on, off) at each speed (one value when speed-independent).
-std::vector<std::vector<double>> actual(Recipe recipe, double eps, const std::vector<double>& speeds,
-                                        double reference_velocity, double tolerance,
-                                        CollisionSolver& solver) {
-  CheckRequest request;
-  request.recipe = recipe;
-  request.eps_requested = eps;
-  request.reference_velocity_m_s = reference_velocity;
-  request.speeds_m_s = speeds;
-  request.tolerance = tolerance;
-  const damping_check::CheckResult r = damping_check::check_recipe(request, solver);
-  std::vector<std::vector<double>> by_clamp(2);
-  for (const auto& p : r.points)
-    by_clamp[p.clamp == Clamp::on ? 0 : 1].push_back(p.actual_eps.value_or(kNaN));
-  return by_clamp;
-}
+using damping_check::ByClamp;
+using damping_check::RecipeGrid;
 
 std::string cell(const std::vector<double>& values) {
   std::string text;
@@ -44,8 +21,7 @@ std::string cell(const std::vector<double>& values) {
 
 }  // namespace
 
-DampingSection damping_section(const scene::Scene& scene, const scene::DampingCheckTask& task) {
-  CollisionSolver solver;
+DampingSection damping_section(const scene::DampingCheckTask& task, const damping_check::GridResult& grid) {
   const double v_ref = task.velocity_m_s;
   DampingSection s;
 
@@ -60,12 +36,11 @@ DampingSection damping_section(const scene::Scene& scene, const scene::DampingCh
   }
   for (const auto& c : columns) map.csv += "," + c;
   map.csv += "\n";
-  for (double e : task.eps) {
-    map.csv += fmt::format("{:.17g}", e);
-    for (const std::string& name : task.recipes) {
-      const auto a =
-          actual(damping_check::recipe_from_name(name), e, {v_ref}, v_ref, scene.tolerance, solver);
-      map.csv += fmt::format(",{:.17g},{:.17g}", a[0].front(), a[1].front());
+  for (std::size_t k = 0; k < task.eps.size(); ++k) {
+    map.csv += fmt::format("{:.17g}", task.eps[k]);
+    for (const RecipeGrid& r : grid.recipes) {
+      const ByClamp& a = r.at_reference[k];
+      map.csv += fmt::format(",{:.17g},{:.17g}", a.on.front(), a.off.front());
     }
     map.csv += "\n";
   }
@@ -92,18 +67,19 @@ DampingSection damping_section(const scene::Scene& scene, const scene::DampingCh
   s.plots.push_back(map);
 
   // Relative error over requested ε × speed for each speed-dependent recipe.
-  for (const std::string& name : task.recipes) {
-    const Recipe recipe = damping_check::recipe_from_name(name);
-    if (damping_check::recipe_setting(recipe, 0.5, scene.tolerance, solver).speed_independent()) continue;
+  for (std::size_t r = 0; r < grid.recipes.size(); ++r) {
+    const RecipeGrid& recipe = grid.recipes[r];
+    if (recipe.speed_independent) continue;
+    const std::string& name = task.recipes[r];
     DampingPlot errors;
     errors.name = fmt::format("{}_{}_error", task.name, name);
     errors.script = "damping_heatmap";
     errors.csv = "requested_eps,velocity_m_s,relative_error_clamp_on,relative_error_clamp_off\n";
-    for (double e : task.eps) {
-      const auto a = actual(recipe, e, task.speeds, v_ref, scene.tolerance, solver);
+    for (std::size_t k = 0; k < task.eps.size(); ++k) {
+      const ByClamp& e = recipe.relative_error[k];
       for (std::size_t i = 0; i < task.speeds.size(); ++i) {
-        errors.csv += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g}\n", e, task.speeds[i], (a[0][i] - e) / e,
-                                  (a[1][i] - e) / e);
+        errors.csv +=
+            fmt::format("{:.17g},{:.17g},{:.17g},{:.17g}\n", task.eps[k], task.speeds[i], e.on[i], e.off[i]);
       }
     }
     errors.args = {"--title",
@@ -116,26 +92,22 @@ DampingSection damping_section(const scene::Scene& scene, const scene::DampingCh
   }
 
   // The findings table.
-  const std::vector<double> requested{0.3, 0.5, 0.8, 0.95};
-  const std::vector<double> speeds{v_ref / 10.0, v_ref, 10.0 * v_ref};
+  const auto& speeds = grid.findings_speeds_m_s;
   std::string& md = s.findings;
   md += fmt::format(
       "Actual ε for requested ε; speed-dependent recipes at v = {:g} / {:g} / {:g} m/s (set up at {:g} "
       "m/s).\n\n"
       "| recipe | clamp |",
       speeds[0], speeds[1], speeds[2], v_ref);
-  for (double e : requested) md += fmt::format(" ε_req = {:g} |", e);
+  for (double e : damping_check::kFindingsEps) md += fmt::format(" ε_req = {:g} |", e);
   md += "\n|---|---|";
-  for (std::size_t i = 0; i < requested.size(); ++i) md += "---|";
+  for (std::size_t i = 0; i < damping_check::kFindingsEps.size(); ++i) md += "---|";
   md += "\n";
-  for (const std::string& name : task.recipes) {
-    const Recipe recipe = damping_check::recipe_from_name(name);
-    std::vector<std::vector<std::vector<double>>> by_eps;
-    by_eps.reserve(requested.size());
-    for (double e : requested) by_eps.push_back(actual(recipe, e, speeds, v_ref, scene.tolerance, solver));
-    for (int c = 0; c < 2; ++c) {
-      md += fmt::format("| {} | {} |", name, c == 0 ? "on" : "off");
-      for (const auto& a : by_eps) md += " " + cell(a[c]) + " |";
+  for (std::size_t r = 0; r < grid.recipes.size(); ++r) {
+    for (const bool clamp_on : {true, false}) {
+      md += fmt::format("| {} | {} |", task.recipes[r], clamp_on ? "on" : "off");
+      for (const ByClamp& a : grid.recipes[r].findings)
+        md += fmt::format(" {} |", cell(clamp_on ? a.on : a.off));
       md += "\n";
     }
   }

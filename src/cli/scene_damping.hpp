@@ -1,10 +1,11 @@
 #pragma once
-// A scene's [[damping_check]] section: for each DEM damping recipe the ε it really gives against the
-// requested one (clamp on and off, at the reference speed) and, for the speed-dependent recipes, the relative
-// error over requested ε × impact speed (docs/damping.md).
+// A scene's [[damping_check]] section as written (damping_check/grid.hpp computes it): for each DEM damping
+// recipe the ε it really gives against the requested one (clamp on and off, at the reference speed) and, for
+// the speed-dependent recipes, the relative error over requested ε × impact speed (docs/damping.md).
 #include <string>
 #include <vector>
 
+#include "damping_check/grid.hpp"
 #include "scene/scene.hpp"
 
 namespace restitution::cli {
@@ -22,7 +23,7 @@ struct DampingSection {
   std::string findings;            // markdown: requested 0.3 / 0.5 / 0.8 / 0.95 -> actual per recipe, clamp
 };
 
-// Throws InvalidInput for a recipe or value out of range, NumericalFailure when a solve fails.
-DampingSection damping_section(const scene::Scene& scene, const scene::DampingCheckTask& task);
+// The section's files, plots and findings from the grid the scene computed for `task` (formatting only).
+DampingSection damping_section(const scene::DampingCheckTask& task, const damping_check::GridResult& grid);
 
 }  // namespace restitution::cli

@@ -2,66 +2,41 @@
 
 #include <fmt/core.h>
 
-#include <cmath>
 
-#include "cli/dem_runner.hpp"
-#include "dem/deck.hpp"
-#include "dem/deck_eps.hpp"
-#include "restitution/calibration.hpp"
+#include "dem/lines_check.hpp"
 #include "restitution/material.hpp"
 
 namespace restitution::cli {
-namespace {
-
-double dissipative_constant(const scene::Scene& scene, const scene::DemTask& task, const Material& m,
-                            CollisionSolver& solver) {
-  if (!task.eps) return material_constants(m).dissipative_constant_s;
-  CalibrationRequest request;
-  request.eps = *task.eps;
-  request.velocity_m_s = *task.velocity_m_s;
-  request.end = task.end;
-  request.tolerance = scene.tolerance;
-  request.method = scene.method;
-  request.k = elastic_constants(m).k;
-  return *calibrate(request, solver).dissipative_constant_s;
-}
-
-}  // namespace
 
 DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task) {
   const dem::Code code = dem::code_from_name(task.code);
   const Material& material = scene.materials.at(task.material);
-  const dem::Pair pair = dem::pair_of(material);
-  CollisionSolver solver;
-  const double a = dissipative_constant(scene, task, material, solver);
-  const dem::Deck deck =
-      dem::make_deck(code, task.end, pair, a, task.velocity_m_s.value_or(1.0), task.friction);
-  const double beta = dem::deck_beta(deck, pair);
-  std::vector<double> predicted;
-  for (double v : task.speeds) predicted.push_back(dem::eps_for(beta, v, task.end, scene.tolerance, solver));
-
   DemSection s;
-  const std::string measured_column = fmt::format("eps_{}", dem::code_name(code));
-  DemMeasurement measured;
-  bool ran = false;
+  std::string program;
   if (task.run_code && (code == dem::Code::lammps || code == dem::Code::liggghts)) {
-    const std::string program = dem_program(code);
+    program = dem::dem_program(code);
     if (program.empty()) {
       s.warnings.push_back(
           fmt::format("{} is not installed (scripts/setup installs it): not run", task.code));
-    } else {
-      measured = measure_dem_eps(program, deck, pair, task.speeds);
-      ran = true;
     }
   }
+  // Without a calibration the material's own A.
+  const dem::DampingSource damping{
+      task.eps ? std::nullopt : std::optional<double>(material_constants(material).dissipative_constant_s),
+      task.eps, task.velocity_m_s};
+  const dem::CodeComparison c = dem::compare_with_code(code, material, damping, task.end, task.speeds,
+                                                       task.friction, scene.tolerance, scene.method, program);
+  const dem::Deck& deck = c.deck;
+  const double a = c.dissipative_constant_s;
+  const std::vector<double>& predicted = c.predicted_eps;
+  const bool ran = c.measured.has_value();
+  const std::string measured_column = fmt::format("eps_{}", dem::code_name(code));
   s.csv = ran ? fmt::format("velocity_m_s,eps_restitution,{},rel_diff\n", measured_column)
               : "velocity_m_s,eps_restitution\n";
   for (std::size_t i = 0; i < task.speeds.size(); ++i) {
     s.csv += fmt::format("{:.17g},{:.17g}", task.speeds[i], predicted[i]);
     if (ran) {
-      const double diff =
-          (measured.extrapolated[i] - predicted[i]) / std::min(predicted[i], 1.0 - predicted[i]);
-      s.csv += fmt::format(",{:.17g},{:.17g}", measured.extrapolated[i], diff);
+      s.csv += fmt::format(",{:.17g},{:.17g}", c.measured->extrapolated[i], c.relative_difference[i]);
     }
     s.csv += "\n";
   }
@@ -88,9 +63,7 @@ DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task) {
   for (std::size_t i = 0; i < task.speeds.size(); ++i) {
     md += fmt::format("| {:g} | {:.10f} |", task.speeds[i], predicted[i]);
     if (ran) {
-      md +=
-          fmt::format(" {:.10f} | {:.2e} |", measured.extrapolated[i],
-                      (measured.extrapolated[i] - predicted[i]) / std::min(predicted[i], 1.0 - predicted[i]));
+      md += fmt::format(" {:.10f} | {:.2e} |", c.measured->extrapolated[i], c.relative_difference[i]);
     }
     md += "\n";
   }

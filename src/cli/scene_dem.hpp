@@ -1,6 +1,6 @@
 #pragma once
 // A scene's [[dem]] section: the DEM code's input lines for a scene material, restitution's ε(v) for them
-// and, for LAMMPS and LIGGGHTS, the ε(v) the code itself measures (cli/dem_runner.hpp).
+// and, for LAMMPS and LIGGGHTS, the ε(v) the code itself measures (dem/code_runner.hpp, dem/lines_check.hpp).
 #include <string>
 #include <vector>
 

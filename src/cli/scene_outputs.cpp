@@ -11,6 +11,7 @@
 #include "cli/scene_damping.hpp"
 #include "cli/scene_dem.hpp"
 #include "cli/scene_tables.hpp"
+#include "cli/scene_text.hpp"
 #include "cli/stop_signals.hpp"
 #include "cli/work_precision_files.hpp"
 #include "restitution/series.hpp"
@@ -55,30 +56,6 @@ std::string markdown_rows(const Table& t, const std::vector<std::string>& column
         n);
   }
   return out;
-}
-
-// The largest |relative difference| of an approximation from the numerics, with the points it is taken over
-// (an approximation compared at no point, e.g. a naive-end law on a delayed-recovery-only sweep, says so).
-std::string difference_summary(const Table& t, const std::string& label) {
-  const std::size_t c = t.column("rel_diff_" + label);
-  const std::size_t z = t.column("zeta");
-  double worst = 0.0;
-  double lo = 0.0;
-  double hi = 0.0;
-  std::size_t compared = 0;
-  for (const auto& row : t.rows) {
-    if (!std::isfinite(row[c])) continue;
-    lo = compared == 0 ? row[z] : std::min(lo, row[z]);
-    hi = compared == 0 ? row[z] : std::max(hi, row[z]);
-    worst = std::max(worst, std::abs(row[c]));
-    ++compared;
-  }
-  if (compared == 0)
-    return "not compared (no point of this sweep has both this approximation and the numerics)";
-  return fmt::format(
-      "largest |relative difference| from the numerics: {:.3g}, over {} of {} points, {:.4g} <= zeta "
-      "<= {:.4g}",
-      worst, compared, t.rows.size(), lo, hi);
 }
 
 class SceneWriter {
@@ -195,17 +172,20 @@ class SceneWriter {
                       end_name(f.end), g(f.prefactor), g(f.exponent), g(f.exponent_uncertainty), f.points);
     }
     for (const auto& a : extras.approximations) {
-      report_ += fmt::format("* `{}`: {}; {}\n", a.label, a.source, difference_summary(t, a.label));
+      report_ += fmt::format("* `{}`: {}; {}\n", a.label, approximation_source(a),
+                             comparison_text(a.comparison, t.rows.size()));
     }
     if (!extras.approximations.empty()) report_ += "\n";
-    for (const auto& n : extras.notes) report_ += "*" + n + "*\n\n";
+    std::vector<std::string> notes;
+    for (const auto& f : extras.fit_shortfalls) notes.push_back(fit_shortfall_text(f));
+    for (const auto& n : notes) report_ += "*" + n + "*\n\n";
 
     json_.key(s.name).begin_object();
     json_.field("kind", "sweep")
         .field("points", static_cast<long>(t.rows.size()))
         .field("table", s.name + ".csv");
     json_.key("notes").begin_array();
-    for (const auto& n : extras.notes) json_.value(n);
+    for (const auto& n : notes) json_.value(n);
     json_.end_array();
     json_.key("fits").begin_array();
     for (const auto& f : extras.fits) {
@@ -216,7 +196,7 @@ class SceneWriter {
       json_.end_object();
     }
     json_.end_array();
-    if (s.empirical) empirical_summary(s, t);
+    if (extras.empirical_deviation) empirical_summary(s, *extras.empirical_deviation);
     json_.end_object();
   }
 
@@ -256,29 +236,15 @@ class SceneWriter {
         what, s.name);
   }
 
-  void empirical_summary(const scene::Sweep& s, const Table& t) {
-    // Largest relative deviation from the empirical law where the law is a valid coefficient (< 1).
-    double worst = 0.0;
-    double at = 0.0;
-    const std::size_t e = t.column("eps_empirical");
-    const CollisionEnd end =
-        s.ends.contains(CollisionEnd::naive) ? CollisionEnd::naive : CollisionEnd::delayed_recovery;
-    const std::size_t n = t.column(std::string("eps_") + end_key(end));
-    for (const auto& row : t.rows) {
-      if (!(row[e] < 1.0)) continue;
-      const double d = std::abs(row[n] / row[e] - 1.0);
-      if (d > worst) {
-        worst = d;
-        at = row[t.column("velocity_m_s")];
-      }
-    }
+  void empirical_summary(const scene::Sweep& s, const scene::EmpiricalDeviation& d) {
     report_ += fmt::format(
         "Empirical law ε = {} (v / {} m/s)^{}: where it is below 1, the computed ε at the {} end deviates "
         "from "
         "it by at most {:.1f}% (at v = {} m/s).\n\n",
         g(s.empirical->coefficient), g(s.empirical->velocity_unit_m_s), g(s.empirical->exponent),
-        end_name(end), 100.0 * worst, g(at));
-    json_.field("max_relative_deviation_from_empirical", worst).field("at_velocity_m_s", at);
+        end_name(d.end), 100.0 * d.max_relative_deviation, g(d.at_velocity_m_s));
+    json_.field("max_relative_deviation_from_empirical", d.max_relative_deviation)
+        .field("at_velocity_m_s", d.at_velocity_m_s);
   }
 
   void trajectory(std::size_t i) {
@@ -343,11 +309,9 @@ class SceneWriter {
         t.rows.size(), g(scene_.tolerance));
     json_.key(d.name).begin_object();
     json_.field("kind", "dashpot");
-    for (const std::string& c : errors) {
-      double worst = 0.0;
-      for (const auto& row : t.rows) {
-        if (std::isfinite(row[t.column(c)])) worst = std::max(worst, row[t.column(c)]);
-      }
+    for (const CollisionEnd e : d.ends.members()) {
+      const std::string c = std::string("relative_error_") + end_key(e);
+      const double worst = results_.dashpots[i].max_relative_error[e];
       report_ += fmt::format("* largest {}: {:.3g}\n", c, worst);
       json_.field("max_" + c, worst);
     }
@@ -367,7 +331,7 @@ class SceneWriter {
 
   void damping_check(std::size_t i) {
     const scene::DampingCheckTask& task = scene_.damping_checks[i];
-    const DampingSection section = damping_section(scene_, task);
+    const DampingSection section = damping_section(task, results_.damping_checks[i]);
     report_ += fmt::format("## {}\n\n", task.title);
     for (const DampingPlot& p : section.plots) {
       write_file(p.name + ".csv", p.csv);
@@ -413,7 +377,7 @@ class SceneWriter {
     json_.key("studies").begin_array();
     for (std::size_t i = 0; i < results_.studies.size(); ++i) {
       const scene::StudyOutcome& study = results_.studies[i];
-      for (const std::string& line : study.summary) {
+      for (const std::string& line : study_lines(scene_.studies[i], study)) {
         report_ += "* " + line + "\n";
         json_.value(line);
       }

@@ -8,19 +8,12 @@
 
 #include "cli/output_files.hpp"
 #include "cli/physical_columns.hpp"
-#include "reference/dashpot_closed_form.hpp"
 #include "restitution/units.hpp"
 
 namespace restitution::cli {
 namespace {
 
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-
-const EndResult* end_if_computed(const CollisionResult* r, CollisionEnd end) {
-  if (r == nullptr) return nullptr;
-  const auto& e = (*r)[end];
-  return e ? &*e : nullptr;
-}
 
 }  // namespace
 
@@ -87,7 +80,7 @@ Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results,
     std::vector<double> row = {p.parameter};
     if (physical) row.insert(row.end(), {*p.velocity_m_s, *p.beta});
     for (const CollisionEnd e : ends) {
-      const EndResult* end = end_if_computed(r, e);
+      const EndResult* end = scene::end_if_computed(r, e);
       const bool found = end != nullptr;
       if (q.eps) row.push_back(found ? end->eps : kNone);
       if (q.one_minus_eps) row.push_back(found ? end->one_minus_eps : kNone);
@@ -101,12 +94,7 @@ Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results,
         row.insert(row.end(), values.begin(), values.end());
       }
     }
-    for (const auto& a : extras.approximations) {
-      // Relative difference from the numerics at the end the approximation describes, when computed.
-      const EndResult* end = end_if_computed(r, a.end);
-      row.push_back(a.eps[i]);
-      row.push_back(end != nullptr ? a.eps[i] / end->eps - 1.0 : kNone);
-    }
+    for (const auto& a : extras.approximations) row.insert(row.end(), {a.eps[i], a.relative_difference[i]});
     if (s.empirical) row.push_back(extras.empirical_eps[i]);
     t.rows.push_back(std::move(row));
   }
@@ -139,19 +127,14 @@ Table dashpot_table(const scene::Scene& scene, const scene::SceneResults& result
     const std::string n = end_key(e);
     t.columns.insert(t.columns.end(), {"eps_" + n, "eps_exact_" + n, "relative_error_" + n});
   }
-  for (const scene::PlannedPoint& p : results.plan.dashpots[index]) {
-    const CollisionResult* r = scene::result_of(results, p);
-    std::vector<double> row = {p.parameter};
+  for (const scene::DashpotPoint& p : results.dashpots[index].points) {
+    std::vector<double> row = {p.damping_ratio};
     for (const CollisionEnd e : ends) {
-      const EndResult* end = end_if_computed(r, e);
-      if (end == nullptr) {
+      const auto& check = p.ends[e];
+      if (check)
+        row.insert(row.end(), {check->eps, check->eps_exact, check->relative_error});
+      else
         row.insert(row.end(), {kNone, kNone, kNone});
-        continue;
-      }
-      const double tau = e == CollisionEnd::naive ? dashpot_naive_duration(p.parameter)
-                                                  : dashpot_delayed_duration(p.parameter);
-      const double exact = dashpot_eps(p.parameter, tau);
-      row.insert(row.end(), {end->eps, exact, std::abs(end->eps - exact) / std::min(exact, 1.0 - exact)});
     }
     t.rows.push_back(std::move(row));
   }

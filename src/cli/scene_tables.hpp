@@ -8,7 +8,8 @@
 #include "scene/scene_run.hpp"
 
 // Sweep tables hold, per approximation, eps_<label> and rel_diff_<label> = eps_<label> / eps - 1 against the
-// numerics at the end the approximation describes.
+// numerics at the end the approximation describes (ApproximationColumn::relative_difference); dash-pot tables
+// the closed-form checks of DashpotOutcome. The tables only arrange the studies' numbers.
 
 namespace restitution::cli {
 

@@ -20,14 +20,24 @@ struct StabilityCliOptions {
   std::string out;
 };
 
+std::string flag_text(const StabilityFlag& f) {
+  if (f.kind == StabilityFlagKind::self_convergence)
+    return fmt::format("self-convergence {:.3g} > tolerance", f.value);
+  return fmt::format("{} differs by {:.3g} > tolerance", method_name(f.method), f.value);
+}
+
 std::string flags_text(const StabilityPoint& p) {
   std::string text;
-  for (const std::string& f : p.flags) text += (text.empty() ? "" : "; ") + f;
+  for (const StabilityFlag& f : p.flags) text += (text.empty() ? "" : "; ") + flag_text(f);
   return text;
 }
 
+std::string failure_text(const EngineCheck& e) {
+  return e.failure == EngineFailure::too_much_work ? "too much work (stiff)" : e.failure_message;
+}
+
 std::string engine_text(const EngineCheck& e) {
-  return e.solved ? number17(e.relative_difference) : e.failure;
+  return e.solved ? number17(e.relative_difference) : failure_text(e);
 }
 
 std::string csv(const StabilityReport& report) {
@@ -65,13 +75,13 @@ std::string json_text(const StabilityReport& report) {
       if (e.solved)
         json.field("relative_difference", e.relative_difference);
       else
-        json.field("failure", e.failure);
+        json.field("failure", failure_text(e));
       json.end_object();
     }
     json.end_object();
     json.field("verdict", p.flags.empty() ? "ok" : "flagged");
     json.key("flags").begin_array();
-    for (const std::string& f : p.flags) json.value(f);
+    for (const StabilityFlag& f : p.flags) json.value(flag_text(f));
     json.end_array().end_object();
   }
   json.end_array();
@@ -101,7 +111,7 @@ void print_table(const StabilityReport& report) {
     fmt::print("{:>10.3g} {:>17} {:>6} {:>22.15g} {:>8} {:>10.2g}", p.zeta, end_name(p.end),
                method_name(p.method), p.result.eps, p.steps, p.self_convergence);
     for (const EngineCheck& e : p.engines)
-      fmt::print(" {:>22}", e.solved ? fmt::format("{:.2g}", e.relative_difference) : e.failure);
+      fmt::print(" {:>22}", e.solved ? fmt::format("{:.2g}", e.relative_difference) : failure_text(e));
     fmt::print("  {}\n", p.flags.empty() ? "ok" : flags_text(p));
   }
   fmt::print("{} of {} points flagged\n", report.flagged(), report.points.size());

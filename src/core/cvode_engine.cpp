@@ -29,8 +29,12 @@ detail::CvodeIntegrator& CvodeEngine::integrator(Method method) {
 }
 
 CollisionResult CvodeEngine::solve(const ContactLaw& law, const SolveOptions& options) {
+  const auto run = [&](const detail::SolvePlan& plan) {
+    detail::CvodeIntegrator* tail = plan.tail_method ? &integrator(*plan.tail_method) : nullptr;
+    return detail::run_collision(law, options, plan, integrator(plan.method), tail);
+  };
   const detail::SolvePlan plan = detail::plan_solve(law, options);
-  CollisionResult result = detail::run_collision(law, options, plan, integrator(plan.method));
+  CollisionResult result = run(plan);
   // A naive end whose conditioning only the solve reveals (constant damping close to the largest ζ with a
   // naive end): solve again with CVODE's local tolerances tightened accordingly.
   const auto& naive = result[CollisionEnd::naive];
@@ -45,7 +49,7 @@ CollisionResult CvodeEngine::solve(const ContactLaw& law, const SolveOptions& op
         options.tolerance * detail::kSmallestRelativeTolerance / refined.relative_tolerance,
         options.tolerance));
   }
-  CollisionResult second = detail::run_collision(law, options, refined, integrator(refined.method));
+  CollisionResult second = run(refined);
   second.stats += result.stats;
   return second;
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <string>
+#include <utility>
 
 #include "restitution/errors.hpp"
 
@@ -44,13 +45,13 @@ EndResult end_result(const ContactLaw& law, const Point& p) {
 class CollisionRun {
  public:
   CollisionRun(const ContactLaw& law, const SolveOptions& options, const SolvePlan& plan,
-               CvodeIntegrator& integrator)
-      : law_(law), options_(options), plan_(plan), integrator_(integrator) {
+               CvodeIntegrator& integrator, CvodeIntegrator* tail)
+      : law_(law), options_(options), plan_(plan), integrator_(&integrator), tail_(tail) {
     result_.value.law = law.kind();
     result_.value.parameter = law.parameter();
     result_.value.speed_independent = law.speed_independent();
     result_.value.tolerance = options.tolerance;
-    result_.value.method = plan.method;
+    result_.value.method = plan.tail_method.value_or(plan.method);
   }
 
   CollisionResult run() {
@@ -115,7 +116,7 @@ class CollisionRun {
 
   void begin(const PhaseSettings& settings, double t0, const State& state, const Event* events, int count) {
     try {
-      integrator_.start(law_, settings, t0, state, events, count);
+      integrator_->start(law_, settings, t0, state, events, count);
     } catch (const NumericalFailure& e) {
       throw failure(e.what());
     }
@@ -123,16 +124,16 @@ class CollisionRun {
 
   CvodeIntegrator::Step advance() {
     try {
-      CvodeIntegrator::Step step = integrator_.advance();
+      CvodeIntegrator::Step step = integrator_->advance();
       if (options_.keep_trajectory) record(point_of(law_, form_, step.t, step.state));
       return step;
     } catch (const NumericalFailure& e) {
-      result_.value.stats += integrator_.phase_stats();
+      result_.value.stats += integrator_->phase_stats();
       throw failure(e.what());
     }
   }
 
-  void finish_phase() { result_.value.stats += integrator_.phase_stats(); }
+  void finish_phase() { result_.value.stats += integrator_->phase_stats(); }
 
   void found_max_compression(const Point& p) {
     if (result_.max_compression_found) return;
@@ -170,7 +171,7 @@ class CollisionRun {
             finish_phase();
             return p;
           }
-          integrator_.ignore_event(0);
+          integrator_->ignore_event(0);
           continue;
         }
         finish_phase();
@@ -212,7 +213,9 @@ class CollisionRun {
     std::array<Event, kMaxEvents> events{};
     int count = 0;
     events[static_cast<std::size_t>(count++)] = Event::max_compression;
-    if (options_.ends.contains(CollisionEnd::delayed_recovery))
+    // The delayed-recovery end is watched also where only the tail method needs it (to take over there).
+    if ((options_.ends.contains(CollisionEnd::delayed_recovery) || tail_ != nullptr) &&
+        !result_.value[CollisionEnd::delayed_recovery])
       events[static_cast<std::size_t>(count++)] = Event::delayed_recovery_end;
     if (switch_x > 0.0) {
       events[static_cast<std::size_t>(count++)] = Event::below_switch;
@@ -233,11 +236,17 @@ class CollisionRun {
         switch (events[i]) {
           case Event::max_compression:
             found_max_compression(p);
-            integrator_.ignore_event(static_cast<int>(i));
+            integrator_->ignore_event(static_cast<int>(i));
             break;
           case Event::delayed_recovery_end:
-            result_.value[CollisionEnd::delayed_recovery] = end_result(law_, p);
-            integrator_.ignore_event(static_cast<int>(i));
+            if (options_.ends.contains(CollisionEnd::delayed_recovery))
+              result_.value[CollisionEnd::delayed_recovery] = end_result(law_, p);
+            integrator_->ignore_event(static_cast<int>(i));
+            if (tail_ != nullptr && pending()) {
+              finish_phase();
+              integrator_ = std::exchange(tail_, nullptr);
+              return time_phase(form, p.tau, step.state, switch_x);
+            }
             break;
           case Event::naive_end:
             result_.value[CollisionEnd::naive] = end_result(law_, p);
@@ -261,7 +270,8 @@ class CollisionRun {
   const ContactLaw& law_;
   const SolveOptions& options_;
   const SolvePlan& plan_;
-  CvodeIntegrator& integrator_;
+  CvodeIntegrator* integrator_;
+  CvodeIntegrator* tail_;  // takes over at the delayed-recovery end (SolvePlan::tail_method)
   Form form_ = Form::time;
   Accumulated result_;
 };
@@ -269,8 +279,8 @@ class CollisionRun {
 }  // namespace
 
 CollisionResult run_collision(const ContactLaw& law, const SolveOptions& options, const SolvePlan& plan,
-                              CvodeIntegrator& integrator) {
-  return CollisionRun(law, options, plan, integrator).run();
+                              CvodeIntegrator& integrator, CvodeIntegrator* tail) {
+  return CollisionRun(law, options, plan, integrator, tail).run();
 }
 
 }  // namespace restitution::detail

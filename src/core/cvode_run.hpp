@@ -8,9 +8,11 @@
 
 namespace restitution::detail {
 
-// Integrates `law` with the tolerances of `plan` on `integrator` and collects the ends `options` asks for.
-// Throws InvalidInput when the naive end turns out not to exist, NumericalFailure when CVODE fails.
+// Integrates `law` with the tolerances of `plan` on `integrator` and collects the ends `options` asks for;
+// `tail` (the integrator of SolvePlan::tail_method, or null) takes over at the delayed-recovery end while the
+// naive end is pending. Throws InvalidInput when the naive end turns out not to exist, NumericalFailure when
+// CVODE fails.
 CollisionResult run_collision(const ContactLaw& law, const SolveOptions& options, const SolvePlan& plan,
-                              CvodeIntegrator& integrator);
+                              CvodeIntegrator& integrator, CvodeIntegrator* tail);
 
 }  // namespace restitution::detail

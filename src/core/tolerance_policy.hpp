@@ -2,6 +2,8 @@
 // Turns the user's accuracy request into CVODE settings: method, relative and absolute tolerances per
 // form, time limit. The factors are measured (docs/accuracy.md); tests/test_tolerance_honesty.cpp checks
 // that the resulting error stays below the requested tolerance.
+#include <optional>
+
 #include "core/cvode_integrator.hpp"
 #include "restitution/collision_solver.hpp"
 
@@ -9,6 +11,8 @@ namespace restitution::detail {
 
 struct SolvePlan {
   Method method = Method::bdf;
+  // Takes over from `method` at the delayed-recovery end while the naive end is pending.
+  std::optional<Method> tail_method;
   bool smooth_ends = false;  // phases in the compression form at both ends
   double relative_tolerance = 0.0;
   State absolute_tolerance_time{};         // (x, x', I)

@@ -1,7 +1,5 @@
 #include "scene/scene_extensions.hpp"
 
-#include <fmt/core.h>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -57,35 +55,32 @@ void add_approximations(const Sweep& sweep, const std::vector<double>& zeta, Swe
     const ApproximationInfo& info = approximation_info(a);
     ApproximationColumn column;
     column.label = info.label;
-    column.source = info.source;
+    column.approximation = a;
     column.end = info.end;
     const series::Pade1999 corrected =
         a == Approximation::pade_1999_corrected ? series::pade_1999_corrected() : series::Pade1999{};
     for (const double z : zeta) column.eps.push_back(evaluate(a, z, corrected));
     extras.approximations.push_back(std::move(column));
   }
+  if (!sweep.asymptotics) return;
+  // The derived laws: naive ε = κ ζ^{-5}, delayed recovery with its first correction (docs/asymptotics.md).
+  const double kappa = asymptotics::naive_prefactor().value;
+  for (const CollisionEnd end : sweep.ends.members()) {
+    ApproximationColumn column;
+    column.end = end;
+    column.label = end == CollisionEnd::naive ? "naive_asymptotic" : "delayed_recovery_asymptotic";
+    if (end == CollisionEnd::naive) column.kappa = kappa;
+    for (const double z : zeta) {
+      column.eps.push_back(z <= 0.0                     ? std::nan("")
+                           : end == CollisionEnd::naive ? asymptotics::naive_eps(z, kappa)
+                                                        : asymptotics::delayed_recovery_eps(z, 2));
+    }
+    extras.approximations.push_back(std::move(column));
+  }
 }
 
 void add_power_law_fits(const Sweep& sweep, const std::vector<double>& zeta,
                         const std::vector<const CollisionResult*>& results, SweepExtras& extras) {
-  if (sweep.asymptotics) {
-    // The derived laws: naive ε = κ ζ^{-5}, delayed recovery with its first correction (docs/asymptotics.md).
-    const double kappa = asymptotics::naive_prefactor().value;
-    for (const CollisionEnd end : sweep.ends.members()) {
-      ApproximationColumn column;
-      column.end = end;
-      column.label = end == CollisionEnd::naive ? "naive_asymptotic" : "delayed_recovery_asymptotic";
-      column.source = end == CollisionEnd::naive
-                          ? fmt::format("derived large-zeta law kappa zeta^-5, kappa = {:.10g}", kappa)
-                          : "derived large-zeta law (3/2)^(2/3) zeta^(-5/3) with its first correction";
-      for (const double z : zeta) {
-        column.eps.push_back(z <= 0.0                     ? std::nan("")
-                             : end == CollisionEnd::naive ? asymptotics::naive_eps(z, kappa)
-                                                          : asymptotics::delayed_recovery_eps(z, 2));
-      }
-      extras.approximations.push_back(std::move(column));
-    }
-  }
   if (!sweep.fit) return;
   for (const CollisionEnd end : sweep.ends.members()) {
     std::vector<double> z;
@@ -96,10 +91,8 @@ void add_power_law_fits(const Sweep& sweep, const std::vector<double>& zeta,
         eps.push_back(end_of(*results[i], end).eps);
       }
     }
-    if (z.size() < 3) {
-      extras.notes.push_back(
-          fmt::format("power-law fit at the {} end: only {} points with zeta >= {}, need 3", end_name(end),
-                      z.size(), sweep.fit->zeta_min));
+    if (z.size() < kMinFitPoints) {
+      extras.fit_shortfalls.push_back({end, z.size(), sweep.fit->zeta_min});
       continue;
     }
     const PowerLawFit fit = fit_power_law(z, eps);
@@ -110,11 +103,10 @@ void add_power_law_fits(const Sweep& sweep, const std::vector<double>& zeta,
 namespace {
 
 // Per engine and end: the best worst-over-ζ error of the tolerance ladder, and the worst error and mean
-// median solve time at 1e-10 (or the tightest tolerance the engine accepts, when that is looser).
-std::vector<std::string> work_precision_summary(const std::vector<WorkPrecisionRow>& rows) {
-  constexpr double kQuotedTolerance = 1e-10;
+// median solve time at kQuotedTolerance (or the tightest tolerance the engine accepts, when that is looser).
+std::vector<WorkPrecisionHighlight> work_precision_highlights(const std::vector<WorkPrecisionRow>& rows) {
   const std::vector<WorkPrecisionGroup> groups = group_work_precision(rows);
-  std::vector<std::string> lines;
+  std::vector<WorkPrecisionHighlight> highlights;
   for (std::size_t first = 0; first < groups.size();) {
     std::size_t last = first;  // groups of one engine and end are adjacent, loosest tolerance first
     while (last + 1 < groups.size() && groups[last + 1].engine == groups[first].engine &&
@@ -126,30 +118,22 @@ std::vector<std::string> work_precision_summary(const std::vector<WorkPrecisionR
       if (groups[i].max_error < best->max_error) best = &groups[i];
       if (groups[i].tolerance >= kQuotedTolerance * (1 - 1e-9)) quoted = &groups[i];
     }
-    lines.push_back(fmt::format(
-        "{}, {} end: best error {:.3g} (at tolerance {:g}); at tolerance {:g} error {:.3g} and {:.3g} µs per "
-        "solve (mean over {} ζ values of the median)",
-        best->engine, best->end, best->max_error, best->tolerance, quoted->tolerance, quoted->max_error,
-        quoted->mean_median_seconds * 1e6, quoted->points));
+    highlights.push_back({*best, *quoted});
     first = last + 1;
   }
-  return lines;
+  return highlights;
 }
 
 StudyOutcome work_precision_study(const ExternalStudy& study, const std::filesystem::path& reference_file) {
   StudyOutcome out;
   if (reference_file.empty()) {
-    out.summary.push_back(fmt::format("work-precision study '{}': no reference file given", study.name));
+    out.gap = StudyGap::no_reference_file;
     return out;
   }
+  out.reference_file = reference_file;
   out.work_precision =
       measure_work_precision(read_reference_file(reference_file), study.repeats, study.engines);
-  out.summary.push_back(
-      fmt::format("work-precision study '{}': {} points against {} ({} timed solve{} per point; errors are "
-                  "the worst over ζ, relative to min(ε*, 1 - ε*))",
-                  study.name, out.work_precision.size(), reference_file.filename().string(), study.repeats,
-                  study.repeats == 1 ? "" : "s"));
-  for (std::string& line : work_precision_summary(out.work_precision)) out.summary.push_back(std::move(line));
+  out.work_precision_highlights = work_precision_highlights(out.work_precision);
   return out;
 }
 
@@ -160,24 +144,24 @@ StudyOutcome run_study(const ExternalStudy& study, double tolerance,
   if (study.kind == "work_precision") return work_precision_study(study, reference_file);
   StudyOutcome out;
   if (study.zeta.empty()) {
-    out.summary.push_back(fmt::format("stability study '{}': no zeta values given", study.name));
+    out.gap = StudyGap::no_zeta_values;
     return out;
   }
   StabilityOptions options;
   options.tolerance = std::max(tolerance, 100.0 * kMinTolerance);
   const StabilityReport report = stability_report(study.zeta, options);
-  double worst_self = 0.0;
-  double worst_engines = 0.0;
+  StabilitySummary summary;
+  summary.tolerance = options.tolerance;
+  summary.pairs = report.points.size();
+  summary.flagged = report.flagged();
   for (const StabilityPoint& p : report.points) {
-    worst_self = std::max(worst_self, p.self_convergence);
+    summary.worst_self_convergence = std::max(summary.worst_self_convergence, p.self_convergence);
     for (const EngineCheck& e : p.engines) {
-      if (e.solved) worst_engines = std::max(worst_engines, e.relative_difference);
+      if (e.solved)
+        summary.worst_engine_difference = std::max(summary.worst_engine_difference, e.relative_difference);
     }
   }
-  out.summary.push_back(fmt::format(
-      "stability study '{}' (tolerance {:g}): {} point-end pairs, {} flagged; worst self-convergence {:.3g}, "
-      "worst difference between engines {:.3g} (relative to min(eps, 1 - eps))",
-      study.name, options.tolerance, report.points.size(), report.flagged(), worst_self, worst_engines));
+  out.stability = summary;
   return out;
 }
 

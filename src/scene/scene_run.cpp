@@ -1,12 +1,13 @@
 #include "scene/scene_run.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <mutex>
 #include <utility>
 
+#include "damping_check/grid.hpp"
 #include "parallel/parallel_for.hpp"
 #include "restitution/material.hpp"
+#include "scene/scene_comparisons.hpp"
 #include "scene/scene_extensions.hpp"
 
 namespace restitution::scene {
@@ -43,6 +44,12 @@ const CollisionResult* result_of(const SceneResults& results, const PlannedPoint
   return point.job == kNoJob ? nullptr : &results.solved[point.job];
 }
 
+const EndResult* end_if_computed(const CollisionResult* result, CollisionEnd end) {
+  if (result == nullptr) return nullptr;
+  const auto& e = (*result)[end];
+  return e ? &*e : nullptr;
+}
+
 SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& settings) {
   SceneResults out;
   out.plan = std::move(plan);
@@ -54,22 +61,31 @@ SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& setting
     const Sweep& s = scene.sweeps[i];
     const std::vector<PlannedPoint>& points = out.plan.sweeps[i];
     std::vector<double> zeta;
-    std::vector<const CollisionResult*> results;
+    detail::PointResults results;
     for (const PlannedPoint& p : points) {
       zeta.push_back(p.parameter);
       results.push_back(result_of(out, p));
     }
     SweepExtras extras;
     detail::add_approximations(s, zeta, extras);
+    detail::compare_approximations(zeta, results, extras);
     detail::add_power_law_fits(s, zeta, results, extras);
     if (s.empirical) {
-      for (const PlannedPoint& p : points) {
-        extras.empirical_eps.push_back(
-            s.empirical->coefficient *
-            std::pow(*p.velocity_m_s / s.empirical->velocity_unit_m_s, s.empirical->exponent));
-      }
+      std::vector<double> velocity_m_s;
+      velocity_m_s.reserve(points.size());
+      for (const PlannedPoint& p : points) velocity_m_s.push_back(*p.velocity_m_s);
+      detail::add_empirical(*s.empirical, s.ends, velocity_m_s, results, extras);
     }
     out.sweeps.push_back(std::move(extras));
+  }
+  for (std::size_t i = 0; i < scene.dashpots.size(); ++i) {
+    std::vector<double> damping_ratio;
+    detail::PointResults results;
+    for (const PlannedPoint& p : out.plan.dashpots[i]) {
+      damping_ratio.push_back(p.parameter);
+      results.push_back(result_of(out, p));
+    }
+    out.dashpots.push_back(detail::check_dashpot(scene.dashpots[i], damping_ratio, results));
   }
 
   CollisionSolver solver;
@@ -86,6 +102,16 @@ SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& setting
     outcome.calibration = calibrate(request, solver);
     out.collisions += static_cast<std::size_t>(outcome.calibration.solves);
     out.calibrations.push_back(outcome);
+  }
+  for (const DampingCheckTask& task : scene.damping_checks) {
+    damping_check::GridRequest request;
+    for (const std::string& name : task.recipes)
+      request.recipes.push_back(damping_check::recipe_from_name(name));
+    request.eps = task.eps;
+    request.reference_velocity_m_s = task.velocity_m_s;
+    request.speeds_m_s = task.speeds;
+    request.tolerance = scene.tolerance;
+    out.damping_checks.push_back(damping_check::check_grid(request, solver));
   }
   for (const ExternalStudy& study : scene.studies)
     out.studies.push_back(detail::run_study(study, scene.tolerance, settings.reference_file));

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/dem_runner.hpp"
 #include "cli_runner.hpp"
+#include "dem/code_runner.hpp"
 #include "dem/deck.hpp"
 #include "restitution/material.hpp"
 
@@ -43,10 +43,10 @@ json run_json(const std::string& arguments) {
 // LAMMPS' extrapolated ε at `speeds` agrees with `predicted` within 1e-6 min(ε, 1 - ε).
 void expect_lammps_gives(const restitution::dem::Deck& deck, const std::vector<double>& speeds,
                          const std::vector<double>& predicted, int coarse_steps_per_time) {
-  const std::string program = restitution::cli::dem_program(restitution::dem::Code::lammps);
+  const std::string program = restitution::dem::dem_program(restitution::dem::Code::lammps);
   ASSERT_FALSE(program.empty()) << "lmp not found on PATH: scripts/setup installs Debian's lammps";
   const auto measured =
-      restitution::cli::measure_dem_eps(program, deck, steel(), speeds, coarse_steps_per_time);
+      restitution::dem::measure_dem_eps(program, deck, steel(), speeds, coarse_steps_per_time);
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     ASSERT_TRUE(std::isfinite(measured.extrapolated[i])) << "no eps at v = " << speeds[i] << ":\n"
                                                          << measured.output;

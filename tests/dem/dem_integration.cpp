@@ -2,7 +2,7 @@
 // `restitution dem --json` prints, and checks the ε they measure against restitution's: two materials, both
 // ends, three impact speeds per calibration (the calibration speed, a quarter and four times it).
 // Both codes integrate with velocity-Verlet, first order in the time step here (the damping force is taken
-// at the half-step velocity), so cli/dem_runner.hpp runs each deck at dt = T/2000 and T/20000, T the natural
+// at the half-step velocity), so dem/code_runner.hpp runs each deck at dt = T/2000 and T/20000, T the natural
 // time of the fastest collision, and extrapolates: ε = (10 ε_fine - ε_coarse) / 9.
 // Two more cases add Coulomb friction (--friction 0.5): the codes must accept the tangential lines, and a
 // head-on collision must still end with the frictionless ε.
@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/dem_runner.hpp"
 #include "cli_runner.hpp"
+#include "dem/code_runner.hpp"
 #include "dem/deck.hpp"
 #include "restitution/material.hpp"
 
@@ -74,7 +74,7 @@ TEST_P(DemIntegration, CodeMeasuresTheEpsRestitutionPredicts) {
   const Case& c = GetParam();
   restitution::dem::Deck deck;
   deck.code = restitution::dem::code_from_name(c.code);
-  const std::string program = restitution::cli::dem_program(deck.code);
+  const std::string program = restitution::dem::dem_program(deck.code);
   ASSERT_FALSE(program.empty()) << (c.code == "lammps" ? "lmp" : "liggghts")
                                 << " not found on PATH: scripts/setup installs Debian's " << c.code;
   const Material& m = c.material;
@@ -92,7 +92,7 @@ TEST_P(DemIntegration, CodeMeasuresTheEpsRestitutionPredicts) {
   deck.lines = out.at("lines").get<std::vector<std::string>>();
   ASSERT_EQ(out.at("eps").size(), speeds.size());
 
-  const auto measured = restitution::cli::measure_dem_eps(program, deck, pair_of(m), speeds, 2000);
+  const auto measured = restitution::dem::measure_dem_eps(program, deck, pair_of(m), speeds, 2000);
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     ASSERT_TRUE(std::isfinite(measured.coarse[i]) && std::isfinite(measured.fine[i]))
         << program << " printed no eps for v = " << speeds[i] << " m/s:\n"

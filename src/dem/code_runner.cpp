@@ -1,4 +1,4 @@
-#include "cli/dem_runner.hpp"
+#include "dem/code_runner.hpp"
 
 #include <fmt/core.h>
 #include <unistd.h>
@@ -15,7 +15,7 @@
 
 #include "restitution/errors.hpp"
 
-namespace restitution::cli {
+namespace restitution::dem {
 namespace {
 
 std::string find_on_path(const std::string& program) {
@@ -38,12 +38,12 @@ std::string output_of(const std::string& command) {
   return out;
 }
 
-double natural_time(const dem::Pair& p, double v) {
+double natural_time(const Pair& p, double v) {
   const double k = 4.0 / 3.0 * p.effective_modulus_pa * std::sqrt(p.effective_radius_m) / p.effective_mass_kg;
   return std::pow(k, -0.4) * std::pow(v, -0.2);
 }
 
-std::string deck_text(const dem::Deck& deck, const dem::Pair& p, const std::vector<double>& speeds,
+std::string deck_text(const Deck& deck, const Pair& p, const std::vector<double>& speeds,
                       int steps_per_time) {
   const double v_min = *std::min_element(speeds.begin(), speeds.end());
   const double v_max = *std::max_element(speeds.begin(), speeds.end());
@@ -52,8 +52,8 @@ std::string deck_text(const dem::Deck& deck, const dem::Pair& p, const std::vect
   const double spacing = 10.0 * (p.radius1_m + p.radius2_m);
   const double box = spacing * static_cast<double>(speeds.size() + 1);
   std::string d = "units si\n";
-  d += deck.code == dem::Code::liggghts ? "atom_style granular\nnewton off\ncommunicate single vel yes\n"
-                                        : "atom_style sphere\ncomm_modify vel yes\n";
+  d += deck.code == Code::liggghts ? "atom_style granular\nnewton off\ncommunicate single vel yes\n"
+                                   : "atom_style sphere\ncomm_modify vel yes\n";
   d += "atom_modify map array\nboundary f f f\n";
   d += fmt::format("region box block {0} {1} {0} {1} {0} {1} units box\ncreate_box 1 box\n", -box, box);
   for (std::size_t i = 0; i < speeds.size(); ++i) {
@@ -85,14 +85,13 @@ std::string deck_text(const dem::Deck& deck, const dem::Pair& p, const std::vect
 
 }  // namespace
 
-std::string dem_program(dem::Code code) {
-  if (code == dem::Code::lammps) return find_on_path("lmp");
-  if (code == dem::Code::liggghts) return find_on_path("liggghts");
-  throw InvalidInput(
-      fmt::format("{} cannot be run here: only lammps and liggghts are", dem::code_name(code)));
+std::string dem_program(Code code) {
+  if (code == Code::lammps) return find_on_path("lmp");
+  if (code == Code::liggghts) return find_on_path("liggghts");
+  throw InvalidInput(fmt::format("{} cannot be run here: only lammps and liggghts are", code_name(code)));
 }
 
-DemRun run_dem_code(const std::string& program, const dem::Deck& deck, const dem::Pair& pair,
+DemRun run_dem_code(const std::string& program, const Deck& deck, const Pair& pair,
                     const std::vector<double>& speeds, int steps_per_time) {
   char name[] = "/tmp/restitution-dem-XXXXXX";
   const int fd = mkstemp(name);
@@ -120,7 +119,7 @@ DemRun run_dem_code(const std::string& program, const dem::Deck& deck, const dem
   return run;
 }
 
-DemMeasurement measure_dem_eps(const std::string& program, const dem::Deck& deck, const dem::Pair& pair,
+DemMeasurement measure_dem_eps(const std::string& program, const Deck& deck, const Pair& pair,
                                const std::vector<double>& speeds, int coarse_steps_per_time) {
   const DemRun coarse = run_dem_code(program, deck, pair, speeds, coarse_steps_per_time);
   const DemRun fine = run_dem_code(program, deck, pair, speeds, 10 * coarse_steps_per_time);
@@ -134,4 +133,4 @@ DemMeasurement measure_dem_eps(const std::string& program, const dem::Deck& deck
   return m;
 }
 
-}  // namespace restitution::cli
+}  // namespace restitution::dem

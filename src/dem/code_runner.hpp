@@ -1,17 +1,17 @@
 #pragma once
 // Runs LAMMPS (`lmp`) or LIGGGHTS (`liggghts`) on head-on collisions of a pair of spheres fed the lines
 // `restitution dem` makes, and reads back the ε each collision ends with. Used by the [[dem]] scene section
-// and by the DEM integration tests (tests/dem/).
+// (dem/code_comparison.hpp) and by the DEM integration tests (tests/dem/).
 #include <string>
 #include <vector>
 
 #include "dem/deck.hpp"
 
-namespace restitution::cli {
+namespace restitution::dem {
 
 // The program that runs `code` (lmp or liggghts) found on PATH, or "" when it is not there. Throws
 // InvalidInput for codes this runner cannot run.
-std::string dem_program(dem::Code code);
+std::string dem_program(Code code);
 
 struct DemRun {
   std::vector<double> eps;    // per speed; NaN where the code printed none
@@ -22,7 +22,7 @@ struct DemRun {
 // One deck with a pair of touching spheres per speed [m/s] (20 radii apart), closing along x, time step
 // T / steps_per_time with T = k^{-2/5} v_max^{-1/5} the natural time of the fastest collision, run for five
 // natural times of the slowest.
-DemRun run_dem_code(const std::string& program, const dem::Deck& deck, const dem::Pair& pair,
+DemRun run_dem_code(const std::string& program, const Deck& deck, const Pair& pair,
                     const std::vector<double>& speeds, int steps_per_time);
 
 // ε by Richardson extrapolation of two runs at T/n and T/(10 n): both codes use velocity-Verlet, first order
@@ -32,7 +32,7 @@ struct DemMeasurement {
   std::vector<double> gap_m;  // of the fine run
   std::string output;         // of the fine run
 };
-DemMeasurement measure_dem_eps(const std::string& program, const dem::Deck& deck, const dem::Pair& pair,
+DemMeasurement measure_dem_eps(const std::string& program, const Deck& deck, const Pair& pair,
                                const std::vector<double>& speeds, int coarse_steps_per_time = 2000);
 
-}  // namespace restitution::cli
+}  // namespace restitution::dem
