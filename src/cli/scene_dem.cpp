@@ -2,7 +2,6 @@
 
 #include <fmt/core.h>
 
-
 #include "dem/lines_check.hpp"
 #include "restitution/material.hpp"
 
