@@ -28,7 +28,8 @@ int right_hand_side(sunrealtype t, N_Vector y, N_Vector ydot, void* user_data) n
   } else {
     const double x = law.compression_of(t);
     const double dtau_du = law.dcompression_du(t) / v;
-    d[kFirst] = dtau_du;
+    const TauLog& tau_log = data.tau_log;
+    d[kFirst] = tau_log.coefficient == 0.0 ? dtau_du : dtau_du + tau_log.coefficient / (t + tau_log.shift);
     d[kVelocity] = law.acceleration(x, v) * dtau_du;
     d[kDissipation] = law.dissipation_integrand(x, v) * dtau_du;
   }
@@ -119,6 +120,7 @@ void CvodeIntegrator::start(const ContactLaw& law, const PhaseSettings& settings
   data_.law = &law;
   data_.form = settings.form;
   data_.switch_x = settings.switch_x;
+  data_.tau_log = settings.tau_log;
   data_.event_count = event_count;
   data_.ignored.fill(false);
   for (std::size_t i = 0; i < static_cast<std::size_t>(event_count); ++i) data_.events[i] = events[i];

@@ -10,8 +10,13 @@
 //        dτ/du = q u^{q-1}/x',  dx'/du = q u^{q-1}·a(u^q, x')/x',  dI/du = q u^{q-1}·w(u^q)·x'
 //    This is analytic in u, where the time form has τ^{b+2}-type singularities at x = 0 that cost CVODE its
 //    order (docs/design.md §4).
+//    For the overdamped tail of the naive end the compression form may carry σ = τ + c·ln(u + u*) instead
+//    of τ (TauLog): there τ ≈ -c ln(u + u*) with c = qζ and u* the u at which inertia takes over from the
+//    slow decay x' ≈ -x^{a-b}/ζ (a - b = 1), a logarithm that costs BDF a step per fraction of u, while σ
+//    stays smooth (docs/performance.md).
 // I = ∫ w(x) x'^2 dτ is the dissipation integral (the dissipated energy is D = c_d · I).
 #include <array>
+#include <cmath>
 #include <string>
 
 #include "restitution/collision_solver.hpp"
@@ -39,6 +44,15 @@ enum class Event {
 };
 inline constexpr int kMaxEvents = 4;
 
+// The logarithm taken out of τ in the compression form: σ = τ + coefficient·ln(u + shift).
+struct TauLog {
+  double shift = 0.0;        // u*
+  double coefficient = 0.0;  // c; 0: the state holds τ itself
+  [[nodiscard]] double offset(double u) const {
+    return coefficient == 0.0 ? 0.0 : coefficient * std::log(u + shift);
+  }
+};
+
 struct PhaseSettings {
   Form form = Form::time;
   double relative_tolerance = 1e-10;
@@ -46,6 +60,7 @@ struct PhaseSettings {
   double stop = 1e6;  // the independent variable's last value: time limit, or u at the phase's end
   long max_steps = 1000000;
   double switch_x = 0.0;  // for Event::below_switch
+  TauLog tau_log{};       // compression form only
   // Return after every internal step (to record a trajectory); otherwise only at events and the stop,
   // which saves CVODE's per-call overhead (~12 % of a solve).
   bool every_step = false;
@@ -78,6 +93,7 @@ class CvodeIntegrator {
     const ContactLaw* law = nullptr;
     Form form = Form::time;
     double switch_x = 0.0;
+    TauLog tau_log{};
     std::array<Event, kMaxEvents> events{};
     std::array<bool, kMaxEvents> ignored{};
     int event_count = 0;

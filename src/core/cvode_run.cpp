@@ -17,9 +17,9 @@ struct Point {
   double tau, x, velocity, dissipation;
 };
 
-Point point_of(const ContactLaw& law, Form form, double t, const State& s) {
+Point point_of(const ContactLaw& law, Form form, const TauLog& tau_log, double t, const State& s) {
   if (form == Form::time) return {t, s[kFirst], s[kVelocity], s[kDissipation]};
-  return {s[kFirst], law.compression_of(t), s[kVelocity], s[kDissipation]};
+  return {s[kFirst] - tau_log.offset(t), law.compression_of(t), s[kVelocity], s[kDissipation]};
 }
 
 const char* end_names(EndSet ends) {
@@ -125,7 +125,7 @@ class CollisionRun {
   CvodeIntegrator::Step advance() {
     try {
       CvodeIntegrator::Step step = integrator_->advance();
-      if (options_.keep_trajectory) record(point_of(law_, form_, step.t, step.state));
+      if (options_.keep_trajectory) record(point_of(law_, form_, tau_log_, step.t, step.state));
       return step;
     } catch (const NumericalFailure& e) {
       result_.value.stats += integrator_->phase_stats();
@@ -143,10 +143,13 @@ class CollisionRun {
 
   // Compression form from u0 towards u_stop. Going up (the start) it stops where x' has halved; going
   // down (the end) it watches the delayed-recovery end and reaches the naive end exactly at u = 0.
-  Point compression_phase(double u0, double u_stop, const State& state, bool is_start) {
+  Point compression_phase(double u0, double u_stop, State state, bool is_start) {
     form_ = Form::compression;
+    tau_log_ = is_start ? TauLog{} : plan_.tail;
+    state[kFirst] += tau_log_.offset(u0);
     PhaseSettings settings{Form::compression, plan_.relative_tolerance, plan_.absolute_tolerance_compression,
                            u_stop};
+    settings.tau_log = tau_log_;
     settings.max_steps = plan_.max_steps;
     settings.every_step = options_.keep_trajectory;
     std::array<Event, kMaxEvents> events{};
@@ -162,7 +165,7 @@ class CollisionRun {
     begin(settings, u0, state, events.data(), count);
     while (true) {
       const CvodeIntegrator::Step step = advance();
-      const Point p = point_of(law_, Form::compression, step.t, step.state);
+      const Point p = point_of(law_, Form::compression, tau_log_, step.t, step.state);
       if (excluded >= 0 && step.events_found[static_cast<std::size_t>(excluded)]) no_naive_end(p);
       if (step.reached_stop || (count > 0 && excluded != 0 && step.events_found[0])) {
         if (!is_start && step.events_found[0]) {
@@ -226,7 +229,7 @@ class CollisionRun {
     begin(settings, tau0, state, events.data(), count);
     while (true) {
       const CvodeIntegrator::Step step = advance();
-      const Point p = point_of(law_, form, step.t, step.state);
+      const Point p = point_of(law_, form, TauLog{}, step.t, step.state);
       if (step.reached_stop) {
         finish_phase();
         throw failure(fmt::format("no end of the collision before tau={:g}", p.tau / law_.time_scale()));
@@ -245,6 +248,9 @@ class CollisionRun {
             if (tail_ != nullptr && pending()) {
               finish_phase();
               integrator_ = std::exchange(tail_, nullptr);
+              // x' < 0 from here on (at x' = 0 the force would push it back), so the compression form
+              // of the end can start right at this end.
+              if (plan_.tail.coefficient != 0.0) return p;
               return time_phase(form, p.tau, step.state, switch_x);
             }
             break;
@@ -273,6 +279,7 @@ class CollisionRun {
   CvodeIntegrator* integrator_;
   CvodeIntegrator* tail_;  // takes over at the delayed-recovery end (SolvePlan::tail_method)
   Form form_ = Form::time;
+  TauLog tau_log_;  // of the compression form's current phase
   Accumulated result_;
 };
 

@@ -14,6 +14,8 @@ struct SolvePlan {
   // Takes over from `method` at the delayed-recovery end while the naive end is pending.
   std::optional<Method> tail_method;
   bool smooth_ends = false;  // phases in the compression form at both ends
+  // The logarithm the end phase takes out of τ (the overdamped tail of the naive end); none by default.
+  TauLog tail;
   double relative_tolerance = 0.0;
   State absolute_tolerance_time{};         // (x, x', I)
   State absolute_tolerance_compression{};  // (τ, x', I)
