@@ -229,15 +229,21 @@ void LuLoops<Size>::install(SUNLinearSolver_Ops ops) {
   ops->free = free_solver;
 }
 
+// The 3-component state gets the loops of fixed length, any other size the general ones.
+template <template <sunindextype> class Loops, class Ops>
+void install_for_size(sunindextype n, Ops ops) {
+  if (n == 3) {
+    Loops<3>::install(ops);
+  } else {
+    Loops<0>::install(ops);
+  }
+}
+
 }  // namespace
 
 Matrix make_small_dense_matrix(sunindextype n, const Context& context) {
   Matrix m = make_dense_matrix(n, n, context);
-  if (n == 3) {
-    MatrixLoops<3>::install(m->ops);
-  } else {
-    MatrixLoops<0>::install(m->ops);
-  }
+  install_for_size<MatrixLoops>(n, m->ops);
   return m;
 }
 
@@ -251,11 +257,7 @@ LinearSolver make_small_dense_solver(const Vector& template_vector, const Matrix
   content->pivots.assign(static_cast<std::size_t>(n), 0);
   LinearSolver s(SUNLinSolNewEmpty(context.get()));
   check_created(s.get(), "SUNLinSolNewEmpty");
-  if (n == 3) {
-    LuLoops<3>::install(s->ops);
-  } else {
-    LuLoops<0>::install(s->ops);
-  }
+  install_for_size<LuLoops>(n, s->ops);
   s->content = content.release();
   return s;
 }
