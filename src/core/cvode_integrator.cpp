@@ -5,6 +5,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include "restitution/errors.hpp"
+#include "sundials/small_dense.hpp"
 
 namespace restitution::detail {
 namespace {
@@ -112,8 +113,8 @@ CvodeIntegrator::CvodeIntegrator(Method method, const sundials::Context& context
     // Adams is chosen where the problem is not stiff: a fixed-point corrector needs no Jacobian.
     fixed_point_solver_ = sundials::make_fixed_point_solver(state_, context);
   } else {
-    jacobian_ = sundials::make_dense_matrix(kStateSize, kStateSize, context);
-    linear_solver_ = sundials::make_dense_linear_solver(state_, jacobian_, context);
+    jacobian_ = sundials::make_small_dense_matrix(kStateSize, context);
+    linear_solver_ = sundials::make_small_dense_solver(state_, jacobian_, context);
   }
 }
 

@@ -1,7 +1,6 @@
 #include "sundials/handles.hpp"
 
 #include <fmt/core.h>
-#include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
@@ -35,13 +34,6 @@ Matrix make_dense_matrix(sunindextype rows, sunindextype columns, const Context&
   Matrix m(SUNDenseMatrix(rows, columns, context.get()));
   check_created(m.get(), "SUNDenseMatrix");
   return m;
-}
-
-LinearSolver make_dense_linear_solver(const Vector& template_vector, const Matrix& matrix,
-                                      const Context& context) {
-  LinearSolver s(SUNLinSol_Dense(template_vector.get(), matrix.get(), context.get()));
-  check_created(s.get(), "SUNLinSol_Dense");
-  return s;
 }
 
 NonlinearSolver make_fixed_point_solver(const Vector& template_vector, const Context& context) {

@@ -46,8 +46,6 @@ struct LinearSolverDeleter {
   void operator()(SUNLinearSolver s) const { SUNLinSolFree(s); }
 };
 using LinearSolver = std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, LinearSolverDeleter>;
-LinearSolver make_dense_linear_solver(const Vector& template_vector, const Matrix& matrix,
-                                      const Context& context);
 
 struct NonlinearSolverDeleter {
   void operator()(SUNNonlinearSolver s) const { SUNNonlinSolFree(s); }
