@@ -1,8 +1,8 @@
 // auto's naive end at ζ >= 5: Adams up to the delayed-recovery end, BDF for the stiff tail after it, in the
 // compression form with the tail's logarithm taken out of τ. The switch happens also when only the naive end
 // is asked for (the delayed-recovery end is then watched but not reported); the contract holds against the
-// reference, and τ_c within T relative too (without the logarithm its error reached 3·T at large ζ); the switch
-// saves steps against BDF throughout.
+// reference, and τ_c within T relative too (without the logarithm its error reached 3·T at large ζ); the
+// switch saves steps against BDF throughout.
 #include <gtest/gtest.h>
 
 #include <cmath>
