@@ -82,3 +82,28 @@ TEST(FitDataCli, BadInputExitsTwoNamingTheLineAndWritesNothing) {
 
 }  // namespace
 }  // namespace restitution
+
+namespace restitution {
+namespace {
+
+TEST(FitDataCli, CalibrateFromFitCarriesTheIntervalsOver) {
+  const auto json_path = (std::filesystem::temp_directory_path() / "restitution-fit-carry.json").string();
+  ASSERT_EQ(test_support::run_cli("fit-data " + kExample + " --output " + json_path).status, 0);
+  const auto r =
+      test_support::run_cli("calibrate --from-fit " + json_path +
+                            " --velocity 3 --json --young-modulus 1e7 --poisson-ratio 0.45 --radius "
+                            "0.01 --density 1100");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto fit = nlohmann::json::parse(test_support::slurp(json_path));
+  EXPECT_EQ(j["beta"], fit["fits"][0]["value"]);
+  // ε decreases with β: the upper β bound gives the lower ε bound.
+  EXPECT_LT(j["eps_ci95"][0].get<double>(), j["eps"].get<double>());
+  EXPECT_GT(j["eps_ci95"][1].get<double>(), j["eps"].get<double>());
+  EXPECT_LT(j["dissipative_constant_ci95"][0].get<double>(), j["dissipative_constant_s"].get<double>());
+  const auto bad = test_support::run_cli("calibrate --from-fit /nonexistent.json --velocity 1");
+  EXPECT_EQ(bad.status, 2);
+}
+
+}  // namespace
+}  // namespace restitution
