@@ -39,6 +39,11 @@ struct FitCandidate {
 // Viscoelastic Hertz at the delayed-recovery and naive ends, Tsuji and the linear dash-pot (delayed
 // recovery).
 std::vector<FitCandidate> default_fit_candidates();
+// The default candidates restricted to the named laws (law_from_name; empty: all; viscoelastic-hertz brings
+// both ends), the speed-independent ones at `speed_independent_end` (end_from_name). Throws InvalidInput
+// naming an unknown law or end.
+std::vector<FitCandidate> fit_candidates(const std::vector<std::string>& law_names,
+                                         const std::string& speed_independent_end);
 // "beta" | "zeta" | "damping-ratio": the name of the fitted parameter of a law.
 const char* fit_parameter_name(LawKind law);
 

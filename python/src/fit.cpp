@@ -90,17 +90,7 @@ void bind_fit(py::module_& m) {
          const std::optional<Material>& material, double tolerance, const std::string& method) {
         FitData data{std::move(v), std::move(eps), sigma.value_or(std::vector<double>{})};
         FitOptions options;
-        const CollisionEnd constant_end = end_from_name(speed_independent_end);
-        options.candidates.clear();
-        for (const FitCandidate& c : default_fit_candidates()) {
-          bool wanted = !laws;
-          if (laws) {
-            for (const std::string& name : *laws) wanted = wanted || law_from_name(name) == c.law;
-          }
-          if (wanted)
-            options.candidates.push_back(
-                {c.law, c.law == LawKind::viscoelastic_hertz ? c.end : constant_end});
-        }
+        options.candidates = fit_candidates(laws.value_or(std::vector<std::string>{}), speed_independent_end);
         options.tolerance = tolerance;
         options.method = method_from_name(method);
         if (material) options.k = elastic_constants(*material).k;

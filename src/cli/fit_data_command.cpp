@@ -29,23 +29,11 @@ struct FitDataOptions {
   std::string output;
 };
 
-std::vector<FitCandidate> candidates(const FitDataOptions& o) {
-  const CollisionEnd constant_end = end_from_name(o.speed_independent_end);
-  std::vector<FitCandidate> out;
-  for (const FitCandidate& c : default_fit_candidates()) {
-    bool wanted = o.laws.empty();
-    for (const std::string& name : o.laws) wanted = wanted || law_from_name(name) == c.law;
-    if (!wanted) continue;
-    out.push_back({c.law, c.law == LawKind::viscoelastic_hertz ? c.end : constant_end});
-  }
-  return out;
-}
-
 int run_fit_data(const FitDataOptions& o) {
   // Everything is checked before anything is written.
   if (!o.output.empty()) check_output_file(o.output);
   FitOptions options;
-  options.candidates = candidates(o);
+  options.candidates = fit_candidates(o.laws, o.speed_independent_end);
   options.tolerance = o.tolerance;
   options.method = method_from_name(o.method);
   if (o.material.any()) options.k = elastic_constants(material_from(o.material)).k;

@@ -5,9 +5,8 @@
 #include <cmath>
 
 namespace restitution::cli {
-namespace {
 
-void interval_field(JsonWriter& json, const char* name, const FitInterval& i) {
+void write_interval(JsonWriter& json, const char* name, const FitInterval& i) {
   json.key(name).begin_array();
   if (i.low_at_edge) {
     json.null();
@@ -21,6 +20,13 @@ void interval_field(JsonWriter& json, const char* name, const FitInterval& i) {
   }
   json.end_array();
 }
+
+std::string interval_text(const FitInterval& i) {
+  auto bound = [](double x, bool edge) { return edge ? std::string("edge") : fmt::format("{:.6g}", x); };
+  return fmt::format("[{}, {}]", bound(i.low, i.low_at_edge), bound(i.high, i.high_at_edge));
+}
+
+namespace {
 
 void residuals_field(JsonWriter& json, const ResidualTests& r) {
   json.key("residual_tests").begin_object().field("available", r.available);
@@ -44,20 +50,20 @@ void fit_object(JsonWriter& json, const LawFit& f) {
   } else {
     json.key("value").null();
   }
-  interval_field(json, "ci68", f.ci68);
-  interval_field(json, "ci95", f.ci95);
+  write_interval(json, "ci68", f.ci68);
+  write_interval(json, "ci95", f.ci95);
   json.field("chi2", f.chi2).field("dof", f.dof).field("chi2_per_dof", f.chi2_per_dof);
   json.field("aic", f.aic).field("bic", f.bic);
   residuals_field(json, f.residuals);
   if (f.characteristic_velocity_m_s) {
     json.field("characteristic_velocity_m_s", *f.characteristic_velocity_m_s);
-    interval_field(json, "characteristic_velocity_ci68", f.characteristic_velocity_ci68);
-    interval_field(json, "characteristic_velocity_ci95", f.characteristic_velocity_ci95);
+    write_interval(json, "characteristic_velocity_ci68", f.characteristic_velocity_ci68);
+    write_interval(json, "characteristic_velocity_ci95", f.characteristic_velocity_ci95);
   }
   if (f.dissipative_constant_s) {
     json.field("dissipative_constant_s", *f.dissipative_constant_s);
-    interval_field(json, "dissipative_constant_ci68", f.dissipative_constant_ci68);
-    interval_field(json, "dissipative_constant_ci95", f.dissipative_constant_ci95);
+    write_interval(json, "dissipative_constant_ci68", f.dissipative_constant_ci68);
+    write_interval(json, "dissipative_constant_ci95", f.dissipative_constant_ci95);
   }
   json.key("model_eps").begin_array();
   for (const double e : f.model_eps) json.value(e);
@@ -72,13 +78,6 @@ const LawFit* best_hertz(const FitResult& r) {
     if (best == nullptr || f.aic < best->aic) best = &f;
   }
   return best;
-}
-
-std::string bound(double x, bool edge) {
-  return edge ? std::string("edge") : fmt::format("{:.6g}", x);
-}
-std::string interval_text(const FitInterval& i) {
-  return fmt::format("[{}, {}]", bound(i.low, i.low_at_edge), bound(i.high, i.high_at_edge));
 }
 
 }  // namespace
@@ -119,8 +118,8 @@ void write_fit_json(JsonWriter& json, const FitReportInput& in) {
     if (const LawFit* h = best_hertz(r); h != nullptr && h->dissipative_constant_s) {
       json.key("dissipative_constant_s").begin_object();
       json.field("end", end_name(h->candidate.end)).field("value", *h->dissipative_constant_s);
-      interval_field(json, "ci68", h->dissipative_constant_ci68);
-      interval_field(json, "ci95", h->dissipative_constant_ci95);
+      write_interval(json, "ci68", h->dissipative_constant_ci68);
+      write_interval(json, "ci95", h->dissipative_constant_ci95);
       json.end_object();
     }
   }

@@ -16,6 +16,11 @@ struct FitReportInput {
   std::optional<double> k;  // ρ/m_eff of the material, when given
 };
 
+// An interval as a JSON [low, high] under `name` (null for a bound at the edge), and as text "[low, high]"
+// ("edge" for such a bound).
+void write_interval(JsonWriter& json, const char* name, const FitInterval& interval);
+std::string interval_text(const FitInterval& interval);
+
 // The fields of the report into an open JSON object.
 void write_fit_json(JsonWriter& json, const FitReportInput& in);
 // The whole report as one JSON object (one line).

@@ -70,22 +70,10 @@ EpsCarryOver eps_at_speed(const FitCarryOver& fit, double velocity_m_s) {
 
 }  // namespace restitution::cli
 
-#include "cli/json_writer.hpp"
+#include "cli/fit_data_report.hpp"
 
 namespace restitution::cli {
 namespace {
-
-void interval_json(JsonWriter& json, const char* name, const FitInterval& i) {
-  json.key(name).begin_array();
-  i.low_at_edge ? json.null() : json.value(i.low);
-  i.high_at_edge ? json.null() : json.value(i.high);
-  json.end_array();
-}
-
-std::string interval_text(const FitInterval& i) {
-  auto bound = [](double x, bool edge) { return edge ? std::string("edge") : fmt::format("{:.6g}", x); };
-  return fmt::format("[{}, {}]", bound(i.low, i.low_at_edge), bound(i.high, i.high_at_edge));
-}
 
 FitInterval scaled(FitInterval i, double factor) {
   if (!i.low_at_edge) i.low *= factor;
@@ -108,17 +96,17 @@ int calibrate_from_fit(const std::filesystem::path& file, std::optional<Collisio
     w.begin_object().field("from_fit", file.string()).field("end", end_name(fit.end));
     w.field("sigma_estimated", fit.sigma_estimated).field("points", static_cast<long>(fit.points));
     w.field("beta", fit.beta);
-    interval_json(w, "beta_ci68", fit.ci68);
-    interval_json(w, "beta_ci95", fit.ci95);
+    write_interval(w, "beta_ci68", fit.ci68);
+    write_interval(w, "beta_ci95", fit.ci95);
     w.field("velocity_m_s", velocity_m_s).field("zeta", zeta_from(fit.beta, velocity_m_s));
     w.field("eps", eps.eps);
-    interval_json(w, "eps_ci68", eps.ci68);
-    interval_json(w, "eps_ci95", eps.ci95);
+    write_interval(w, "eps_ci68", eps.ci68);
+    write_interval(w, "eps_ci95", eps.ci95);
     w.field("characteristic_velocity_m_s", characteristic_velocity_m_s(fit.beta));
     if (k) {
       w.field("k", *k).field("dissipative_constant_s", fit.beta * factor);
-      interval_json(w, "dissipative_constant_ci68", scaled(fit.ci68, factor));
-      interval_json(w, "dissipative_constant_ci95", scaled(fit.ci95, factor));
+      write_interval(w, "dissipative_constant_ci68", scaled(fit.ci68, factor));
+      write_interval(w, "dissipative_constant_ci95", scaled(fit.ci95, factor));
     }
     w.end_object();
     fmt::print("{}\n", w.str());

@@ -131,6 +131,19 @@ std::vector<FitCandidate> default_fit_candidates() {
           {LawKind::linear_dashpot, CollisionEnd::delayed_recovery}};
 }
 
+std::vector<FitCandidate> fit_candidates(const std::vector<std::string>& law_names,
+                                         const std::string& speed_independent_end) {
+  const CollisionEnd constant_end = end_from_name(speed_independent_end);
+  std::vector<LawKind> laws;
+  for (const std::string& name : law_names) laws.push_back(law_from_name(name));
+  std::vector<FitCandidate> out;
+  for (const FitCandidate& c : default_fit_candidates()) {
+    if (!laws.empty() && std::find(laws.begin(), laws.end(), c.law) == laws.end()) continue;
+    out.push_back({c.law, c.law == LawKind::viscoelastic_hertz ? c.end : constant_end});
+  }
+  return out;
+}
+
 const char* fit_parameter_name(LawKind law) {
   if (law == LawKind::viscoelastic_hertz) return "beta";
   return law == LawKind::linear_dashpot ? "damping-ratio" : "zeta";
