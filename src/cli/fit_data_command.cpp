@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "cli/fit_data_csv.hpp"
 #include "cli/fit_data_report.hpp"
 #include "cli/material_options.hpp"
 #include "cli/output_files.hpp"
 #include "restitution/fit.hpp"
+#include "restitution/fit_csv.hpp"
 #include "restitution/material.hpp"
 
 namespace restitution::cli {

@@ -1,4 +1,4 @@
-#include "cli/fit_data_csv.hpp"
+#include "restitution/fit_csv.hpp"
 
 #include <fmt/core.h>
 
@@ -11,7 +11,7 @@
 
 #include "restitution/errors.hpp"
 
-namespace restitution::cli {
+namespace restitution {
 namespace {
 
 std::string trimmed(const std::string& text) {
@@ -125,4 +125,4 @@ FitData read_fit_csv(const std::filesystem::path& path) {
   return parse_fit_csv(buffer.str(), path.string());
 }
 
-}  // namespace restitution::cli
+}  // namespace restitution
