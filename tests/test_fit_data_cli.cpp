@@ -105,5 +105,26 @@ TEST(FitDataCli, CalibrateFromFitCarriesTheIntervalsOver) {
   EXPECT_EQ(bad.status, 2);
 }
 
+TEST(FitDataCli, DemFromFitUsesTheFitsAAndSaysItsUncertainty) {
+  const auto json_path = (std::filesystem::temp_directory_path() / "restitution-fit-dem.json").string();
+  ASSERT_EQ(test_support::run_cli("fit-data " + kExample + " --output " + json_path).status, 0);
+  const std::string material = " --young-modulus 1e7 --poisson-ratio 0.45 --radius 0.01 --density 1100";
+  const auto r = test_support::run_cli("dem --code lammps --json --from-fit " + json_path + material);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["dissipative_constant_s"], j["from_fit"]["dissipative_constant_s"]);
+  EXPECT_EQ(j["end"], "delayed-recovery");
+  ASSERT_EQ(j["from_fit"]["eps"].size(), j["eps"].size());
+  for (std::size_t i = 0; i < j["eps"].size(); ++i) {
+    // The lines' ε at each speed lies in the interval the fit carries over.
+    const double eps = j["eps"][i]["eps"].get<double>();
+    EXPECT_NEAR(eps, j["from_fit"]["eps"][i]["eps"].get<double>(), 1e-9);
+    EXPECT_LT(j["from_fit"]["eps"][i]["ci95"][0].get<double>(), eps);
+    EXPECT_GT(j["from_fit"]["eps"][i]["ci95"][1].get<double>(), eps);
+  }
+  EXPECT_EQ(test_support::run_cli("dem --code lammps --eps 0.5 --from-fit " + json_path + material).status,
+            2);
+}
+
 }  // namespace
 }  // namespace restitution

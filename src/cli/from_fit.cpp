@@ -127,3 +127,44 @@ int calibrate_from_fit(const std::filesystem::path& file, std::optional<Collisio
 }
 
 }  // namespace restitution::cli
+
+namespace restitution::cli {
+
+std::string fit_carry_over_text(const std::filesystem::path& file, const FitCarryOver& fit, double k,
+                                const std::vector<double>& speeds_m_s, const char* comment) {
+  const double factor = dissipative_constant_from(1.0, k);
+  std::string out = fmt::format(
+      "{} from the fit {} ({} points{}): beta = {:.9g}, 95 % {}; A = {:.9g} s, 68 % {} s, 95 % {} s\n",
+      comment, file.string(), fit.points, fit.sigma_estimated ? ", scatter estimated" : "", fit.beta,
+      interval_text(fit.ci95), fit.beta * factor, interval_text(scaled(fit.ci68, factor)),
+      interval_text(scaled(fit.ci95, factor)));
+  for (const double v : speeds_m_s) {
+    const EpsCarryOver e = eps_at_speed(fit, v);
+    out += fmt::format("{}   v = {:<10.6g} m/s  eps = {:.6f}, 95 % {} (the fit's uncertainty)\n", comment, v,
+                       e.eps, interval_text(e.ci95));
+  }
+  return out;
+}
+
+void write_fit_carry_over(JsonWriter& json, const std::filesystem::path& file, const FitCarryOver& fit,
+                          double k, const std::vector<double>& speeds_m_s) {
+  const double factor = dissipative_constant_from(1.0, k);
+  json.key("from_fit").begin_object().field("file", file.string()).field("end", end_name(fit.end));
+  json.field("sigma_estimated", fit.sigma_estimated).field("beta", fit.beta);
+  write_interval(json, "beta_ci68", fit.ci68);
+  write_interval(json, "beta_ci95", fit.ci95);
+  json.field("dissipative_constant_s", fit.beta * factor);
+  write_interval(json, "dissipative_constant_ci68", scaled(fit.ci68, factor));
+  write_interval(json, "dissipative_constant_ci95", scaled(fit.ci95, factor));
+  json.key("eps").begin_array();
+  for (const double v : speeds_m_s) {
+    const EpsCarryOver e = eps_at_speed(fit, v);
+    json.begin_object().field("velocity_m_s", v).field("eps", e.eps);
+    write_interval(json, "ci68", e.ci68);
+    write_interval(json, "ci95", e.ci95);
+    json.end_object();
+  }
+  json.end_array().end_object();
+}
+
+}  // namespace restitution::cli

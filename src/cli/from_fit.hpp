@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "restitution/contact_law.hpp"
 #include "restitution/fit.hpp"
@@ -38,4 +39,15 @@ namespace restitution::cli {
 // or (json) one object; returns the exit status.
 int calibrate_from_fit(const std::filesystem::path& file, std::optional<CollisionEnd> end,
                        double velocity_m_s, std::optional<double> k, bool json);
+}  // namespace restitution::cli
+
+namespace restitution::cli {
+class JsonWriter;
+// What a fit carries over into `dem --from-fit`: A = β / ((3/2) k^{2/5}) with its intervals and ε at each
+// speed with its interval. As comment lines (prefix "#" or "//") and as the fields of a JSON object
+// "from_fit".
+std::string fit_carry_over_text(const std::filesystem::path& file, const FitCarryOver& fit, double k,
+                                const std::vector<double>& speeds_m_s, const char* comment);
+void write_fit_carry_over(JsonWriter& json, const std::filesystem::path& file, const FitCarryOver& fit,
+                          double k, const std::vector<double>& speeds_m_s);
 }  // namespace restitution::cli
