@@ -104,7 +104,7 @@ int calibrate_from_fit(const std::filesystem::path& file, std::optional<Collisio
     write_interval(w, "eps_ci95", eps.ci95);
     w.field("characteristic_velocity_m_s", characteristic_velocity_m_s(fit.beta));
     if (k) {
-      w.field("k", *k).field("dissipative_constant_s", fit.beta * factor);
+      w.field("k", *k).field("dissipative_constant_s", dissipative_constant_from(fit.beta, *k));
       write_interval(w, "dissipative_constant_ci68", scaled(fit.ci68, factor));
       write_interval(w, "dissipative_constant_ci95", scaled(fit.ci95, factor));
     }
@@ -120,8 +120,9 @@ int calibrate_from_fit(const std::filesystem::path& file, std::optional<Collisio
              velocity_m_s, "", eps.eps, interval_text(eps.ci68), interval_text(eps.ci95));
   fmt::print("  g* (1999 paper, Eq. 31)     {:.9g} m/s\n", characteristic_velocity_m_s(fit.beta));
   if (k) {
-    fmt::print("  A (dissipative constant)    {:.9g} s, 68 % {}, 95 % {}\n", fit.beta * factor,
-               interval_text(scaled(fit.ci68, factor)), interval_text(scaled(fit.ci95, factor)));
+    fmt::print("  A (dissipative constant)    {:.9g} s, 68 % {}, 95 % {}\n",
+               dissipative_constant_from(fit.beta, *k), interval_text(scaled(fit.ci68, factor)),
+               interval_text(scaled(fit.ci95, factor)));
   }
   return 0;
 }
@@ -136,8 +137,8 @@ std::string fit_carry_over_text(const std::filesystem::path& file, const FitCarr
   std::string out = fmt::format(
       "{} from the fit {} ({} points{}): beta = {:.9g}, 95 % {}; A = {:.9g} s, 68 % {} s, 95 % {} s\n",
       comment, file.string(), fit.points, fit.sigma_estimated ? ", scatter estimated" : "", fit.beta,
-      interval_text(fit.ci95), fit.beta * factor, interval_text(scaled(fit.ci68, factor)),
-      interval_text(scaled(fit.ci95, factor)));
+      interval_text(fit.ci95), dissipative_constant_from(fit.beta, k),
+      interval_text(scaled(fit.ci68, factor)), interval_text(scaled(fit.ci95, factor)));
   for (const double v : speeds_m_s) {
     const EpsCarryOver e = eps_at_speed(fit, v);
     out += fmt::format("{}   v = {:<10.6g} m/s  eps = {:.6f}, 95 % {} (the fit's uncertainty)\n", comment, v,
@@ -153,7 +154,7 @@ void write_fit_carry_over(JsonWriter& json, const std::filesystem::path& file, c
   json.field("sigma_estimated", fit.sigma_estimated).field("beta", fit.beta);
   write_interval(json, "beta_ci68", fit.ci68);
   write_interval(json, "beta_ci95", fit.ci95);
-  json.field("dissipative_constant_s", fit.beta * factor);
+  json.field("dissipative_constant_s", dissipative_constant_from(fit.beta, k));
   write_interval(json, "dissipative_constant_ci68", scaled(fit.ci68, factor));
   write_interval(json, "dissipative_constant_ci95", scaled(fit.ci95, factor));
   json.key("eps").begin_array();
