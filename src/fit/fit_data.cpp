@@ -135,6 +135,7 @@ std::vector<FitCandidate> fit_candidates(const std::vector<std::string>& law_nam
                                          const std::string& speed_independent_end) {
   const CollisionEnd constant_end = end_from_name(speed_independent_end);
   std::vector<LawKind> laws;
+  laws.reserve(law_names.size());
   for (const std::string& name : law_names) laws.push_back(law_from_name(name));
   std::vector<FitCandidate> out;
   for (const FitCandidate& c : default_fit_candidates()) {

@@ -45,7 +45,7 @@ FitTask read_fit_task(TomlReader& r, std::string name, const std::map<std::strin
   }
   if (t.candidates.empty()) r.fail("laws", "empty: leave the key out for every law");
   t.material = r.text("material");
-  if (t.material && materials.count(*t.material) == 0) {
+  if (t.material && !materials.contains(*t.material)) {
     r.fail("material", fmt::format("no [materials.{}] in this scene", *t.material));
   }
   t.reference_characteristic_velocity_m_s = r.number("reference_characteristic_velocity");
