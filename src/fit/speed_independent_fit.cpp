@@ -22,11 +22,24 @@ class EpsInverse {
     options_.tolerance = options.tolerance;
     options_.method = options.method;
     options_.ends = EndSet{candidate.end};
-    // The naive end of these members exists below ζ = 2 sqrt(b + 1) (contact_law.hpp); ε -> 0 there.
-    if (candidate.end == CollisionEnd::naive) {
-      zeta_high_ = 2.0 * std::sqrt(law_exponents(candidate.law).damping + 1.0) * (1.0 - 1e-6);
+    if (candidate.end == CollisionEnd::delayed_recovery) {
+      log_eps_high_ = log_eps(zeta_high_);
+      return;
     }
-    log_eps_high_ = log_eps(zeta_high_);
+    // The naive end of these members exists below ζ = 2 sqrt(b + 1) (contact_law.hpp), ε -> 0 there, and the
+    // solver refuses the tolerance close to it (rounding grows near critical damping): the edge is the
+    // closest approach it accepts.
+    const double critical = 2.0 * std::sqrt(law_exponents(candidate.law).damping + 1.0);
+    for (const double gap : {1e-6, 1e-5, 1e-4, 1e-3, 1e-2}) {
+      zeta_high_ = critical * (1.0 - gap);
+      try {
+        log_eps_high_ = log_eps(zeta_high_);
+        return;
+      } catch (const InvalidInput&) {
+      } catch (const NumericalFailure&) {
+      }
+    }
+    log_eps_high_ = log_eps(zeta_high_);  // reports why, as the fit's message
   }
 
   // ln ε at ζ from whichever of ε and 1 - ε carries the relative accuracy.
