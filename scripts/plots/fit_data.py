@@ -38,7 +38,9 @@ def main():
                  capsize=2, label="data" + ("" if has_sigma else " (no sigma)"), zorder=3)
     for i, law in enumerate(laws):
         color = f"C{i}"
-        top.plot(curves["v"], curves["eps_" + law], color=color, label=law.replace("_", ", "))
+        # Line styles differ so that tied laws (Tsuji and the dash-pot fit the same constant) stay visible.
+        top.plot(curves["v"], curves["eps_" + law], color=color, linestyle=["-", "--", "-.", ":"][i % 4],
+                 label=law.replace("_", ", "))
         low, high = curves["low_" + law], curves["high_" + law]
         pairs = [(v, lo, hi) for v, lo, hi in zip(curves["v"], low, high) if math.isfinite(lo) and math.isfinite(hi)]
         if pairs:
