@@ -8,6 +8,8 @@
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/fast.hpp"
+#include "restitution/fit.hpp"
+#include "restitution/fit_csv.hpp"
 #include "restitution/material.hpp"
 #include "restitution/series.hpp"
 #include "restitution/series_tables.hpp"

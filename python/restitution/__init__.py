@@ -23,7 +23,7 @@ from . import fast, series
 from ._restitution import CollisionResult, EndResult, Calibration, Material, MaxCompression
 from ._restitution import NumericalFailure, SolverStats
 
-__all__ = ["eps", "solve", "calibrate", "zeta_of", "Material", "NumericalFailure", "CollisionResult",
+__all__ = ["eps", "solve", "calibrate", "fit_data", "zeta_of", "Material", "NumericalFailure", "CollisionResult",
            "EndResult", "MaxCompression", "SolverStats", "Calibration", "series", "fast"]
 
 _SCALARS = (float, int)
@@ -141,3 +141,28 @@ def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=1e
             raise TypeError(f"{name} must be a real number, got {type(value).__name__}")
     return _core.calibrate(float(eps), float(velocity), _text("end", end), _tolerance(tolerance),
                            _text("method", method), material)
+
+
+def fit_data(v, eps, sigma=None, *, laws=None, speed_independent_end="delayed-recovery", material=None,
+             tolerance=1e-10, method="auto"):
+    """Fit measured eps at impact speeds v [m/s] (optional standard deviations sigma) with every candidate law.
+
+    Candidates: viscoelastic Hertz at the delayed-recovery and naive ends (parameter "beta"
+    [s^(1/5) m^(-1/5)]), Tsuji ("zeta") and the linear dash-pot ("damping-ratio") at speed_independent_end;
+    laws (names as restitution's law names) restricts them. Returns a dict with the keys of
+    `restitution fit-data --json` (docs/fit.md): "fits" (one dict per law: "value", "ci68", "ci95" as
+    [low, high] from the profile of chi2, a bound at the edge of the checked range being None, "chi2_per_dof",
+    "aic", "converged", "residual_tests", ...), "best" (index of the lowest AIC), "sigma_estimated" (True
+    without sigma: the scatter is estimated from the residuals and the intervals use t quantiles). With a
+    Material, the Hertz fits carry "dissipative_constant_s" (A [s]) with its intervals. Raises ValueError for
+    bad data (eps outside (0, 1), v <= 0, sigma <= 0, NaN, too few points).
+    """
+    if material is not None and not isinstance(material, Material):
+        raise TypeError(f"material must be a restitution.Material, got {type(material).__name__}")
+    v = _real_array("v", v).ravel().tolist()
+    eps = _real_array("eps", eps).ravel().tolist()
+    sigma = None if sigma is None else _real_array("sigma", sigma).ravel().tolist()
+    if laws is not None:
+        laws = [_text("laws", law) for law in ([laws] if isinstance(laws, str) else laws)]
+    return _core.fit_data(v, eps, sigma, laws, _text("speed_independent_end", speed_independent_end), material,
+                          _tolerance(tolerance), _text("method", method))

@@ -1,6 +1,6 @@
 # Type stubs of the restitution package. Physical quantities in SI units (named in each docstring);
 # zeta, tau, x and the EndResult/CollisionResult fields in natural units (x'(0) = 1).
-from typing import Literal, Optional, Sequence, Tuple, Union, overload
+from typing import Any, Dict, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -174,3 +174,15 @@ def calibrate(
     tolerance: float = ...,
     method: Method = ...,
 ) -> Calibration: ...
+
+def fit_data(
+    v: ArrayLike,  # m/s
+    eps: ArrayLike,
+    sigma: Optional[ArrayLike] = ...,
+    *,
+    laws: Optional[Union[str, Sequence[str]]] = ...,
+    speed_independent_end: End = ...,
+    material: Optional[Material] = ...,
+    tolerance: float = ...,
+    method: Method = ...,
+) -> Dict[str, Any]: ...

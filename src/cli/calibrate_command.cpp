@@ -7,6 +7,7 @@
 
 #include "cli/build_json.hpp"
 #include "cli/commands.hpp"
+#include "cli/from_fit.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/material_options.hpp"
 #include "cli/options.hpp"
@@ -25,6 +26,8 @@ struct CalibrateOptions {
   std::string method = "auto";
   MaterialOptions material;
   bool json = false;
+  std::string from_fit;  // fit-data --output FILE: beta and its intervals instead of --eps
+  bool end_given = false;
 };
 
 std::optional<double> material_k(const CalibrateOptions& o) {
@@ -33,6 +36,13 @@ std::optional<double> material_k(const CalibrateOptions& o) {
 }
 
 int run_calibrate(const CalibrateOptions& o) {
+  if (!o.from_fit.empty()) {
+    if (o.eps != 0.0) throw InvalidInput("--from-fit and --eps exclude each other");
+    const std::optional<CollisionEnd> end =
+        o.end_given ? std::optional<CollisionEnd>(end_from_name(o.end)) : std::nullopt;
+    return calibrate_from_fit(o.from_fit, end, o.velocity, material_k(o), o.json);
+  }
+  if (o.eps == 0.0) throw InvalidInput("--eps is required (or --from-fit FILE)");
   CalibrationRequest request;
   request.eps = o.eps;
   request.velocity_m_s = o.velocity;
@@ -79,7 +89,10 @@ void add_calibrate_command(CLI::App& app, Action& chosen) {
   auto o = std::make_shared<CalibrateOptions>();
   CLI::App* cmd = app.add_subcommand(
       "calibrate", "beta (and A for a material, and the 1999 g*) from a measured eps at one impact speed");
-  cmd->add_option("--eps", o->eps, "measured coefficient of restitution, in (0, 1)")->required();
+  cmd->add_option("--eps", o->eps, "measured coefficient of restitution, in (0, 1)");
+  cmd->add_option("--from-fit", o->from_fit,
+                  "instead of --eps: the JSON of fit-data --output; beta, eps at --velocity and A with the "
+                  "intervals the fit carries over (the Hertz fit with the lowest AIC, or at --end if given)");
   cmd->add_option("--velocity", o->velocity, "impact speed v > 0 in m/s")->required();
   cmd->add_option("--end", o->end, "end of the collision the measurement corresponds to")
       ->check(CLI::IsMember({"naive", "delayed-recovery"}))
@@ -96,7 +109,10 @@ void add_calibrate_command(CLI::App& app, Action& chosen) {
   add_material_options(*cmd, o->material);
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
-  cmd->callback([o, &chosen] { chosen = [o] { return run_calibrate(*o); }; });
+  cmd->callback([o, cmd, &chosen] {
+    o->end_given = cmd->count("--end") > 0;
+    chosen = [o] { return run_calibrate(*o); };
+  });
 }
 
 }  // namespace restitution::cli

@@ -7,6 +7,7 @@ void add_all_commands(CLI::App& app, Action& chosen) {
   add_reference_command(app, chosen);
   add_work_precision_command(app, chosen);
   add_fit_command(app, chosen);
+  add_fit_data_command(app, chosen);
   add_stability_command(app, chosen);
   add_calibrate_command(app, chosen);
   add_run_command(app, chosen);

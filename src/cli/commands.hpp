@@ -13,6 +13,7 @@ void add_eps_command(CLI::App& app, Action& chosen);
 void add_reference_command(CLI::App& app, Action& chosen);
 void add_work_precision_command(CLI::App& app, Action& chosen);
 void add_fit_command(CLI::App& app, Action& chosen);
+void add_fit_data_command(CLI::App& app, Action& chosen);
 void add_stability_command(CLI::App& app, Action& chosen);
 void add_calibrate_command(CLI::App& app, Action& chosen);
 void add_run_command(CLI::App& app, Action& chosen);

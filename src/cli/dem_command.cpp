@@ -9,9 +9,12 @@
 
 #include "cli/build_json.hpp"
 #include "cli/commands.hpp"
+#include "cli/from_fit.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/material_options.hpp"
 #include "dem/lines_check.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/material.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -25,7 +28,34 @@ struct DemOptions {
   double tolerance = 1e-10;
   double friction = 0.0;  // Coulomb mu of the tangential model [1]
   bool json = false;
+  std::string from_fit;  // fit-data --output FILE: A (and the end) from a fit, with its uncertainty
+  bool end_given = false;
 };
+
+// --from-fit: the fit's Hertz β (at --end when given, else the lowest AIC) becomes A for this material.
+struct FromFit {
+  FitCarryOver fit;
+  double k = 0.0;
+};
+std::optional<FromFit> apply_from_fit(DemOptions& o) {
+  if (o.from_fit.empty()) return std::nullopt;
+  if (o.eps || o.dissipative_constant) {
+    throw InvalidInput("--from-fit excludes --eps and --dissipative-constant");
+  }
+  FromFit f;
+  f.fit = read_fit_result(o.from_fit,
+                          o.end_given ? std::optional<CollisionEnd>(end_from_name(o.end)) : std::nullopt);
+  f.k = elastic_constants(material_from(o.material)).k;
+  o.dissipative_constant = dissipative_constant_from(f.fit.beta, f.k);
+  o.end = end_name(f.fit.end);
+  return f;
+}
+
+std::vector<double> speeds_of(const dem::LinesResult& r) {
+  std::vector<double> out;
+  for (const auto& e : r.eps) out.push_back(e.velocity_m_s);
+  return out;
+}
 
 dem::LinesResult compute(const DemOptions& o) {
   dem::LinesRequest request;
@@ -39,7 +69,7 @@ dem::LinesResult compute(const DemOptions& o) {
   return dem::check_lines(request);
 }
 
-void print_json(const dem::LinesResult& r) {
+void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optional<FromFit>& from_fit) {
   JsonWriter json;
   json.begin_object();
   json.field("code", dem::code_name(r.deck.code)).field("end", end_name(r.deck.end));
@@ -73,12 +103,13 @@ void print_json(const dem::LinesResult& r) {
     json.field("dissipative_constant_s", r.yade->dissipative_constant_s);
     json.field("eps_at_vn", r.yade->eps_at_vn).end_object();
   }
+  if (from_fit) write_fit_carry_over(json, o.from_fit, from_fit->fit, from_fit->k, speeds_of(r));
   write_sundials_build(json);
   json.end_object();
   fmt::print("{}\n", json.str());
 }
 
-void print_text(const dem::LinesResult& r) {
+void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optional<FromFit>& from_fit) {
   const bool cpp = r.deck.code == dem::Code::mercurydpm || r.deck.code == dem::Code::chrono;
   const char* c = cpp ? "//" : "#";
   fmt::print("{} restitution dem --code {}: viscoelastic Hertz law, A = {:.10g} s, {} end\n", c,
@@ -103,6 +134,8 @@ void print_text(const dem::LinesResult& r) {
     fmt::print("{} which makes eps(vn) = {:.10f}; the en above instead makes YADE recover the exact A\n", c,
                r.yade->eps_at_vn);
   }
+  if (from_fit)
+    fmt::print("{}", fit_carry_over_text(o.from_fit, from_fit->fit, from_fit->k, speeds_of(r), c));
 }
 
 }  // namespace
@@ -120,6 +153,10 @@ void add_dem_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--velocity", o->velocity,
                   "impact speed in m/s of --eps (also YADE's vn and the reference speed; default 1)");
   cmd->add_option("--dissipative-constant", o->dissipative_constant, "the dissipative constant A in s");
+  cmd->add_option(
+      "--from-fit", o->from_fit,
+      "instead of --eps or --dissipative-constant: the JSON of fit-data --output; A from its Hertz fit "
+      "(at --end if given, else the lowest AIC) with the uncertainty it carries over");
   cmd->add_option("--end", o->end,
                   "end of the collision: naive (no clamp) or delayed-recovery (force clamped)")
       ->check(CLI::IsMember({"naive", "delayed-recovery"}))
@@ -133,13 +170,15 @@ void add_dem_command(CLI::App& app, Action& chosen) {
       ->capture_default_str();
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
-  cmd->callback([o, &chosen] {
+  cmd->callback([o, cmd, &chosen] {
+    o->end_given = cmd->count("--end") > 0;
     chosen = [o] {
+      const std::optional<FromFit> from_fit = apply_from_fit(*o);
       const dem::LinesResult r = compute(*o);
       if (o->json) {
-        print_json(r);
+        print_json(r, *o, from_fit);
       } else {
-        print_text(r);
+        print_text(r, *o, from_fit);
       }
       return 0;
     };

@@ -7,10 +7,12 @@
 #include <tuple>
 
 #include "cli/build_json.hpp"
+#include "cli/fit_data_report.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/output_files.hpp"
 #include "cli/scene_damping.hpp"
 #include "cli/scene_dem.hpp"
+#include "cli/scene_fit_section.hpp"
 #include "cli/scene_tables.hpp"
 #include "cli/scene_text.hpp"
 #include "cli/stop_signals.hpp"
@@ -81,6 +83,7 @@ class SceneWriter {
     for (std::size_t i = 0; i < scene_.damping_checks.size(); ++i) {
       order.emplace_back(scene_.damping_checks[i].line, 4, i);
     }
+    for (std::size_t i = 0; i < scene_.fits.size(); ++i) order.emplace_back(scene_.fits[i].line, 5, i);
     std::sort(order.begin(), order.end());
     for (const auto& [line, kind, i] : order) {
       if (kind == 0) sweep(i);
@@ -88,6 +91,7 @@ class SceneWriter {
       if (kind == 2) dashpot(i);
       if (kind == 3) dem(i);
       if (kind == 4) damping_check(i);
+      if (kind == 5) fit(i);
     }
     calibrations();
     studies();
@@ -341,6 +345,22 @@ class SceneWriter {
       report_ += p.caption;
     }
     report_ += section.findings;
+  }
+
+  // [[fit]]: the data with error bars, each law's curve with its 95 % band and the residuals (one plot), the
+  // table of the fits; the fit-data JSON object under "fit_<name>" in summary.json.
+  void fit(std::size_t i) {
+    const scene::FitTask& task = scene_.fits[i];
+    const FitSection section = fit_section(scene_, task);
+    write_file(task.name + ".csv", section.data_csv);
+    write_file(task.name + "_curves.csv", section.curves_csv);
+    report_ += fmt::format("## {}\n\n", task.title);
+    report_ += plot("fit_data", task.name,
+                    {"--curves", (folder_ / (task.name + "_curves.csv")).string(), "--title", task.title});
+    report_ += section.markdown;
+    json_.key("fit_" + task.name).begin_object();
+    write_fit_json(json_, FitReportInput{task.source, &task.data, &section.result, section.k});
+    json_.end_object();
   }
 
   void calibrations() {

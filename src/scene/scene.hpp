@@ -14,6 +14,7 @@
 #include "restitution/collision_solver.hpp"
 #include "restitution/material.hpp"
 #include "restitution/series.hpp"
+#include "scene/scene_fit.hpp"
 
 namespace restitution::scene {
 
@@ -147,6 +148,7 @@ struct Scene {
   std::vector<ExternalStudy> studies;
   std::vector<DemTask> dems;
   std::vector<DampingCheckTask> damping_checks;
+  std::vector<FitTask> fits;  // [[fit]]: measured eps(v) (scene_fit.hpp)
 };
 
 // Parses and validates a scene. file_name is used in messages only. Throws InvalidInput.

@@ -145,6 +145,9 @@ class Parser {
     each("dashpot", [this](TomlReader& r) { scene_.dashpots.push_back(read_dashpot(r)); });
     each("dem", [this](TomlReader& r) { scene_.dems.push_back(read_dem(r)); });
     each("damping_check", [this](TomlReader& r) { scene_.damping_checks.push_back(read_damping_check(r)); });
+    each("fit", [this](TomlReader& r) {
+      scene_.fits.push_back(detail::read_fit_task(r, read_name(r, "fit"), scene_.materials));
+    });
     for (const char* kind : {"work_precision", "stability"}) {
       each(kind, [this, kind](TomlReader& r) { scene_.studies.push_back(read_study(r, kind)); });
     }
@@ -175,6 +178,8 @@ class Parser {
     // Two tasks must not write the same file: a work-precision study also writes NAME_summary.csv.
     std::vector<std::string> stems = {name};
     if (std::string_view(kind) == "work_precision") stems.push_back(name + "_summary");
+    // A fit also writes its model curves with their bands, NAME_curves.csv.
+    if (std::string_view(kind) == "fit") stems.push_back(name + "_curves");
     // A damping check may write an error map NAME_<recipe>_error.csv per recipe.
     if (std::string_view(kind) == "damping_check") {
       for (damping_check::Recipe recipe : damping_check::kRecipes) {

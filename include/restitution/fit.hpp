@@ -1,0 +1,139 @@
+#pragma once
+// Fitting measured coefficients of restitution ε(v) (docs/fit.md): for each candidate law the one free
+// parameter by (weighted) least squares, intervals from the profile of χ², χ² per degree of freedom, AIC and
+// BIC to compare the laws, and tests of the residuals against ln v that say where the data leave a law.
+//
+// Candidates: viscoelastic Hertz at either end (parameter β [s^{1/5} m^{-1/5}], ζ = β v^{1/5}, ε from the
+// certified fast table, restitution/fast.hpp), and the speed-independent members (Tsuji: ζ, the linear
+// dash-pot: the damping ratio r = ζ/2), whose one ε serves every data point (ε from the collision solver).
+// Library code: nothing is printed; errors are InvalidInput naming the problem.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "restitution/collision_solver.hpp"
+#include "restitution/contact_law.hpp"
+
+namespace restitution {
+
+// Measurements: impact speeds v [m/s] > 0, ε in (0, 1), and either no σ (the scatter is estimated from the
+// residuals) or one σ > 0 per point (standard deviation of ε). Speeds may repeat.
+struct FitData {
+  std::vector<double> velocity_m_s;
+  std::vector<double> eps;
+  std::vector<double> sigma;  // empty, or one per point
+};
+
+// Throws InvalidInput naming the first bad point (index from 0) or the problem: fewer points than
+// 2 (one parameter, plus one for the scatter when σ is estimated; 1 with σ), sizes that differ, a NaN,
+// ε outside (0, 1), v <= 0, σ <= 0.
+void check_fit_data(const FitData& data);
+
+// One law at one end of the collision. The speed-independent members fit the same ε at either end (only
+// their parameter differs); fit_data uses their delayed-recovery end unless told otherwise.
+struct FitCandidate {
+  LawKind law = LawKind::viscoelastic_hertz;
+  CollisionEnd end = CollisionEnd::delayed_recovery;
+};
+// Viscoelastic Hertz at the delayed-recovery and naive ends, Tsuji and the linear dash-pot (delayed
+// recovery).
+std::vector<FitCandidate> default_fit_candidates();
+// The default candidates restricted to the named laws (law_from_name; empty: all; viscoelastic-hertz brings
+// both ends), the speed-independent ones at `speed_independent_end` (end_from_name). Throws InvalidInput
+// naming an unknown law or end.
+std::vector<FitCandidate> fit_candidates(const std::vector<std::string>& law_names,
+                                         const std::string& speed_independent_end);
+// "beta" | "zeta" | "damping-ratio": the name of the fitted parameter of a law.
+const char* fit_parameter_name(LawKind law);
+
+enum class FitStatus {
+  converged,
+  at_edge,        // the best value lies at ζ = kLargestCheckedZeta (or β -> 0): no number is reported
+  not_converged,  // the minimiser or a solve failed; message says why
+};
+const char* fit_status_name(FitStatus status);  // "converged" | "at-edge" | "not-converged"
+
+// A confidence interval of the parameter. A bound beyond the checked range (ζ > kLargestCheckedZeta at the
+// largest speed) is not a number: the flag is set and the value is NaN. A lower bound of 0 is a number
+// (ζ = 0, elastic spheres, lies in the checked range).
+struct FitInterval {
+  double low = 0.0;
+  double high = 0.0;
+  bool low_at_edge = false;
+  bool high_at_edge = false;
+};
+
+// Residuals against ln v: a weighted straight line r = a + b (ln v - mean) (the slope b and its two-sided
+// p-value from the t distribution, or the normal one with known σ) and a Wald-Wolfowitz runs test of the
+// residuals' signs ordered by speed (one-sided p-value for too few runs). Available with >= 3 points and
+// >= 2 distinct speeds.
+struct ResidualTests {
+  bool available = false;
+  double slope = 0.0;        // d(ε_measured - ε_law)/d ln v
+  double slope_error = 0.0;  // its standard error
+  double slope_p_value = 1.0;
+  int runs = 0;
+  double runs_expected = 0.0;
+  double runs_p_value = 1.0;
+  // "none" | "falls-with-speed" (data drop below the law at high speed: plasticity, fracture) |
+  // "rises-with-speed" (data below the law at low speed: adhesion) | "runs" (systematic, not monotone):
+  // the verdict at the 1 % level.
+  std::string verdict = "none";
+};
+
+struct LawFit {
+  FitCandidate candidate;
+  std::string parameter;  // fit_parameter_name
+  FitStatus status = FitStatus::not_converged;
+  std::string message;  // why, when not converged or at the edge
+  double value = 0.0;   // the best parameter (NaN unless converged)
+  FitInterval ci68;     // Δχ² = 1 (known σ) or the t quantile of 68.27 % (estimated σ)
+  FitInterval ci95;     // Δχ² = 3.84 or the t quantile of 95 %
+  double chi2 = 0.0;    // Σ w (ε_i - ε_law)², w = 1/σ² (1 when σ is estimated)
+  int dof = 0;          // points - 1
+  double chi2_per_dof = 0.0;
+  double aic =
+      0.0;  // Gaussian likelihood: χ² + 2 (known σ) or n ln(χ²/n) + 4 (estimated σ and the parameter)
+  double bic = 0.0;
+  ResidualTests residuals;
+  std::vector<double> model_eps;  // ε of the fitted law at each data speed
+  // Viscoelastic Hertz only: the 1999 paper's g* = (C1 β)^{-5} [m/s] with its intervals (decreasing in β,
+  // so the bounds swap), and with FitOptions::k the dissipative constant A = β / ((3/2) k^{2/5}) [s].
+  std::optional<double> characteristic_velocity_m_s;
+  FitInterval characteristic_velocity_ci68, characteristic_velocity_ci95;
+  std::optional<double> dissipative_constant_s;
+  FitInterval dissipative_constant_ci68, dissipative_constant_ci95;
+};
+
+struct FitOptions {
+  std::vector<FitCandidate> candidates = default_fit_candidates();
+  // Accuracy of each solve for the speed-independent members (the Hertz fits use the fast table, 1e-13).
+  double tolerance = 1e-10;
+  Method method = Method::automatic;
+  std::optional<double> k;  // ρ/m_eff [s^-2 m^-1/2] of a material (ElasticConstants::k): gives A
+};
+
+struct FitResult {
+  std::vector<LawFit> fits;  // in the order of FitOptions::candidates
+  // The index of the preferred fit (lowest AIC among the converged ones); nullopt when none converged.
+  std::optional<std::size_t> best;
+  // Fits whose AIC lies within 1e-9 (relative) of the best one's: the data cannot tell them apart (the
+  // speed-independent members always tie with each other).
+  std::vector<std::size_t> tied_with_best;
+  bool sigma_estimated = false;
+  double level68 = 0.0;  // the coverage of ci68 (0.6827, one standard deviation)
+  double level95 = 0.95;
+  std::size_t points = 0;
+};
+
+// Checks the data (check_fit_data) and fits every candidate. Throws InvalidInput for bad data or options;
+// a fit that fails is reported in its LawFit, never thrown.
+FitResult fit_data(const FitData& data, const FitOptions& options = {});
+
+// ε of a candidate law with parameter `parameter` (β, ζ or the damping ratio) at impact speed v [m/s]:
+// the model curve of a fit. The solver is used for the speed-independent members only.
+double fit_model_eps(const FitCandidate& candidate, double parameter, double velocity_m_s,
+                     CollisionSolver& solver, const SolveOptions& options = {});
+
+}  // namespace restitution

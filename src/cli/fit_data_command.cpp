@@ -1,0 +1,83 @@
+// `restitution fit-data FILE`: fit measured ε(v) with every candidate law, intervals from the profile of χ²,
+// the law the data prefer (docs/fit.md).
+#include <fmt/core.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/fit_data_report.hpp"
+#include "cli/material_options.hpp"
+#include "cli/output_files.hpp"
+#include "restitution/fit.hpp"
+#include "restitution/fit_csv.hpp"
+#include "restitution/material.hpp"
+
+namespace restitution::cli {
+namespace {
+
+struct FitDataOptions {
+  std::string file;
+  std::vector<std::string> laws;
+  std::string speed_independent_end = "delayed-recovery";
+  double tolerance = 1e-10;
+  std::string method = "auto";
+  MaterialOptions material;
+  bool json = false;
+  std::string output;
+};
+
+int run_fit_data(const FitDataOptions& o) {
+  // Everything is checked before anything is written.
+  if (!o.output.empty()) check_output_file(o.output);
+  FitOptions options;
+  options.candidates = fit_candidates(o.laws, o.speed_independent_end);
+  options.tolerance = o.tolerance;
+  options.method = method_from_name(o.method);
+  if (o.material.any()) options.k = elastic_constants(material_from(o.material)).k;
+  const FitData data = read_fit_csv(o.file);
+  const FitResult result = fit_data(data, options);
+  const FitReportInput report{o.file, &data, &result, options.k};
+  const std::string json = fit_json(report);
+  if (!o.output.empty()) write_file_atomically(o.output, json + "\n");
+  fmt::print("{}", o.json ? json + "\n" : fit_table(report));
+  if (!o.output.empty() && !o.json) fmt::print("wrote {}\n", o.output);
+  return 0;
+}
+
+}  // namespace
+
+void add_fit_data_command(CLI::App& app, Action& chosen) {
+  auto o = std::make_shared<FitDataOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "fit-data",
+      "fit measured eps(v) (CSV: v,eps[,sigma]) with viscoelastic Hertz at both ends, Tsuji and the linear "
+      "dash-pot: best parameter, 68 % and 95 % profile intervals, chi2/dof, AIC, residual tests "
+      "(docs/fit.md)");
+  cmd->add_option("file", o->file, "CSV with a header naming the columns v [m/s], eps and optionally sigma")
+      ->required();
+  cmd->add_option(
+      "--law", o->laws,
+      "fit only these laws (repeatable): viscoelastic-hertz (both ends), tsuji-hertz, linear-dashpot");
+  cmd->add_option("--speed-independent-end", o->speed_independent_end,
+                  "end of the collision for tsuji-hertz and linear-dashpot (the data cannot tell: only their "
+                  "parameter differs)")
+      ->check(CLI::IsMember({"naive", "delayed-recovery"}))
+      ->capture_default_str();
+  cmd->add_option("--tolerance", o->tolerance,
+                  "accuracy of each solve of tsuji-hertz and linear-dashpot, in [1e-11, 1e-2] (viscoelastic "
+                  "Hertz uses the certified fast table, 1e-13)")
+      ->capture_default_str();
+  cmd->add_option("--method", o->method, "integration method for those solves: bdf, adams, auto or taylor")
+      ->check(CLI::IsMember({"bdf", "adams", "auto", "taylor"}))
+      ->capture_default_str();
+  add_material_options(*cmd, o->material);
+  cmd->add_flag("--json", o->json, "print one JSON object instead of the table");
+  cmd->add_option("--output", o->output,
+                  "also write the JSON object to this file (for calibrate --from-fit and dem --from-fit)");
+  cmd->callback([o, &chosen] { chosen = [o] { return run_fit_data(*o); }; });
+}
+
+}  // namespace restitution::cli
