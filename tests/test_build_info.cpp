@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
 #include "restitution/build_info.hpp"
@@ -34,11 +35,11 @@ TEST(BuildInfo, VersionFlagSaysWhichSundials) {
 
 TEST(BuildInfo, JsonOutputsCarryTheSundialsBuild) {
   const restitution::SundialsBuild build = restitution::sundials_build();
-  for (const std::string command :
-       {"eps --zeta 1 --json", "calibrate --eps 0.8 --velocity 1 --json",
-        "series eval --kind naive-series --zeta 0.1 --json",
-        "damping-check --recipe lammps-tsuji --eps 0.5 --json",
-        std::string("fit-data ") + RESTITUTION_SOURCE_DIR + "/examples/fit/rubber_drop.csv --json"}) {
+  for (const std::string& command : std::vector<std::string>{
+           "eps --zeta 1 --json", "calibrate --eps 0.8 --velocity 1 --json",
+           "series eval --kind naive-series --zeta 0.1 --json",
+           "damping-check --recipe lammps-tsuji --eps 0.5 --json",
+           std::string("fit-data ") + RESTITUTION_SOURCE_DIR + "/examples/fit/rubber_drop.csv --json"}) {
     const auto r = run_cli(command);
     ASSERT_EQ(r.status, 0) << command << ": " << r.err;
     const auto json = nlohmann::json::parse(r.out);
