@@ -1,7 +1,7 @@
 # `cmake --install BUILD --prefix P` installs the library `restitution` as a CMake package:
 #   P/lib/librestitution.a, P/include/restitution/*.hpp (umbrella: restitution/restitution.hpp),
 #   P/lib/cmake/restitution/{restitutionConfig,restitutionConfigVersion,restitutionTargets}.cmake.
-# A consumer needs find_package(restitution 0.2 REQUIRED) and target_link_libraries(app restitution::restitution).
+# A consumer needs find_package(restitution 0.3 REQUIRED) and target_link_libraries(app restitution::restitution).
 include(CMakePackageConfigHelpers)
 
 set(restitution_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/restitution)
@@ -11,8 +11,13 @@ install(EXPORT restitutionTargets NAMESPACE restitution:: DESTINATION ${restitut
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/restitutionConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/restitutionConfig.cmake INSTALL_DESTINATION ${restitution_package_dir})
-# Before 1.0 a minor version may change the API, so 0.2 accepts 0.2.x only.
+# Before 1.0 a minor version may change the API, so 0.3 accepts 0.3.x only.
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/restitutionConfigVersion.cmake
                                  COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/restitutionConfig.cmake ${PROJECT_BINARY_DIR}/restitutionConfigVersion.cmake
         DESTINATION ${restitution_package_dir})
+
+# The program, its man page and the pkg-config file.
+install(TARGETS restitution RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+include(${CMAKE_CURRENT_LIST_DIR}/pkgconfig.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/manpage.cmake)
