@@ -1,6 +1,9 @@
 # P/share/man/man1/restitution.1, made by Debian's help2man from `restitution --help` and `--version`, with the
 # --help of every subcommand appended as the section COMMANDS (cmake/manpage_commands.cmake), so that the page
 # says what the program says. Without help2man (Debian: help2man, in scripts/setup) no page is made.
+if(RESTITUTION_SANITIZE OR RESTITUTION_BUILD_FUZZERS)
+  return() # instrumented builds are not installed; help2man would run the instrumented program
+endif()
 find_program(HELP2MAN help2man)
 if(NOT HELP2MAN)
   message(STATUS "help2man not found: no man page (Debian: apt-get install help2man)")

@@ -15,7 +15,12 @@ function(restitution_link_flags item out_var)
     get_target_property(imported ${item} IMPORTED)
     if(NOT type STREQUAL "INTERFACE_LIBRARY")
       if(NOT imported)
-        message(FATAL_ERROR "restitution.pc: ${item} is built here but not installed")
+        # Built by this project (e.g. a SUNDIALS compiled along with it): its file in the build tree, which
+        # an installed restitution.pc should not point into; install that library and find it instead.
+        message(STATUS "restitution.pc links ${item} from the build tree")
+        list(APPEND flags "$<TARGET_LINKER_FILE:${item}>")
+        set(${out_var} ${flags} PARENT_SCOPE)
+        return()
       endif()
       # The configuration's file: CMAKE_BUILD_TYPE's if the package has it, else the first one it has.
       get_target_property(configs ${item} IMPORTED_CONFIGURATIONS)
@@ -70,5 +75,6 @@ list(JOIN restitution_pc_flags " " restitution_pc_libs)
 
 file(RELATIVE_PATH restitution_pc_to_prefix /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
 string(REGEX REPLACE "/$" "" restitution_pc_to_prefix "${restitution_pc_to_prefix}")  # ../..
-configure_file(${PROJECT_SOURCE_DIR}/cmake/restitution.pc.in ${PROJECT_BINARY_DIR}/restitution.pc @ONLY)
+configure_file(${PROJECT_SOURCE_DIR}/cmake/restitution.pc.in ${PROJECT_BINARY_DIR}/restitution.pc.configured @ONLY)
+file(GENERATE OUTPUT ${PROJECT_BINARY_DIR}/restitution.pc INPUT ${PROJECT_BINARY_DIR}/restitution.pc.configured)
 install(FILES ${PROJECT_BINARY_DIR}/restitution.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
