@@ -5,7 +5,8 @@
 # data/reference_solutions.csv within the solver's accuracy contract |ε - ε_ref| <= tol · min(ε, 1 - ε).
 # The same app is then built without CMake, by `c++ app.cpp $(pkg-config --cflags --libs restitution)` alone,
 # and checked the same way. The installed program answers --version with the file VERSION, as does
-# pkg-config --modversion, and its man page (help2man) renders with `man -l`.
+# pkg-config --modversion, its man page (help2man) renders with `man -l`, and it runs the default scene from the
+# installed share/restitution.
 # Usage: install_consumer.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
 build=$1
@@ -49,6 +50,14 @@ rendered=$(LC_ALL=C MANWIDTH=80 man -l "$man_page" 2>&1 | tr -s " ")  # ASCII hy
 for expected in "restitution - coefficient of restitution" "restitution eps" "--tolerance" "restitution $version"; do
   grep -qF -- "$expected" <<<"$rendered" || { echo "man -l $man_page lacks '$expected':"; head -20 <<<"$rendered"; exit 1; }
 done
+
+# The installed program needs no checkout: a bare `run` (outside any checkout) takes the installed default scene
+# and plots with the installed scripts.
+run_log=$(cd "$work" && "$work/prefix/bin/restitution" run --quick --output "$work/run" 2>&1) ||
+  { echo "installed restitution run failed: $run_log"; exit 1; }
+grep -qF "$work/prefix/share/restitution/scenes/default.toml" <<<"$run_log" ||
+  { echo "installed restitution run did not take the installed default scene: $run_log"; exit 1; }
+ls "$work"/run/*.png >/dev/null 2>&1 || { echo "installed restitution run made no plot: $run_log"; exit 1; }
 
 cmake -S "$source/examples/cpp" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_CXX_EXTENSIONS=OFF \
