@@ -17,7 +17,7 @@ trap 'rm -rf "$work"' EXIT
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
 
 headers=$(cd "$work/prefix/include/restitution" && ls | tr '\n' ' ')
-expected="calibration.hpp collision_solver.hpp contact_law.hpp errors.hpp fast.hpp material.hpp restitution.hpp series.hpp series_tables.hpp units.hpp "
+expected="build_info.hpp calibration.hpp collision_solver.hpp contact_law.hpp errors.hpp fast.hpp material.hpp restitution.hpp series.hpp series_tables.hpp units.hpp "
 if [ "$headers" != "$expected" ]; then
   echo "installed headers: $headers"
   echo "expected:          $expected"
@@ -63,6 +63,13 @@ cmake -S "$source/examples/cpp" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Rel
   -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_CXX_EXTENSIONS=OFF \
   -DCMAKE_CXX_FLAGS="-Wall -Wextra -Wpedantic -Werror" >/dev/null
 cmake --build "$work/build" >/dev/null
+
+# A library carrying its optimized CVODE (cmake/sundials.cmake) needs no SUNDIALS in the consumer's link.
+if "$build/restitution" --version | grep -q "SUNDIALS .*(optimized" && ldd "$work/build/app" | grep -q sundials; then
+  echo "the consumer links a SUNDIALS library although librestitution.a carries its own CVODE:"
+  ldd "$work/build/app" | grep sundials
+  exit 1
+fi
 
 # Default tolerance of SolveOptions: 1e-10. ζ spans the weakly and the strongly damped regime.
 status=0

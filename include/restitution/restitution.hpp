@@ -2,6 +2,7 @@
 // The restitution library in one include: contact laws, the collision solver and its engines, units and
 // materials, calibration, the analytic series with the published coefficient tables, and the certified
 // fast ε(ζ) table.
+#include "restitution/build_info.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/contact_law.hpp"

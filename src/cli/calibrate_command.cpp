@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 
+#include "cli/build_json.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/material_options.hpp"
@@ -53,6 +54,7 @@ int run_calibrate(const CalibrateOptions& o) {
     if (request.k) json.field("k", *request.k);
     if (c.dissipative_constant_s) json.field("dissipative_constant_s", *c.dissipative_constant_s);
     json.field("solves", c.solves);
+    write_sundials_build(json);
     json.end_object();
     fmt::print("{}\n", json.str());
     return 0;

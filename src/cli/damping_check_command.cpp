@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/build_json.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
 #include "damping_check/check.hpp"
@@ -90,6 +91,7 @@ void print_json(const DampingCheckOptions& o, const std::vector<double>& eps,
   } else {
     entry(0);
   }
+  write_sundials_build(json);
   json.end_object();
   fmt::print("{}\n", json.str());
 }

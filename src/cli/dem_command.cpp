@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/build_json.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/material_options.hpp"
@@ -72,6 +73,7 @@ void print_json(const dem::LinesResult& r) {
     json.field("dissipative_constant_s", r.yade->dissipative_constant_s);
     json.field("eps_at_vn", r.yade->eps_at_vn).end_object();
   }
+  write_sundials_build(json);
   json.end_object();
   fmt::print("{}\n", json.str());
 }

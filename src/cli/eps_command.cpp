@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 
+#include "cli/build_json.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/options.hpp"
@@ -84,6 +85,7 @@ int run_eps(const EpsOptions& o) {
     JsonWriter json;
     json.begin_object();
     write_collision_fields(json, result);
+    write_sundials_build(json);
     json.end_object();
     fmt::print("{}\n", json.str());
   } else {

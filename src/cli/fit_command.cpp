@@ -6,6 +6,7 @@
 
 #include "analysis/asymptotics.hpp"
 #include "analysis/power_law_fit.hpp"
+#include "cli/build_json.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/progress.hpp"
@@ -81,7 +82,9 @@ int run_fit(const FitOptions& o) {
       json.field("eps", eps[i]);
       json.end_object();
     }
-    json.end_array().end_object();
+    json.end_array();
+    write_sundials_build(json);
+    json.end_object();
     fmt::print("{}\n", json.str());
     return 0;
   }

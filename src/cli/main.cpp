@@ -9,6 +9,7 @@
 #include "cli/io_error.hpp"
 #include "cli/parse_errors.hpp"
 #include "cli/stop_signals.hpp"
+#include "restitution/build_info.hpp"
 #include "restitution/errors.hpp"
 
 namespace {
@@ -17,7 +18,8 @@ int run(int argc, char** argv) {
   using namespace restitution;
   CLI::App app{"restitution: coefficient of normal restitution of colliding viscoelastic spheres",
                "restitution"};
-  app.set_version_flag("--version", "restitution " RESTITUTION_VERSION);
+  app.set_version_flag("--version", std::string("restitution " RESTITUTION_VERSION "\nSUNDIALS ") +
+                                        sundials_build_description());
   app.require_subcommand(1);
   app.footer(
       "Exit status: 0 done, 1 numerical failure, 2 bad usage or input, 3 I/O failure (an output file or\n"

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "cli/build_json.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/output_files.hpp"
 #include "cli/scene_damping.hpp"
@@ -91,6 +92,7 @@ class SceneWriter {
     calibrations();
     studies();
     footer(seconds);
+    write_sundials_build(json_);
     json_.end_object();
     write_file("summary.json", json_.str() + "\n");
     write_file("report.md", report_);  // last: its presence says the folder is complete

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/build_json.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/series_reports.hpp"
@@ -44,6 +45,7 @@ int run_coefficients(const CoefficientsOptions& o) {
   } else {
     for (const auto& list : lists) write_array(json, list.symbol.c_str(), list.values);
   }
+  write_sundials_build(json);
   json.end_object();
   if (o.json) {
     fmt::print("{}\n", json.str());
@@ -90,7 +92,9 @@ int run_eval(const EvalOptions& o) {
     JsonWriter json;
     json.begin_object().field("kind", o.kind).field("zeta", o.zeta);
     if (terms > 0) json.field("terms", terms).field("coefficients", coefficients);
-    json.field("eps", v.eps).field("one_minus_eps", v.one_minus_eps).end_object();
+    json.field("eps", v.eps).field("one_minus_eps", v.one_minus_eps);
+    write_sundials_build(json);
+    json.end_object();
     fmt::print("{}\n", json.str());
   } else {
     fmt::print("{} at zeta = {}{}: eps = {:.17g}, 1 - eps = {:.17g}\n", o.kind, o.zeta,

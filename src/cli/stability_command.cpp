@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "analysis/stability_report.hpp"
+#include "cli/build_json.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/output_files.hpp"
@@ -95,7 +96,9 @@ std::string json_text(const StabilityReport& report) {
         .field("engine_failures", d.engine_failures)
         .end_object();
   }
-  json.end_array().end_object();
+  json.end_array();
+  write_sundials_build(json);
+  json.end_object();
   return json.str() + "\n";
 }
 

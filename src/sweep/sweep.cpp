@@ -47,6 +47,7 @@ class SweepRun {
   }
 
   void finish(const SweepPoint& point) {
+    if (control_.point_computed) control_.point_computed(point);  // outside the lock: see SweepControl
     const std::lock_guard lock(mutex_);
     ++summary_.computed;
     if (!point.result) ++summary_.failed;

@@ -42,6 +42,11 @@ struct SweepControl {
   unsigned threads = 0;  // 0: std::thread::hardware_concurrency()
   // Polled before each point: once it returns true no new point starts; points in progress finish.
   std::function<bool()> stop_requested;
+  // Called once per solved point on the worker thread that solved it, concurrently with the other workers
+  // and before point_finished: for work that touches only the point's own data (formatting its row into a
+  // slot of its own), so that it overlaps the other threads' solves instead of queueing behind one lock.
+  // An exception thrown here stops the sweep and is rethrown.
+  std::function<void(const SweepPoint&)> point_computed;
   // Called once per finished point, never concurrently (the sweep serializes the calls), in completion
   // order, which may differ from grid order. An exception thrown here stops the sweep and is rethrown.
   std::function<void(const SweepPoint&)> point_finished;

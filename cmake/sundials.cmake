@@ -1,0 +1,50 @@
+# Which SUNDIALS the library links (docs/performance.md, "SUNDIALS build"):
+#   optimized: CVODE built -O3 from Debian's own source package by scripts/sundials into
+#              build/sundials/<debian version>/ (the version of the installed libsundials-dev). Its objects go
+#              into librestitution.a itself, so consumers of the installed package need no SUNDIALS at all.
+#   system:    Debian's libsundials-dev, compiled without optimization (about 2x slower CVODE). The fallback
+#              when the optimized build is off or could not be made.
+# Sets RESTITUTION_SUNDIALS_BUILD ("optimized" | "system"), RESTITUTION_SUNDIALS_VERSION,
+# RESTITUTION_SUNDIALS_OBJECTS and RESTITUTION_SUNDIALS_INCLUDE_DIR (optimized) or
+# RESTITUTION_SUNDIALS_TARGETS (system). src/CMakeLists.txt applies them to restitution_lib.
+option(RESTITUTION_SUNDIALS_OPTIMIZED "Link CVODE built -O3 from Debian's source package (scripts/sundials)" ON)
+
+set(RESTITUTION_SUNDIALS_BUILD system)
+if(RESTITUTION_SUNDIALS_OPTIMIZED)
+  execute_process(COMMAND dpkg-query -W -f=\${Version} libsundials-dev OUTPUT_VARIABLE debian_sundials_version
+                  RESULT_VARIABLE dpkg_result ERROR_QUIET)
+  set(sundials_cache ${PROJECT_SOURCE_DIR}/build/sundials/${debian_sundials_version})
+  if(dpkg_result EQUAL 0 AND NOT EXISTS ${sundials_cache}/.complete)
+    # Idempotent and never fatal: on failure it warns and the fallback below applies.
+    execute_process(COMMAND bash ${PROJECT_SOURCE_DIR}/scripts/sundials)
+  endif()
+  if(dpkg_result EQUAL 0 AND EXISTS ${sundials_cache}/.complete)
+    file(GLOB RESTITUTION_SUNDIALS_OBJECTS ${sundials_cache}/objects/*.o)
+    set(RESTITUTION_SUNDIALS_INCLUDE_DIR ${sundials_cache}/prefix/include)
+    file(STRINGS ${RESTITUTION_SUNDIALS_INCLUDE_DIR}/sundials/sundials_config.h version_line
+         REGEX "#define SUNDIALS_VERSION \"")
+    string(REGEX REPLACE ".*\"(.*)\".*" "\\1" RESTITUTION_SUNDIALS_VERSION "${version_line}")
+    set(RESTITUTION_SUNDIALS_BUILD optimized)
+  endif()
+endif()
+
+if(RESTITUTION_SUNDIALS_BUILD STREQUAL "system")
+  find_package(SUNDIALS REQUIRED)
+  set(RESTITUTION_SUNDIALS_VERSION ${SUNDIALS_VERSION})
+  set(RESTITUTION_SUNDIALS_TARGETS
+      SUNDIALS::cvode_shared SUNDIALS::nvecserial_shared SUNDIALS::sunmatrixdense_shared
+      SUNDIALS::sunlinsoldense_shared SUNDIALS::sunnonlinsolfixedpoint_shared)
+  message(NOTICE "SUNDIALS: Debian's libsundials ${SUNDIALS_VERSION}, compiled without optimization: CVODE "
+                 "solves take about 2x longer than with the optimized build (bash scripts/sundials; "
+                 "-DRESTITUTION_SUNDIALS_OPTIMIZED=ON)")
+else()
+  message(STATUS "SUNDIALS: CVODE ${RESTITUTION_SUNDIALS_VERSION} built -O3 from Debian's source package "
+                 "(${sundials_cache})")
+endif()
+
+# The CVODE calls are written against the SUNDIALS 6 API (SUNContext, SUNLinearSolver, ...); 5 lacks them and 7
+# changed them (sunrealtype, SUNErrCode), so any other major version is refused here rather than failing to compile.
+if(NOT RESTITUTION_SUNDIALS_VERSION MATCHES "^6\\.")
+  message(FATAL_ERROR "restitution needs SUNDIALS 6.x (found '${RESTITUTION_SUNDIALS_VERSION}'): "
+                      "install SUNDIALS 6 (Debian: libsundials-dev) or point SUNDIALS_DIR at a 6.x installation")
+endif()

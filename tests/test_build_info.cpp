@@ -1,0 +1,49 @@
+// Which SUNDIALS build the library runs on is told, and told the same way, by the library, `--version` and
+// every JSON output (issue 27: the optimized build from Debian's source package, or the system library).
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_runner.hpp"
+#include "restitution/build_info.hpp"
+
+namespace {
+
+using restitution::test_support::run_cli;
+
+TEST(BuildInfo, LibraryNamesTheSundialsItWasConfiguredWith) {
+  const restitution::SundialsBuild build = restitution::sundials_build();
+  EXPECT_EQ(std::string(build.version).rfind("6.", 0), 0U)
+      << build.version;  // the API the code is written for
+  // RESTITUTION_EXPECTED_SUNDIALS_BUILD is what CMake chose (tests/CMakeLists.txt).
+  EXPECT_EQ(build.optimized, std::string(RESTITUTION_EXPECTED_SUNDIALS_BUILD) == "optimized");
+  const std::string description = restitution::sundials_build_description();
+  EXPECT_EQ(description.rfind(build.version, 0), 0U) << description;
+  EXPECT_NE(description.find(build.optimized ? "optimized" : "unoptimized"), std::string::npos)
+      << description;
+}
+
+TEST(BuildInfo, VersionFlagSaysWhichSundials) {
+  const auto r = run_cli("--version");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find(std::string("SUNDIALS ") + restitution::sundials_build_description()),
+            std::string::npos)
+      << r.out;
+}
+
+TEST(BuildInfo, JsonOutputsCarryTheSundialsBuild) {
+  const restitution::SundialsBuild build = restitution::sundials_build();
+  for (const std::string command : {"eps --zeta 1 --json", "calibrate --eps 0.8 --velocity 1 --json",
+                                    "series eval --kind naive-series --zeta 0.1 --json",
+                                    "damping-check --recipe lammps-tsuji --eps 0.5 --json"}) {
+    const auto r = run_cli(command);
+    ASSERT_EQ(r.status, 0) << command << ": " << r.err;
+    const auto json = nlohmann::json::parse(r.out);
+    ASSERT_TRUE(json.contains("sundials")) << command << ": " << r.out;
+    EXPECT_EQ(json["sundials"]["version"], build.version) << command;
+    EXPECT_EQ(json["sundials"]["optimized"], build.optimized) << command;
+  }
+}
+
+}  // namespace
