@@ -32,8 +32,9 @@ for f in restitutionConfig.cmake restitutionConfigVersion.cmake restitutionTarge
 done
 
 version=$(tr -d '[:space:]' <"$source/VERSION")
-if [ "$("$work/prefix/bin/restitution" --version)" != "restitution $version" ]; then
-  echo "installed bin/restitution --version: $("$work/prefix/bin/restitution" --version), VERSION: $version"
+program_version=$("$work/prefix/bin/restitution" --version | head -1)  # the next line names the SUNDIALS build
+if [ "$program_version" != "restitution $version" ]; then
+  echo "installed bin/restitution --version: $program_version, VERSION: $version"
   exit 1
 fi
 export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig"
