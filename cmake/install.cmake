@@ -1,7 +1,7 @@
 # `cmake --install BUILD --prefix P` installs the library `restitution` as a CMake package:
 #   P/lib/librestitution.a, P/include/restitution/*.hpp (umbrella: restitution/restitution.hpp),
 #   P/lib/cmake/restitution/{restitutionConfig,restitutionConfigVersion,restitutionTargets}.cmake.
-# A consumer needs find_package(restitution 0.2 REQUIRED) and target_link_libraries(app restitution::restitution).
+# A consumer needs find_package(restitution 0.3 REQUIRED) and target_link_libraries(app restitution::restitution).
 include(CMakePackageConfigHelpers)
 
 set(restitution_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/restitution)
@@ -11,8 +11,20 @@ install(EXPORT restitutionTargets NAMESPACE restitution:: DESTINATION ${restitut
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/restitutionConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/restitutionConfig.cmake INSTALL_DESTINATION ${restitution_package_dir})
-# Before 1.0 a minor version may change the API, so 0.2 accepts 0.2.x only.
+# Before 1.0 a minor version may change the API, so 0.3 accepts 0.3.x only.
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/restitutionConfigVersion.cmake
                                  COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/restitutionConfig.cmake ${PROJECT_BINARY_DIR}/restitutionConfigVersion.cmake
         DESTINATION ${restitution_package_dir})
+
+# The program, its man page and the pkg-config file.
+install(TARGETS restitution RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# What the program reads beside itself (src/cli/resource_root.hpp): plot scripts, the default scene (with the
+# other shipped scenes) and the reference solutions, so that the installed program needs no checkout.
+set(restitution_share_dir ${CMAKE_INSTALL_DATADIR}/restitution)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/scripts/plots DESTINATION ${restitution_share_dir}/scripts
+        FILES_MATCHING PATTERN "*.py" PATTERN "__pycache__" EXCLUDE)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenes DESTINATION ${restitution_share_dir} FILES_MATCHING PATTERN "*.toml")
+install(FILES ${PROJECT_SOURCE_DIR}/data/reference_solutions.csv DESTINATION ${restitution_share_dir}/data)
+include(${CMAKE_CURRENT_LIST_DIR}/pkgconfig.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/manpage.cmake)

@@ -3,6 +3,10 @@
 # builds examples/cpp against the installed package from a separate folder (strict ISO C++, warnings as
 # errors: the public headers need no GNU extension), runs it and compares its ε at both ends with
 # data/reference_solutions.csv within the solver's accuracy contract |ε - ε_ref| <= tol · min(ε, 1 - ε).
+# The same app is then built without CMake, by `c++ app.cpp $(pkg-config --cflags --libs restitution)` alone,
+# and checked the same way. The installed program answers --version with the file VERSION, as does
+# pkg-config --modversion, its man page (help2man) renders with `man -l`, and it runs the default scene from the
+# installed share/restitution.
 # Usage: install_consumer.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
 build=$1
@@ -27,6 +31,35 @@ for f in restitutionConfig.cmake restitutionConfigVersion.cmake restitutionTarge
   test -f "$work/prefix/lib/cmake/restitution/$f" || { echo "missing lib/cmake/restitution/$f"; exit 1; }
 done
 
+version=$(tr -d '[:space:]' <"$source/VERSION")
+program_version=$("$work/prefix/bin/restitution" --version | head -1)  # the next line names the SUNDIALS build
+if [ "$program_version" != "restitution $version" ]; then
+  echo "installed bin/restitution --version: $program_version, VERSION: $version"
+  exit 1
+fi
+export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig"
+if [ "$(pkg-config --modversion restitution)" != "$version" ]; then
+  echo "pkg-config --modversion restitution: $(pkg-config --modversion restitution), VERSION: $version"
+  exit 1
+fi
+# No flag of our own: restitution.pc brings -std=c++20 (g++ 12 defaults to C++17) and every library.
+# shellcheck disable=SC2046  # pkg-config's output is a list of words
+c++ -o "$work/app_pkgconfig" "$source/examples/cpp/app.cpp" $(pkg-config --cflags --libs restitution)
+man_page="$work/prefix/share/man/man1/restitution.1"
+test -f "$man_page" || { echo "missing share/man/man1/restitution.1"; exit 1; }
+rendered=$(LC_ALL=C MANWIDTH=80 man -l "$man_page" 2>&1 | tr -s " ")  # ASCII hyphens, unjustified
+for expected in "restitution - coefficient of restitution" "restitution eps" "--tolerance" "restitution $version"; do
+  grep -qF -- "$expected" <<<"$rendered" || { echo "man -l $man_page lacks '$expected':"; head -20 <<<"$rendered"; exit 1; }
+done
+
+# The installed program needs no checkout: a bare `run` (outside any checkout) takes the installed default scene
+# and plots with the installed scripts.
+run_log=$(cd "$work" && "$work/prefix/bin/restitution" run --quick --output "$work/run" 2>&1) ||
+  { echo "installed restitution run failed: $run_log"; exit 1; }
+grep -qF "$work/prefix/share/restitution/scenes/default.toml" <<<"$run_log" ||
+  { echo "installed restitution run did not take the installed default scene: $run_log"; exit 1; }
+ls "$work"/run/*.png >/dev/null 2>&1 || { echo "installed restitution run made no plot: $run_log"; exit 1; }
+
 cmake -S "$source/examples/cpp" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_CXX_EXTENSIONS=OFF \
   -DCMAKE_CXX_FLAGS="-Wall -Wextra -Wpedantic -Werror" >/dev/null
@@ -41,8 +74,9 @@ fi
 
 # Default tolerance of SolveOptions: 1e-10. ζ spans the weakly and the strongly damped regime.
 status=0
+for app in "$work/build/app" "$work/app_pkgconfig"; do
 for zeta in 0.001 1 100 10000; do
-  output=$("$work/build/app" "$zeta")
+  output=$("$app" "$zeta")
   awk -F, -v zeta="$zeta" -v out="$output" -v tol=1e-10 '
     BEGIN { n = split(out, lines, "\n"); for (i = 1; i <= n; ++i) { split(lines[i], kv, " "); got[kv[1]] = kv[2] } }
     /^#/ || $1 == "zeta" { next }
@@ -61,7 +95,8 @@ for zeta in 0.001 1 100 10000; do
       return 0
     }
     END { if (!found) { print "zeta " zeta " not in the reference table"; exit 1 } exit bad > 0 }
-  ' "$source/data/reference_solutions.csv" || status=1
+  ' "$source/data/reference_solutions.csv" || { echo "($app)"; status=1; }
 done
-[ $status -eq 0 ] && echo "installed package: headers, CMake package and example app check out"
+done
+[ $status -eq 0 ] && echo "installed package: headers, CMake package, pkg-config, program, man page and example app check out"
 exit $status

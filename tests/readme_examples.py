@@ -1,7 +1,11 @@
 #!/usr/bin/python3
-"""Runs every example of README.md, so that the front page cannot drift from the program.
+"""Runs every example of README.md and docs/*.md, so that the pages cannot drift from the program.
 
-Each fenced block is checked by its language tag:
+A block or a command can be marked as not run, with the reason, and is then reported as such:
+  <!-- not run: REASON -->   on the line before a fence: the whole block;
+  COMMAND  # ... not run: REASON    a command line of an sh block whose comment ends so.
+The program is on PATH, so docs may write `restitution ...` as well as `build/release/restitution ...`.
+Each other fenced block is checked by its language tag:
   sh      every command line runs (exit 0) in a scratch folder that sees the build, scenes, data and
           examples of the checkout; `bash scripts/...` lines (the set-up commands) are left to CI itself;
   toml    a scene: `restitution run FILE --quick --output DIR` must succeed;
@@ -21,12 +25,17 @@ import sys
 import tempfile
 
 FENCE = re.compile(r"^```(\w*)\n(.*?)^```", re.M | re.S)
+BLOCK_NOT_RUN = re.compile(r"<!--\s*not run:\s*(\S.*?)\s*-->\s*$")
+LINE_NOT_RUN = re.compile(r"#.*\bnot run:\s*(\S.*)$")
 
 
 def blocks(readme: str):
+    """(language, text, line, reason it is not run or None) of every fenced block."""
     for match in FENCE.finditer(readme):
         line = readme.count("\n", 0, match.start()) + 1
-        yield match.group(1), match.group(2), line
+        before = readme[:match.start()].rstrip("\n").rsplit("\n", 1)[-1]
+        marked = BLOCK_NOT_RUN.search(before)
+        yield match.group(1), match.group(2), line, marked.group(1) if marked else None
 
 
 def command_lines(text: str):
@@ -61,31 +70,39 @@ def run(cmd, cwd, env, where):
 
 def main() -> int:
     source, build = pathlib.Path(sys.argv[1]).resolve(), pathlib.Path(sys.argv[2]).resolve()
-    readme = (source / "README.md").read_text(encoding="utf-8")
+    pages = [source / "README.md"] + sorted((source / "docs").glob("*.md"))
     work = scratch_folder(source, build)
-    env = dict(os.environ, PYTHONPATH=str(build / "python"), MPLBACKEND="Agg")
+    env = dict(os.environ, PYTHONPATH=str(build / "python"), MPLBACKEND="Agg",
+               PATH=f"{build}{os.pathsep}{os.environ.get('PATH', '')}")
     examples = [p.read_text(encoding="utf-8", errors="replace")
                 for p in (source / "examples").rglob("*") if p.is_file()] if (source / "examples").exists() else []
-    failures, ran = [], 0
+    failures, ran, not_run = [], 0, []
     try:
-        for language, text, line in blocks(readme):
-            where = f"README.md:{line}"
+        for page, language, text, line, reason in ((page, *block) for page in pages
+                                                   for block in blocks(page.read_text(encoding="utf-8"))):
+            where = f"{page.relative_to(source)}:{line}"
             if language == "json":
+                continue
+            if reason:
+                not_run.append(f"{where}: {language} block not run: {reason}")
                 continue
             if language == "sh":
                 for cmd in command_lines(text):
                     if cmd.startswith("bash scripts/"):
                         continue
+                    if marked := LINE_NOT_RUN.search(cmd):
+                        not_run.append(f"{where}: `{cmd.split('#')[0].strip()}` not run: {marked.group(1)}")
+                        continue
                     failures += run(cmd, work, env, where)
                     ran += 1
             elif language == "toml":
-                scene = work / f"readme_scene_{line}.toml"
+                scene = work / f"{page.stem}_scene_{line}.toml"
                 scene.write_text(text, encoding="utf-8")
                 failures += run([str(build / "restitution"), "run", str(scene), "--quick", "--output",
-                                 str(work / f"readme_scene_{line}")], work, env, where)
+                                 str(work / f"{page.stem}_scene_{line}")], work, env, where)
                 ran += 1
             elif language == "python":
-                script = work / f"readme_example_{line}.py"
+                script = work / f"{page.stem}_example_{line}.py"
                 script.write_text(text, encoding="utf-8")
                 failures += run(["/usr/bin/python3", str(script)], work, env, where)
                 ran += 1
@@ -98,9 +115,11 @@ def main() -> int:
                                 f"cpp, c, cmake or json")
     finally:
         shutil.rmtree(work, ignore_errors=True)
+    for note in not_run:
+        print(note)
     for failure in failures:
         print(failure)
-    print(f"{ran - len(failures)} passed, {len(failures)} failed")
+    print(f"{ran - len(failures)} passed, {len(failures)} failed, {len(not_run)} marked not run")
     return 1 if failures or ran == 0 else 0
 
 

@@ -22,8 +22,9 @@ from . import _restitution as _core
 from . import fast, series
 from ._restitution import CollisionResult, EndResult, Calibration, Material, MaxCompression
 from ._restitution import NumericalFailure, SolverStats
+from ._restitution import __version__  # the file VERSION at the root of the checkout
 
-__all__ = ["eps", "solve", "calibrate", "fit_data", "zeta_of", "Material", "NumericalFailure", "CollisionResult",
+__all__ = ["__version__", "eps", "solve", "calibrate", "fit_data", "zeta_of", "Material", "NumericalFailure", "CollisionResult",
            "EndResult", "MaxCompression", "SolverStats", "Calibration", "series", "fast"]
 
 _SCALARS = (float, int)

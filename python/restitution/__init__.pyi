@@ -8,6 +8,8 @@ import numpy.typing as npt
 from . import fast as fast
 from . import series as series
 
+__version__: str  # e.g. "0.3.0", the same as `restitution --version`
+
 End = Literal["naive", "delayed-recovery"]
 Method = Literal["auto", "bdf", "adams", "taylor"]
 ArrayLike = Union[npt.ArrayLike, Sequence[float]]

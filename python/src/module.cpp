@@ -4,6 +4,7 @@
 
 PYBIND11_MODULE(_restitution, m) {
   m.doc() = "Compiled core of the restitution package; use `import restitution` instead.";
+  m.attr("__version__") = RESTITUTION_VERSION;  // the file VERSION, through python/CMakeLists.txt
   restitution::python::bind_errors(m);
   restitution::python::bind_collision(m);
   restitution::python::bind_material(m);

@@ -9,6 +9,18 @@ import pytest
 SOURCE_DIR = pathlib.Path(os.environ.get("RESTITUTION_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
 
 
+def pytest_sessionstart(session):
+    """tests/pip_install.sh sets RESTITUTION_INSTALLED_UNDER to a venv: then the package under test must be the one
+    installed there, never a build tree or the checkout."""
+    prefix = os.environ.get("RESTITUTION_INSTALLED_UNDER")
+    if prefix:
+        import restitution
+
+        where = pathlib.Path(restitution.__file__).resolve()
+        if not where.is_relative_to(pathlib.Path(prefix).resolve()):
+            pytest.exit(f"testing {where}, not the package installed under {prefix}", returncode=1)
+
+
 def _reference_rows():
     with open(SOURCE_DIR / "data" / "reference_solutions.csv") as table:
         lines = (line for line in table if not line.startswith("#"))

@@ -17,6 +17,7 @@
 #include <system_error>
 
 #include "cli/io_error.hpp"
+#include "cli/resource_root.hpp"
 #include "cli/stop_signals.hpp"
 #include "restitution/errors.hpp"
 
@@ -34,7 +35,7 @@ std::string python_interpreter() {
 
 fs::path scripts_folder() {
   const char* chosen = std::getenv("RESTITUTION_SCRIPTS_DIR");
-  return chosen != nullptr ? fs::path(chosen) : fs::path(RESTITUTION_SCRIPTS_DIR);
+  return chosen != nullptr ? fs::path(chosen) : resource_root() / "scripts";
 }
 
 // Runs the program (no shell: nothing to quote) with stdout and stderr into /dev/null and waits for it,

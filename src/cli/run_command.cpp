@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/output_files.hpp"
 #include "cli/progress.hpp"
+#include "cli/resource_root.hpp"
 #include "cli/scene_outputs.hpp"
 #include "cli/stop_signals.hpp"
 #include "cli/work_precision_files.hpp"
@@ -33,11 +34,11 @@ struct RunOptions {
   unsigned threads = 0;
 };
 
-// ./scenes/default.toml when run from the repository, else the one beside the scripts this build uses.
+// ./scenes/default.toml when run from the repository, else the installed or the source tree's one.
 fs::path default_scene() {
   fs::path here = fs::path("scenes") / "default.toml";
   if (fs::exists(here)) return here;
-  return fs::path(RESTITUTION_SCRIPTS_DIR).parent_path() / "scenes" / "default.toml";
+  return resource_root() / "scenes" / "default.toml";
 }
 
 int run_scene_file(const RunOptions& o) {

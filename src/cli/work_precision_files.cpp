@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "cli/output_files.hpp"
+#include "cli/resource_root.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -30,7 +31,7 @@ std::string summary_csv(const std::vector<WorkPrecisionRow>& rows) {
 }  // namespace
 
 std::filesystem::path default_reference_file() {
-  return reference_file_in(std::filesystem::path(RESTITUTION_SCRIPTS_DIR).parent_path());
+  return reference_file_in(resource_root());
 }
 
 WorkPrecisionFiles write_work_precision_files(const std::vector<WorkPrecisionRow>& rows,

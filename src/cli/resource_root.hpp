@@ -1,0 +1,12 @@
+#pragma once
+// Where the program finds the files it ships beside itself: the plot scripts (scripts/plots), the default
+// scene (scenes/default.toml) and the reference solutions (data/reference_solutions.csv).
+#include <filesystem>
+
+namespace restitution::cli {
+
+// PREFIX/share/restitution when the program runs as PREFIX/bin/restitution after `cmake --install`
+// (cmake/install.cmake puts those files there), else the source tree it was built from.
+std::filesystem::path resource_root();
+
+}  // namespace restitution::cli
