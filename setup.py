@@ -5,7 +5,8 @@ python/restitution/*.py, *.pyi and py.typed. The version is the file VERSION, as
 Only the module and the libraries it links are built: no tests, benchmarks or program. Extra CMake arguments
 come from the environment, e.g. CMAKE_ARGS="-DSUNDIALS_DIR=/opt/sundials/lib/cmake/sundials"; the parallel
 build level from CMAKE_BUILD_PARALLEL_LEVEL (default: every core); a compiler launcher such as ccache from
-CMAKE_CXX_COMPILER_LAUNCHER, which CMake reads itself.
+CMAKE_CXX_COMPILER_LAUNCHER, which CMake reads itself. RESTITUTION_CMAKE_BUILD_DIR=FOLDER builds the target in a
+folder the project's own build already configured instead (CI: build/release, built by scripts/test just before).
 """
 import os
 import pathlib
@@ -31,6 +32,13 @@ class CMakeExtension(Extension):
 
 class CMakeBuild(build_ext):
     def build_extension(self, ext):
+        reuse = os.environ.get("RESTITUTION_CMAKE_BUILD_DIR")
+        if reuse:  # a folder the project's own build configured (CI: build/release): build the target there
+            build = pathlib.Path(reuse).resolve()
+            if not (build / "CMakeCache.txt").exists():
+                sys.exit(f"setup.py: RESTITUTION_CMAKE_BUILD_DIR={reuse} is not a configured CMake build folder")
+            self.build_in(build, ext)
+            return
         build = pathlib.Path(self.build_temp).resolve() / "cmake"
         configure = ["cmake", "-S", str(ROOT), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
                      "-DRESTITUTION_BUILD_TESTS=OFF", "-DRESTITUTION_BUILD_BENCH=OFF",
@@ -38,10 +46,12 @@ class CMakeBuild(build_ext):
         if "CMAKE_GENERATOR" not in os.environ and shutil.which("ninja") and not (build / "CMakeCache.txt").exists():
             configure += ["-G", "Ninja"]
         configure += shlex.split(os.environ.get("CMAKE_ARGS", ""))
-        jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL") or str(os.cpu_count() or 1)
         subprocess.run(configure, check=True)
-        subprocess.run(["cmake", "--build", str(build), "--target", ext.target, "--parallel", jobs], check=True)
+        self.build_in(build, ext)
 
+    def build_in(self, build, ext):
+        jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL") or str(os.cpu_count() or 1)
+        subprocess.run(["cmake", "--build", str(build), "--target", ext.target, "--parallel", jobs], check=True)
         built = sorted((build / "python" / "restitution").glob(f"{ext.target}*.so"))
         if len(built) != 1:
             sys.exit(f"setup.py: expected one {ext.target}*.so in {build}/python/restitution, found {built}")

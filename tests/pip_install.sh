@@ -5,7 +5,7 @@
 # package from a folder outside the checkout, with no PYTHONPATH (conftest.py checks where restitution comes
 # from). Also checks restitution.__version__ against the file VERSION, and that `pip install --no-build-isolation .`
 # straight from the checkout (the README's command) installs an importable package into another fresh venv.
-# Usage: tests/pip_install.sh [SOURCE_DIR]   (CMAKE_ARGS etc. pass through to setup.py's CMake)
+# Usage: tests/pip_install.sh [SOURCE_DIR]   (CMAKE_ARGS, RESTITUTION_CMAKE_BUILD_DIR etc. pass through to setup.py)
 set -euo pipefail
 source=$(cd "${1:-$(dirname "$0")/..}" && pwd)
 work=$(mktemp -d)
