@@ -18,7 +18,15 @@ Method resolve_method(const ContactLaw& law, Method requested, EndSet ends) {
 }
 
 void CvodeEngine::check(const ContactLaw& law, const SolveOptions& options) const {
-  check_solve_request(law, options);
+  check_solve_request(law, options, detail::cvode_rounding(law, options));
+  if (options.method == Method::adams && options.ends.contains(CollisionEnd::naive) &&
+      law.naive_end_existence() == NaiveEndExistence::always && law.zeta() > kAdamsNaiveZetaMax) {
+    throw InvalidInput(fmt::format(
+        "method adams computes the naive end only for zeta <= {:g}, got zeta={}: the overdamped tail after "
+        "the delayed-recovery end is stiff (Adams needs ~ zeta^(5/3) steps, more than a million from zeta ~ "
+        "2500); use --method auto (Adams up to the delayed-recovery end, then BDF) or bdf",
+        kAdamsNaiveZetaMax, law.zeta()));
+  }
 }
 
 detail::CvodeIntegrator& CvodeEngine::integrator(Method method) {
@@ -33,6 +41,7 @@ CollisionResult CvodeEngine::solve(const ContactLaw& law, const SolveOptions& op
     detail::CvodeIntegrator* tail = plan.tail_method ? &integrator(*plan.tail_method) : nullptr;
     return detail::run_collision(law, options, plan, integrator(plan.method), tail);
   };
+  check(law, options);
   const detail::SolvePlan plan = detail::plan_solve(law, options);
   CollisionResult result = run(plan);
   // A naive end whose conditioning only the solve reveals (constant damping close to the largest ζ with a

@@ -9,6 +9,11 @@
 
 namespace restitution {
 
+// Largest ζ for which method adams computes the naive end (viscoelastic Hertz): the overdamped tail after the
+// delayed-recovery end is stiff and Adams' steps grow like ζ^{5/3} (258 000 at ζ = 1000, 811 000 at 2000,
+// past the million steps of one phase from ζ ~ 2500, at any tolerance). auto switches to BDF there instead.
+inline constexpr double kAdamsNaiveZetaMax = 2000.0;
+
 class CvodeEngine final : public Engine {
  public:
   CvodeEngine() = default;  // allocates no SUNDIALS object before the first solve: cheap for a check

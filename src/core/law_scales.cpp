@@ -9,14 +9,6 @@
 namespace restitution {
 namespace {
 
-// 1 - a + 2b: the sign decides how the overlap behaves as x -> 0. Positive (viscoelastic Hertz): inertia
-// wins near x = 0 and the naive end always exists, reached through x ~ ζ^{-2/(1-a+2b)} at large ζ. Zero
-// (the dash-pot, Tsuji): the law is scale-invariant near x = 0 and the naive end exists for ζ < 2 sqrt(b+1).
-// Negative (constant damping): damping wins near x = 0 and the overlap may only approach 0 as τ -> ∞.
-double naive_balance(double a, double b) {
-  return 1.0 - a + 2.0 * b;
-}
-
 // Scale-invariant members: ρ = ζ / (2 sqrt(b+1)) plays the dash-pot's damping ratio r (ρ = r there) and the
 // naive end has ε = exp(-π ρ / sqrt(1 - ρ²)) (docs/contact_laws.md).
 double critical_ratio(double zeta, double b) {
@@ -26,7 +18,7 @@ double critical_ratio(double zeta, double b) {
 }  // namespace
 
 NaiveEndExistence ContactLaw::naive_end_existence() const {
-  const double balance = naive_balance(a_, b_);
+  const double balance = naive_balance();
   if (balance > 0.0) return NaiveEndExistence::always;
   if (balance == 0.0) return NaiveEndExistence::below_critical_zeta;
   return NaiveEndExistence::decided_by_solve;
@@ -52,6 +44,23 @@ double ContactLaw::naive_end_conditioning(double naive_eps) const {
   if (naive_end_existence() != NaiveEndExistence::decided_by_solve) return 1.0;
   // Measured error of ε over tolerance ≈ 2e-3/ε at the default local tolerances: 50 ε brings it to ~0.1.
   return std::min(1.0, 50.0 * naive_eps);
+}
+
+ContactLaw::Conditioning ContactLaw::input_conditioning(EndSet ends) const {
+  Conditioning c;
+  c.condition = kBoundedCondition;
+  if (!ends.contains(CollisionEnd::naive) ||
+      naive_end_existence() != NaiveEndExistence::below_critical_zeta) {
+    return c;
+  }
+  // ln ε = -π ζ / sqrt(D), D = 4(b+1) - ζ² (docs/contact_laws.md), so d ln ε / d ln ζ = -4π(b+1) ζ / D^{3/2}
+  // = -πρ/(1-ρ²)^{3/2}. D by fma: near critical damping it is the difference of two nearly equal numbers.
+  const double four_b1 = 4.0 * (b_ + 1.0);
+  const double d = std::fma(-zeta_, zeta_, four_b1);
+  if (d <= 0.0) return c;  // no naive end: refused before the conditioning matters
+  c.condition = std::max(c.condition, M_PI * four_b1 * zeta_ / (d * std::sqrt(d)));
+  c.log_eps = -M_PI * zeta_ / std::sqrt(d);
+  return c;
 }
 
 double ContactLaw::indistinguishable_ends_zeta() const {
@@ -85,7 +94,7 @@ ResolutionScales ContactLaw::resolution_scales(EndSet ends) const {
   m.x = std::pow(z, -1.0 / (b_ + 1.0));
   m.velocity = std::pow(z, -(a_ + 1.0) / (b_ + 1.0));
   if (naive_end) {
-    const double balance = naive_balance(a_, b_);
+    const double balance = naive_balance();
     if (balance > 0.0) {
       // The naive end is reached through the scale where x'', ζ x^b x' and x^a balance: x ~ ζ^{-2/balance},
       // x' ~ ζ^{1 - 2(1+b)/balance} (viscoelastic Hertz: ζ^{-4}, ζ^{-5}; docs/design.md §4).

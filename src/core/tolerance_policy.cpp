@@ -47,7 +47,7 @@ constexpr double kLogTailZeta = 9.0;
 }  // namespace
 
 SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options, double conditioning) {
-  check_solve_request(law, options);
+  check_solve_request(law, options, cvode_rounding(law, options));
   SolvePlan plan;
   plan.method = resolve_method(law, options.method, options.ends);
   if (options.method == Method::automatic && plan.method == Method::bdf &&
