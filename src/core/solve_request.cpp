@@ -53,7 +53,7 @@ void check_solve_request(const ContactLaw& law, const SolveOptions& options, con
     throw InvalidInput(fmt::format(
         "the naive end does not exist for law {} at zeta={} >= {:.17g}: the overlap approaches 0 only as "
         "tau -> infinity (eps = 0 in the sense of the overdamped dash-pot); ask for the delayed-recovery end",
-        law_name(law.kind()), law.zeta(), 2.0 * std::sqrt(law.damping_exponent() + 1.0)));
+        law_name(law.kind()), law.zeta(), law.critical_zeta()));
   }
   check_conditioning(law, options, engine);
 }

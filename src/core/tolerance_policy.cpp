@@ -75,7 +75,7 @@ SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options, double 
   plan.time_limit = law.time_limit(options.ends);
   const double a = law.elastic_exponent();
   const double b = law.damping_exponent();
-  if (plan.tail_method && plan.smooth_ends && a - b == 1.0 && 1.0 - a + 2.0 * b > 0.0 &&
+  if (plan.tail_method && plan.smooth_ends && a - b == 1.0 && law.naive_balance() > 0.0 &&
       law.zeta() >= kLogTailZeta) {
     // The overdamped tail of the naive end: x' ≈ -(c_s/c_d) x until x'', c_d x^b x' and c_s x^a balance at
     // the naive end's scale m.x (viscoelastic Hertz: x = ζ^{-4}), below which the overlap closes at a nearly
