@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "core/tolerance_policy.hpp"
+#include "cvode/tolerance_policy.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 #include "taylor/taylor_engine.hpp"

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "analysis/asymptotics.hpp"
-#include "core/cvode_engine.hpp"
+#include "cvode/cvode_engine.hpp"
 #include "reference_values.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"

@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <cmath>
 
+#include "registry/engine_registry.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 
@@ -38,6 +39,27 @@ void check_conditioning(const ContactLaw& law, const SolveOptions& options, cons
 }
 
 }  // namespace
+
+void check_solve_options(const SolveOptions& options) {
+  const double tol = options.tolerance;
+  if (!std::isfinite(tol) || tol < kSmallestTolerance || tol > kMaxTolerance) {
+    throw InvalidInput(
+        fmt::format("tolerance must lie in [{:g}, {:g}], got {}", kSmallestTolerance, kMaxTolerance, tol));
+  }
+  const double smallest = min_tolerance(options.method);
+  if (tol < smallest) {
+    throw InvalidInput(fmt::format(
+        "tolerance {:g} is below what the {} engine can deliver ({:g}): double-precision round-off in its "
+        "steps limits the accuracy of eps; ask for a tolerance >= {:g}",
+        tol, engine_of(options.method).name, smallest, smallest));
+  }
+  if (options.max_steps_per_phase < 1) {
+    throw InvalidInput(fmt::format("max_steps_per_phase must be >= 1, got {}", options.max_steps_per_phase));
+  }
+  if (!options.ends.contains(CollisionEnd::naive) && !options.ends.contains(CollisionEnd::delayed_recovery)) {
+    throw InvalidInput("no end of the collision requested: ask for naive, delayed-recovery or both");
+  }
+}
 
 void check_solve_request(const ContactLaw& law, const SolveOptions& options, const EngineRounding& engine) {
   check_solve_options(options);

@@ -1,4 +1,4 @@
-#include "core/cvode_integrator.hpp"
+#include "cvode/cvode_integrator.hpp"
 
 #include <cvode/cvode_ls.h>
 #include <fmt/core.h>

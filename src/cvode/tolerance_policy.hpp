@@ -4,7 +4,7 @@
 // that the resulting error stays below the requested tolerance.
 #include <optional>
 
-#include "core/cvode_integrator.hpp"
+#include "cvode/cvode_integrator.hpp"
 #include "restitution/collision_solver.hpp"
 
 namespace restitution::detail {

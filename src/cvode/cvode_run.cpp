@@ -1,4 +1,4 @@
-#include "core/cvode_run.hpp"
+#include "cvode/cvode_run.hpp"
 
 #include <fmt/core.h>
 
