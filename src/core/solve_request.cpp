@@ -32,7 +32,8 @@ void check_conditioning(const ContactLaw& law, const SolveOptions& options, cons
   if (options.tolerance < deliverable) {
     throw InvalidInput(fmt::format(
         "the naive end of law {} at {}={} is ill-conditioned (d ln eps / d ln zeta = {:.3g}, growing near "
-        "critical damping): rounding lets method {} deliver only tolerance >= {:.2g}, got {:g}",
+        "critical damping): rounding lets method {} deliver only tolerance >= {:.2g}, got {:g}; ask for that "
+        "tolerance or the delayed-recovery end",
         law_name(law.kind()), law.parameter_name(), law.parameter(), c.condition, engine.method, deliverable,
         options.tolerance));
   }
