@@ -1,10 +1,14 @@
-"""No engine includes another engine's headers (docs/design.md, "Engines").
+"""Each engine in its own room (docs/design.md, "Engines"), checked on the includes, folder by folder.
 
-The engines behind src/engine/engine.hpp are groups of files: CVODE is its engine, its phases, its tolerance
-policy, its integrator and the SUNDIALS handles; Taylor is src/taylor. The __float128 reference (src/reference)
-instantiates the Taylor recurrences itself and must not reach CVODE's files either, so that it stays an
-independent check of them. A file of one group that includes a file of another group fails, and so does
-a group that matches no file (a rename must not make the check pass vacuously).
+* src/engine/ is the interface (engine.hpp): it includes no engine.
+* The engines are the folders src/registry/engine_registry.cpp includes (cvode, taylor), each with the
+  folders it owns (sundials/ belongs to cvode). An engine includes the interface and nothing of another engine.
+* The __float128 reference (src/reference/) instantiates the Taylor recurrences itself and must not reach
+  CVODE's files, so that it stays an independent check of them.
+* core/ (the law and the solver) includes the interface and the registry's header only, never an engine's
+  own files; the registry's header includes no engine either (only its .cpp, the table, does).
+
+A folder or group that matches no file fails, so that a rename cannot make the check pass vacuously.
 Usage: engine_isolation.py SOURCE_DIR
 """
 import pathlib
@@ -12,34 +16,55 @@ import re
 import sys
 
 source = pathlib.Path(sys.argv[1]) / "src"
-groups = {
-    "interface": ["engine/*"],
-    "cvode": ["core/cvode_*", "core/tolerance_policy.*", "sundials/*"],
-    "taylor": ["taylor/*"],
-    "float128 reference": ["reference/*"],
-}
-# Which groups' files a group may include besides its own: the interface includes no engine, every engine
-# the interface, the reference the Taylor recurrences (the same engine in another number type).
+owned = {"sundials": "cvode"}  # helper folders and the engine they belong to
+table = (source / "registry" / "engine_registry.cpp").read_text(encoding="utf-8")
+engines = sorted(set(re.findall(r'^#include "([^/"]+)/', table, re.M)) - {"registry", "engine", "restitution"})
+
+
+def group_of(path):
+    """The group of a path relative to src/ (folder/file)."""
+    folder = path.split("/")[0]
+    if path == "registry/engine_registry.hpp":
+        return "registry header"
+    if folder == "registry":
+        return "registry table"
+    if folder in engines:
+        return f"engine {folder}"
+    if folder in owned:
+        return f"engine {owned[folder]}"
+    return {"engine": "interface", "core": "core", "reference": "float128 reference"}.get(folder)
+
+
+engine_groups = {f"engine {e}" for e in engines}
 allowed = {
     "interface": set(),
-    "cvode": {"interface"},
-    "taylor": {"interface"},
-    "float128 reference": {"taylor"},
+    "registry header": {"interface"},
+    "registry table": {"interface", "registry header"} | engine_groups,
+    "core": {"interface", "registry header"},
+    "float128 reference": {"engine taylor"},
 }
-members = {name: {p.relative_to(source).as_posix() for pattern in patterns for p in source.glob(pattern)
-                  if p.suffix in (".cpp", ".hpp", ".h")}
-           for name, patterns in groups.items()}
-group_of = {path: name for name, paths in members.items() for path in paths}
+for group in engine_groups:
+    allowed[group] = {"interface"}
 
-failures = [f"group {name} matches no file under src/" for name, paths in members.items() if not paths]
-for name, paths in sorted(members.items()):
+files = {}
+for path in source.rglob("*"):
+    if path.suffix in (".cpp", ".hpp", ".h"):
+        relative = path.relative_to(source).as_posix()
+        group = group_of(relative)
+        if group is not None:
+            files.setdefault(group, []).append(relative)
+
+failures = [f"group {group} matches no file under src/" for group in sorted(allowed) if group not in files]
+if "engine cvode" not in engine_groups or "engine taylor" not in engine_groups:
+    failures.append(f"the registry's table includes the engines {engines}: expected cvode and taylor among them")
+for group, paths in sorted(files.items()):
     for path in sorted(paths):
         for included in re.findall(r'^#include "([^"]+)"', (source / path).read_text(encoding="utf-8"), re.M):
-            target = group_of.get(included)
-            if target is not None and target != name and target not in allowed[name]:
-                failures.append(f"{path} ({name}) includes {included} ({target})")
-for name, paths in sorted(members.items()):
-    print(f"{name}: {len(paths)} files")
+            target = group_of(included)
+            if target is not None and target != group and target not in allowed[group]:
+                failures.append(f"{path} ({group}) includes {included} ({target})")
+for group, paths in sorted(files.items()):
+    print(f"{group}: {len(paths)} files ({', '.join(sorted({p.split('/')[0] for p in paths}))})")
 for failure in failures:
     print(failure)
 sys.exit(1 if failures else 0)

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "analysis/asymptotics.hpp"
+#include "cvode/cvode_engine.hpp"
 #include "reference_values.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
@@ -151,15 +152,34 @@ TEST(ExtremeZeta, AdamsOnTheStiffTailFailsClearlyWithinTheWorkBound) {
   options.ends = EndSet{CollisionEnd::naive};
   options.max_steps_per_phase = 20000;
   try {
-    solver.solve(ContactLaw::hertz_natural(1e4), options);
+    solver.solve(ContactLaw::hertz_natural(kAdamsNaiveZetaMax), options);
     FAIL() << "Adams finished the stiff naive tail within 20000 steps";
   } catch (const NumericalFailure& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("too much work"), std::string::npos) << what;
-    EXPECT_NE(what.find("10000"), std::string::npos) << what;  // names ζ
+    EXPECT_NE(what.find("zeta=2000"), std::string::npos) << what;
+    EXPECT_NE(what.find("try a larger tolerance"), std::string::npos) << what;
   }
   options.max_steps_per_phase = 0;
   EXPECT_THROW(solver.solve(ContactLaw::hertz_natural(1.0), options), InvalidInput);
+}
+
+TEST(ExtremeZeta, AdamsRefusesTheNaiveTailBeyondItsLimitAndNamesTheAlternatives) {
+  CollisionSolver solver;
+  SolveOptions options;
+  options.method = Method::adams;
+  options.ends = EndSet{CollisionEnd::naive};
+  try {
+    solver.solve(ContactLaw::hertz_natural(std::nextafter(kAdamsNaiveZetaMax, 1e300)), options);
+    FAIL() << "Adams accepted the naive end beyond kAdamsNaiveZetaMax";
+  } catch (const InvalidInput& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("method adams"), std::string::npos) << what;
+    EXPECT_NE(what.find("--method auto"), std::string::npos) << what;
+  }
+  // The delayed-recovery end alone is not stiff: Adams computes it at every ζ.
+  options.ends = EndSet{CollisionEnd::delayed_recovery};
+  EXPECT_GT(solver.solve(ContactLaw::hertz_natural(1e4), options)[CollisionEnd::delayed_recovery]->eps, 0.0);
 }
 
 }  // namespace

@@ -191,6 +191,23 @@ TEST(FastCalibration, AgreesWithTheSolverAndNeedsNoSolve) {
   EXPECT_NEAR(fast::eps(calibrate(beyond, solver).zeta, CollisionEnd::delayed_recovery) / 1e-9, 1.0, 1e-13);
   beyond.eps = 1.0;
   EXPECT_THROW((void)calibrate(beyond, solver), InvalidInput);
+  // An ε that only a ζ above the checked range gives is refused by both paths, in the same words.
+  beyond.eps = 1e-300;
+  std::string fast_message, solved_message;
+  try {
+    (void)calibrate(beyond, solver);
+  } catch (const InvalidInput& e) {
+    fast_message = e.what();
+  }
+  beyond.fast = false;
+  try {
+    (void)calibrate(beyond, solver);
+  } catch (const InvalidInput& e) {
+    solved_message = e.what();
+  }
+  EXPECT_NE(fast_message.find("outside the checked range"), std::string::npos) << fast_message;
+  EXPECT_EQ(fast_message.substr(0, fast_message.find(" = ", 14)),
+            solved_message.substr(0, solved_message.find(" = ", 14)));
 }
 
 TEST(FastCalibration, CommandLine) {

@@ -80,7 +80,8 @@ TEST(NumericalFailure, RepeatedConvergenceFailuresNameCvodesFlag) {
   SolveOptions options;
   options.method = Method::bdf;
   expect_names(failure_message(ContactLaw::hertz_natural(1e300), options),
-               {"CVODE failed", "flag -4", "zeta=1e+300", "both ends", "tolerance 1e-10", "method bdf"});
+               {"CVODE failed", "flag -4", "zeta=1e+300", "both ends", "tolerance 1e-10", "method bdf",
+                "try a larger tolerance"});
 }
 
 TEST(NumericalFailure, TheSolverIsUsableAfterAFailure) {

@@ -44,7 +44,7 @@ struct SolveOptions {
 
 // Tolerances (relative accuracy of ε): the project accepts requests in [kSmallestTolerance,
 // kMaxTolerance]; the CVODE engine delivers down to kMinTolerance and refuses smaller ones with a message
-// saying so. check_solve_options (src/core/tolerance_policy.cpp) is the one place that applies them.
+// saying so. check_solve_options (src/core/solve_request.cpp) is the one place that applies them.
 inline constexpr double kSmallestTolerance = 1e-14;
 inline constexpr double kMinTolerance = 1e-11;
 inline constexpr double kMaxTolerance = 1e-2;
@@ -53,9 +53,20 @@ double min_tolerance(Method method);
 
 // Throws InvalidInput naming the tolerance or the ends when the options cannot be honoured for any law.
 void check_solve_options(const SolveOptions& options);
-// check_solve_options plus the ends that do not exist for this law (the naive end of an overdamped dash-pot):
-// every engine checks its request with it.
-void check_solve_request(const ContactLaw& law, const SolveOptions& options);
+// What rounding lets an engine deliver (docs/accuracy.md, "Conditioning"): an engine's double-precision
+// steps act like a relative perturbation of ζ of a few DBL_EPSILON, which ε amplifies by the law's condition
+// number κ (ContactLaw::input_conditioning). Measured per engine.
+struct EngineRounding {
+  const char* method;             // method_name of the engine's methods, for messages ("bdf", "taylor")
+  double rounding_gain = 1.0;     // delivers T >= rounding_gain · κ · DBL_EPSILON
+  double smallest_eps = 0.0;      // smallest naive ε the engine resolves (>= the smallest normal double)
+  const char* smallest_why = "";  // why, for the message
+};
+// check_solve_options plus the ends that do not exist for this law (the naive end of an overdamped dash-pot)
+// and the one conditioning check: a tolerance below what rounding lets `engine` deliver for this law and
+// end, or an answer below the engine's smallest ε, is refused with InvalidInput naming the tolerance that can
+// be delivered. Every engine checks its request with it.
+void check_solve_request(const ContactLaw& law, const SolveOptions& options, const EngineRounding& engine);
 // Throws InvalidInput for everything CollisionSolver::solve would refuse for this law and these options
 // (the checks above, an end that does not exist, an engine's limits) without integrating: callers with
 // many points check them all before computing any.

@@ -264,10 +264,33 @@ class ContactLaw {
   // For below_critical_zeta: whether the naive end exists at this ζ (ζ < 2 sqrt(b+1): r < 1 for the
   // dash-pot, ζ < sqrt(5) for Tsuji); for always true; for decided_by_solve true (the solve decides).
   [[nodiscard]] bool naive_end_may_exist() const;
+  // The critical ζ of a scale-invariant member, 2 sqrt(b+1): the naive end exists below it (ζ = 2 for the
+  // dash-pot, r = 1; sqrt(5) for Tsuji).
+  [[nodiscard]] double critical_zeta() const { return 2.0 * std::sqrt(b_ + 1.0); }
   // For decided_by_solve: a function of the state that is <= 0 only where the overlap provably never
   // returns to 0 (x > 0, x' <= 0 in the invariant region x' >= -k x^{b+1}, x^{a-2b-1} < ζ²/(4(b+1)),
   // k = ζ/(2(b+1)): docs/contact_laws.md), positive before maximal compression; natural units.
   [[nodiscard]] double naive_end_excluded(double x, double v) const;
+  // The naive end's balance 1 - a + 2b: its sign decides how the overlap behaves as x -> 0
+  // (docs/contact_laws.md). Positive (viscoelastic Hertz): inertia wins near x = 0 and the naive end always
+  // exists, reached through x ~ ζ^{-2/(1-a+2b)} at large ζ. Zero (the dash-pot, Tsuji): the law is
+  // scale-invariant near x = 0 and the naive end exists for ζ < 2 sqrt(b+1). Negative (constant damping):
+  // damping wins near x = 0 and the overlap may only approach 0 as τ -> ∞.
+  [[nodiscard]] double naive_balance() const { return 1.0 - a_ + 2.0 * b_; }
+  // How ε at the requested ends depends on ζ (docs/accuracy.md, "Conditioning"): `condition` bounds
+  // |d ln q / d ln ζ| with q = min(ε, 1 - ε), the factor by which a relative perturbation of ζ, or a rounding
+  // of the solve that acts like one, grows in the result. In closed form for the naive end of the
+  // scale-invariant members, πρ/(1-ρ²)^{3/2} with ρ = ζ/(2 sqrt(b+1)), which diverges at critical damping;
+  // elsewhere bounded by kBoundedCondition (ε and 1 - ε are powers of ζ at both extremes of the checked
+  // range; constant damping's naive end near its critical ζ is decided by the solve, naive_end_conditioning).
+  // `log_eps` is ln of the closed-form naive ε where one is known (0 otherwise: no bound); a logarithm, since
+  // near critical damping ε underflows (ln ε = -2963 at r = 1 - 5.6e-7).
+  struct Conditioning {
+    double condition = 1.0;
+    double log_eps = 0.0;
+  };
+  static constexpr double kBoundedCondition = 10.0;
+  [[nodiscard]] Conditioning input_conditioning(EndSet ends) const;
   // Below this ζ the force-zero end lies within rounding of x = 0 (ζ|x'| = x^{a-b} there): the two ends
   // differ in 1 - ε by a relative ζ^{(b+1)/(a-b)} < 1e-30, and the engines report the naive end's ε for it.
   [[nodiscard]] double indistinguishable_ends_zeta() const;

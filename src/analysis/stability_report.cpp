@@ -14,10 +14,11 @@ double small_part(const EndResult& r) {
   return r.eps < 0.5 ? r.eps : r.one_minus_eps;
 }
 
-void record_failure(const NumericalFailure& e, EngineCheck& check) {
+void record_failure(const std::exception& e, EngineCheck& check) {
   const std::string what = e.what();
-  // The solver's step bound (SolveOptions::max_steps_per_phase) was reached.
-  if (what.find("too much work") != std::string::npos) {
+  // The solver's step bound (SolveOptions::max_steps_per_phase) was reached, or the engine refuses the stiff
+  // tail it could not finish (method adams on the naive end beyond kAdamsNaiveZetaMax).
+  if (what.find("too much work") != std::string::npos || what.find("is stiff") != std::string::npos) {
     check.failure = EngineFailure::too_much_work;
   } else {
     check.failure = EngineFailure::other;
@@ -67,6 +68,8 @@ StabilityPoint check_point(CollisionSolver& solver, double zeta, CollisionEnd en
         check.steps = r.stats.steps;
         check.relative_difference = relative_difference(end_of(r, end), p.result);
       } catch (const NumericalFailure& e) {
+        record_failure(e, check);
+      } catch (const InvalidInput& e) {
         record_failure(e, check);
       }
     }

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
 
 #include "cli/commands.hpp"
@@ -61,6 +62,12 @@ int run(int argc, char** argv) {
     return 128 + e.signal_number();
   } catch (const IoError& e) {  // cli::IoError is the library's IoError
     std::fprintf(stderr, "restitution: I/O error: %s\n", cli::one_line(e.what()).c_str());
+    return 3;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A path the file system refuses (too long, a file where a folder must be): the output is not writable,
+    // exit 3 like every other output failure (docs/cli.md), naming the path and the system's reason.
+    std::fprintf(stderr, "restitution: I/O error: cannot write %s: %s\n", e.path1().string().c_str(),
+                 e.code().message().c_str());
     return 3;
   } catch (const InvalidInput& e) {
     std::fprintf(stderr, "restitution: error: %s\n", cli::one_line(e.what()).c_str());

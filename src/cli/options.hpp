@@ -46,8 +46,9 @@ inline void add_solver_options(CLI::App& command, SolverArguments& a) {
       ->capture_default_str();
   command
       .add_option("--method", a.method,
-                  "integration method: bdf, adams, auto (CVODE, chosen per regime) or taylor (Taylor series: "
-                  "about 40x faster than auto, docs/accuracy.md; the naive end only for zeta <= 100)")
+                  "integration method: bdf, adams (the naive end only for zeta <= 2000: its tail is stiff), "
+                  "auto (CVODE, chosen per regime) or taylor (Taylor series: about 40x faster than auto, "
+                  "docs/accuracy.md; the naive end only for zeta <= 100)")
       ->check(CLI::IsMember({"bdf", "adams", "auto", "taylor"}))
       ->capture_default_str();
 }

@@ -28,6 +28,7 @@ std::string digits(__float128 value) {
 
 int run_reference(const ReferenceOptions& o) {
   if (o.zeta) {
+    require_checked_zeta(*o.zeta);
     const ReferenceSolution s = hertz_reference(*o.zeta);
     fmt::print("zeta {:.17g}: agreement of the two orders {:.3g}, {} steps\n", s.parameter, s.agreement,
                s.steps);

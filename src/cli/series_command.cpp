@@ -72,18 +72,6 @@ struct EvalOptions {
 };
 
 int run_eval(const EvalOptions& o) {
-  const auto kind = series::approximation_named(o.kind.substr(0, o.kind.find(':')));
-  if (kind == series::Approximation::naive_series || kind == series::Approximation::delayed_recovery_series) {
-    const double radius = kind == series::Approximation::naive_series ? series::kNaiveSeriesRadius
-                                                                      : series::kDelayedRecoverySeriesRadius;
-    if (o.zeta >= radius) {
-      throw InvalidInput(
-          fmt::format("zeta = {} is outside the radius of convergence of the {} series (zeta < {:g}, "
-                      "docs/series.md): its partial sums diverge there; use an approximant "
-                      "(--kind pade-2011-3-6) or `restitution eps`",
-                      o.zeta, o.kind, radius));
-    }
-  }
   const auto [values, terms, published] =
       series::evaluate_by_kind(o.kind, std::span(&o.zeta, 1), o.terms, o.coefficients == "published", "--");
   const series::Value& v = values.front();

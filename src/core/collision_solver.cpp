@@ -5,10 +5,8 @@
 #include <memory>
 #include <string>
 
-#include "core/cvode_engine.hpp"
-#include "engine/engine.hpp"
+#include "registry/engine_registry.hpp"
 #include "restitution/errors.hpp"
-#include "taylor/taylor_engine.hpp"
 
 namespace restitution {
 
@@ -62,27 +60,6 @@ SolverStats& operator+=(SolverStats& total, const SolverStats& more) {
   total.convergence_failures += more.convergence_failures;
   return total;
 }
-
-double min_tolerance(Method method) {
-  return method == Method::taylor ? kMinTaylorTolerance : kMinTolerance;
-}
-
-namespace {
-
-// The engines, one per kind, and which computes a method: the Taylor engine for taylor, CVODE for bdf, adams
-// and automatic (CVODE resolves automatic to BDF or Adams itself). The one place that maps methods to
-// engines.
-struct Engines {
-  CvodeEngine cvode;
-  TaylorEngine taylor;
-
-  Engine& operator()(Method method) {
-    if (method == Method::taylor) return taylor;
-    return cvode;
-  }
-};
-
-}  // namespace
 
 struct CollisionSolver::Impl {
   Engines engines;

@@ -7,26 +7,9 @@
 #include "restitution/contact_law.hpp"
 
 namespace restitution {
-namespace {
-
-// 1 - a + 2b: the sign decides how the overlap behaves as x -> 0. Positive (viscoelastic Hertz): inertia
-// wins near x = 0 and the naive end always exists, reached through x ~ ζ^{-2/(1-a+2b)} at large ζ. Zero
-// (the dash-pot, Tsuji): the law is scale-invariant near x = 0 and the naive end exists for ζ < 2 sqrt(b+1).
-// Negative (constant damping): damping wins near x = 0 and the overlap may only approach 0 as τ -> ∞.
-double naive_balance(double a, double b) {
-  return 1.0 - a + 2.0 * b;
-}
-
-// Scale-invariant members: ρ = ζ / (2 sqrt(b+1)) plays the dash-pot's damping ratio r (ρ = r there) and the
-// naive end has ε = exp(-π ρ / sqrt(1 - ρ²)) (docs/contact_laws.md).
-double critical_ratio(double zeta, double b) {
-  return zeta / (2.0 * std::sqrt(b + 1.0));
-}
-
-}  // namespace
 
 NaiveEndExistence ContactLaw::naive_end_existence() const {
-  const double balance = naive_balance(a_, b_);
+  const double balance = naive_balance();
   if (balance > 0.0) return NaiveEndExistence::always;
   if (balance == 0.0) return NaiveEndExistence::below_critical_zeta;
   return NaiveEndExistence::decided_by_solve;
@@ -34,16 +17,16 @@ NaiveEndExistence ContactLaw::naive_end_existence() const {
 
 bool ContactLaw::naive_end_may_exist() const {
   if (naive_end_existence() != NaiveEndExistence::below_critical_zeta) return true;
-  return critical_ratio(zeta_, b_) < 1.0;
+  return zeta_ / critical_zeta() < 1.0;
 }
 
 double ContactLaw::naive_end_excluded(double x, double v) const {
   // In the region x' >= -k x^{b+1} with k = ζ/(2(b+1)), d/dτ (x' + k x^{b+1}) = k(ζ - k(b+1)) x^{2b+1} - x^a
-  // on its boundary, positive while x^{a-2b-1} < ζ²/(4(b+1)): for a - 2b - 1 > 0 every smaller x keeps it
-  // positive, so once x' <= 0 the state never leaves the region, where x decays at most like a power or an
-  // exponential of τ and never reaches 0.
+  // on its boundary, positive while x^{a-2b-1} < ζ²/(4(b+1)): for a - 2b - 1 = -naive_balance() > 0 every
+  // smaller x keeps it positive, so once x' <= 0 the state never leaves the region, where x decays at most
+  // like a power or an exponential of τ and never reaches 0.
   const double k = zeta_ / (2.0 * (b_ + 1.0));
-  const double x_certified = std::pow(zeta_ * zeta_ / (4.0 * (b_ + 1.0)), 1.0 / (a_ - 2.0 * b_ - 1.0));
+  const double x_certified = std::pow(zeta_ * zeta_ / (4.0 * (b_ + 1.0)), 1.0 / -naive_balance());
   const double outside = -(v + k * detail::continued_power(x, b_ + 1.0));
   return std::max({outside, x - x_certified, v});
 }
@@ -52,6 +35,23 @@ double ContactLaw::naive_end_conditioning(double naive_eps) const {
   if (naive_end_existence() != NaiveEndExistence::decided_by_solve) return 1.0;
   // Measured error of ε over tolerance ≈ 2e-3/ε at the default local tolerances: 50 ε brings it to ~0.1.
   return std::min(1.0, 50.0 * naive_eps);
+}
+
+ContactLaw::Conditioning ContactLaw::input_conditioning(EndSet ends) const {
+  Conditioning c;
+  c.condition = kBoundedCondition;
+  if (!ends.contains(CollisionEnd::naive) ||
+      naive_end_existence() != NaiveEndExistence::below_critical_zeta) {
+    return c;
+  }
+  // ln ε = -π ζ / sqrt(D), D = 4(b+1) - ζ² (docs/contact_laws.md), so d ln ε / d ln ζ = -4π(b+1) ζ / D^{3/2}
+  // = -πρ/(1-ρ²)^{3/2}. D by fma: near critical damping it is the difference of two nearly equal numbers.
+  const double four_b1 = 4.0 * (b_ + 1.0);
+  const double d = std::fma(-zeta_, zeta_, four_b1);
+  if (d <= 0.0) return c;  // no naive end: refused before the conditioning matters
+  c.condition = std::max(c.condition, M_PI * four_b1 * zeta_ / (d * std::sqrt(d)));
+  c.log_eps = -M_PI * zeta_ / std::sqrt(d);
+  return c;
 }
 
 double ContactLaw::indistinguishable_ends_zeta() const {
@@ -85,7 +85,7 @@ ResolutionScales ContactLaw::resolution_scales(EndSet ends) const {
   m.x = std::pow(z, -1.0 / (b_ + 1.0));
   m.velocity = std::pow(z, -(a_ + 1.0) / (b_ + 1.0));
   if (naive_end) {
-    const double balance = naive_balance(a_, b_);
+    const double balance = naive_balance();
     if (balance > 0.0) {
       // The naive end is reached through the scale where x'', ζ x^b x' and x^a balance: x ~ ζ^{-2/balance},
       // x' ~ ζ^{1 - 2(1+b)/balance} (viscoelastic Hertz: ζ^{-4}, ζ^{-5}; docs/design.md §4).
@@ -93,7 +93,8 @@ ResolutionScales ContactLaw::resolution_scales(EndSet ends) const {
       m.velocity = std::pow(z, 1.0 - 2.0 * (1.0 + b_) / balance);
     } else if (balance == 0.0) {
       // As for the dash-pot near critical damping: resolve x and x' down to ε's scale.
-      const double rho = critical_ratio(zeta_, b_);
+      // ρ = ζ/(2 sqrt(b+1)) plays the dash-pot's damping ratio; ε = exp(-πρ/sqrt(1 - ρ²)).
+      const double rho = zeta_ / critical_zeta();
       if (rho < 1.0) {
         const double eps = std::exp(-M_PI * rho / std::sqrt(1.0 - rho * rho));
         m.velocity = std::min(m.velocity, eps);
@@ -111,7 +112,7 @@ double ContactLaw::conditioning(EndSet ends) const {
   // ω = sqrt(1 - ρ²) and amplify the local errors by about 1/ω in ε (measured on the dash-pot: error ratio 10
   // at r = 0.999 and 20 at r = 0.9999 with the plain rtol).
   if (!naive_end || naive_end_existence() != NaiveEndExistence::below_critical_zeta) return 1.0;
-  const double rho = kind_ == LawKind::linear_dashpot ? parameter() : critical_ratio(zeta_, b_);
+  const double rho = kind_ == LawKind::linear_dashpot ? parameter() : zeta_ / critical_zeta();
   if (rho >= 1.0) return 1.0;
   return std::min(1.0, 0.1 * std::sqrt(1.0 - rho * rho));
 }

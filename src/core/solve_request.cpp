@@ -2,14 +2,67 @@
 // no engine needs another's headers to refuse the same requests.
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 
+#include "registry/engine_registry.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution {
+namespace {
 
-void check_solve_request(const ContactLaw& law, const SolveOptions& options) {
+// The one conditioning check (docs/accuracy.md, "Conditioning"): rounding inside a double solve perturbs the
+// result like a relative change of ζ by rounding_gain · DBL_EPSILON, which ε amplifies by κ = |d ln ε / d ln
+// ζ| (a ~1e6 near critical damping); and the answer must be one the engine resolves.
+void check_conditioning(const ContactLaw& law, const SolveOptions& options, const EngineRounding& engine) {
+  const ContactLaw::Conditioning c = law.input_conditioning(options.ends);
+  const double smallest_eps = std::max(engine.smallest_eps, DBL_MIN);
+  if (c.log_eps < std::log(smallest_eps)) {
+    throw InvalidInput(fmt::format(
+        "the naive end of law {} at {}={} has eps = 10^{:.1f} (closed form), below the smallest eps method "
+        "{} "
+        "resolves ({:.3g}: {}); ask for a {} further from critical damping or the delayed-recovery end",
+        law_name(law.kind()), law.parameter_name(), law.parameter(), c.log_eps / M_LN10, engine.method,
+        smallest_eps, engine.smallest_eps > DBL_MIN ? engine.smallest_why : "the smallest normal double",
+        law.parameter_name()));
+  }
+  const double deliverable = engine.rounding_gain * c.condition * DBL_EPSILON;
+  if (options.tolerance < deliverable) {
+    throw InvalidInput(fmt::format(
+        "the naive end of law {} at {}={} is ill-conditioned (d ln eps / d ln zeta = {:.3g}, growing near "
+        "critical damping): rounding lets method {} deliver only tolerance >= {:.2g}, got {:g}; ask for that "
+        "tolerance or the delayed-recovery end",
+        law_name(law.kind()), law.parameter_name(), law.parameter(), c.condition, engine.method, deliverable,
+        options.tolerance));
+  }
+}
+
+}  // namespace
+
+void check_solve_options(const SolveOptions& options) {
+  const double tol = options.tolerance;
+  if (!std::isfinite(tol) || tol < kSmallestTolerance || tol > kMaxTolerance) {
+    throw InvalidInput(
+        fmt::format("tolerance must lie in [{:g}, {:g}], got {}", kSmallestTolerance, kMaxTolerance, tol));
+  }
+  const double smallest = min_tolerance(options.method);
+  if (tol < smallest) {
+    throw InvalidInput(fmt::format(
+        "tolerance {:g} is below what the {} engine can deliver ({:g}): double-precision round-off in its "
+        "steps limits the accuracy of eps; ask for a tolerance >= {:g}",
+        tol, engine_of(options.method).name, smallest, smallest));
+  }
+  if (options.max_steps_per_phase < 1) {
+    throw InvalidInput(fmt::format("max_steps_per_phase must be >= 1, got {}", options.max_steps_per_phase));
+  }
+  if (!options.ends.contains(CollisionEnd::naive) && !options.ends.contains(CollisionEnd::delayed_recovery)) {
+    throw InvalidInput("no end of the collision requested: ask for naive, delayed-recovery or both");
+  }
+}
+
+void check_solve_request(const ContactLaw& law, const SolveOptions& options, const EngineRounding& engine) {
   check_solve_options(options);
   if (law.kind() == LawKind::linear_dashpot && options.ends.contains(CollisionEnd::naive) &&
       law.parameter() >= 1.0) {
@@ -23,23 +76,9 @@ void check_solve_request(const ContactLaw& law, const SolveOptions& options) {
     throw InvalidInput(fmt::format(
         "the naive end does not exist for law {} at zeta={} >= {:.17g}: the overlap approaches 0 only as "
         "tau -> infinity (eps = 0 in the sense of the overdamped dash-pot); ask for the delayed-recovery end",
-        law_name(law.kind()), law.zeta(), 2.0 * std::sqrt(law.damping_exponent() + 1.0)));
+        law_name(law.kind()), law.zeta(), law.critical_zeta()));
   }
-  if (law.kind() == LawKind::linear_dashpot && options.ends.contains(CollisionEnd::naive)) {
-    // Near critical damping the naive end's two modes cancel to ω = sqrt(1 - r²) and double rounding is
-    // amplified accordingly. Measured against the closed form: CVODE (BDF) misses T = 1e-9 by 1.01x at r =
-    // 0.9999 (floor 1.5e-9 there), Taylor misses T = 1e-12 by 4x at r = 0.999 (floor 2.2e-12).
-    const double omega_squared = (1.0 - law.parameter()) * (1.0 + law.parameter());
-    const double smallest = options.method == Method::taylor
-                                ? min_tolerance(Method::taylor) / std::sqrt(omega_squared)
-                                : 3e-13 / omega_squared;
-    if (options.tolerance < smallest) {
-      throw InvalidInput(fmt::format(
-          "the naive end of the dash-pot at damping-ratio {} is delivered only to tolerance >= {:.2g} by "
-          "method {} (rounding grows near critical damping), got {:g}",
-          law.parameter(), smallest, method_name(options.method), options.tolerance));
-    }
-  }
+  check_conditioning(law, options, engine);
 }
 
 }  // namespace restitution

@@ -1,8 +1,11 @@
 #include "dem/deck_eps.hpp"
 
+#include <fmt/core.h>
+
 #include <cmath>
 
 #include "restitution/contact_law.hpp"
+#include "restitution/errors.hpp"
 #include "restitution/units.hpp"
 
 namespace restitution::dem {
@@ -11,6 +14,11 @@ double eps_for(double beta, double velocity_m_s, CollisionEnd end, double tolera
                CollisionSolver& solver) {
   const double zeta = zeta_from(beta, velocity_m_s);
   if (zeta == 0.0) return 1.0;
+  try {
+    require_checked_zeta(zeta);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("impact speed {} m/s: {}", velocity_m_s, e.what()));
+  }
   SolveOptions options;
   options.ends = EndSet{end};
   options.tolerance = tolerance;

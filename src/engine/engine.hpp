@@ -1,5 +1,5 @@
 #pragma once
-// The interface of the engines that integrate one collision: CVODE with BDF or Adams (core/cvode_engine.hpp)
+// The interface of the engines that integrate one collision: CVODE with BDF or Adams (cvode/cvode_engine.hpp)
 // and the double-precision Taylor method (taylor/taylor_engine.hpp). CollisionSolver picks one per Method
 // and hands it the law in natural form; what is engine-independent stays in the solver. No engine includes
 // another engine's headers (tests/engine_isolation.py checks that), so an engine is added or changed alone.

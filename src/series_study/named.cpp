@@ -4,9 +4,11 @@
 #include <cctype>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <span>
 #include <utility>
 
+#include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/series_tables.hpp"
 #include "series_study/series_coefficients.hpp"
@@ -186,10 +188,27 @@ NamedEvaluation evaluate_by_kind(const std::string& kind, std::span<const double
         break;
     }
   }
+  // The domain, the same for the command line and Python: the checked range of every solver path and, for a
+  // partial sum, its radius of convergence (beyond it the sums diverge however many terms are taken).
+  const std::optional<double> radius =
+      naive ? std::optional(kNaiveSeriesRadius)
+            : (*named == Approximation::delayed_recovery_series ? std::optional(kDelayedRecoverySeriesRadius)
+                                                                : std::nullopt);
+  const auto check_domain = [&](double zeta) {
+    require_checked_zeta(zeta);
+    if (radius && zeta >= *radius) {
+      throw InvalidInput(fmt::format(
+          "zeta = {} is outside the radius of convergence of the {} series (zeta < {:g}, docs/series.md): "
+          "its "
+          "partial sums diverge there; use an approximant ({}kind pade-2011-3-6) or `restitution eps`",
+          zeta, kind, *radius, prefix));
+    }
+  };
   NamedEvaluation result{{}, used, published};
   result.values.reserve(zetas.size());
   for (std::size_t i = 0; i < zetas.size(); ++i) {
     try {
+      check_domain(zetas[i]);
       result.values.push_back(evaluate(zetas[i]));
     } catch (const InvalidInput& e) {
       if (zetas.size() == 1) throw;

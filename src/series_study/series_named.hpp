@@ -49,7 +49,9 @@ struct NamedEvaluation {
 // The series or approximation `kind` at every zeta >= 0 (natural units); the coefficients are computed once.
 // terms applies to the two series only (default: 40 naive, 60 delayed-recovery; all of a published table);
 // published: the 2008 paper's Tables III and V instead of the recomputed coefficients. Throws InvalidInput
-// naming kind, terms or zeta (with its index when there are several).
+// naming kind, terms or zeta (with its index when there are several), for zeta outside the checked range
+// (require_checked_zeta) and, for the two series, at or beyond their radius of convergence: the one domain
+// check of `restitution series eval` and Python's restitution.series.eval.
 NamedEvaluation evaluate_by_kind(const std::string& kind, std::span<const double> zetas,
                                  std::optional<int> terms, bool published, std::string_view prefix = "");
 

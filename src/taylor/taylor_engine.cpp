@@ -80,7 +80,7 @@ EndResult end_result(const ContactLaw& law, const taylor::TaylorPoint<double>& p
 }  // namespace
 
 void TaylorEngine::check(const ContactLaw& law, const SolveOptions& options) const {
-  check_solve_request(law, options);
+  check_solve_request(law, options, {"taylor", kTaylorRoundingGain, 0.0, ""});
   if (options.keep_trajectory) {
     throw InvalidInput("method taylor does not record trajectories: use --method bdf or adams");
   }
@@ -108,8 +108,10 @@ CollisionResult TaylorEngine::solve(const ContactLaw& law, const SolveOptions& o
   try {
     out = hertz ? run.hertz(law.zeta()) : run.dashpot(law.damping(), law.stiffness());
   } catch (const NumericalFailure& e) {
-    throw NumericalFailure(fmt::format("{} (law {}, method taylor, tolerance {:g})", e.what(),
-                                       law_name(law.kind()), options.tolerance));
+    throw NumericalFailure(fmt::format(
+        "the integration failed for law {} at {}={}, tolerance {:g}, method taylor: {}; try a larger "
+        "tolerance or the default method (auto)",
+        law_name(law.kind()), law.parameter_name(), law.parameter(), options.tolerance, e.what()));
   }
   CollisionResult result;
   result.law = law.kind();

@@ -17,6 +17,11 @@ inline constexpr double kMinTaylorTolerance = 1e-13;
 // ~ζ^{5/3} steps; CVODE's BDF is the engine there.
 inline constexpr double kTaylorNaiveZetaMax = 100.0;
 
+// What rounding lets the Taylor engine deliver (check_solve_request): near the dash-pot's critical damping an
+// error above T occurs only where T < 1.4 κ DBL_EPSILON (r = 0.9894, T = 3.2e-13; measured,
+// tests/test_conditioning_grid_slow.cpp); with the gain below the worst answer is 0.27 T.
+inline constexpr double kTaylorRoundingGain = 4.0;
+
 class TaylorEngine final : public Engine {
  public:
   // Refuses options outside the engine's range: the tolerance, trajectories, laws other than

@@ -28,6 +28,15 @@ void check_measured_eps(double eps) {
   }
 }
 
+// The checked range in ε: every calibration path refuses an ε that only a ζ above kLargestCheckedZeta gives,
+// in these words.
+[[noreturn]] void throw_below_checked_range(double eps, double eps_at_largest, CollisionEnd end) {
+  throw InvalidInput(
+      fmt::format("eps = {} is below eps(zeta = {:g}) = {:.6g} at the {} end: outside the "
+                  "checked range",
+                  eps, kLargestCheckedZeta, eps_at_largest, end_name(end)));
+}
+
 }  // namespace
 
 double zeta_for_eps(double eps, CollisionEnd end, const SolveOptions& options, CollisionSolver& solver,
@@ -46,12 +55,7 @@ double zeta_for_eps(double eps, CollisionEnd end, const SolveOptions& options, C
   double f_lo = f(lo);
   double f_hi = f(hi);
   while (f_hi > 0.0) {
-    if (hi >= kLargestCheckedZeta) {
-      throw InvalidInput(
-          fmt::format("eps = {} is below eps(zeta = {:g}) = {:.6g} at the {} end: outside the "
-                      "checked range",
-                      eps, kLargestCheckedZeta, std::exp(f_hi + target), end_name(end)));
-    }
+    if (hi >= kLargestCheckedZeta) throw_below_checked_range(eps, std::exp(f_hi + target), end);
     lo = hi;
     f_lo = f_hi;
     hi = std::min(4.0 * hi, kLargestCheckedZeta);
@@ -78,6 +82,9 @@ Calibration calibrate(const CalibrationRequest& request, CollisionSolver& solver
   if (request.fast) {
     check_measured_eps(request.eps);
     c.zeta = fast::zeta_from_eps(request.eps, request.end);
+    if (c.zeta > kLargestCheckedZeta) {
+      throw_below_checked_range(request.eps, fast::eps(kLargestCheckedZeta, request.end), request.end);
+    }
     c.eps_at_zeta = fast::eps(c.zeta, request.end);
   } else {
     c.zeta = zeta_for_eps(request.eps, request.end, options, solver, &c.solves);

@@ -2,8 +2,8 @@
 // The phases of one collision on one CVODE integrator: u = x^{1/q} from the start, τ around maximal
 // compression, u again down to x = 0 (docs/design.md §4), or τ throughout for laws smooth in τ; the ends are
 // CVODE root events.
-#include "core/cvode_integrator.hpp"
-#include "core/tolerance_policy.hpp"
+#include "cvode/cvode_integrator.hpp"
+#include "cvode/tolerance_policy.hpp"
 #include "restitution/collision_solver.hpp"
 
 namespace restitution::detail {

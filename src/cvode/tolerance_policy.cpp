@@ -1,36 +1,10 @@
-#include "core/tolerance_policy.hpp"
-
-#include <fmt/core.h>
+#include "cvode/tolerance_policy.hpp"
 
 #include <algorithm>
 #include <cmath>
 
+#include "cvode/cvode_engine.hpp"
 #include "restitution/errors.hpp"
-
-namespace restitution {
-
-void check_solve_options(const SolveOptions& options) {
-  const double tol = options.tolerance;
-  if (!std::isfinite(tol) || tol < kSmallestTolerance || tol > kMaxTolerance) {
-    throw InvalidInput(
-        fmt::format("tolerance must lie in [{:g}, {:g}], got {}", kSmallestTolerance, kMaxTolerance, tol));
-  }
-  const double smallest = min_tolerance(options.method);
-  if (tol < smallest) {
-    throw InvalidInput(fmt::format(
-        "tolerance {:g} is below what the {} engine can deliver ({:g}): double-precision round-off in its "
-        "steps limits the accuracy of eps; ask for a tolerance >= {:g}",
-        tol, options.method == Method::taylor ? "Taylor" : "CVODE", smallest, smallest));
-  }
-  if (options.max_steps_per_phase < 1) {
-    throw InvalidInput(fmt::format("max_steps_per_phase must be >= 1, got {}", options.max_steps_per_phase));
-  }
-  if (!options.ends.contains(CollisionEnd::naive) && !options.ends.contains(CollisionEnd::delayed_recovery)) {
-    throw InvalidInput("no end of the collision requested: ask for naive, delayed-recovery or both");
-  }
-}
-
-}  // namespace restitution
 
 namespace restitution::detail {
 namespace {
@@ -47,17 +21,11 @@ constexpr double kLogTailZeta = 9.0;
 }  // namespace
 
 SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options, double conditioning) {
-  check_solve_request(law, options);
+  check_solve_request(law, options, cvode_rounding(law, options));
   SolvePlan plan;
-  plan.method = resolve_method(law, options.method, options.ends);
-  if (options.method == Method::automatic && plan.method == Method::bdf &&
-      options.ends.contains(CollisionEnd::naive)) {
-    // Only the overdamped tail after the delayed-recovery end is stiff; up to there Adams resolves the fast
-    // decay of x' at orders up to 12 where BDF stops at 5: at ζ = 100 (naive end, T = 1e-10) 2131 instead
-    // of 3648 steps, with the same error (docs/performance.md).
-    plan.method = Method::adams;
-    plan.tail_method = Method::bdf;
-  }
+  const MethodChoice choice = choose_methods(law, options.method, options.ends);
+  plan.method = choice.method;
+  plan.tail_method = choice.tail;
   // The smooth variable u = x^{1/q} pays where the solution is not analytic in τ at x = 0 (q > 1).
   plan.smooth_ends = options.smooth_ends && law.smoothing_root() > 1;
   const ResolutionScales m = law.resolution_scales(options.ends);
@@ -75,7 +43,7 @@ SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options, double 
   plan.time_limit = law.time_limit(options.ends);
   const double a = law.elastic_exponent();
   const double b = law.damping_exponent();
-  if (plan.tail_method && plan.smooth_ends && a - b == 1.0 && 1.0 - a + 2.0 * b > 0.0 &&
+  if (plan.tail_method && plan.smooth_ends && a - b == 1.0 && law.naive_balance() > 0.0 &&
       law.zeta() >= kLogTailZeta) {
     // The overdamped tail of the naive end: x' ≈ -(c_s/c_d) x until x'', c_d x^b x' and c_s x^a balance at
     // the naive end's scale m.x (viscoelastic Hertz: x = ζ^{-4}), below which the overlap closes at a nearly

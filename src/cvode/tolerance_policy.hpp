@@ -4,7 +4,7 @@
 // that the resulting error stays below the requested tolerance.
 #include <optional>
 
-#include "core/cvode_integrator.hpp"
+#include "cvode/cvode_integrator.hpp"
 #include "restitution/collision_solver.hpp"
 
 namespace restitution::detail {
@@ -28,6 +28,23 @@ struct SolvePlan {
 // that does not exist for this law. `conditioning` (<= 1) tightens the local tolerances further, for an end
 // found ill-conditioned by a first solve (ContactLaw::naive_end_conditioning).
 SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options, double conditioning = 1.0);
+
+// What rounding lets CVODE deliver (check_solve_request). Measured on the naive ends of the dash-pot and
+// Tsuji near critical damping against their closed forms (tests/test_conditioning_grid_slow.cpp, 2775 points
+// per member and method): an error above T occurs only where T < g κ DBL_EPSILON with g = 89 for BDF (Tsuji,
+// ζ = 2.1985, T = 1e-11) and g = 2.1 for Adams (Tsuji, ζ = 2.2354, T = 1e-10); with the gains below the worst
+// answer is 0.82 T (BDF) and 0.79 T (Adams). ε below 1e-140 is not resolved: the dissipation integral and the
+// elastic energy carry ε², which nears the smallest normal double there (the dash-pot's solve misses the end
+// from ε ~ 1e-152 on).
+inline constexpr double kBdfRoundingGain = 150.0;
+inline constexpr double kAdamsRoundingGain = 10.0;
+inline constexpr double kCvodeSmallestEps = 1e-140;
+// For the method `options` resolves to for this law (a BDF phase takes BDF's gain).
+inline EngineRounding cvode_rounding(const ContactLaw& law, const SolveOptions& options) {
+  const bool bdf = resolve_method(law, options.method, options.ends) == Method::bdf;
+  return {method_name(options.method), bdf ? kBdfRoundingGain : kAdamsRoundingGain, kCvodeSmallestEps,
+          "eps squared, carried by the energy balance, nears the smallest normal double"};
+}
 
 // Below this relative tolerance CVODE's steps drown in double rounding: a conditioning that asks for less
 // cannot be delivered.

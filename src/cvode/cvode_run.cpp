@@ -1,4 +1,4 @@
-#include "core/cvode_run.hpp"
+#include "cvode/cvode_run.hpp"
 
 #include <fmt/core.h>
 
@@ -84,10 +84,12 @@ class CollisionRun {
   }
 
   [[nodiscard]] NumericalFailure failure(const std::string& what) const {
-    return NumericalFailure{fmt::format("{} (law {}, {}={}, {}, tolerance {:g}, method {})", what,
-                                        law_name(law_.kind()), law_.parameter_name(), law_.parameter(),
-                                        end_names(options_.ends), options_.tolerance,
-                                        method_name(plan_.method))};
+    // What failed, where, and what to try: a looser tolerance or the other engine usually gets through.
+    return NumericalFailure{fmt::format(
+        "the integration failed for law {} at {}={}, {}, tolerance {:g}, method {}: {}; try a larger "
+        "tolerance or another method (bdf, adams, taylor)",
+        law_name(law_.kind()), law_.parameter_name(), law_.parameter(), end_names(options_.ends),
+        options_.tolerance, method_name(plan_.method), what)};
   }
 
   // The naive end was requested but the state entered a region from which x never returns to 0.

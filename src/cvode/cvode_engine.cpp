@@ -1,24 +1,39 @@
-#include "core/cvode_engine.hpp"
+#include "cvode/cvode_engine.hpp"
 
 #include <fmt/core.h>
 
-#include "core/cvode_run.hpp"
-#include "core/tolerance_policy.hpp"
+#include "cvode/cvode_run.hpp"
+#include "cvode/tolerance_policy.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution {
 
-Method resolve_method(const ContactLaw& law, Method requested, EndSet ends) {
-  if (requested != Method::automatic) return requested;
+MethodChoice choose_methods(const ContactLaw& law, Method requested, EndSet ends) {
+  if (requested != Method::automatic) return {requested, std::nullopt};
   // Measured (docs/accuracy.md): Adams is cheaper while the damping is weak, BDF once it makes the
   // problem stiff. Only the naive tail is stiff: up to the delayed-recovery end Adams takes 2-4x fewer
-  // steps than BDF at every ζ up to 1e4.
-  if (!ends.contains(CollisionEnd::naive)) return Method::adams;
-  return law.parameter() < 5.0 ? Method::adams : Method::bdf;
+  // steps than BDF at every ζ up to 1e4, and resolves the fast decay of x' at orders up to 12 where BDF
+  // stops at 5 (ζ = 100, naive end, T = 1e-10: 2131 instead of 3648 steps, the same error;
+  // docs/performance.md). So BDF takes over at the delayed-recovery end while the naive end is pending.
+  if (!ends.contains(CollisionEnd::naive) || law.parameter() < 5.0) return {Method::adams, std::nullopt};
+  return {Method::adams, Method::bdf};
+}
+
+Method resolve_method(const ContactLaw& law, Method requested, EndSet ends) {
+  const MethodChoice choice = choose_methods(law, requested, ends);
+  return choice.tail.value_or(choice.method);
 }
 
 void CvodeEngine::check(const ContactLaw& law, const SolveOptions& options) const {
-  check_solve_request(law, options);
+  check_solve_request(law, options, detail::cvode_rounding(law, options));
+  if (options.method == Method::adams && options.ends.contains(CollisionEnd::naive) &&
+      law.naive_end_existence() == NaiveEndExistence::always && law.zeta() > kAdamsNaiveZetaMax) {
+    throw InvalidInput(fmt::format(
+        "method adams computes the naive end only for zeta <= {:g}, got zeta={}: the overdamped tail after "
+        "the delayed-recovery end is stiff (Adams needs ~ zeta^(5/3) steps, more than a million from zeta ~ "
+        "2500); use --method auto (Adams up to the delayed-recovery end, then BDF) or bdf",
+        kAdamsNaiveZetaMax, law.zeta()));
+  }
 }
 
 detail::CvodeIntegrator& CvodeEngine::integrator(Method method) {
@@ -33,6 +48,7 @@ CollisionResult CvodeEngine::solve(const ContactLaw& law, const SolveOptions& op
     detail::CvodeIntegrator* tail = plan.tail_method ? &integrator(*plan.tail_method) : nullptr;
     return detail::run_collision(law, options, plan, integrator(plan.method), tail);
   };
+  check(law, options);
   const detail::SolvePlan plan = detail::plan_solve(law, options);
   CollisionResult result = run(plan);
   // A naive end whose conditioning only the solve reveals (constant damping close to the largest ζ with a
