@@ -11,6 +11,8 @@
 // The 2008 paper's Eq. 23 uses the velocity-independent length k^{-2/5} instead of L: its x equals
 // v^{4/5} times the natural x (same τ), which is how ContactLaw::hertz_scaled reports natural units.
 
+#include "restitution/contact_law.hpp"
+
 namespace restitution {
 
 // The Hertz constants of a pair of spheres, in SI units.
@@ -37,6 +39,15 @@ struct NaturalScales {
   double length_m = 0.0;
 };
 NaturalScales natural_scales(double k, double velocity_m_s);
+
+// The coefficients of ContactLaw::physical for one pair: F = k ξ^a + γ ξ^b ξ' on the effective mass m.
+struct PhysicalCoefficients {
+  double stiffness = 0.0;          // k [N/m^a]
+  double damping = 0.0;            // γ [N s/m^{1+b}]
+  double effective_mass_kg = 0.0;  // m
+};
+// The natural scales of ContactLaw::physical at impact speed v: T = physical_time_scale_s, L = v T.
+NaturalScales physical_scales(LawKind kind, const PhysicalCoefficients& c, double velocity_m_s);
 
 // The 1999 paper's characteristic velocity g* [m/s]: (g*)^{-1/5} = C1 (3/2) A (ρ/m_eff)^{2/5} = C1 β
 // (C1 in closed form: series::c1_closed_form)

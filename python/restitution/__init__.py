@@ -79,8 +79,18 @@ def zeta_of(zeta=None, *, beta=None, velocity=None, material=None):
     return float(zetas) if zetas.ndim == 0 else zetas
 
 
+def _law(law, zeta=None, beta=None, material=None):
+    """The law's name, checked; beta and material describe viscoelastic Hertz only."""
+    _text("law", law)
+    if law not in _core.law_names:
+        raise ValueError(f"law must be one of {', '.join(_core.law_names)}, got '{law}'")
+    if law != "viscoelastic-hertz" and (beta is not None or material is not None):
+        raise TypeError(f"beta and material describe law='viscoelastic-hertz'; law='{law}' takes zeta")
+    return law
+
+
 def eps(zeta=None, end="delayed-recovery", tolerance=1e-10, method="auto", *, beta=None, velocity=None,
-        material=None):
+        material=None, law="viscoelastic-hertz"):
     """Coefficient of restitution eps at one end of the collision.
 
     zeta: float or array-like in the checked range 0 <= zeta <= 1e6 (natural units; above it ValueError, as
@@ -91,17 +101,21 @@ def eps(zeta=None, end="delayed-recovery", tolerance=1e-10, method="auto", *, be
         [1e-13, 1e-2] for taylor.
     method: "auto" (CVODE, BDF or Adams per regime), "bdf", "adams" or "taylor" (Taylor series; fastest;
         the naive end for zeta <= 100 only).
+    law: the contact law (docs/contact_laws.md): "viscoelastic-hertz" (default), "tsuji-hertz",
+        "hertz-constant-damping" or "linear-dashpot"; zeta is that law's natural-form parameter in
+        x'' + zeta x^b x' + x^a = 0 (the dash-pot: zeta = 2 r); beta and material are Hertz only.
     Returns a float for scalar input, else a float64 array of the same (broadcast) shape, computed on all
     cores with the GIL released (Ctrl-C -> KeyboardInterrupt).
     Raises ValueError (bad value, empty array; the message names the index), TypeError (wrong type),
     NumericalFailure (accuracy not reached; names the index).
     """
-    if type(zeta) is float and beta is None and material is None and velocity is None:
-        return _core.eps_scalar(zeta, end, tolerance, method)  # fast path; pybind11 checks the types
+    if type(zeta) is float and beta is None and material is None and velocity is None and law == "viscoelastic-hertz":
+        return _core.eps_scalar(zeta, end, tolerance, method, law)  # fast path; pybind11 checks the types
+    law = _law(law, zeta, beta, material)
     z = zeta_of(zeta, beta=beta, velocity=velocity, material=material)
     if isinstance(z, float):
-        return _core.eps_scalar(z, _text("end", end), _tolerance(tolerance), _text("method", method))
-    return _core.eps_array(z, _text("end", end), _tolerance(tolerance), _text("method", method))
+        return _core.eps_scalar(z, _text("end", end), _tolerance(tolerance), _text("method", method), law)
+    return _core.eps_array(z, _text("end", end), _tolerance(tolerance), _text("method", method), law)
 
 
 def _tolerance(tolerance):
@@ -111,7 +125,7 @@ def _tolerance(tolerance):
 
 
 def solve(zeta=None, end="both", tolerance=1e-10, method="auto", trajectory=False, *, beta=None,
-          velocity=None, material=None):
+          velocity=None, material=None, law="viscoelastic-hertz"):
     """One collision in full: a CollisionResult with, in natural units,
 
     .naive / .delayed_recovery: EndResult (eps, one_minus_eps, tau, x, velocity, dissipated_energy) or
@@ -119,25 +133,31 @@ def solve(zeta=None, end="both", tolerance=1e-10, method="auto", trajectory=Fals
     .method (the one used), .zeta, .tolerance; with trajectory=True the numpy arrays .tau, .x, .velocity
         (x') and .acceleration (x'') at every internal step and event.
     zeta, beta/velocity or material/velocity as for eps() but scalar only; end "both" (default), "naive"
-    or "delayed-recovery". Raises ValueError, TypeError, NumericalFailure as eps() does.
+    or "delayed-recovery"; law as for eps() (.law names it; .zeta is the damping ratio r for the dash-pot).
+    Raises ValueError, TypeError, NumericalFailure as eps() does.
     """
+    law = _law(law, zeta, beta, material)
     z = zeta_of(zeta, beta=beta, velocity=velocity, material=material)
     if not isinstance(z, float):
         raise TypeError("solve() takes one collision: zeta (or beta, velocity) must be scalars; use eps() for arrays")
-    return _core.solve(z, _text("end", end), _tolerance(tolerance), _text("method", method), bool(trajectory))
+    return _core.solve(z, _text("end", end), _tolerance(tolerance), _text("method", method), bool(trajectory), law)
 
 
-def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=1e-10, method="auto"):
+def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=1e-10, method="auto", *,
+              law="viscoelastic-hertz"):
     """The damping that gives a measured eps in (0, 1) at the impact speed velocity [m/s].
 
     Returns a Calibration: .zeta (natural units), .beta [s^(1/5) m^(-1/5)], .characteristic_velocity
     (the 1999 paper's g* [m/s]), .dissipative_constant (A [s] for the material's elastic data, else None),
     .eps_at_zeta, .solves. end as for eps(). Raises ValueError for eps outside (0, 1) or below eps(zeta = 1e6) (the checked range).
+    law as for eps(): for another law than viscoelastic Hertz .zeta (and .parameter, the dash-pot's r) is
+    the result and .beta, .characteristic_velocity are 0 (no material).
     """
+    law = _law(law, material=material)
     if material is not None and not isinstance(material, Material):
         raise TypeError(f"material must be a restitution.Material, got {type(material).__name__}")
     for name, value in (("eps", eps), ("velocity", velocity)):
         if isinstance(value, bool) or not isinstance(value, numbers.Real):
             raise TypeError(f"{name} must be a real number, got {type(value).__name__}")
     return _core.calibrate(float(eps), float(velocity), _text("end", end), _tolerance(tolerance),
-                           _text("method", method), material)
+                           _text("method", method), material, law)

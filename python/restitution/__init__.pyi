@@ -10,6 +10,7 @@ from . import series as series
 
 End = Literal["naive", "delayed-recovery"]
 Method = Literal["auto", "bdf", "adams", "taylor"]
+Law = Literal["viscoelastic-hertz", "tsuji-hertz", "hertz-constant-damping", "linear-dashpot"]
 ArrayLike = Union[npt.ArrayLike, Sequence[float]]
 FloatArray = npt.NDArray[np.float64]
 
@@ -53,6 +54,8 @@ class SolverStats:
 class CollisionResult:
     @property
     def zeta(self) -> float: ...
+    @property
+    def law(self) -> str: ...
     @property
     def tolerance(self) -> float: ...
     @property
@@ -117,7 +120,11 @@ class Material:
 
 class Calibration:
     @property
+    def law(self) -> str: ...
+    @property
     def zeta(self) -> float: ...
+    @property
+    def parameter(self) -> float: ...
     @property
     def beta(self) -> float: ...  # s^(1/5) m^(-1/5)
     @property
@@ -142,7 +149,7 @@ def zeta_of(
 @overload
 def eps(
     zeta: float, end: End = ..., tolerance: float = ..., method: Method = ..., *, beta: None = ...,
-    velocity: None = ..., material: None = ...
+    velocity: None = ..., material: None = ..., law: Law = ...
 ) -> float: ...
 @overload
 def eps(
@@ -154,6 +161,7 @@ def eps(
     beta: Optional[ArrayLike] = ...,
     velocity: Optional[ArrayLike] = ...,  # m/s
     material: Optional[Material] = ...,
+    law: Law = ...,
 ) -> Union[float, FloatArray]: ...
 def solve(
     zeta: Optional[float] = ...,
@@ -165,6 +173,7 @@ def solve(
     beta: Optional[float] = ...,
     velocity: Optional[float] = ...,  # m/s
     material: Optional[Material] = ...,
+    law: Law = ...,
 ) -> CollisionResult: ...
 def calibrate(
     eps: float,
@@ -173,4 +182,6 @@ def calibrate(
     material: Optional[Material] = ...,
     tolerance: float = ...,
     method: Method = ...,
+    *,
+    law: Law = ...,
 ) -> Calibration: ...

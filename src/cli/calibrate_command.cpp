@@ -9,6 +9,7 @@
 #include "cli/json_writer.hpp"
 #include "cli/material_options.hpp"
 #include "cli/options.hpp"
+#include "cli/result_json.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
@@ -17,6 +18,7 @@ namespace restitution::cli {
 namespace {
 
 struct CalibrateOptions {
+  std::string law = law_name(LawKind::viscoelastic_hertz);
   double eps = 0.0;
   double velocity = 0.0;
   std::string end = "delayed-recovery";
@@ -33,6 +35,12 @@ std::optional<double> material_k(const CalibrateOptions& o) {
 
 int run_calibrate(const CalibrateOptions& o) {
   CalibrationRequest request;
+  request.law = law_from_name(o.law);
+  const bool hertz = request.law == LawKind::viscoelastic_hertz;
+  if (!hertz && o.material.any()) {
+    throw InvalidInput(
+        fmt::format("a material gives A for --law viscoelastic-hertz only, not --law {}", o.law));
+  }
   request.eps = o.eps;
   request.velocity_m_s = o.velocity;
   request.end = o.end == "naive" ? CollisionEnd::naive : CollisionEnd::delayed_recovery;
@@ -45,11 +53,16 @@ int run_calibrate(const CalibrateOptions& o) {
   if (o.json) {
     JsonWriter json;
     json.begin_object();
+    if (!hertz) json.field("law", o.law);
     json.field("eps", o.eps).field("velocity_m_s", o.velocity).field("end", end_name(request.end));
     json.field("method", o.method);
     if (!request.fast) json.field("tolerance", o.tolerance);
-    json.field("zeta", c.zeta).field("beta", c.beta).field("eps_at_zeta", c.eps_at_zeta);
-    json.field("characteristic_velocity_m_s", c.characteristic_velocity_m_s);
+    json.field("zeta", c.zeta);
+    const LawParameter parameter = law_parameter(request.law);
+    if (parameter.zeta_per_parameter != 1.0) json.field(parameter_key(request.law), c.parameter);
+    if (hertz) json.field("beta", c.beta);
+    json.field("eps_at_zeta", c.eps_at_zeta);
+    if (hertz) json.field("characteristic_velocity_m_s", c.characteristic_velocity_m_s);
     if (request.k) json.field("k", *request.k);
     if (c.dissipative_constant_s) json.field("dissipative_constant_s", *c.dissipative_constant_s);
     json.field("solves", c.solves);
@@ -59,6 +72,13 @@ int run_calibrate(const CalibrateOptions& o) {
   }
   fmt::print("calibration: eps = {} at v = {} m/s, {} end ({})\n", o.eps, o.velocity, end_name(request.end),
              request.fast ? std::string("fast table, 1e-13") : fmt::format("tolerance {:g}", o.tolerance));
+  if (!hertz) {
+    fmt::print("  law {}: zeta = {:.12g} ({} = {:.12g})\n", o.law, c.zeta, law_parameter(request.law).name,
+               c.parameter);
+    fmt::print("  eps(zeta), re-solved         {:.12g}\n  {} collisions integrated\n", c.eps_at_zeta,
+               c.solves);
+    return 0;
+  }
   fmt::print("  zeta = beta v^(1/5)         {:.12g}\n", c.zeta);
   fmt::print("  beta                        {:.12g} s^(1/5) m^(-1/5)\n", c.beta);
   fmt::print("  eps(zeta), {:<17}{:.12g}\n", request.fast ? "fast table" : "re-solved", c.eps_at_zeta);
@@ -77,6 +97,7 @@ void add_calibrate_command(CLI::App& app, Action& chosen) {
   auto o = std::make_shared<CalibrateOptions>();
   CLI::App* cmd = app.add_subcommand(
       "calibrate", "beta (and A for a material, and the 1999 g*) from a measured eps at one impact speed");
+  add_law_option(*cmd, o->law);
   cmd->add_option("--eps", o->eps, "measured coefficient of restitution, in (0, 1)")->required();
   cmd->add_option("--velocity", o->velocity, "impact speed v > 0 in m/s")->required();
   cmd->add_option("--end", o->end, "end of the collision the measurement corresponds to")

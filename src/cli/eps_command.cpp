@@ -16,7 +16,7 @@ namespace {
 
 struct EpsOptions {
   std::optional<double> zeta, beta, velocity, damping_ratio;
-  std::string law = "viscoelastic-hertz";
+  std::string law = law_name(LawKind::viscoelastic_hertz);
   SolverArguments solver;
   bool json = false;
 };
@@ -104,10 +104,7 @@ void add_eps_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--beta", o->beta,
                   "beta >= 0 in s^{1/5} m^{-1/5} (with --velocity: the 2008 paper's Eq. 23)");
   cmd->add_option("--velocity", o->velocity, "impact speed v > 0 (scaled as in the 2008 paper's Eq. 23)");
-  cmd->add_option("--law", o->law,
-                  "contact law: viscoelastic-hertz, tsuji-hertz, hertz-constant-damping or linear-dashpot "
-                  "(docs/contact_laws.md)")
-      ->default_str("viscoelastic-hertz");
+  add_law_option(*cmd, o->law);
   cmd->add_option("--damping-ratio", o->damping_ratio,
                   "damping ratio r > 0 of the linear dash-pot x'' + 2r x' + x = 0");
   add_solver_options(*cmd, o->solver);

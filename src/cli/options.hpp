@@ -33,6 +33,16 @@ inline SolveOptions solve_options(const SolverArguments& a) {
   return options;
 }
 
+// --law NAME, one of law_names() (the family of docs/contact_laws.md).
+inline void add_law_option(CLI::App& command, std::string& law) {
+  command
+      .add_option("--law", law,
+                  "contact law: viscoelastic-hertz, tsuji-hertz, hertz-constant-damping or linear-dashpot "
+                  "(docs/contact_laws.md)")
+      ->check(CLI::IsMember(law_names()))
+      ->capture_default_str();
+}
+
 inline void add_solver_options(CLI::App& command, SolverArguments& a) {
   command
       .add_option("--end", a.end, "end of the collision: naive (x = 0), delayed-recovery (force = 0) or both")

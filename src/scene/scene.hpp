@@ -40,8 +40,10 @@ struct PowerLawFitRequest {
 
 enum class Axes { linear, log_log, log_x };
 
-// ε tables over ζ, or over impact speeds with β, a material or the 1999 paper's g*.
+// ε tables over ζ (the natural form of any member of the family), or, for viscoelastic Hertz, over impact
+// speeds with β, a material or the 1999 paper's g*.
 struct Sweep {
+  LawKind law = LawKind::viscoelastic_hertz;
   std::string name;
   std::string title;
   std::string note;  // free text for the report: what to look for
@@ -64,6 +66,7 @@ struct Sweep {
 
 // One collision with its trajectory x, x', x'' (the 2008 paper's Fig. 3).
 struct Trajectory {
+  LawKind law = LawKind::viscoelastic_hertz;
   std::string name;
   std::string title;
   EndSet ends = EndSet::both();
@@ -75,6 +78,7 @@ struct Trajectory {
 };
 
 struct CalibrationTask {
+  LawKind law = LawKind::viscoelastic_hertz;  // β, g* and A for viscoelastic Hertz only
   std::string name;
   double eps = 0.0;
   double velocity_m_s = 0.0;

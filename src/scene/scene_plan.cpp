@@ -80,7 +80,7 @@ Plan plan_scene(const Scene& scene) {
       const std::string task = fmt::format("{}:{}: sweep {}", scene.file_name, s.line, s.name);
       for (const double v : s.velocity_m_s) points.push_back(physical_point(v, beta, k, task));
     }
-    for (PlannedPoint& p : points) p.job = table.add(ContactLaw::hertz_natural(p.parameter), s.ends, false);
+    for (PlannedPoint& p : points) p.job = table.add(ContactLaw::natural(s.law, p.parameter), s.ends, false);
     plan.sweeps.push_back(std::move(points));
   }
   for (const Trajectory& t : scene.trajectories) {
@@ -94,7 +94,7 @@ Plan plan_scene(const Scene& scene) {
                          c ? std::optional(c->hertz.k) : std::nullopt,
                          fmt::format("{}:{}: trajectory {}", scene.file_name, t.line, t.name));
     }
-    p.job = table.add(ContactLaw::hertz_natural(p.parameter), t.ends, true);
+    p.job = table.add(ContactLaw::natural(t.law, p.parameter), t.ends, true);
     plan.trajectories.push_back(p);
   }
   for (const DashpotCheck& d : scene.dashpots) {

@@ -57,6 +57,13 @@ NaturalScales natural_scales(double k, double velocity_m_s) {
   return s;
 }
 
+NaturalScales physical_scales(LawKind kind, const PhysicalCoefficients& c, double velocity_m_s) {
+  NaturalScales s;
+  s.time_s = physical_time_scale_s(kind, c.stiffness, c.effective_mass_kg, velocity_m_s);
+  s.length_m = velocity_m_s * s.time_s;
+  return s;
+}
+
 double characteristic_velocity_m_s(double beta) {
   return std::pow(series::c1_closed_form() * positive(beta, "beta"), -5.0);
 }
