@@ -27,6 +27,7 @@ __all__ = ["eps", "solve", "calibrate", "zeta_of", "Material", "NumericalFailure
            "EndResult", "MaxCompression", "SolverStats", "Calibration", "series", "fast"]
 
 _SCALARS = (float, int)
+_TOLERANCE = _core.default_tolerance  # SolveOptions' default, the command line's too
 
 
 def _real_array(name, value):
@@ -89,7 +90,7 @@ def _law(law, zeta=None, beta=None, material=None):
     return law
 
 
-def eps(zeta=None, end="delayed-recovery", tolerance=1e-10, method="auto", *, beta=None, velocity=None,
+def eps(zeta=None, end="delayed-recovery", tolerance=_TOLERANCE, method="auto", *, beta=None, velocity=None,
         material=None, law="viscoelastic-hertz"):
     """Coefficient of restitution eps at one end of the collision.
 
@@ -124,7 +125,7 @@ def _tolerance(tolerance):
     return float(tolerance)
 
 
-def solve(zeta=None, end="both", tolerance=1e-10, method="auto", trajectory=False, *, beta=None,
+def solve(zeta=None, end="both", tolerance=_TOLERANCE, method="auto", trajectory=False, *, beta=None,
           velocity=None, material=None, law="viscoelastic-hertz"):
     """One collision in full: a CollisionResult with, in natural units,
 
@@ -143,7 +144,7 @@ def solve(zeta=None, end="both", tolerance=1e-10, method="auto", trajectory=Fals
     return _core.solve(z, _text("end", end), _tolerance(tolerance), _text("method", method), bool(trajectory), law)
 
 
-def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=1e-10, method="auto", *,
+def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=_TOLERANCE, method="auto", *,
               law="viscoelastic-hertz"):
     """The damping that gives a measured eps in (0, 1) at the impact speed velocity [m/s].
 

@@ -175,6 +175,7 @@ void bind_collision(py::module_& m) {
   m.def("eps_array", &eps_array, py::arg("zeta"), py::arg("end"), py::arg("tolerance"), py::arg("method"),
         py::arg("law"), "eps at every zeta of an array, on all cores with the GIL released; same shape out.");
   m.attr("law_names") = law_names();
+  m.attr("default_tolerance") = SolveOptions{}.tolerance;
   m.def("zeta_from", &zeta_from, py::arg("beta"), py::arg("velocity"),
         "zeta = beta v^(1/5); beta in s^(1/5) m^(-1/5), velocity in m/s.");
   m.def("zetas_from", &zetas_from, py::arg("beta"), py::arg("velocity"),

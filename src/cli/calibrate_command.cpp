@@ -4,6 +4,8 @@
 
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
@@ -17,13 +19,21 @@
 namespace restitution::cli {
 namespace {
 
+// The methods of the collision solver, and the fast table.
+constexpr const char* kFastMethod = "fast";
+std::vector<std::string> calibration_methods() {
+  std::vector<std::string> names = method_names();
+  names.emplace_back(kFastMethod);
+  return names;
+}
+
 struct CalibrateOptions {
   std::string law = law_name(LawKind::viscoelastic_hertz);
   double eps = 0.0;
   double velocity = 0.0;
-  std::string end = "delayed-recovery";
-  double tolerance = 1e-10;
-  std::string method = "auto";
+  std::string end = end_name(CalibrationRequest{}.end);
+  double tolerance = CalibrationRequest{}.tolerance;
+  std::string method = method_name(CalibrationRequest{}.method);
   MaterialOptions material;
   bool json = false;
 };
@@ -43,10 +53,10 @@ int run_calibrate(const CalibrateOptions& o) {
   }
   request.eps = o.eps;
   request.velocity_m_s = o.velocity;
-  request.end = o.end == "naive" ? CollisionEnd::naive : CollisionEnd::delayed_recovery;
+  request.end = end_from_name(o.end);
   request.tolerance = o.tolerance;
-  request.fast = o.method == "fast";
-  if (!request.fast) request.method = method_from(o.method);
+  request.fast = o.method == kFastMethod;
+  if (!request.fast) request.method = method_from_name(o.method);
   request.k = material_k(o);
   CollisionSolver solver;
   const Calibration c = calibrate(request, solver);
@@ -101,7 +111,7 @@ void add_calibrate_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--eps", o->eps, "measured coefficient of restitution, in (0, 1)")->required();
   cmd->add_option("--velocity", o->velocity, "impact speed v > 0 in m/s")->required();
   cmd->add_option("--end", o->end, "end of the collision the measurement corresponds to")
-      ->check(CLI::IsMember({"naive", "delayed-recovery"}))
+      ->check(CLI::IsMember(end_names()))
       ->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance,
                   "accuracy of each eps, in [1e-11, 1e-2] (taylor: [1e-13, 1e-2])")
@@ -110,7 +120,7 @@ void add_calibrate_command(CLI::App& app, Action& chosen) {
          "--method", o->method,
          "integration method: bdf, adams, auto or taylor (the naive end only for zeta <= 100); or fast: "
          "the certified table (restitution/fast.hpp, 1e-13, no integration, any eps in (0, 1))")
-      ->check(CLI::IsMember({"bdf", "adams", "auto", "taylor", "fast"}))
+      ->check(CLI::IsMember(calibration_methods()))
       ->capture_default_str();
   add_material_options(*cmd, o->material);
   cmd->add_flag("--json", o->json,

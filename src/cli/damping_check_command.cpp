@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
 #include "damping_check/check.hpp"
+#include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -26,7 +27,7 @@ struct DampingCheckOptions {
   double velocity = 1.0;  // reference speed of the speed-dependent recipes [m/s]
   double velocity_min = 0.1, velocity_max = 10.0;
   int points = 5;
-  double tolerance = 1e-10;
+  double tolerance = SolveOptions{}.tolerance;
   bool map = false;
   bool json = false;
 };

@@ -11,6 +11,7 @@
 #include "cli/json_writer.hpp"
 #include "cli/material_options.hpp"
 #include "dem/lines_check.hpp"
+#include "restitution/collision_solver.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -21,7 +22,7 @@ struct DemOptions {
   std::optional<double> eps, velocity, dissipative_constant;
   std::string end = "delayed-recovery";
   std::vector<double> speeds;
-  double tolerance = 1e-10;
+  double tolerance = SolveOptions{}.tolerance;
   double friction = 0.0;  // Coulomb mu of the tangential model [1]
   bool json = false;
 };

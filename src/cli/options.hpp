@@ -8,28 +8,18 @@
 namespace restitution::cli {
 
 // --end, --tolerance, --method as given on the command line; resolved by the functions below.
+// Defaults: SolveOptions' (both ends, its tolerance, its method).
 struct SolverArguments {
-  std::string end = "both";
-  double tolerance = 1e-10;
-  std::string method = "auto";
+  std::string end = kBothEnds;
+  double tolerance = SolveOptions{}.tolerance;
+  std::string method = method_name(SolveOptions{}.method);
 };
-
-inline EndSet end_selection(const std::string& end) {
-  return end == "both" ? EndSet::both() : EndSet{end_from_name(end)};
-}
-
-inline Method method_from(const std::string& name) {
-  if (name == "bdf") return Method::bdf;
-  if (name == "adams") return Method::adams;
-  if (name == "taylor") return Method::taylor;
-  return Method::automatic;
-}
 
 inline SolveOptions solve_options(const SolverArguments& a) {
   SolveOptions options;
-  options.ends = end_selection(a.end);
+  options.ends = end_set_from_name(a.end);
   options.tolerance = a.tolerance;
-  options.method = method_from(a.method);
+  options.method = method_from_name(a.method);
   return options;
 }
 
@@ -46,7 +36,7 @@ inline void add_law_option(CLI::App& command, std::string& law) {
 inline void add_solver_options(CLI::App& command, SolverArguments& a) {
   command
       .add_option("--end", a.end, "end of the collision: naive (x = 0), delayed-recovery (force = 0) or both")
-      ->check(CLI::IsMember({"naive", "delayed-recovery", "both"}))
+      ->check(CLI::IsMember(end_set_names()))
       ->capture_default_str();
   command
       .add_option(
@@ -58,7 +48,7 @@ inline void add_solver_options(CLI::App& command, SolverArguments& a) {
       .add_option("--method", a.method,
                   "integration method: bdf, adams, auto (CVODE, chosen per regime) or taylor (Taylor series: "
                   "about 40x faster than auto, docs/accuracy.md; the naive end only for zeta <= 100)")
-      ->check(CLI::IsMember({"bdf", "adams", "auto", "taylor"}))
+      ->check(CLI::IsMember(method_names()))
       ->capture_default_str();
 }
 

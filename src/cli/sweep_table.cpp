@@ -63,8 +63,8 @@ std::string sweep_header(EndSet ends, const VelocityAxis* velocity) {
 std::string sweep_row(const SweepPoint& point, EndSet ends, const VelocityAxis* velocity) {
   std::string row = number17(point.zeta);
   if (velocity != nullptr) {
-    row += "," + number17(velocity->velocity_m_s.at(point.index));
-    if (velocity->beta) row += "," + number17(*velocity->beta);
+    row += fmt::format(",{}", number17(velocity->velocity_m_s.at(point.index)));
+    if (velocity->beta) row += fmt::format(",{}", number17(*velocity->beta));
   }
   if (!point.result) {
     const std::size_t empty =

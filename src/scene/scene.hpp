@@ -101,8 +101,10 @@ struct DashpotCheck {
 struct ExternalStudy {
   std::string kind;  // "work_precision" | "stability"
   std::string name;
-  std::vector<double> zeta;                                       // stability: the points
-  std::vector<std::string> engines = {"taylor", "adams", "bdf"};  // work_precision: engines measured
+  std::vector<double> zeta;  // stability: the points
+  // work_precision: engines measured (work_precision_engines() names)
+  std::vector<std::string> engines = {method_name(Method::taylor), method_name(Method::adams),
+                                      method_name(Method::bdf)};
   int repeats = 3;  // work_precision: timed solves per point (the median is kept)
   int line = 0;
 };
@@ -141,8 +143,8 @@ struct Scene {
   std::string title;
   std::string description;
   std::filesystem::path output;  // as written in the file (relative paths: to the working directory)
-  double tolerance = 1e-10;
-  Method method = Method::automatic;
+  double tolerance = SolveOptions{}.tolerance;
+  Method method = SolveOptions{}.method;
   std::map<std::string, Material> materials;
   std::vector<Sweep> sweeps;
   std::vector<Trajectory> trajectories;

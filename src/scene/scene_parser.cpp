@@ -37,10 +37,10 @@ EndSet read_ends(TomlReader& r, EndSet fallback = EndSet::both()) {
   if (!words) return fallback;
   EndSet ends;
   for (const std::string& w : *words) {
-    if (w == "naive" || w == "both") ends.insert(CollisionEnd::naive);
-    if (w == "delayed-recovery" || w == "both") ends.insert(CollisionEnd::delayed_recovery);
-    if (w != "naive" && w != "delayed-recovery" && w != "both") {
-      r.fail("ends", fmt::format(R"(expected "naive", "delayed-recovery" or "both", got "{}")", w));
+    try {
+      ends = ends | end_set_from_name(w);
+    } catch (const InvalidInput& e) {
+      r.fail("ends", e.what());
     }
   }
   if (ends.empty()) r.fail("ends", "no end requested");
@@ -75,11 +75,13 @@ void check_law_zeta(TomlReader& r, LawKind law, EndSet ends, const std::vector<d
 }
 
 CollisionEnd read_end(TomlReader& r) {
-  const std::string w = r.text("end").value_or("delayed-recovery");
-  if (w == "naive") return CollisionEnd::naive;
-  if (w != "delayed-recovery")
-    r.fail("end", fmt::format(R"(expected "naive" or "delayed-recovery", got "{}")", w));
-  return CollisionEnd::delayed_recovery;
+  const auto w = r.text("end");
+  if (!w) return CalibrationRequest{}.end;
+  try {
+    return end_from_name(*w);
+  } catch (const InvalidInput& e) {
+    r.fail("end", e.what());
+  }
 }
 
 bool has_dissipation(const Material& m) {
@@ -141,15 +143,17 @@ class Parser {
     const auto output = root_.text("output");
     if (!output || output->empty()) root_.fail("output", "missing: the folder to write to");
     scene_.output = *output;
-    scene_.tolerance = root_.number("tolerance").value_or(1e-10);
+    scene_.tolerance = root_.number("tolerance").value_or(SolveOptions{}.tolerance);
     if (scene_.tolerance < kMinTolerance || scene_.tolerance > kMaxTolerance) {
       root_.fail("tolerance", fmt::format("expected a value in [{:g}, {:g}]", kMinTolerance, kMaxTolerance));
     }
-    const std::string method = root_.text("method").value_or("auto");
-    if (method != "bdf" && method != "adams" && method != "auto") {
-      root_.fail("method", R"(expected "bdf", "adams" or "auto")");
+    if (const auto method = root_.text("method")) {
+      try {
+        scene_.method = method_from_name(*method);
+      } catch (const InvalidInput& e) {
+        root_.fail("method", e.what());
+      }
     }
-    scene_.method = method == "bdf" ? Method::bdf : method == "adams" ? Method::adams : Method::automatic;
     if (const toml::table* materials = root_.table("materials")) {
       for (const auto& [key, node] : *materials) {
         const std::string path = root_.child_path("materials") + "." + std::string(key.str());
