@@ -14,7 +14,7 @@ when the solver cannot deliver the accuracy. Array calls run on all cores withou
 KeyboardInterrupt on Ctrl-C. restitution.fast gives the same eps from the certified table, ~20 ns a value.
 """
 
-import numbers
+import numbers as _numbers
 
 import numpy as _np
 
@@ -55,6 +55,7 @@ def zeta_of(zeta=None, *, beta=None, velocity=None, material=None):
     zeta: float or array-like, >= 0.
     beta [s^(1/5) m^(-1/5)] with velocity [m/s]: zeta = beta v^(1/5), arrays broadcast.
     material (restitution.Material, with its dissipation) with velocity [m/s]: beta = material.beta.
+    Raises ValueError for a zeta outside the checked range 0 <= zeta <= 1e6 (or NaN), as eps() does.
     Returns a float for scalar input, else a float64 array of the broadcast shape.
     """
     given = [zeta is not None, beta is not None, material is not None]
@@ -64,9 +65,9 @@ def zeta_of(zeta=None, *, beta=None, velocity=None, material=None):
         if velocity is not None:
             raise TypeError("velocity goes with beta or material, not with zeta")
         if type(zeta) in _SCALARS:
-            return float(zeta)
+            return _checked_zeta(float(zeta))
         array = _real_array("zeta", zeta)
-        return float(array) if array.ndim == 0 else array
+        return _checked_zeta(float(array)) if array.ndim == 0 else _checked_zetas(array)
     if velocity is None:
         raise TypeError("beta and material need velocity [m/s]")
     if material is not None:
@@ -77,7 +78,28 @@ def zeta_of(zeta=None, *, beta=None, velocity=None, material=None):
         return _core.zeta_from(float(beta), float(velocity))
     b, v = _np.broadcast_arrays(_real_array("beta", beta), _real_array("velocity", velocity))
     zetas = _core.zetas_from(_np.asarray(b, order="C"), _np.asarray(v, order="C"))
-    return float(zetas) if zetas.ndim == 0 else zetas
+    return _checked_zeta(float(zetas)) if zetas.ndim == 0 else _checked_zetas(zetas)
+
+
+_LARGEST_ZETA = _core.largest_checked_zeta
+
+
+def _checked_zeta(zeta):
+    """zeta in the checked range 0 <= zeta <= 1e6, else ValueError in the library's words."""
+    _core.require_checked_zeta(zeta)
+    return zeta
+
+
+def _checked_zetas(zetas):
+    bad = _np.flatnonzero(~((zetas >= 0.0) & (zetas <= _LARGEST_ZETA)))
+    if bad.size:
+        index = _np.unravel_index(bad[0], zetas.shape)
+        try:
+            _core.require_checked_zeta(float(zetas[index]))
+        except ValueError as error:
+            where = index if len(index) > 1 else index[0]
+            raise ValueError(f"{error} (zeta at index {where})") from None
+    return zetas
 
 
 def _law(law, zeta=None, beta=None, material=None):
@@ -110,7 +132,8 @@ def eps(zeta=None, end="delayed-recovery", tolerance=_TOLERANCE, method="auto", 
     Raises ValueError (bad value, empty array; the message names the index), TypeError (wrong type),
     NumericalFailure (accuracy not reached; names the index).
     """
-    if type(zeta) is float and beta is None and material is None and velocity is None and law == "viscoelastic-hertz":
+    if (type(zeta) is float and beta is None and material is None and velocity is None and type(end) is str
+            and type(method) is str and type(tolerance) is float and law == "viscoelastic-hertz"):
         return _core.eps_scalar(zeta, end, tolerance, method, law)  # fast path; pybind11 checks the types
     law = _law(law, zeta, beta, material)
     z = zeta_of(zeta, beta=beta, velocity=velocity, material=material)
@@ -120,7 +143,7 @@ def eps(zeta=None, end="delayed-recovery", tolerance=_TOLERANCE, method="auto", 
 
 
 def _tolerance(tolerance):
-    if isinstance(tolerance, bool) or not isinstance(tolerance, numbers.Real):
+    if isinstance(tolerance, bool) or not isinstance(tolerance, _numbers.Real):
         raise TypeError(f"tolerance must be a real number, got {type(tolerance).__name__}")
     return float(tolerance)
 
@@ -138,6 +161,8 @@ def solve(zeta=None, end="both", tolerance=_TOLERANCE, method="auto", trajectory
     Raises ValueError, TypeError, NumericalFailure as eps() does.
     """
     law = _law(law, zeta, beta, material)
+    if not isinstance(trajectory, bool):
+        raise TypeError(f"trajectory must be True or False, got {type(trajectory).__name__}")
     z = zeta_of(zeta, beta=beta, velocity=velocity, material=material)
     if not isinstance(z, float):
         raise TypeError("solve() takes one collision: zeta (or beta, velocity) must be scalars; use eps() for arrays")
@@ -158,7 +183,7 @@ def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=_T
     if material is not None and not isinstance(material, Material):
         raise TypeError(f"material must be a restitution.Material, got {type(material).__name__}")
     for name, value in (("eps", eps), ("velocity", velocity)):
-        if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        if isinstance(value, bool) or not isinstance(value, _numbers.Real):
             raise TypeError(f"{name} must be a real number, got {type(value).__name__}")
     return _core.calibrate(float(eps), float(velocity), _text("end", end), _tolerance(tolerance),
                            _text("method", method), material, law)

@@ -176,6 +176,9 @@ void bind_collision(py::module_& m) {
         py::arg("law"), "eps at every zeta of an array, on all cores with the GIL released; same shape out.");
   m.attr("law_names") = law_names();
   m.attr("default_tolerance") = SolveOptions{}.tolerance;
+  m.attr("largest_checked_zeta") = kLargestCheckedZeta;
+  m.def("require_checked_zeta", &require_checked_zeta, py::arg("zeta"),
+        "ValueError unless 0 <= zeta <= 1e6 (the checked range).");
   m.def("zeta_from", &zeta_from, py::arg("beta"), py::arg("velocity"),
         "zeta = beta v^(1/5); beta in s^(1/5) m^(-1/5), velocity in m/s.");
   m.def("zetas_from", &zetas_from, py::arg("beta"), py::arg("velocity"),

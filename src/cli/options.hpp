@@ -1,6 +1,10 @@
 #pragma once
 // Option vocabulary shared by the subcommands: names on the command line <-> library enums.
+#include <fmt/core.h>
+
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdlib>
 #include <string>
 
 #include "restitution/collision_solver.hpp"
@@ -21,6 +25,29 @@ inline SolveOptions solve_options(const SolverArguments& a) {
   options.tolerance = a.tolerance;
   options.method = method_from_name(a.method);
   return options;
+}
+
+// An --out/--output value: never empty (an empty path would silently mean "here" or be ignored).
+inline CLI::Validator non_empty_path() {
+  return {[](const std::string& value) {
+            return value.empty() ? std::string("an empty path: give a file or folder name") : std::string();
+          },
+          "PATH"};
+}
+
+// A count option: a whole number in [lo, hi], every bound documented; the value as typed in the message
+// (a number beyond long long is not silently clamped).
+inline CLI::Validator whole_number_in(long long lo, long long hi) {
+  return {[lo, hi](const std::string& value) {
+            errno = 0;
+            char* end = nullptr;
+            const long long n = std::strtoll(value.c_str(), &end, 10);
+            const bool whole = !value.empty() && *end == '\0' && errno != ERANGE;
+            return whole && n >= lo && n <= hi
+                       ? std::string()
+                       : fmt::format("expected a whole number in [{}, {}], got '{}'", lo, hi, value);
+          },
+          fmt::format("in [{}, {}]", lo, hi)};
 }
 
 // --law NAME, one of law_names() (the family of docs/contact_laws.md).

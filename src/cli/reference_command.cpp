@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "cli/commands.hpp"
+#include "cli/options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "reference/reference_solution.hpp"
@@ -27,6 +28,9 @@ std::string digits(__float128 value) {
 }
 
 int run_reference(const ReferenceOptions& o) {
+  if (o.zeta && !o.out.empty()) {
+    throw InvalidInput("give --zeta Z (printed) or --out FILE (the whole grid), not both");
+  }
   if (o.zeta) {
     const ReferenceSolution s = hertz_reference(*o.zeta);
     fmt::print("zeta {:.17g}: agreement of the two orders {:.3g}, {} steps\n", s.parameter, s.agreement,
@@ -63,7 +67,9 @@ void add_reference_command(CLI::App& app, Action& chosen) {
   auto o = std::make_shared<ReferenceOptions>();
   CLI::App* cmd = app.add_subcommand(
       "reference", "high-precision reference solutions (Taylor method in __float128, independent of CVODE)");
-  cmd->add_option("--out", o->out, "CSV file to write (the repository keeps data/reference_solutions.csv)");
+  cmd->add_option("--out", o->out,
+                  "CSV file to write for the whole grid (the repository keeps data/reference_solutions.csv)")
+      ->check(non_empty_path());
   cmd->add_option("--zeta", o->zeta, "print the reference for one zeta >= 0 instead");
   cmd->callback([o, &chosen] { chosen = [o] { return run_reference(*o); }; });
 }

@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
+#include "cli/options.hpp"
 #include "cli/series_reports.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"
@@ -137,7 +138,7 @@ void add_eval(CLI::App& parent, Action& chosen) {
 void add_validate(CLI::App& parent, Action& chosen) {
   auto out = std::make_shared<std::string>("out/series");
   CLI::App* cmd = parent.add_subcommand("validate", "every approximation against the solver: CSV, JSON, PNG");
-  cmd->add_option("--out", *out, "output folder")->capture_default_str();
+  cmd->add_option("--out", *out, "output folder")->capture_default_str()->check(non_empty_path());
   cmd->callback([out, &chosen] { chosen = [out] { return run_series_validation(*out); }; });
 }
 
@@ -146,7 +147,7 @@ void add_certify(CLI::App& parent, Action& chosen) {
   CLI::App* cmd = parent.add_subcommand(
       "certify", "coefficients in two precisions with their certified digits, against the published tables");
   cmd->add_option("--order", o->first, "largest power of zeta (h up to zeta^{order})")->capture_default_str();
-  cmd->add_option("--out", o->second, "CSV file to write (default: stdout)");
+  cmd->add_option("--out", o->second, "CSV file to write (default: stdout)")->check(non_empty_path());
   cmd->callback([o, &chosen] { chosen = [o] { return run_series_certify(o->first, o->second); }; });
 }
 

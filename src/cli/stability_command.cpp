@@ -8,6 +8,7 @@
 #include "analysis/stability_report.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
+#include "cli/options.hpp"
 #include "cli/output_files.hpp"
 
 namespace restitution::cli {
@@ -149,7 +150,8 @@ void add_stability_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--points-per-decade", o->points_per_decade, "grid points per decade of zeta (1..20)")
       ->capture_default_str();
   cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
-  cmd->add_option("--out", o->out, "folder for stability.csv, stability.json and stability.png");
+  cmd->add_option("--out", o->out, "folder for stability.csv, stability.json and stability.png")
+      ->check(non_empty_path());
   cmd->callback([o, &chosen] { chosen = [o] { return run_stability(*o); }; });
 }
 

@@ -202,12 +202,16 @@ void add_sweep_command(CLI::App& app, Action& chosen) {
   cmd->add_option(
       "--dissipative-constant", o->dissipative_constant,
       "material: the dissipative constant A in s (adds SI columns: durations, maximal compression)");
-  cmd->add_option("--points", o->points, "number of grid values, >= 1 (both bounds included)")->required();
+  cmd->add_option("--points", o->points,
+                  fmt::format("number of grid values, in [1, {}] (both bounds included)", kMaxSweepPoints))
+      ->required()
+      ->check(whole_number_in(1, static_cast<long long>(kMaxSweepPoints)));
   cmd->add_flag("--log", o->log, "space the grid logarithmically (needs a minimum > 0); default: linearly");
   add_solver_options(*cmd, o->solver);
   cmd->add_option("--threads", o->threads, "worker threads, >= 1 (default: all cores)");
   cmd->add_option("--out", o->out, "the CSV file to write (FILE.partial holds the rows while it runs)")
-      ->required();
+      ->required()
+      ->check(non_empty_path());
   cmd->add_flag("--resume", o->resume, "continue an interrupted sweep from FILE.partial");
   cmd->callback([o, &chosen] { chosen = [o] { return run_sweep_command(*o); }; });
 }

@@ -108,7 +108,7 @@ struct ExternalStudy {
   int repeats = 3;  // work_precision: timed solves per point (the median is kept)
   int line = 0;
 };
-inline constexpr int kMaxStudyRepeats = 100;
+inline constexpr int kMaxStudyRepeats = 100;  // = kMaxWorkPrecisionRepeats (reference/work_precision.hpp)
 
 // Input lines for a DEM code (docs/dem.md) and the ε(v) they give; LAMMPS and LIGGGHTS are also run on them
 // and their measured ε(v) plotted against restitution's.

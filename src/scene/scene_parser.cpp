@@ -134,6 +134,23 @@ Material read_material(TomlReader& r) {
 
 class Parser {
  public:
+  // A scene file received from someone else must not write outside the folder it is run from: `output` is
+  // relative and never climbs (`..`); `run --output DIR` names any folder (the user's own choice).
+  void check_output_folder(const std::filesystem::path& output) {
+    if (output.is_absolute() || output.has_root_name() || output.has_root_directory()) {
+      root_.fail("output", fmt::format("\"{}\" is absolute: a scene writes under the working directory "
+                                       "(give a relative folder, or `restitution run FILE --output DIR`)",
+                                       output.string()));
+    }
+    for (const std::filesystem::path& part : output) {
+      if (part == "..") {
+        root_.fail("output", fmt::format("\"{}\" climbs out with '..': a scene writes under the working "
+                                         "directory (or `restitution run FILE --output DIR`)",
+                                         output.string()));
+      }
+    }
+  }
+
   Parser(const toml::table& root, std::string_view file_name) : root_(root, "", file_name) {}
 
   Scene parse() {
@@ -143,6 +160,7 @@ class Parser {
     const auto output = root_.text("output");
     if (!output || output->empty()) root_.fail("output", "missing: the folder to write to");
     scene_.output = *output;
+    check_output_folder(scene_.output);
     scene_.tolerance = root_.number("tolerance").value_or(SolveOptions{}.tolerance);
     if (scene_.tolerance < kMinTolerance || scene_.tolerance > kMaxTolerance) {
       root_.fail("tolerance", fmt::format("expected a value in [{:g}, {:g}]", kMinTolerance, kMaxTolerance));

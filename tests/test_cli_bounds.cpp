@@ -1,0 +1,78 @@
+// Issue 25 items 5-8: a scene's `output` stays under the working directory, empty --out/--output is refused,
+// `reference --out` is never ignored, and every count option has an upper bound (exit 2, naming the option).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cli_runner.hpp"
+
+namespace restitution {
+namespace {
+
+namespace fs = std::filesystem;
+using test_support::run_cli;
+
+void expect_refused(const std::string& arguments, const std::string& words) {
+  const auto r = run_cli(arguments);
+  EXPECT_EQ(r.status, 2) << arguments << ": " << r.err;
+  EXPECT_NE(r.err.find(words), std::string::npos) << arguments << ": " << r.err;
+}
+
+class SceneOutput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ = fs::temp_directory_path() / ("restitution-bounds-" + std::to_string(::getpid()));
+    fs::create_directories(folder_);
+  }
+  void TearDown() override { fs::remove_all(folder_); }
+  std::string scene_with(const std::string& output) {
+    const fs::path scene = folder_ / "s.toml";
+    std::ofstream(scene) << "output = \"" << output << "\"\n[[dashpot]]\ndamping_ratio = [0.5]\n";
+    return scene.string();
+  }
+  fs::path folder_;
+};
+
+TEST_F(SceneOutput, AbsoluteOrClimbingOutputIsRefusedNamingTheKey) {
+  for (const std::string output : {"/", "/tmp/elsewhere", "../up", "a/../../b"}) {
+    expect_refused("run " + scene_with(output), "output");
+  }
+  EXPECT_FALSE(fs::exists("/tmp/elsewhere/report.md"));
+}
+
+TEST_F(SceneOutput, CommandLineOutputMayNameAnyFolder) {
+  const fs::path out = folder_ / "chosen";
+  const auto r = run_cli("run " + scene_with("relative/ok") + " --output " + out.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out / "report.md"));
+}
+
+TEST(CliBounds, EmptyOutputIsRefusedEverywhere) {
+  expect_refused("run scenes/dashpot.toml --output ''", "--output");
+  expect_refused("sweep --zeta-min 0 --zeta-max 1 --points 2 --out ''", "--out");
+  expect_refused("reference --out ''", "--out");
+  expect_refused("work-precision --out ''", "--out");
+  expect_refused("stability --zeta 1 --out ''", "--out");
+  expect_refused("fast-table --out ''", "--out");
+  expect_refused("export c-header --out ''", "--out");
+}
+
+TEST(CliBounds, ReferenceOutIsNeverIgnored) {
+  expect_refused("reference --zeta 1 --out /tmp/restitution-never.csv", "--out");
+  EXPECT_FALSE(fs::exists("/tmp/restitution-never.csv"));
+}
+
+TEST(CliBounds, CountsHaveUpperBounds) {
+  expect_refused("work-precision --repeats 2000000000", "--repeats: expected a whole number in [1, 100]");
+  expect_refused("fast-table --out /tmp/restitution-x.h --checks 2000000000", "--checks");
+  expect_refused("fast-table --out /tmp/restitution-x.h --seed -1", "--seed");
+  expect_refused("sweep --zeta-min 0 --zeta-max 1 --points 99999999999999999999 --out /tmp/restitution-x.csv",
+                 "got '99999999999999999999'");
+  EXPECT_NE(run_cli("sweep --help").out.find("in [1, 10000000]"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace restitution
