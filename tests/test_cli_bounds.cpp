@@ -74,5 +74,25 @@ TEST(CliBounds, CountsHaveUpperBounds) {
   EXPECT_NE(run_cli("sweep --help").out.find("in [1, 10000000]"), std::string::npos);
 }
 
+// Item 12/13: -0 prints as 0; dem prints small ε in significant digits, not %.10f; the help texts say what
+// the program does.
+TEST(CliWords, NegativeZeroZetaAndHelpTexts) {
+  EXPECT_EQ(run_cli("eps --zeta -0 --json").out.rfind("{\"zeta\":0.0,", 0), 0U);
+  EXPECT_EQ(run_cli("dem --help").out.find("default 1)"), std::string::npos);
+  for (const char* command : {"stability", "damping-check", "series eval"}) {
+    const std::string help = run_cli(std::string(command) + " --help").out;
+    EXPECT_EQ(help.find("17 significant"), std::string::npos) << command;
+    EXPECT_NE(help.find("shortest form"), std::string::npos) << command;
+  }
+}
+
+TEST(CliWords, DemPrintsSmallEpsInSignificantDigits) {
+  const auto r = run_cli(
+      "dem --code lammps --young-modulus 1e7 --poisson-ratio 0.45 --radius 0.01 --density 1100 "
+      "--eps 0.01 --velocity 1 --end naive");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.find("eps = 0.00"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace restitution

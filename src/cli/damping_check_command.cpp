@@ -170,7 +170,7 @@ void add_damping_check_command(CLI::App& app, Action& chosen) {
       ->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")
       ->capture_default_str();
-  cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
+  cmd->add_flag("--json", o->json, "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, &chosen] { chosen = [o] { return run(*o); }; });
 }
 

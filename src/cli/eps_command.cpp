@@ -51,7 +51,7 @@ ContactLaw law_from(const EpsOptions& o) {
   if (o.zeta) {
     if (o.beta || o.velocity) throw InvalidInput("give either --zeta or --beta with --velocity, not both");
     require_checked_zeta(*o.zeta);
-    return ContactLaw::natural(kind, *o.zeta);
+    return ContactLaw::natural(kind, *o.zeta + 0.0);  // + 0.0: -0 is printed as 0
   }
   if (o.beta && o.velocity) {
     const ContactLaw law = ContactLaw::hertz_scaled(*o.beta, *o.velocity);
