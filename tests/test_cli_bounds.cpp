@@ -91,7 +91,7 @@ TEST(CliWords, DemPrintsSmallEpsInSignificantDigits) {
       "dem --code lammps --young-modulus 1e7 --poisson-ratio 0.45 --radius 0.01 --density 1100 "
       "--eps 0.01 --velocity 1 --end naive");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.out.find("eps = 0.00"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("eps = 0.0000"), std::string::npos) << r.out;  // %.10f gave 0.0000097903
 }
 
 }  // namespace
