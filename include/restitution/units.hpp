@@ -26,6 +26,14 @@ struct HertzConstants {
 // (A = 0 is allowed: elastic spheres).
 HertzConstants hertz_constants(double k, double dissipative_constant_s);
 
+// The Hertz facts of two spheres, each written once (docs/dem.md): the modulus factor (4/3) E* [Pa], the
+// stiffness ρ = (4/3) E* sqrt(R_eff) [N m^-3/2] of F = ρ ξ^{3/2}, a sphere's mass (4/3) π R³ ρ_mass [kg], and
+// β = γ k^{-3/5} [s^{1/5} m^{-1/5}] from the per-mass coefficients γ [s^-1 m^-1/2] and k [s^-2 m^-1/2].
+double hertz_modulus_pa(double effective_modulus_pa);
+double hertz_stiffness(double effective_modulus_pa, double effective_radius_m);
+double sphere_mass_kg(double radius_m, double density_kg_m3);
+double beta_from_gamma(double gamma, double k);
+
 // ζ = β v^{1/5}, β in s^{1/5} m^{-1/5}, v in m/s. Throws InvalidInput naming beta or velocity.
 double zeta_from(double beta, double velocity_m_s);
 // β = ζ / v^{1/5}.
