@@ -94,5 +94,23 @@ TEST(CliWords, DemPrintsSmallEpsInSignificantDigits) {
   EXPECT_EQ(r.out.find("eps = 0.0000"), std::string::npos) << r.out;  // %.10f gave 0.0000097903
 }
 
+// Item 12: reference --out and work-precision say so on Ctrl-C, like sweep and run, and write nothing.
+TEST(CliWords, SigintStopsReferenceAndWorkPrecisionSayingSo) {
+  const fs::path dir = fs::temp_directory_path() / ("restitution-sigint-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  for (const std::string command :
+       {"reference --out " + (dir / "r.csv").string(), "work-precision --out " + (dir / "wp").string()}) {
+    const std::string err = (fs::temp_directory_path() / "restitution-sigint-err").string();
+    const int raw = std::system(
+        ("timeout --preserve-status -s INT 1 " + std::string(RESTITUTION_EXE) + " " + command + " 2>" + err)
+            .c_str());
+    EXPECT_EQ(WEXITSTATUS(raw), 130) << command;
+    EXPECT_NE(test_support::slurp(err).find("interrupted by signal 2"), std::string::npos) << command;
+    EXPECT_FALSE(fs::exists(dir / "r.csv"));
+    EXPECT_FALSE(fs::exists(dir / "wp" / "work_precision.csv"));
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace restitution

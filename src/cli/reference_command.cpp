@@ -10,6 +10,7 @@
 #include "cli/options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/progress.hpp"
+#include "cli/stop_signals.hpp"
 #include "reference/reference_solution.hpp"
 #include "restitution/errors.hpp"
 
@@ -49,8 +50,11 @@ int run_reference(const ReferenceOptions& o) {
   std::vector<ReferenceSolution> solutions;
   {
     const std::vector<double> grid = reference_zeta_grid();
+    const StopSignals
+        signals;  // Ctrl-C stops after the solution in progress; --out is written only at the end
     ProgressLine progress("reference solutions");
     for (const double zeta : grid) {
+      throw_if_interrupted();
       solutions.push_back(hertz_reference(zeta));
       progress.update(solutions.size(), grid.size());
     }

@@ -10,6 +10,7 @@
 #include "cli/options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/progress.hpp"
+#include "cli/stop_signals.hpp"
 #include "cli/work_precision_files.hpp"
 #include "reference/work_precision.hpp"
 #include "restitution/errors.hpp"
@@ -31,8 +32,10 @@ int run_work_precision(const WorkPrecisionOptions& o) {
       o.reference.empty() ? default_reference_file() : std::filesystem::path(o.reference);
   std::vector<WorkPrecisionRow> rows;
   {
+    const StopSignals signals;  // Ctrl-C stops at the next point, before any file is written
     ProgressLine progress("work-precision (engine, end, tolerance)");
-    rows = measure_work_precision(read_reference_file(reference), o.repeats, o.engines, progress.callback());
+    rows = measure_work_precision(read_reference_file(reference), o.repeats, o.engines,
+                                  progress.stoppable_callback());
   }
   const WorkPrecisionFiles written = write_work_precision_files(rows, folder, "work_precision");
   if (!written.plot_warning.empty())
