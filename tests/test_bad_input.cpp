@@ -98,11 +98,14 @@ const std::vector<BadInput> kCases = {
      "zeta-min (3) must not exceed zeta-max (2)"},
     {"sweep --zeta-min 0 --zeta-max 2 --points 3 --log --out {dir}/s.csv",
      "logarithmic spacing needs zeta-min > 0"},
-    {"sweep --zeta-min 0 --zeta-max 2 --points 0 --out {dir}/s.csv", "--points must be >= 1, got 0"},
-    {"sweep --zeta-min 0 --zeta-max 2 --points -3 --out {dir}/s.csv", "--points must be >= 1, got -3"},
-    {"sweep --zeta-min 0 --zeta-max 2 --points 2.5 --out {dir}/s.csv", "--points expects a whole number"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 0 --out {dir}/s.csv",
+     "--points: expected a whole number in [1, 10000000], got '0'"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points -3 --out {dir}/s.csv",
+     "--points: expected a whole number in [1, 10000000], got '-3'"},
+    {"sweep --zeta-min 0 --zeta-max 2 --points 2.5 --out {dir}/s.csv",
+     "--points: expected a whole number in [1, 10000000], got '2.5'"},
     {"sweep --zeta-min 0 --zeta-max 2 --points 100000000000 --out {dir}/s.csv",
-     "points must lie in [1, 10000000]"},
+     "--points: expected a whole number in [1, 10000000], got '100000000000'"},
     {"sweep --zeta-min 0 --zeta-max 2 --points 1 --out {dir}/s.csv", "points = 1 needs zeta-min = zeta-max"},
     {"sweep --zeta-min 0 --zeta-max 2 --points 3 --threads 0 --out {dir}/s.csv",
      "--threads must lie in [1, 1024]"},
@@ -180,8 +183,7 @@ TEST(BadInput, EveryCaseIsOneLineNamingTheProblemAndStatusTwo) {
   // when the planner's message did not name the file.
   {
     std::ofstream(folder / "too-fast.toml")
-        << "output = \"" << (folder / "out").string()
-        << "\"\n[[sweep]]\nname = \"fast\"\nbeta = 1e5\nvelocity = [1.0, 1e6]\n";
+        << "output = \"out\"\n[[sweep]]\nname = \"fast\"\nbeta = 1e5\nvelocity = [1.0, 1e6]\n";
   }
   for (const BadInput& c : kCases) {
     const std::string arguments = with_folder(c.arguments, folder.string());

@@ -80,7 +80,13 @@ TEST(JsonWriter, InvalidUtf8IsReplacedNotRefused) {
              "a\xff"
              "b")
       .end_object();
-  EXPECT_NO_THROW(static_cast<void>(nlohmann::json::parse(w.str())));
+  // The invalid byte 0xFF becomes U+FFFD (EF BF BD in UTF-8); the valid text around it stays.
+  EXPECT_EQ(w.str(),
+            "{\"file\":\"a\xEF\xBF\xBD"
+            "b\"}");
+  EXPECT_EQ(nlohmann::json::parse(w.str())["file"].get<std::string>(),
+            "a\xEF\xBF\xBD"
+            "b");
 }
 
 }  // namespace

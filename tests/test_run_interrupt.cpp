@@ -27,8 +27,8 @@ struct Outcome {
   std::string err;
 };
 
-// Runs `restitution run SCENE` in its own process group with RESTITUTION_PYTHON=python; once `ready`
-// exists (or after `delay` when ready is empty) sends SIGINT to the group, as Ctrl-C does.
+// Runs `restitution run SCENE --output DIR/out` in its own process group with RESTITUTION_PYTHON=python; once
+// `ready` exists (or after `delay` when ready is empty) sends SIGINT to the group, as Ctrl-C does.
 Outcome interrupted_run(const fs::path& scene, const fs::path& python, const fs::path& ready,
                         std::chrono::milliseconds delay, const fs::path& err_file) {
   const pid_t child = fork();
@@ -37,7 +37,10 @@ Outcome interrupted_run(const fs::path& scene, const fs::path& python, const fs:
     setenv("RESTITUTION_PYTHON", python.c_str(), 1);
     const int fd = ::open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(fd, STDERR_FILENO);
-    execl(RESTITUTION_EXE, RESTITUTION_EXE, "run", scene.c_str(), static_cast<char*>(nullptr));
+    // The scene's folder/out, given on the command line (a scene's own output stays relative).
+    const std::string out = (scene.parent_path() / "out").string();
+    execl(RESTITUTION_EXE, RESTITUTION_EXE, "run", scene.c_str(), "--output", out.c_str(),
+          static_cast<char*>(nullptr));
     _exit(127);
   }
   setpgid(child, child);  // also here: whichever runs first
@@ -68,7 +71,7 @@ fs::path fake_python(const fs::path& dir, bool hang_on_probe) {
 
 fs::path write_scene(const fs::path& dir, const std::string& body) {
   const fs::path scene = dir / "scene.toml";
-  std::ofstream(scene) << "output = \"" << (dir / "out").string() << "\"\n" << body;
+  std::ofstream(scene) << "output = \"unused\"\n" << body;  // interrupted_run passes --output dir/out
   return scene;
 }
 

@@ -85,9 +85,8 @@ TEST(SceneParser, WrongTypesAndRangesNameTheKey) {
             "test.toml:2: tolerance: expected a value in [1e-11, 0.01]");
   EXPECT_EQ(error_of("output = \"o\"\n[[sweep]]\nzeta = [0.1, -1]\n"),
             "test.toml:3: sweep[0].zeta: expected 0 <= zeta <= 1e+06 (the checked range), got -1");
-  EXPECT_EQ(
-      error_of("output = \"o\"\n[[sweep]]\nzeta = 1\nends = \"middle\"\n"),
-      "test.toml:4: sweep[0].ends: expected \"naive\", \"delayed-recovery\" or \"both\", got \"middle\"");
+  EXPECT_EQ(error_of("output = \"o\"\n[[sweep]]\nzeta = 1\nends = \"middle\"\n"),
+            "test.toml:4: sweep[0].ends: end must be naive, delayed-recovery or both, got 'middle'");
   EXPECT_EQ(error_of("output = \"o\"\n[[sweep]]\nzeta = {from = 0, to = 1, points = 2.5}\n"),
             "test.toml:3: sweep[0].zeta.points: expected a whole number in [1, 1000000]");
   EXPECT_EQ(error_of("output = \"o\"\n[[sweep]]\nzeta = {from = 0, to = 1, points = 3, spacing = \"log\"}\n"),
@@ -192,6 +191,30 @@ TEST(SceneParser, TheDocumentedExampleSceneIsValid) {
   EXPECT_EQ(s.calibrations.size(), 1U);
   EXPECT_EQ(s.dashpots.size(), 1U);
   EXPECT_NO_THROW((void)plan_scene(s));
+}
+
+}  // namespace
+}  // namespace restitution::scene
+
+namespace restitution::scene {
+namespace {
+
+// One vocabulary: the scene takes every method the library names (taylor included) and refuses others in
+// the library's words; the defaults are SolveOptions'.
+TEST(SceneParser, MethodsAndDefaultsAreTheLibrarys) {
+  for (const std::string& name : method_names()) {
+    const Scene s = parse_scene("output = \"o\"\nmethod = \"" + name + "\"\n", "test.toml");
+    EXPECT_EQ(method_name(s.method), name);
+  }
+  const Scene s = parse_scene("output = \"o\"\n", "test.toml");
+  EXPECT_EQ(s.tolerance, SolveOptions{}.tolerance);
+  EXPECT_EQ(s.method, SolveOptions{}.method);
+  try {
+    (void)parse_scene("output = \"o\"\nmethod = \"rk4\"\n", "test.toml");
+    FAIL() << "method rk4 was accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "test.toml:2: method: method must be bdf, adams, auto or taylor, got 'rk4'");
+  }
 }
 
 }  // namespace

@@ -17,13 +17,22 @@ namespace restitution {
 // bdf, adams: CVODE; taylor: the Taylor-series engine (taylor/taylor_engine.hpp); automatic: CVODE,
 // BDF or Adams per regime.
 enum class Method { bdf, adams, automatic, taylor };
+inline constexpr std::array<Method, 4> kMethods{Method::bdf, Method::adams, Method::automatic,
+                                                Method::taylor};
 const char* method_name(Method method);            // "bdf" | "adams" | "auto" | "taylor"
 Method method_from_name(const std::string& name);  // the inverse; throws InvalidInput naming the value
+// Every method's name, in the order of kMethods (the choices of a front end's method option).
+const std::vector<std::string>& method_names();
 
 // The ends of the collision (CollisionEnd, EndSet, PerEnd) are defined in contact_law.hpp, next to the law
 // that decides where they lie. Their names in text:
 const char* end_name(CollisionEnd end);               // "naive" | "delayed-recovery"
 CollisionEnd end_from_name(const std::string& name);  // throws InvalidInput naming the value
+const std::vector<std::string>& end_names();          // "naive", "delayed-recovery"
+// A set of ends by name: an end's name, or "both" (kBothEnds) for EndSet::both().
+inline constexpr const char* kBothEnds = "both";
+EndSet end_set_from_name(const std::string& name);  // throws InvalidInput naming the value
+const std::vector<std::string>& end_set_names();    // end_names() and "both"
 // The end as an identifier, for JSON keys and CSV column prefixes: "naive" | "delayed_recovery".
 const char* end_key(CollisionEnd end);
 

@@ -30,6 +30,16 @@ inline constexpr std::array<LawKind, 4> kLawKinds{LawKind::viscoelastic_hertz, L
 // "viscoelastic-hertz" | "linear-dashpot" | "tsuji-hertz" | "hertz-constant-damping"
 const char* law_name(LawKind kind);
 LawKind law_from_name(const std::string& name);  // the inverse; throws InvalidInput naming the value
+// Every member's name, in the order of kLawKinds (the choices of a front end's law option).
+const std::vector<std::string>& law_names();
+
+// The parameter a member's results are labelled with and taken in: ζ of the natural form, or for the
+// linear dash-pot its damping ratio r (ζ = 2r).
+struct LawParameter {
+  const char* name = "zeta";        // "zeta" | "damping-ratio" (messages, option and column names)
+  double zeta_per_parameter = 1.0;  // ζ = zeta_per_parameter · parameter
+};
+LawParameter law_parameter(LawKind kind);
 
 // The exponents of a member: elastic force ∝ x^a, damping force ∝ x^b x'.
 struct LawExponents {
@@ -43,6 +53,9 @@ LawExponents law_exponents(LawKind kind);
 double speed_exponent(LawKind kind);
 // True where speed_exponent is zero (to rounding).
 bool speed_independent(LawKind kind);
+// 2 sqrt(b+1): for the scale-invariant members (Tsuji, the dash-pot) the largest ζ below which the naive end
+// exists (docs/contact_laws.md).
+double naive_end_critical_zeta(LawKind kind);
 
 // The contracted range of ζ: every ζ in [0, kLargestCheckedZeta] is checked against the reference solutions
 // (docs/accuracy.md). The front ends (CLI, sweeps, scenes, calibration) refuse larger ζ with
@@ -50,6 +63,11 @@ bool speed_independent(LawKind kind);
 inline constexpr double kLargestCheckedZeta = 1e6;
 // Throws InvalidInput naming ζ and the checked range when zeta > kLargestCheckedZeta (or is not finite).
 void require_checked_zeta(double zeta);
+
+// The time scale T = (v^{1-a} m/k)^{1/(1+a)} [s] of ContactLaw::physical (its length scale is v·T [m]):
+// τ_natural · T is the time in seconds, x_natural · v · T the compression in metres.
+double physical_time_scale_s(LawKind kind, double stiffness_N_per_m_a, double effective_mass_kg,
+                             double impact_speed_m_s);
 
 namespace detail {
 // x^e for x > 0. The quarter exponents of the named members are written with sqrt, which is correctly
@@ -163,6 +181,8 @@ class ContactLaw {
   // T = (v^{1-a} m/k)^{1/(1+a)} s and the length scale v·T m. Throws InvalidInput naming a bad argument.
   static ContactLaw physical(LawKind kind, double stiffness_N_per_m_a, double damping_coefficient,
                              double effective_mass_kg, double impact_speed_m_s);
+  // The natural form of a member from its labelled parameter (law_parameter: ζ, or r for the dash-pot).
+  static ContactLaw of_parameter(LawKind kind, double parameter);
   // Viscoelastic Hertz in natural units: x'' + ζ x' sqrt(x) + x^{3/2} = 0, x'(0) = 1.
   static ContactLaw hertz_natural(double zeta);
   // Viscoelastic Hertz in the 2008 paper's scaling (its Eq. 23):
@@ -179,9 +199,9 @@ class ContactLaw {
   [[nodiscard]] LawKind kind() const { return kind_; }
   [[nodiscard]] double zeta() const { return zeta_; }  // ζ of the natural form
   // The parameter results are labelled with: ζ, or the damping ratio r = ζ/2 for the linear dash-pot.
-  [[nodiscard]] double parameter() const { return kind_ == LawKind::linear_dashpot ? 0.5 * zeta_ : zeta_; }
+  [[nodiscard]] double parameter() const { return zeta_ / law_parameter(kind_).zeta_per_parameter; }
   // "zeta" | "damping-ratio": the name of parameter() in messages.
-  [[nodiscard]] const char* parameter_name() const;
+  [[nodiscard]] const char* parameter_name() const { return law_parameter(kind_).name; }
   [[nodiscard]] double damping() const { return damping_; }                    // c_d
   [[nodiscard]] double stiffness() const { return stiffness_; }                // c_s
   [[nodiscard]] double initial_velocity() const { return initial_velocity_; }  // x'(0) in the law's units
@@ -264,9 +284,9 @@ class ContactLaw {
   // For below_critical_zeta: whether the naive end exists at this ζ (ζ < 2 sqrt(b+1): r < 1 for the
   // dash-pot, ζ < sqrt(5) for Tsuji); for always true; for decided_by_solve true (the solve decides).
   [[nodiscard]] bool naive_end_may_exist() const;
-  // The critical ζ of a scale-invariant member, 2 sqrt(b+1): the naive end exists below it (ζ = 2 for the
-  // dash-pot, r = 1; sqrt(5) for Tsuji).
-  [[nodiscard]] double critical_zeta() const { return 2.0 * std::sqrt(b_ + 1.0); }
+  // The critical ζ of a scale-invariant member, naive_end_critical_zeta(kind()): the naive end exists below it
+  // (ζ = 2 for the dash-pot, r = 1; sqrt(5) for Tsuji).
+  [[nodiscard]] double critical_zeta() const { return naive_end_critical_zeta(kind_); }
   // For decided_by_solve: a function of the state that is <= 0 only where the overlap provably never
   // returns to 0 (x > 0, x' <= 0 in the invariant region x' >= -k x^{b+1}, x^{a-2b-1} < ζ²/(4(b+1)),
   // k = ζ/(2(b+1)): docs/contact_laws.md), positive before maximal compression; natural units.

@@ -11,6 +11,8 @@
 // The 2008 paper's Eq. 23 uses the velocity-independent length k^{-2/5} instead of L: its x equals
 // v^{4/5} times the natural x (same τ), which is how ContactLaw::hertz_scaled reports natural units.
 
+#include "restitution/contact_law.hpp"
+
 namespace restitution {
 
 // The Hertz constants of a pair of spheres, in SI units.
@@ -23,6 +25,14 @@ struct HertzConstants {
 // k and the dissipative constant A [s] -> γ and β. Throws InvalidInput naming k or A when not finite and > 0
 // (A = 0 is allowed: elastic spheres).
 HertzConstants hertz_constants(double k, double dissipative_constant_s);
+
+// The Hertz facts of two spheres, each written once (docs/dem.md): the modulus factor (4/3) E* [Pa], the
+// stiffness ρ = (4/3) E* sqrt(R_eff) [N m^-3/2] of F = ρ ξ^{3/2}, a sphere's mass (4/3) π R³ ρ_mass [kg], and
+// β = γ k^{-3/5} [s^{1/5} m^{-1/5}] from the per-mass coefficients γ [s^-1 m^-1/2] and k [s^-2 m^-1/2].
+double hertz_modulus_pa(double effective_modulus_pa);
+double hertz_stiffness(double effective_modulus_pa, double effective_radius_m);
+double sphere_mass_kg(double radius_m, double density_kg_m3);
+double beta_from_gamma(double gamma, double k);
 
 // ζ = β v^{1/5}, β in s^{1/5} m^{-1/5}, v in m/s. Throws InvalidInput naming beta or velocity.
 double zeta_from(double beta, double velocity_m_s);
@@ -37,6 +47,15 @@ struct NaturalScales {
   double length_m = 0.0;
 };
 NaturalScales natural_scales(double k, double velocity_m_s);
+
+// The coefficients of ContactLaw::physical for one pair: F = k ξ^a + γ ξ^b ξ' on the effective mass m.
+struct PhysicalCoefficients {
+  double stiffness = 0.0;          // k [N/m^a]
+  double damping = 0.0;            // γ [N s/m^{1+b}]
+  double effective_mass_kg = 0.0;  // m
+};
+// The natural scales of ContactLaw::physical at impact speed v: T = physical_time_scale_s, L = v T.
+NaturalScales physical_scales(LawKind kind, const PhysicalCoefficients& c, double velocity_m_s);
 
 // The 1999 paper's characteristic velocity g* [m/s]: (g*)^{-1/5} = C1 (3/2) A (ρ/m_eff)^{2/5} = C1 β
 // (C1 in closed form: series::c1_closed_form)

@@ -14,7 +14,7 @@ when the solver cannot deliver the accuracy. Array calls run on all cores withou
 KeyboardInterrupt on Ctrl-C. restitution.fast gives the same eps from the certified table, ~20 ns a value.
 """
 
-import numbers
+import numbers as _numbers
 
 import numpy as _np
 
@@ -28,6 +28,7 @@ __all__ = ["__version__", "eps", "solve", "calibrate", "fit_data", "zeta_of", "M
            "EndResult", "MaxCompression", "SolverStats", "Calibration", "series", "fast"]
 
 _SCALARS = (float, int)
+_TOLERANCE = _core.default_tolerance  # SolveOptions' default, the command line's too
 
 
 def _real_array(name, value):
@@ -55,6 +56,7 @@ def zeta_of(zeta=None, *, beta=None, velocity=None, material=None):
     zeta: float or array-like, >= 0.
     beta [s^(1/5) m^(-1/5)] with velocity [m/s]: zeta = beta v^(1/5), arrays broadcast.
     material (restitution.Material, with its dissipation) with velocity [m/s]: beta = material.beta.
+    Raises ValueError for a zeta outside the checked range 0 <= zeta <= 1e6 (or NaN), as eps() does.
     Returns a float for scalar input, else a float64 array of the broadcast shape.
     """
     given = [zeta is not None, beta is not None, material is not None]
@@ -64,9 +66,9 @@ def zeta_of(zeta=None, *, beta=None, velocity=None, material=None):
         if velocity is not None:
             raise TypeError("velocity goes with beta or material, not with zeta")
         if type(zeta) in _SCALARS:
-            return float(zeta)
+            return _checked_zeta(float(zeta))
         array = _real_array("zeta", zeta)
-        return float(array) if array.ndim == 0 else array
+        return _checked_zeta(float(array)) if array.ndim == 0 else _checked_zetas(array)
     if velocity is None:
         raise TypeError("beta and material need velocity [m/s]")
     if material is not None:
@@ -77,11 +79,42 @@ def zeta_of(zeta=None, *, beta=None, velocity=None, material=None):
         return _core.zeta_from(float(beta), float(velocity))
     b, v = _np.broadcast_arrays(_real_array("beta", beta), _real_array("velocity", velocity))
     zetas = _core.zetas_from(_np.asarray(b, order="C"), _np.asarray(v, order="C"))
-    return float(zetas) if zetas.ndim == 0 else zetas
+    return _checked_zeta(float(zetas)) if zetas.ndim == 0 else _checked_zetas(zetas)
 
 
-def eps(zeta=None, end="delayed-recovery", tolerance=1e-10, method="auto", *, beta=None, velocity=None,
-        material=None):
+_LARGEST_ZETA = _core.largest_checked_zeta
+
+
+def _checked_zeta(zeta):
+    """zeta in the checked range 0 <= zeta <= 1e6, else ValueError in the library's words."""
+    _core.require_checked_zeta(zeta)
+    return zeta
+
+
+def _checked_zetas(zetas):
+    bad = _np.flatnonzero(~((zetas >= 0.0) & (zetas <= _LARGEST_ZETA)))
+    if bad.size:
+        index = _np.unravel_index(bad[0], zetas.shape)
+        try:
+            _core.require_checked_zeta(float(zetas[index]))
+        except ValueError as error:
+            where = index if len(index) > 1 else index[0]
+            raise ValueError(f"{error} (zeta at index {where})") from None
+    return zetas
+
+
+def _law(law, zeta=None, beta=None, material=None):
+    """The law's name, checked; beta and material describe viscoelastic Hertz only."""
+    _text("law", law)
+    if law not in _core.law_names:
+        raise ValueError(f"law must be one of {', '.join(_core.law_names)}, got '{law}'")
+    if law != "viscoelastic-hertz" and (beta is not None or material is not None):
+        raise TypeError(f"beta and material describe law='viscoelastic-hertz'; law='{law}' takes zeta")
+    return law
+
+
+def eps(zeta=None, end="delayed-recovery", tolerance=_TOLERANCE, method="auto", *, beta=None, velocity=None,
+        material=None, law="viscoelastic-hertz"):
     """Coefficient of restitution eps at one end of the collision.
 
     zeta: float or array-like in the checked range 0 <= zeta <= 1e6 (natural units; above it ValueError, as
@@ -92,27 +125,32 @@ def eps(zeta=None, end="delayed-recovery", tolerance=1e-10, method="auto", *, be
         [1e-13, 1e-2] for taylor.
     method: "auto" (CVODE, BDF or Adams per regime), "bdf", "adams" or "taylor" (Taylor series; fastest;
         the naive end for zeta <= 100 only).
+    law: the contact law (docs/contact_laws.md): "viscoelastic-hertz" (default), "tsuji-hertz",
+        "hertz-constant-damping" or "linear-dashpot"; zeta is that law's natural-form parameter in
+        x'' + zeta x^b x' + x^a = 0 (the dash-pot: zeta = 2 r); beta and material are Hertz only.
     Returns a float for scalar input, else a float64 array of the same (broadcast) shape, computed on all
     cores with the GIL released (Ctrl-C -> KeyboardInterrupt).
     Raises ValueError (bad value, empty array; the message names the index), TypeError (wrong type),
     NumericalFailure (accuracy not reached; names the index).
     """
-    if type(zeta) is float and beta is None and material is None and velocity is None:
-        return _core.eps_scalar(zeta, end, tolerance, method)  # fast path; pybind11 checks the types
+    if (type(zeta) is float and beta is None and material is None and velocity is None and type(end) is str
+            and type(method) is str and type(tolerance) is float and law == "viscoelastic-hertz"):
+        return _core.eps_scalar(zeta, end, tolerance, method, law)  # fast path; pybind11 checks the types
+    law = _law(law, zeta, beta, material)
     z = zeta_of(zeta, beta=beta, velocity=velocity, material=material)
     if isinstance(z, float):
-        return _core.eps_scalar(z, _text("end", end), _tolerance(tolerance), _text("method", method))
-    return _core.eps_array(z, _text("end", end), _tolerance(tolerance), _text("method", method))
+        return _core.eps_scalar(z, _text("end", end), _tolerance(tolerance), _text("method", method), law)
+    return _core.eps_array(z, _text("end", end), _tolerance(tolerance), _text("method", method), law)
 
 
 def _tolerance(tolerance):
-    if isinstance(tolerance, bool) or not isinstance(tolerance, numbers.Real):
+    if isinstance(tolerance, bool) or not isinstance(tolerance, _numbers.Real):
         raise TypeError(f"tolerance must be a real number, got {type(tolerance).__name__}")
     return float(tolerance)
 
 
-def solve(zeta=None, end="both", tolerance=1e-10, method="auto", trajectory=False, *, beta=None,
-          velocity=None, material=None):
+def solve(zeta=None, end="both", tolerance=_TOLERANCE, method="auto", trajectory=False, *, beta=None,
+          velocity=None, material=None, law="viscoelastic-hertz"):
     """One collision in full: a CollisionResult with, in natural units,
 
     .naive / .delayed_recovery: EndResult (eps, one_minus_eps, tau, x, velocity, dissipated_energy) or
@@ -120,28 +158,36 @@ def solve(zeta=None, end="both", tolerance=1e-10, method="auto", trajectory=Fals
     .method (the one used), .zeta, .tolerance; with trajectory=True the numpy arrays .tau, .x, .velocity
         (x') and .acceleration (x'') at every internal step and event.
     zeta, beta/velocity or material/velocity as for eps() but scalar only; end "both" (default), "naive"
-    or "delayed-recovery". Raises ValueError, TypeError, NumericalFailure as eps() does.
+    or "delayed-recovery"; law as for eps() (.law names it; .zeta is the damping ratio r for the dash-pot).
+    Raises ValueError, TypeError, NumericalFailure as eps() does.
     """
+    law = _law(law, zeta, beta, material)
+    if not isinstance(trajectory, bool):
+        raise TypeError(f"trajectory must be True or False, got {type(trajectory).__name__}")
     z = zeta_of(zeta, beta=beta, velocity=velocity, material=material)
     if not isinstance(z, float):
         raise TypeError("solve() takes one collision: zeta (or beta, velocity) must be scalars; use eps() for arrays")
-    return _core.solve(z, _text("end", end), _tolerance(tolerance), _text("method", method), bool(trajectory))
+    return _core.solve(z, _text("end", end), _tolerance(tolerance), _text("method", method), bool(trajectory), law)
 
 
-def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=1e-10, method="auto"):
+def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=_TOLERANCE, method="auto", *,
+              law="viscoelastic-hertz"):
     """The damping that gives a measured eps in (0, 1) at the impact speed velocity [m/s].
 
     Returns a Calibration: .zeta (natural units), .beta [s^(1/5) m^(-1/5)], .characteristic_velocity
     (the 1999 paper's g* [m/s]), .dissipative_constant (A [s] for the material's elastic data, else None),
     .eps_at_zeta, .solves. end as for eps(). Raises ValueError for eps outside (0, 1) or below eps(zeta = 1e6) (the checked range).
+    law as for eps(): for another law than viscoelastic Hertz .zeta (and .parameter, the dash-pot's r) is
+    the result and .beta, .characteristic_velocity are 0 (no material).
     """
+    law = _law(law, material=material)
     if material is not None and not isinstance(material, Material):
         raise TypeError(f"material must be a restitution.Material, got {type(material).__name__}")
     for name, value in (("eps", eps), ("velocity", velocity)):
-        if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        if isinstance(value, bool) or not isinstance(value, _numbers.Real):
             raise TypeError(f"{name} must be a real number, got {type(value).__name__}")
     return _core.calibrate(float(eps), float(velocity), _text("end", end), _tolerance(tolerance),
-                           _text("method", method), material)
+                           _text("method", method), material, law)
 
 
 def fit_data(v, eps, sigma=None, *, laws=None, speed_independent_end="delayed-recovery", material=None,

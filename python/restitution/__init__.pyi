@@ -12,6 +12,7 @@ __version__: str  # e.g. "0.3.0", the same as `restitution --version`
 
 End = Literal["naive", "delayed-recovery"]
 Method = Literal["auto", "bdf", "adams", "taylor"]
+Law = Literal["viscoelastic-hertz", "tsuji-hertz", "hertz-constant-damping", "linear-dashpot"]
 ArrayLike = Union[npt.ArrayLike, Sequence[float]]
 FloatArray = npt.NDArray[np.float64]
 
@@ -55,6 +56,8 @@ class SolverStats:
 class CollisionResult:
     @property
     def zeta(self) -> float: ...
+    @property
+    def law(self) -> str: ...
     @property
     def tolerance(self) -> float: ...
     @property
@@ -119,7 +122,11 @@ class Material:
 
 class Calibration:
     @property
+    def law(self) -> str: ...
+    @property
     def zeta(self) -> float: ...
+    @property
+    def parameter(self) -> float: ...
     @property
     def beta(self) -> float: ...  # s^(1/5) m^(-1/5)
     @property
@@ -144,7 +151,7 @@ def zeta_of(
 @overload
 def eps(
     zeta: float, end: End = ..., tolerance: float = ..., method: Method = ..., *, beta: None = ...,
-    velocity: None = ..., material: None = ...
+    velocity: None = ..., material: None = ..., law: Law = ...
 ) -> float: ...
 @overload
 def eps(
@@ -156,6 +163,7 @@ def eps(
     beta: Optional[ArrayLike] = ...,
     velocity: Optional[ArrayLike] = ...,  # m/s
     material: Optional[Material] = ...,
+    law: Law = ...,
 ) -> Union[float, FloatArray]: ...
 def solve(
     zeta: Optional[float] = ...,
@@ -167,6 +175,7 @@ def solve(
     beta: Optional[float] = ...,
     velocity: Optional[float] = ...,  # m/s
     material: Optional[Material] = ...,
+    law: Law = ...,
 ) -> CollisionResult: ...
 def calibrate(
     eps: float,
@@ -175,6 +184,8 @@ def calibrate(
     material: Optional[Material] = ...,
     tolerance: float = ...,
     method: Method = ...,
+    *,
+    law: Law = ...,
 ) -> Calibration: ...
 
 def fit_data(

@@ -7,6 +7,7 @@
 
 #include "bindings.hpp"
 #include "restitution/calibration.hpp"
+#include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 #include "solve_options.hpp"
 
@@ -18,7 +19,12 @@ void bind_calibration(py::module_& m) {
   py::class_<Calibration>(m, "Calibration", "The damping that gives a measured eps at an impact speed.")
       .def_readonly("zeta", &Calibration::zeta,
                     "zeta with eps(zeta) = eps at the requested end (natural units).")
-      .def_readonly("beta", &Calibration::beta, "beta = zeta / v^(1/5) [s^(1/5) m^(-1/5)].")
+      .def_property_readonly(
+          "law", [](const Calibration& c) { return law_name(c.law); }, "The contact law's name.")
+      .def_readonly("parameter", &Calibration::parameter,
+                    "The law's parameter: zeta, or the damping ratio r = zeta/2 for the linear dash-pot.")
+      .def_readonly("beta", &Calibration::beta,
+                    "beta = zeta / v^(1/5) [s^(1/5) m^(-1/5)] (viscoelastic Hertz; 0 for other laws).")
       .def_readonly("eps_at_zeta", &Calibration::eps_at_zeta, "eps re-solved at zeta, for the record.")
       .def_readonly("characteristic_velocity", &Calibration::characteristic_velocity_m_s,
                     "The 1999 paper's g* = (C1 beta)^(-5) [m/s].")
@@ -35,8 +41,14 @@ void bind_calibration(py::module_& m) {
   m.def(
       "calibrate",
       [](double eps, double velocity, const std::string& end, double tolerance, const std::string& method,
-         const std::optional<Material>& material) {
+         const std::optional<Material>& material, const std::string& law) {
         CalibrationRequest request;
+        request.law = law_from_name(law);
+        if (material && request.law != LawKind::viscoelastic_hertz) {
+          throw InvalidInput(fmt::format(
+              "material gives the dissipative constant A of law='viscoelastic-hertz' only, not law='{}'",
+              law));
+        }
         request.eps = eps;
         request.velocity_m_s = velocity;
         const SolveOptions options = solve_options(end, tolerance, method, false);  // checks all three
@@ -49,7 +61,7 @@ void bind_calibration(py::module_& m) {
         return calibrate(request, solver);
       },
       py::arg("eps"), py::arg("velocity"), py::arg("end"), py::arg("tolerance"), py::arg("method"),
-      py::arg("material"), "Calibration for one measured eps at one velocity [m/s].");
+      py::arg("material"), py::arg("law"), "Calibration for one measured eps at one velocity [m/s].");
 }
 
 }  // namespace restitution::python

@@ -13,7 +13,6 @@
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
 #include "solve_options.hpp"
-#include "taylor/taylor_engine.hpp"
 
 namespace py = pybind11;
 
@@ -29,45 +28,41 @@ CollisionSolver& thread_solver() {
   return solver;
 }
 
-CollisionResult solve_one(double zeta, const SolveOptions& options) {
-  const ContactLaw law = ContactLaw::hertz_natural(zeta);
-  require_checked_zeta(zeta);  // the same contract as the command line
-  const py::gil_scoped_release release;
-  return thread_solver().solve(law, options);
-}
-
-double eps_scalar(double zeta, const std::string& end, double tolerance, const std::string& method) {
-  const SolveOptions options = solve_options(end, tolerance, method, false);
-  return end_of(solve_one(zeta, options), end_from_name(end)).eps;
-}
-
-// The refusals that depend on ζ, checked before the sweep so that the message can name the index (the
-// sweep reports them without it).
-void check_point(double zeta, const SolveOptions& options) {
-  ContactLaw::hertz_natural(zeta);
+// The law's natural form at ζ, in the checked range (the same contract as the command line).
+ContactLaw natural_law(const std::string& law, double zeta) {
+  const ContactLaw natural = ContactLaw::natural(law_from_name(law), zeta);
   require_checked_zeta(zeta);
-  if (options.method == Method::taylor && options.ends.contains(CollisionEnd::naive) &&
-      zeta > kTaylorNaiveZetaMax) {
-    throw InvalidInput(
-        fmt::format("method taylor computes the naive end only for zeta <= {:g}, got zeta={}: use "
-                    "method='auto' or 'bdf'",
-                    kTaylorNaiveZetaMax, zeta));
-  }
+  return natural;
+}
+
+CollisionResult solve_one(const std::string& law, double zeta, const SolveOptions& options) {
+  const ContactLaw natural = natural_law(law, zeta);
+  const py::gil_scoped_release release;
+  return thread_solver().solve(natural, options);
+}
+
+double eps_scalar(double zeta, const std::string& end, double tolerance, const std::string& method,
+                  const std::string& law) {
+  const SolveOptions options = solve_options(end, tolerance, method, false);
+  return end_of(solve_one(law, zeta, options), end_from_name(end)).eps;
 }
 
 DoubleArray eps_array(const DoubleArray& zeta, const std::string& end, double tolerance,
-                      const std::string& method) {
+                      const std::string& method, const std::string& law) {
   const SolveOptions options = solve_options(end, tolerance, method, false);
+  const LawKind kind = law_from_name(law);
   const CollisionEnd which = end_from_name(end);
   if (zeta.size() == 0) throw InvalidInput("zeta is an empty array: give at least one value");
   const double* in = zeta.data();
-  check_elements(zeta, "zeta", [in, &options](std::size_t i) { check_point(in[i], options); });
+  // The refusals that depend on ζ, checked before the sweep so that the message can name the index.
+  check_elements(zeta, "zeta",
+                 [in, &options, &law](std::size_t i) { check_solvable(natural_law(law, in[i]), options); });
   const std::vector<double> zetas(in, in + zeta.size());
   DoubleArray eps(std::vector<py::ssize_t>(zeta.shape(), zeta.shape() + zeta.ndim()));
   double* out = eps.mutable_data();
-  const auto failure = parallel_solve(zetas, options, [out, which](std::size_t i, const CollisionResult& r) {
-    out[i] = end_of(r, which).eps;
-  });
+  const auto failure = parallel_solve(
+      kind, zetas, options,
+      [out, which](std::size_t i, const CollisionResult& r) { out[i] = end_of(r, which).eps; });
   if (failure) {
     throw NumericalFailure(
         fmt::format("{} (zeta at {})", failure->message, index_text(failure->index, zeta)));
@@ -128,7 +123,11 @@ void bind_result_types(py::module_& m) {
   py::class_<CollisionResult>(m, "CollisionResult",
                               "One collision: both ends (or the one asked for), the maximal compression, the "
                               "solver's statistics and, if asked for, the trajectory. Natural units.")
-      .def_readonly("zeta", &CollisionResult::parameter, "zeta = beta v^(1/5) (natural units).")
+      .def_readonly("zeta", &CollisionResult::parameter,
+                    "The law's parameter: zeta = beta v^(1/5) (natural units), or the damping ratio r for "
+                    "the linear dash-pot.")
+      .def_property_readonly(
+          "law", [](const CollisionResult& r) { return law_name(r.law); }, "The contact law's name.")
       .def_readonly("tolerance", &CollisionResult::tolerance, "Requested accuracy of eps.")
       .def_property_readonly(
           "method", [](const CollisionResult& r) { return method_name(r.method); },
@@ -172,22 +171,28 @@ void bind_result_types(py::module_& m) {
 void bind_collision(py::module_& m) {
   bind_result_types(m);
   m.def("eps_scalar", &eps_scalar, py::arg("zeta"), py::arg("end"), py::arg("tolerance"), py::arg("method"),
-        "eps at one zeta (natural units), end naive or delayed-recovery.");
+        py::arg("law"), "eps at one zeta (natural units), end naive or delayed-recovery.");
   m.def("eps_array", &eps_array, py::arg("zeta"), py::arg("end"), py::arg("tolerance"), py::arg("method"),
-        "eps at every zeta of an array, on all cores with the GIL released; same shape out.");
+        py::arg("law"), "eps at every zeta of an array, on all cores with the GIL released; same shape out.");
+  m.attr("law_names") = law_names();
+  m.attr("default_tolerance") = SolveOptions{}.tolerance;
+  m.attr("largest_checked_zeta") = kLargestCheckedZeta;
+  m.def("require_checked_zeta", &require_checked_zeta, py::arg("zeta"),
+        "ValueError unless 0 <= zeta <= 1e6 (the checked range).");
   m.def("zeta_from", &zeta_from, py::arg("beta"), py::arg("velocity"),
         "zeta = beta v^(1/5); beta in s^(1/5) m^(-1/5), velocity in m/s.");
   m.def("zetas_from", &zetas_from, py::arg("beta"), py::arg("velocity"),
         "zeta = beta v^(1/5) elementwise for two arrays of the same shape.");
   m.def(
       "solve",
-      [](double zeta, const std::string& end, double tolerance, const std::string& method, bool trajectory) {
+      [](double zeta, const std::string& end, double tolerance, const std::string& method, bool trajectory,
+         const std::string& law) {
         SolveOptions options = solve_options(end, tolerance, method, true);
         options.keep_trajectory = trajectory;
-        return solve_one(zeta, options);
+        return solve_one(law, zeta, options);
       },
       py::arg("zeta"), py::arg("end"), py::arg("tolerance"), py::arg("method"), py::arg("trajectory"),
-      "One collision at zeta (natural units); end naive, delayed-recovery or both.");
+      py::arg("law"), "One collision at zeta (natural units); end naive, delayed-recovery or both.");
 }
 
 }  // namespace restitution::python

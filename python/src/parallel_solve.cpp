@@ -11,7 +11,7 @@
 namespace restitution::python {
 
 std::optional<PointFailure> parallel_solve(
-    const std::vector<double>& zetas, const SolveOptions& options,
+    LawKind law, const std::vector<double>& zetas, const SolveOptions& options,
     const std::function<void(std::size_t index, const CollisionResult& result)>& store) {
   std::atomic<bool> stop{false};
   std::optional<PointFailure> failure;  // written under the sweep's callback serialization
@@ -30,7 +30,7 @@ std::optional<PointFailure> parallel_solve(
     const pybind11::gil_scoped_release release;
     // The sweep runs beside this thread so that this one can poll for signals, which Python delivers to
     // the main thread only and only with the GIL held.
-    auto sweep = std::async(std::launch::async, [&] { return run_sweep(zetas, options, control); });
+    auto sweep = std::async(std::launch::async, [&] { return run_sweep(zetas, options, control, law); });
     while (sweep.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
       if (interrupted) continue;
       const pybind11::gil_scoped_acquire acquire;

@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
 #include "damping_check/check.hpp"
+#include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -27,7 +28,7 @@ struct DampingCheckOptions {
   double velocity = 1.0;  // reference speed of the speed-dependent recipes [m/s]
   double velocity_min = 0.1, velocity_max = 10.0;
   int points = 5;
-  double tolerance = 1e-10;
+  double tolerance = SolveOptions{}.tolerance;
   bool map = false;
   bool json = false;
 };
@@ -171,7 +172,7 @@ void add_damping_check_command(CLI::App& app, Action& chosen) {
       ->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")
       ->capture_default_str();
-  cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
+  cmd->add_flag("--json", o->json, "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, &chosen] { chosen = [o] { return run(*o); }; });
 }
 

@@ -13,6 +13,7 @@
 #include "cli/json_writer.hpp"
 #include "cli/material_options.hpp"
 #include "dem/lines_check.hpp"
+#include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 
@@ -25,7 +26,7 @@ struct DemOptions {
   std::optional<double> eps, velocity, dissipative_constant;
   std::string end = "delayed-recovery";
   std::vector<double> speeds;
-  double tolerance = 1e-10;
+  double tolerance = SolveOptions{}.tolerance;
   double friction = 0.0;  // Coulomb mu of the tangential model [1]
   bool json = false;
   std::string from_fit;  // fit-data --output FILE: A (and the end) from a fit, with its uncertainty
@@ -118,20 +119,20 @@ void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optio
   for (const auto& n : r.deck.notes) fmt::print("{} {}\n", c, n);
   for (const auto& line : r.deck.lines) fmt::print("{}\n", line);
   fmt::print("{} eps these lines give this pair ({} end):\n", c, end_name(r.deck.end));
-  for (const auto& e : r.eps) fmt::print("{}   v = {:<10.6g} m/s  eps = {:.10f}\n", c, e.velocity_m_s, e.eps);
+  for (const auto& e : r.eps) fmt::print("{}   v = {:<10.6g} m/s  eps = {:.10g}\n", c, e.velocity_m_s, e.eps);
   fmt::print("{} other sizes of this material (radii scaled, same density) at v = {:g} m/s:\n", c,
              r.reference_velocity_m_s);
   for (const auto& s : r.sizes) {
-    fmt::print("{}   radii x{:<4g} eps = {:.10f}, the law gives {:.10f}\n", c, s.radius_factor, s.eps_lines,
+    fmt::print("{}   radii x{:<4g} eps = {:.10g}, the law gives {:.10g}\n", c, s.radius_factor, s.eps_lines,
                s.eps_law);
   }
   if (r.yade) {
     fmt::print(
-        "{} YADE's own conversion of the true (en = {:.10f}, vn = {:g} m/s) gives A = {:.10g} s ({:+.3g} "
+        "{} YADE's own conversion of the true (en = {:.10g}, vn = {:g} m/s) gives A = {:.10g} s ({:+.3g} "
         "%),\n",
         c, r.yade->true_eps, r.reference_velocity_m_s, r.yade->dissipative_constant_s,
         100.0 * (r.yade->dissipative_constant_s / r.dissipative_constant_s - 1.0));
-    fmt::print("{} which makes eps(vn) = {:.10f}; the en above instead makes YADE recover the exact A\n", c,
+    fmt::print("{} which makes eps(vn) = {:.10g}; the en above instead makes YADE recover the exact A\n", c,
                r.yade->eps_at_vn);
   }
   if (from_fit)
@@ -151,7 +152,8 @@ void add_dem_command(CLI::App& app, Action& chosen) {
   add_material_options(*cmd, o->material);
   cmd->add_option("--eps", o->eps, "measured coefficient of restitution in (0, 1): calibrate A first");
   cmd->add_option("--velocity", o->velocity,
-                  "impact speed in m/s of --eps (also YADE's vn and the reference speed; default 1)");
+                  "impact speed in m/s at which --eps was measured (required with --eps; also YADE's vn and the "
+                  "reference speed, 1 m/s with --dissipative-constant)");
   cmd->add_option("--dissipative-constant", o->dissipative_constant, "the dissipative constant A in s");
   cmd->add_option(
       "--from-fit", o->from_fit,
@@ -159,7 +161,7 @@ void add_dem_command(CLI::App& app, Action& chosen) {
       "(at --end if given, else the lowest AIC) with the uncertainty it carries over");
   cmd->add_option("--end", o->end,
                   "end of the collision: naive (no clamp) or delayed-recovery (force clamped)")
-      ->check(CLI::IsMember({"naive", "delayed-recovery"}))
+      ->check(CLI::IsMember(end_names()))
       ->capture_default_str();
   cmd->add_option("--speeds", o->speeds, "impact speeds in m/s to report eps at (default v/10, v, 10 v)");
   cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")

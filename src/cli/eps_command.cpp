@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <optional>
+#include <string_view>
 
 #include "cli/build_json.hpp"
 #include "cli/commands.hpp"
@@ -17,7 +18,7 @@ namespace {
 
 struct EpsOptions {
   std::optional<double> zeta, beta, velocity, damping_ratio;
-  std::string law = "viscoelastic-hertz";
+  std::string law = law_name(LawKind::viscoelastic_hertz);
   SolverArguments solver;
   bool json = false;
 };
@@ -29,23 +30,29 @@ ContactLaw law_from(const EpsOptions& o) {
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("--law: {}", e.what()));
   }
+  // A law labelled by another parameter than ζ (the dash-pot's damping ratio) also takes it by name.
+  const char* parameter = law_parameter(kind).name;
+  const bool takes_ratio = std::string_view(parameter) == "damping-ratio";
   if (kind != LawKind::viscoelastic_hertz && (o.beta || o.velocity)) {
     throw InvalidInput(
         fmt::format("--beta and --velocity belong to --law viscoelastic-hertz; --law {} takes {}", o.law,
-                    kind == LawKind::linear_dashpot ? "--damping-ratio or --zeta" : "--zeta"));
+                    takes_ratio ? "--damping-ratio or --zeta" : "--zeta"));
   }
-  if (o.damping_ratio && kind != LawKind::linear_dashpot) {
-    throw InvalidInput("--damping-ratio belongs to --law linear-dashpot");
+  if (o.damping_ratio && !takes_ratio) {
+    throw InvalidInput(
+        fmt::format("--damping-ratio belongs to --law linear-dashpot; --law {} takes --zeta", o.law));
   }
-  if (kind == LawKind::linear_dashpot) {
-    if (o.zeta && o.damping_ratio) throw InvalidInput("give either --zeta or --damping-ratio, not both");
-    if (o.damping_ratio) return ContactLaw::linear_dashpot(*o.damping_ratio);
-    if (!o.zeta) throw InvalidInput("--law linear-dashpot needs --damping-ratio (or --zeta = 2 r)");
+  if (o.damping_ratio) {
+    if (o.zeta) throw InvalidInput("give either --zeta or --damping-ratio, not both");
+    return ContactLaw::of_parameter(kind, *o.damping_ratio);
+  }
+  if (takes_ratio && !o.zeta) {
+    throw InvalidInput(fmt::format("--law {} needs --damping-ratio (or --zeta = 2 r)", o.law));
   }
   if (o.zeta) {
     if (o.beta || o.velocity) throw InvalidInput("give either --zeta or --beta with --velocity, not both");
     require_checked_zeta(*o.zeta);
-    return ContactLaw::natural(kind, *o.zeta);
+    return ContactLaw::natural(kind, *o.zeta + 0.0);  // + 0.0: -0 is printed as 0
   }
   if (o.beta && o.velocity) {
     const ContactLaw law = ContactLaw::hertz_scaled(*o.beta, *o.velocity);
@@ -57,10 +64,8 @@ ContactLaw law_from(const EpsOptions& o) {
 }
 
 void print_table(const CollisionResult& r) {
-  const bool dashpot = r.law == LawKind::linear_dashpot;
   fmt::print("{} collision, {} = {}, tolerance {:g} (relative to min(eps, 1-eps)), method {}\n",
-             law_name(r.law), dashpot ? "damping ratio r" : "zeta", r.parameter, r.tolerance,
-             method_name(r.method));
+             law_name(r.law), law_parameter(r.law).name, r.parameter, r.tolerance, method_name(r.method));
   if (r.speed_independent) fmt::print("eps does not depend on the impact speed for this law\n");
   fmt::print("times and lengths in natural units (x'(0) = 1)\n");
   fmt::print("  maximal compression   tau = {:.12g}   x = {:.12g}\n", r.max_compression.tau,
@@ -106,10 +111,7 @@ void add_eps_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--beta", o->beta,
                   "beta >= 0 in s^{1/5} m^{-1/5} (with --velocity: the 2008 paper's Eq. 23)");
   cmd->add_option("--velocity", o->velocity, "impact speed v > 0 (scaled as in the 2008 paper's Eq. 23)");
-  cmd->add_option("--law", o->law,
-                  "contact law: viscoelastic-hertz, tsuji-hertz, hertz-constant-damping or linear-dashpot "
-                  "(docs/contact_laws.md)")
-      ->default_str("viscoelastic-hertz");
+  add_law_option(*cmd, o->law);
   cmd->add_option("--damping-ratio", o->damping_ratio,
                   "damping ratio r > 0 of the linear dash-pot x'' + 2r x' + x = 0");
   add_solver_options(*cmd, o->solver);

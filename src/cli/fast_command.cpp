@@ -3,9 +3,11 @@
 #include <fmt/core.h>
 
 #include <filesystem>
+#include <limits>
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/options.hpp"
 #include "cli/output_files.hpp"
 #include "fast/c_header.hpp"
 #include "fast_study/table_generator.hpp"
@@ -41,7 +43,8 @@ void add_fast_table_command(CLI::App& app, Action& chosen) {
       "fast-table",
       "regenerate the fast eps(zeta) tables from the __float128 reference engine (about 2 minutes)");
   cmd->add_option("--out", o->out, "header to write (the repository keeps src/fast/fast_table.h)")
-      ->required();
+      ->required()
+      ->check(non_empty_path());
   cmd->add_option("--degree", o->settings.degree, "polynomial degree per interval")->capture_default_str();
   cmd->add_option("--per-unit", o->settings.per_unit, "intervals per unit of ln zeta")->capture_default_str();
   cmd->add_option("--s-lo", o->settings.s_lo, "ln zeta where the tables start")->capture_default_str();
@@ -52,9 +55,13 @@ void add_fast_table_command(CLI::App& app, Action& chosen) {
       ->capture_default_str();
   cmd->add_option("--s-hi-delayed", o->settings.s_hi_delayed, "ln zeta where the delayed-recovery table ends")
       ->capture_default_str();
-  cmd->add_option("--checks", o->settings.checks_per_interval, "random check points per interval")
-      ->capture_default_str();
-  cmd->add_option("--seed", o->settings.seed, "seed of the check points")->capture_default_str();
+  cmd->add_option("--checks", o->settings.checks_per_interval,
+                  fmt::format("random check points per interval, in [1, {}]", fast::kMaxChecksPerInterval))
+      ->capture_default_str()
+      ->check(whole_number_in(1, fast::kMaxChecksPerInterval));
+  cmd->add_option("--seed", o->settings.seed, "seed of the check points, an integer >= 0")
+      ->capture_default_str()
+      ->check(whole_number_in(0, std::numeric_limits<long long>::max()));
   cmd->callback([o, &chosen] { chosen = [o] { return run_fast_table(*o); }; });
 }
 
@@ -64,7 +71,7 @@ void add_export_command(CLI::App& app, Action& chosen) {
   cmd->require_subcommand(1);
   CLI::App* header = cmd->add_subcommand(
       "c-header", "one self-contained C99 header (also C++): eps, 1 - eps and the inverse for both ends");
-  header->add_option("--out", *out, "header file to write")->required();
+  header->add_option("--out", *out, "header file to write")->required()->check(non_empty_path());
   header->callback([out, &chosen] {
     chosen = [out] {
       write_text(*out, fast::c_header());

@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/progress.hpp"
+#include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -20,7 +21,7 @@ struct FitOptions {
   double zeta_min = 0.0;
   double zeta_max = 0.0;
   long long points = 9;  // signed and wide: a huge or negative count is reported, not wrapped
-  double tolerance = 1e-10;
+  double tolerance = SolveOptions{}.tolerance;
   bool json = false;
 };
 

@@ -1,6 +1,10 @@
 #pragma once
 // Option vocabulary shared by the subcommands: names on the command line <-> library enums.
+#include <fmt/core.h>
+
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdlib>
 #include <string>
 
 #include "restitution/collision_solver.hpp"
@@ -8,35 +12,58 @@
 namespace restitution::cli {
 
 // --end, --tolerance, --method as given on the command line; resolved by the functions below.
+// Defaults: SolveOptions' (both ends, its tolerance, its method).
 struct SolverArguments {
-  std::string end = "both";
-  double tolerance = 1e-10;
-  std::string method = "auto";
+  std::string end = kBothEnds;
+  double tolerance = SolveOptions{}.tolerance;
+  std::string method = method_name(SolveOptions{}.method);
 };
-
-inline EndSet end_selection(const std::string& end) {
-  return end == "both" ? EndSet::both() : EndSet{end_from_name(end)};
-}
-
-inline Method method_from(const std::string& name) {
-  if (name == "bdf") return Method::bdf;
-  if (name == "adams") return Method::adams;
-  if (name == "taylor") return Method::taylor;
-  return Method::automatic;
-}
 
 inline SolveOptions solve_options(const SolverArguments& a) {
   SolveOptions options;
-  options.ends = end_selection(a.end);
+  options.ends = end_set_from_name(a.end);
   options.tolerance = a.tolerance;
-  options.method = method_from(a.method);
+  options.method = method_from_name(a.method);
   return options;
+}
+
+// An --out/--output value: never empty (an empty path would silently mean "here" or be ignored).
+inline CLI::Validator non_empty_path() {
+  return {[](const std::string& value) {
+            return value.empty() ? std::string("an empty path: give a file or folder name") : std::string();
+          },
+          "PATH"};
+}
+
+// A count option: a whole number in [lo, hi], every bound documented; the value as typed in the message
+// (a number beyond long long is not silently clamped).
+inline CLI::Validator whole_number_in(long long lo, long long hi) {
+  return {[lo, hi](const std::string& value) {
+            errno = 0;
+            char* end = nullptr;
+            const long long n = std::strtoll(value.c_str(), &end, 10);
+            const bool whole = !value.empty() && *end == '\0' && errno != ERANGE;
+            return whole && n >= lo && n <= hi
+                       ? std::string()
+                       : fmt::format("expected a whole number in [{}, {}], got '{}'", lo, hi, value);
+          },
+          fmt::format("in [{}, {}]", lo, hi)};
+}
+
+// --law NAME, one of law_names() (the family of docs/contact_laws.md).
+inline void add_law_option(CLI::App& command, std::string& law) {
+  command
+      .add_option("--law", law,
+                  "contact law: viscoelastic-hertz, tsuji-hertz, hertz-constant-damping or linear-dashpot "
+                  "(docs/contact_laws.md)")
+      ->check(CLI::IsMember(law_names()))
+      ->capture_default_str();
 }
 
 inline void add_solver_options(CLI::App& command, SolverArguments& a) {
   command
       .add_option("--end", a.end, "end of the collision: naive (x = 0), delayed-recovery (force = 0) or both")
-      ->check(CLI::IsMember({"naive", "delayed-recovery", "both"}))
+      ->check(CLI::IsMember(end_set_names()))
       ->capture_default_str();
   command
       .add_option(
@@ -49,7 +76,7 @@ inline void add_solver_options(CLI::App& command, SolverArguments& a) {
                   "integration method: bdf, adams (the naive end only for zeta <= 2000: its tail is stiff), "
                   "auto (CVODE, chosen per regime) or taylor (Taylor series: about 40x faster than auto, "
                   "docs/accuracy.md; the naive end only for zeta <= 100)")
-      ->check(CLI::IsMember({"bdf", "adams", "auto", "taylor"}))
+      ->check(CLI::IsMember(method_names()))
       ->capture_default_str();
 }
 

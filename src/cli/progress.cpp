@@ -1,5 +1,7 @@
 #include "cli/progress.hpp"
 
+#include "cli/stop_signals.hpp"
+
 #include <unistd.h>
 
 #include <utility>
@@ -38,6 +40,13 @@ void ProgressLine::update(std::size_t done, std::size_t total) {
 
 std::function<void(std::size_t, std::size_t)> ProgressLine::callback() {
   return [this](std::size_t done, std::size_t total) { update(done, total); };
+}
+
+std::function<void(std::size_t, std::size_t)> ProgressLine::stoppable_callback() {
+  return [this](std::size_t done, std::size_t total) {
+    throw_if_interrupted();
+    update(done, total);
+  };
 }
 
 }  // namespace restitution::cli

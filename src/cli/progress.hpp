@@ -23,6 +23,9 @@ class ProgressLine {
   void update(std::size_t done, std::size_t total);
   // update() as a callback for the library (the line must outlive it).
   [[nodiscard]] std::function<void(std::size_t, std::size_t)> callback();
+  // callback() that first throws Interrupted once SIGINT/SIGTERM arrived (with a StopSignals alive): a
+  // command that writes its files only at the end stops at the next point, saying so.
+  [[nodiscard]] std::function<void(std::size_t, std::size_t)> stoppable_callback();
   [[nodiscard]] bool enabled() const { return enabled_; }
 
  private:

@@ -7,8 +7,10 @@
 #include <optional>
 
 #include "cli/commands.hpp"
+#include "cli/options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/progress.hpp"
+#include "cli/stop_signals.hpp"
 #include "reference/reference_solution.hpp"
 #include "restitution/errors.hpp"
 
@@ -27,6 +29,9 @@ std::string digits(__float128 value) {
 }
 
 int run_reference(const ReferenceOptions& o) {
+  if (o.zeta && !o.out.empty()) {
+    throw InvalidInput("give --zeta Z (printed) or --out FILE (the whole grid), not both");
+  }
   if (o.zeta) {
     require_checked_zeta(*o.zeta);
     const ReferenceSolution s = hertz_reference(*o.zeta);
@@ -46,8 +51,11 @@ int run_reference(const ReferenceOptions& o) {
   std::vector<ReferenceSolution> solutions;
   {
     const std::vector<double> grid = reference_zeta_grid();
+    const StopSignals
+        signals;  // Ctrl-C stops after the solution in progress; --out is written only at the end
     ProgressLine progress("reference solutions");
     for (const double zeta : grid) {
+      throw_if_interrupted();
       solutions.push_back(hertz_reference(zeta));
       progress.update(solutions.size(), grid.size());
     }
@@ -64,7 +72,9 @@ void add_reference_command(CLI::App& app, Action& chosen) {
   auto o = std::make_shared<ReferenceOptions>();
   CLI::App* cmd = app.add_subcommand(
       "reference", "high-precision reference solutions (Taylor method in __float128, independent of CVODE)");
-  cmd->add_option("--out", o->out, "CSV file to write (the repository keeps data/reference_solutions.csv)");
+  cmd->add_option("--out", o->out,
+                  "CSV file to write for the whole grid (the repository keeps data/reference_solutions.csv)")
+      ->check(non_empty_path());
   cmd->add_option("--zeta", o->zeta, "print the reference for one zeta >= 0 instead");
   cmd->callback([o, &chosen] { chosen = [o] { return run_reference(*o); }; });
 }

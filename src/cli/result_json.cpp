@@ -14,8 +14,16 @@ void write_end(JsonWriter& json, const char* name, const EndResult& end) {
 
 }  // namespace
 
+std::string parameter_key(LawKind law) {
+  std::string key = law_parameter(law).name;
+  for (char& c : key) {
+    if (c == '-') c = '_';
+  }
+  return key;
+}
+
 void write_collision_fields(JsonWriter& json, const CollisionResult& result) {
-  json.field(result.law == LawKind::linear_dashpot ? "damping_ratio" : "zeta", result.parameter);
+  json.field(parameter_key(result.law), result.parameter);
   json.field("law", law_name(result.law));
   json.field("speed_independent", result.speed_independent);
   json.field("tolerance", result.tolerance);

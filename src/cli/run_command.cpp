@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "cli/commands.hpp"
+#include "cli/options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "cli/resource_root.hpp"
@@ -83,7 +84,10 @@ void add_run_command(CLI::App& app, Action& chosen) {
   CLI::App* cmd =
       app.add_subcommand("run", "run a scene file: tables, plots and a report (default: the 2008 paper)");
   cmd->add_option("scene", o->scene, "scene file (TOML); default scenes/default.toml");
-  cmd->add_option("--output,--out", o->output, "output folder (default: the scene's `output`)");
+  cmd->add_option("--output,--out", o->output,
+                  "output folder, any path (default: the scene's `output`, which must stay under the working "
+                  "directory)")
+      ->check(non_empty_path());
   cmd->add_flag(
       "--quick", o->quick,
       fmt::format("small settings for CI: at most {} points per range, tolerance >= 1e-8", kQuickPoints));

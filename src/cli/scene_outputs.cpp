@@ -10,6 +10,7 @@
 #include "cli/fit_data_report.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/output_files.hpp"
+#include "cli/result_json.hpp"
 #include "cli/scene_damping.hpp"
 #include "cli/scene_dem.hpp"
 #include "cli/scene_fit_section.hpp"
@@ -215,6 +216,10 @@ class SceneWriter {
     if (s.velocity_m_s.empty()) {
       what = fmt::format("ε at the {} end for {} values of ζ from {} to {}", ends, t.rows.size(),
                          g(s.zeta.front()), g(s.zeta.back()));
+      if (s.law != LawKind::viscoelastic_hertz) {
+        what += fmt::format(" (law {}: x'' + ζ x^{} x' + x^{} = 0)", law_name(s.law),
+                            g(law_exponents(s.law).damping), g(law_exponents(s.law).elastic));
+      }
     } else {
       std::string subject;
       if (s.beta) subject = fmt::format("β = {} s^(1/5) m^(-1/5)", g(*s.beta));
@@ -269,15 +274,16 @@ class SceneWriter {
         plot("scene_trajectory", tr.name,
              {"--ends", join(marks), "--title", fmt::format("{} (zeta = {})", tr.title, g(p.parameter))});
     report_ += fmt::format(
-        "Computed: the trajectory x, x', x'' of one collision at ζ = {} ({} points in `{}.csv`, natural "
+        "Computed: the trajectory x, x', x'' of one {} collision at ζ = {} ({} points in `{}.csv`, natural "
         "units). "
         "Maximal compression x = {} at τ = {}.\n\n",
-        g(p.parameter), t.rows.size(), tr.name, g(r.max_compression.x), g(r.max_compression.tau));
+        law_name(tr.law), g(p.parameter), t.rows.size(), tr.name, g(r.max_compression.x),
+        g(r.max_compression.tau));
     report_ += "| end | τ_c | ε | x(τ_c) |\n|---|---|---|---|\n";
     json_.key(tr.name).begin_object();
-    json_.field("kind", "trajectory")
-        .field("zeta", p.parameter)
-        .field("points", static_cast<long>(t.rows.size()));
+    json_.field("kind", "trajectory");
+    if (tr.law != LawKind::viscoelastic_hertz) json_.field("law", law_name(tr.law));
+    json_.field("zeta", p.parameter).field("points", static_cast<long>(t.rows.size()));
     for (const CollisionEnd e : tr.ends.members()) {
       const EndResult& end = *r[e];
       report_ += fmt::format("| {} | {} | {} | {} |\n", end_name(e), g(end.tau), g(end.eps), g(end.x));
@@ -376,15 +382,19 @@ class SceneWriter {
     for (std::size_t i = 0; i < scene_.calibrations.size(); ++i) {
       const scene::CalibrationTask& task = scene_.calibrations[i];
       const Calibration& c = results_.calibrations[i].calibration;
-      report_ += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", task.name, g(task.eps),
-                             g(task.velocity_m_s), end_name(task.end), g(c.zeta), g(c.beta), g(c.eps_at_zeta),
-                             g(c.characteristic_velocity_m_s),
+      const bool hertz = task.law == LawKind::viscoelastic_hertz;
+      const std::string name = hertz ? task.name : fmt::format("{} ({})", task.name, law_name(task.law));
+      report_ += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", name, g(task.eps),
+                             g(task.velocity_m_s), end_name(task.end), g(c.zeta), hertz ? g(c.beta) : "—",
+                             g(c.eps_at_zeta), hertz ? g(c.characteristic_velocity_m_s) : "—",
                              c.dissipative_constant_s ? g(*c.dissipative_constant_s) : "—");
       json_.begin_object();
       json_.field("name", task.name).field("eps", task.eps).field("velocity_m_s", task.velocity_m_s);
-      json_.field("end", end_name(task.end)).field("zeta", c.zeta).field("beta", c.beta);
-      json_.field("eps_at_zeta", c.eps_at_zeta)
-          .field("characteristic_velocity_m_s", c.characteristic_velocity_m_s);
+      if (!hertz) json_.field("law", law_name(task.law)).field(parameter_key(task.law), c.parameter);
+      json_.field("end", end_name(task.end)).field("zeta", c.zeta);
+      if (hertz) json_.field("beta", c.beta);
+      json_.field("eps_at_zeta", c.eps_at_zeta);
+      if (hertz) json_.field("characteristic_velocity_m_s", c.characteristic_velocity_m_s);
       if (c.dissipative_constant_s) json_.field("dissipative_constant_s", *c.dissipative_constant_s);
       json_.end_object();
     }

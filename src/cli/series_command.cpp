@@ -11,6 +11,7 @@
 #include "cli/build_json.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
+#include "cli/options.hpp"
 #include "cli/series_reports.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"
@@ -99,7 +100,7 @@ void add_coefficients(CLI::App& parent, Action& chosen) {
       ->required()
       ->check(CLI::IsMember(series::coefficient_kinds()));
   cmd->add_option("--count", o->count, "N: how many coefficients")->required();
-  cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
+  cmd->add_flag("--json", o->json, "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, &chosen] { chosen = [o] { return run_coefficients(*o); }; });
 }
 
@@ -122,14 +123,14 @@ void add_eval(CLI::App& parent, Action& chosen) {
       "series terms: c_1..c_N or h_0..h_N (default: 40 naive-series, 60 delayed-recovery-series)");
   cmd->add_option("--coefficients", o->coefficients, "computed (default) or published (2008 Tables III, V)")
       ->check(CLI::IsMember({"computed", "published"}));
-  cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
+  cmd->add_flag("--json", o->json, "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, &chosen] { chosen = [o] { return run_eval(*o); }; });
 }
 
 void add_validate(CLI::App& parent, Action& chosen) {
   auto out = std::make_shared<std::string>("out/series");
   CLI::App* cmd = parent.add_subcommand("validate", "every approximation against the solver: CSV, JSON, PNG");
-  cmd->add_option("--out", *out, "output folder")->capture_default_str();
+  cmd->add_option("--out", *out, "output folder")->capture_default_str()->check(non_empty_path());
   cmd->callback([out, &chosen] { chosen = [out] { return run_series_validation(*out); }; });
 }
 
@@ -138,7 +139,7 @@ void add_certify(CLI::App& parent, Action& chosen) {
   CLI::App* cmd = parent.add_subcommand(
       "certify", "coefficients in two precisions with their certified digits, against the published tables");
   cmd->add_option("--order", o->first, "largest power of zeta (h up to zeta^{order})")->capture_default_str();
-  cmd->add_option("--out", o->second, "CSV file to write (default: stdout)");
+  cmd->add_option("--out", o->second, "CSV file to write (default: stdout)")->check(non_empty_path());
   cmd->callback([o, &chosen] { chosen = [o] { return run_series_certify(o->first, o->second); }; });
 }
 

@@ -9,6 +9,7 @@
 #include "cli/build_json.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
+#include "cli/options.hpp"
 #include "cli/output_files.hpp"
 
 namespace restitution::cli {
@@ -151,8 +152,9 @@ void add_stability_command(CLI::App& app, Action& chosen) {
       ->capture_default_str();
   cmd->add_option("--points-per-decade", o->points_per_decade, "grid points per decade of zeta (1..20)")
       ->capture_default_str();
-  cmd->add_flag("--json", o->json, "print one JSON object (17 significant digits)");
-  cmd->add_option("--out", o->out, "folder for stability.csv, stability.json and stability.png");
+  cmd->add_flag("--json", o->json, "print one JSON object (numbers in the shortest form that reads back to the same double)");
+  cmd->add_option("--out", o->out, "folder for stability.csv, stability.json and stability.png")
+      ->check(non_empty_path());
   cmd->callback([o, &chosen] { chosen = [o] { return run_stability(*o); }; });
 }
 

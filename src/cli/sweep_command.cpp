@@ -40,10 +40,16 @@ std::string settings_line(const SweepOptions& o, const SweepGrid& grid) {
   std::string range = fmt::format("zeta-min={} zeta-max={}", number17(o.zeta_min.value_or(0.0)),
                                   number17(o.zeta_max.value_or(0.0)));
   if (grid.velocity) {
-    range = fmt::format("velocity-min={} velocity-max={} beta={}", number17(*o.velocity_min),
-                        number17(*o.velocity_max), number17(grid.velocity->beta));
-    if (grid.velocity->k) range += fmt::format(" k={}", number17(*grid.velocity->k));
+    range =
+        fmt::format("velocity-min={} velocity-max={}", number17(*o.velocity_min), number17(*o.velocity_max));
+    if (grid.velocity->beta) range += fmt::format(" beta={}", number17(*grid.velocity->beta));
+    if (o.material.any()) range += " material";
+    if (o.stiffness) {
+      range += fmt::format(" stiffness={} damping-coefficient={} effective-mass={}", number17(*o.stiffness),
+                           number17(*o.damping_coefficient), number17(*o.effective_mass));
+    }
   }
+  if (grid.law != LawKind::viscoelastic_hertz) range = fmt::format("law={} {}", o.law, range);
   return fmt::format("# restitution sweep: {} points={} spacing={} end={} method={} tolerance={}", range,
                      o.points, o.log ? "log" : "linear", o.solver.end, o.solver.method,
                      number17(o.solver.tolerance));
@@ -105,7 +111,7 @@ int run_sweep_command(const SweepOptions& o) {
   const std::vector<double>& zetas = grid.zetas;
   const VelocityAxis* velocity = grid.velocity ? &*grid.velocity : nullptr;
   const SolveOptions solve = solve_options(o.solver);
-  check_sweep(zetas, solve);  // every point, before the first file is touched
+  check_sweep(zetas, solve, grid.law);  // every point, before the first file is touched
   if (fs::path(o.out).filename().empty() || fs::is_directory(o.out)) {
     throw InvalidInput(fmt::format("--out '{}' must name a file, not a folder", o.out));
   }
@@ -166,7 +172,7 @@ int run_sweep_command(const SweepOptions& o) {
     const StopSignals signals;
     ProgressLine progress("sweep");  // ended before any message below
     control.progress = progress.callback();
-    summary = run_sweep(zetas, solve, control);
+    summary = run_sweep(zetas, solve, control, grid.law);
   }
   const std::size_t finished = summary.computed + summary.skipped;
   if (summary.stopped) {
@@ -200,22 +206,35 @@ void add_sweep_command(CLI::App& app, Action& chosen) {
   CLI::App* cmd = app.add_subcommand(
       "sweep",
       "eps over a grid of zeta, or of impact speeds with beta or a material, in parallel, into a CSV file");
-  cmd->add_option("--zeta-min", o->zeta_min, "smallest zeta >= 0 (natural units)");
+  add_law_option(*cmd, o->law);
+  cmd->add_option("--zeta-min", o->zeta_min,
+                  "smallest zeta >= 0 of the law's natural form x'' + zeta x^b x' + x^a = 0 (the linear "
+                  "dash-pot: zeta = 2 r)");
   cmd->add_option("--zeta-max", o->zeta_max, "largest zeta >= zeta-min");
   cmd->add_option("--velocity-min", o->velocity_min,
                   "instead of zeta: smallest impact speed in m/s (with --beta or a material)");
   cmd->add_option("--velocity-max", o->velocity_max, "largest impact speed in m/s");
-  cmd->add_option("--beta", o->beta, "beta in s^(1/5) m^(-1/5): zeta = beta v^(1/5)");
+  cmd->add_option("--beta", o->beta, "viscoelastic Hertz: beta in s^(1/5) m^(-1/5), zeta = beta v^(1/5)");
+  cmd->add_option("--stiffness", o->stiffness,
+                  "any law, in physical units: k in N/m^a of the force F = k xi^a + gamma xi^b xi'");
+  cmd->add_option("--damping-coefficient", o->damping_coefficient,
+                  "any law, in physical units: gamma in N s/m^(1+b) of that force");
+  cmd->add_option("--effective-mass", o->effective_mass,
+                  "any law, in physical units: the effective mass m_eff in kg (adds SI columns)");
   add_material_options(*cmd, o->material);
   cmd->add_option(
       "--dissipative-constant", o->dissipative_constant,
       "material: the dissipative constant A in s (adds SI columns: durations, maximal compression)");
-  cmd->add_option("--points", o->points, "number of grid values, >= 1 (both bounds included)")->required();
+  cmd->add_option("--points", o->points,
+                  fmt::format("number of grid values, in [1, {}] (both bounds included)", kMaxSweepPoints))
+      ->required()
+      ->check(whole_number_in(1, static_cast<long long>(kMaxSweepPoints)));
   cmd->add_flag("--log", o->log, "space the grid logarithmically (needs a minimum > 0); default: linearly");
   add_solver_options(*cmd, o->solver);
   cmd->add_option("--threads", o->threads, "worker threads, >= 1 (default: all cores)");
   cmd->add_option("--out", o->out, "the CSV file to write (FILE.partial holds the rows while it runs)")
-      ->required();
+      ->required()
+      ->check(non_empty_path());
   cmd->add_flag("--resume", o->resume, "continue an interrupted sweep from FILE.partial");
   cmd->callback([o, &chosen] { chosen = [o] { return run_sweep_command(*o); }; });
 }

@@ -12,9 +12,12 @@
 namespace restitution::cli {
 
 struct SweepOptions {
+  std::string law = law_name(LawKind::viscoelastic_hertz);
   std::optional<double> zeta_min, zeta_max;
-  // The ε(v) forms: impact speeds with β, or with a material and its dissipative constant.
+  // The ε(v) forms: impact speeds with β, or with a material and its dissipative constant (viscoelastic
+  // Hertz), or with the physical coefficients of ContactLaw::physical (every law).
   std::optional<double> velocity_min, velocity_max, beta, dissipative_constant;
+  std::optional<double> stiffness, damping_coefficient, effective_mass;
   MaterialOptions material;
   long long points = 0;
   bool log = false;
@@ -26,12 +29,14 @@ struct SweepOptions {
 
 // What the sweep runs over: the ζ values and, for the ε(v) forms, the impact speeds they come from.
 struct SweepGrid {
-  std::vector<double> zetas;
+  LawKind law = LawKind::viscoelastic_hertz;
+  std::vector<double> zetas;  // of the law's natural form
   std::optional<VelocityAxis> velocity;
 };
 
 // The grid of the form the options give (exactly one of zeta-min/max, beta with velocity-min/max, a material
-// with velocity-min/max); throws InvalidInput naming what is missing, mixed or outside the checked range.
+// with velocity-min/max, the physical coefficients with velocity-min/max); throws InvalidInput naming what
+// is missing, mixed or outside the checked range.
 SweepGrid sweep_grid(const SweepOptions& o);
 
 }  // namespace restitution::cli

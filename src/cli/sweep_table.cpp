@@ -32,7 +32,7 @@ std::string quoted_field(const std::string& text) {
 // Columns after the maximal compression's for a material: its SI durations and maximal compression.
 std::vector<std::string> si_columns(EndSet ends, const VelocityAxis* velocity) {
   std::vector<std::string> columns;
-  if (velocity == nullptr || !velocity->k) return columns;
+  if (velocity == nullptr || velocity->scales.empty()) return columns;
   for (const CollisionEnd end : ends.members()) columns.push_back(duration_column(end));
   for (const std::string& c : si_max_compression_columns()) columns.push_back(c);
   return columns;
@@ -48,7 +48,8 @@ std::vector<std::string> si_columns(EndSet ends, const VelocityAxis* velocity) {
 std::string sweep_header(EndSet ends, const VelocityAxis* velocity) {
   std::string header = "zeta";
   if (velocity != nullptr) {
-    for (const std::string& c : velocity_columns()) header += "," + c;
+    header += ",velocity_m_s";
+    if (velocity->beta) header += ",beta";
   }
   for (const CollisionEnd end : ends.members()) {
     for (const char* column : {"eps", "one_minus_eps", "tau", "x"})
@@ -61,10 +62,9 @@ std::string sweep_header(EndSet ends, const VelocityAxis* velocity) {
 
 std::string sweep_row(const SweepPoint& point, EndSet ends, const VelocityAxis* velocity) {
   std::string row = number17(point.zeta);
-  double v = 0.0;
   if (velocity != nullptr) {
-    v = velocity->velocity_m_s.at(point.index);
-    row += fmt::format(",{},{}", number17(v), number17(velocity->beta));
+    row += fmt::format(",{}", number17(velocity->velocity_m_s.at(point.index)));
+    if (velocity->beta) row += fmt::format(",{}", number17(*velocity->beta));
   }
   if (!point.result) {
     const std::size_t empty =
@@ -85,8 +85,8 @@ std::string sweep_row(const SweepPoint& point, EndSet ends, const VelocityAxis* 
   }
   add(r.max_compression.tau);
   add(r.max_compression.x);
-  if (velocity != nullptr && velocity->k) {
-    const NaturalScales scales = natural_scales(*velocity->k, v);
+  if (velocity != nullptr && !velocity->scales.empty()) {
+    const NaturalScales& scales = velocity->scales.at(point.index);
     for (const CollisionEnd end : ends.members()) add(duration_s(*r[end], scales));
     for (const double value : si_max_compression(r.max_compression, scales)) add(value);
   }

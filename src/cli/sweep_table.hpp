@@ -10,16 +10,18 @@
 #include <vector>
 
 #include "restitution/collision_solver.hpp"
+#include "restitution/units.hpp"
 #include "sweep/sweep.hpp"
 
 namespace restitution::cli {
 
-// The impact speeds of an ε(v) sweep, ζ_i = β v_i^{1/5}; with k (ρ/m_eff of a material, s^-2 m^-1/2) the
-// table also holds SI times and lengths.
+// The impact speeds of an ε(v) sweep: viscoelastic Hertz with β (ζ_i = β v_i^{1/5}) or a material, or any
+// member of the family in physical units (ContactLaw::physical). With a material or physical units the
+// table also holds SI times and lengths, from the natural scales of each speed.
 struct VelocityAxis {
-  std::vector<double> velocity_m_s;  // parallel to the sweep's ζ values
-  double beta = 0.0;                 // s^{1/5} m^{-1/5}
-  std::optional<double> k;
+  std::vector<double> velocity_m_s;   // parallel to the sweep's ζ values
+  std::optional<double> beta;         // s^{1/5} m^{-1/5}: the column after velocity_m_s, when given
+  std::vector<NaturalScales> scales;  // parallel to velocity_m_s, or empty: no SI columns
 };
 
 // The CSV columns for the requested ends: zeta, (for a velocity axis: velocity_m_s, beta), per end eps,

@@ -7,8 +7,10 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/progress.hpp"
+#include "cli/stop_signals.hpp"
 #include "cli/work_precision_files.hpp"
 #include "reference/work_precision.hpp"
 #include "restitution/errors.hpp"
@@ -24,15 +26,16 @@ struct WorkPrecisionOptions {
 };
 
 int run_work_precision(const WorkPrecisionOptions& o) {
-  if (o.repeats < 1) throw InvalidInput(fmt::format("--repeats must be >= 1, got {}", o.repeats));
   const std::filesystem::path folder(o.out);
   check_output_folder(folder);  // before the measurements, not after
   const std::filesystem::path reference =
       o.reference.empty() ? default_reference_file() : std::filesystem::path(o.reference);
   std::vector<WorkPrecisionRow> rows;
   {
+    const StopSignals signals;  // Ctrl-C stops at the next point, before any file is written
     ProgressLine progress("work-precision (engine, end, tolerance)");
-    rows = measure_work_precision(read_reference_file(reference), o.repeats, o.engines, progress.callback());
+    rows = measure_work_precision(read_reference_file(reference), o.repeats, o.engines,
+                                  progress.stoppable_callback());
   }
   const WorkPrecisionFiles written = write_work_precision_files(rows, folder, "work_precision");
   if (!written.plot_warning.empty())
@@ -47,11 +50,14 @@ void add_work_precision_command(CLI::App& app, Action& chosen) {
   auto o = std::make_shared<WorkPrecisionOptions>();
   CLI::App* cmd =
       app.add_subcommand("work-precision", "error against run time of every engine, against the reference");
-  cmd->add_option("--out", o->out, "output folder")->capture_default_str();
+  cmd->add_option("--out", o->out, "output folder")->capture_default_str()->check(non_empty_path());
   cmd->add_option("--reference", o->reference,
                   "reference CSV (default: data/reference_solutions.csv of the source tree)");
-  cmd->add_option("--repeats", o->repeats, "timed solves per point (the median is reported)")
-      ->capture_default_str();
+  cmd->add_option(
+         "--repeats", o->repeats,
+         fmt::format("timed solves per point, in [1, {}] (the median is reported)", kMaxWorkPrecisionRepeats))
+      ->capture_default_str()
+      ->check(whole_number_in(1, kMaxWorkPrecisionRepeats));
   cmd->add_option("--engine", o->engines,
                   "measure only these engines: taylor, bdf, adams, bdf-plain, adams-plain")
       ->delimiter(',');

@@ -24,15 +24,58 @@ const char* method_name(Method method) {
   return "?";
 }
 
+namespace {
+
+// "a, b or c" for messages.
+std::string alternatives(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    out += i == 0 ? "" : (i + 1 == names.size() ? " or " : ", ");
+    out += names[i];
+  }
+  return out;
+}
+
+}  // namespace
+
+const std::vector<std::string>& method_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const Method method : kMethods) out.emplace_back(method_name(method));
+    return out;
+  }();
+  return names;
+}
+
 Method method_from_name(const std::string& name) {
-  for (const Method method : {Method::bdf, Method::adams, Method::automatic, Method::taylor}) {
+  for (const Method method : kMethods) {
     if (name == method_name(method)) return method;
   }
-  throw InvalidInput(fmt::format("method must be bdf, adams, auto or taylor, got '{}'", name));
+  throw InvalidInput(fmt::format("method must be {}, got '{}'", alternatives(method_names()), name));
 }
 
 const char* end_name(CollisionEnd end) {
   return end == CollisionEnd::naive ? "naive" : "delayed-recovery";
+}
+
+const std::vector<std::string>& end_names() {
+  static const std::vector<std::string> names = {end_name(CollisionEnd::naive),
+                                                 end_name(CollisionEnd::delayed_recovery)};
+  return names;
+}
+
+const std::vector<std::string>& end_set_names() {
+  static const std::vector<std::string> names = {end_name(CollisionEnd::naive),
+                                                 end_name(CollisionEnd::delayed_recovery), kBothEnds};
+  return names;
+}
+
+EndSet end_set_from_name(const std::string& name) {
+  if (name == kBothEnds) return EndSet::both();
+  for (const CollisionEnd end : kCollisionEnds) {
+    if (name == end_name(end)) return EndSet{end};
+  }
+  throw InvalidInput(fmt::format("end must be {}, got '{}'", alternatives(end_set_names()), name));
 }
 
 const char* end_key(CollisionEnd end) {
@@ -40,9 +83,10 @@ const char* end_key(CollisionEnd end) {
 }
 
 CollisionEnd end_from_name(const std::string& name) {
-  if (name == "naive") return CollisionEnd::naive;
-  if (name == "delayed-recovery") return CollisionEnd::delayed_recovery;
-  throw InvalidInput(fmt::format("end must be naive or delayed-recovery, got '{}'", name));
+  for (const CollisionEnd end : kCollisionEnds) {
+    if (name == end_name(end)) return end;
+  }
+  throw InvalidInput(fmt::format("end must be {}, got '{}'", alternatives(end_names()), name));
 }
 
 const EndResult& end_of(const CollisionResult& result, CollisionEnd end) {

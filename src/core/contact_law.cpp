@@ -51,10 +51,6 @@ ContactLaw::ContactLaw(LawKind kind, double zeta) : kind_(kind), zeta_(zeta), da
   energy_coefficient_ = 1.0 / (a_ + 1.0);
 }
 
-const char* ContactLaw::parameter_name() const {
-  return kind_ == LawKind::linear_dashpot ? "damping-ratio" : "zeta";
-}
-
 ContactLaw ContactLaw::natural(LawKind kind, double zeta) {
   if (kind == LawKind::linear_dashpot) {
     // The dash-pot's ζ = 2r keeps the refusal of r = 0 of linear_dashpot.
@@ -65,15 +61,22 @@ ContactLaw ContactLaw::natural(LawKind kind, double zeta) {
   return {kind, zeta};
 }
 
+double physical_time_scale_s(LawKind kind, double stiffness_N_per_m_a, double effective_mass_kg,
+                             double impact_speed_m_s) {
+  const double a = law_exponents(kind).elastic;
+  return std::pow(std::pow(impact_speed_m_s, 1.0 - a) * effective_mass_kg / stiffness_N_per_m_a,
+                  1.0 / (1.0 + a));
+}
+
 ContactLaw ContactLaw::physical(LawKind kind, double stiffness_N_per_m_a, double damping_coefficient,
                                 double effective_mass_kg, double impact_speed_m_s) {
   require_finite_positive(stiffness_N_per_m_a, "stiffness");
   require_finite_nonnegative(damping_coefficient, "damping coefficient");
   require_finite_positive(effective_mass_kg, "effective mass");
   require_finite_positive(impact_speed_m_s, "impact speed");
-  const auto [a, b] = law_exponents(kind);
-  const double time_scale_s = std::pow(
-      std::pow(impact_speed_m_s, 1.0 - a) * effective_mass_kg / stiffness_N_per_m_a, 1.0 / (1.0 + a));
+  const double b = law_exponents(kind).damping;
+  const double time_scale_s =
+      physical_time_scale_s(kind, stiffness_N_per_m_a, effective_mass_kg, impact_speed_m_s);
   const double zeta = damping_coefficient / effective_mass_kg * std::pow(impact_speed_m_s, b) *
                       std::pow(time_scale_s, b + 1.0);
   if (!std::isfinite(zeta) || !(time_scale_s > 0.0)) {
@@ -83,6 +86,13 @@ ContactLaw ContactLaw::physical(LawKind kind, double stiffness_N_per_m_a, double
         stiffness_N_per_m_a, damping_coefficient, effective_mass_kg, impact_speed_m_s));
   }
   return natural(kind, zeta);
+}
+
+ContactLaw ContactLaw::of_parameter(LawKind kind, double parameter) {
+  const LawParameter p = law_parameter(kind);
+  if (p.zeta_per_parameter == 1.0) return natural(kind, parameter);
+  require_finite_positive(parameter, p.name);
+  return natural(kind, p.zeta_per_parameter * parameter);
 }
 
 ContactLaw ContactLaw::hertz_natural(double zeta) {
@@ -108,8 +118,7 @@ ContactLaw ContactLaw::hertz_scaled(double beta, double velocity) {
 }
 
 ContactLaw ContactLaw::linear_dashpot(double damping_ratio) {
-  require_finite_positive(damping_ratio, "damping-ratio");
-  return {LawKind::linear_dashpot, 2.0 * damping_ratio};
+  return of_parameter(LawKind::linear_dashpot, damping_ratio);
 }
 
 ContactLaw ContactLaw::unchecked(LawKind kind, double damping, double stiffness) {

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
@@ -14,13 +15,15 @@ struct Member {
   LawKind kind;
   const char* name;
   LawExponents exponents;  // elastic force x^a, damping x^b x'
+  LawParameter parameter;  // what results are labelled with: ζ, or the dash-pot's damping ratio r = ζ/2
 };
 
+constexpr LawParameter kZeta{"zeta", 1.0};
 constexpr Member kMembers[] = {
-    {LawKind::viscoelastic_hertz, "viscoelastic-hertz", {1.5, 0.5}},
-    {LawKind::linear_dashpot, "linear-dashpot", {1.0, 0.0}},
-    {LawKind::tsuji_hertz, "tsuji-hertz", {1.5, 0.25}},
-    {LawKind::hertz_constant_damping, "hertz-constant-damping", {1.5, 0.0}},
+    {LawKind::viscoelastic_hertz, "viscoelastic-hertz", {1.5, 0.5}, kZeta},
+    {LawKind::linear_dashpot, "linear-dashpot", {1.0, 0.0}, {"damping-ratio", 2.0}},
+    {LawKind::tsuji_hertz, "tsuji-hertz", {1.5, 0.25}, kZeta},
+    {LawKind::hertz_constant_damping, "hertz-constant-damping", {1.5, 0.0}, kZeta},
 };
 
 const Member& member(LawKind kind) {
@@ -45,6 +48,19 @@ LawKind law_from_name(const std::string& name) {
   throw InvalidInput(fmt::format("law must be one of {}, got '{}'", names, name));
 }
 
+const std::vector<std::string>& law_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const Member& m : kMembers) out.emplace_back(m.name);
+    return out;
+  }();
+  return names;
+}
+
+LawParameter law_parameter(LawKind kind) {
+  return member(kind).parameter;
+}
+
 LawExponents law_exponents(LawKind kind) {
   return member(kind).exponents;
 }
@@ -56,6 +72,10 @@ double speed_exponent(LawKind kind) {
 
 bool speed_independent(LawKind kind) {
   return std::abs(speed_exponent(kind)) < 1e-12;
+}
+
+double naive_end_critical_zeta(LawKind kind) {
+  return 2.0 * std::sqrt(law_exponents(kind).damping + 1.0);
 }
 
 }  // namespace restitution

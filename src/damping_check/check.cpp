@@ -21,7 +21,7 @@ CollisionEnd end_for(Clamp clamp) {
 std::vector<Clamp> clamps_from_name(const std::string& name) {
   if (name == "on") return {Clamp::on};
   if (name == "off") return {Clamp::off};
-  if (name == "both") return {Clamp::on, Clamp::off};
+  if (name == kBothEnds) return {Clamp::on, Clamp::off};
   throw InvalidInput(fmt::format("clamp must be on, off or both, got '{}'", name));
 }
 

@@ -6,9 +6,12 @@
 #include <vector>
 
 #include "damping_check/recipes.hpp"
+#include "restitution/collision_solver.hpp"
 
 namespace restitution::damping_check {
 
+// The DEM codes' words for the two ends (`--clamp on|off`): each clamp is one CollisionEnd (end_for), named
+// as the codes' documentation names it; "both" is the ends' kBothEnds.
 enum class Clamp { on, off };
 const char* clamp_name(Clamp clamp);  // "on" | "off"
 CollisionEnd end_for(Clamp clamp);    // on: delayed_recovery, off: naive
@@ -19,9 +22,9 @@ struct CheckRequest {
   Recipe recipe = Recipe::lammps_tsuji;
   double eps_requested = 0.5;
   std::vector<Clamp> clamps{Clamp::on, Clamp::off};
-  double reference_velocity_m_s = 1.0;  // v_ref of the speed-dependent recipes
-  std::vector<double> speeds_m_s{1.0};  // ignored by speed-independent recipes (one point, no speed)
-  double tolerance = 1e-10;             // accuracy of each ε (SolveOptions::tolerance)
+  double reference_velocity_m_s = 1.0;          // v_ref of the speed-dependent recipes
+  std::vector<double> speeds_m_s{1.0};          // ignored by speed-independent recipes (one point, no speed)
+  double tolerance = SolveOptions{}.tolerance;  // accuracy of each ε (SolveOptions::tolerance)
 };
 
 struct CheckPoint {

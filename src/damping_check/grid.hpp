@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "damping_check/check.hpp"
+#include "restitution/collision_solver.hpp"
 
 namespace restitution::damping_check {
 
@@ -32,7 +33,7 @@ struct GridRequest {
   std::vector<double> eps;              // requested ε of the map and the error grids
   double reference_velocity_m_s = 1.0;  // v_ref of the speed-dependent recipes
   std::vector<double> speeds_m_s;       // speeds of the error grids
-  double tolerance = 1e-10;
+  double tolerance = SolveOptions{}.tolerance;
 };
 
 struct GridResult {

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "restitution/errors.hpp"
+#include "restitution/units.hpp"
 
 namespace restitution::dem {
 namespace {
@@ -39,7 +40,7 @@ std::string output_of(const std::string& command) {
 }
 
 double natural_time(const Pair& p, double v) {
-  const double k = 4.0 / 3.0 * p.effective_modulus_pa * std::sqrt(p.effective_radius_m) / p.effective_mass_kg;
+  const double k = hertz_stiffness(p.effective_modulus_pa, p.effective_radius_m) / p.effective_mass_kg;
   return std::pow(k, -0.4) * std::pow(v, -0.2);
 }
 

@@ -29,7 +29,7 @@ struct Coefficients {
 
 Coefficients law_coefficients(const Pair& p, double dissipative_constant_s) {
   const double sqrt_r = std::sqrt(p.effective_radius_m);
-  return {4.0 / 3.0 * p.effective_modulus_pa * sqrt_r,
+  return {hertz_stiffness(p.effective_modulus_pa, p.effective_radius_m),
           2.0 * dissipative_constant_s * p.effective_modulus_pa * sqrt_r};
 }
 
@@ -72,8 +72,8 @@ std::string friction_note(double mu) {
 }
 
 double density_of(const Pair& p) {
-  const double rho1 = p.mass1_kg / (4.0 / 3.0 * M_PI * std::pow(p.radius1_m, 3));
-  const double rho2 = p.mass2_kg / (4.0 / 3.0 * M_PI * std::pow(p.radius2_m, 3));
+  const double rho1 = p.mass1_kg / sphere_mass_kg(p.radius1_m, 1.0);
+  const double rho2 = p.mass2_kg / sphere_mass_kg(p.radius2_m, 1.0);
   if (std::fabs(rho1 - rho2) > 1e-12 * rho1) {
     throw InvalidInput(fmt::format(
         "yade: one FrictMat has one density, but the two spheres' masses give {:.6g} and {:.6g} kg/m^3", rho1,
@@ -108,7 +108,7 @@ void lammps(Deck& d, const Pair& p, double a, double mu) {
 }
 
 void liggghts(Deck& d, const Pair& p, double a, double mu) {
-  const double kn = 4.0 / 3.0 * p.effective_modulus_pa;
+  const double kn = hertz_modulus_pa(p.effective_modulus_pa);
   const double gn = damping_per_mass(a, p.effective_modulus_pa, p.effective_mass_kg);
   d.parameters = {
       {"kn", kn, "k_n = (4/3) E* [Pa], multiplied by sqrt(R_eff xi)"},
@@ -196,7 +196,7 @@ void yade(Deck& d, const Pair& p, double a, double vn, double mu) {
 
 void chrono(Deck& d, const Pair& p, double a, double mu) {
   const double sqrt_r = std::sqrt(p.effective_radius_m);
-  const double kn = 4.0 / 3.0 * p.effective_modulus_pa / sqrt_r;
+  const double kn = hertz_modulus_pa(p.effective_modulus_pa) / sqrt_r;
   const double gn = damping_per_mass(a, p.effective_modulus_pa, p.effective_mass_kg) / sqrt_r;
   d.parameters = {
       {"Kn", kn, "(4/3) E* / sqrt(R_eff) [Pa m^-1/2], multiplied by R_eff sqrt(xi)"},
@@ -265,8 +265,8 @@ Pair pair_of(const Material& material) {
     p.mass1_kg = *material.mass1_kg;
     p.mass2_kg = *material.mass2_kg;
   } else {
-    p.mass1_kg = 4.0 / 3.0 * M_PI * std::pow(material.radius1_m, 3) * *material.density_kg_m3;
-    p.mass2_kg = 4.0 / 3.0 * M_PI * std::pow(material.radius2_m, 3) * *material.density_kg_m3;
+    p.mass1_kg = sphere_mass_kg(material.radius1_m, *material.density_kg_m3);
+    p.mass2_kg = sphere_mass_kg(material.radius2_m, *material.density_kg_m3);
   }
   p.effective_modulus_pa = effective_modulus_pa(material.young_modulus_pa, material.poisson_ratio);
   p.effective_radius_m = e.effective_radius_m;
@@ -343,18 +343,19 @@ double deck_beta(const Deck& deck, const Pair& other) {
   Coefficients c;
   switch (deck.code) {
     case Code::lammps:
-      c = {4.0 / 3.0 * effective_modulus_pa(deck.parameter("E"), deck.parameter("nu")) * sqrt_r,
+      c = {hertz_stiffness(effective_modulus_pa(deck.parameter("E"), deck.parameter("nu")),
+                           other.effective_radius_m),
            deck.parameter("eta_n0") * m * sqrt_r};
       break;
     case Code::liggghts:
       c = {deck.parameter("kn") * sqrt_r, deck.parameter("gamman") * m * sqrt_r};
       break;
     case Code::mercurydpm:
-      c = {4.0 / 3.0 * deck.parameter("effective_elastic_modulus") * sqrt_r,
+      c = {hertz_stiffness(deck.parameter("effective_elastic_modulus"), other.effective_radius_m),
            2.0 * deck.parameter("dissipation") * deck.parameter("effective_elastic_modulus") * sqrt_r};
       break;
     case Code::yade: {
-      const double k = 4.0 / 3.0 * e_star * sqrt_r / m;
+      const double k = hertz_stiffness(e_star, other.effective_radius_m) / m;
       c = law_coefficients(other, yade_dissipative_constant(deck.parameter("en"), deck.parameter("vn"), k));
       break;
     }

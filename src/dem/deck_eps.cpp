@@ -32,8 +32,8 @@ std::vector<SizeCheck> size_checks(const Deck& deck, const Pair& pair, double di
   std::vector<SizeCheck> checks;
   for (double f : factors) {
     const Pair other = scaled(pair, f);
-    const double k = 4.0 / 3.0 * other.effective_modulus_pa * std::sqrt(other.effective_radius_m) /
-                     other.effective_mass_kg;
+    const double k =
+        hertz_stiffness(other.effective_modulus_pa, other.effective_radius_m) / other.effective_mass_kg;
     SizeCheck c;
     c.radius_factor = f;
     c.eps_lines = eps_for(deck_beta(deck, other), velocity_m_s, deck.end, tolerance, solver);

@@ -30,7 +30,7 @@ struct LinesRequest {
   Material material;
   DampingSource damping;
   std::vector<double> speeds_m_s;  // empty: v/10, v, 10 v with v the reference speed
-  double tolerance = 1e-10;
+  double tolerance = SolveOptions{}.tolerance;
   double friction = 0.0;  // Coulomb mu of the tangential model [1]
 };
 

@@ -179,7 +179,9 @@ void array(std::ostringstream& out, const std::string& name, const std::vector<d
   out << "};\n";
 }
 
-// The end's tag in the C names: restitution_fast_naive_, restitution_fast_delayed_.
+// The end's tag in the private C names (trailing underscore): restitution_fast_naive_,
+// restitution_fast_delayed_. The public functions are spelled with end_key (…_delayed_recovery); the short
+// tag only keeps the table names short, and changing it would change every committed generated header.
 std::string c_tag(CollisionEnd end) {
   return end == CollisionEnd::naive ? "naive" : "delayed";
 }

@@ -11,6 +11,9 @@
 
 namespace restitution::fast {
 
+// Random check points per interval: at most this many (fast-table --checks; 2 take about 2 minutes).
+inline constexpr int kMaxChecksPerInterval = 1000;
+
 struct GeneratorSettings {
   int degree = 12;                 // polynomial degree per interval
   double per_unit = 8;             // intervals per unit of ln ζ (and of g in the inverse)
@@ -18,7 +21,7 @@ struct GeneratorSettings {
   double s_hi_naive = 2;           // ln ζ where the naive table of g ends (κ ζ^-5 above)
   double s_hi_naive_duration = 6;  // ln ζ where the naive table of τ_c ends (its law above)
   double s_hi_delayed = 12;        // ln ζ where the delayed-recovery table ends (two-term law above)
-  int checks_per_interval = 2;
+  int checks_per_interval = 2;     // at most kMaxChecksPerInterval
   std::uint64_t seed = 13;
 };
 

@@ -50,11 +50,15 @@ SolveOptions work_precision_options(const WorkPrecisionEngine& engine, Collision
 }
 
 std::vector<WorkPrecisionEngine> work_precision_engines() {
-  return {{"taylor", Method::taylor, true},
-          {"bdf", Method::bdf, true},
-          {"adams", Method::adams, true},
-          {"bdf-plain", Method::bdf, false},
-          {"adams-plain", Method::adams, false}};
+  // The methods by their names; "-plain": integrated in τ throughout (SolveOptions::smooth_ends = false).
+  std::vector<WorkPrecisionEngine> engines;
+  for (const Method method : {Method::taylor, Method::bdf, Method::adams}) {
+    engines.push_back({method_name(method), method, true});
+  }
+  for (const Method method : {Method::bdf, Method::adams}) {
+    engines.push_back({std::string(method_name(method)) + "-plain", method, false});
+  }
+  return engines;
 }
 
 bool is_work_precision_engine(const std::string& name) {

@@ -11,6 +11,9 @@
 
 namespace restitution {
 
+// Timed solves per point: at most this many (the command line's --repeats and a scene's repeats).
+inline constexpr int kMaxWorkPrecisionRepeats = 100;
+
 struct WorkPrecisionEngine {
   std::string name;  // "taylor", "bdf", "adams", "bdf-plain", "adams-plain"
   Method method;

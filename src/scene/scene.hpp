@@ -41,8 +41,10 @@ struct PowerLawFitRequest {
 
 enum class Axes { linear, log_log, log_x };
 
-// ε tables over ζ, or over impact speeds with β, a material or the 1999 paper's g*.
+// ε tables over ζ (the natural form of any member of the family), or, for viscoelastic Hertz, over impact
+// speeds with β, a material or the 1999 paper's g*.
 struct Sweep {
+  LawKind law = LawKind::viscoelastic_hertz;
   std::string name;
   std::string title;
   std::string note;  // free text for the report: what to look for
@@ -65,6 +67,7 @@ struct Sweep {
 
 // One collision with its trajectory x, x', x'' (the 2008 paper's Fig. 3).
 struct Trajectory {
+  LawKind law = LawKind::viscoelastic_hertz;
   std::string name;
   std::string title;
   EndSet ends = EndSet::both();
@@ -76,6 +79,7 @@ struct Trajectory {
 };
 
 struct CalibrationTask {
+  LawKind law = LawKind::viscoelastic_hertz;  // β, g* and A for viscoelastic Hertz only
   std::string name;
   double eps = 0.0;
   double velocity_m_s = 0.0;
@@ -98,12 +102,14 @@ struct DashpotCheck {
 struct ExternalStudy {
   std::string kind;  // "work_precision" | "stability"
   std::string name;
-  std::vector<double> zeta;                                       // stability: the points
-  std::vector<std::string> engines = {"taylor", "adams", "bdf"};  // work_precision: engines measured
+  std::vector<double> zeta;  // stability: the points
+  // work_precision: engines measured (work_precision_engines() names)
+  std::vector<std::string> engines = {method_name(Method::taylor), method_name(Method::adams),
+                                      method_name(Method::bdf)};
   int repeats = 3;  // work_precision: timed solves per point (the median is kept)
   int line = 0;
 };
-inline constexpr int kMaxStudyRepeats = 100;
+inline constexpr int kMaxStudyRepeats = 100;  // = kMaxWorkPrecisionRepeats (reference/work_precision.hpp)
 
 // Input lines for a DEM code (docs/dem.md) and the ε(v) they give; LAMMPS and LIGGGHTS are also run on them
 // and their measured ε(v) plotted against restitution's.
@@ -138,8 +144,8 @@ struct Scene {
   std::string title;
   std::string description;
   std::filesystem::path output;  // as written in the file (relative paths: to the working directory)
-  double tolerance = 1e-10;
-  Method method = Method::automatic;
+  double tolerance = SolveOptions{}.tolerance;
+  Method method = SolveOptions{}.method;
   std::map<std::string, Material> materials;
   std::vector<Sweep> sweeps;
   std::vector<Trajectory> trajectories;

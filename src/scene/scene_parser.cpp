@@ -37,10 +37,10 @@ EndSet read_ends(TomlReader& r, EndSet fallback = EndSet::both()) {
   if (!words) return fallback;
   EndSet ends;
   for (const std::string& w : *words) {
-    if (w == "naive" || w == "both") ends.insert(CollisionEnd::naive);
-    if (w == "delayed-recovery" || w == "both") ends.insert(CollisionEnd::delayed_recovery);
-    if (w != "naive" && w != "delayed-recovery" && w != "both") {
-      r.fail("ends", fmt::format(R"(expected "naive", "delayed-recovery" or "both", got "{}")", w));
+    try {
+      ends = ends | end_set_from_name(w);
+    } catch (const InvalidInput& e) {
+      r.fail("ends", e.what());
     }
   }
   if (ends.empty()) r.fail("ends", "no end requested");
@@ -53,12 +53,35 @@ series::Approximation approximation_from(const TomlReader& r, const std::string&
                                        fmt::join(series::evaluation_kinds(), ", ")));
 }
 
+// `law = "NAME"` (law_names()); viscoelastic Hertz when absent.
+LawKind read_law(TomlReader& r) {
+  const auto name = r.text("law");
+  if (!name) return LawKind::viscoelastic_hertz;
+  try {
+    return law_from_name(*name);
+  } catch (const InvalidInput& e) {
+    r.fail("law", e.what());
+  }
+}
+
+// The ζ values of a law other than viscoelastic Hertz: the forms and comparisons that belong to Hertz are
+// refused, and a requested naive end must exist at every ζ (below the critical ζ of Tsuji and the dash-pot).
+void check_law_zeta(TomlReader& r, LawKind law, EndSet ends, const std::vector<double>& zeta) {
+  if (law == LawKind::viscoelastic_hertz || !ends.contains(CollisionEnd::naive)) return;
+  r.check_each(
+      "zeta", zeta, [law](double z) { return ContactLaw::natural(law, z).naive_end_may_exist(); },
+      fmt::format("zeta < {:.17g}, where the naive end of {} exists (or ends = \"delayed-recovery\")",
+                  naive_end_critical_zeta(law), law_name(law)));
+}
+
 CollisionEnd read_end(TomlReader& r) {
-  const std::string w = r.text("end").value_or("delayed-recovery");
-  if (w == "naive") return CollisionEnd::naive;
-  if (w != "delayed-recovery")
-    r.fail("end", fmt::format(R"(expected "naive" or "delayed-recovery", got "{}")", w));
-  return CollisionEnd::delayed_recovery;
+  const auto w = r.text("end");
+  if (!w) return CalibrationRequest{}.end;
+  try {
+    return end_from_name(*w);
+  } catch (const InvalidInput& e) {
+    r.fail("end", e.what());
+  }
 }
 
 bool has_dissipation(const Material& m) {
@@ -111,6 +134,23 @@ Material read_material(TomlReader& r) {
 
 class Parser {
  public:
+  // A scene file received from someone else must not write outside the folder it is run from: `output` is
+  // relative and never climbs (`..`); `run --output DIR` names any folder (the user's own choice).
+  void check_output_folder(const std::filesystem::path& output) {
+    if (output.is_absolute() || output.has_root_name() || output.has_root_directory()) {
+      root_.fail("output", fmt::format("\"{}\" is absolute: a scene writes under the working directory "
+                                       "(give a relative folder, or `restitution run FILE --output DIR`)",
+                                       output.string()));
+    }
+    for (const std::filesystem::path& part : output) {
+      if (part == "..") {
+        root_.fail("output", fmt::format("\"{}\" climbs out with '..': a scene writes under the working "
+                                         "directory (or `restitution run FILE --output DIR`)",
+                                         output.string()));
+      }
+    }
+  }
+
   Parser(const toml::table& root, std::string_view file_name) : root_(root, "", file_name) {}
 
   Scene parse() {
@@ -120,15 +160,18 @@ class Parser {
     const auto output = root_.text("output");
     if (!output || output->empty()) root_.fail("output", "missing: the folder to write to");
     scene_.output = *output;
-    scene_.tolerance = root_.number("tolerance").value_or(1e-10);
+    check_output_folder(scene_.output);
+    scene_.tolerance = root_.number("tolerance").value_or(SolveOptions{}.tolerance);
     if (scene_.tolerance < kMinTolerance || scene_.tolerance > kMaxTolerance) {
       root_.fail("tolerance", fmt::format("expected a value in [{:g}, {:g}]", kMinTolerance, kMaxTolerance));
     }
-    const std::string method = root_.text("method").value_or("auto");
-    if (method != "bdf" && method != "adams" && method != "auto") {
-      root_.fail("method", R"(expected "bdf", "adams" or "auto")");
+    if (const auto method = root_.text("method")) {
+      try {
+        scene_.method = method_from_name(*method);
+      } catch (const InvalidInput& e) {
+        root_.fail("method", e.what());
+      }
     }
-    scene_.method = method == "bdf" ? Method::bdf : method == "adams" ? Method::adams : Method::automatic;
     if (const toml::table* materials = root_.table("materials")) {
       for (const auto& [key, node] : *materials) {
         const std::string path = root_.child_path("materials") + "." + std::string(key.str());
@@ -260,8 +303,16 @@ class Parser {
                  fmt::format("unknown quantity \"{}\" (eps, one_minus_eps, duration, max_compression)", w));
       }
     }
+    s.law = read_law(r);
     const auto zeta = r.numbers("zeta");
     const auto velocity = r.numbers("velocity");
+    if (velocity && s.law != LawKind::viscoelastic_hertz) {
+      r.fail("velocity",
+             fmt::format("a sweep over impact speeds is for law \"viscoelastic-hertz\"; law \"{}\" "
+                         "sweeps zeta (`restitution sweep --law {} --stiffness ...` sweeps its "
+                         "impact speeds)",
+                         law_name(s.law), law_name(s.law)));
+    }
     s.beta = r.number("beta");
     s.material = read_material_name(r);
     require_dissipation(r, s.material, "a sweep");
@@ -272,6 +323,7 @@ class Parser {
       if (velocity || subjects > 0)
         r.fail("zeta", "give zeta alone, or velocity with one of beta, material, characteristic_velocity");
       check_zeta(r, *zeta);
+      check_law_zeta(r, s.law, s.ends, *zeta);
       s.zeta = *zeta;
     } else {
       if (!velocity) r.fail("", "give zeta, or velocity with one of beta, material, characteristic_velocity");
@@ -287,7 +339,19 @@ class Parser {
       for (const std::string& name : *names) s.approximations.push_back(approximation_from(r, name));
     }
     s.asymptotics = r.flag("asymptotics").value_or(false);
-    if (r.flag("compare_series").value_or(false)) {
+    const bool compare_series = r.flag("compare_series").value_or(false);
+    if (s.law != LawKind::viscoelastic_hertz) {
+      const char* hertz_only = !s.approximations.empty() ? "approximations"
+                               : s.asymptotics           ? "asymptotics"
+                               : compare_series          ? "compare_series"
+                                                         : nullptr;
+      if (hertz_only != nullptr) {
+        r.fail(hertz_only, fmt::format("the series and asymptotics are those of viscoelastic Hertz, not of "
+                                       "law \"{}\"",
+                                       law_name(s.law)));
+      }
+    }
+    if (compare_series) {
       if (s.ends.contains(CollisionEnd::naive))
         s.approximations.push_back(series::Approximation::naive_series);
       if (s.ends.contains(CollisionEnd::delayed_recovery))
@@ -328,6 +392,7 @@ class Parser {
   Trajectory read_trajectory(TomlReader& r) {
     Trajectory t;
     read_heading(r, "trajectory", t);
+    t.law = read_law(r);
     t.zeta = r.number("zeta");
     t.velocity_m_s = r.number("velocity");
     t.beta = r.number("beta");
@@ -337,7 +402,10 @@ class Parser {
       if (t.velocity_m_s || t.beta || t.material)
         r.fail("zeta", "give zeta alone, or velocity with beta or material");
       check_zeta(r, {*t.zeta});
+      check_law_zeta(r, t.law, t.ends, {*t.zeta});
     } else {
+      if (t.law != LawKind::viscoelastic_hertz)
+        r.fail("law", "a trajectory of a law other than viscoelastic-hertz takes zeta (its natural form)");
       if (!t.velocity_m_s) r.fail("", "give zeta, or velocity with beta or material");
       if (t.beta.has_value() == t.material.has_value())
         r.fail("velocity", "needs exactly one of beta, material");
@@ -351,6 +419,7 @@ class Parser {
     CalibrationTask c;
     c.line = r.line();
     c.name = read_name(r, "calibration");
+    c.law = read_law(r);
     const auto eps = r.number("eps");
     const auto velocity = r.number("velocity");
     if (!eps) r.fail("eps", "missing");
@@ -361,6 +430,8 @@ class Parser {
     c.velocity_m_s = *velocity;
     c.end = read_end(r);
     c.material = read_material_name(r);
+    if (c.material && c.law != LawKind::viscoelastic_hertz)
+      r.fail("material", "a material gives the dissipative constant A of law \"viscoelastic-hertz\" only");
     return c;
   }
 

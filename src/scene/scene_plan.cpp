@@ -50,8 +50,8 @@ PlannedPoint physical_point(double velocity_m_s, double beta, std::optional<doub
 
 }  // namespace
 
-EndSet dashpot_ends(EndSet requested, double damping_ratio) {
-  if (damping_ratio >= 1.0) requested.erase(CollisionEnd::naive);
+EndSet existing_ends(const ContactLaw& law, EndSet requested) {
+  if (!law.naive_end_may_exist()) requested.erase(CollisionEnd::naive);
   return requested;
 }
 
@@ -80,7 +80,7 @@ Plan plan_scene(const Scene& scene) {
       const std::string task = fmt::format("{}:{}: sweep {}", scene.file_name, s.line, s.name);
       for (const double v : s.velocity_m_s) points.push_back(physical_point(v, beta, k, task));
     }
-    for (PlannedPoint& p : points) p.job = table.add(ContactLaw::hertz_natural(p.parameter), s.ends, false);
+    for (PlannedPoint& p : points) p.job = table.add(ContactLaw::natural(s.law, p.parameter), s.ends, false);
     plan.sweeps.push_back(std::move(points));
   }
   for (const Trajectory& t : scene.trajectories) {
@@ -94,7 +94,7 @@ Plan plan_scene(const Scene& scene) {
                          c ? std::optional(c->hertz.k) : std::nullopt,
                          fmt::format("{}:{}: trajectory {}", scene.file_name, t.line, t.name));
     }
-    p.job = table.add(ContactLaw::hertz_natural(p.parameter), t.ends, true);
+    p.job = table.add(ContactLaw::natural(t.law, p.parameter), t.ends, true);
     plan.trajectories.push_back(p);
   }
   for (const DashpotCheck& d : scene.dashpots) {
@@ -102,8 +102,9 @@ Plan plan_scene(const Scene& scene) {
     for (const double r : d.damping_ratio) {
       PlannedPoint p;
       p.parameter = r;
-      const EndSet ends = dashpot_ends(d.ends, r);
-      if (!ends.empty()) p.job = table.add(ContactLaw::linear_dashpot(r), ends, false);
+      const ContactLaw law = ContactLaw::linear_dashpot(r);
+      const EndSet ends = existing_ends(law, d.ends);
+      if (!ends.empty()) p.job = table.add(law, ends, false);
       points.push_back(p);
     }
     plan.dashpots.push_back(std::move(points));

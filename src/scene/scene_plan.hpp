@@ -39,7 +39,8 @@ struct Plan {
 // line where the task starts and the task.
 Plan plan_scene(const Scene& scene);
 
-// The ends a dash-pot collision has: no naive end (x never returns to 0) for r >= 1.
-EndSet dashpot_ends(EndSet requested, double damping_ratio);
+// The requested ends a collision has: no naive end where the law rules it out before solving
+// (ContactLaw::naive_end_may_exist: the dash-pot at r >= 1, Tsuji at ζ >= √5; x never returns to 0).
+EndSet existing_ends(const ContactLaw& law, EndSet requested);
 
 }  // namespace restitution::scene

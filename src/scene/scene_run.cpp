@@ -91,6 +91,7 @@ SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& setting
   CollisionSolver solver;
   for (const CalibrationTask& task : scene.calibrations) {
     CalibrationRequest request;
+    request.law = task.law;
     request.eps = task.eps;
     request.velocity_m_s = task.velocity_m_s;
     request.end = task.end;

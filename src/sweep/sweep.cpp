@@ -12,9 +12,9 @@ namespace {
 
 class SweepRun {
  public:
-  SweepRun(const std::vector<double>& zetas, const SolveOptions& options, const SweepControl& control,
-           std::size_t skipped)
-      : zetas_(zetas), options_(options), control_(control), skipped_(skipped) {}
+  SweepRun(const std::vector<double>& zetas, LawKind law, const SolveOptions& options,
+           const SweepControl& control, std::size_t skipped)
+      : zetas_(zetas), law_(law), options_(options), control_(control), skipped_(skipped) {}
 
   SweepSummary run(unsigned threads) {
     detail::ParallelRun run{zetas_.size(), threads, control_.stop_requested};
@@ -39,7 +39,7 @@ class SweepRun {
     point.index = i;
     point.zeta = zetas_[i];
     try {
-      point.result = solver.solve(ContactLaw::hertz_natural(point.zeta), options_);
+      point.result = solver.solve(ContactLaw::natural(law_, point.zeta), options_);
     } catch (const NumericalFailure& e) {
       point.error = e.what();
     }
@@ -56,6 +56,7 @@ class SweepRun {
   }
 
   const std::vector<double>& zetas_;
+  LawKind law_;
   const SolveOptions& options_;
   const SweepControl& control_;
   std::size_t skipped_;  // points finished before this run, counted in the progress
@@ -65,17 +66,17 @@ class SweepRun {
 
 }  // namespace
 
-void check_sweep(const std::vector<double>& zetas, const SolveOptions& options) {
+void check_sweep(const std::vector<double>& zetas, const SolveOptions& options, LawKind law) {
   check_solve_options(options);
   for (const double zeta : zetas) {
     require_checked_zeta(zeta);
-    check_solvable(ContactLaw::hertz_natural(zeta), options);
+    check_solvable(ContactLaw::natural(law, zeta), options);
   }
 }
 
 SweepSummary run_sweep(const std::vector<double>& zetas, const SolveOptions& options,
-                       const SweepControl& control) {
-  check_sweep(zetas, options);
+                       const SweepControl& control, LawKind law) {
+  check_sweep(zetas, options, law);
   if (!control.already_done.empty() && control.already_done.size() != zetas.size()) {
     throw InvalidInput("already_done must be empty or hold one flag per point of the sweep");
   }
@@ -83,7 +84,7 @@ SweepSummary run_sweep(const std::vector<double>& zetas, const SolveOptions& opt
       static_cast<std::size_t>(std::count(control.already_done.begin(), control.already_done.end(), true));
   const std::size_t remaining = zetas.size() - skipped;
   SweepSummary summary =
-      SweepRun(zetas, options, control, skipped).run(detail::thread_count(control.threads, remaining));
+      SweepRun(zetas, law, options, control, skipped).run(detail::thread_count(control.threads, remaining));
   summary.skipped = skipped;
   summary.stopped = summary.stopped && summary.computed + skipped < zetas.size();
   return summary;

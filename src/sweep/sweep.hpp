@@ -65,12 +65,15 @@ struct SweepSummary {
 };
 
 // Throws InvalidInput naming the first ζ that is outside the checked range or that the options cannot be
-// solved at (e.g. the Taylor engine's naive end beyond ζ = 100): run it before writing anything.
-void check_sweep(const std::vector<double>& zetas, const SolveOptions& options);
+// solved at (e.g. the Taylor engine's naive end beyond ζ = 100, the dash-pot's naive end at r >= 1): run it
+// before writing anything. ζ is the natural form's (ContactLaw::natural) for every member of the family.
+void check_sweep(const std::vector<double>& zetas, const SolveOptions& options,
+                 LawKind law = LawKind::viscoelastic_hertz);
 
-// Solves the Hertz law at every ζ with the same options. Throws InvalidInput for bad options before any
-// point is computed; a NumericalFailure at one point marks that point failed and the sweep goes on.
+// Solves the law's natural form at every ζ with the same options. Throws InvalidInput for bad options
+// before any point is computed; a NumericalFailure at one point marks that point failed and the sweep goes
+// on.
 SweepSummary run_sweep(const std::vector<double>& zetas, const SolveOptions& options,
-                       const SweepControl& control);
+                       const SweepControl& control, LawKind law = LawKind::viscoelastic_hertz);
 
 }  // namespace restitution

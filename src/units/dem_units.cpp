@@ -46,7 +46,7 @@ double beta_of_coefficients(double elastic_coefficient, double damping_coefficie
   const double m = checked(effective_mass_kg, "effective_mass", false);
   const double k = checked(elastic_coefficient, "elastic_coefficient", false) / m;
   const double gamma = checked(damping_coefficient, "damping_coefficient", true) / m;
-  return gamma * std::pow(k, -0.6);
+  return beta_from_gamma(gamma, k);
 }
 
 }  // namespace restitution

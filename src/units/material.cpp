@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "restitution/errors.hpp"
+#include "restitution/units.hpp"
 
 namespace restitution {
 namespace {
@@ -13,10 +14,6 @@ void require_positive(double value, const char* key) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw InvalidInput(fmt::format("material: {} must be finite and > 0, got {}", key, value));
   }
-}
-
-double sphere_mass(double radius_m, double density_kg_m3) {
-  return 4.0 / 3.0 * M_PI * radius_m * radius_m * radius_m * density_kg_m3;
 }
 
 // 1999 paper Eq. 5 (A from the viscosities); it divides by ν², so ν = 0 has no finite A.
@@ -57,8 +54,8 @@ ElasticConstants elastic_constants(const Material& m) {
   } else {
     if (!m.density_kg_m3) throw InvalidInput("material: give density, or mass1 and mass2");
     require_positive(*m.density_kg_m3, "density");
-    mass1 = sphere_mass(m.radius1_m, *m.density_kg_m3);
-    mass2 = sphere_mass(m.radius2_m, *m.density_kg_m3);
+    mass1 = sphere_mass_kg(m.radius1_m, *m.density_kg_m3);
+    mass2 = sphere_mass_kg(m.radius2_m, *m.density_kg_m3);
   }
 
   ElasticConstants e;

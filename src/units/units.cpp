@@ -32,7 +32,7 @@ HertzConstants hertz_constants(double k, double dissipative_constant_s) {
   HertzConstants c;
   c.k = k;
   c.gamma = 1.5 * dissipative_constant_s * k;
-  c.beta = c.gamma * std::pow(k, -0.6);
+  c.beta = beta_from_gamma(c.gamma, k);
   return c;
 }
 
@@ -48,12 +48,35 @@ double dissipative_constant_from(double beta, double k) {
   return nonnegative(beta, "beta") / (1.5 * std::pow(positive(k, "k"), 0.4));
 }
 
+double hertz_modulus_pa(double effective_modulus_pa) {
+  return 4.0 / 3.0 * effective_modulus_pa;
+}
+
+double hertz_stiffness(double effective_modulus_pa, double effective_radius_m) {
+  return hertz_modulus_pa(effective_modulus_pa) * std::sqrt(effective_radius_m);
+}
+
+double sphere_mass_kg(double radius_m, double density_kg_m3) {
+  return 4.0 / 3.0 * M_PI * radius_m * radius_m * radius_m * density_kg_m3;
+}
+
+double beta_from_gamma(double gamma, double k) {
+  return gamma * std::pow(k, -0.6);
+}
+
 NaturalScales natural_scales(double k, double velocity_m_s) {
   positive(k, "k");
   positive(velocity_m_s, "velocity");
   NaturalScales s;
   s.length_m = std::pow(velocity_m_s * velocity_m_s / k, 0.4);
   s.time_s = s.length_m / velocity_m_s;
+  return s;
+}
+
+NaturalScales physical_scales(LawKind kind, const PhysicalCoefficients& c, double velocity_m_s) {
+  NaturalScales s;
+  s.time_s = physical_time_scale_s(kind, c.stiffness, c.effective_mass_kg, velocity_m_s);
+  s.length_m = velocity_m_s * s.time_s;
   return s;
 }
 
