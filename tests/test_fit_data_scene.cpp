@@ -61,14 +61,14 @@ TEST(FitDataScene, InlineDataWithAMaterialGiveA) {
   const fs::path out = scratch("inline");
   const fs::path scene =
       fs::temp_directory_path() / ("restitution-fit-inline-" + std::to_string(::getpid()) + ".toml");
-  std::ofstream(scene) << "title = \"t\"\noutput = \"" << out.string() << "\"\n"
+  std::ofstream(scene) << "title = \"t\"\noutput = \"fit-out\"\n"
                        << "[materials.rubber]\nyoung_modulus = 1e7\npoisson_ratio = 0.45\ndensity = 1100.0\n"
                           "radius = 0.01\ndissipative_constant = 5.8e-5\n"
                           "[[fit]]\nname = \"drops\"\nv = [0.2, 0.5, 1.0, 2.0, 5.0]\n"
                           "eps = [0.85, 0.82, 0.80, 0.78, 0.74]\nsigma = [0.01, 0.01, 0.01, 0.01, 0.01]\n"
                           "material = \"rubber\"\nlaws = [\"viscoelastic-hertz\"]\n";
   setenv("RESTITUTION_PYTHON", "/nonexistent/python3", 1);  // no plot needed here
-  const auto r = run_cli("run " + scene.string());
+  const auto r = run_cli("run " + scene.string() + " --output " + out.string());
   unsetenv("RESTITUTION_PYTHON");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto summary = nlohmann::json::parse(slurp((out / "summary.json").string()));
@@ -82,9 +82,9 @@ TEST(FitDataScene, BadDataAreRefusedBeforeAnythingIsWritten) {
   const fs::path out = scratch("bad");
   const fs::path scene =
       fs::temp_directory_path() / ("restitution-fit-bad-" + std::to_string(::getpid()) + ".toml");
-  std::ofstream(scene) << "title = \"t\"\noutput = \"" << out.string() << "\"\n"
+  std::ofstream(scene) << "title = \"t\"\noutput = \"fit-out\"\n"
                        << "[[fit]]\nname = \"drops\"\nv = [0.2, 0.5]\neps = [0.85, 1.5]\n";
-  const auto r = run_cli("run " + scene.string());
+  const auto r = run_cli("run " + scene.string() + " --output " + out.string());
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("fit[0].eps"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("point 1: eps"), std::string::npos) << r.err;
