@@ -9,6 +9,7 @@
 #include "dem/code_runner.hpp"
 #include "dem/deck.hpp"
 #include "dem/deck_eps.hpp"
+#include "dem/yade_versions.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/material.hpp"
 
@@ -31,7 +32,8 @@ struct LinesRequest {
   DampingSource damping;
   std::vector<double> speeds_m_s;  // empty: v/10, v, 10 v with v the reference speed
   double tolerance = 1e-10;
-  double friction = 0.0;  // Coulomb mu of the tangential model [1]
+  double friction = 0.0;     // Coulomb mu of the tangential model [1]
+  YadeVersion yade_version;  // the YADE the lines are for (YADE only)
 };
 
 struct SpeedEps {
@@ -55,6 +57,11 @@ struct LinesResult {
   std::vector<SpeedEps> eps;
   std::vector<SizeCheck> sizes;  // radii x0.5 and x2 at the reference speed
   std::optional<YadeCheck> yade;
+  // YADE: the version the lines (and `eps`) are for; when it cannot express the law (no vn), the deck that
+  // would give it on YADE 2024.02a or later, and that deck's ε(v) there.
+  std::optional<YadeVersion> yade_version;
+  std::optional<Deck> yade_exact_deck;
+  std::vector<SpeedEps> yade_exact_eps;
 };
 
 LinesResult check_lines(const LinesRequest& request);
