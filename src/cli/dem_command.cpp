@@ -13,6 +13,7 @@
 #include "cli/from_fit.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/material_options.hpp"
+#include "damping_check/yade_version_lines.hpp"
 #include "dem/lines_check.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
@@ -84,8 +85,12 @@ dem::LinesResult compute(DemOptions& o) {
   request.speeds_m_s = o.speeds;
   request.tolerance = o.tolerance;
   request.friction = o.friction;
-  if (request.code == dem::Code::yade) request.yade_version = target_yade(o);
-  return dem::check_lines(request);
+  // The targeted YADE first: a bad --yade-version is refused before any solve.
+  std::optional<dem::YadeVersion> yade;
+  if (request.code == dem::Code::yade) yade = target_yade(o);
+  dem::LinesResult r = dem::check_lines(request);
+  if (yade) damping_check::target_yade_version(r, *yade, o.tolerance);
+  return r;
 }
 
 void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optional<FromFit>& from_fit) {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "damping_check/inverse.hpp"
 #include "dem/yade_conversion.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/errors.hpp"
@@ -25,33 +24,6 @@ double dissipative_constant(const Material& material, const DampingSource& sourc
   request.k = elastic_constants(material).k;
   return *calibrate(request, solver).dissipative_constant_s;
 }
-
-namespace {
-
-// A YADE without vn gets the Tsuji-type betan that gives the law's ε at the reference speed (the
-// damping-check inverse of the thornton-2013 recipe, whose γ is YADE's betan): one ε at every speed and size,
-// stated as such.
-void yade_without_vn(LinesResult& r, double eps_at_reference, const std::vector<double>& speeds,
-                     const LinesRequest& request) {
-  damping_check::InverseRequest inverse;
-  inverse.recipe = damping_check::Recipe::thornton_2013;
-  inverse.target_eps = eps_at_reference;
-  inverse.target_velocity_m_s = r.reference_velocity_m_s;
-  inverse.clamp = damping_check::Clamp::on;  // YADE's Mindlin law ends at the delayed-recovery end
-  inverse.tolerance = request.tolerance;
-  CollisionSolver solver;
-  const damping_check::InverseResult found = damping_check::invert_recipe(inverse, solver);
-  const double betan = found.check.setting.code_value;
-  const double eps = found.check.points.front().actual_eps.value();
-  r.yade_exact_deck = r.deck;
-  r.yade_exact_eps = r.eps;
-  r.deck = yade_constant_eps_deck(r.deck, betan, eps, request.yade_version);
-  r.eps.clear();
-  for (const double s : speeds) r.eps.push_back({s, eps});
-  for (SizeCheck& s : r.sizes) s.eps_lines = eps;
-}
-
-}  // namespace
 
 LinesResult check_lines(const LinesRequest& request) {
   const Code code = request.code;
@@ -84,8 +56,6 @@ LinesResult check_lines(const LinesRequest& request) {
     y.eps_at_vn =
         eps_for(hertz_constants(k, y.dissipative_constant_s).beta, v, end, request.tolerance, solver);
     r.yade = y;
-    r.yade_version = request.yade_version;
-    if (!request.yade_version.has_vn()) yade_without_vn(r, y.true_eps, speeds, request);
   }
   return r;
 }

@@ -32,8 +32,7 @@ struct LinesRequest {
   DampingSource damping;
   std::vector<double> speeds_m_s;  // empty: v/10, v, 10 v with v the reference speed
   double tolerance = 1e-10;
-  double friction = 0.0;     // Coulomb mu of the tangential model [1]
-  YadeVersion yade_version;  // the YADE the lines are for (YADE only)
+  double friction = 0.0;  // Coulomb mu of the tangential model [1]
 };
 
 struct SpeedEps {
@@ -57,8 +56,9 @@ struct LinesResult {
   std::vector<SpeedEps> eps;
   std::vector<SizeCheck> sizes;  // radii x0.5 and x2 at the reference speed
   std::optional<YadeCheck> yade;
-  // YADE: the version the lines (and `eps`) are for; when it cannot express the law (no vn), the deck that
-  // would give it on YADE 2024.02a or later, and that deck's ε(v) there.
+  // YADE: the version the lines (and `eps`) are for, once damping_check::target_yade_version has set it; when
+  // it cannot express the law (no vn), the deck that would give it on YADE 2024.02a or later, and that deck's
+  // ε(v) there.
   std::optional<YadeVersion> yade_version;
   std::optional<Deck> yade_exact_deck;
   std::vector<SpeedEps> yade_exact_eps;

@@ -2,11 +2,9 @@
 
 #include <fmt/core.h>
 
-#include <array>
-#include <cstdio>
-#include <memory>
 #include <regex>
 
+#include "dem/process_output.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::dem {
@@ -27,11 +25,7 @@ YadeVersion yade_version_from_name(std::string_view text) {
 
 std::optional<YadeVersion> yade_version_on_path() {
   // yade prints its banner noise on stderr; only the "Yade version: ..." line matters.
-  const std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen("yade --version 2>/dev/null", "r"), pclose);
-  if (!pipe) return std::nullopt;
-  std::string out;
-  std::array<char, 512> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe.get()) != nullptr) out += buffer.data();
+  const std::string out = output_of("yade --version 2>/dev/null");
   const auto at = out.find("Yade version:");
   if (at == std::string::npos) return std::nullopt;
   return parse_yade_version(std::string_view(out).substr(at));

@@ -16,29 +16,16 @@
 #include "cli_runner.hpp"
 #include "dem/code_runner.hpp"
 #include "dem/deck.hpp"
+#include "dem/steel_beads.hpp"
 #include "restitution/material.hpp"
 
 namespace {
 
 using nlohmann::json;
-
-// Steel beads, as in dem_integration.cpp.
-constexpr double kYoungPa = 2.1e11, kPoisson = 0.3, kRadiusM = 0.005, kDensity = 7850.0;
-
-restitution::dem::Pair steel() {
-  restitution::Material material;
-  material.young_modulus_pa = kYoungPa;
-  material.poisson_ratio = kPoisson;
-  material.radius1_m = material.radius2_m = kRadiusM;
-  material.density_kg_m3 = kDensity;
-  return restitution::dem::pair_of(material);
-}
-
-json run_json(const std::string& arguments) {
-  const auto r = restitution::test_support::run_cli(arguments);
-  EXPECT_EQ(r.status, 0) << arguments << ": " << r.err;
-  return json::parse(r.out);
-}
+using restitution::test_support::kPoisson;
+using restitution::test_support::kYoungPa;
+using restitution::test_support::run_json;
+using restitution::test_support::steel;
 
 // LAMMPS' extrapolated ε at `speeds` agrees with `predicted` within 1e-6 min(ε, 1 - ε).
 void expect_lammps_gives(const restitution::dem::Deck& deck, const std::vector<double>& speeds,
