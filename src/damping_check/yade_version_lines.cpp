@@ -1,21 +1,12 @@
 #include "damping_check/yade_version_lines.hpp"
 
-#include <fmt/core.h>
-
 #include "damping_check/inverse.hpp"
 
 namespace restitution::damping_check {
 
 void target_yade_version(dem::LinesResult& r, const dem::YadeVersion& version, double tolerance) {
   r.yade_version = version;
-  if (version.has_vn()) {
-    r.deck.notes.push_back(
-        fmt::format("for YADE {}: vn exists from YADE 2024.02a on (older versions, such as Debian 12's "
-                    "2023.02a, reject it: "
-                    "--yade-version 2023.02a prints what they can do)",
-                    version.text));
-    return;
-  }
+  if (version.has_vn()) return;  // the exact lines, whose notes say which versions take vn
   InverseRequest inverse;
   inverse.recipe = Recipe::thornton_2013;
   inverse.target_eps = r.yade.value().true_eps;  // the law's ε at the reference speed

@@ -51,7 +51,9 @@ Deck yade_constant_eps_deck(const Deck& exact, double betan, double eps, const Y
       "the exact viscoelastic law eps(v) needs YADE 2024.02a or later: `restitution dem --code yade "
       "--yade-version 2024.02a` prints its (en, vn) lines"};
   for (const std::string& note : exact.notes) {
-    if (note.find("beta = sigma^2") == std::string::npos) d.notes.push_back(note);
+    // The notes on vn's conversion and availability are the exact lines' own.
+    if (note.find("beta = sigma^2") == std::string::npos && note.find("vn exists") == std::string::npos)
+      d.notes.push_back(note);
   }
   return d;
 }
