@@ -15,6 +15,7 @@
 
 #include "cli_runner.hpp"
 #include "damping_check/check.hpp"
+#include "damping_check/inverse.hpp"
 #include "damping_check/recipes.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"
@@ -165,6 +166,55 @@ TEST(DampingRecipes, NamesRoundTripAndUnknownOnesListTheRecipes) {
   EXPECT_THROW((void)speed_grid(1.0, 0.5, 3), InvalidInput);
 }
 
+// The inverse gives back its target: the request it finds, checked forward, gives the target ε at the target
+// speed, for every recipe and clamp; elsewhere a speed-dependent recipe's ε moves with the speed.
+TEST(DampingInverse, RequestFoundGivesTheTargetForEveryRecipe) {
+  CollisionSolver solver;
+  for (const Recipe recipe : kRecipes) {
+    for (const Clamp clamp : {Clamp::on, Clamp::off}) {
+      InverseRequest r;
+      r.recipe = recipe;
+      r.target_eps = 0.7;
+      r.target_velocity_m_s = 2.0;
+      r.clamp = clamp;
+      r.speeds_m_s = {0.2, 2.0, 20.0};
+      const InverseResult inv = invert_recipe(r, solver);
+      const std::string what = std::string(recipe_name(recipe)) + " clamp " + clamp_name(clamp);
+      CheckRequest forward;
+      forward.recipe = recipe;
+      forward.eps_requested = inv.eps_to_request;
+      forward.clamps = {clamp};
+      forward.reference_velocity_m_s = 2.0;
+      forward.speeds_m_s = {2.0};
+      EXPECT_NEAR(check_recipe(forward, solver).points.front().actual_eps.value(), 0.7, 1e-9) << what;
+      const auto& points = inv.check.points;
+      if (inv.check.setting.speed_independent()) {
+        ASSERT_EQ(points.size(), 1U) << what;
+        EXPECT_NEAR(points[0].actual_eps.value(), 0.7, 1e-9) << what;
+      } else {
+        ASSERT_EQ(points.size(), 3U) << what;
+        EXPECT_NEAR(points[1].actual_eps.value(), 0.7, 1e-9) << what;
+        EXPECT_GT(points[0].actual_eps.value(), points[2].actual_eps.value()) << what;  // ε falls with v
+      }
+    }
+  }
+}
+
+TEST(DampingInverse, TargetOutOfReachNamesTheRange) {
+  CollisionSolver solver;
+  InverseRequest r;
+  r.recipe = Recipe::lammps_tsuji;  // α(0) = 1.27 is the most it damps: small ε are out of reach
+  r.target_eps = 0.01;
+  try {
+    (void)invert_recipe(r, solver);
+    FAIL() << "no throw";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("out of reach"), std::string::npos) << e.what();
+  }
+  r.target_eps = 1.0;
+  EXPECT_THROW((void)invert_recipe(r, solver), InvalidInput);
+}
+
 TEST(DampingCheckCli, JsonHasTheContractFields) {
   const auto r = test_support::run_cli(
       "damping-check --recipe yade-pade-3-6 --eps 0.8 --velocity-min 0.1 --velocity-max 10 --points 3 "
@@ -177,9 +227,13 @@ TEST(DampingCheckCli, JsonHasTheContractFields) {
   ASSERT_EQ(out.at("points").size(), 6U);
   for (const auto& p : out.at("points")) {
     const double eps = p.at("actual_eps");
-    EXPECT_NEAR(p.at("relative_error").get<double>(), (eps - 0.8) / 0.8, 1e-15);
+    const double at_cal = p.at("eps_at_calibration_speed");
+    EXPECT_NEAR(p.at("recipe_error_at_calibration_speed").get<double>(), (at_cal - 0.8) / 0.8, 1e-15);
+    EXPECT_NEAR(p.at("speed_dependence").get<double>(), eps / at_cal - 1.0, 1e-15);
     EXPECT_GT(p.at("velocity_m_s").get<double>(), 0.0);
   }
+  // The middle of the three log-spaced speeds is the calibration speed (1 m/s): no speed dependence there.
+  EXPECT_NEAR(out.at("points")[1].at("speed_dependence").get<double>(), 0.0, 1e-15);
   const auto tsuji =
       test_support::run_cli("damping-check --recipe lammps-tsuji --eps 0.5 --clamp off --json");
   ASSERT_EQ(tsuji.status, 0) << tsuji.err;

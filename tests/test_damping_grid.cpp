@@ -36,9 +36,10 @@ TEST(DampingGrid, ValuesAreTheRecipeChecksAndErrorsTheirRelativeDifferences) {
   const RecipeGrid& tsuji = r.recipes[0];
   const RecipeGrid& visco = r.recipes[1];
   EXPECT_TRUE(tsuji.speed_independent);
-  EXPECT_TRUE(tsuji.relative_error.empty());
+  EXPECT_TRUE(tsuji.speed_dependence.empty());
+  ASSERT_EQ(tsuji.recipe_error_at_calibration_speed.size(), 2U);
   EXPECT_FALSE(visco.speed_independent);
-  ASSERT_EQ(visco.relative_error.size(), 2U);
+  ASSERT_EQ(visco.speed_dependence.size(), 2U);
   for (std::size_t k = 0; k < g.eps.size(); ++k) {
     const double e = g.eps[k];
     EXPECT_EQ(tsuji.at_reference[k].on.front(), actual(Recipe::lammps_tsuji, e, Clamp::on, 2.0, 2.0, solver));
@@ -46,8 +47,15 @@ TEST(DampingGrid, ValuesAreTheRecipeChecksAndErrorsTheirRelativeDifferences) {
               actual(Recipe::lammps_viscoelastic, e, Clamp::off, 2.0, 2.0, solver));
     for (std::size_t i = 0; i < g.speeds_m_s.size(); ++i) {
       const double a = actual(Recipe::lammps_viscoelastic, e, Clamp::on, g.speeds_m_s[i], 2.0, solver);
-      EXPECT_EQ(visco.relative_error[k].on[i], (a - e) / e);
+      const double at_ref = visco.at_reference[k].on.front();
+      EXPECT_EQ(visco.speed_dependence[k].on[i], a / at_ref - 1.0);
+      // The two parts multiply back to the total error against the request.
+      EXPECT_NEAR((1.0 + visco.recipe_error_at_calibration_speed[k].on.front()) *
+                      (1.0 + visco.speed_dependence[k].on[i]),
+                  a / e, 1e-14);
     }
+    EXPECT_EQ(tsuji.recipe_error_at_calibration_speed[k].on.front(),
+              tsuji.at_reference[k].on.front() / e - 1.0);
     // Calibrated at v_ref for the delayed-recovery end: exact there with the clamp (to the tolerance).
     EXPECT_NEAR(visco.at_reference[k].on.front(), e, 1e-8);
   }

@@ -1,7 +1,10 @@
-"""Heat map of a damping recipe's relative error over requested eps x impact speed (restitution run, [[damping_check]]).
+"""A speed-dependent damping recipe's two errors (restitution run, [[damping_check]]): top, its own error at the
+set-up speed over requested eps (a line per clamp); bottom, heat maps of the physical speed dependence
+eps(v)/eps(v_ref) - 1 over requested eps x impact speed, one per clamp.
 
 usage: damping_heatmap.py CSV PNG [--title T]
-The CSV has requested_eps, velocity_m_s, relative_error_clamp_on, relative_error_clamp_off (one row per point).
+The CSV has requested_eps, velocity_m_s, recipe_error_at_calibration_speed_clamp_on|off,
+speed_dependence_clamp_on|off (one row per point; the recipe error repeats along the speeds).
 """
 import argparse
 import csv
@@ -35,21 +38,33 @@ def main():
         rows = list(csv.DictReader(f))
     eps = sorted({float(r["requested_eps"]) for r in rows})
     speeds = sorted({float(r["velocity_m_s"]) for r in rows})
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5), sharey=True)
-    for ax, clamp in zip(axes, ("on", "off")):
+    fig = plt.figure(figsize=(11, 8))
+    top = fig.add_subplot(2, 1, 1)
+    for clamp, style in (("on", "-o"), ("off", "--s")):
+        by_eps = {float(r["requested_eps"]): float(r["recipe_error_at_calibration_speed_clamp_" + clamp])
+                  for r in rows}
+        top.plot(eps, [by_eps[e] for e in eps], style, label="clamp " + clamp)
+    top.axhline(0.0, color="grey", linewidth=0.8)
+    top.set_xlabel("requested eps")
+    top.set_ylabel("eps(v_ref) / requested - 1")
+    top.set_title("recipe error at the set-up speed")
+    top.legend()
+    for index, clamp in enumerate(("on", "off")):
+        ax = fig.add_subplot(2, 2, 3 + index)
         grid = [[math.nan] * len(eps) for _ in speeds]
         for r in rows:
             grid[speeds.index(float(r["velocity_m_s"]))][eps.index(float(r["requested_eps"]))] = float(
-                r["relative_error_clamp_" + clamp])
+                r["speed_dependence_clamp_" + clamp])
         finite = [abs(v) for line in grid for v in line if math.isfinite(v)] or [1.0]
         bound = max(max(finite), 1e-12)
         mesh = ax.pcolormesh(edges(eps, False), edges(speeds, True), grid, shading="flat", cmap="RdBu_r",
                              norm=TwoSlopeNorm(vcenter=0.0, vmin=-bound, vmax=bound))
         ax.set_yscale("log")
         ax.set_xlabel("requested eps")
-        ax.set_title("clamp " + clamp)
-        fig.colorbar(mesh, ax=ax, label="(actual - requested) / requested")
-    axes[0].set_ylabel("impact speed v [m/s]")
+        if index == 0:
+            ax.set_ylabel("impact speed v [m/s]")
+        ax.set_title("speed dependence, clamp " + clamp)
+        fig.colorbar(mesh, ax=ax, label="eps(v) / eps(v_ref) - 1")
     fig.suptitle(a.title)
     fig.tight_layout()
     fig.savefig(a.png, dpi=120)

@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/json_writer.hpp"
 #include "damping_check/check.hpp"
+#include "damping_check/inverse.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 
@@ -24,6 +25,7 @@ using damping_check::CheckResult;
 struct DampingCheckOptions {
   std::string recipe;
   std::optional<double> eps;
+  std::optional<double> target_eps;  // the inverse: the ε wanted at --velocity
   std::string clamp = "both";
   double velocity = 1.0;  // reference speed of the speed-dependent recipes [m/s]
   double velocity_min = 0.1, velocity_max = 10.0;
@@ -61,7 +63,9 @@ void write_points(JsonWriter& json, const CheckResult& r, double requested) {
     optional_field(json, "velocity_m_s", p.velocity_m_s);
     json.field("zeta", p.zeta);
     optional_field(json, "actual_eps", p.actual_eps);
-    optional_field(json, "relative_error", p.relative_error(requested));
+    optional_field(json, "eps_at_calibration_speed", p.eps_at_calibration);
+    optional_field(json, "recipe_error_at_calibration_speed", p.recipe_error_at_calibration_speed(requested));
+    optional_field(json, "speed_dependence", p.speed_dependence());
     json.end_object();
   }
   json.end_array();
@@ -101,6 +105,28 @@ std::string speed_text(const CheckPoint& p) {
   return p.velocity_m_s ? fmt::format("{:.6g}", *p.velocity_m_s) : "any";
 }
 
+void print_table_header() {
+  fmt::print(
+      "# recipe_error_at_calibration_speed = eps(v_cal) / requested - 1 (the recipe's own error where it "
+      "is set up);\n# speed_dependence = eps(v) / eps(v_cal) - 1 (the law's physics away from there)\n");
+  fmt::print("{:>13} {:>5} {:>10} {:>14} {:>14} {:>33} {:>16}\n", "requested_eps", "clamp", "v_m_s", "zeta",
+             "actual_eps", "recipe_error_at_calibration_speed", "speed_dependence");
+}
+
+void print_row(double requested, const CheckPoint& p) {
+  if (!p.actual_eps) {
+    fmt::print("{:>13.10g} {:>5} {:>10} {:>14.8g}  none: overdamped, the overlap never returns to 0\n",
+               requested, damping_check::clamp_name(p.clamp), speed_text(p), p.zeta);
+    return;
+  }
+  const auto text = [](const std::optional<double>& v) {
+    return v ? fmt::format("{:+.6e}", *v) : std::string("none");
+  };
+  fmt::print("{:>13.10g} {:>5} {:>10} {:>14.8g} {:>14.10f} {:>33} {:>16}\n", requested,
+             damping_check::clamp_name(p.clamp), speed_text(p), p.zeta, *p.actual_eps,
+             text(p.recipe_error_at_calibration_speed(requested)), text(p.speed_dependence()));
+}
+
 void print_text(const DampingCheckOptions& o, const std::vector<double>& eps,
                 const std::vector<CheckResult>& results) {
   const damping_check::RecipeSetting& s = results.front().setting;
@@ -117,26 +143,76 @@ void print_text(const DampingCheckOptions& o, const std::vector<double>& eps,
     fmt::print("# requested eps {}: {} = {:.10g}, zeta_ref = {:.10g}\n", eps[0], s.code_value_name,
                s.code_value, s.zeta_reference);
   }
-  fmt::print("{:>13} {:>5} {:>10} {:>14} {:>14} {:>15}\n", "requested_eps", "clamp", "v_m_s", "zeta",
-             "actual_eps", "relative_error");
+  print_table_header();
   for (std::size_t i = 0; i < eps.size(); ++i) {
-    for (const CheckPoint& p : results[i].points) {
-      if (!p.actual_eps) {
-        fmt::print("{:>13.6g} {:>5} {:>10} {:>14.8g}  none: overdamped, the overlap never returns to 0\n",
-                   eps[i], damping_check::clamp_name(p.clamp), speed_text(p), p.zeta);
-        continue;
-      }
-      fmt::print("{:>13.6g} {:>5} {:>10} {:>14.8g} {:>14.10f} {:>+15.6e}\n", eps[i],
-                 damping_check::clamp_name(p.clamp), speed_text(p), p.zeta, *p.actual_eps,
-                 *p.relative_error(eps[i]));
-    }
+    for (const CheckPoint& p : results[i].points) print_row(eps[i], p);
   }
 }
 
-int run(const DampingCheckOptions& o) {
-  if (o.map == o.eps.has_value()) {
-    throw InvalidInput("give either --eps E (one requested eps) or --map (requested eps from 0.05 to 0.99)");
+// --target-eps: per clamp, the ε to request and what it then gives over the speed grid.
+int run_inverse(const DampingCheckOptions& o) {
+  CollisionSolver solver;
+  std::vector<damping_check::InverseResult> results;
+  damping_check::InverseRequest r;
+  r.recipe = damping_check::recipe_from_name(o.recipe);
+  r.target_eps = *o.target_eps;
+  r.target_velocity_m_s = o.velocity;
+  r.speeds_m_s = damping_check::speed_grid(o.velocity_min, o.velocity_max, o.points);
+  r.tolerance = o.tolerance;
+  for (const damping_check::Clamp clamp : damping_check::clamps_from_name(o.clamp)) {
+    r.clamp = clamp;
+    results.push_back(damping_check::invert_recipe(r, solver));
   }
+  const damping_check::RecipeSetting& s = results.front().check.setting;
+  if (o.json) {
+    JsonWriter json;
+    json.begin_object().field("recipe", damping_check::recipe_name(s.recipe));
+    json.field("source", damping_check::recipe_source(s.recipe)).field("law", law_name(s.law));
+    json.field("speed_independent", s.speed_independent()).field("clamp", o.clamp);
+    json.field("target_eps", r.target_eps).field("target_velocity_m_s", r.target_velocity_m_s);
+    json.key("inverse").begin_array();
+    for (const auto& inv : results) {
+      const damping_check::RecipeSetting& setting = inv.check.setting;
+      json.begin_object().field("clamp", damping_check::clamp_name(inv.check.points.front().clamp));
+      json.field("eps_to_request", inv.eps_to_request).field(setting.code_value_name, setting.code_value);
+      json.field("zeta_reference", setting.zeta_reference);
+      write_points(json, inv.check, inv.eps_to_request);
+      json.end_object();
+    }
+    json.end_array();
+    write_sundials_build(json);
+    json.end_object();
+    fmt::print("{}\n", json.str());
+    return 0;
+  }
+  fmt::print("# recipe {}: {}\n", damping_check::recipe_name(s.recipe),
+             damping_check::recipe_source(s.recipe));
+  fmt::print("# inverse: the eps to request for eps = {} at {:g} m/s{}\n", r.target_eps,
+             r.target_velocity_m_s,
+             s.speed_independent() ? " (speed-independent: at every speed)"
+                                   : " (the recipe set up there: its reference speed, YADE's vn)");
+  for (const auto& inv : results) {
+    fmt::print("# clamp {}: request eps {:.12g} ({} = {:.10g}, zeta_ref = {:.10g})\n",
+               damping_check::clamp_name(inv.check.points.front().clamp), inv.eps_to_request,
+               inv.check.setting.code_value_name, inv.check.setting.code_value,
+               inv.check.setting.zeta_reference);
+  }
+  print_table_header();
+  for (const auto& inv : results) {
+    for (const CheckPoint& p : inv.check.points) print_row(inv.eps_to_request, p);
+  }
+  return 0;
+}
+
+int run(const DampingCheckOptions& o) {
+  if (static_cast<int>(o.map) + static_cast<int>(o.eps.has_value()) +
+          static_cast<int>(o.target_eps.has_value()) !=
+      1) {
+    throw InvalidInput(
+        "give one of --eps E (one requested eps), --map (requested eps from 0.05 to 0.99) or --target-eps E "
+        "(the eps to request for E at --velocity)");
+  }
+  if (o.target_eps) return run_inverse(o);
   const std::vector<double> eps = o.map ? damping_check::map_eps_grid() : std::vector<double>{*o.eps};
   CollisionSolver solver;
   std::vector<CheckResult> results;
@@ -159,12 +235,15 @@ void add_damping_check_command(CLI::App& app, Action& chosen) {
       "the eps a DEM code's damping recipe really gives for a requested eps, clamp on and off");
   cmd->add_option("--recipe", o->recipe, "recipe: " + damping_check::recipe_names())->required();
   cmd->add_option("--eps", o->eps, "requested coefficient of restitution in (0, 1)");
+  cmd->add_option("--target-eps", o->target_eps,
+                  "the inverse: the eps to request so that the recipe gives this eps at --velocity");
   cmd->add_flag("--map", o->map, "check the requested eps 0.05, 0.10, ..., 0.95, 0.99 instead of --eps");
   cmd->add_option("--clamp", o->clamp,
                   "force clamped at zero: on (delayed-recovery end), off (naive end) or both")
       ->capture_default_str();
   cmd->add_option("--velocity", o->velocity,
-                  "reference impact speed in m/s the speed-dependent recipes are set up at (YADE's vn)")
+                  "reference impact speed in m/s the speed-dependent recipes are set up at (YADE's vn); "
+                  "with --target-eps the speed of the target")
       ->capture_default_str();
   cmd->add_option("--velocity-min", o->velocity_min, "smallest impact speed in m/s")->capture_default_str();
   cmd->add_option("--velocity-max", o->velocity_max, "largest impact speed in m/s")->capture_default_str();
@@ -172,7 +251,8 @@ void add_damping_check_command(CLI::App& app, Action& chosen) {
       ->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")
       ->capture_default_str();
-  cmd->add_flag("--json", o->json, "print one JSON object (numbers in the shortest form that reads back to the same double)");
+  cmd->add_flag("--json", o->json,
+                "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, &chosen] { chosen = [o] { return run(*o); }; });
 }
 

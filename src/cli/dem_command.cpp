@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/build_json.hpp"
@@ -12,6 +13,7 @@
 #include "cli/from_fit.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/material_options.hpp"
+#include "damping_check/yade_version_lines.hpp"
 #include "dem/lines_check.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
@@ -31,7 +33,24 @@ struct DemOptions {
   bool json = false;
   std::string from_fit;  // fit-data --output FILE: A (and the end) from a fit, with its uncertainty
   bool end_given = false;
+  std::string yade_version;  // --yade-version; empty: the yade on PATH
+  std::string yade_source;   // how the targeted YADE was chosen (set by target_yade)
 };
+
+// The YADE the lines are for: --yade-version, else `yade --version` of the one on PATH, else the newest
+// lines (2024.02a, the exact law). The second member says which.
+dem::YadeVersion target_yade(DemOptions& o) {
+  if (!o.yade_version.empty()) {
+    o.yade_source = "--yade-version";
+    return dem::yade_version_from_name(o.yade_version);
+  }
+  if (auto on_path = dem::yade_version_on_path()) {
+    o.yade_source = "yade on PATH";
+    return *on_path;
+  }
+  o.yade_source = "no yade on PATH: the lines of YADE 2024.02a and later";
+  return {};
+}
 
 // --from-fit: the fit's Hertz β (at --end when given, else the lowest AIC) becomes A for this material.
 struct FromFit {
@@ -58,7 +77,7 @@ std::vector<double> speeds_of(const dem::LinesResult& r) {
   return out;
 }
 
-dem::LinesResult compute(const DemOptions& o) {
+dem::LinesResult compute(DemOptions& o) {
   dem::LinesRequest request;
   request.code = dem::code_from_name(o.code);
   request.end = end_from_name(o.end);
@@ -67,7 +86,12 @@ dem::LinesResult compute(const DemOptions& o) {
   request.speeds_m_s = o.speeds;
   request.tolerance = o.tolerance;
   request.friction = o.friction;
-  return dem::check_lines(request);
+  // The targeted YADE first: a bad --yade-version is refused before any solve.
+  std::optional<dem::YadeVersion> yade;
+  if (request.code == dem::Code::yade) yade = target_yade(o);
+  dem::LinesResult r = dem::check_lines(request);
+  if (yade) damping_check::target_yade_version(r, *yade, o.tolerance);
+  return r;
 }
 
 void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optional<FromFit>& from_fit) {
@@ -98,7 +122,21 @@ void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optio
     json.field("eps_lines", s.eps_lines).field("eps_law", s.eps_law).end_object();
   }
   json.end_array();
-  if (r.yade) {
+  if (r.yade_version) {
+    json.field("yade_version", r.yade_version->text).field("yade_version_source", o.yade_source);
+  }
+  if (r.yade_exact_deck) {
+    // Not these lines: the ones YADE 2024.02a and later take for the exact law, and the ε(v) they give there.
+    json.key("yade_exact_law").begin_object().field("needs_yade", "2024.02a");
+    json.key("lines").begin_array();
+    for (const auto& line : r.yade_exact_deck->lines) json.value(line);
+    json.end_array();
+    json.key("eps").begin_array();
+    for (const auto& e : r.yade_exact_eps)
+      json.begin_object().field("velocity_m_s", e.velocity_m_s).field("eps", e.eps).end_object();
+    json.end_array().end_object();
+  }
+  if (r.yade && !r.yade_exact_deck) {
     json.key("yade_own_conversion").begin_object();
     json.field("en", r.yade->true_eps).field("vn", r.reference_velocity_m_s);
     json.field("dissipative_constant_s", r.yade->dissipative_constant_s);
@@ -115,6 +153,12 @@ void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optio
   const char* c = cpp ? "//" : "#";
   fmt::print("{} restitution dem --code {}: viscoelastic Hertz law, A = {:.10g} s, {} end\n", c,
              dem::code_name(r.deck.code), r.dissipative_constant_s, end_name(r.deck.end));
+  if (r.yade_version) {
+    fmt::print("{} for YADE {} ({}){}\n", c, r.yade_version->text, o.yade_source,
+               r.yade_exact_deck
+                   ? ": it cannot express this law; the lines below give the eps printed after them"
+                   : "");
+  }
   for (const auto& p : r.deck.parameters) fmt::print("{} {} = {}: {}\n", c, p.name, p.value, p.meaning);
   for (const auto& n : r.deck.notes) fmt::print("{} {}\n", c, n);
   for (const auto& line : r.deck.lines) fmt::print("{}\n", line);
@@ -126,7 +170,15 @@ void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optio
     fmt::print("{}   radii x{:<4g} eps = {:.10g}, the law gives {:.10g}\n", c, s.radius_factor, s.eps_lines,
                s.eps_law);
   }
-  if (r.yade) {
+  if (r.yade_exact_deck) {
+    fmt::print("{} on YADE 2024.02a or later these lines give the law itself (not runnable on YADE {}):\n", c,
+               r.yade_version->text);
+    for (const auto& line : r.yade_exact_deck->lines) fmt::print("{}   {}\n", c, line);
+    fmt::print("{} and there give:", c);
+    for (const auto& e : r.yade_exact_eps) fmt::print(" eps({:g} m/s) = {:.10f}", e.velocity_m_s, e.eps);
+    fmt::print("\n");
+  }
+  if (r.yade && !r.yade_exact_deck) {
     fmt::print(
         "{} YADE's own conversion of the true (en = {:.10g}, vn = {:g} m/s) gives A = {:.10g} s ({:+.3g} "
         "%),\n",
@@ -170,6 +222,9 @@ void add_dem_command(CLI::App& app, Action& chosen) {
                   "Coulomb friction coefficient mu >= 0 of the tangential model (0: frictionless); it does "
                   "not change the head-on eps")
       ->capture_default_str();
+  cmd->add_option("--yade-version", o->yade_version,
+                  "YADE version the yade lines are for, e.g. 2023.02a (no vn: a constant eps) or 2024.02a "
+                  "(default: yade --version on PATH)");
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, cmd, &chosen] {

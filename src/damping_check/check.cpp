@@ -72,18 +72,24 @@ CheckResult check_recipe(const CheckRequest& request, CollisionSolver& solver) {
       throw InvalidInput("no impact speed to check this speed-dependent recipe at");
     speeds.assign(request.speeds_m_s.begin(), request.speeds_m_s.end());
   }
-  for (Clamp clamp : request.clamps) {
+  // The ε of the member with damping ζ at the end `clamp` gives; empty where that end does not exist.
+  const auto eps_for = [&](double zeta, Clamp clamp) -> std::optional<double> {
+    require_checked_zeta(zeta);
+    const ContactLaw law = ContactLaw::natural(result.setting.law, zeta);
+    if (clamp == Clamp::off && !law.naive_end_may_exist()) return std::nullopt;
     options.ends = EndSet{end_for(clamp)};
+    return end_of(solver.solve(law, options), end_for(clamp)).eps;
+  };
+  for (Clamp clamp : request.clamps) {
+    // At the reference speed ζ is zeta_reference, the recipe's own setting (also when speed-independent).
+    const std::optional<double> at_calibration = eps_for(result.setting.zeta_reference, clamp);
     for (const auto& v : speeds) {
       CheckPoint p;
       p.clamp = clamp;
       p.velocity_m_s = v;
       p.zeta = v ? result.setting.zeta_at(*v, request.reference_velocity_m_s) : result.setting.zeta_reference;
-      require_checked_zeta(p.zeta);
-      const ContactLaw law = ContactLaw::natural(result.setting.law, p.zeta);
-      if (clamp == Clamp::on || law.naive_end_may_exist()) {
-        p.actual_eps = end_of(solver.solve(law, options), end_for(clamp)).eps;
-      }
+      p.actual_eps = eps_for(p.zeta, clamp);
+      p.eps_at_calibration = at_calibration;
       result.points.push_back(p);
     }
   }

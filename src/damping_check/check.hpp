@@ -34,10 +34,20 @@ struct CheckPoint {
   // Empty where the end does not exist: without the clamp, a Tsuji member with ζ >= sqrt(5) is overdamped
   // and the overlap never returns to 0 (the spheres never separate: ε = 0 in the limit).
   std::optional<double> actual_eps;
-  // (actual - requested) / requested, empty with actual_eps.
-  [[nodiscard]] std::optional<double> relative_error(double requested) const {
-    if (!actual_eps) return std::nullopt;
-    return (*actual_eps - requested) / requested;
+  // The ε of the same clamp at the calibration speed (the reference speed the recipe is set up at; for a
+  // speed-independent recipe the one ε). Empty where that end does not exist.
+  std::optional<double> eps_at_calibration;
+  // Two different things, kept apart (docs/damping.md): the recipe's own error where it is set up,
+  // (ε(v_cal) - requested) / requested, and the physical speed dependence of ε away from there,
+  // ε(v) / ε(v_cal) - 1 (0 for a speed-independent recipe). Their product form:
+  // ε(v) / requested = (1 + recipe error) (1 + speed dependence). Empty where an end does not exist.
+  [[nodiscard]] std::optional<double> recipe_error_at_calibration_speed(double requested) const {
+    if (!eps_at_calibration) return std::nullopt;
+    return (*eps_at_calibration - requested) / requested;
+  }
+  [[nodiscard]] std::optional<double> speed_dependence() const {
+    if (!actual_eps || !eps_at_calibration) return std::nullopt;
+    return *actual_eps / *eps_at_calibration - 1.0;
   }
 };
 

@@ -23,11 +23,12 @@ ByClamp actual(Recipe recipe, double eps, const std::vector<double>& speeds, con
   return by_clamp;
 }
 
-std::vector<double> relative_errors(const std::vector<double>& actual, double requested) {
-  std::vector<double> errors;
-  errors.reserve(actual.size());
-  for (const double a : actual) errors.push_back((a - requested) / requested);
-  return errors;
+// value / reference - 1 for each value (NaN stays NaN).
+std::vector<double> ratios_minus_one(const std::vector<double>& values, double reference) {
+  std::vector<double> out;
+  out.reserve(values.size());
+  for (const double v : values) out.push_back(v / reference - 1.0);
+  return out;
 }
 
 }  // namespace
@@ -42,11 +43,17 @@ GridResult check_grid(const GridRequest& request, CollisionSolver& solver) {
     RecipeGrid grid;
     grid.recipe = recipe;
     grid.speed_independent = recipe_setting(recipe, 0.5, g.tolerance, solver).speed_independent();
-    for (const double e : g.eps) grid.at_reference.push_back(actual(recipe, e, {v_ref}, g, solver));
+    for (const double e : g.eps) {
+      const ByClamp& at_ref = grid.at_reference.emplace_back(actual(recipe, e, {v_ref}, g, solver));
+      grid.recipe_error_at_calibration_speed.push_back(
+          {ratios_minus_one(at_ref.on, e), ratios_minus_one(at_ref.off, e)});
+    }
     if (!grid.speed_independent) {
-      for (const double e : g.eps) {
-        const ByClamp a = actual(recipe, e, g.speeds_m_s, g, solver);
-        grid.relative_error.push_back({relative_errors(a.on, e), relative_errors(a.off, e)});
+      for (std::size_t k = 0; k < g.eps.size(); ++k) {
+        const ByClamp a = actual(recipe, g.eps[k], g.speeds_m_s, g, solver);
+        const ByClamp& at_ref = grid.at_reference[k];
+        grid.speed_dependence.push_back(
+            {ratios_minus_one(a.on, at_ref.on.front()), ratios_minus_one(a.off, at_ref.off.front())});
       }
     }
     for (const double e : kFindingsEps)

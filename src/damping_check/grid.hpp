@@ -1,9 +1,9 @@
 #pragma once
 // The damping check over a grid (a scene's [[damping_check]] section, docs/damping.md): for each recipe the
-// actual ε against the requested one at the reference speed, for the speed-dependent recipes the relative
-// error over requested ε × impact speed, and the findings table (requested 0.3, 0.5, 0.8, 0.95 at v_ref/10,
-// v_ref and 10 v_ref). Values only; NaN where the end does not exist (an overdamped Tsuji member without
-// the clamp).
+// actual ε against the requested one at the reference speed and the recipe's error there, for the
+// speed-dependent recipes the speed dependence ε(v)/ε(v_ref) - 1 over requested ε × impact speed, and the
+// findings table (requested 0.3, 0.5, 0.8, 0.95 at v_ref/10, v_ref and 10 v_ref). Values only; NaN where the
+// end does not exist (an overdamped Tsuji member without the clamp).
 #include <array>
 #include <vector>
 
@@ -21,8 +21,10 @@ struct RecipeGrid {
   Recipe recipe = Recipe::lammps_tsuji;
   bool speed_independent = false;
   std::vector<ByClamp> at_reference;  // per requested ε of the grid: the actual ε at the reference speed
-  std::vector<ByClamp>
-      relative_error;             // speed-dependent recipes: per requested ε, (actual - req) / req per speed
+  // Per requested ε: the recipe's own error where it is set up, (ε(v_ref) - req) / req (one value).
+  std::vector<ByClamp> recipe_error_at_calibration_speed;
+  // Speed-dependent recipes: per requested ε, the physical speed dependence ε(v) / ε(v_ref) - 1 per speed.
+  std::vector<ByClamp> speed_dependence;
   std::vector<ByClamp> findings;  // per kFindingsEps: the actual ε at findings_speeds (one when independent)
 };
 

@@ -13,6 +13,7 @@
 #include <memory>
 #include <sstream>
 
+#include "dem/process_output.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
 
@@ -28,15 +29,6 @@ std::string find_on_path(const std::string& program) {
     if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
   }
   return {};
-}
-
-std::string output_of(const std::string& command) {
-  std::string out;
-  const std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-  if (!pipe) return out;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe.get()) != nullptr) out += buffer.data();
-  return out;
 }
 
 double natural_time(const Pair& p, double v) {
@@ -102,34 +94,25 @@ DemRun run_dem_code(const std::string& program, const Deck& deck, const Pair& pa
   DemRun run;
   run.output = output_of(fmt::format("{} -in {} -log none -echo none 2>&1", program, name));
   std::filesystem::remove(name);
-  run.eps.assign(speeds.size(), NAN);
-  run.gap_m.assign(speeds.size(), NAN);
-  std::istringstream in(run.output);
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream fields(line);
-    std::string word;
-    std::size_t i = 0;
-    double e = NAN;
-    double gap = NAN;
-    if (fields >> word && word == "EPS" && fields >> i >> e >> gap && i < speeds.size()) {
-      run.eps[i] = e;
-      run.gap_m[i] = gap;
-    }
-  }
+  TaggedEps read = tagged_eps(run.output, "EPS", speeds.size());
+  run.eps = std::move(read.eps);
+  run.gap_m = std::move(read.gap_m);
   return run;
 }
 
 DemMeasurement measure_dem_eps(const std::string& program, const Deck& deck, const Pair& pair,
                                const std::vector<double>& speeds, int coarse_steps_per_time) {
-  const DemRun coarse = run_dem_code(program, deck, pair, speeds, coarse_steps_per_time);
-  const DemRun fine = run_dem_code(program, deck, pair, speeds, 10 * coarse_steps_per_time);
+  return richardson(run_dem_code(program, deck, pair, speeds, coarse_steps_per_time),
+                    run_dem_code(program, deck, pair, speeds, 10 * coarse_steps_per_time));
+}
+
+DemMeasurement richardson(const DemRun& coarse, const DemRun& fine) {
   DemMeasurement m;
   m.coarse = coarse.eps;
   m.fine = fine.eps;
   m.gap_m = fine.gap_m;
   m.output = fine.output;
-  for (std::size_t i = 0; i < speeds.size(); ++i)
+  for (std::size_t i = 0; i < fine.eps.size(); ++i)
     m.extrapolated.push_back((10.0 * fine.eps[i] - coarse.eps[i]) / 9.0);
   return m;
 }

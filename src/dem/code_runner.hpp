@@ -32,6 +32,8 @@ struct DemMeasurement {
   std::vector<double> gap_m;  // of the fine run
   std::string output;         // of the fine run
 };
+// The extrapolation of a coarse and a fine run (dt ten times smaller), for any code run this way.
+DemMeasurement richardson(const DemRun& coarse, const DemRun& fine);
 DemMeasurement measure_dem_eps(const std::string& program, const Deck& deck, const Pair& pair,
                                const std::vector<double>& speeds, int coarse_steps_per_time = 2000);
 

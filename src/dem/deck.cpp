@@ -189,6 +189,9 @@ void yade(Deck& d, const Pair& p, double a, double vn, double mu) {
       mu > 0.0 ? "frictionAngle = atan(mu); the Mindlin law takes its shear stiffness from Y and nu"
                : "frictionAngle = 0: frictionless",
       friction_note(mu), clamp_note(d.code, d.end),
+      "vn exists from YADE 2024.02a on: older versions (Debian 12's 2023.02a) reject these lines; "
+      "`restitution "
+      "dem --code yade --yade-version 2023.02a` prints what they can do",
       "YADE keeps beta = sigma^2 vn^(-1/5) for every contact (A = (2/3) beta (k_n0 / m_eff)^(-2/5)), so "
       "every pair gets this pair's eps(v): exact only for pairs with this pair's k_n0 / m_eff (" +
           pair_note(p) + ")"};
@@ -209,14 +212,20 @@ void chrono(Deck& d, const Pair& p, double a, double mu) {
   d.parameters.push_back({"Gt", gt, "Gt = Gn [m^-3/2 s^-1]; 0: frictionless"});
   d.parameters.push_back({"friction", mu, "Coulomb friction coefficient [1]"});
   d.lines = {"auto material = chrono_types::make_shared<ChContactMaterialSMC>();",
-             fmt::format("material->SetKn({});", num(kn)),
-             fmt::format("material->SetGn({});", num(gn)),
+             fmt::format("material->SetKn({});", num(kn)), fmt::format("material->SetGn({});", num(gn)),
              fmt::format("material->SetKt({}); material->SetGt({}); material->SetFriction({});", num(kt),
                          num(gt), num(mu)),
              "sys.SetContactForceModel(ChSystemSMC::ContactForceModel::Hertz);",
-             "sys.UseMaterialProperties(false);"};
+             "sys.UseMaterialProperties(false);",
+             // Kn and Gn are scaled by the contact's effective radius, which only Multicore computes.
+             "sys.SetCollisionSystemType(ChCollisionSystem::Type::MULTICORE);  // needed: R_eff per contact",
+             fmt::format("// with Bullet instead: ChCollisionInfo::SetDefaultEffectiveCurvatureRadius({});",
+                         num(p.effective_radius_m))};
   d.notes = {
       mu > 0.0 ? "Kt = 8 G* / sqrt(R_eff) (Mindlin), Gt = Gn" : "Kt = Gt = friction = 0: frictionless",
+      "Chrono's R_eff is the contact's effective curvature radius, which only the Multicore collision system "
+      "sets; with Bullet every contact gets ChCollisionInfo's default 0.1 m (Kn, Gn far too large, eps far "
+      "too low) unless SetDefaultEffectiveCurvatureRadius(R_eff) is called",
       friction_note(mu), clamp_note(d.code, d.end),
       "Chrono scales Kn and Gn with R_eff, not sqrt(R_eff), and Gn with m_eff: exact only for the pair it "
       "was made for (" +

@@ -9,6 +9,7 @@
 #include "dem/code_runner.hpp"
 #include "dem/deck.hpp"
 #include "dem/deck_eps.hpp"
+#include "dem/yade_versions.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/material.hpp"
 
@@ -55,6 +56,12 @@ struct LinesResult {
   std::vector<SpeedEps> eps;
   std::vector<SizeCheck> sizes;  // radii x0.5 and x2 at the reference speed
   std::optional<YadeCheck> yade;
+  // YADE: the version the lines (and `eps`) are for, once damping_check::target_yade_version has set it; when
+  // it cannot express the law (no vn), the deck that would give it on YADE 2024.02a or later, and that deck's
+  // ε(v) there.
+  std::optional<YadeVersion> yade_version;
+  std::optional<Deck> yade_exact_deck;
+  std::vector<SpeedEps> yade_exact_eps;
 };
 
 LinesResult check_lines(const LinesRequest& request);

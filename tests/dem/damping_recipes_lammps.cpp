@@ -16,29 +16,16 @@
 #include "cli_runner.hpp"
 #include "dem/code_runner.hpp"
 #include "dem/deck.hpp"
+#include "dem/steel_beads.hpp"
 #include "restitution/material.hpp"
 
 namespace {
 
 using nlohmann::json;
-
-// Steel beads, as in dem_integration.cpp.
-constexpr double kYoungPa = 2.1e11, kPoisson = 0.3, kRadiusM = 0.005, kDensity = 7850.0;
-
-restitution::dem::Pair steel() {
-  restitution::Material material;
-  material.young_modulus_pa = kYoungPa;
-  material.poisson_ratio = kPoisson;
-  material.radius1_m = material.radius2_m = kRadiusM;
-  material.density_kg_m3 = kDensity;
-  return restitution::dem::pair_of(material);
-}
-
-json run_json(const std::string& arguments) {
-  const auto r = restitution::test_support::run_cli(arguments);
-  EXPECT_EQ(r.status, 0) << arguments << ": " << r.err;
-  return json::parse(r.out);
-}
+using restitution::test_support::kPoisson;
+using restitution::test_support::kYoungPa;
+using restitution::test_support::run_json;
+using restitution::test_support::steel;
 
 // LAMMPS' extrapolated ε at `speeds` agrees with `predicted` within 1e-6 min(ε, 1 - ε).
 void expect_lammps_gives(const restitution::dem::Deck& deck, const std::vector<double>& speeds,
@@ -60,6 +47,18 @@ void expect_lammps_gives(const restitution::dem::Deck& deck, const std::vector<d
   }
 }
 
+// `damping tsuji` with the restitution coefficient `cor` given to LAMMPS, with or without `limit_damping`.
+restitution::dem::Deck tsuji_deck(double cor, bool limit_damping) {
+  restitution::dem::Deck deck;
+  deck.code = restitution::dem::Code::lammps;
+  std::ostringstream coeff;
+  coeff.precision(17);
+  coeff << "pair_coeff * * hertz/material " << kYoungPa << " " << cor << " " << kPoisson
+        << " tangential linear_nohistory 0 0 damping tsuji" << (limit_damping ? " limit_damping" : "");
+  deck.lines = {"pair_style granular", coeff.str()};
+  return deck;
+}
+
 struct TsujiCase {
   double eps;
   bool limit_damping;
@@ -74,13 +73,7 @@ TEST_P(LammpsTsuji, MeasuresTheEpsDampingCheckPredicts) {
        << (c.limit_damping ? "on" : "off") << " --json";
   const json out = run_json(args.str());
   const double predicted = out.at("points").at(0).at("actual_eps").get<double>();
-  restitution::dem::Deck deck;
-  deck.code = restitution::dem::Code::lammps;
-  std::ostringstream coeff;
-  coeff.precision(17);
-  coeff << "pair_coeff * * hertz/material " << kYoungPa << " " << c.eps << " " << kPoisson
-        << " tangential linear_nohistory 0 0 damping tsuji" << (c.limit_damping ? " limit_damping" : "");
-  deck.lines = {"pair_style granular", coeff.str()};
+  const restitution::dem::Deck deck = tsuji_deck(c.eps, c.limit_damping);
   // Speed-independent: the same ε at three speeds two decades apart.
   const std::vector<double> speeds{0.1, 1.0, 10.0};
   // The Tsuji force's x^{1/4} leaves a larger remainder after the first-order extrapolation than the
@@ -97,6 +90,36 @@ INSTANTIATE_TEST_SUITE_P(Recipes, LammpsTsuji,
                          testing::Values(TsujiCase{0.5, false}, TsujiCase{0.5, true}, TsujiCase{0.9, false},
                                          TsujiCase{0.9, true}),
                          tsuji_name);
+
+// The inverse: `damping-check --target-eps E` names the restitution coefficient to give `damping tsuji`;
+// LAMMPS run with it measures E itself (not the recipe's ε for E).
+struct InverseCase {
+  double target;
+  bool limit_damping;
+};
+
+class LammpsTsujiInverse : public testing::TestWithParam<InverseCase> {};
+
+TEST_P(LammpsTsujiInverse, RequestedParameterGivesTheTarget) {
+  const InverseCase c = GetParam();
+  std::ostringstream args;
+  args << "damping-check --recipe lammps-tsuji --target-eps " << c.target << " --velocity 1 --clamp "
+       << (c.limit_damping ? "on" : "off") << " --json";
+  const json out = run_json(args.str());
+  const double request = out.at("inverse").at(0).at("eps_to_request").get<double>();
+  EXPECT_GT(std::abs(request - c.target), 1e-3) << "the recipe is not exact: the request must differ";
+  const restitution::dem::Deck deck = tsuji_deck(request, c.limit_damping);
+  const std::vector<double> speeds{0.1, 1.0, 10.0};
+  expect_lammps_gives(deck, speeds, std::vector<double>(speeds.size(), c.target), 5000);
+}
+
+std::string inverse_name(const testing::TestParamInfo<InverseCase>& case_info) {
+  return std::string(case_info.param.target == 0.6 ? "target06" : "target085") +
+         (case_info.param.limit_damping ? "_limit_damping" : "_no_limit");
+}
+
+INSTANTIATE_TEST_SUITE_P(Recipes, LammpsTsujiInverse,
+                         testing::Values(InverseCase{0.6, true}, InverseCase{0.85, false}), inverse_name);
 
 class LammpsViscoelastic : public testing::TestWithParam<const char*> {};
 

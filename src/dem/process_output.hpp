@@ -1,0 +1,18 @@
+#pragma once
+// Running a DEM code as a child process and reading back the lines the deck printed for itself: the codes
+// print banners and warnings too, so only lines starting with the deck's own tag count.
+#include <string>
+#include <vector>
+
+namespace restitution::dem {
+
+// Standard output of `command` run by the shell ("" when it cannot start).
+std::string output_of(const std::string& command);
+
+// Per index 0 .. count-1 the two numbers of the last "TAG index eps gap" line in `output` (NaN where none).
+struct TaggedEps {
+  std::vector<double> eps, gap_m;
+};
+TaggedEps tagged_eps(const std::string& output, const std::string& tag, std::size_t count);
+
+}  // namespace restitution::dem
