@@ -1,7 +1,6 @@
 #include "dem/code_runner.hpp"
 
 #include <fmt/core.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -9,7 +8,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <sstream>
 
@@ -86,14 +84,11 @@ std::string dem_program(Code code) {
 
 DemRun run_dem_code(const std::string& program, const Deck& deck, const Pair& pair,
                     const std::vector<double>& speeds, int steps_per_time) {
-  char name[] = "/tmp/restitution-dem-XXXXXX";
-  const int fd = mkstemp(name);
-  if (fd < 0) throw std::runtime_error("cannot create a temporary input file for the DEM code");
-  close(fd);
-  std::ofstream(name) << deck_text(deck, pair, speeds, steps_per_time);
   DemRun run;
-  run.output = output_of(fmt::format("{} -in {} -log none -echo none 2>&1", program, name));
-  std::filesystem::remove(name);
+  run.output =
+      output_with_input_file(deck_text(deck, pair, speeds, steps_per_time), "", [&](const std::string& path) {
+        return fmt::format("{} -in {} -log none -echo none 2>&1", program, path);
+      });
   TaggedEps read = tagged_eps(run.output, "EPS", speeds.size());
   run.eps = std::move(read.eps);
   run.gap_m = std::move(read.gap_m);

@@ -1,10 +1,15 @@
 #include "dem/process_output.hpp"
 
+#include <unistd.h>
+
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 
 namespace restitution::dem {
 
@@ -14,6 +19,18 @@ std::string output_of(const std::string& command) {
   if (!pipe) return out;
   std::array<char, 4096> buffer{};
   while (fgets(buffer.data(), buffer.size(), pipe.get()) != nullptr) out += buffer.data();
+  return out;
+}
+
+std::string output_with_input_file(const std::string& input, const std::string& suffix,
+                                   const std::function<std::string(const std::string& path)>& command_for) {
+  std::string name = "/tmp/restitution-dem-XXXXXX" + suffix;
+  const int fd = mkstemps(name.data(), static_cast<int>(suffix.size()));
+  if (fd < 0) throw std::runtime_error("cannot create a temporary input file for the DEM code");
+  close(fd);
+  std::ofstream(name) << input;
+  std::string out = output_of(command_for(name));
+  std::filesystem::remove(name);
   return out;
 }
 

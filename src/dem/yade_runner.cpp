@@ -1,13 +1,9 @@
 #include "dem/yade_runner.hpp"
 
 #include <fmt/core.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <stdexcept>
 #include <utility>
 
 #include "dem/process_output.hpp"
@@ -27,14 +23,10 @@ std::string python_literal(const std::string& text) {
 
 DemRun run_yade(const std::string& program, const Deck& deck, const Pair& pair,
                 const std::vector<double>& speeds, int steps_per_time) {
-  char name[] = "/tmp/restitution-yade-XXXXXX.py";
-  const int fd = mkstemps(name, 3);
-  if (fd < 0) throw std::runtime_error("cannot create a temporary script for YADE");
-  close(fd);
-  std::ofstream(name) << yade_script(deck, pair, speeds, steps_per_time);
   DemRun run;
-  run.output = output_of(fmt::format("{} -n -x {} 2>&1", program, name));
-  std::filesystem::remove(name);
+  run.output = output_with_input_file(
+      yade_script(deck, pair, speeds, steps_per_time), ".py",
+      [&](const std::string& path) { return fmt::format("{} -n -x {} 2>&1", program, path); });
   // yade prints banners and warnings: only the script's own lines count.
   TaggedEps read = tagged_eps(run.output, "RESTITUTION_EPS", speeds.size());
   run.eps = std::move(read.eps);
