@@ -8,7 +8,7 @@
 // Run: build/release/bench/bench_python_peer --benchmark_repetitions=5 (the script runs one case at a time).
 #include <benchmark/benchmark.h>
 
-#include "sweep/sweep.hpp"
+#include "restitution/sweep.hpp"
 
 namespace restitution {
 namespace {

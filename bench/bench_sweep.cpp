@@ -10,7 +10,7 @@
 
 #include <ctime>
 
-#include "sweep/sweep.hpp"
+#include "restitution/sweep.hpp"
 
 namespace restitution {
 namespace {

@@ -17,7 +17,7 @@
 #include "reference/dashpot_closed_form.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/contact_law.hpp"
-#include "sweep/sweep.hpp"
+#include "restitution/sweep.hpp"
 
 namespace restitution {
 namespace {

@@ -14,7 +14,7 @@
 #include "cli_runner.hpp"
 #include "reference/reference_solution.hpp"
 #include "reference/work_precision.hpp"
-#include "sweep/sweep.hpp"
+#include "restitution/sweep.hpp"
 
 namespace restitution {
 namespace {

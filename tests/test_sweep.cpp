@@ -18,7 +18,7 @@
 #include "cli/sweep_table.hpp"
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
-#include "sweep/sweep.hpp"
+#include "restitution/sweep.hpp"
 
 namespace restitution {
 namespace {

@@ -13,4 +13,5 @@
 #include "restitution/material.hpp"
 #include "restitution/series.hpp"
 #include "restitution/series_tables.hpp"
+#include "restitution/sweep.hpp"
 #include "restitution/units.hpp"

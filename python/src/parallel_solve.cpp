@@ -6,7 +6,7 @@
 #include <chrono>
 #include <future>
 
-#include "sweep/sweep.hpp"
+#include "restitution/sweep.hpp"
 
 namespace restitution::python {
 

@@ -26,8 +26,8 @@
 #include "cli/sweep_table.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
+#include "restitution/sweep.hpp"
 #include "restitution/units.hpp"
-#include "sweep/sweep.hpp"
 
 namespace restitution::cli {
 namespace {

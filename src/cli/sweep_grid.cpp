@@ -8,8 +8,8 @@
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
+#include "restitution/sweep.hpp"
 #include "restitution/units.hpp"
-#include "sweep/sweep.hpp"
 
 namespace restitution::cli {
 namespace {

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "restitution/collision_solver.hpp"
+#include "restitution/sweep.hpp"
 #include "restitution/units.hpp"
-#include "sweep/sweep.hpp"
 
 namespace restitution::cli {
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "restitution/errors.hpp"
+#include "restitution/units.hpp"
 
 namespace restitution {
 namespace {
@@ -103,7 +104,7 @@ ContactLaw ContactLaw::hertz_natural(double zeta) {
 ContactLaw ContactLaw::hertz_scaled(double beta, double velocity) {
   require_finite_nonnegative(beta, "beta");
   require_finite_positive(velocity, "velocity");
-  ContactLaw law(LawKind::viscoelastic_hertz, beta * std::pow(velocity, 0.2));
+  ContactLaw law(LawKind::viscoelastic_hertz, zeta_from(beta, velocity));
   law.damping_ = beta * std::pow(velocity, -0.2);
   law.stiffness_ = std::pow(velocity, -0.4);
   law.initial_velocity_ = std::pow(velocity, 0.8);

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "restitution/errors.hpp"
-#include "sweep/sweep.hpp"
+#include "restitution/sweep.hpp"
 
 namespace restitution::damping_check {
 

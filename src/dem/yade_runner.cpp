@@ -2,11 +2,11 @@
 
 #include <fmt/core.h>
 
-#include <cmath>
 #include <cstdlib>
 #include <utility>
 
 #include "dem/process_output.hpp"
+#include "restitution/units.hpp"
 
 namespace restitution::dem {
 namespace {
@@ -48,7 +48,7 @@ std::string yade_script(const Deck& deck, const Pair& pair, const std::vector<do
   for (const double v : speeds) s += fmt::format("{:.17g}, ", v);
   // k / m_eff as the pair has it: the natural time T = (k/m)^{-2/5} v^{-1/5} of each speed.
   const double k_over_m =
-      4.0 / 3.0 * pair.effective_modulus_pa * std::sqrt(pair.effective_radius_m) / pair.effective_mass_kg;
+      hertz_stiffness(pair.effective_modulus_pa, pair.effective_radius_m) / pair.effective_mass_kg;
   s += fmt::format("]\nr1, r2, k, n = {:.17g}, {:.17g}, {:.17g}, {}\n", pair.radius1_m, pair.radius2_m,
                    k_over_m, steps_per_time);
   s += R"(for i, v in enumerate(speeds):

@@ -8,135 +8,6 @@
 namespace restitution::fast {
 namespace {
 
-// The evaluation, written once in C99 for the library and the exported header alike. Why each step is there:
-// docs/fast.md. The series by Horner's rule, the table polynomials by Estrin's scheme (estrin_function).
-constexpr const char* kEvaluation = R"C(
-static inline double restitution_fast_poly_(const double *c, int terms, double t) {
-  double p = c[0];
-  int k;
-  for (k = 1; k < terms; ++k) p = p * t + c[k];
-  return p;
-}
-
-/* A piecewise table at u = (x - start) * RESTITUTION_FAST_PER_UNIT, 0 <= u <= intervals (clamped). */
-static inline double restitution_fast_piece_(const double *coef, int intervals, double u) {
-  int i = (int)u;
-  if (i > intervals - 1) i = intervals - 1;
-  if (i < 0) i = 0;
-  return restitution_fast_estrin_(coef + i * (RESTITUTION_FAST_DEGREE + 1), 2.0 * (u - (double)i) - 1.0);
-}
-
-/* eps (complement = 0) or 1 - eps (complement = 1); NaN for zeta < 0 or NaN. */
-static inline double restitution_fast_eps_(const restitution_fast_end_ *e, double zeta, int complement) {
-  double s, u, g, d, y;
-  if (!(zeta >= 0.0)) return NAN;
-  if (zeta < RESTITUTION_FAST_ZETA_LO) {
-    y = zeta * restitution_fast_poly_(e->small, RESTITUTION_FAST_SMALL_TERMS, sqrt(zeta));
-    return complement ? y : 1.0 - y;
-  }
-  if (zeta > 1.79769313486231570e308) return complement ? 1.0 : 0.0;
-  s = log(zeta);
-  u = (s - RESTITUTION_FAST_S_LO) * RESTITUTION_FAST_PER_UNIT;
-  if (u < (double)e->intervals) {
-    g = restitution_fast_piece_(e->logit, e->intervals, u);
-    return 1.0 / (1.0 + exp(complement ? g : -g));
-  }
-  if (e->naive) {
-    d = RESTITUTION_FAST_KAPPA * exp(-5.0 * s);
-  } else {
-    y = exp(-(5.0 / 3.0) * s);
-    d = RESTITUTION_FAST_X_M * y *
-        (1.0 - (y / RESTITUTION_FAST_Q) * ((10.0 / 3.0) * s + RESTITUTION_FAST_LOG_A - 2.5));
-  }
-  return complement ? 1.0 - d : d;
-}
-
-/* zeta with eps(zeta) = eps, eps in (0, 1]; NaN otherwise. */
-static inline double restitution_fast_zeta_(const restitution_fast_end_ *e, double eps) {
-  double g, u, y, z, r;
-  int k;
-  if (!(eps > 0.0 && eps <= 1.0)) return NAN;
-  g = log(eps / (1.0 - eps));
-  u = (g - e->g_lo) * RESTITUTION_FAST_PER_UNIT;
-  if (u >= 0.0 && u <= (double)e->inverse_intervals)
-    return exp(restitution_fast_piece_(e->inverse, e->inverse_intervals, u));
-  if (u > 0.0) { /* small zeta: 1 - eps = zeta P(sqrt zeta), solved by fixed point */
-    y = 1.0 - eps;
-    z = y / e->small[RESTITUTION_FAST_SMALL_TERMS - 1];
-    for (k = 0; k < 2; ++k) z = y / restitution_fast_poly_(e->small, RESTITUTION_FAST_SMALL_TERMS, sqrt(z));
-    return z;
-  }
-  if (e->naive) return exp(0.2 * (log(RESTITUTION_FAST_KAPPA) - log(eps)));
-  r = eps / RESTITUTION_FAST_X_M; /* delta = zeta^(-5/3), solved by fixed point */
-  z = r;
-  for (k = 0; k < 3; ++k) z = r / (1.0 - (z / RESTITUTION_FAST_Q) * (-2.0 * log(z) + RESTITUTION_FAST_LOG_A - 2.5));
-  return exp(-0.6 * log(z));
-}
-
-/* A large-zeta law (docs/fast.md), delta = zeta^(-5/3):
-   e^(power s) [c1 s + c0 + delta (d2 s^2 + d1 s + d0) + delta^2 e0]. */
-static inline double restitution_fast_law_at_(const restitution_fast_law_ *w, double s) {
-  double delta = exp(-(5.0 / 3.0) * s);
-  return exp(w->power * s) * (w->c1 * s + w->c0 + delta * ((w->d2 * s + w->d1) * s + w->d0 + delta * w->e0));
-}
-
-/* A table of ln f on the forward grid, f linear between zeta = 0 and zeta_lo, the law above; NaN for
-   negative or NaN zeta. */
-static inline double restitution_fast_log_table_(const double *coef, int intervals, double zero, double lo,
-                                                 const restitution_fast_law_ *law, double zeta) {
-  double s, u;
-  if (!(zeta >= 0.0)) return NAN;
-  if (zeta < RESTITUTION_FAST_ZETA_LO) return zero + (lo - zero) * (zeta / RESTITUTION_FAST_ZETA_LO);
-  if (zeta > 1.79769313486231570e308) return law->power > 0.0 ? HUGE_VAL : 0.0;
-  s = log(zeta);
-  u = (s - RESTITUTION_FAST_S_LO) * RESTITUTION_FAST_PER_UNIT;
-  if (u < (double)intervals) return exp(restitution_fast_piece_(coef, intervals, u));
-  return restitution_fast_law_at_(law, s);
-}
-
-/* The public functions. */
-static inline double restitution_eps_naive(double zeta) {
-  return restitution_fast_eps_(&restitution_fast_naive_, zeta, 0);
-}
-static inline double restitution_eps_delayed_recovery(double zeta) {
-  return restitution_fast_eps_(&restitution_fast_delayed_, zeta, 0);
-}
-static inline double restitution_one_minus_eps_naive(double zeta) {
-  return restitution_fast_eps_(&restitution_fast_naive_, zeta, 1);
-}
-static inline double restitution_one_minus_eps_delayed_recovery(double zeta) {
-  return restitution_fast_eps_(&restitution_fast_delayed_, zeta, 1);
-}
-static inline double restitution_zeta_from_eps_naive(double eps) {
-  return restitution_fast_zeta_(&restitution_fast_naive_, eps);
-}
-static inline double restitution_zeta_from_eps_delayed_recovery(double eps) {
-  return restitution_fast_zeta_(&restitution_fast_delayed_, eps);
-}
-static inline double restitution_duration_naive(double zeta) {
-  const restitution_fast_end_ *e = &restitution_fast_naive_;
-  return restitution_fast_log_table_(e->log_tau, e->tau_intervals, e->tau_zero, e->tau_lo, &e->tau_law, zeta);
-}
-static inline double restitution_duration_delayed_recovery(double zeta) {
-  const restitution_fast_end_ *e = &restitution_fast_delayed_;
-  return restitution_fast_log_table_(e->log_tau, e->tau_intervals, e->tau_zero, e->tau_lo, &e->tau_law, zeta);
-}
-static inline double restitution_max_compression(double zeta) {
-  return restitution_fast_log_table_(restitution_fast_log_x_max_, restitution_fast_delayed_.tau_intervals,
-                                     RESTITUTION_FAST_X_MAX_ZERO, RESTITUTION_FAST_X_MAX_LO,
-                                     &restitution_fast_x_max_law_, zeta);
-}
-static inline double restitution_max_compression_time(double zeta) {
-  return restitution_fast_log_table_(restitution_fast_log_tau_max_, restitution_fast_delayed_.tau_intervals,
-                                     RESTITUTION_FAST_TAU_MAX_ZERO, RESTITUTION_FAST_TAU_MAX_LO,
-                                     &restitution_fast_tau_max_law_, zeta);
-}
-
-/* clang-format on */
-/* NOLINTEND */
-#endif /* RESTITUTION_FAST_H */
-)C";
-
 // A polynomial of the tables (highest power first) by Estrin's scheme, written out for the degree: pairs
 // combined with t, then with t^2, t^4, ...; the independent pairs shorten the chain of dependent operations
 // that Horner's rule makes.
@@ -291,7 +162,7 @@ typedef struct {
   for (const CollisionEnd end : kCollisionEnds) end_struct(out, end, d.ends[end]);
   out << "static const restitution_fast_law_ restitution_fast_x_max_law_ = " << law(d.x_max_law) << ";\n";
   out << "static const restitution_fast_law_ restitution_fast_tau_max_law_ = " << law(d.tau_max_law) << ";\n";
-  out << estrin_function(d.degree) << kEvaluation;
+  out << estrin_function(d.degree) << evaluation_code();
   return out.str();
 }
 

@@ -10,4 +10,8 @@ namespace restitution::fast {
 
 std::string c_header_text(const TableData& data);
 
+// The evaluation code that follows the numbers, written once in C99 in fast_table.h itself (why each step is
+// there: docs/fast.md) and copied from it at build time (src/CMakeLists.txt, fast_evaluation.cpp.in).
+const char* evaluation_code();
+
 }  // namespace restitution::fast

@@ -5,7 +5,7 @@
 
 #include "parallel/parallel_for.hpp"
 #include "restitution/errors.hpp"
-#include "sweep/sweep.hpp"
+#include "restitution/sweep.hpp"
 
 namespace restitution {
 namespace {

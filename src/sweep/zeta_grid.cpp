@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "restitution/errors.hpp"
-#include "sweep/sweep.hpp"
+#include "restitution/sweep.hpp"
 
 namespace restitution {
 namespace {
