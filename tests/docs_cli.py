@@ -10,6 +10,7 @@ section must be a command. Each failure names the command, the option and where 
 
 Usage: docs_cli.py RESTITUTION SOURCE_DIR
 """
+import json
 import pathlib
 import re
 import subprocess
@@ -75,6 +76,35 @@ def doc_sections(text):
     return result
 
 
+def json_example_problems(program, page_text):
+    """The example of `eps --zeta 1 --json` must be what the program prints: the same keys in the same order
+    and the same values, but for the counts (stats) and the SUNDIALS build, which differ between builds."""
+    marker = "JSON of `restitution eps --zeta 1 --json`"
+    if marker not in page_text:
+        return [f"docs/cli.md has no example headed {marker}"]
+    block = page_text.split(marker, 1)[1].split("```json\n", 1)[1].split("```", 1)[0]
+    documented = json.loads(block)
+    done = subprocess.run([program, "eps", "--zeta", "1", "--json"], capture_output=True, text=True, timeout=60)
+    printed = json.loads(done.stdout)
+
+    def compare(doc, real, where):
+        if isinstance(doc, dict) and isinstance(real, dict):
+            if list(doc) != list(real):
+                return [f"docs/cli.md's eps JSON example{where} has keys {list(doc)}, the program prints {list(real)}"]
+            return [p for key in doc if key not in ("stats", "sundials") or where
+                    for p in compare(doc[key], real[key], f"{where}.{key}")]
+        if doc != real:
+            return [f"docs/cli.md's eps JSON example{where} is {doc!r}, the program prints {real!r}"]
+        return []
+
+    problems = compare(documented, printed, "")
+    for key in ("stats", "sundials"):  # keys only: counts and versions belong to the build
+        if list(documented.get(key, {})) != list(printed.get(key, {})):
+            problems.append(f"docs/cli.md's eps JSON example.{key} has keys {list(documented.get(key, {}))}, "
+                            f"the program prints {list(printed.get(key, {}))}")
+    return problems
+
+
 def main():
     program, source = sys.argv[1], pathlib.Path(sys.argv[2])
     docs = source / "docs"
@@ -106,6 +136,8 @@ def main():
             continue  # a group such as `series`: only --help of its own; its subcommands have sections
         problems.append(f"`restitution {' '.join(path)}` has no section `## restitution {' '.join(path)}` "
                         f"in docs/cli.md")
+
+    problems += json_example_problems(program, page.read_text(encoding="utf-8"))
 
     index = (docs / "README.md").read_text(encoding="utf-8")
     for doc in sorted(docs.glob("*.md")):

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli_runner.hpp"
 
@@ -94,22 +96,85 @@ TEST(CliWords, DemPrintsSmallEpsInSignificantDigits) {
   EXPECT_EQ(r.out.find("eps = 0.0000"), std::string::npos) << r.out;  // %.10f gave 0.0000097903
 }
 
-// Item 12: reference --out and work-precision say so on Ctrl-C, like sweep and run, and write nothing.
-TEST(CliWords, SigintStopsReferenceAndWorkPrecisionSayingSo) {
+// Item 12: reference --out, work-precision, stability and fast-table say so on Ctrl-C, like sweep and run,
+// and neither write nor print a result (stability prints its table only when complete).
+TEST(CliWords, SigintStopsLongCommandsSayingSo) {
   const fs::path dir = fs::temp_directory_path() / ("restitution-sigint-" + std::to_string(::getpid()));
   fs::remove_all(dir);
-  for (const std::string command :
-       {"reference --out " + (dir / "r.csv").string(), "work-precision --out " + (dir / "wp").string()}) {
+  const std::vector<std::pair<std::string, fs::path>> commands = {
+      {"reference --out " + (dir / "r.csv").string(), dir / "r.csv"},
+      {"work-precision --out " + (dir / "wp").string(), dir / "wp" / "work_precision.csv"},
+      // 20 per decade: about 2 s of work, not the 0.2 s of the default grid.
+      {"stability --points-per-decade 20 --out " + (dir / "st").string(), dir / "st" / "stability.csv"},
+      {"fast-table --out " + (dir / "t.h").string(), dir / "t.h"},
+  };
+  for (const auto& [command, output] : commands) {
     const std::string err = (fs::temp_directory_path() / "restitution-sigint-err").string();
-    const int raw = std::system(
-        ("timeout --preserve-status -s INT 1 " + std::string(RESTITUTION_EXE) + " " + command + " 2>" + err)
-            .c_str());
+    const std::string out = (fs::temp_directory_path() / "restitution-sigint-out").string();
+    const int raw = std::system(("timeout --preserve-status -s INT 1 " + std::string(RESTITUTION_EXE) + " " +
+                                 command + " >" + out + " 2>" + err)
+                                    .c_str());
     EXPECT_EQ(WEXITSTATUS(raw), 130) << command;
-    EXPECT_NE(test_support::slurp(err).find("interrupted by signal 2"), std::string::npos) << command;
-    EXPECT_FALSE(fs::exists(dir / "r.csv"));
-    EXPECT_FALSE(fs::exists(dir / "wp" / "work_precision.csv"));
+    // Killed by the signal (no handler), timeout reports 130 too: the line is what tells them apart.
+    EXPECT_NE(test_support::slurp(err).find("interrupted by signal 2: stopped, nothing half-written"),
+              std::string::npos)
+        << command << ": " << test_support::slurp(err);
+    EXPECT_EQ(test_support::slurp(out), "") << command;
+    EXPECT_FALSE(fs::exists(output)) << command;
   }
   fs::remove_all(dir);
+}
+
+// Item 12: a number option's text is judged as typed: empty, or beyond the double range (CLI11 alone took
+// '' as not given and 1e309 as inf).
+TEST(CliWords, NumberTextsAreJudgedAsTyped) {
+  expect_refused("eps --zeta ''", "--zeta: the value is empty, expected a number");
+  expect_refused("eps --zeta 1e309", "--zeta: '1e309' is beyond the range of a double");
+  expect_refused("eps --zeta -1e400", "'-1e400' is beyond the range of a double");
+  expect_refused("sweep --zeta-min 0 --zeta-max 1e999 --points 3 --out /tmp/restitution-x.csv",
+                 "--zeta-max: '1e999' is beyond the range of a double");
+  expect_refused("eps --zeta inf", "got inf");               // spelled inf: the range check names it
+  EXPECT_EQ(run_cli("eps --zeta 1e-320 --json").status, 0);  // subnormal but representable: accepted
+}
+
+// Item 12: the tolerance range is stated per method; no method accepts the old lower bound 1e-14.
+TEST(CliWords, ToleranceRangeIsPerMethod) {
+  for (const std::string method : {"bdf", "taylor"}) {
+    expect_refused("eps --zeta 1 --method " + method + " --tolerance 1e-15",
+                   "tolerance must lie in [1e-11, 1e-2] for bdf, adams, auto (CVODE) or [1e-13, 1e-2] for "
+                   "taylor, got 1e-15");
+  }
+  EXPECT_EQ(run_cli("eps --zeta 1 --method taylor --tolerance 1e-13").status, 0);
+  expect_refused("eps --zeta 1 --method taylor --tolerance 1e-14", "(1e-13)");
+}
+
+// Item 12: an output the system refuses names the file and the folder; the system's own reason (ENOENT for
+// /proc, which reads as if the folder were missing) comes last.
+TEST(CliWords, UnwritableOutputNamesTheFileAndTheFolder) {
+  const auto r = run_cli("sweep --zeta-min 0 --zeta-max 1 --points 3 --out /proc/x.csv");
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_NE(
+      r.err.find("cannot write '/proc/x.csv': the folder '/proc' does not let this program create files "
+                 "in it (the system says: "),
+      std::string::npos)
+      << r.err;
+  const auto folder = run_cli("stability --out /proc --points-per-decade 1");
+  EXPECT_EQ(folder.status, 3) << folder.err;
+  EXPECT_NE(folder.err.find("cannot write into output folder '/proc'"), std::string::npos) << folder.err;
+}
+
+// Item 12: a calibration's eps below the checked range, known only when it runs, is named like every other
+// scene error: FILE:LINE: calibration[i].eps.
+TEST_F(SceneOutput, CalibrationEpsOutOfRangeNamesFileLineAndKey) {
+  const fs::path scene = folder_ / "cal.toml";
+  std::ofstream(scene)
+      << "output = \"unused\"\n\n[[calibration]]\nname = \"ok\"\neps = 0.5\nvelocity = 1.0\n\n"
+      << "[[calibration]]\nname = \"tiny\"\nvelocity = 1.0\neps = 1e-300\n";
+  const auto r = run_cli("run " + scene.string() + " --output " + (folder_ / "out").string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find(scene.string() + ":11: calibration[1].eps: eps = 1e-300 is below eps(zeta = 1e+06)"),
+            std::string::npos)
+      << r.err;
 }
 
 }  // namespace

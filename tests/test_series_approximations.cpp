@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "restitution/collision_solver.hpp"
@@ -31,6 +33,19 @@ CollisionResult solve(CollisionSolver& solver, double zeta) {
   SolveOptions o;
   o.tolerance = 1e-11;
   return solver.solve(ContactLaw::hertz_natural(zeta), o);
+}
+
+// Issue 25 item 12: a refused zeta is printed as typed in its shortest form (-1, not -1.000000).
+TEST(SeriesApproximations, RefusedZetaIsPrintedInItsShortestForm) {
+  for (const auto& [zeta, shown] :
+       {std::pair{-1.0, "-1"}, std::pair{-0.25, "-0.25"}, std::pair{-1e-300, "-1e-300"}}) {
+    try {
+      (void)simple_theory_1999(zeta);
+      ADD_FAILURE() << "zeta " << zeta << " accepted";
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(std::string(e.what()), std::string("zeta must be finite and >= 0, got ") + shown);
+    }
+  }
 }
 
 // Where the first omitted terms are far below 1e-11 the recomputed series must agree with the solver

@@ -3,8 +3,11 @@
 #include <fmt/core.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <optional>
+#include <string>
+#include <type_traits>
 
 #include "bindings.hpp"
 #include "restitution/errors.hpp"
@@ -42,6 +45,53 @@ Material make_material(double young_modulus, double poisson_ratio, std::optional
   return m;
 }
 
+// The fields in the order of the docstring; the first two are required.
+constexpr std::array<const char*, 9> kFields = {
+    "young_modulus", "poisson_ratio",        "radius",     "radii", "density", "mass",
+    "masses",        "dissipative_constant", "viscosities"};
+
+std::string field_list() {
+  std::string list;
+  for (const char* field : kFields) list += (list.empty() ? "" : ", ") + std::string(field);
+  return list;
+}
+
+// One keyword's value as T, None as absent; a value of the wrong type raises TypeError naming the field
+// (pybind11's own message would dump the constructor's signature instead).
+template <typename T>
+std::optional<T> field(const py::kwargs& kwargs, const char* name) {
+  if (!kwargs.contains(name) || kwargs[name].is_none()) return std::nullopt;
+  try {
+    return py::cast<T>(kwargs[name]);
+  } catch (const py::cast_error&) {
+    throw py::type_error(fmt::format("Material: {} must be {}, got {}", name,
+                                     std::is_same_v<T, Pair> ? "a pair of real numbers" : "a real number",
+                                     py::type::of(kwargs[name]).attr("__name__").cast<std::string>()));
+  }
+}
+
+// Material(**fields) in the module's words: positional arguments, unknown and missing fields are named.
+Material material_from_keywords(const py::args& args, const py::kwargs& kwargs) {
+  if (!args.empty())
+    throw py::type_error(
+        fmt::format("Material takes keyword arguments only, got {} positional; the fields are {}",
+                    args.size(), field_list()));
+  for (const auto& item : kwargs) {
+    const auto key = item.first.cast<std::string>();
+    if (std::find_if(kFields.begin(), kFields.end(), [&](const char* f) { return key == f; }) ==
+        kFields.end())
+      throw py::type_error(fmt::format("Material has no field '{}'; the fields are {}", key, field_list()));
+  }
+  for (const char* required : {"young_modulus", "poisson_ratio"})
+    if (!kwargs.contains(required) || kwargs[required].is_none())
+      throw py::type_error(fmt::format("Material needs {} (young_modulus [Pa], poisson_ratio)", required));
+  return make_material(*field<double>(kwargs, "young_modulus"), *field<double>(kwargs, "poisson_ratio"),
+                       field<double>(kwargs, "radius"), field<Pair>(kwargs, "radii"),
+                       field<double>(kwargs, "density"), field<double>(kwargs, "mass"),
+                       field<Pair>(kwargs, "masses"), field<double>(kwargs, "dissipative_constant"),
+                       field<Pair>(kwargs, "viscosities"));
+}
+
 // Pairs go out as tuples (as they may come in), missing ones as None.
 py::object masses_of(const Material& m) {
   if (!m.mass1_kg) return py::none();
@@ -61,13 +111,12 @@ void bind_material(py::module_& m) {
                        "[material] table). Give radius or radii, density or mass or masses, and "
                        "dissipative_constant or viscosities (or neither, for calibrate()). Raises ValueError "
                        "naming the field that is out of range.")
-      .def(py::init(&make_material), py::kw_only(), py::arg("young_modulus"), py::arg("poisson_ratio"),
-           py::arg("radius") = py::none(), py::arg("radii") = py::none(), py::arg("density") = py::none(),
-           py::arg("mass") = py::none(), py::arg("masses") = py::none(),
-           py::arg("dissipative_constant") = py::none(), py::arg("viscosities") = py::none(),
+      .def(py::init(&material_from_keywords),
+           "Material(*, young_modulus, poisson_ratio, radius=None, radii=None, density=None, mass=None, "
+           "masses=None, dissipative_constant=None, viscosities=None): "
            "young_modulus Y [Pa] > 0, poisson_ratio nu in (-1, 0.5), radius R [m] or radii (R1, R2) [m], "
            "density [kg/m^3] or mass [kg] or masses (m1, m2) [kg], dissipative_constant A [s] or "
-           "viscosities (eta1, eta2) [Pa s].")
+           "viscosities (eta1, eta2) [Pa s]. TypeError names a missing, unknown or mistyped field.")
       .def_readonly("young_modulus", &Material::young_modulus_pa, "Young's modulus Y [Pa].")
       .def_readonly("poisson_ratio", &Material::poisson_ratio, "Poisson ratio nu.")
       .def_property_readonly(

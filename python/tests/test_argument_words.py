@@ -27,3 +27,41 @@ def test_trajectory_must_be_a_bool():
 
 def test_numbers_does_not_leak():
     assert not hasattr(restitution, "numbers")
+
+
+_STEEL = dict(young_modulus=2e11, poisson_ratio=0.3, radius=0.01, density=7800.0)
+
+
+def test_material_names_a_missing_field():
+    with pytest.raises(TypeError, match=r"^Material needs young_modulus") as error:
+        restitution.Material()
+    assert "incompatible" not in str(error.value)
+    with pytest.raises(TypeError, match=r"^Material needs poisson_ratio"):
+        restitution.Material(young_modulus=2e11, radius=0.01, density=7800.0)
+    with pytest.raises(TypeError, match=r"^Material needs poisson_ratio"):
+        restitution.Material(**{**_STEEL, "poisson_ratio": None})
+
+
+def test_material_names_an_unknown_field():
+    with pytest.raises(TypeError, match=r"^Material has no field 'foo'; the fields are young_modulus, ") as error:
+        restitution.Material(**_STEEL, foo=1)
+    assert "incompatible" not in str(error.value)
+    with pytest.raises(TypeError, match=r"^Material has no field 'raduis'"):
+        restitution.Material(young_modulus=2e11, poisson_ratio=0.3, raduis=0.01, density=7800.0)
+
+
+def test_material_names_a_mistyped_field_and_positional_arguments():
+    with pytest.raises(TypeError, match=r"^Material: radius must be a real number, got str"):
+        restitution.Material(**{**_STEEL, "radius": "big"})
+    with pytest.raises(TypeError, match=r"^Material: radii must be a pair of real numbers, got float"):
+        restitution.Material(**{**_STEEL, "radius": None, "radii": 0.01})
+    with pytest.raises(TypeError, match=r"^Material takes keyword arguments only, got 2 positional"):
+        restitution.Material(2e11, 0.3, radius=0.01, density=7800.0)
+
+
+def test_material_keywords_still_build_the_same_material():
+    steel = restitution.Material(**_STEEL, dissipative_constant=1e-6)
+    assert steel.radii == (0.01, 0.01) and steel.density == 7800.0 and steel.masses is None
+    pair = restitution.Material(young_modulus=2e11, poisson_ratio=0.3, radii=(0.01, 0.01), masses=(0.1, 0.1),
+                                viscosities=(1e3, 1e3))
+    assert pair.masses == (0.1, 0.1) and pair.viscosities == (1e3, 1e3)

@@ -136,11 +136,13 @@ StabilityReport stability_report(const std::vector<double>& zetas, const Stabili
   StabilityReport report;
   report.tolerance = options.tolerance;
   CollisionSolver solver;
-  for (const double zeta : zetas) {
+  for (std::size_t i = 0; i < zetas.size(); ++i) {
+    const double zeta = zetas[i];
     if (!(zeta >= 0.0) || !std::isfinite(zeta))
       throw InvalidInput(fmt::format("stability: zeta must be finite and >= 0, got {}", zeta));
     for (const CollisionEnd end : {CollisionEnd::naive, CollisionEnd::delayed_recovery})
       report.points.push_back(check_point(solver, zeta, end, options));
+    if (options.progress) options.progress(i + 1, zetas.size());
   }
   report.decades = summarize(report.points);
   return report;

@@ -2,6 +2,8 @@
 // Numerical stability of the solver over ζ: for each point and end, the production solve (method auto),
 // its self-convergence (relative change when the tolerance is tightened 100×) and its agreement with
 // every other engine, with a verdict. Differences are relative to min(ε, 1 - ε), like the accuracy contract.
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,9 @@ struct StabilityOptions {
   // Work bound of the cross-check solves: Adams on the stiff large-ζ problem runs out of it, which the
   // report records as a finding instead of waiting minutes.
   long max_steps_per_phase = 200000;
+  // Called with (zetas done, zetas) after each ζ; may throw to stop the report (the command line does on
+  // Ctrl-C). Empty: none.
+  std::function<void(std::size_t, std::size_t)> progress;
 };
 
 // Why a cross-check engine has no result.

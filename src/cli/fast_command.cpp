@@ -9,6 +9,8 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "cli/output_files.hpp"
+#include "cli/progress.hpp"
+#include "cli/stop_signals.hpp"
 #include "fast/c_header.hpp"
 #include "fast_study/table_generator.hpp"
 #include "restitution/errors.hpp"
@@ -24,12 +26,17 @@ struct FastTableOptions {
 
 void write_text(const std::string& out, const std::string& text) {
   const std::filesystem::path path(out);
-  if (path.has_parent_path()) check_output_folder(path.parent_path());
+  check_output_file(path);
   write_file_atomically(path, text);
 }
 
 int run_fast_table(const FastTableOptions& o) {
-  const fast::TableData data = fast::generate_tables(o.settings);
+  check_output_file(o.out);  // before the two minutes of solves, not after
+  const fast::TableData data = [&] {
+    const StopSignals signals;  // Ctrl-C stops at the next interval, before the header is written
+    ProgressLine progress("fast-table (intervals fitted, then checked)");
+    return fast::generate_tables(o.settings, progress.stoppable_callback());
+  }();
   write_text(o.out, fast::c_header_text(data));
   fmt::print("wrote {}\n{}\n", o.out, data.settings);
   return 0;

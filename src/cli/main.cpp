@@ -27,6 +27,7 @@ int run(int argc, char** argv) {
       "folder that cannot be created or written).");
   cli::Action chosen;
   cli::add_all_commands(app, chosen);
+  cli::check_number_texts(app);
 
   std::string known;
   bool is_known = false;

@@ -76,32 +76,48 @@ void flush_standard_output() {
   }
 }
 
-void check_output_folder(const fs::path& folder) {
+namespace {
+
+// `file` (empty for a folder output) names what is to be written there, so that the message says which output
+// failed; the system's reason comes last, in brackets, since for /proc it reads "No such file or directory".
+void check_writable_folder(const fs::path& folder, const fs::path& file) {
   std::error_code error;
-  fs::path existing = folder.empty() ? fs::path(".") : folder;
+  const fs::path start = folder.empty() ? fs::path(".") : folder;
+  fs::path existing = start;
   while (!fs::exists(fs::symlink_status(existing, error)) && existing.has_parent_path() &&
          existing.parent_path() != existing) {
     existing = existing.parent_path();
   }
   if (!fs::exists(existing)) existing = ".";  // a relative path none of whose parts exists yet
+  const std::string what =
+      existing != start ? fmt::format("cannot create output folder '{}'", folder.string())
+      : file.empty()    ? fmt::format("cannot write into output folder '{}'", folder.string())
+                        : fmt::format("cannot write '{}'", file.string());
   if (!fs::is_directory(existing)) {
-    throw IoError(fmt::format("cannot create output folder '{}': '{}' is not a folder", folder.string(),
-                              existing.string()));
+    throw IoError(fmt::format("{}: '{}' is not a folder", what, existing.string()));
   }
   // access(W_OK) says yes to root everywhere, /proc included: probe with a file that is removed at once.
   std::string probe = (existing / ".restitution-probe-XXXXXX").string();
   const int fd = mkstemp(probe.data());
   if (fd < 0) {
-    throw IoError(fmt::format("cannot create output folder '{}': '{}' is not writable ({})", folder.string(),
-                              existing.string(), std::strerror(errno)));
+    throw IoError(
+        fmt::format("{}: the folder '{}' does not let this program create files in it (the system "
+                    "says: {})",
+                    what, existing.string(), std::strerror(errno)));
   }
   close(fd);
   unlink(probe.c_str());
 }
 
+}  // namespace
+
+void check_output_folder(const fs::path& folder) {
+  check_writable_folder(folder, {});
+}
+
 void check_output_file(const fs::path& path) {
   const OutputTarget target = output_target(path);
-  if (!target.in_place) check_output_folder(target.path.parent_path());
+  if (!target.in_place) check_writable_folder(target.path.parent_path(), path);
 }
 
 OutputTarget output_target(const fs::path& path) {

@@ -2,6 +2,9 @@
 
 #include <fmt/core.h>
 
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <string_view>
 
 namespace restitution::cli {
@@ -31,7 +34,29 @@ std::string expected_value(const CLI::Option* option) {
 
 std::string describe(const CLI::App& app, const std::string& message);
 
+// "" when `text` is a number a double holds (or spells inf/nan: the range checks name those), else why not.
+std::string number_text_problem(const std::string& text) {
+  if (text.find_first_not_of(" \t") == std::string::npos) return "the value is empty, expected a number";
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(text.c_str(), &end);
+  if (errno == ERANGE && std::isinf(value)) {
+    return fmt::format(
+        "'{}' is beyond the range of a double (magnitude at most 1.8e308): not a finite number", text);
+  }
+  return "";  // not a number at all is CLI11's conversion error, described below
+}
+
 }  // namespace
+
+void check_number_texts(CLI::App& app) {
+  for (CLI::Option* option : app.get_options()) {
+    if (option->get_type_name().rfind("FLOAT", 0) == 0) {
+      option->check(CLI::Validator(number_text_problem, ""));  // no description: --help is unchanged
+    }
+  }
+  for (CLI::App* sub : app.get_subcommands({})) check_number_texts(*sub);
+}
 
 std::string one_line(std::string message) {
   for (char& c : message) {

@@ -12,4 +12,8 @@ std::string one_line(std::string message);
 // The message for a ParseError raised while parsing `app` (the top-level app with its subcommands).
 std::string describe_parse_error(const CLI::App& app, const CLI::ParseError& error);
 
+// Adds to every number option of `app` and its subcommands a check of the text as typed: an empty value
+// and a number beyond the double range (1e309, which CLI11 would turn into inf) are refused naming the text.
+void check_number_texts(CLI::App& app);
+
 }  // namespace restitution::cli

@@ -11,6 +11,8 @@
 #include "cli/json_writer.hpp"
 #include "cli/options.hpp"
 #include "cli/output_files.hpp"
+#include "cli/progress.hpp"
+#include "cli/stop_signals.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -125,7 +127,12 @@ int run_stability(const StabilityCliOptions& o) {
   StabilityOptions options;
   options.tolerance = o.tolerance;
   if (!o.out.empty()) check_output_folder(o.out);
-  const StabilityReport report = stability_report(stability_grid(o.points_per_decade), options);
+  const StabilityReport report = [&] {
+    const StopSignals signals;  // Ctrl-C stops at the next zeta, before anything is printed or written
+    ProgressLine progress("stability (zeta)");
+    options.progress = progress.stoppable_callback();
+    return stability_report(stability_grid(o.points_per_decade), options);
+  }();
   if (!o.out.empty()) {
     const std::filesystem::path folder(o.out);
     write_file_atomically(folder / "stability.csv", csv(report));
@@ -152,7 +159,8 @@ void add_stability_command(CLI::App& app, Action& chosen) {
       ->capture_default_str();
   cmd->add_option("--points-per-decade", o->points_per_decade, "grid points per decade of zeta (1..20)")
       ->capture_default_str();
-  cmd->add_flag("--json", o->json, "print one JSON object (numbers in the shortest form that reads back to the same double)");
+  cmd->add_flag("--json", o->json,
+                "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->add_option("--out", o->out, "folder for stability.csv, stability.json and stability.png")
       ->check(non_empty_path());
   cmd->callback([o, &chosen] { chosen = [o] { return run_stability(*o); }; });

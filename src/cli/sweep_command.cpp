@@ -124,7 +124,7 @@ int run_sweep_command(const SweepOptions& o) {
                     o.out));
   }
   const fs::path& out = target.path;
-  check_output_folder(out.has_parent_path() ? out.parent_path() : fs::path("."));
+  check_output_file(o.out);  // names the file when its folder refuses it
   const fs::path partial_path = out.string() + ".partial";
   const std::string settings = settings_line(o, grid);
   const std::string header = sweep_header(solve.ends, velocity);

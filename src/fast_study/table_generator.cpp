@@ -165,8 +165,15 @@ struct Fits {
   long solves = 0;
 };
 
+using Progress = std::function<void(std::size_t, std::size_t)>;
+
+// Reports interval `done` of the fits and the checks together (2 passes over the delayed-recovery intervals).
+void report(const Progress& progress, std::size_t done, std::size_t intervals) {
+  if (progress) progress(done, 2 * intervals);
+}
+
 Fits fit(const GeneratorSettings& s, int naive_intervals, int naive_tau_intervals, int delayed_intervals,
-         const std::vector<Real>& nodes) {
+         const std::vector<Real>& nodes, const Progress& progress) {
   const Grid empty{s.s_lo, s.per_unit, {}};
   Fits f{empty, empty, empty, empty, empty, empty, 0};
   for (int i = 0; i < delayed_intervals; ++i) {
@@ -196,6 +203,7 @@ Fits fit(const GeneratorSettings& s, int naive_intervals, int naive_tau_interval
     f.tau_max.pieces.push_back(interpolate(tm));
     if (i < naive_intervals) f.g_naive.pieces.push_back(interpolate(gn));
     if (with_naive) f.tau_naive.pieces.push_back(interpolate(tn));
+    report(progress, static_cast<std::size_t>(i) + 1, static_cast<std::size_t>(delayed_intervals));
   }
   return f;
 }
@@ -208,7 +216,8 @@ std::vector<double> stored(const Grid& grid) {
 
 // Errors of the stored tables at random points of every interval, against fresh reference solves; one line
 // for the settings.
-std::string measured_errors(const GeneratorSettings& s, const Fits& f, long& solves) {
+std::string measured_errors(const GeneratorSettings& s, const Fits& f, long& solves,
+                            const Progress& progress) {
   std::mt19937_64 rng(s.seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   Errors naive;
@@ -232,6 +241,7 @@ std::string measured_errors(const GeneratorSettings& s, const Fits& f, long& sol
       if (i < f.g_naive.pieces.size())
         worse(naive.eps, relative_eps_error(f.g_naive.at(sv, true), *r.ends[CollisionEnd::naive]));
     }
+    report(progress, f.g_delayed.pieces.size() + i + 1, f.g_delayed.pieces.size());
   }
   return fmt::format(
       "measured at {} random points (ln zeta uniform per interval), rounded tables in __float128:\n"
@@ -405,7 +415,7 @@ std::string fit_laws(const GeneratorSettings& s, TableData& d, long& solves) {
 
 }  // namespace
 
-TableData generate_tables(const GeneratorSettings& s) {
+TableData generate_tables(const GeneratorSettings& s, const Progress& progress) {
   if (s.degree < 2 || s.degree > 30) throw InvalidInput(fmt::format("degree {} is not in [2, 30]", s.degree));
   if (!(s.per_unit >= 1 && s.per_unit <= 64 && s.per_unit == std::round(s.per_unit)))
     throw InvalidInput(fmt::format("intervals per unit {} is not an integer in [1, 64]", s.per_unit));
@@ -433,7 +443,7 @@ TableData generate_tables(const GeneratorSettings& s) {
   delayed.tau_intervals = delayed.intervals;
 
   const std::vector<Real> nodes = chebyshev_nodes(s.degree);
-  Fits f = fit(s, naive.intervals, naive.tau_intervals, delayed.intervals, nodes);
+  Fits f = fit(s, naive.intervals, naive.tau_intervals, delayed.intervals, nodes, progress);
   naive.logit = stored(f.g_naive);
   naive.log_tau = stored(f.tau_naive);
   delayed.logit = stored(f.g_delayed);
@@ -466,7 +476,7 @@ TableData generate_tables(const GeneratorSettings& s) {
   d.q = static_cast<double>(cbrtq(Real(3) / 2));
   d.log_a = static_cast<double>(logq(x_m) + logq(2) + logq(3) / 2 - kPi / (2 * sqrtq(3)));
 
-  const std::string measured = measured_errors(s, f, f.solves);
+  const std::string measured = measured_errors(s, f, f.solves, progress);
   const std::string laws = law_errors(s, d, f.solves);
   const std::string duration_laws = fit_laws(s, d, f.solves);
   d.settings = fmt::format(

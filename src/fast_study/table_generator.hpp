@@ -5,7 +5,9 @@
 // interpolating s(g) from the unrounded forward polynomials; the settings and the errors measured at random
 // check points recorded in TableData::settings; the large-ζ laws of the durations and of the maximal
 // compression (docs/fast.md), their free constants fitted to reference solves just above the tables.
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 
 #include "fast/table_data.hpp"
 
@@ -27,6 +29,9 @@ struct GeneratorSettings {
 
 // Throws InvalidInput for settings out of range, NumericalFailure if a reference solve fails or g is not
 // monotone in s.
-TableData generate_tables(const GeneratorSettings& settings);
+// `progress(done, total)` is called after each interval of the fits and of the checks (nearly all of the
+// work); it may throw to stop the generation (the command line does on Ctrl-C).
+TableData generate_tables(const GeneratorSettings& settings,
+                          const std::function<void(std::size_t, std::size_t)>& progress = {});
 
 }  // namespace restitution::fast

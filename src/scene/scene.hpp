@@ -86,6 +86,7 @@ struct CalibrationTask {
   CollisionEnd end = CollisionEnd::delayed_recovery;
   std::optional<std::string> material;
   int line = 0;
+  int eps_line = 0;  // of the eps key: its range is known only when the calibration runs
 };
 
 // The linear dash-pot against its closed forms (2008 paper Eqs. 10 and 12): an exact check.

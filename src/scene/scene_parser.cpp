@@ -427,6 +427,7 @@ class Parser {
     check_eps(r, "eps", {*eps});
     check_positive(r, "velocity", {*velocity});
     c.eps = *eps;
+    c.eps_line = r.line_of("eps");
     c.velocity_m_s = *velocity;
     c.end = read_end(r);
     c.material = read_material_name(r);

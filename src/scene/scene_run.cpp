@@ -1,11 +1,16 @@
 #include "scene/scene_run.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <mutex>
+#include <string>
+#include <string_view>
 #include <utility>
 
 #include "damping_check/grid.hpp"
 #include "parallel/parallel_for.hpp"
+#include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 #include "scene/scene_comparisons.hpp"
 #include "scene/scene_extensions.hpp"
@@ -36,6 +41,22 @@ std::vector<CollisionResult> solve_all(const std::vector<SolveJob>& jobs, const 
     };
   });
   return solved;
+}
+
+// A calibration's ε is range-checked only when it runs (the ε at the largest checked ζ is a solve): its
+// refusal names the file, line and key as the parser's do, "FILE:LINE: calibration[i].eps: ...".
+Calibration calibrate_scene_task(const CalibrationRequest& request, CollisionSolver& solver,
+                                 const std::string& file_name, const CalibrationTask& task,
+                                 std::size_t index) {
+  try {
+    return calibrate(request, solver);
+  } catch (const InvalidInput& e) {
+    const std::string_view message = e.what();
+    const bool about_eps = message.rfind("eps ", 0) == 0;
+    throw InvalidInput(fmt::format("{}:{}: calibration[{}]{}: {}", file_name,
+                                   about_eps ? task.eps_line : task.line, index, about_eps ? ".eps" : "",
+                                   message));
+  }
 }
 
 }  // namespace
@@ -89,7 +110,8 @@ SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& setting
   }
 
   CollisionSolver solver;
-  for (const CalibrationTask& task : scene.calibrations) {
+  for (std::size_t i = 0; i < scene.calibrations.size(); ++i) {
+    const CalibrationTask& task = scene.calibrations[i];
     CalibrationRequest request;
     request.law = task.law;
     request.eps = task.eps;
@@ -100,7 +122,7 @@ SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& setting
     CalibrationOutcome outcome;
     // Only the elastic part: the material's damping, if it has any, is what the calibration computes.
     if (task.material) request.k = elastic_constants(scene.materials.at(*task.material)).k;
-    outcome.calibration = calibrate(request, solver);
+    outcome.calibration = calibrate_scene_task(request, solver, scene.file_name, task, i);
     out.collisions += static_cast<std::size_t>(outcome.calibration.solves);
     out.calibrations.push_back(outcome);
   }
