@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """`pip install --no-build-isolation .`: setuptools drives the project's CMake (the one build system) to build the
 extension target `_restitution` (python/CMakeLists.txt) in a build folder of its own, and packages it with
 python/restitution/*.py, *.pyi and py.typed. The version is the file VERSION, as for CMake's project().

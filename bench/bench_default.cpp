@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The default configuration (`restitution eps --zeta Z`: both ends, tolerance 1e-10, method auto) on the
 // ζ values of the core issue's closing table. Counters: ε of each end and its error against the reference
 // (data/reference_solutions.csv); for the naive end at ζ = 1e4, which the reference does not hold, against

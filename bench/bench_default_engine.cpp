@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The default engine's targets (issue 17): `--method auto` at T = 1e-10,
 //  * delayed-recovery end, the mean over the reference grid's ζ in [1e-3, 1e3] (25 points, log-spaced):
 //    one iteration solves every point once, the time per solve is the iteration's time / 25;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Cost of the fast ε(ζ) table (restitution/fast.hpp) against the closed-form approximations DEM codes use
 // (Padé [1/4] and [3/6] of 2011, the 1999 Padé, the series), per call, over random arguments: ζ log-uniform
 // over every interval of the tables (1e-10 ... 1e7, series and asymptotic laws included), and over

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Cost of fit_data (restitution/fit.hpp): a 30-point data set (speeds 0.01 ... 10 m/s, viscoelastic Hertz at
 // the delayed-recovery end, β = 0.2, Gaussian noise σ = 0.01, fixed seed) fitted with every candidate law
 // (Hertz at both ends on the fast table, Tsuji and the dash-pot with the solver), and with Hertz only.

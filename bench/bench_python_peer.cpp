@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The C++ side of bench/python_bench.py (issue 14): the same work the Python module is timed on, through
 // the library directly, so that the script can report the module's overhead as a ratio in one run.
 //   BM_SweepPeer: 10^5 ζ log-spaced over [1e-3, 1e3], delayed-recovery end, method taylor, tolerance 1e-10,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Per-solve micro-benchmarks: one collision per iteration, reusing one solver (as a sweep does).
 // Arguments: engine, end, ζ, tolerance. Each case also reports the error against the reference solution
 // (data/reference_solutions.csv) as the counter "error" and the right-hand-side evaluations as "rhs".

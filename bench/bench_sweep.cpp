@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The sweep target of issue 5: 10^4 values of ζ, log-spaced over [1e-4, 1e4], delayed-recovery end,
 // tolerance 1e-10 (the accuracy contract: error <= 1e-10 relative to min(ε, 1-ε)), on 1 and 2 threads.
 // Target: <= 60 ms wall on 2 cores and >= 1.8x the single-thread rate. Wall-clock medians over repeats:

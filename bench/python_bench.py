@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Speed of the Python module against the same work through the C++ library, measured in one run.
 
 Usage (after scripts/build): PYTHONPATH=build/release/python /usr/bin/python3 bench/python_bench.py [--repeats 7]

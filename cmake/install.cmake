@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # `cmake --install BUILD --prefix P` installs the library `restitution` as a CMake package:
 #   P/lib/librestitution.a, P/include/restitution/*.hpp (umbrella: restitution/restitution.hpp),
 #   P/lib/cmake/restitution/{restitutionConfig,restitutionConfigVersion,restitutionTargets}.cmake.

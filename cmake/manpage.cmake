@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # P/share/man/man1/restitution.1, made by Debian's help2man from `restitution --help` and `--version`, with the
 # --help of every subcommand appended as the section COMMANDS (cmake/manpage_commands.cmake), so that the page
 # says what the program says. Without help2man (Debian: help2man, in scripts/setup) no page is made.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # cmake -DPROGRAM=restitution -DOUTPUT=file.h2m -P manpage_commands.cmake: a help2man include file whose section
 # COMMANDS holds `PROGRAM CMD --help` for every subcommand (and their subcommands), verbatim.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # P/lib/pkgconfig/restitution.pc for builds without CMake: c++ app.cpp $(pkg-config --cflags --libs restitution).
 # librestitution.a is static, so what its objects call into (SUNDIALS, fmt) goes into Libs, not Libs.private
 # (which only `pkg-config --static` reads): a plain `--libs` must link. The flags are read from the targets

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Which SUNDIALS the library links (docs/performance.md, "SUNDIALS build"):
 #   optimized: CVODE built -O3 from Debian's own source package by scripts/sundials into
 #              build/sundials/<debian version>/ (the version of the installed libsundials-dev). Its objects go

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: the command-line parsing of every subcommand. The input is the argument list, one
 // argument per NUL-separated piece. Parsing must end in success or a CLI11 parse error whose message, as
 // the program prints it, is one non-empty line; anything else (a crash, another exception, a sanitizer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: the scene parser (TOML text -> validated Scene) and the planner. Every input must end in
 // a Scene with its plan, or InvalidInput with a non-empty message naming file and line; anything else (a
 // crash, another exception, a sanitizer report, a hang) is a finding. Nothing is solved or written.

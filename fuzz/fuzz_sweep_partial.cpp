@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: the reader of a sweep's partial file (what `restitution sweep --resume` trusts). Any
 // text must give rows of this sweep only, or InvalidInput naming the file; anything else is a finding.
 #include <cstddef>

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The README's C example (examples/c/dem_contact.c) against the exported header: it must compile as strict
 # C99 with warnings as errors, and its A from ε = 0.8 at 1 m/s and its ε at 3 m/s must match what the
 # program computes for the same material (calibrate --method fast; eps --beta --velocity with the solver).

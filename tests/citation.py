@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """CITATION.cff is valid Citation File Format 1.2.0 as far as its schema constrains what we use: valid YAML, the
 required keys with their types, no key the schema does not know, an entity or a person for each author, reference
 types from the schema's list, DOIs and dates in its formats. It names this version (the file VERSION) and lists

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Runs the `restitution` executable for end-to-end tests: captures stdout, stderr and the exit status.
 #include <sys/wait.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The naive ends of the scale-invariant members near critical damping (the dash-pot as r -> 1, Tsuji as
 // ζ -> sqrt(5)) over a grid of parameters × tolerances × every engine: each request is either refused with

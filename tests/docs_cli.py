@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """docs/cli.md cannot drift from the program's --help, and docs/README.md lists every page of docs/.
 
 Runs `restitution [CMD...] --help` for every subcommand (found recursively under "Subcommands:") and reads the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Each engine in its own room (docs/design.md, "Engines"), checked on the includes, folder by folder.
 
 * src/engine/ is the interface (engine.hpp): it includes no engine.

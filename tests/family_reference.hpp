@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // An independent integration of the contact-law family for the tests, sharing nothing with the engines:
 // x'' + ζ x^b x' + x^a = 0, x(0) = 0, x'(0) = 1, in long double, after the Sundman-type change of the

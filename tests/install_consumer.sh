@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The library as a product: installs the build into a temporary prefix, checks the installed header set,
 # builds examples/cpp against the installed package from a separate folder (strict ISO C++, warnings as
 # errors: the public headers need no GNU extension), runs it and compares its ε at both ends with

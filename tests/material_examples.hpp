@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The rubber-like pair of spheres of the shipped scenes (scenes/material_sweep.toml): Y = 10 MPa, ν = 0.45,
 // 1100 kg/m³, R = 1 cm, A = 5.8e-5 s, which makes β ≈ 0.2 s^{1/5} m^{-1/5} (the 2008 paper's example).

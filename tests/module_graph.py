@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The include graph between the modules under src/ has no cycle, the installable library reaches no study, and
 the Python module (python/src) includes only the installed API, its own headers and the study headers that
 python/CMakeLists.txt declares in restitution_python_study_headers (no study's private header, no library internals).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The Python package as a user installs it: builds a wheel from this checkout with Debian's setuptools
 # (`pip wheel --no-build-isolation --no-deps .`, setup.py driving CMake), installs it into a fresh venv that sees
 # Debian's numpy (--system-site-packages), and runs the pytest suite (python/tests) against the INSTALLED

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Runs every example of README.md and docs/*.md, so that the pages cannot drift from the program.
 
 A block or a command can be marked as not run, with the reason, and is then reported as such:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Comparing a solver's results with data/reference_solutions.csv (the __float128 Taylor reference).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Closed forms the tests compare with. They and the published coefficient tables live once, in the series
 // module (include/restitution/series.hpp, include/restitution/series_tables.hpp); the names here are

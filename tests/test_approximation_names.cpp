@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One set of approximation names (issue 12, item 16): every name `series validate` reports is a kind
 // `series eval` (and Python's series.eval) takes, giving the very numbers validate compared; every
 // approximation is accepted by scene files under the same name; the old series spellings stay aliases.

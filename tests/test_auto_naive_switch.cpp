@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // auto's naive end at ζ >= 5: Adams up to the delayed-recovery end, BDF for the stiff tail after it, in the
 // compression form with the tail's logarithm taken out of τ. The switch happens also when only the naive end
 // is asked for (the delayed-recovery end is then watched but not reported); the contract holds against the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Bad input through the executable, table-driven: each case must end with exit status 2 (3 for an output
 // that cannot be written), exactly one line on stderr that starts "restitution: error:" ("restitution: I/O
 // error:") and names the option or key, nothing on stdout, and no

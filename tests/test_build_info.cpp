@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Which SUNDIALS build the library runs on is told, and told the same way, by the library, `--version` and
 // every JSON output (issue 27: the optimized build from Debian's source package, or the system library).
 #include <gtest/gtest.h>

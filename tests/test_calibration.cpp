@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Calibration: β from a measured ε by root finding on ζ. Checked against the 2008 paper's example, by
 // round trips through the solver, and at the command line.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Issue 25 items 5-8: a scene's `output` stays under the working directory, empty --out/--output is refused,
 // `reference --out` is never ignored, and every count option has an upper bound (exit 2, naming the option).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // End-to-end: the `restitution eps` contract (JSON members, numbers that read back exactly, exit statuses).
 #include <gtest/gtest.h>
 

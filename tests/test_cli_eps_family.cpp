@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // End-to-end: `restitution eps --law NAME --zeta Z` for every member of the contact-law family.
 #include <gtest/gtest.h>
 

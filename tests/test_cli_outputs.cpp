@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Every command that prints or writes a file, through the executable: a failed write to stdout fails the
 // command with status 3; symlinks given as output keep being symlinks; streams are never replaced by
 // files; checks that need no computing come before it; a resume of a finished sweep says so.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution sweep` over impact speeds (issue 12, item 19): with β or a material, ζ = β v^{1/5}, the
 // speeds the user gave at both ends, and the SI columns scene sweeps write, equal to a scene's numbers.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // End-to-end: `restitution work-precision` (CSV per point and summary, errors against the reference) and
 // `restitution reference` (one ζ, and bad input), and `eps --method taylor`.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One encoding of the end of a collision: CollisionEnd indexes results and selections, and has one spelling.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The conditioning check at the dash-pot's and Tsuji's critical damping, every engine
 // (conditioning_grid.hpp).
 #include "conditioning_grid.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The grid of test_conditioning_grid at ten times its density in the distance to critical damping (label
 // slow).
 #include "conditioning_grid.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Contact laws: parameters, guards and the analytic Jacobian against finite differences.
 #include "restitution/contact_law.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The contact-law family x'' + ζ x^b x' + x^a = 0 through the default (CVODE) engine: closed forms where they
 // exist (the linear dash-pot; Tsuji, whose scale invariance makes both ends integrable in closed form), an
 // independent long-double integration otherwise (family_reference.hpp), energy balance, the physical <->

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The CVODE engine meets the accuracy contract against the __float128 reference solutions
 // (data/reference_solutions.csv), both ends, both methods and the automatic choice, with and without the
 // smooth formulation at the ends.

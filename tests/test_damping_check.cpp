@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The damping recipes (src/damping_check): each formula against the numbers its source states or an identity
 // it was built on, the ε each recipe really gives (closed form where one exists, the fit's own target
 // otherwise), the map's monotonicity, speed independence where claimed, and bad input on the command line.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The damping check over a grid (damping_check/grid.hpp), which a scene's [[damping_check]] section renders:
 // every value is the one check_recipe gives for that recipe, requested ε, clamp and speed, and the relative
 // errors are (actual - requested) / requested of those values.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The linear dash-pot x'' + 2r x' + x = 0, x(0) = 0, x'(0) = 1: the library's closed forms
 // (dashpot_closed_form.hpp) are checked against the exact solution evaluated directly and against the 2008
 // paper's printed Eqs. 10 and 12; they then check the event machinery at both ends, in all three regimes

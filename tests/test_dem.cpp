@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The DEM bridge: each code's parameters, read back the way the code reads them (docs/dem.md), give the
 // material's law; the unit conversions from first principles; YADE's Padé inversion; refusals; the CLI.
 // LAMMPS and LIGGGHTS themselves run in tests/dem/dem_integration.cpp.

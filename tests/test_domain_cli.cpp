@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The domain as the command line enforces it (issue 25, items 1-4, 9, 10): out-of-range input and answers
 // that a double solve cannot deliver exit 2 naming the range or the deliverable tolerance; an output path the
 // file system refuses exits 3; exit 1 is left to numerical failures inside the domain.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The registry of engines (src/registry/engine_registry.hpp): which engine computes each method, its name and
 // floor, and whether it covers a law, its ends and the options (its own check()).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The extreme ends of the ζ range against independent checks: ζ = 0 (closed form), ζ = 1e-12 and 1e-8 (the
 // small-ζ series), ζ = 1e4 ... 1e6 (the derived large-ζ laws of docs/asymptotics.md), energy balance,
 // self-convergence, and the work bound that turns Adams' stiff slowness into a clear failure.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The fast ε(ζ) table (restitution/fast.hpp): against the __float128 reference rows, its inverse, its domain,
 // and the exported C header (same text as the compiled one; compiled by gcc and g++, same bits).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Certification of the committed fast tables (src/fast/fast_table.h) against an independent engine: the
 // double-precision Taylor engine at its tightest tolerance (1e-13) on 10^5 random ζ, log-uniform and
 // stratified so that every interval of both tables, the series below them and the asymptotic laws above them

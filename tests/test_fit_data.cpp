@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // fit_data (restitution/fit.hpp): exact recovery of β from noise-free data made by the solver, the right end
 // and the right law win, bad data are refused, the residual tests see a law the data leave.
 #include <gtest/gtest.h>

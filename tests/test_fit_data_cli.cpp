@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution fit-data`: the report, and bad input refused with exit 2, one line, nothing written.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Calibration of fit_data's intervals: over many synthetic data sets with Gaussian noise (fixed seed) the
 // 95 % interval must cover the true β in 95 % ± 2 % of them and the 68 % interval in 68 % ± 3 %, with σ
 // known (Δχ² = 1, 3.84) and with σ estimated from the residuals (t quantiles, few points).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Scenes' [[fit]] sections: the shipped ice example (the 1999 paper's g* = 0.32 cm/s against a least-squares
 // fit of the Bridges et al. formula), inline data with a material, bad data refused before anything is
 // written.

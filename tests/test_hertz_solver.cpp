@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The viscoelastic Hertz collision: limits, published series, invariance under the (β, v) form, energy
 // balance, and solver details (methods, formulations, trajectory, statistics).
 #include <gtest/gtest.h>

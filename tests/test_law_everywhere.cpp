@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The contact-law family at every front end: `eps`, `sweep` (ζ and physical units), `calibrate` and a scene
 // each compute a Tsuji and a linear dash-pot case, checked against the closed forms of their naive ends
 // (docs/contact_laws.md): Tsuji ε = exp(−πζ/√(5−ζ²)), the dash-pot ε = exp(−πr/√(1−r²)), ζ = 2r.

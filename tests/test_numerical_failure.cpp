@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Numerical failures of the CVODE engine become NumericalFailure messages that name ζ, the end(s), the
 // tolerance, the method and CVODE's flag; each cause is forced here on purpose.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The library's thread pool (src/parallel/parallel_for.hpp): every index exactly once, one body per
 // thread, stop requests, and its failure policy: a throwing body or a throwing per-thread constructor ends
 // the run and is rethrown after every thread is joined (never std::terminate), while failures the body

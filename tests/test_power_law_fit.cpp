@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Power-law fits and local slopes: exact laws are recovered, the solver's ε follows the derived large-ζ laws
 // (docs/asymptotics.md), and the `restitution fit` contract holds end to end.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Progress of long work (issue 12, item 13): the library's callbacks count monotonically up to the total,
 // and the command line's progress line draws only on a terminal.
 #include <gtest/gtest.h>

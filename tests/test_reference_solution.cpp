@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The __float128 reference solutions: closed forms (ζ = 0; the linear dash-pot, 2008 paper Eqs. 10 and 12
 // and their delayed-recovery analogue), agreement of the two orders, and the stored file against a fresh
 // computation.

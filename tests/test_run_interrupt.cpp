@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Ctrl-C during `restitution run` (issue 12, item 14): SIGINT to the process group, as a terminal sends
 // it, in any phase stops the whole run with status 130, leaves no folder that looks complete, and never
 // blames matplotlib. A stand-in for python (RESTITUTION_PYTHON) holds the run in its plotting phase.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Every shipped scene runs end to end with CI's small settings (`--quick`), and its outputs say what they
 // should. Plots are made for one scene; the others run as on a machine without matplotlib, which must still
 // write the data and say so on stderr.

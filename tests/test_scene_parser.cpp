@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The scene parser alone: what it accepts, and that every rejection names the file, the line and the key.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // What report.md says about a scene's sweeps: an approximation compared at no point says "not compared"
 // (never a difference of 0), a compared one names the points and the ζ range its largest difference is taken
 // over, and a table that shows only some rows says so.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The typed results of a scene's studies (scene/scene_results.hpp) carry the numbers the report quotes: each
 // is recomputed here independently from the solved collisions (or from closed forms written out in this
 // file) and compared, so that the CLI, which only renders them, quotes numbers that were checked.

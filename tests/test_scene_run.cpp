@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Planning and running scenes: the work follows from what is asked. Checked through the solver statistics
 // against direct solves: one solve per distinct collision, no naive tail unless asked, no trajectory unless
 // asked; physical points use ζ = β v^{1/5}.

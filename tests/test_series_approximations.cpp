@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Series and closed-form approximations: against the solver where they are accurate, their defining
 // equations and limits, the 1999 Table I, convergence radii, and the validation report's structure.
 #include <gtest/gtest.h>

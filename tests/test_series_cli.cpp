@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // End-to-end: the `restitution series` contract (coefficients, eval, validate, certify; JSON members,
 // 17 significant digits, exit statuses).
 #include <gtest/gtest.h>

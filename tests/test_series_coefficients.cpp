@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The recomputed series coefficients: closed forms and exact rationals, the stored certified table,
 // the published tables digit by digit (wrong digits are explicit known exceptions), and the 2011 Padé
 // approximants as Padé approximants of the recomputed h_k.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The dense 3×3 (and general n×n) matrix and LU solver that CVODE's BDF corrector uses: against SUNDIALS' own
 // SUNLinSol_Dense on the same matrices, against systems built from a known solution, on a zero leading pivot
 // and singular matrices, and the matrix operations against plain reference loops.

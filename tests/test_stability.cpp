@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The stability report: its checks on a few points, the Adams work bound as a finding, the per-decade
 // summary, and the `restitution stability` contract end to end (JSON, CSV, output folder, bad input).
 #include <gtest/gtest.h>

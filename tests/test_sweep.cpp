@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Parallel sweeps: the grid, serial == parallel bit for bit, order, resume without recomputation, failed
 // points marked, cancellation keeping finished rows, and the CLI's atomic final file.
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The Taylor engine (--method taylor) against the __float128 reference solutions, across ζ and tolerances,
 // both ends: the accuracy contract |ε - ε*| <= T·min(ε*, 1-ε*), and τ_c, x_end, maximal compression.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The accuracy contract: for every ζ in [1e-8, 1e4] and T in {1e-6, 1e-8, 1e-10}, the error of ε relative
 // to min(ε, 1-ε) is at most T, measured against a much tighter solve (T = 1e-11 with the other method, so
 // that the reference does not share the tested method's error).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The rewrite of scene text to ASCII-only TOML that keeps toml++ 3.3.0 away from its undefined behaviour
 // on non-ASCII characters: values and line numbers must survive it, its output must be ASCII whatever the
 // input, and what it refuses must be refused with the line.

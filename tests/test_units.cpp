@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Physical units: the scalings of docs/design.md §1 checked against closed forms (Hertz's elastic collision),
 // an independent integration of the dimensional equation in SI units, and the 1999 paper's g*.
 #include <gtest/gtest.h>

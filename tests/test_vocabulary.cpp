@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One vocabulary: every name of a method, an end (and the "both" set) and a law is spelled once, beside its
 // enum, and every front end parses it there; the defaults come from SolveOptions.
 #include <gtest/gtest.h>

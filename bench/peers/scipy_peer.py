@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Peer benchmark: SciPy's solve_ivp (DOP853, LSODA, Radau, BDF) on x'' + zeta x' sqrt(x) + x^{3/2} = 0,
 x(0) = 0, x'(0) = 1, with the delayed-recovery end zeta x' + x = 0 as a terminal event, as a physicist would
 write it (time form, sqrt guarded at x <= 0). Errors against data/reference_solutions.csv; run times are

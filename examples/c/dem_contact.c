@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* A DEM code's use of the exported header (restitution export c-header --out restitution_fast.h): the
  * dissipative constant A from one measured ε, then the ε of a contact at another impact speed.
  * Usage: dem_contact EPS V_MEASURED K V, speeds in m/s, k = ρ/m_eff in s^-2 m^-1/2 (`restitution calibrate`

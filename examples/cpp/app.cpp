@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // ε of two viscoelastic spheres at both ends of the collision, for ζ = β v^{1/5} (natural units).
 #include <cstdio>
 #include <cstdlib>

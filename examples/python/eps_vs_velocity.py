@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """eps(v) of two colliding steel-like spheres at both ends of the collision, plotted to a PNG.
 
 Usage: PYTHONPATH=build/release/python /usr/bin/python3 examples/python/eps_vs_velocity.py [OUT.png]

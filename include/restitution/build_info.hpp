@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Which build of SUNDIALS the library's CVODE engine runs on: the program's --version and every JSON output
 // say it, because it doubles or halves the cost of a CVODE solve (docs/performance.md). The numbers do not

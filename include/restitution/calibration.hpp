@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Calibration: the damping that gives a measured coefficient of restitution ε, found by root finding on the
 // natural form's ζ with the collision solver (ε decreases monotonically with ζ), for any member of the

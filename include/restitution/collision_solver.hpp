@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The collision solver: shoots the equation of motion of a ContactLaw with the engine of the requested
 // method (CVODE BDF/Adams or the Taylor method) and detects the end(s) of the collision. One solver holds

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Contact laws: the equation of motion of the compression x(τ), written once for every engine.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Typed errors of the library. The command-line program maps them to exit statuses:
 // InvalidInput -> 2 (bad usage or input), NumericalFailure -> 1, IoError -> 3.

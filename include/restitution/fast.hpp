@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Certified fast ε(ζ): piecewise polynomials in ln ζ generated from the quad-precision reference engine, the
 // small-ζ series below them and the large-ζ asymptotic laws above (docs/fast.md). Natural units throughout

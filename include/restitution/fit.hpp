@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Fitting measured coefficients of restitution ε(v) (docs/fit.md): for each candidate law the one free
 // parameter by (weighted) least squares, intervals from the profile of χ², χ² per degree of freedom, AIC and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The CSV of measured coefficients of restitution that `fit-data` and scenes' [[fit]] read (docs/fit.md):
 // a header naming the columns v, eps and optionally sigma (any order), then one measurement per line;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A pair of viscoelastic spheres described by material data in SI units, and the constants of their
 // collision equation (docs/design.md §1; 1999 paper Eqs. 1-5):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The restitution library in one include: contact laws, the collision solver and its engines, units and
 // materials, calibration, the analytic series with the published coefficient tables, and the certified

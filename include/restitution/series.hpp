@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Analytic series and approximations of the coefficient of restitution ε(ζ), ζ = β v^{1/5} (natural units).
 // Every evaluator returns ε and 1 - ε, the latter without cancellation as ε -> 1. Coefficients are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The published coefficient tables, held once, as printed (natural units: ζ = β v^{1/5}).
 //   [2008] T. Schwager, T. Pöschel, Phys. Rev. E 78, 051304 (2008), Tables III and V.

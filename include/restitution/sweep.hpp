@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Sweeps over ζ: many independent collisions solved in parallel, one CollisionSolver per thread.
 // Each point's result depends only on its ζ and the SolveOptions (a reused solver gives bitwise the same

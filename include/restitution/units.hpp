@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Physical units <-> the scaled equations, in one place (docs/design.md §1; 2008 paper Eq. 23; 1999 paper Eq.
 // 30).

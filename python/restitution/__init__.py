@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Coefficient of restitution of viscoelastic spheres.
 
 eps(zeta) solves the collision x'' + zeta sqrt(x) x' + x^(3/2) = 0, x(0) = 0, x'(0) = 1 (natural units,

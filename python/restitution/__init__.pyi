@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Type stubs of the restitution package. Physical quantities in SI units (named in each docstring);
 # zeta, tau, x and the EndResult/CollisionResult fields in natural units (x'(0) = 1).
 from typing import Any, Dict, Literal, Optional, Sequence, Tuple, Union, overload

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The library's certified fast table of eps(zeta) (docs/fast.md), natural units (zeta = beta v^(1/5)).
 
 Piecewise polynomials in ln zeta, fitted to the quad-precision reference engine: |eps - eps_exact| <=

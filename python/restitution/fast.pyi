@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Type stubs of restitution.fast: zeta in natural units, eps dimensionless.
 from typing import Literal, Tuple, Union, overload
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Analytic series and closed-form approximations of eps(zeta), natural units (zeta = beta v^(1/5)).
 
 coefficients(kind, count): recomputed coefficients (kinds: coefficient_kinds).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Type stubs of restitution.series (natural units, zeta = beta v^(1/5)).
 from typing import Literal, Optional, Tuple, Union, overload
 

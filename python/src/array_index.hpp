@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Error messages that name the element of an array argument.
 #include <pybind11/numpy.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The parts of the extension module _restitution, one registration function per file; the public Python
 // API (argument conversion, broadcasting, docstrings) is restitution/__init__.py on top of these.

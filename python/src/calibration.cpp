@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // restitution.calibrate: β (and A for a material) from a measured ε at an impact speed.
 #include <fmt/core.h>
 #include <pybind11/stl.h>

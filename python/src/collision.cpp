@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // eps and solve: one collision or an array of them, with the library's result types as Python classes.
 #include <fmt/core.h>
 #include <pybind11/numpy.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The library's typed errors as Python exceptions: InvalidInput -> ValueError, NumericalFailure -> the
 // ArithmeticError subclass NumericalFailure (exported as restitution.NumericalFailure).
 #include <pybind11/pybind11.h>

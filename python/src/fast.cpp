@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // restitution.fast: the library's certified fast table (restitution/fast.hpp) for one value or an array.
 #include "restitution/fast.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // restitution.fit_data: a fit of measured eps(v) with every candidate law (restitution/fit.hpp), returned as
 // a dict with the keys of `restitution fit-data --json` (docs/fit.md); a bound at the edge of the checked
 // range is None.

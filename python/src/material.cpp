@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // restitution.Material: a pair of spheres of one material in SI units, the same fields as a scene's
 // [material] table, with the constants of their collision equation.
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The extension module _restitution: the library's solver, units, calibration, series and fast table for the
 // pure-Python package `restitution` (python/restitution/__init__.py).
 #include "bindings.hpp"

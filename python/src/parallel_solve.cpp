@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "parallel_solve.hpp"
 
 #include <pybind11/pybind11.h>

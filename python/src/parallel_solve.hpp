@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Many collisions from Python: the library's parallel sweep, run with the GIL released, stoppable by
 // Ctrl-C. The one place the module touches threads (the library's sweep owns the worker pool).

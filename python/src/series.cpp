@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // restitution.series: the recomputed series coefficients and the closed-form approximations by name.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Python's end/tolerance/method arguments -> the library's SolveOptions.
 #include <string>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """`cmake --install` puts the package where Debian's python3 looks: installs into a staging DESTDIR with
 prefix /usr/local, checks that the install directory is on the interpreter's own sys.path for that prefix,
 and imports the staged package. Usage: check_install.py CMAKE BUILD_DIR INSTALL_DIR (ctest python_install).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Shared fixtures: the reference solutions of data/reference_solutions.csv (natural units)."""
 
 import csv

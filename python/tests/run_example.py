@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Runs an example script into a temporary folder and checks that it wrote a non-trivial PNG.
 
 Usage: run_example.py SCRIPT (ctest: python_example_eps_vs_velocity). Not collected by pytest.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Issue 25 item 11: Python refuses bad arguments in its own words, naming the argument."""
 
 import pytest

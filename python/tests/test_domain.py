@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The domain every front end applies (issue 25, item 3): zeta <= 1e6 and, for a partial sum, its radius of
 convergence; Python's series.eval refuses what `restitution series eval` refuses, in the same words."""
 

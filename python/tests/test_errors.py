@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Bad input raises the documented exception with a message naming the value (and the index)."""
 
 import math

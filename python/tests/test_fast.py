@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """restitution.fast: the certified table against the reference solutions, the solver, the C header (bit for
 bit), its inverse, the shape rules and the errors."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """restitution.fit_data: recovery of beta from exact data, the keys of the result, bad input."""
 
 import pytest

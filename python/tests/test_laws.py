@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The contact-law family from Python: law="NAME" in eps, solve and calibrate, against the closed forms of
 the naive end (Tsuji: eps = exp(-pi zeta / sqrt(5 - zeta^2)); the linear dash-pot, zeta = 2 r:
 eps = exp(-pi r / sqrt(1 - r^2)))."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Shapes in, shapes out: floats stay floats, arrays keep their shape, beta and velocity broadcast."""
 
 import numpy as np

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Long array calls release the GIL and stop with KeyboardInterrupt on SIGINT."""
 
 import os

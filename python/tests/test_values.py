@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """eps against the certified reference solutions at both ends, scalar and array, to the requested tolerance."""
 
 import numpy as np

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """The 2008 paper's Fig. 2 with the derived large-zeta laws, local slopes against zeta, and the numbers quoted
 in docs/asymptotics.md (fitted exponents per range, the measured first correction of the delayed end).
 

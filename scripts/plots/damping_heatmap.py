@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A speed-dependent damping recipe's two errors (restitution run, [[damping_check]]): top, its own error at the
 set-up speed over requested eps (a line per clamp); bottom, heat maps of the physical speed dependence
 eps(v)/eps(v_ref) - 1 over requested eps x impact speed, one per clamp.

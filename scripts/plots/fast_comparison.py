@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Error and cost of the fast eps(zeta) table against the closed-form approximations, zeta in [1e-4, 1e4].
 
 Errors: each approximation's eps and 1 - eps (from `restitution series validate`) against the fast table

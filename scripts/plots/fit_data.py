@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Plot a scene's [[fit]] (restitution run): the measured eps with error bars, each law's eps(v) with its 95 %
 band, and below the residuals of each law against the speed.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The 2008 paper's Fig. 3 for one collision: x, x'' and x' against tau with the ends marked (restitution run).
 
 usage: scene_trajectory.py CSV PNG --ends NAME:TAU,... [--title T]

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Plot columns of a scene's CSV table against one column (restitution run).
 
 usage: scene_xy.py CSV PNG --x COL --y COL[,COL...] [--dashed COL,...] [--xscale log] [--yscale log]

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Plot of `restitution series validate`: the 2008 paper's Fig. 1 (eps against zeta, both ends, solver with
 the series) and the relative error of eps and of 1 - eps of every approximation (log scales).
 

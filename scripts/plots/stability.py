@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Stability report plot: cost (steps, right-hand sides) and the error checks against zeta, both ends.
 
 Usage: stability.py STABILITY.csv OUT.png TOLERANCE   (written by `restitution stability --out DIR`)

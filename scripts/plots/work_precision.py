@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Work-precision plot: worst error over the zeta set against the mean run time per solve, one curve per
 engine (points: tolerances), one panel per end. Usage: work_precision.py SUMMARY_CSV OUT_PNG"""
 import csv

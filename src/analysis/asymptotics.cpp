@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "analysis/asymptotics.hpp"
 
 #include <fmt/core.h>

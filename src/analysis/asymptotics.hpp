@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Derived large-ζ laws of ε for both ends of the collision. Natural units (x'(0) = 1); the derivation is in
 // docs/asymptotics.md.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "analysis/power_law_fit.hpp"
 
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Large-ζ power laws ε ≈ c ζ^p: least-squares fits of ln ε against ln ζ, and local slopes d ln ε / d ln ζ
 // from Richardson-extrapolated central differences of tightly converged solves, with error estimates.

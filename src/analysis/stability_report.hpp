@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Numerical stability of the solver over ζ: for each point and end, the production solve (method auto),
 // its self-convergence (relative change when the tolerance is tightened 100×) and its agreement with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "cli/build_json.hpp"
 
 #include "restitution/build_info.hpp"

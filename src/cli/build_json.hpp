@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The "sundials" field every JSON document of the program carries: which SUNDIALS build computed it.
 #include "cli/json_writer.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution calibrate`: β (and A for a material, and the 1999 paper's g*) from one measured ε at one
 // impact speed.
 #include <fmt/core.h>

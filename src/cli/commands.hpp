@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Subcommands of the `restitution` program. Each add_*_command registers its options on the app and,
 // when its subcommand is chosen, stores the action to run after parsing. Actions return the exit status

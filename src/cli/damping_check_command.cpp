@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution damping-check`: the ε a DEM code's damping recipe really produces for a requested ε, per
 // clamp and impact speed, and the map over requested ε (docs/damping.md).
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution dem`: the input lines for a DEM code (LAMMPS, LIGGGHTS, MercuryDPM, YADE, Chrono) that give a
 // material the viscoelastic Hertz law, with the ε they give at a few impact speeds (docs/dem.md).
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution eps`: one collision, ε at the requested end(s), as a table or as one JSON object.
 #include <fmt/core.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution fast-table`: regenerates the fast ε(ζ) tables (src/fast/fast_table.h) from the reference
 // engine; `restitution export c-header`: writes the compiled tables as one self-contained C99 header.
 #include <fmt/core.h>

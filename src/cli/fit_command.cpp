@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution fit`: least-squares power law ε ≈ c ζ^p over a ζ range at one end, with local slopes from the
 // solver and the derived large-ζ law beside it (docs/asymptotics.md).
 #include <fmt/core.h>

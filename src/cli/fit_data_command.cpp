@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution fit-data FILE`: fit measured ε(v) with every candidate law, intervals from the profile of χ²,
 // the law the data prefer (docs/fit.md).
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The report of a fit of measured ε(v) (restitution/fit.hpp): one JSON object and the human-readable table,
 // shared by `fit-data` and scenes' [[fit]] sections (docs/fit.md lists the keys).

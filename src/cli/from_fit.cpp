@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "cli/from_fit.hpp"
 
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reading the result of `fit-data --output FILE` (docs/fit.md) for `calibrate --from-fit`: the viscoelastic
 // Hertz fit whose β and intervals carry over, and what they give at one speed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Standard output as an output like any file: a result that never reached it is an I/O failure (IoError,
 // exit status 3), not a success.

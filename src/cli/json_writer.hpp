@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The streaming interface the commands use to build their JSON, backed by nlohmann::ordered_json (keys
 // stay in the order written). Serialisation is nlohmann's: compact, strings escaped, UTF-8 passed through,

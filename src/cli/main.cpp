@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The `restitution` program: parses the command line, runs one subcommand, maps errors to exit statuses
 // (2: bad usage or input, 1: numerical failure, 3: an output that cannot be written) with one line on stderr.
 #include <CLI/CLI.hpp>

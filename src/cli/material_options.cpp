@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "cli/material_options.hpp"
 
 #include "restitution/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The material options shared by `calibrate` and `dem`: --young-modulus, --poisson-ratio, --radius
 // [--radius2],

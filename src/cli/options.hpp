@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Option vocabulary shared by the subcommands: names on the command line <-> library enums.
 #include <fmt/core.h>

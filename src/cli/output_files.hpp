@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Files the commands write: output folders, complete-or-absent files, numbers as text, plot scripts.
 #include <filesystem>

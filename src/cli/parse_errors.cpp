@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "cli/parse_errors.hpp"
 
 #include <fmt/core.h>

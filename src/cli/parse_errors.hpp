@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Turns CLI11's parse errors into one line that names the option and says what it expected.
 #include <CLI/CLI.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "cli/physical_columns.hpp"
 
 namespace restitution::cli {

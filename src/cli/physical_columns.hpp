@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The physical columns of an ε(v) table, one definition for scene sweeps and `restitution sweep`: the
 // impact speed and β after ζ, and for a material the SI duration of each end and the time and size of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "cli/progress.hpp"
 
 #include "cli/stop_signals.hpp"

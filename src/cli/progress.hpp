@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The progress line every long command draws on stderr: "\r  what: done/total (percent)", redrawn at most
 // ten times a second and once at the end. Only on a terminal: when stderr is a file or a pipe (tests,

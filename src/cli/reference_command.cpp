@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution reference`: the high-precision reference solutions (Taylor method in __float128) on the fixed
 // ζ grid, written as data/reference_solutions.csv; or one ζ printed with 34 significant digits.
 #include <fmt/core.h>

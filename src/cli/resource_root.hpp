@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Where the program finds the files it ships beside itself: the plot scripts (scripts/plots), the default
 // scene (scenes/default.toml) and the reference solutions (data/reference_solutions.csv).

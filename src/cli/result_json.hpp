@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The JSON form of a CollisionResult (the `restitution eps --json` contract), reusable by other commands.
 #include "cli/json_writer.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution run [SCENE]`: runs a scene file (default: scenes/default.toml, the 2008 paper) and writes its
 // tables, plots and report into the scene's output folder.
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A scene's [[damping_check]] section as written (damping_check/grid.hpp computes it): for each DEM damping
 // recipe the ε it really gives against the requested one (clamp on and off, at the reference speed) and, for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A scene's [[dem]] section: the DEM code's input lines for a scene material, restitution's ε(v) for them
 // and, for LAMMPS and LIGGGHTS, the ε(v) the code itself measures (dem/code_runner.hpp, dem/lines_check.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A scene's [[fit]] section as written: the fit (restitution/fit.hpp) of its data, the tables for the plot
 // (data with error bars and each law's residuals; each law's curve with its 95 % band) and the markdown.

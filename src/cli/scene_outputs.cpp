@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "cli/scene_outputs.hpp"
 
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Everything `restitution run` writes into a scene's output folder: CSV tables, summary.json, PNG plots and
 // report.md. Files are written atomically; a missing matplotlib costs the plots only.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The tables of a scene's results (CSV text) and the columns they hold, shared by the files, the plots and
 // the report of `restitution run`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The wording of a scene report for the studies' typed results (scene/scene_results.hpp): what an
 // approximation is and where it comes from, how it compares with the numerics, why a fit or a study has no

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution series coefficients|eval|validate|certify`: the analytic series, their recomputed
 // coefficients and their validation against the solver.
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Files of `restitution series validate` and `restitution series certify`.
 #include "cli/series_reports.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The file-writing parts of `restitution series`: the validation report and the certified coefficients.
 #include <string>

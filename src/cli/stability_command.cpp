@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution stability`: the stability report over ζ in [0, 1e6] for both ends, as a table, JSON, or
 // (with --out) CSV + JSON + PNG.
 #include <fmt/core.h>

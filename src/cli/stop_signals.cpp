@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "cli/stop_signals.hpp"
 
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Ctrl-C (SIGINT) and SIGTERM while a command works: instead of dying mid-write, the command notices the
 // signal at its next check, leaves nothing that looks complete, and exits with 128 + the signal number.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution sweep`: ε over a grid of ζ, or of impact speeds with β or a material, in parallel, into one
 // CSV file. Nothing finished is lost: each
 // finished row is appended to FILE.partial and flushed; FILE appears (atomically) only when every point is

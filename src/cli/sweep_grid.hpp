@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The options of `restitution sweep` and the grid they describe: ζ values, or impact speeds with β or a
 // material (ζ = β v^{1/5}), checked before anything is computed or written.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The CSV table of `restitution sweep` and its partial file. The partial file (FILE.partial) holds a line
 // naming the sweep's settings, the CSV header, then one line per finished point in completion order,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `restitution work-precision [--out DIR]`: error against run time of every engine on a fixed ζ set and
 // tolerance ladder, both ends, against data/reference_solutions.csv: a CSV per point, a summary CSV per
 // (engine, end, tolerance) and a PNG (scripts/plots/work_precision.py).

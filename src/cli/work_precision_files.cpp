@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "cli/work_precision_files.hpp"
 
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The files of a work-precision measurement, shared by `restitution work-precision` and the scenes'
 // [[work_precision]] sections: every point, the summary per (engine, end, tolerance) and its plot.

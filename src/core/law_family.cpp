@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The members of the contact-law family: a new member is one entry of kMembers (docs/contact_laws.md).
 #include <fmt/core.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The scales of a contact law that the engines' tolerance policies need, derived from the member's
 // exponents (docs/contact_laws.md): where its ends lie, how small the quantities deciding them become,
 // and whether the naive end exists.

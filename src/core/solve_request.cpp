@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Which requests a law can honour, whatever the engine: engines call this before they integrate, so that
 // no engine needs another's headers to refuse the same requests.
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "cvode/cvode_engine.hpp"
 
 #include <fmt/core.h>

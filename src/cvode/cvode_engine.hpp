@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The CVODE engine (`--method bdf|adams|auto`): BDF or Adams on the smooth formulation, with tolerances from
 // the tolerance policy. Holds one integrator per method, reused across solves; one engine per thread.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "cvode/cvode_integrator.hpp"
 
 #include <cvode/cvode_ls.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // One CVODE integrator (BDF or Adams) for the equation of motion of a ContactLaw, with the dissipated
 // energy integrated alongside. Reused across solves and across the phases of a solve (CVodeReInit).

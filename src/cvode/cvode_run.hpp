@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The phases of one collision on one CVODE integrator: u = x^{1/q} from the start, τ around maximal
 // compression, u again down to x = 0 (docs/design.md §4), or τ throughout for laws smooth in τ; the ends are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "cvode/tolerance_policy.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Turns the user's accuracy request into CVODE settings: method, relative and absolute tolerances per
 // form, time limit. The factors are measured (docs/accuracy.md); tests/test_tolerance_honesty.cpp checks

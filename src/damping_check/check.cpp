@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "damping_check/check.hpp"
 
 #include <fmt/core.h>

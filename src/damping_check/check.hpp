@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The ε a damping recipe really produces: the recipe's law member and ζ (recipes.hpp) solved with the
 // collision solver, per clamp (on: the force is clamped at zero, the collision ends where it vanishes, the

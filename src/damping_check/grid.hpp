@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The damping check over a grid (a scene's [[damping_check]] section, docs/damping.md): for each recipe the
 // actual ε against the requested one at the reference speed and the recipe's error there, for the

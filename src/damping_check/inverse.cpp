@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "damping_check/inverse.hpp"
 
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The damping check inverted (docs/damping.md): the ε to request from a DEM code's recipe so that it gives a
 // target ε at one impact speed, and the ε(v) that request then gives at other speeds.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What a DEM code's damping recipe makes of a requested coefficient of restitution ε_req: the member of the
 // contact-law family it sets (restitution/contact_law.hpp) and its damping ζ in natural units,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "damping_check/yade_version_lines.hpp"
 
 #include "damping_check/inverse.hpp"

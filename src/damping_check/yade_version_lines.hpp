@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // `restitution dem --code yade` for a named YADE version (docs/dem.md, YADE): a version with `vn` (2024.02a
 // on) keeps the exact law's (en, vn) lines; one without (Debian 12's 2023.02a) gets the Tsuji-type `betan`

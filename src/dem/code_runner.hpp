@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Runs LAMMPS (`lmp`) or LIGGGHTS (`liggghts`) on head-on collisions of a pair of spheres fed the lines
 // `restitution dem` makes, and reads back the ε each collision ends with. Used by the [[dem]] scene section

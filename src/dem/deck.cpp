@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Each code's convention, derived in docs/dem.md: which numbers make the code's force equal to
 // F = (4/3) E* sqrt(R_eff) ξ^{3/2} + 2 A E* sqrt(R_eff ξ) ξ'.
 #include "dem/deck.hpp"

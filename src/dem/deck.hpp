@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Input lines for DEM codes that implement the viscoelastic Hertz law, each in its own convention
 // (docs/dem.md), and what those lines give a pair of spheres: the code's own reading of its parameters.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "dem/deck_eps.hpp"
 
 #include <fmt/core.h>

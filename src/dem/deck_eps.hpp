@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The ε a deck's lines give, solved with the collision solver: at the deck's own pair and at pairs of other
 // sizes of the same material (where codes whose parameters contain m_eff or R_eff stop being exact).

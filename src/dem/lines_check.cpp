@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "dem/lines_check.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What the lines `restitution dem` prints give (docs/dem.md): A calibrated or given, the deck, the ε these
 // lines give this pair at a few impact speeds and other sizes of the material, and, for YADE, what its own

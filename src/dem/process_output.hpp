@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Running a DEM code as a child process and reading back the lines the deck printed for itself: the codes
 // print banners and warnings too, so only lines starting with the deck's own tag count.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "dem/yade_conversion.hpp"
 
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // YADE's (en, vn) -> A conversion for Ip2_FrictMat_FrictMat_MindlinPhys, reimplemented from its
 // documentation and pkg/dem/HertzMindlin.cpp: σ solves the Müller–Pöschel 2011 Padé [3/6]

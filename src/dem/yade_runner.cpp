@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "dem/yade_runner.hpp"
 
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Runs YADE (`yade -n -x`) on the lines `restitution dem --code yade` prints, unchanged (the material line
 // exec'd, the Ip2 and Law2 lines eval'd as printed), in a head-on collision of the pair at each speed, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Which YADE the `dem --code yade` lines are for (docs/dem.md, YADE): Ip2_FrictMat_FrictMat_MindlinPhys takes
 // `vn` (and so the exact viscoelastic law, through its Padé [3/6] inversion) only from YADE 2024.02a on.

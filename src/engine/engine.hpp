@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The interface of the engines that integrate one collision: CVODE with BDF or Adams (cvode/cvode_engine.hpp)
 // and the double-precision Taylor method (taylor/taylor_engine.hpp). CollisionSolver picks one per Method

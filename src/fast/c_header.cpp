@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fast/c_header.hpp"
 
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The text of the self-contained C99 header of the fast tables (src/fast/fast_table.h): the numbers of a
 // TableData followed by one fixed evaluation code. The library compiles that header, `restitution export

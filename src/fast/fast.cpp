@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The library's fast ε(ζ): thin checked wrappers around the C99 evaluation of the generated header, so that
 // the library and the exported header compute the same bits.
 #include "restitution/fast.hpp"

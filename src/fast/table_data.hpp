@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The numbers of the fast ε(ζ) tables (docs/fast.md), as the generator computes them and as
 // src/fast/fast_table.h holds them. Natural units; s = ln ζ; g = ln(ε / (1 − ε)), the logit of ε.

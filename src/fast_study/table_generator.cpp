@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fast_study/table_generator.hpp"
 
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Makes the fast tables (TableData) from the __float128 reference engine
 // (restitution/reference_solution.hpp): Chebyshev interpolation of g = ln(ε/(1 − ε)), ln τ_c, ln x_max and ln

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "restitution/fit_csv.hpp"
 
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // fit_data: the checks, the candidates' shared statistics (AIC, BIC, χ²/dof), the choice of the best law and
 // the conversions of β into g* and A (restitution/fit.hpp, docs/fit.md).
 #include <fmt/core.h>

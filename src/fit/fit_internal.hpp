@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The parts of fit_data (restitution/fit.hpp): the weights and quantiles every law shares, the fit of
 // viscoelastic Hertz (β on the fast table), of the speed-independent members (one ε, inverted with the

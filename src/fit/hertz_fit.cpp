@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Viscoelastic Hertz: β by weighted least squares on the certified fast table (ε at ζ = β v^{1/5}), over
 // u = ln β. A grid brackets the minimum of χ²(u), Brent's method narrows it, and the root of dχ²/du
 // polishes it to full precision (a minimiser alone stops at sqrt(machine ε) in u). The intervals are the

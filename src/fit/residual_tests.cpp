@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the residuals against ln v (restitution/fit.hpp ResidualTests): a weighted straight line and a
 // runs test on the signs. Where data leave a viscoelastic law they do so at one end of the speed range
 // (plasticity or fracture at high speed, adhesion at low speed; 1999 paper §V on ice), so the residuals

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The speed-independent members (Tsuji, the linear dash-pot): one ε for every speed, so the least-squares ε
 // is the weighted mean and χ²(ε) = χ²_min + W (ε - ε̂)² is exactly quadratic: the profile intervals in ε are
 // ε̂ ± sqrt(Δ/W). ε decreases monotonically with the law's ζ, and the profile of χ² is invariant under a

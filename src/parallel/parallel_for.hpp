@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The library's one thread pool: indices 0 … count-1 handed out to worker threads from a shared counter,
 // for sweeps (src/sweep) and scenes (src/scene). Private to the library.

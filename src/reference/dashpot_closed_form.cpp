@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "reference/dashpot_closed_form.hpp"
 
 #include <fmt/core.h>

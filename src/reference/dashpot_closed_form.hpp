@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Closed forms for the linear dash-pot x'' + 2r x' + x = 0, x(0) = 0, x'(0) = 1 (natural units: time in
 // units of 1/ω0, r the damping ratio): the exact reference of the dash-pot checks.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "reference/reference_solution.hpp"
 
 #include <fmt/core.h>

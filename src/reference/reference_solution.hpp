@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reference solutions independent of CVODE: the Taylor-series method on the smooth formulation
 // (src/taylor/taylor_collision.hpp) in __float128 (113-bit significand), run at two orders and tolerances;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "reference/work_precision.hpp"
 
 #include <fmt/core.h>

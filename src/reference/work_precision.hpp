@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Error against run time: every engine (CVODE BDF and Adams with and without the smooth formulation at the
 // ends, the Taylor engine) on a fixed ζ set and tolerance ladder, both ends, measured against the reference

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The table of engines: adding one is its folder plus an entry here and its include (docs/design.md,
 // "Engines").
 #include "registry/engine_registry.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Which engine computes which method, with the engine's name and its smallest tolerance: the one place that
 // maps a Method to an engine (src/registry/engine_registry.cpp holds the table). CollisionSolver and the

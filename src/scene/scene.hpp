@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Scene files: what to compute, on what, how accurately and where to write (TOML; format in README.md and
 // scenes/*.toml). This header holds the parsed scene as plain values and the parser; planning and running

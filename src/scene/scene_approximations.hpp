@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The approximations a scene can set beside the numerics: their names in scene files, their table columns
 // and the end of the collision each describes (evaluated with the published coefficients). What each is and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The numerics of a scene set against what they are compared with: approximation columns, an empirical law
 // and the dash-pot's closed forms. Every difference, maximum and range the report quotes is computed here.

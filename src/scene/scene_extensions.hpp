@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The scene runner's links to the modules other than the solver: the published series and approximants
 // (series module), the power-law fit (asymptotics module), the stability report and the work-precision

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A scene's [[fit]] section: measured ε(v) (a CSV file relative to the scene, or inline lists) fitted with
 // the candidate laws of restitution/fit.hpp, as `restitution fit-data` does (docs/fit.md, docs/scenes.md).

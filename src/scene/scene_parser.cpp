@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The scene file -> Scene values. Only this file (with toml_reader) knows TOML.
 #include <fmt/core.h>
 #include <fmt/format.h>

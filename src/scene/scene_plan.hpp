@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The planner: from what a scene asks, the collisions to integrate. Each distinct collision is solved once,
 // with the union of the ends and the trajectory every output needs from it; only the requested ends are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What a scene's studies found, as typed values: approximation columns and their comparison with the
 // numerics, power-law fits, the empirical-law deviation, dash-pot closed-form checks, stability and

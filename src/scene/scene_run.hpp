@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Running a planned scene: every job solved once (in parallel, one solver per thread), calibrations, and the
 // comparisons the scene asks for. Results are values; writing them is the caller's business.

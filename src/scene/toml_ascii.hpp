@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Rewrites scene text as ASCII-only TOML before toml++ sees it. Debian's toml++ 3.3.0 reaches
 // __builtin_unreachable (undefined behaviour) in is_non_ascii_horizontal_whitespace for many code points

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "scene/toml_reader.hpp"
 
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Strict reading of one TOML table for the scene parser: every read marks its key as used, finish() rejects
 // the keys nobody read, and every error names the file, the line and the key (toml++ source positions).

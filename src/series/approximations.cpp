@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Closed-form approximations: the 1999 paper's Padé [1/4] and simple theory, the 2011 Padé approximants.
 #include <cmath>
 #include <string>

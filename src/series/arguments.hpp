@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Argument checks shared by the series evaluators.
 #include <fmt/core.h>

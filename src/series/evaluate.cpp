@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Evaluators of the truncated series, closed forms of the undamped collision, approximation names.
 #include <cmath>
 #include <numbers>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Series arithmetic behind the independent computation of the coefficients a_k, b_k, c_k, h_k (natural
 // units: x'' + ζ x' sqrt(x) + x^{3/2} = 0, x(0) = 0, x'(0) = 1). Templated on the scalar so that two

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The recomputed series coefficients in two working precisions (see coefficient_generator.hpp).
 #include <fmt/core.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The published tables against the certified recomputation, digit by digit.
 #include <array>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Independent computation of the series coefficients (natural units, ζ = β v^{1/5}):
 //   τ_max = τ_max0 + Σ a_k ζ^k,  x_max = Σ b_k ζ^k,  ε_naive = 1 + Σ c_k ζ^k,  ε_delayed = Σ h_k ζ^{k/2}.

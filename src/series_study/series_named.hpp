@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The series and approximations by name, as the command line (`restitution series`) and the Python
 // module (restitution.series) offer them. Coefficients are recomputed (series_coefficients.hpp) or, for

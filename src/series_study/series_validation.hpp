@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Validation of every series and approximation against the numerical solver (CollisionSolver) and
 // convergence radii of the recomputed series. Library code: computes, never writes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Series and approximations against the solver on a log grid of ζ; convergence radii of the series.
 #include <fmt/core.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "restitution/build_info.hpp"
 
 // RESTITUTION_SUNDIALS_VERSION and RESTITUTION_SUNDIALS_OPTIMIZED come from cmake/sundials.cmake.

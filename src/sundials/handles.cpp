@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "sundials/handles.hpp"
 
 #include <fmt/core.h>

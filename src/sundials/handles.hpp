@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // RAII ownership of the SUNDIALS C objects this project uses. Private to the library.
 // Each handle owns exactly one object and frees it with the matching SUNDIALS destructor.

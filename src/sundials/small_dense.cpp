@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "sundials/small_dense.hpp"
 
 #include <fmt/core.h>

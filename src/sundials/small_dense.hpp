@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Dense linear algebra for the 3×3 Newton systems of CVODE's BDF corrector. Debian builds SUNDIALS without
 // optimisation, so its dense matrix operations and its LU (SUNLinSol_Dense) cost more in dispatch and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "sundials/small_vector.hpp"
 
 #include <algorithm>

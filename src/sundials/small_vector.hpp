@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A serial N_Vector for the 3-component states of this project. SUNDIALS' serial vector spends more time
 // dispatching (special cases of LinearSum, separate local/global reductions) than computing on three

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Parallel sweep over ζ on the library's thread pool (src/parallel): each worker thread has its own
 // CollisionSolver; finished points go to the caller's callback one at a time.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The ζ values of a sweep.
 #include <fmt/core.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // One collision integrated by a Taylor-series method on the smooth formulation (taylor_series.hpp),
 // templated on the number type: double for the fast engine (taylor_engine.cpp), __float128 for the

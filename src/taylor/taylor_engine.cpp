@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "taylor/taylor_engine.hpp"
 
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The Taylor-series engine (`--method taylor`): a double-precision Taylor method of adaptive order on the
 // smooth formulation of the collision (u = sqrt(x) near x = 0, τ around maximal compression; docs/design.md

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Taylor coefficients of the collision's equations of motion, for the Taylor-series engines (double: the
 // fast engine; __float128: the reference solutions). Templated on the number type; only + - * / are used.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // DEM codes' constants: the effective modulus and the per-mass damping coefficient (docs/dem.md).
 #include <fmt/core.h>
 

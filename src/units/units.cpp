@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "restitution/units.hpp"
 
 #include <fmt/core.h>

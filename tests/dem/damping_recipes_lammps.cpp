@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Runs Debian's LAMMPS on head-on collisions with the damping recipes as LAMMPS applies them and checks the ε
 // it measures against `restitution damping-check`: `damping tsuji` with and without `limit_damping`, and
 // `damping viscoelastic` with the η_n0 `restitution dem` calibrates (the lammps-viscoelastic recipe).

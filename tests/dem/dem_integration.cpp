@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Runs LAMMPS and LIGGGHTS themselves on head-on collisions of two equal spheres, fed exactly the lines
 // `restitution dem --json` prints, and checks the ε they measure against restitution's: two materials, both
 // ends, three impact speeds per calibration (the calibration speed, a quarter and four times it).

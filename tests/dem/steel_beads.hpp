@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The steel beads the DEM tests collide (tests/dem/), and `restitution ... --json` run for them.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Runs Debian's YADE (`yade -n -x`, 2023.02a) on the lines `restitution dem --code yade` prints for the YADE
 // on PATH, unchanged (each line exec'd / eval'd verbatim), in head-on collisions of two steel beads at three
 // speeds, and checks that YADE measures the ε the output says these lines give, within 1e-5 relative.
