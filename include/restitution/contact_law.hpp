@@ -285,8 +285,8 @@ class ContactLaw {
   // For below_critical_zeta: whether the naive end exists at this ζ (ζ < 2 sqrt(b+1): r < 1 for the
   // dash-pot, ζ < sqrt(5) for Tsuji); for always true; for decided_by_solve true (the solve decides).
   [[nodiscard]] bool naive_end_may_exist() const;
-  // The critical ζ of a scale-invariant member, naive_end_critical_zeta(kind()): the naive end exists below it
-  // (ζ = 2 for the dash-pot, r = 1; sqrt(5) for Tsuji).
+  // The critical ζ of a scale-invariant member, naive_end_critical_zeta(kind()): the naive end exists below
+  // it (ζ = 2 for the dash-pot, r = 1; sqrt(5) for Tsuji).
   [[nodiscard]] double critical_zeta() const { return naive_end_critical_zeta(kind_); }
   // For decided_by_solve: a function of the state that is <= 0 only where the overlap provably never
   // returns to 0 (x > 0, x' <= 0 in the invariant region x' >= -k x^{b+1}, x^{a-2b-1} < ζ²/(4(b+1)),

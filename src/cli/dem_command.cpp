@@ -204,9 +204,10 @@ void add_dem_command(CLI::App& app, Action& chosen) {
       ->check(CLI::IsMember({"lammps", "liggghts", "mercurydpm", "yade", "chrono"}));
   add_material_options(*cmd, o->material);
   cmd->add_option("--eps", o->eps, "measured coefficient of restitution in (0, 1): calibrate A first");
-  cmd->add_option("--velocity", o->velocity,
-                  "impact speed in m/s at which --eps was measured (required with --eps; also YADE's vn and the "
-                  "reference speed, 1 m/s with --dissipative-constant)");
+  cmd->add_option(
+      "--velocity", o->velocity,
+      "impact speed in m/s at which --eps was measured (required with --eps; also YADE's vn and the "
+      "reference speed, 1 m/s with --dissipative-constant)");
   cmd->add_option("--dissipative-constant", o->dissipative_constant, "the dissipative constant A in s");
   cmd->add_option(
       "--from-fit", o->from_fit,

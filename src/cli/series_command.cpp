@@ -101,7 +101,8 @@ void add_coefficients(CLI::App& parent, Action& chosen) {
       ->required()
       ->check(CLI::IsMember(series::coefficient_kinds()));
   cmd->add_option("--count", o->count, "N: how many coefficients")->required();
-  cmd->add_flag("--json", o->json, "print one JSON object (numbers in the shortest form that reads back to the same double)");
+  cmd->add_flag("--json", o->json,
+                "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, &chosen] { chosen = [o] { return run_coefficients(*o); }; });
 }
 
@@ -124,7 +125,8 @@ void add_eval(CLI::App& parent, Action& chosen) {
       "series terms: c_1..c_N or h_0..h_N (default: 40 naive-series, 60 delayed-recovery-series)");
   cmd->add_option("--coefficients", o->coefficients, "computed (default) or published (2008 Tables III, V)")
       ->check(CLI::IsMember({"computed", "published"}));
-  cmd->add_flag("--json", o->json, "print one JSON object (numbers in the shortest form that reads back to the same double)");
+  cmd->add_flag("--json", o->json,
+                "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, &chosen] { chosen = [o] { return run_eval(*o); }; });
 }
 
