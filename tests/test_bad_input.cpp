@@ -139,7 +139,7 @@ const std::vector<BadInput> kCases = {
     {"fit --end naive --zeta-min 1 --zeta-max 10 --tolerance 1e-13", "tolerance"},
     // stability.
     {"stability --tolerance 1e-12", "stability --tolerance must lie in [1e-09, 0.01]"},
-    {"stability --points-per-decade 0", "--points-per-decade must lie in [1, 20], got 0"},
+    {"stability --points-per-decade 0", "--points-per-decade must lie in [1, 100], got 0"},
     {"stability --points-per-decade abc", "--points-per-decade expects a whole number, got 'abc'"},
     {"stability --out /proc/no-such/x", "cannot create output folder", 3},
     // run (scene files) and calibrate.

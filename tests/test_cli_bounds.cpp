@@ -104,9 +104,10 @@ TEST(CliWords, SigintStopsLongCommandsSayingSo) {
   fs::remove_all(dir);
   const std::vector<std::pair<std::string, fs::path>> commands = {
       {"reference --out " + (dir / "r.csv").string(), dir / "r.csv"},
-      {"work-precision --out " + (dir / "wp").string(), dir / "wp" / "work_precision.csv"},
-      // 20 per decade: about 2 s of work, not the 0.2 s of the default grid.
-      {"stability --points-per-decade 20 --out " + (dir / "st").string(), dir / "st" / "stability.csv"},
+      // The signal comes after 1 s: each command is given several seconds of work, so that it arrives while
+      // the command computes on a machine a few times faster than ours (7 repeats took 0.8 s here).
+      {"work-precision --repeats 50 --out " + (dir / "wp").string(), dir / "wp" / "work_precision.csv"},
+      {"stability --points-per-decade 100 --out " + (dir / "st").string(), dir / "st" / "stability.csv"},
       {"fast-table --out " + (dir / "t.h").string(), dir / "t.h"},
   };
   for (const auto& [command, output] : commands) {

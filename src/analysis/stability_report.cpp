@@ -111,8 +111,9 @@ int StabilityReport::flagged() const {
 }
 
 std::vector<double> stability_grid(int points_per_decade) {
-  if (points_per_decade < 1 || points_per_decade > 20)
-    throw InvalidInput(fmt::format("--points-per-decade must lie in [1, 20], got {}", points_per_decade));
+  if (points_per_decade < 1 || points_per_decade > kMaxStabilityPointsPerDecade)
+    throw InvalidInput(fmt::format("--points-per-decade must lie in [1, {}], got {}",
+                                   kMaxStabilityPointsPerDecade, points_per_decade));
   std::vector<double> grid{0.0};
   constexpr int kFirstDecade = -12;
   constexpr int kLastDecade = 6;

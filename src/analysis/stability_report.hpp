@@ -79,6 +79,8 @@ struct StabilityReport {
 
 // The default grid: 0, then 10^-12 ... 10^6, points_per_decade per decade (1, 2 or 3 give 1, 3, 10 / 1, 2,
 // 5 / ... chosen log-evenly).
+// points_per_decade lies in [1, kMaxStabilityPointsPerDecade]: 100 per decade is about a minute of solves.
+inline constexpr int kMaxStabilityPointsPerDecade = 100;
 std::vector<double> stability_grid(int points_per_decade);
 
 // Relative difference of the small one of ε and 1 - ε (0 when both are exactly equal, as at ζ = 0).

@@ -32,9 +32,9 @@ void write_text(const std::string& out, const std::string& text) {
 }
 
 int run_fast_table(const FastTableOptions& o) {
-  check_output_file(o.out);  // before the two minutes of solves, not after
+  check_output_file(o.out);   // before the two minutes of solves, not after
+  const StopSignals signals;  // Ctrl-C stops at the next interval, before the header is written
   const fast::TableData data = [&] {
-    const StopSignals signals;  // Ctrl-C stops at the next interval, before the header is written
     ProgressLine progress("fast-table (intervals fitted, then checked)");
     return fast::generate_tables(o.settings, progress.stoppable_callback());
   }();

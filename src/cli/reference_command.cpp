@@ -49,11 +49,11 @@ int run_reference(const ReferenceOptions& o) {
   }
   if (o.out.empty()) throw InvalidInput("give --out FILE (or --zeta Z for one value)");
   check_output_file(o.out);  // before the work, not after
+  // Ctrl-C stops after the solution in progress; --out is written (atomically) only at the end.
+  const StopSignals signals;
   std::vector<ReferenceSolution> solutions;
   {
     const std::vector<double> grid = reference_zeta_grid();
-    const StopSignals
-        signals;  // Ctrl-C stops after the solution in progress; --out is written only at the end
     ProgressLine progress("reference solutions");
     for (const double zeta : grid) {
       throw_if_interrupted();

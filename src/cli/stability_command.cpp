@@ -128,8 +128,10 @@ int run_stability(const StabilityCliOptions& o) {
   StabilityOptions options;
   options.tolerance = o.tolerance;
   if (!o.out.empty()) check_output_folder(o.out);
+  // Ctrl-C stops at the next zeta, before anything is printed or written; one that arrives while the files
+  // are written or plotted still stops the command with its message.
+  const StopSignals signals;
   const StabilityReport report = [&] {
-    const StopSignals signals;  // Ctrl-C stops at the next zeta, before anything is printed or written
     ProgressLine progress("stability (zeta)");
     options.progress = progress.stoppable_callback();
     return stability_report(stability_grid(o.points_per_decade), options);
@@ -158,7 +160,8 @@ void add_stability_command(CLI::App& app, Action& chosen) {
       app.add_subcommand("stability", "self-convergence and engine agreement over zeta in [0, 1e6]");
   cmd->add_option("--tolerance", o->tolerance, "production tolerance T in [1e-9, 1e-2]; the check uses T/100")
       ->capture_default_str();
-  cmd->add_option("--points-per-decade", o->points_per_decade, "grid points per decade of zeta (1..20)")
+  cmd->add_option("--points-per-decade", o->points_per_decade,
+                  fmt::format("grid points per decade of zeta (1..{})", kMaxStabilityPointsPerDecade))
       ->capture_default_str();
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");

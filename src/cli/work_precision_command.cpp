@@ -31,9 +31,11 @@ int run_work_precision(const WorkPrecisionOptions& o) {
   check_output_folder(folder);  // before the measurements, not after
   const std::filesystem::path reference =
       o.reference.empty() ? default_reference_file() : std::filesystem::path(o.reference);
+  // Ctrl-C stops at the next point, before any file is written; one that arrives while the (atomic) files are
+  // written or plotted still stops the command with its message, not the default death.
+  const StopSignals signals;
   std::vector<WorkPrecisionRow> rows;
   {
-    const StopSignals signals;  // Ctrl-C stops at the next point, before any file is written
     ProgressLine progress("work-precision (engine, end, tolerance)");
     rows = measure_work_precision(read_reference_file(reference), o.repeats, o.engines,
                                   progress.stoppable_callback());
