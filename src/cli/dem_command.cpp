@@ -11,6 +11,8 @@
 
 #include "cli/build_json.hpp"
 #include "cli/commands.hpp"
+#include "cli/dem_polydisperse_output.hpp"
+#include "cli/dem_type_options.hpp"
 #include "cli/from_fit.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/material_options.hpp"
@@ -25,7 +27,8 @@ namespace {
 
 struct DemOptions {
   std::string code;
-  MaterialOptions material;
+  DemTypeOptions types;      // --radius etc., lists for several atom types
+  MaterialOptions material;  // the one pair, from `types`
   std::optional<double> eps, velocity, dissipative_constant;
   std::string end = "delayed-recovery";
   std::vector<double> speeds;
@@ -192,6 +195,30 @@ void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optio
     fmt::print("{}", fit_carry_over_text(o.from_fit, from_fit->fit, from_fit->k, speeds_of(r), c));
 }
 
+// Several atom types (docs/dem.md, "Polydisperse sets"): lammps and liggghts only.
+int run_polydisperse(const DemOptions& o) {
+  if (!o.from_fit.empty() || !o.yade_version.empty()) {
+    throw InvalidInput(
+        "several atom types take --eps/--velocity or --dissipative-constant, not --from-fit "
+        "or --yade-version");
+  }
+  dem::PolydisperseRequest request;
+  request.code = dem::code_from_name(o.code);
+  request.end = end_from_name(o.end);
+  set_types(o.types, request);
+  request.damping = {o.dissipative_constant, o.eps, o.velocity};
+  request.speeds_m_s = o.speeds;
+  request.tolerance = o.tolerance;
+  request.friction = o.friction;
+  const dem::PolydisperseResult r = dem::polydisperse_lines(request);
+  if (o.json) {
+    print_polydisperse_json(r);
+  } else {
+    print_polydisperse_text(r);
+  }
+  return 0;
+}
+
 }  // namespace
 
 void add_dem_command(CLI::App& app, Action& chosen) {
@@ -202,7 +229,7 @@ void add_dem_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--code", o->code, "DEM code: lammps, liggghts, mercurydpm, yade or chrono")
       ->required()
       ->check(CLI::IsMember({"lammps", "liggghts", "mercurydpm", "yade", "chrono"}));
-  add_material_options(*cmd, o->material);
+  add_dem_type_options(*cmd, o->types);
   cmd->add_option("--eps", o->eps, "measured coefficient of restitution in (0, 1): calibrate A first");
   cmd->add_option(
       "--velocity", o->velocity,
@@ -232,6 +259,8 @@ void add_dem_command(CLI::App& app, Action& chosen) {
   cmd->callback([o, cmd, &chosen] {
     o->end_given = cmd->count("--end") > 0;
     chosen = [o] {
+      if (several_types(o->types)) return run_polydisperse(*o);
+      o->material = one_pair_material(o->types);
       const std::optional<FromFit> from_fit = apply_from_fit(*o);
       const dem::LinesResult r = compute(*o);
       if (o->json) {

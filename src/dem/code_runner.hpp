@@ -20,9 +20,31 @@ struct DemRun {
   std::string output;         // the program's output, for diagnostics
 };
 
-// One deck with a pair of touching spheres per speed [m/s] (20 radii apart), closing along x, time step
-// T / steps_per_time with T = k^{-2/5} v_max^{-1/5} the natural time of the fastest collision, run for five
-// natural times of the slowest.
+// One head-on collision of a sphere of atom type `type1` with one of `type2` (1-based): radii, masses and
+// E*, R_eff, m_eff from `pair`, impact speed in m/s.
+struct Collision {
+  int type1 = 1, type2 = 1;
+  Pair pair;
+  double velocity_m_s = 0.0;
+};
+
+// A deck of several collisions fed `lines` (what `restitution dem` printed). Each collision is a pair of
+// touching spheres, the first at x < 0 and the second at x > 0, closing along x; the pairs lie 10 (R1 + R2)
+// apart along y. Time step T_min / steps_per_time, T = k^{-2/5} v^{-1/5} the natural time of a collision,
+// run for five natural times of the slowest.
+struct CollisionRun {
+  Code code = Code::lammps;
+  std::vector<std::string> lines;
+  int types = 1;  // atom types of the box
+  std::vector<Collision> collisions;
+  int steps_per_time = 2000;
+  std::string processors;  // LAMMPS' processor grid, e.g. "2 1 1" (x < 0 and x > 0 on two ranks); "": none
+  std::string after_run;   // commands appended after the run, e.g. a write_dump
+};
+// `program` may be a launcher with the code, e.g. "mpirun -np 2 lmp".
+DemRun run_collisions(const std::string& program, const CollisionRun& run);
+
+// One deck with a pair of touching spheres of type 1 per speed [m/s]: run_collisions of `pair` at each speed.
 DemRun run_dem_code(const std::string& program, const Deck& deck, const Pair& pair,
                     const std::vector<double>& speeds, int steps_per_time);
 
@@ -37,5 +59,7 @@ struct DemMeasurement {
 DemMeasurement richardson(const DemRun& coarse, const DemRun& fine);
 DemMeasurement measure_dem_eps(const std::string& program, const Deck& deck, const Pair& pair,
                                const std::vector<double>& speeds, int coarse_steps_per_time = 2000);
+// The extrapolation of `run` at its steps_per_time and at ten times that.
+DemMeasurement measure_collisions(const std::string& program, const CollisionRun& run);
 
 }  // namespace restitution::dem

@@ -1,0 +1,208 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Every pair of types gets the single-pair deck of its own E*, R_eff, m_eff (deck.cpp's convention of each
+// code); the LAMMPS lines are those decks' pair_coeff lines with `* *` made `I J`, the LIGGGHTS lines their
+// parameters gathered into symmetric per-type-pair matrices.
+#include "dem/polydisperse_lines.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "restitution/errors.hpp"
+#include "restitution/units.hpp"
+
+namespace restitution::dem {
+namespace {
+
+void refuse_other_codes(Code code) {
+  switch (code) {
+    case Code::lammps:
+    case Code::liggghts:
+      return;
+    case Code::mercurydpm:
+      throw InvalidInput(
+          "--code mercurydpm takes one radius: its species' E* and A do not depend on size or mass, so the "
+          "one-radius lines are already exact for every size of one material; two materials need a mixed "
+          "species per material pair, which restitution does not print");
+    case Code::yade:
+      throw InvalidInput(
+          "--code yade takes one radius: YADE turns (en, vn) into one beta per material pair and gives every "
+          "contact that beta, so sizes with another k_n0/m_eff get another eps(v) (and YADE 2023.02a cannot "
+          "express the law at all); use lammps or liggghts for several sizes");
+    case Code::chrono:
+      throw InvalidInput(
+          "--code chrono takes one radius: Kn and Gn belong to each body's material and Chrono combines two "
+          "bodies' values into a contact's, so the R_eff and m_eff they contain cannot be set per pair of "
+          "sizes; use lammps or liggghts for several sizes");
+  }
+}
+
+std::string num(double x) {
+  return fmt::format("{}", x);
+}
+
+std::size_t pair_index(std::size_t i, std::size_t j, std::size_t n) {
+  if (i > j) std::swap(i, j);
+  // Pairs (0,0), (0,1), ..., (0,n-1), (1,1), ...: row i starts after i rows of n, n-1, ... entries.
+  return i * n - i * (i - 1) / 2 + (j - i);
+}
+
+std::vector<std::string> lammps_lines(const std::vector<TypePairLines>& pairs) {
+  std::vector<std::string> lines{"pair_style granular"};
+  const std::string any_pair = "pair_coeff * * ";
+  for (const TypePairLines& p : pairs) {
+    const std::string& line = p.deck.lines.at(1);
+    if (line.rfind(any_pair, 0) != 0) throw std::logic_error("LAMMPS deck without pair_coeff * *: " + line);
+    lines.push_back(fmt::format("pair_coeff {} {} {}", p.type1, p.type2, line.substr(any_pair.size())));
+  }
+  return lines;
+}
+
+std::vector<std::string> liggghts_lines(const std::vector<TypePairLines>& pairs, std::size_t n) {
+  std::vector<std::string> lines;
+  for (const auto& [fix, name] :
+       {std::pair{"dem_kn", "kn"}, std::pair{"dem_kt", "kt"}, std::pair{"dem_gamman", "gamman"},
+        std::pair{"dem_gammat", "gammat"}, std::pair{"dem_cof", "coefficientFriction"}}) {
+    std::string line = fmt::format("fix {} all property/global {} peratomtypepair {}", fix, name, n);
+    // Row I, column J: LIGGGHTS reads the n x n matrix row by row.
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = 0; j < n; ++j) line += " " + num(pairs[pair_index(i, j, n)].deck.parameter(name));
+    }
+    lines.push_back(line);
+  }
+  // The pair_style and pair_coeff lines do not depend on the pair.
+  lines.push_back(pairs.front().deck.lines.at(5));
+  lines.push_back(pairs.front().deck.lines.at(6));
+  return lines;
+}
+
+double law_beta(const Pair& p, double dissipative_constant_s) {
+  const double k = hertz_stiffness(p.effective_modulus_pa, p.effective_radius_m) / p.effective_mass_kg;
+  return hertz_constants(k, dissipative_constant_s).beta;
+}
+
+// Spheres of any radii inside the range, each in its class (edges belong to both neighbours), get their
+// class pair's coefficients; the code uses their true R_eff and m_eff.
+BinningError binning_error(const PolydisperseResult& r, const SizeClasses& classes,
+                           const std::vector<double>& speeds, double tolerance, CollisionSolver& solver) {
+  constexpr int kSubintervals = 8;
+  struct Sphere {
+    std::size_t type;
+    ParticleType particle;
+  };
+  std::vector<Sphere> grid;
+  for (std::size_t k = 0; k < r.types.size(); ++k) {
+    const double ratio = classes.edges_m[k + 1] / classes.edges_m[k];
+    for (int s = 0; s <= kSubintervals; ++s) {
+      ParticleType t = r.types[k];
+      t.radius_m = s == kSubintervals ? classes.edges_m[k + 1]
+                                      : classes.edges_m[k] * std::pow(ratio, double(s) / kSubintervals);
+      grid.push_back({k, t});
+    }
+  }
+  BinningError e;
+  e.edges_m = classes.edges_m;
+  e.grid_points_per_class = kSubintervals + 1;
+  e.worst_relative_error = -1.0;
+  for (std::size_t a = 0; a < grid.size(); ++a) {
+    for (std::size_t b = a; b < grid.size(); ++b) {
+      const Pair other = type_pair(grid[a].particle, grid[b].particle);
+      const Deck& deck = r.pairs[pair_index(grid[a].type, grid[b].type, r.types.size())].deck;
+      const double beta_code = deck_beta(deck, other);
+      const double beta_law = law_beta(other, r.dissipative_constant_s);
+      for (double v : speeds) {
+        const double code = eps_for(beta_code, v, r.end, tolerance, solver);
+        const double law = eps_for(beta_law, v, r.end, tolerance, solver);
+        const double abs_error = std::fabs(code - law);
+        const double relative = abs_error / std::min(law, 1.0 - law);
+        e.worst_abs_error = std::max(e.worst_abs_error, abs_error);
+        if (relative > e.worst_relative_error) {
+          e.worst_relative_error = relative;
+          e.radius1_m = grid[a].particle.radius_m;
+          e.radius2_m = grid[b].particle.radius_m;
+          e.velocity_m_s = v;
+          e.eps_code = code;
+          e.eps_law = law;
+        }
+      }
+    }
+  }
+  return e;
+}
+
+std::vector<std::string> notes(const PolydisperseResult& r) {
+  std::vector<std::string> n;
+  n.push_back(r.calibrated
+                  ? fmt::format("A = {:.10g} s calibrated for type pair (1,1) and given to every pair: one A "
+                                "for the whole set (docs/dem.md)",
+                                r.dissipative_constant_s)
+                  : fmt::format("A = {:.10g} s given, the same for every pair: one A for the whole set "
+                                "(docs/dem.md)",
+                                r.dissipative_constant_s));
+  // The tangential, friction and clamp notes of the single-pair deck hold for every pair; its last note (one
+  // pair only) is what the per-pair lines remove.
+  const std::vector<std::string>& first = r.pairs.front().deck.notes;
+  n.insert(n.end(), first.begin(), first.end() - 1);
+  n.push_back(
+      "each type pair has its own E*, R_eff and m_eff: exact for spheres of exactly these radii and "
+      "densities; a sphere of another size in a type gets A' = A m_eff'/m_eff");
+  if (r.code == Code::lammps) {
+    n.push_back(
+        "pair_coeff I J: E and nu are the one (Y, nu) that LAMMPS mixes into the pair's E* (and, with "
+        "friction, Mindlin's G*); for two materials an effective pair, not either material's");
+  } else {
+    n.push_back(
+        "LIGGGHTS reads kn, kt, gamman, gammat and coefficientFriction per type pair (row I, column J); "
+        "hertz/stiffness uses no youngsModulus or poissonsRatio");
+  }
+  n.push_back("set each type's diameter and density as listed: m_eff is part of the damping coefficients");
+  return n;
+}
+
+}  // namespace
+
+PolydisperseResult polydisperse_lines(const PolydisperseRequest& request) {
+  refuse_other_codes(request.code);
+  if (request.types.empty()) throw InvalidInput("a polydisperse set needs at least one atom type");
+  check_friction(request.friction);
+  PolydisperseResult r;
+  r.code = request.code;
+  r.end = request.end;
+  r.types = request.types;
+  r.friction = request.friction;
+  // A: the given one, or calibrated for two spheres of type 1.
+  Material first;
+  first.young_modulus_pa = r.types[0].young_modulus_pa;
+  first.poisson_ratio = r.types[0].poisson_ratio;
+  first.radius1_m = first.radius2_m = r.types[0].radius_m;
+  first.density_kg_m3 = r.types[0].density_kg_m3;
+  CollisionSolver solver;
+  r.dissipative_constant_s =
+      dissipative_constant(first, request.damping, request.end, request.tolerance, Method::automatic, solver);
+  r.calibrated = !request.damping.dissipative_constant_s.has_value();
+  r.reference_velocity_m_s = request.damping.velocity_m_s.value_or(1.0);
+  const double v = r.reference_velocity_m_s;
+  const std::vector<double> speeds =
+      request.speeds_m_s.empty() ? std::vector<double>{v / 10.0, v, 10.0 * v} : request.speeds_m_s;
+  const std::size_t n = r.types.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i; j < n; ++j) {
+      TypePairLines p;
+      p.type1 = static_cast<int>(i + 1);
+      p.type2 = static_cast<int>(j + 1);
+      p.pair = type_pair(r.types[i], r.types[j]);
+      p.deck = make_deck(r.code, r.end, p.pair, r.dissipative_constant_s, v, r.friction);
+      p.beta = deck_beta(p.deck, p.pair);
+      for (double s : speeds) p.eps.push_back({s, eps_for(p.beta, s, r.end, request.tolerance, solver)});
+      r.pairs.push_back(std::move(p));
+    }
+  }
+  r.lines = r.code == Code::lammps ? lammps_lines(r.pairs) : liggghts_lines(r.pairs, n);
+  r.notes = notes(r);
+  if (request.classes) r.binning = binning_error(r, *request.classes, speeds, request.tolerance, solver);
+  return r;
+}
+
+}  // namespace restitution::dem

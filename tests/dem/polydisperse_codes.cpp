@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// A polydisperse set through LAMMPS and LIGGGHTS: three sizes spanning a factor 4 and two materials (steel
+// types 1 and 2, glass type 3), fed exactly the lines `restitution dem --radius R1,R2,R3 ... --json` prints.
+// One deck per code holds every type pair (6) at three speeds, each collision a head-on pair of touching
+// spheres; it runs at dt = T_min/2000 and T_min/20000 and ε is Richardson-extrapolated as in
+// dem_integration.cpp. Every pair must reproduce restitution's ε within 1e-6 min(ε, 1 - ε).
+// The MPI case runs the same LAMMPS deck under `mpirun -np 2` with `processors 2 1 1`: the first sphere of
+// every collision is owned by rank 0 (x < 0), the second by rank 1 (x > 0), so every contact straddles the
+// ranks; its ε must equal the serial run's to 1e-12 relative.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+#include "dem/code_runner.hpp"
+
+namespace {
+
+using nlohmann::json;
+namespace dem = restitution::dem;
+
+const char* const kSet =
+    "--radius 0.002,0.004,0.008 --density 7850,7850,2500 --young-modulus 2.1e11,2.1e11,6.3e10 "
+    "--poisson-ratio 0.3,0.3,0.22 --eps 0.9 --velocity 1 --speeds 0.25 1 4 --json";
+
+json polydisperse_json(const std::string& code) {
+  const auto r = restitution::test_support::run_cli("dem --code " + code + " " + kSet);
+  EXPECT_EQ(r.status, 0) << r.err;
+  return json::parse(r.out);
+}
+
+// Every type pair at every speed of the JSON, with the ε restitution predicts for it.
+struct Deck {
+  dem::CollisionRun run;
+  std::vector<double> predicted;
+  std::vector<std::string> labels;
+};
+
+Deck deck_of(const json& out, dem::Code code) {
+  Deck d;
+  d.run.code = code;
+  d.run.lines = out.at("lines").get<std::vector<std::string>>();
+  const json& types = out.at("types");
+  d.run.types = static_cast<int>(types.size());
+  for (const json& p : out.at("pairs")) {
+    dem::Collision c;
+    c.type1 = p.at("type1").get<int>();
+    c.type2 = p.at("type2").get<int>();
+    const json& a = types.at(c.type1 - 1);
+    const json& b = types.at(c.type2 - 1);
+    c.pair.radius1_m = a.at("radius_m").get<double>();
+    c.pair.radius2_m = b.at("radius_m").get<double>();
+    c.pair.mass1_kg = a.at("mass_kg").get<double>();
+    c.pair.mass2_kg = b.at("mass_kg").get<double>();
+    c.pair.effective_modulus_pa = p.at("effective_modulus_pa").get<double>();
+    c.pair.effective_radius_m = p.at("effective_radius_m").get<double>();
+    c.pair.effective_mass_kg = p.at("effective_mass_kg").get<double>();
+    for (const json& e : p.at("eps")) {
+      c.velocity_m_s = e.at("velocity_m_s").get<double>();
+      d.run.collisions.push_back(c);
+      d.predicted.push_back(e.at("eps").get<double>());
+      d.labels.push_back("pair (" + std::to_string(c.type1) + "," + std::to_string(c.type2) +
+                         ") v = " + std::to_string(c.velocity_m_s) + " m/s");
+    }
+  }
+  return d;
+}
+
+class Polydisperse : public testing::TestWithParam<std::string> {};
+
+TEST_P(Polydisperse, EveryTypePairReproducesRestitutionsEps) {
+  const dem::Code code = dem::code_from_name(GetParam());
+  const std::string program = dem::dem_program(code);
+  ASSERT_FALSE(program.empty()) << GetParam() << " not found on PATH: scripts/setup installs it";
+  const json out = polydisperse_json(GetParam());
+  ASSERT_EQ(out.at("types").size(), 3U);
+  ASSERT_EQ(out.at("pairs").size(), 6U);
+  Deck d = deck_of(out, code);
+  ASSERT_EQ(d.run.collisions.size(), 18U);
+  d.run.steps_per_time = 2000;
+  const dem::DemMeasurement m = dem::measure_collisions(program, d.run);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < d.predicted.size(); ++i) {
+    ASSERT_TRUE(std::isfinite(m.coarse[i]) && std::isfinite(m.fine[i]))
+        << program << " printed no eps for " << d.labels[i] << ":\n"
+        << m.output;
+    EXPECT_GT(m.gap_m[i], 0.0) << d.labels[i] << ": the spheres still touch at the end";
+    const double predicted = d.predicted[i];
+    const double scale = std::min(predicted, 1.0 - predicted);
+    EXPECT_NEAR(m.extrapolated[i], predicted, 1e-6 * scale)
+        << GetParam() << " " << d.labels[i] << ": coarse " << m.coarse[i] << ", fine " << m.fine[i];
+    worst = std::max(worst, std::fabs(m.extrapolated[i] - predicted) / scale);
+  }
+  std::ostringstream text;
+  text << std::scientific << std::setprecision(2) << worst;
+  std::cout << GetParam()
+            << ": worst |eps_code - eps| / min(eps, 1 - eps) over 6 pairs x 3 speeds = " << text.str()
+            << " (bound 1e-6)\n";
+  RecordProperty("worst_relative_error", text.str());
+}
+
+INSTANTIATE_TEST_SUITE_P(Codes, Polydisperse, testing::Values("lammps", "liggghts"),
+                         [](const testing::TestParamInfo<std::string>& info) { return info.param; });
+
+// The ranks that own atoms, from a `write_dump ... custom FILE id proc` file.
+std::set<int> owner_ranks(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::set<int> ranks;
+  std::string line;
+  bool atoms = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("ITEM: ATOMS", 0) == 0) {
+      atoms = true;
+      continue;
+    }
+    if (!atoms) continue;
+    std::istringstream fields(line);
+    int id = 0, rank = -1;
+    if (fields >> id >> rank) ranks.insert(rank);
+  }
+  return ranks;
+}
+
+TEST(PolydisperseMpi, TwoRanksGiveTheSerialEps) {
+  const std::string lmp = dem::dem_program(dem::Code::lammps);
+  ASSERT_FALSE(lmp.empty()) << "lmp not found on PATH";
+  // Open MPI as root (CI runs as root; --allow-run-as-root says the same), one machine: the self and
+  // shared-memory transports only, so no network interface is probed, and no cross-memory attach, which
+  // containers often forbid (docs/dem.md, "MPI").
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  setenv("OMPI_MCA_btl", "self,vader", 1);
+  setenv("OMPI_MCA_btl_vader_single_copy_mechanism", "none", 1);
+  Deck d = deck_of(polydisperse_json("lammps"), dem::Code::lammps);
+  d.run.steps_per_time = 2000;
+  const auto folder =
+      std::filesystem::temp_directory_path() / ("restitution-mpi-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  const auto owners = folder / "owners.txt";
+  d.run.processors = "2 1 1";
+  d.run.after_run = "write_dump all custom " + owners.string() + " id proc\n";
+  const dem::DemRun serial = dem::run_collisions(lmp, d.run);
+  const dem::DemRun parallel =
+      dem::run_collisions("mpirun --allow-run-as-root --oversubscribe -np 2 " + lmp, d.run);
+  EXPECT_EQ(owner_ranks(owners), (std::set<int>{0, 1})) << parallel.output;
+  EXPECT_NE(parallel.output.find("2 by 1 by 1 MPI processor grid"), std::string::npos) << parallel.output;
+  double worst = 0.0;
+  for (std::size_t i = 0; i < d.predicted.size(); ++i) {
+    ASSERT_TRUE(std::isfinite(serial.eps[i]) && std::isfinite(parallel.eps[i])) << d.labels[i] << ":\n"
+                                                                                << parallel.output;
+    const double relative = std::fabs(parallel.eps[i] - serial.eps[i]) / serial.eps[i];
+    EXPECT_LE(relative, 1e-12) << d.labels[i] << ": serial " << serial.eps[i] << ", 2 ranks "
+                               << parallel.eps[i];
+    worst = std::max(worst, relative);
+  }
+  std::cout << "mpirun -np 2 vs serial: worst relative eps difference " << worst << " over "
+            << d.predicted.size() << " collisions\n";
+  RecordProperty("worst_relative_difference", std::to_string(worst));
+  std::filesystem::remove_all(folder);
+}
+
+}  // namespace
