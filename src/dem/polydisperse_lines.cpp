@@ -68,7 +68,10 @@ std::vector<std::string> liggghts_lines(const std::vector<TypePairLines>& pairs,
     std::string line = fmt::format("fix {} all property/global {} peratomtypepair {}", fix, name, n);
     // Row I, column J: LIGGGHTS reads the n x n matrix row by row.
     for (std::size_t i = 0; i < n; ++i) {
-      for (std::size_t j = 0; j < n; ++j) line += " " + num(pairs[pair_index(i, j, n)].deck.parameter(name));
+      for (std::size_t j = 0; j < n; ++j) {
+        line += ' ';
+        line += num(pairs[pair_index(i, j, n)].deck.parameter(name));
+      }
     }
     lines.push_back(line);
   }

@@ -148,9 +148,10 @@ TEST(PolydisperseMpi, TwoRanksGiveTheSerialEps) {
       std::filesystem::temp_directory_path() / ("restitution-mpi-" + std::to_string(::getpid()));
   std::filesystem::create_directories(folder);
   const auto owners = folder / "owners.txt";
+  const dem::DemRun serial = dem::run_collisions(lmp, d.run);
+  // Split at x = 0: rank 0 owns every collision's first sphere, rank 1 its second.
   d.run.processors = "2 1 1";
   d.run.after_run = "write_dump all custom " + owners.string() + " id proc\n";
-  const dem::DemRun serial = dem::run_collisions(lmp, d.run);
   const dem::DemRun parallel =
       dem::run_collisions("mpirun --allow-run-as-root --oversubscribe -np 2 " + lmp, d.run);
   EXPECT_EQ(owner_ranks(owners), (std::set<int>{0, 1})) << parallel.output;
