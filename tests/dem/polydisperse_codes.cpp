@@ -34,8 +34,9 @@ const char* const kSet =
     "--radius 0.002,0.004,0.008 --density 7850,7850,2500 --young-modulus 2.1e11,2.1e11,6.3e10 "
     "--poisson-ratio 0.3,0.3,0.22 --eps 0.9 --velocity 1 --speeds 0.25 1 4 --json";
 
-json polydisperse_json(const std::string& code) {
-  const auto r = restitution::test_support::run_cli("dem --code " + code + " " + kSet);
+json polydisperse_json(const std::string& code, double friction = 0.0) {
+  const auto r = restitution::test_support::run_cli("dem --code " + code + " " + kSet + " --friction " +
+                                                    std::to_string(friction));
   EXPECT_EQ(r.status, 0) << r.err;
   return json::parse(r.out);
 }
@@ -77,13 +78,22 @@ Deck deck_of(const json& out, dem::Code code) {
   return d;
 }
 
-class Polydisperse : public testing::TestWithParam<std::string> {};
+// A code and the Coulomb mu of the tangential lines: with friction the codes must accept the per-pair
+// tangential stiffness (LAMMPS' mindlin NULL from the pair's effective (Y, nu), LIGGGHTS' kt matrix) and a
+// head-on collision must keep the frictionless ε.
+struct Case {
+  std::string code;
+  double friction = 0.0;
+};
+
+class Polydisperse : public testing::TestWithParam<Case> {};
 
 TEST_P(Polydisperse, EveryTypePairReproducesRestitutionsEps) {
-  const dem::Code code = dem::code_from_name(GetParam());
+  const std::string name = GetParam().code;
+  const dem::Code code = dem::code_from_name(name);
   const std::string program = dem::dem_program(code);
-  ASSERT_FALSE(program.empty()) << GetParam() << " not found on PATH: scripts/setup installs it";
-  const json out = polydisperse_json(GetParam());
+  ASSERT_FALSE(program.empty()) << name << " not found on PATH: scripts/setup installs it";
+  const json out = polydisperse_json(name, GetParam().friction);
   ASSERT_EQ(out.at("types").size(), 3U);
   ASSERT_EQ(out.at("pairs").size(), 6U);
   Deck d = deck_of(out, code);
@@ -99,19 +109,23 @@ TEST_P(Polydisperse, EveryTypePairReproducesRestitutionsEps) {
     const double predicted = d.predicted[i];
     const double scale = std::min(predicted, 1.0 - predicted);
     EXPECT_NEAR(m.extrapolated[i], predicted, 1e-6 * scale)
-        << GetParam() << " " << d.labels[i] << ": coarse " << m.coarse[i] << ", fine " << m.fine[i];
+        << name << " " << d.labels[i] << ": coarse " << m.coarse[i] << ", fine " << m.fine[i];
     worst = std::max(worst, std::fabs(m.extrapolated[i] - predicted) / scale);
   }
   std::ostringstream text;
   text << std::scientific << std::setprecision(2) << worst;
-  std::cout << GetParam()
+  std::cout << name << " friction " << GetParam().friction
             << ": worst |eps_code - eps| / min(eps, 1 - eps) over 6 pairs x 3 speeds = " << text.str()
             << " (bound 1e-6)\n";
   RecordProperty("worst_relative_error", text.str());
 }
 
-INSTANTIATE_TEST_SUITE_P(Codes, Polydisperse, testing::Values("lammps", "liggghts"),
-                         [](const testing::TestParamInfo<std::string>& info) { return info.param; });
+INSTANTIATE_TEST_SUITE_P(Codes, Polydisperse,
+                         testing::Values(Case{"lammps"}, Case{"liggghts"}, Case{"lammps", 0.5},
+                                         Case{"liggghts", 0.5}),
+                         [](const testing::TestParamInfo<Case>& info) {
+                           return info.param.code + (info.param.friction > 0.0 ? "_friction" : "");
+                         });
 
 // The ranks that own atoms, from a `write_dump ... custom FILE id proc` file.
 std::set<int> owner_ranks(const std::filesystem::path& file) {
