@@ -86,6 +86,11 @@ struct Case {
   double friction = 0.0;
 };
 
+// Names the case in test listings (instead of googletest's byte dump of the struct).
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.code << " friction " << c.friction;
+}
+
 class Polydisperse : public testing::TestWithParam<Case> {};
 
 TEST_P(Polydisperse, EveryTypePairReproducesRestitutionsEps) {
