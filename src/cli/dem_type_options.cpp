@@ -40,34 +40,32 @@ std::optional<double> single(const std::string& text, const char* option) {
   return values[0];
 }
 
+// An option taking one number or a comma-separated list.
+void add_list_option(CLI::App& command, const std::string& name, std::string& target, const std::string& help,
+                     const char* type_name = "FLOAT[,...]") {
+  command.add_option(name, target, help)->type_name(type_name);
+}
+
 }  // namespace
 
 void add_dem_type_options(CLI::App& command, DemTypeOptions& o) {
-  command
-      .add_option("--young-modulus", o.young_modulus,
-                  "material: Young's modulus Y in Pa; Y1,Y2,...: one per --radius")
-      ->type_name("FLOAT[,...]");
-  command
-      .add_option("--poisson-ratio", o.poisson_ratio,
-                  "material: Poisson ratio in (-1, 0.5); nu1,nu2,...: one per --radius")
-      ->type_name("FLOAT[,...]");
-  command
-      .add_option("--radius", o.radius,
-                  "material: sphere radius in m (both spheres unless --radius2); R1,R2,...: atom types 1, "
-                  "2, ... (lammps, liggghts)")
-      ->type_name("FLOAT[,...]");
+  add_list_option(command, "--young-modulus", o.young_modulus,
+                  "material: Young's modulus Y in Pa; Y1,Y2,...: one per --radius");
+  add_list_option(command, "--poisson-ratio", o.poisson_ratio,
+                  "material: Poisson ratio in (-1, 0.5); nu1,nu2,...: one per --radius");
+  add_list_option(command, "--radius", o.radius,
+                  "material: sphere radius in m (both spheres unless --radius2); R1,R2,...: atom types 1, 2, "
+                  "... (lammps, liggghts)");
   command.add_option("--radius2", o.radius2, "material: radius of the second sphere in m");
-  command
-      .add_option("--density", o.density,
-                  "material: density in kg/m^3 (gives the masses); d1,d2,...: one per --radius")
-      ->type_name("FLOAT[,...]");
+  add_list_option(command, "--density", o.density,
+                  "material: density in kg/m^3 (gives the masses); d1,d2,...: one per --radius");
   command.add_option("--mass", o.mass, "material: sphere mass in kg (instead of --density)");
   command.add_option("--mass2", o.mass2, "material: mass of the second sphere in kg");
-  command
-      .add_option("--radius-range", o.radius_range,
-                  "RMIN,RMAX in m: a size range binned into --classes log-spaced atom types (lammps, "
-                  "liggghts), with the worst eps error the binning causes")
-      ->type_name("FLOAT,FLOAT");
+  add_list_option(
+      command, "--radius-range", o.radius_range,
+      "RMIN,RMAX in m: a size range binned into --classes log-spaced atom types (lammps, liggghts), "
+      "with the worst eps error the binning causes",
+      "FLOAT,FLOAT");
   command.add_option("--classes", o.classes, "number of log-spaced size classes of --radius-range (1..100)");
 }
 
