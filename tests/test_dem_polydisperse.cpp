@@ -44,7 +44,8 @@ TEST(TypePair, EffectivePoissonRatioGivesBothModuliOfTwoMaterials) {
   EXPECT_GT(p.poisson_ratio, 0.22);
   EXPECT_LT(p.poisson_ratio, 0.3);
   EXPECT_DOUBLE_EQ(p.effective_radius_m, 0.002 * 0.008 / 0.010);
-  const double m1 = sphere_mass_kg(0.002, 7850.0), m2 = sphere_mass_kg(0.008, 2500.0);
+  const double m1 = sphere_mass_kg(0.002, 7850.0);
+  const double m2 = sphere_mass_kg(0.008, 2500.0);
   EXPECT_DOUBLE_EQ(p.effective_mass_kg, m1 * m2 / (m1 + m2));
 }
 

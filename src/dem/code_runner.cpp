@@ -36,7 +36,10 @@ double natural_time(const Pair& p, double v) {
 }
 
 std::string deck_text(const CollisionRun& run) {
-  double t_min = HUGE_VAL, t_max = 0.0, spacing = 0.0, skin = 0.0;
+  double t_min = HUGE_VAL;
+  double t_max = 0.0;
+  double spacing = 0.0;
+  double skin = 0.0;
   for (const Collision& c : run.collisions) {
     const double t = natural_time(c.pair, c.velocity_m_s);
     t_min = std::min(t_min, t);

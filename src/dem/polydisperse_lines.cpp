@@ -152,19 +152,19 @@ std::vector<std::string> notes(const PolydisperseResult& r) {
   // pair only) is what the per-pair lines remove.
   const std::vector<std::string>& first = r.pairs.front().deck.notes;
   n.insert(n.end(), first.begin(), first.end() - 1);
-  n.push_back(
+  n.emplace_back(
       "each type pair has its own E*, R_eff and m_eff: exact for spheres of exactly these radii and "
       "densities; a sphere of another size in a type gets A' = A m_eff'/m_eff");
   if (r.code == Code::lammps) {
-    n.push_back(
+    n.emplace_back(
         "pair_coeff I J: E and nu are the one (Y, nu) that LAMMPS mixes into the pair's E* (and, with "
         "friction, Mindlin's G*); for two materials an effective pair, not either material's");
   } else {
-    n.push_back(
+    n.emplace_back(
         "LIGGGHTS reads kn, kt, gamman, gammat and coefficientFriction per type pair (row I, column J); "
         "hertz/stiffness uses no youngsModulus or poissonsRatio");
   }
-  n.push_back("set each type's diameter and density as listed: m_eff is part of the damping coefficients");
+  n.emplace_back("set each type's diameter and density as listed: m_eff is part of the damping coefficients");
   return n;
 }
 

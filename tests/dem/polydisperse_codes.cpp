@@ -145,7 +145,8 @@ std::set<int> owner_ranks(const std::filesystem::path& file) {
     }
     if (!atoms) continue;
     std::istringstream fields(line);
-    int id = 0, rank = -1;
+    int id = 0;
+    int rank = -1;
     if (fields >> id >> rank) ranks.insert(rank);
   }
   return ranks;
