@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// Runs LAMMPS (`lmp`) or LIGGGHTS (`liggghts`) on head-on collisions of a pair of spheres fed the lines
-// `restitution dem` makes, and reads back the ε each collision ends with. Used by the [[dem]] scene section
+// Runs LAMMPS (`lmp`) or LIGGGHTS (`liggghts`), also under an MPI launcher, on head-on collisions of pairs of
+// spheres (of one or several atom types) fed the lines `restitution dem` makes, and reads back the ε each
+// collision ends with. Used by the [[dem]] scene section
 // (dem/code_comparison.hpp) and by the DEM integration tests (tests/dem/).
 #include <string>
 #include <vector>
