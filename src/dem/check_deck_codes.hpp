@@ -3,6 +3,7 @@
 // The check deck of each code (dem/check_deck.hpp): LAMMPS and LIGGGHTS share one input language, YADE is
 // Python. Requests reach these validated by check_deck().
 #include <string>
+#include <vector>
 
 #include "dem/check_deck.hpp"
 
@@ -16,7 +17,21 @@ double natural_time_s(const Pair& pair, double velocity_m_s);
 // starting with `comment` ("#").
 std::string check_deck_preamble(const CheckDeckRequest& request, int steps_per_time);
 
+// LAMMPS, LIGGGHTS: one pass builds the system from scratch (every type pair at every speed, a row each: pair
+// by pair, speed by speed), pastes the lines, and runs `steps` at `dt_s`; then variables rc_eps<row> and
+// rc_gap<row> [m] give each row's ε and the gap between its surfaces. The time step for coarse steps per
+// natural time n: the shortest collision sets dt = T/n, the longest the length of the run.
+struct TimeStep {
+  double dt_s = 0.0;
+  long steps = 0;
+};
+TimeStep lammps_family_time_step(const CheckDeckRequest& request, int steps_per_time);
+std::string lammps_family_pass(const CheckDeckRequest& request, double dt_s, long steps);
+
 std::string lammps_family_check_deck(const CheckDeckRequest& request, int steps_per_time);
+// YADE: the Python function collide(r1, r2, v, dt, steps) -> (eps, gap [m]): a fresh scene with the three
+// lines (material, Ip2, Law2) in their places and two touching spheres closing at v, run for `steps` at `dt`.
+std::string yade_collide_function(const std::vector<std::string>& lines);
 std::string yade_check_deck(const CheckDeckRequest& request, int steps_per_time);
 
 }  // namespace restitution::dem

@@ -27,8 +27,10 @@ std::vector<Row> rows_of(const CheckDeckRequest& r) {
   return rows;
 }
 
-// One pass: the system built from scratch and run for `steps` at `dt` [s].
-std::string pass(const CheckDeckRequest& r, const std::vector<Row>& rows, double dt, long steps) {
+}  // namespace
+
+std::string lammps_family_pass(const CheckDeckRequest& r, double dt, long steps) {
+  const std::vector<Row> rows = rows_of(r);
   double reach = 0.0;  // the largest radius
   for (const CheckPair& p : r.pairs) reach = std::max({reach, p.pair.radius1_m, p.pair.radius2_m});
   const double spacing = 20.0 * reach;
@@ -61,15 +63,16 @@ std::string pass(const CheckDeckRequest& r, const std::vector<Row>& rows, double
   d += fmt::format("neighbor {} bin\nneigh_modify delay 0\n", reach);
   d += fmt::format("timestep {}\nfix integrate all nve/sphere\nthermo {}\nrun {}\n", dt, steps, steps);
   for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Pair& p = rows[i].pair->pair;
     d += fmt::format("variable rc_eps{} equal (vx[{}]-vx[{}])/{}\n", i, 2 * i + 2, 2 * i + 1,
                      r.speeds_m_s[rows[i].speed]);
+    d += fmt::format("variable rc_gap{} equal x[{}]-x[{}]-{}\n", i, 2 * i + 2, 2 * i + 1,
+                     p.radius1_m + p.radius2_m);
   }
   return d;
 }
 
-}  // namespace
-
-std::string lammps_family_check_deck(const CheckDeckRequest& r, int n) {
+TimeStep lammps_family_time_step(const CheckDeckRequest& r, int n) {
   const double v_min = *std::min_element(r.speeds_m_s.begin(), r.speeds_m_s.end());
   const double v_max = *std::max_element(r.speeds_m_s.begin(), r.speeds_m_s.end());
   // One dt for the whole system: the shortest collision sets it, the longest the length of the run (five
@@ -81,26 +84,27 @@ std::string lammps_family_check_deck(const CheckDeckRequest& r, int n) {
     longest = std::max(longest, natural_time_s(p.pair, v_min));
   }
   const double dt = shortest / n;
-  const long steps = std::lround(std::ceil(5.0 * longest / dt));
+  return {dt, std::lround(std::ceil(5.0 * longest / dt))};
+}
+
+std::string lammps_family_check_deck(const CheckDeckRequest& r, int n) {
+  const auto [dt, steps] = lammps_family_time_step(r, n);
   const std::vector<Row> rows = rows_of(r);
 
   std::string d = check_deck_preamble(r, n);
   d += fmt::format("\n# pass 1 of 2: dt = T/{} = {} s\n", n, dt);
-  d += pass(r, rows, dt, steps);
+  d += lammps_family_pass(r, dt, steps);
   for (std::size_t i = 0; i < rows.size(); ++i)
     d += fmt::format("variable rc_10dt{0} equal ${{rc_eps{0}}}\n", i);
   d += "clear\n";
   d += fmt::format("\n# pass 2 of 2: dt = T/{} = {} s\n", 10 * n, dt / 10.0);
-  d += pass(r, rows, dt / 10.0, 10 * steps);
+  d += lammps_family_pass(r, dt / 10.0, 10 * steps);
   d += "\n# the check lines\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    const Pair& p = rows[i].pair->pair;
     const double eps = rows[i].pair->eps_restitution[rows[i].speed];
     d += fmt::format("variable rc_dt{0} equal ${{rc_eps{0}}}\n", i);
     d += fmt::format("variable rc_code{0} equal (10*v_rc_dt{0}-v_rc_10dt{0})/9\n", i);
     d += fmt::format("variable rc_diff{0} equal (v_rc_code{0}-{1})/{1}\n", i, eps);
-    d += fmt::format("variable rc_gap{} equal x[{}]-x[{}]-{}\n", i, 2 * i + 2, 2 * i + 1,
-                     p.radius1_m + p.radius2_m);
     d += fmt::format(
         "print \"{1} code={2} types={3},{4} speed={5} eps_10dt=${{rc_10dt{0}}} eps_dt=${{rc_dt{0}}} "
         "eps_code=${{rc_code{0}}} eps_restitution={6} rel_diff=${{rc_diff{0}}} gap_m=${{rc_gap{0}}}\"\n",

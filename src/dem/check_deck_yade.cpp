@@ -21,10 +21,35 @@ std::string python_list(const std::vector<double>& values) {
 
 }  // namespace
 
-std::string yade_check_deck(const CheckDeckRequest& r, int n) {
-  if (r.lines.size() != 3) {
-    throw InvalidInput(fmt::format("a YADE check deck needs the three YADE lines, got {}", r.lines.size()));
+std::string yade_collide_function(const std::vector<std::string>& lines) {
+  if (lines.size() != 3) {
+    throw InvalidInput(fmt::format("a YADE deck needs the three YADE lines, got {}", lines.size()));
   }
+  return fmt::format(R"(
+def collide(r1, r2, v, dt, steps):
+    """Two spheres touching at the origin, closing at v [m/s]: eps and the surface gap [m] after steps."""
+    O.reset()
+    {0}
+    O.bodies.append([sphere((-r1, 0, 0), r1), sphere((r2, 0, 0), r2)])
+    O.bodies[0].state.vel = Vector3(v / 2, 0, 0)
+    O.bodies[1].state.vel = Vector3(-v / 2, 0, 0)
+    O.engines = [
+        ForceResetter(),
+        InsertionSortCollider([Bo1_Sphere_Aabb()]),
+        InteractionLoop([Ig2_Sphere_Sphere_ScGeom()],
+                        [{1}],
+                        [{2}]),
+        NewtonIntegrator(damping=0),
+    ]
+    O.dt = dt
+    O.run(steps, True)
+    a, b = O.bodies[0].state, O.bodies[1].state
+    return (b.vel[0] - a.vel[0]) / v, b.pos[0] - a.pos[0] - (r1 + r2)
+)",
+                     lines[0], lines[1], lines[2]);
+}
+
+std::string yade_check_deck(const CheckDeckRequest& r, int n) {
   std::string s = check_deck_preamble(r, n);
   s += fmt::format(
       R"(
@@ -34,31 +59,14 @@ TARGET = '{0}'  # the YADE the lines are for
 if TARGET and yade.config.version != TARGET:
     print('{1}-warning: the lines are for YADE %s, this is YADE %s' % (TARGET, yade.config.version))
 
+)",
+      r.yade_version, kCheckTag);
+  s += yade_collide_function(r.lines);
+  s += fmt::format(R"(
 
-def collide(r1, r2, v, dt, steps):
-    """Two spheres touching at the origin, closing at v [m/s]: eps and the surface gap [m] after steps."""
-    O.reset()
-    {2}
-    O.bodies.append([sphere((-r1, 0, 0), r1), sphere((r2, 0, 0), r2)])
-    O.bodies[0].state.vel = Vector3(v / 2, 0, 0)
-    O.bodies[1].state.vel = Vector3(-v / 2, 0, 0)
-    O.engines = [
-        ForceResetter(),
-        InsertionSortCollider([Bo1_Sphere_Aabb()]),
-        InteractionLoop([Ig2_Sphere_Sphere_ScGeom()],
-                        [{3}],
-                        [{4}]),
-        NewtonIntegrator(damping=0),
-    ]
-    O.dt = dt
-    O.run(steps, True)
-    a, b = O.bodies[0].state, O.bodies[1].state
-    return (b.vel[0] - a.vel[0]) / v, b.pos[0] - a.pos[0] - (r1 + r2)
-
-
-N = {5}  # coarse dt = T/N, fine T/(10 N); each run lasts 6 T (the contact is over after about 3)
+N = {}  # coarse dt = T/N, fine T/(10 N); each run lasts 6 T (the contact is over after about 3)
 SPEEDS = )",
-      r.yade_version, kCheckTag, r.lines[0], r.lines[1], r.lines[2], n);
+                   n);
   s += python_list(r.speeds_m_s) +
        "  # m/s\n"
        "# type1, type2, radius1 [m], radius2 [m], k = (4/3) E* sqrt(R_eff) / m_eff [m^-1/2 s^-2], the eps\n"
