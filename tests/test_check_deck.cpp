@@ -43,7 +43,7 @@ TEST(CheckDeckCli, BadDeckRequestsAreRefusedBeforeAnyWork) {
   EXPECT_NE(empty.err.find("--deck"), std::string::npos) << empty.err;
   for (const char* code : {"mercurydpm", "chrono"}) {
     const std::string file = (folder.path / "deck.txt").string();
-    const auto r = run_cli(std::string("dem --code ") + code + " --deck " + file + kSteel);
+    const auto r = run_cli(fmt::format("dem --code {} --deck {}{}", code, file, kSteel));
     EXPECT_EQ(r.status, 2) << code;
     EXPECT_NE(r.err.find(code), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("no runnable deck"), std::string::npos) << r.err;
