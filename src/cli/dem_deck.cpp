@@ -4,7 +4,6 @@
 #include <fmt/core.h>
 
 #include "cli/output_files.hpp"
-#include "dem/check_deck.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -13,6 +12,11 @@ void check_deck_target(const std::string& path, dem::Code code) {
   if (path.empty()) throw InvalidInput("--deck needs a file name, got an empty one");
   dem::require_check_deck(code);
   check_output_file(path);
+}
+
+std::string write_check_deck(const std::string& path, const dem::CheckDeckRequest& request) {
+  write_file_atomically(path, dem::check_deck(request));
+  return dem::check_deck_command(request.code, path);
 }
 
 std::string write_check_deck(const std::string& path, const dem::LinesResult& r, const Material& material) {
@@ -38,8 +42,7 @@ std::string write_check_deck(const std::string& path, const dem::LinesResult& r,
         r.yade_exact_deck ? ": it cannot express the law; eps_restitution is the eps these lines give there"
                           : ""));
   }
-  write_file_atomically(path, dem::check_deck(request));
-  return dem::check_deck_command(r.deck.code, path);
+  return write_check_deck(path, request);
 }
 
 }  // namespace restitution::cli
