@@ -11,6 +11,7 @@
 
 #include "cli/build_json.hpp"
 #include "cli/commands.hpp"
+#include "cli/dem_deck.hpp"
 #include "cli/dem_polydisperse_output.hpp"
 #include "cli/dem_type_options.hpp"
 #include "cli/from_fit.hpp"
@@ -39,6 +40,9 @@ struct DemOptions {
   bool end_given = false;
   std::string yade_version;  // --yade-version; empty: the yade on PATH
   std::string yade_source;   // how the targeted YADE was chosen (set by target_yade)
+
+  std::optional<std::string> deck;  // --deck FILE: the check deck (cli/dem_deck.hpp)
+  std::string deck_run;             // the command that runs it, once written
 };
 
 // The YADE the lines are for: --yade-version, else `yade --version` of the one on PATH, else the newest
@@ -147,6 +151,7 @@ void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optio
     json.field("eps_at_vn", r.yade->eps_at_vn).end_object();
   }
   if (from_fit) write_fit_carry_over(json, o.from_fit, from_fit->fit, from_fit->k, speeds_of(r));
+  if (o.deck) json.key("deck").begin_object().field("file", *o.deck).field("run", o.deck_run).end_object();
   write_sundials_build(json);
   json.end_object();
   fmt::print("{}\n", json.str());
@@ -193,6 +198,7 @@ void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optio
   }
   if (from_fit)
     fmt::print("{}", fit_carry_over_text(o.from_fit, from_fit->fit, from_fit->k, speeds_of(r), c));
+  if (o.deck) fmt::print("{} check deck written to {}: run `{}`\n", c, *o.deck, o.deck_run);
 }
 
 // Several atom types (docs/dem.md, "Polydisperse sets"): lammps and liggghts only.
@@ -211,10 +217,12 @@ int run_polydisperse(const DemOptions& o) {
   request.tolerance = o.tolerance;
   request.friction = o.friction;
   const dem::PolydisperseResult r = dem::polydisperse_lines(request);
+  std::optional<WrittenDeck> deck;
+  if (o.deck) deck = WrittenDeck{*o.deck, write_check_deck(*o.deck, dem::check_deck_request(r))};
   if (o.json) {
-    print_polydisperse_json(r);
+    print_polydisperse_json(r, deck);
   } else {
-    print_polydisperse_text(r);
+    print_polydisperse_text(r, deck);
   }
   return 0;
 }
@@ -254,15 +262,20 @@ void add_dem_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--yade-version", o->yade_version,
                   "YADE version the yade lines are for, e.g. 2023.02a (no vn: a constant eps) or 2024.02a "
                   "(default: yade --version on PATH)");
+  cmd->add_option("--deck", o->deck,
+                  "also write FILE, a complete input for lammps, liggghts or yade that collides the pair at "
+                  "the speeds and prints the eps it measures next to restitution's (docs/dem.md)");
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, cmd, &chosen] {
     o->end_given = cmd->count("--end") > 0;
     chosen = [o] {
+      if (o->deck) check_deck_target(*o->deck, dem::code_from_name(o->code));
       if (several_types(o->types)) return run_polydisperse(*o);
       o->material = one_pair_material(o->types);
       const std::optional<FromFit> from_fit = apply_from_fit(*o);
       const dem::LinesResult r = compute(*o);
+      if (o->deck) o->deck_run = write_check_deck(*o->deck, r, material_from(o->material));
       if (o->json) {
         print_json(r, *o, from_fit);
       } else {

@@ -10,7 +10,7 @@
 
 namespace restitution::cli {
 
-void print_polydisperse_text(const dem::PolydisperseResult& r) {
+void print_polydisperse_text(const dem::PolydisperseResult& r, const std::optional<WrittenDeck>& deck) {
   fmt::print("# restitution dem --code {}: viscoelastic Hertz law, A = {:.10g} s, {} end, {} atom types\n",
              dem::code_name(r.code), r.dissipative_constant_s, end_name(r.end), r.types.size());
   for (std::size_t i = 0; i < r.types.size(); ++i) {
@@ -44,9 +44,10 @@ void print_polydisperse_text(const dem::PolydisperseResult& r) {
         b.grid_points_per_class, b.worst_abs_error, b.worst_relative_error, b.radius1_m, b.radius2_m,
         b.velocity_m_s, b.eps_code, b.eps_law);
   }
+  if (deck) fmt::print("# check deck written to {}: run `{}`\n", deck->file, deck->run);
 }
 
-void print_polydisperse_json(const dem::PolydisperseResult& r) {
+void print_polydisperse_json(const dem::PolydisperseResult& r, const std::optional<WrittenDeck>& deck) {
   JsonWriter json;
   json.begin_object();
   json.field("code", dem::code_name(r.code)).field("end", end_name(r.end));
@@ -99,6 +100,7 @@ void print_polydisperse_json(const dem::PolydisperseResult& r) {
     json.field("velocity_m_s", b.velocity_m_s).field("eps_lines", b.eps_code).field("eps_law", b.eps_law);
     json.end_object();
   }
+  if (deck) json.key("deck").begin_object().field("file", deck->file).field("run", deck->run).end_object();
   write_sundials_build(json);
   json.end_object();
   fmt::print("{}\n", json.str());

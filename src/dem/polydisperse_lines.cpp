@@ -212,4 +212,24 @@ PolydisperseResult polydisperse_lines(const PolydisperseRequest& request) {
   return r;
 }
 
+CheckDeckRequest check_deck_request(const PolydisperseResult& r) {
+  CheckDeckRequest request;
+  request.code = r.code;
+  request.lines = r.lines;
+  request.type_count = static_cast<int>(r.types.size());
+  for (const SpeedEps& e : r.pairs.front().eps) request.speeds_m_s.push_back(e.velocity_m_s);
+  request.comments.push_back(fmt::format(
+      "written by `restitution dem --code {}`: viscoelastic Hertz law, A = {:.10g} s, {} end, {} atom types",
+      code_name(r.code), r.dissipative_constant_s, end_name(r.end), r.types.size()));
+  for (const TypePairLines& p : r.pairs) {
+    CheckPair c{p.type1, p.type2, p.pair, {}};
+    for (const SpeedEps& e : p.eps) c.eps_restitution.push_back(e.eps);
+    request.pairs.push_back(c);
+    request.comments.push_back(fmt::format("type pair {},{}: radii {} and {} m, masses {} and {} kg", p.type1,
+                                           p.type2, p.pair.radius1_m, p.pair.radius2_m, p.pair.mass1_kg,
+                                           p.pair.mass2_kg));
+  }
+  return request;
+}
+
 }  // namespace restitution::dem

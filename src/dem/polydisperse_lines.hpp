@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "dem/check_deck.hpp"
 #include "dem/lines_check.hpp"
 #include "dem/particle_types.hpp"
 
@@ -60,5 +61,8 @@ struct PolydisperseResult {
 
 // Throws InvalidInput for codes other than lammps and liggghts with more than one type, saying why.
 PolydisperseResult polydisperse_lines(const PolydisperseRequest& request);
+
+// The check deck (`dem --deck`) of the result: its lines, every type pair at every speed against its ε.
+CheckDeckRequest check_deck_request(const PolydisperseResult& r);
 
 }  // namespace restitution::dem

@@ -6,21 +6,11 @@
 #include <cstdlib>
 #include <utility>
 
+#include "dem/check_deck_codes.hpp"
 #include "dem/process_output.hpp"
-#include "restitution/units.hpp"
 
 namespace restitution::dem {
 namespace {
-
-// A Python string literal holding `text` verbatim.
-std::string python_literal(const std::string& text) {
-  std::string out = "'";
-  for (const char c : text) {
-    if (c == '\\' || c == '\'') out += '\\';
-    out += c;
-  }
-  return out + "'";
-}
 
 DemRun run_yade(const std::string& program, const Deck& deck, const Pair& pair,
                 const std::vector<double>& speeds, int steps_per_time) {
@@ -43,28 +33,14 @@ std::string yade_program() {
 
 std::string yade_script(const Deck& deck, const Pair& pair, const std::vector<double>& speeds,
                         int steps_per_time) {
-  std::string s = "LINES = [";
-  for (const std::string& line : deck.lines) s += python_literal(line) + ", ";
-  s += "]\nspeeds = [";
+  std::string s = yade_collide_function(deck.lines);
+  s += "\nspeeds = [";
   for (const double v : speeds) s += fmt::format("{:.17g}, ", v);
-  // k / m_eff as the pair has it: the natural time T = (k/m)^{-2/5} v^{-1/5} of each speed.
-  const double k_over_m =
-      hertz_stiffness(pair.effective_modulus_pa, pair.effective_radius_m) / pair.effective_mass_kg;
-  s += fmt::format("]\nr1, r2, k, n = {:.17g}, {:.17g}, {:.17g}, {}\n", pair.radius1_m, pair.radius2_m,
-                   k_over_m, steps_per_time);
+  // The natural time T = (k/m)^{-2/5} v^{-1/5} of each speed; each run lasts 6 T.
+  s += fmt::format("]\nr1, r2, T1, n = {:.17g}, {:.17g}, {:.17g}, {}\n", pair.radius1_m, pair.radius2_m,
+                   natural_time_s(pair, 1.0), steps_per_time);
   s += R"(for i, v in enumerate(speeds):
-    O.reset()
-    exec(LINES[0])
-    O.bodies.append([sphere((-r1, 0, 0), r1), sphere((r2, 0, 0), r2)])
-    O.bodies[0].state.vel = Vector3(v / 2, 0, 0)
-    O.bodies[1].state.vel = Vector3(-v / 2, 0, 0)
-    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
-                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [eval(LINES[1])], [eval(LINES[2])]),
-                 NewtonIntegrator(damping=0)]
-    O.dt = k ** -0.4 * v ** -0.2 / n
-    O.run(6 * n, True)
-    eps = (O.bodies[1].state.vel[0] - O.bodies[0].state.vel[0]) / v
-    gap = O.bodies[1].state.pos[0] - O.bodies[0].state.pos[0] - (r1 + r2)
+    eps, gap = collide(r1, r2, v, T1 * v ** -0.2 / n, 6 * n)
     print("RESTITUTION_EPS %d %.17g %.17g" % (i, eps, gap))
 )";
   return s;

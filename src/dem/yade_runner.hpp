@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// Runs YADE (`yade -n -x`) on the lines `restitution dem --code yade` prints, unchanged (the material line
-// exec'd, the Ip2 and Law2 lines eval'd as printed), in a head-on collision of the pair at each speed, and
+// Runs YADE (`yade -n -x`) on the lines `restitution dem --code yade` prints, unchanged (in the places the
+// check deck puts them: dem/check_deck_codes.hpp), in a head-on collision of the pair at each speed, and
 // reads back ε. YADE's leap-frog integrator is first order in dt for a velocity-dependent force: two runs at
 // dt = T/n and T/(10 n) (T the natural time of each speed) are Richardson-extrapolated, as for LAMMPS.
 #include <string>

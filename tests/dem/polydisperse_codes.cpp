@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // A polydisperse set through LAMMPS and LIGGGHTS: three sizes spanning a factor 4 and two materials (steel
 // types 1 and 2, glass type 3), fed exactly the lines `restitution dem --radius R1,R2,R3 ... --json` prints.
-// One deck per code holds every type pair (6) at three speeds, each collision a head-on pair of touching
-// spheres; it runs at dt = T_min/2000 and T_min/20000 and ε is Richardson-extrapolated as in
-// dem_integration.cpp. Every pair must reproduce restitution's ε within 1e-6 min(ε, 1 - ε).
-// The MPI case runs the same LAMMPS deck under `mpirun -np 2` with `processors 2 1 1`: the first sphere of
-// every collision is owned by rank 0 (x < 0), the second by rank 1 (x > 0), so every contact straddles the
-// ranks; its ε must equal the serial run's to 1e-12 relative.
+// One deck per code (the check deck's pass, dem/check_deck_codes.hpp) holds every type pair (6) at three
+// speeds, each collision a head-on pair of touching spheres; it runs at dt = T_min/2000 and T_min/20000 and ε
+// is Richardson-extrapolated as in dem_integration.cpp. Every pair must reproduce restitution's ε within 1e-6
+// min(ε, 1 - ε). The MPI case runs the same LAMMPS deck under `mpirun -np 2` with `processors 2 1 1`: the
+// first sphere of every collision is owned by rank 0 (x < 0), the second by rank 1 (x > 0), so every contact
+// straddles the ranks; its ε must equal the serial run's to 1e-12 relative.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -23,7 +23,9 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "dem/check_deck.hpp"
 #include "dem/code_runner.hpp"
+#include "dem/process_output.hpp"
 
 namespace {
 
@@ -41,21 +43,25 @@ json polydisperse_json(const std::string& code, double friction = 0.0) {
   return json::parse(r.out);
 }
 
-// Every type pair at every speed of the JSON, with the ε restitution predicts for it.
+// Every type pair at every speed of the JSON, with the ε restitution predicts for it: the rows of the check
+// deck's pass (pair by pair, speed by speed).
 struct Deck {
-  dem::CollisionRun run;
+  dem::CheckDeckRequest request;
   std::vector<double> predicted;
   std::vector<std::string> labels;
 };
 
 Deck deck_of(const json& out, dem::Code code) {
   Deck d;
-  d.run.code = code;
-  d.run.lines = out.at("lines").get<std::vector<std::string>>();
+  d.request.code = code;
+  d.request.lines = out.at("lines").get<std::vector<std::string>>();
   const json& types = out.at("types");
-  d.run.types = static_cast<int>(types.size());
+  d.request.type_count = static_cast<int>(types.size());
+  for (const json& e : out.at("pairs").at(0).at("eps")) {
+    d.request.speeds_m_s.push_back(e.at("velocity_m_s").get<double>());
+  }
   for (const json& p : out.at("pairs")) {
-    dem::Collision c;
+    dem::CheckPair c;
     c.type1 = p.at("type1").get<int>();
     c.type2 = p.at("type2").get<int>();
     const json& a = types.at(c.type1 - 1);
@@ -68,12 +74,12 @@ Deck deck_of(const json& out, dem::Code code) {
     c.pair.effective_radius_m = p.at("effective_radius_m").get<double>();
     c.pair.effective_mass_kg = p.at("effective_mass_kg").get<double>();
     for (const json& e : p.at("eps")) {
-      c.velocity_m_s = e.at("velocity_m_s").get<double>();
-      d.run.collisions.push_back(c);
+      c.eps_restitution.push_back(e.at("eps").get<double>());
       d.predicted.push_back(e.at("eps").get<double>());
       d.labels.push_back("pair (" + std::to_string(c.type1) + "," + std::to_string(c.type2) +
-                         ") v = " + std::to_string(c.velocity_m_s) + " m/s");
+                         ") v = " + std::to_string(e.at("velocity_m_s").get<double>()) + " m/s");
     }
+    d.request.pairs.push_back(c);
   }
   return d;
 }
@@ -102,9 +108,8 @@ TEST_P(Polydisperse, EveryTypePairReproducesRestitutionsEps) {
   ASSERT_EQ(out.at("types").size(), 3U);
   ASSERT_EQ(out.at("pairs").size(), 6U);
   Deck d = deck_of(out, code);
-  ASSERT_EQ(d.run.collisions.size(), 18U);
-  d.run.steps_per_time = 2000;
-  const dem::DemMeasurement m = dem::measure_collisions(program, d.run);
+  ASSERT_EQ(d.predicted.size(), 18U);
+  const dem::DemMeasurement m = dem::measure_type_pairs(program, d.request, {2000, "", ""});
   double worst = 0.0;
   for (std::size_t i = 0; i < d.predicted.size(); ++i) {
     ASSERT_TRUE(std::isfinite(m.coarse[i]) && std::isfinite(m.fine[i]))
@@ -163,17 +168,15 @@ TEST(PolydisperseMpi, TwoRanksGiveTheSerialEps) {
   setenv("OMPI_MCA_btl", "self,vader", 1);
   setenv("OMPI_MCA_btl_vader_single_copy_mechanism", "none", 1);
   Deck d = deck_of(polydisperse_json("lammps"), dem::Code::lammps);
-  d.run.steps_per_time = 2000;
   const auto folder =
       std::filesystem::temp_directory_path() / ("restitution-mpi-" + std::to_string(::getpid()));
   std::filesystem::create_directories(folder);
   const auto owners = folder / "owners.txt";
-  const dem::DemRun serial = dem::run_collisions(lmp, d.run);
+  const dem::DemRun serial = dem::run_type_pairs(lmp, d.request, {2000, "", ""});
   // Split at x = 0: rank 0 owns every collision's first sphere, rank 1 its second.
-  d.run.processors = "2 1 1";
-  d.run.after_run = "write_dump all custom " + owners.string() + " id proc\n";
+  const dem::PassOptions two_ranks{2000, "2 1 1", "write_dump all custom " + owners.string() + " id proc\n"};
   const dem::DemRun parallel =
-      dem::run_collisions("mpirun --allow-run-as-root --oversubscribe -np 2 " + lmp, d.run);
+      dem::run_type_pairs("mpirun --allow-run-as-root --oversubscribe -np 2 " + lmp, d.request, two_ranks);
   EXPECT_EQ(owner_ranks(owners), (std::set<int>{0, 1})) << parallel.output;
   EXPECT_NE(parallel.output.find("2 by 1 by 1 MPI processor grid"), std::string::npos) << parallel.output;
   double worst = 0.0;
@@ -189,6 +192,34 @@ TEST(PolydisperseMpi, TwoRanksGiveTheSerialEps) {
             << d.predicted.size() << " collisions\n";
   RecordProperty("worst_relative_difference", std::to_string(worst));
   std::filesystem::remove_all(folder);
+}
+
+// The check deck `dem --deck FILE` writes for the set, run unchanged as a user would, under `mpirun -np 2`
+// (LAMMPS picks the processor grid itself here): every check line agrees with restitution's ε.
+TEST(PolydisperseMpi, CheckDeckOfTheSetRunsUnchangedOnTwoRanks) {
+  const std::string lmp = dem::dem_program(dem::Code::lammps);
+  ASSERT_FALSE(lmp.empty()) << "lmp not found on PATH";
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  setenv("OMPI_MCA_btl", "self,vader", 1);
+  setenv("OMPI_MCA_btl_vader_single_copy_mechanism", "none", 1);
+  const auto deck = std::filesystem::temp_directory_path() /
+                    ("restitution-poly-deck-" + std::to_string(::getpid()) + ".in");
+  const auto r = restitution::test_support::run_cli("dem --code lammps " + std::string(kSet) + " --deck " +
+                                                    deck.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string output = dem::output_of("mpirun --allow-run-as-root --oversubscribe -np 2 " + lmp +
+                                            " -in " + deck.string() + " -log none -echo none 2>&1");
+  std::filesystem::remove(deck);
+  const std::vector<dem::CheckLine> lines = dem::read_check_lines(output);
+  ASSERT_EQ(lines.size(), 18U) << output;
+  EXPECT_NE(output.find("MPI processor grid"), std::string::npos) << output;
+  for (const dem::CheckLine& l : lines) {
+    const double eps = l.eps_restitution;
+    EXPECT_NEAR(l.eps_code, eps, 1e-6 * std::min(eps, 1.0 - eps))
+        << "types " << l.type1 << "," << l.type2 << " v = " << l.speed_m_s;
+    EXPECT_GT(l.gap_m, 0.0);
+  }
 }
 
 }  // namespace

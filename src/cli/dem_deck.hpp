@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// `restitution dem --deck FILE`: the check deck (dem/check_deck.hpp) for the lines the command prints,
+// written complete or not at all.
+#include <string>
+
+#include "dem/check_deck.hpp"
+#include "dem/lines_check.hpp"
+#include "restitution/material.hpp"
+
+namespace restitution::cli {
+
+// Before any work: InvalidInput (exit 2) for an empty path or a code without a runnable deck, IoError (exit
+// 3) naming the file when it cannot be written.
+void check_deck_target(const std::string& path, dem::Code code);
+
+// Writes the deck `request` describes to `path` (complete or not at all) and returns the command that runs
+// it. A set of several atom types fills `request` itself: type_count and one CheckPair per type pair I <= J.
+std::string write_check_deck(const std::string& path, const dem::CheckDeckRequest& request);
+// The one-pair deck: `r`'s lines on `material`'s pair (type 1 for both spheres) at `r`'s speeds against `r`'s
+// ε.
+std::string write_check_deck(const std::string& path, const dem::LinesResult& r, const Material& material);
+
+}  // namespace restitution::cli

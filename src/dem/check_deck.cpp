@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "dem/check_deck.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "dem/check_deck_codes.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/units.hpp"
+
+namespace restitution::dem {
+namespace {
+
+void validate(const CheckDeckRequest& r) {
+  require_check_deck(r.code);
+  if (r.pairs.empty() || r.speeds_m_s.empty())
+    throw InvalidInput("a check deck needs at least one type pair and one speed");
+  for (const double v : r.speeds_m_s) {
+    if (!std::isfinite(v) || v <= 0.0)
+      throw InvalidInput(fmt::format("a check deck's speeds must be finite and > 0 m/s, got {}", v));
+  }
+  for (const CheckPair& p : r.pairs) {
+    if (p.type1 < 1 || p.type2 < 1 || p.type1 > r.type_count || p.type2 > r.type_count) {
+      throw InvalidInput(fmt::format("check deck: type pair {},{} outside the {} atom types", p.type1,
+                                     p.type2, r.type_count));
+    }
+    if (p.eps_restitution.size() != r.speeds_m_s.size()) {
+      throw InvalidInput(fmt::format("check deck: type pair {},{} has {} eps for {} speeds", p.type1, p.type2,
+                                     p.eps_restitution.size(), r.speeds_m_s.size()));
+    }
+  }
+}
+
+// The value of `key=value` in a check line's fields (NaN when absent or not a number).
+double field(const std::string& line, const std::string& key) {
+  const auto at = line.find(" " + key + "=");
+  if (at == std::string::npos) return NAN;
+  try {
+    return std::stod(line.substr(at + key.size() + 2));
+  } catch (const std::exception&) {
+    return NAN;
+  }
+}
+
+}  // namespace
+
+double natural_time_s(const Pair& pair, double velocity_m_s) {
+  const double k =
+      hertz_stiffness(pair.effective_modulus_pa, pair.effective_radius_m) / pair.effective_mass_kg;
+  return std::pow(k, -0.4) * std::pow(velocity_m_s, -0.2);
+}
+
+bool has_check_deck(Code code) {
+  return code == Code::lammps || code == Code::liggghts || code == Code::yade;
+}
+
+void require_check_deck(Code code) {
+  if (!has_check_deck(code)) {
+    throw InvalidInput(fmt::format(
+        "--deck: no runnable deck for {}: it is a C++ library, not a program that reads an input file, and "
+        "is "
+        "not installed here to check one against; check decks exist for lammps, liggghts and yade",
+        code_name(code)));
+  }
+}
+
+std::string check_deck_command(Code code, const std::string& path) {
+  switch (code) {
+    case Code::lammps:
+      return "lmp -in " + path;
+    case Code::liggghts:
+      return "liggghts -in " + path;
+    case Code::yade:
+      return "yade -n -x " + path;
+    default:
+      require_check_deck(code);
+  }
+  return {};
+}
+
+std::string check_deck_preamble(const CheckDeckRequest& r, int n) {
+  std::string s = fmt::format("# restitution check deck for {}: run it with `{}`\n", code_name(r.code),
+                              check_deck_command(r.code, "<this file>"));
+  for (const std::string& c : r.comments) s += "# " + c + "\n";
+  s += fmt::format(
+      "# It pastes the lines `restitution dem` printed unchanged, collides every type pair head-on at every\n"
+      "# speed, and measures eps = (separation speed) / (impact speed) once the contact is over. Each "
+      "collision\n"
+      "# runs at dt = T/{0} and T/{1} (T = k^(-2/5) v^(-1/5), the natural time; the integrator is first "
+      "order\n"
+      "# in dt for this velocity-dependent force), and eps_code is their Richardson extrapolation\n"
+      "# (10 eps_dt - eps_10dt) / 9. One line per type pair and speed:\n"
+      "# {2} code={3} types=I,J speed=V_m_s eps_10dt=.. eps_dt=.. eps_code=.. eps_restitution=..\n"
+      "#   rel_diff=(eps_code - eps_restitution)/eps_restitution gap_m=(surface gap at the end: > 0, contact "
+      "over)\n",
+      n, 10 * n, kCheckTag, code_name(r.code));
+  return s;
+}
+
+std::string check_deck(const CheckDeckRequest& request) {
+  validate(request);
+  const bool yade = request.code == Code::yade;
+  const int n = request.steps_per_time > 0 ? request.steps_per_time : (yade ? 5000 : 2000);
+  return yade ? yade_check_deck(request, n) : lammps_family_check_deck(request, n);
+}
+
+std::vector<CheckLine> read_check_lines(const std::string& output) {
+  std::vector<CheckLine> lines;
+  std::istringstream in(output);
+  const std::string start = std::string(kCheckTag) + " ";
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind(start, 0) != 0) continue;
+    CheckLine c;
+    const auto code_at = line.find(" code=");
+    if (code_at != std::string::npos) {
+      const auto begin = code_at + 6;
+      c.code = line.substr(begin, line.find(' ', begin) - begin);
+    }
+    const auto types_at = line.find(" types=");
+    if (types_at == std::string::npos ||
+        std::sscanf(line.c_str() + types_at, " types=%d,%d", &c.type1, &c.type2) != 2) {
+      c.type1 = c.type2 = 0;
+    }
+    c.speed_m_s = field(line, "speed");
+    c.eps_10dt = field(line, "eps_10dt");
+    c.eps_dt = field(line, "eps_dt");
+    c.eps_code = field(line, "eps_code");
+    c.eps_restitution = field(line, "eps_restitution");
+    c.rel_diff = field(line, "rel_diff");
+    c.gap_m = field(line, "gap_m");
+    lines.push_back(c);
+  }
+  return lines;
+}
+
+}  // namespace restitution::dem
