@@ -161,6 +161,26 @@ TEST(DemCommand, SeveralRadiiJsonCarriesTypesPairsAndLines) {
   EXPECT_NEAR(out.at("pairs")[0].at("eps")[1].at("eps").get<double>(), 0.9, 1e-9);
 }
 
+TEST(DemCommand, DeckOfSeveralTypesCollidesEveryTypePair) {
+  test_support::TempFolder folder;
+  const std::string deck = (folder.path / "poly.in").string();
+  const auto r = test_support::run_cli(
+      "dem --code lammps --radius 0.002,0.004,0.008 --density 7850,7850,2500 --young-modulus "
+      "2.1e11,2.1e11,6.3e10 "
+      "--poisson-ratio 0.3,0.3,0.22 --dissipative-constant 2e-7 --speeds 1 --json --deck " +
+      deck);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json out = json::parse(r.out);
+  EXPECT_EQ(out.at("deck").at("file"), deck);
+  EXPECT_EQ(out.at("deck").at("run"), "lmp -in " + deck);
+  const std::string text = test_support::slurp(deck);
+  EXPECT_NE(text.find("create_box 3 box"), std::string::npos);
+  for (const auto& line : out.at("lines")) EXPECT_NE(text.find(line.get<std::string>()), std::string::npos);
+  for (const char* types : {"types=1,1", "types=1,3", "types=2,3", "types=3,3"}) {
+    EXPECT_NE(text.find(types), std::string::npos) << types;
+  }
+}
+
 TEST(DemCommand, RefusalsNameTheOptionOrTheCode) {
   const std::string set = " --young-modulus 2.1e11 --poisson-ratio 0.3 --density 7850 --eps 0.9 --velocity 1";
   for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{

@@ -157,16 +157,20 @@ std::set<int> owner_ranks(const std::filesystem::path& file) {
   return ranks;
 }
 
-TEST(PolydisperseMpi, TwoRanksGiveTheSerialEps) {
-  const std::string lmp = dem::dem_program(dem::Code::lammps);
-  ASSERT_FALSE(lmp.empty()) << "lmp not found on PATH";
-  // Open MPI as root (CI runs as root; --allow-run-as-root says the same), one machine: the self and
-  // shared-memory transports only, so no network interface is probed, and no cross-memory attach, which
-  // containers often forbid (docs/dem.md, "MPI").
+// Open MPI as root (CI runs as root; --allow-run-as-root says the same), one machine: the self and
+// shared-memory transports only, so no network interface is probed, and no cross-memory attach, which
+// containers often forbid (docs/dem.md, "MPI").
+void set_open_mpi_environment() {
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
   setenv("OMPI_MCA_btl", "self,vader", 1);
   setenv("OMPI_MCA_btl_vader_single_copy_mechanism", "none", 1);
+}
+
+TEST(PolydisperseMpi, TwoRanksGiveTheSerialEps) {
+  const std::string lmp = dem::dem_program(dem::Code::lammps);
+  ASSERT_FALSE(lmp.empty()) << "lmp not found on PATH";
+  set_open_mpi_environment();
   Deck d = deck_of(polydisperse_json("lammps"), dem::Code::lammps);
   const auto folder =
       std::filesystem::temp_directory_path() / ("restitution-mpi-" + std::to_string(::getpid()));
@@ -199,10 +203,7 @@ TEST(PolydisperseMpi, TwoRanksGiveTheSerialEps) {
 TEST(PolydisperseMpi, CheckDeckOfTheSetRunsUnchangedOnTwoRanks) {
   const std::string lmp = dem::dem_program(dem::Code::lammps);
   ASSERT_FALSE(lmp.empty()) << "lmp not found on PATH";
-  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-  setenv("OMPI_MCA_btl", "self,vader", 1);
-  setenv("OMPI_MCA_btl_vader_single_copy_mechanism", "none", 1);
+  set_open_mpi_environment();
   const auto deck = std::filesystem::temp_directory_path() /
                     ("restitution-poly-deck-" + std::to_string(::getpid()) + ".in");
   const auto r = restitution::test_support::run_cli("dem --code lammps " + std::string(kSet) + " --deck " +
