@@ -23,7 +23,7 @@ struct FitDataOptions {
   std::string file;
   std::vector<std::string> laws;
   std::string speed_independent_end = "delayed-recovery";
-  double tolerance = 1e-10;
+  double tolerance = SolveOptions{}.tolerance;
   std::string method = "auto";
   MaterialOptions material;
   bool json = false;
