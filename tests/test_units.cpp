@@ -109,8 +109,9 @@ TEST(Units, HertzStiffnessHasOneFormula) {
   EXPECT_EQ(hertz_stiffness(9.0, -0.5, 4.0), 16.0);
   EXPECT_EQ(hertz_stiffness(6.0, 4.0), 16.0);
   std::mt19937_64 random(26);
-  std::uniform_real_distribution<double> log10_young(5.0, 12.0), poisson(-0.99, 0.499),
-      log10_radius(-7.0, 1.0);
+  std::uniform_real_distribution<double> log10_young(5.0, 12.0);
+  std::uniform_real_distribution<double> poisson(-0.99, 0.499);
+  std::uniform_real_distribution<double> log10_radius(-7.0, 1.0);
   for (int i = 0; i < 2000; ++i) {
     const double y = std::pow(10.0, log10_young(random));
     const double nu = poisson(random);
@@ -123,10 +124,11 @@ TEST(Units, HertzStiffnessHasOneFormula) {
     const double ulps = 4.0 + 2.0 * nu * nu / (1.0 - nu * nu);
     EXPECT_NEAR(rho, static_cast<double>(expected), ulps * std::numeric_limits<double>::epsilon() * rho)
         << "Y = " << y << ", nu = " << nu << ", R = " << r;
-    const double e_star_double = static_cast<double>(e_star);
-    const long double from_e_star = 4.0L / 3.0L * e_star_double * std::sqrt(static_cast<long double>(r));
-    EXPECT_NEAR(hertz_stiffness(e_star_double, r), static_cast<double>(from_e_star),
-                4.0 * std::numeric_limits<double>::epsilon() * rho);
+    const auto e_star_double = static_cast<double>(e_star);
+    const auto from_e_star =
+        static_cast<double>(4.0L / 3.0L * e_star_double * std::sqrt(static_cast<long double>(r)));
+    EXPECT_NEAR(hertz_stiffness(e_star_double, r), from_e_star,
+                4.0 * std::numeric_limits<double>::epsilon() * from_e_star);
     // The material's ρ is this formula bit for bit (equal spheres: R_eff = R / 2).
     Material m = rubber();
     m.young_modulus_pa = y;
