@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <random>
 
 #include "material_examples.hpp"
 #include "reference_values.hpp"
@@ -95,6 +97,46 @@ TEST(Units, BadMaterialsAreRejectedNamingTheKey) {
   EXPECT_THROW((void)zeta_from(0.1, 0.0), InvalidInput);
   EXPECT_THROW((void)natural_scales(0.0, 1.0), InvalidInput);
   EXPECT_THROW((void)beta_from_characteristic_velocity(-1.0), InvalidInput);
+}
+
+// The Hertz stiffness ρ = (4/3) E* sqrt(R) has one formula (units.cpp), which the material and the DEM decks
+// share. Checked at exact points, against an independent computation through E* in long double (64-bit
+// mantissa, so its own rounding is far below the tolerance), and for the material's k being that formula.
+TEST(Units, HertzStiffnessHasOneFormula) {
+  // Exact in binary: Y = 3, ν = 0, R = 4 gives E* = 3/2, ρ = (4/3)(3/2)(2) = 4; Y = 9, ν = -1/2 gives E* = 6,
+  // ρ = (4/3)(6)(2) = 16; E* = 6 alone gives the same.
+  EXPECT_EQ(hertz_stiffness(3.0, 0.0, 4.0), 4.0);
+  EXPECT_EQ(hertz_stiffness(9.0, -0.5, 4.0), 16.0);
+  EXPECT_EQ(hertz_stiffness(6.0, 4.0), 16.0);
+  std::mt19937_64 random(26);
+  std::uniform_real_distribution<double> log10_young(5.0, 12.0);
+  std::uniform_real_distribution<double> poisson(-0.99, 0.499);
+  std::uniform_real_distribution<double> log10_radius(-7.0, 1.0);
+  for (int i = 0; i < 2000; ++i) {
+    const double y = std::pow(10.0, log10_young(random));
+    const double nu = poisson(random);
+    const double r = std::pow(10.0, log10_radius(random));
+    const long double e_star =
+        static_cast<long double>(y) / (2.0L * (1.0L - static_cast<long double>(nu) * nu));
+    const long double expected = 4.0L / 3.0L * e_star * std::sqrt(static_cast<long double>(r));
+    const double rho = hertz_stiffness(y, nu, r);
+    // A few roundings, and the one of ν² amplified by ν² / (1 - ν²) in 1 - ν² (large as ν -> -1).
+    const double ulps = 4.0 + 2.0 * nu * nu / (1.0 - nu * nu);
+    EXPECT_NEAR(rho, static_cast<double>(expected), ulps * std::numeric_limits<double>::epsilon() * rho)
+        << "Y = " << y << ", nu = " << nu << ", R = " << r;
+    const auto e_star_double = static_cast<double>(e_star);
+    const auto from_e_star =
+        static_cast<double>(4.0L / 3.0L * e_star_double * std::sqrt(static_cast<long double>(r)));
+    EXPECT_NEAR(hertz_stiffness(e_star_double, r), from_e_star,
+                4.0 * std::numeric_limits<double>::epsilon() * from_e_star);
+    // The material's ρ is this formula bit for bit (equal spheres: R_eff = R / 2).
+    Material m = rubber();
+    m.young_modulus_pa = y;
+    m.poisson_ratio = nu;
+    m.radius1_m = m.radius2_m = 2.0 * r;
+    const ElasticConstants e = elastic_constants(m);
+    EXPECT_EQ(e.elastic_constant, hertz_stiffness(y, nu, e.effective_radius_m));
+  }
 }
 
 TEST(Units, ElasticCollisionMatchesHertzInSiUnits) {

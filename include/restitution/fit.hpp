@@ -110,7 +110,7 @@ struct LawFit {
 struct FitOptions {
   std::vector<FitCandidate> candidates = default_fit_candidates();
   // Accuracy of each solve for the speed-independent members (the Hertz fits use the fast table, 1e-13).
-  double tolerance = 1e-10;
+  double tolerance = SolveOptions{}.tolerance;
   Method method = Method::automatic;
   std::optional<double> k;  // ρ/m_eff [s^-2 m^-1/2] of a material (ElasticConstants::k): gives A
 };

@@ -31,6 +31,12 @@ HertzConstants hertz_constants(double k, double dissipative_constant_s);
 // stiffness ρ = (4/3) E* sqrt(R_eff) [N m^-3/2] of F = ρ ξ^{3/2}, a sphere's mass (4/3) π R³ ρ_mass [kg], and
 // β = γ k^{-3/5} [s^{1/5} m^{-1/5}] from the per-mass coefficients γ [s^-1 m^-1/2] and k [s^-2 m^-1/2].
 double hertz_modulus_pa(double effective_modulus_pa);
+// ρ of two spheres of one material (Young's modulus Y [Pa], Poisson ratio ν; E* = Y / (2 (1 - ν²))), the one
+// formula of the stiffness, evaluated as 2 Y sqrt(R_eff) / (3 (1 - ν²)): the rounding every material's k has
+// had, which elastic_constants (material.hpp) keeps by calling it.
+double hertz_stiffness(double young_modulus_pa, double poisson_ratio, double effective_radius_m);
+// ρ from E* alone (a DEM code's parameter): E* is Y / 2 at ν = 0, so this is the formula above at Y = 2 E*,
+// ν = 0, i.e. 4 E* sqrt(R_eff) / 3.
 double hertz_stiffness(double effective_modulus_pa, double effective_radius_m);
 double sphere_mass_kg(double radius_m, double density_kg_m3);
 double beta_from_gamma(double gamma, double k);

@@ -9,7 +9,7 @@
 
 #include "bindings.hpp"
 #include "restitution/errors.hpp"
-#include "series_study/series_named.hpp"
+#include "restitution_series_study/series_named.hpp"
 
 namespace py = pybind11;
 

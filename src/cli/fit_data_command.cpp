@@ -22,9 +22,9 @@ namespace {
 struct FitDataOptions {
   std::string file;
   std::vector<std::string> laws;
-  std::string speed_independent_end = "delayed-recovery";
-  double tolerance = 1e-10;
-  std::string method = "auto";
+  std::string speed_independent_end = end_name(CollisionEnd::delayed_recovery);
+  double tolerance = SolveOptions{}.tolerance;
+  std::string method = method_name(SolveOptions{}.method);
   MaterialOptions material;
   bool json = false;
   std::string output;
@@ -65,14 +65,14 @@ void add_fit_data_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--speed-independent-end", o->speed_independent_end,
                   "end of the collision for tsuji-hertz and linear-dashpot (the data cannot tell: only their "
                   "parameter differs)")
-      ->check(CLI::IsMember({"naive", "delayed-recovery"}))
+      ->check(CLI::IsMember(end_names()))
       ->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance,
                   "accuracy of each solve of tsuji-hertz and linear-dashpot, in [1e-11, 1e-2] (viscoelastic "
                   "Hertz uses the certified fast table, 1e-13)")
       ->capture_default_str();
   cmd->add_option("--method", o->method, "integration method for those solves: bdf, adams, auto or taylor")
-      ->check(CLI::IsMember({"bdf", "adams", "auto", "taylor"}))
+      ->check(CLI::IsMember(method_names()))
       ->capture_default_str();
   add_material_options(*cmd, o->material);
   cmd->add_flag("--json", o->json, "print one JSON object instead of the table");

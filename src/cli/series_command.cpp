@@ -16,7 +16,7 @@
 #include "cli/series_reports.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"
-#include "series_study/series_named.hpp"
+#include "restitution_series_study/series_named.hpp"
 
 namespace restitution::cli {
 namespace {

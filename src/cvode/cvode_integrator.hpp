@@ -56,7 +56,7 @@ struct TauLog {
 
 struct PhaseSettings {
   Form form = Form::time;
-  double relative_tolerance = 1e-10;
+  double relative_tolerance = 0.0;  // the tolerance plan's (tolerance_policy.hpp)
   State absolute_tolerance{};
   double stop = 1e6;  // the independent variable's last value: time limit, or u at the phase's end
   long max_steps = 1000000;

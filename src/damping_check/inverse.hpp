@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "damping_check/check.hpp"
+#include "restitution/collision_solver.hpp"
 
 namespace restitution::damping_check {
 
@@ -17,7 +18,7 @@ struct InverseRequest {
   double target_velocity_m_s = 1.0;
   Clamp clamp = Clamp::on;
   std::vector<double> speeds_m_s{1.0};
-  double tolerance = 1e-10;
+  double tolerance = SolveOptions{}.tolerance;
 };
 
 struct InverseResult {

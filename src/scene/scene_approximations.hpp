@@ -10,7 +10,7 @@
 
 namespace restitution::scene::detail {
 
-// Names in scene files are series::approximation_name(kind) (src/series_study/series_named.hpp), the
+// Names in scene files are series::approximation_name(kind) (restitution_series_study/series_named.hpp), the
 // spelling every command shares.
 struct ApproximationInfo {
   series::Approximation kind;

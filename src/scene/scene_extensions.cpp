@@ -12,8 +12,8 @@
 #include "reference/work_precision.hpp"
 #include "restitution/series.hpp"
 #include "restitution/series_tables.hpp"
+#include "restitution_series_study/series_named.hpp"
 #include "scene/scene_approximations.hpp"
-#include "series_study/series_named.hpp"
 
 namespace restitution::scene::detail {
 namespace {

@@ -14,11 +14,11 @@
 #include "dem/deck.hpp"
 #include "reference/work_precision.hpp"
 #include "restitution/errors.hpp"
+#include "restitution_series_study/series_named.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_approximations.hpp"
 #include "scene/toml_ascii.hpp"
 #include "scene/toml_reader.hpp"
-#include "series_study/series_named.hpp"
 
 namespace restitution::scene {
 namespace {

@@ -105,7 +105,7 @@ struct WorkPrecisionHighlight {
   WorkPrecisionGroup best;
   WorkPrecisionGroup quoted;
 };
-inline constexpr double kQuotedTolerance = 1e-10;
+inline constexpr double kQuotedTolerance = SolveOptions{}.tolerance;  // the default
 
 // Why a study has no result.
 enum class StudyGap { none, no_reference_file, no_zeta_values };

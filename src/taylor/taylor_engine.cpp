@@ -81,7 +81,7 @@ EndResult end_result(const ContactLaw& law, const taylor::TaylorPoint<double>& p
 }  // namespace
 
 void TaylorEngine::check(const ContactLaw& law, const SolveOptions& options) const {
-  check_solve_request(law, options, {"taylor", kTaylorRoundingGain, 0.0, ""});
+  check_solve_request(law, options, {method_name(Method::taylor), kTaylorRoundingGain, 0.0, ""});
   if (options.keep_trajectory) {
     throw InvalidInput("method taylor does not record trajectories: use --method bdf or adams");
   }

@@ -62,11 +62,7 @@ ElasticConstants elastic_constants(const Material& m) {
   ElasticConstants e;
   e.effective_radius_m = m.radius1_m * m.radius2_m / (m.radius1_m + m.radius2_m);
   e.effective_mass_kg = mass1 * mass2 / (mass1 + mass2);
-  // ρ = hertz_stiffness(effective_modulus_pa(Y, ν), R_eff) in exact arithmetic, but rounded differently (half
-  // of random inputs differ in the last bit): kept in this order so that every number from a material stays
-  // as it was.
-  e.elastic_constant = 2.0 * m.young_modulus_pa * std::sqrt(e.effective_radius_m) /
-                       (3.0 * (1.0 - m.poisson_ratio * m.poisson_ratio));
+  e.elastic_constant = hertz_stiffness(m.young_modulus_pa, m.poisson_ratio, e.effective_radius_m);
   e.k = e.elastic_constant / e.effective_mass_kg;
   if (!std::isfinite(e.k) || e.k <= 0.0) {
     throw InvalidInput("material: the data give k = rho/m_eff outside the range of double");

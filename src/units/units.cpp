@@ -53,8 +53,13 @@ double hertz_modulus_pa(double effective_modulus_pa) {
   return 4.0 / 3.0 * effective_modulus_pa;
 }
 
+double hertz_stiffness(double young_modulus_pa, double poisson_ratio, double effective_radius_m) {
+  return 2.0 * young_modulus_pa * std::sqrt(effective_radius_m) /
+         (3.0 * (1.0 - poisson_ratio * poisson_ratio));
+}
+
 double hertz_stiffness(double effective_modulus_pa, double effective_radius_m) {
-  return hertz_modulus_pa(effective_modulus_pa) * std::sqrt(effective_radius_m);
+  return hertz_stiffness(2.0 * effective_modulus_pa, 0.0, effective_radius_m);
 }
 
 double sphere_mass_kg(double radius_m, double density_kg_m3) {
