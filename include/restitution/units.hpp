@@ -35,8 +35,9 @@ double hertz_modulus_pa(double effective_modulus_pa);
 // formula of the stiffness, evaluated as 2 Y sqrt(R_eff) / (3 (1 - ν²)): the rounding every material's k has
 // had, which elastic_constants (material.hpp) keeps by calling it.
 double hertz_stiffness(double young_modulus_pa, double poisson_ratio, double effective_radius_m);
-// ρ from E* alone (a DEM code's parameter): E* is Y / 2 at ν = 0, so this is the formula above at Y = 2 E*,
-// ν = 0, i.e. 4 E* sqrt(R_eff) / 3.
+// ρ from E* alone (a DEM code's parameter): the same fact, (4/3) E* sqrt(R_eff), evaluated as
+// hertz_modulus_pa(E*) sqrt(R_eff), the rounding the DEM outputs have had (equal to the form above within an
+// ulp).
 double hertz_stiffness(double effective_modulus_pa, double effective_radius_m);
 double sphere_mass_kg(double radius_m, double density_kg_m3);
 double beta_from_gamma(double gamma, double k);

@@ -59,7 +59,9 @@ double hertz_stiffness(double young_modulus_pa, double poisson_ratio, double eff
 }
 
 double hertz_stiffness(double effective_modulus_pa, double effective_radius_m) {
-  return hertz_stiffness(2.0 * effective_modulus_pa, 0.0, effective_radius_m);
+  // The modulus factor times sqrt(R): the rounding the DEM codes' numbers have always had (the form above
+  // at Y = 2 E*, nu = 0 differs in the last bit, which moved printed DEM eps by up to 6e-13).
+  return hertz_modulus_pa(effective_modulus_pa) * std::sqrt(effective_radius_m);
 }
 
 double sphere_mass_kg(double radius_m, double density_kg_m3) {
