@@ -68,8 +68,9 @@ struct SweepSummary {
 // Throws InvalidInput naming the first ζ that is outside the checked range or that the options cannot be
 // solved at (e.g. the Taylor engine's naive end beyond ζ = 100, the dash-pot's naive end at r >= 1): run it
 // before writing anything. ζ is the natural form's (ContactLaw::natural) for every member of the family.
+// The points are checked on `threads` threads (0: all cores), as a sweep runs.
 void check_sweep(const std::vector<double>& zetas, const SolveOptions& options,
-                 LawKind law = LawKind::viscoelastic_hertz);
+                 LawKind law = LawKind::viscoelastic_hertz, unsigned threads = 0);
 
 // Solves the law's natural form at every ζ with the same options. Throws InvalidInput for bad options
 // before any point is computed; a NumericalFailure at one point marks that point failed and the sweep goes
