@@ -5,6 +5,7 @@
 #include <exception>
 #include <mutex>
 
+#include "parallel/brief_lock.hpp"
 #include "parallel/parallel_for.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/sweep.hpp"
@@ -61,8 +62,8 @@ class SweepRun {
   LawKind law_;
   const SolveOptions& options_;
   const SweepControl& control_;
-  std::size_t skipped_;  // points finished before this run, counted in the progress
-  std::mutex mutex_;     // guards summary_ and the callback
+  std::size_t skipped_;      // points finished before this run, counted in the progress
+  detail::BriefLock mutex_;  // guards summary_ and the callback
   SweepSummary summary_;
 };
 
