@@ -37,6 +37,9 @@ struct SweepPoint {
   double zeta = 0.0;
   std::optional<CollisionResult> result;  // empty when the point failed
   std::string error;                      // the NumericalFailure message when it failed
+  // The sweep thread that computed it, 0 … threads-1 (the thread count as SweepControl::threads, 0 meaning
+  // std::thread::hardware_concurrency()): point_computed may keep a buffer per thread without a lock.
+  unsigned worker = 0;
 };
 
 struct SweepControl {

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cli/commands.hpp"
@@ -100,7 +101,9 @@ int run_sweep_command(const SweepOptions& o) {
     fmt::print(stderr, "restitution: resuming: {} of {} points already finished, computing {}\n",
                done.rows.size(), zetas.size(), zetas.size() - done.rows.size());
   }
-  PartialFile partial(partial_path, done.valid_bytes, settings + "\n" + header + "\n");
+  // As many buffers as the sweep can have workers (SweepControl::threads, 0: one per core).
+  const unsigned writers = threads != 0 ? threads : std::thread::hardware_concurrency();
+  PartialFile partial(partial_path, done.valid_bytes, settings + "\n" + header + "\n", writers);
 
   OrderedTable table(out, header, zetas.size());
   SweepControl control;
@@ -112,15 +115,14 @@ int run_sweep_command(const SweepOptions& o) {
     table.add(index);
   }
   control.stop_requested = [] { return stop_signal_received() != 0; };
-  // Each worker formats its own row into its own slot; only the writes to the two files are serialized,
-  // and they overlap the other workers' solves.
+  // Each worker formats its own row into its own slot and appends it to its own buffer of the partial file;
+  // only the table's in-order writing is serialized, and it overlaps the other workers' solves.
   control.point_computed = [&](const SweepPoint& point) {
-    table.slot(point.index) = sweep_row(point, solve.ends, velocity);
+    std::string& row = table.slot(point.index);
+    row = sweep_row(point, solve.ends, velocity);
+    partial.append(point.worker, point.index, row);
   };
-  control.point_finished = [&](const SweepPoint& point) {
-    partial.append(point.index, table.slot(point.index));
-    table.add(point.index);
-  };
+  control.point_finished = [&](const SweepPoint& point) { table.add(point.index); };
 
   SweepSummary summary;
   {

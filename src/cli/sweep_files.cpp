@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "cli/sweep_files.hpp"
 
-#include <fmt/core.h>
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
 
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <iterator>
 #include <system_error>
 
 #include "cli/io_error.hpp"
@@ -17,8 +22,8 @@ namespace fs = std::filesystem;
 // A crash loses at most the rows of the last interval, which --resume computes again. A flush per row (a
 // system call each) cost more than a Taylor solve and, serialized, kept a second thread from paying off.
 constexpr long long kFlushIntervalNs = 100'000'000;
-// Large stdio buffers: with the default 4 KiB one, a 15 MB table is some 3700 write calls.
-constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
+// Large buffers: with stdio's default 4 KiB, a 15 MB table is some 3700 write calls.
+constexpr std::size_t kBufferBytes = std::size_t{1} << 18;
 
 long long steady_ns() {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(
@@ -34,40 +39,56 @@ std::FILE* open_buffered(const fs::path& path, const char* mode) {
 
 }  // namespace
 
-PartialFile::PartialFile(const fs::path& path, std::size_t keep_bytes, const std::string& preamble)
-    : path_(path), last_flush_ns_(steady_ns()) {
+PartialFile::PartialFile(const fs::path& path, std::size_t keep_bytes, const std::string& preamble,
+                         unsigned writers)
+    : path_(path), buffers_(std::max(1U, writers)) {
   if (keep_bytes > 0) fs::resize_file(path, keep_bytes);  // drop a half-written last line
   std::error_code error;
   if (path.has_parent_path()) fs::create_directories(path.parent_path(), error);
-  file_ = open_buffered(path, keep_bytes > 0 ? "ab" : "wb");
-  if (file_ == nullptr) throw IoError(fmt::format("--out: cannot write '{}'", path.string()));
+  // O_APPEND: each write(2) of a writer's whole lines lands at the end, never inside another's.
+  const int flags = O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | (keep_bytes > 0 ? 0 : O_TRUNC);
+  fd_ = ::open(path.c_str(), flags, 0644);  // NOLINT(cppcoreguidelines-pro-type-vararg): POSIX API
+  if (fd_ < 0) throw IoError(fmt::format("--out: cannot write '{}'", path.string()));
+  const long long now = steady_ns();
+  for (Buffer& buffer : buffers_) buffer.last_write_ns = now;
   if (keep_bytes == 0) {
-    if (std::fputs(preamble.c_str(), file_) < 0) fail();
-    flush();
+    buffers_.front().lines = preamble;
+    write(buffers_.front());
   }
 }
 
 PartialFile::~PartialFile() {
-  if (file_ == nullptr) return;
-  std::fflush(file_);
-  std::fclose(file_);
+  for (Buffer& buffer : buffers_) {
+    try {
+      write(buffer);
+    } catch (const IoError&) {  // the sweep already failed or stopped; its own message is the one to show
+    }
+  }
+  ::close(fd_);
 }
 
-void PartialFile::append(std::size_t index, const std::string& row) {
-  fmt::print(file_, "{},{}\n", index, row);
-  if (std::ferror(file_) != 0) fail();
-  if (const long long now = steady_ns(); now - last_flush_ns_ >= kFlushIntervalNs) {
-    flush();
-    last_flush_ns_ = now;
+void PartialFile::append(unsigned writer, std::size_t index, const std::string& row) {
+  Buffer& buffer = buffers_.at(writer);
+  fmt::format_to(std::back_inserter(buffer.lines), "{},{}\n", index, row);
+  if (buffer.lines.size() >= kBufferBytes) {
+    write(buffer);
+  } else if (const long long now = steady_ns(); now - buffer.last_write_ns >= kFlushIntervalNs) {
+    write(buffer);
   }
 }
 
-void PartialFile::flush() {
-  if (std::fflush(file_) != 0) fail();
+void PartialFile::write(Buffer& buffer) {
+  buffer.last_write_ns = steady_ns();
+  if (buffer.lines.empty()) return;
+  // One call: a short write (disk full) would let another writer's lines in after a cut line.
+  const ssize_t written = ::write(fd_, buffer.lines.data(), buffer.lines.size());
+  if (written < 0 || static_cast<std::size_t>(written) != buffer.lines.size())
+    fail(written < 0 ? errno : ENOSPC);
+  buffer.lines.clear();
 }
 
-void PartialFile::fail() const {
-  throw IoError(fmt::format("--out: cannot write '{}': {}", path_.string(), std::strerror(errno)));
+void PartialFile::fail(int error) const {
+  throw IoError(fmt::format("--out: cannot write '{}': {}", path_.string(), std::strerror(error)));
 }
 
 OrderedTable::OrderedTable(fs::path target, const std::string& header, std::size_t rows)

@@ -2,6 +2,7 @@
 // Parallel sweep over ζ on the library's thread pool (src/parallel): each worker thread has its own
 // CollisionSolver; finished points go to the caller's callback one at a time.
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <mutex>
 
@@ -25,8 +26,9 @@ class SweepRun {
     // failure is recorded with the point.
     summary_.stopped = detail::parallel_for(run, [this]() -> detail::IndexBody {
       auto solver = std::make_shared<CollisionSolver>();
-      return [this, solver](std::size_t i) {
-        if (!done_before(i)) finish(solve_point(*solver, i));
+      const unsigned worker = next_worker_.fetch_add(1);
+      return [this, solver, worker](std::size_t i) {
+        if (!done_before(i)) finish(solve_point(*solver, i, worker));
       };
     });
     return summary_;
@@ -37,9 +39,10 @@ class SweepRun {
     return i < control_.already_done.size() && control_.already_done[i];
   }
 
-  SweepPoint solve_point(CollisionSolver& solver, std::size_t i) const {
+  SweepPoint solve_point(CollisionSolver& solver, std::size_t i, unsigned worker) const {
     SweepPoint point;
     point.index = i;
+    point.worker = worker;
     point.zeta = zetas_[i];
     try {
       point.result = solver.solve(ContactLaw::natural(law_, point.zeta), options_);
@@ -62,7 +65,8 @@ class SweepRun {
   LawKind law_;
   const SolveOptions& options_;
   const SweepControl& control_;
-  std::size_t skipped_;      // points finished before this run, counted in the progress
+  std::size_t skipped_;  // points finished before this run, counted in the progress
+  std::atomic<unsigned> next_worker_{0};
   detail::BriefLock mutex_;  // guards summary_ and the callback
   SweepSummary summary_;
 };
