@@ -70,9 +70,8 @@ PartialFile::~PartialFile() {
 void PartialFile::append(unsigned writer, std::size_t index, const std::string& row) {
   Buffer& buffer = buffers_.at(writer);
   fmt::format_to(std::back_inserter(buffer.lines), "{},{}\n", index, row);
-  if (buffer.lines.size() >= kBufferBytes) {
-    write(buffer);
-  } else if (const long long now = steady_ns(); now - buffer.last_write_ns >= kFlushIntervalNs) {
+  // The clock is read only while the buffer is not full.
+  if (buffer.lines.size() >= kBufferBytes || steady_ns() - buffer.last_write_ns >= kFlushIntervalNs) {
     write(buffer);
   }
 }
