@@ -195,6 +195,23 @@ TEST(Sweep, BadOptionsAreRefusedBeforeAnyPoint) {
   EXPECT_FALSE(called);
 }
 
+// The check runs on the pool in chunks; whichever thread meets a refused point first, the message names the
+// first one in grid order, as a serial check would. Here thread 2 meets index 4096 (the first of the second
+// chunk) long before thread 1 reaches index 4095 (the last of the first).
+TEST(Sweep, TheCheckNamesTheFirstRefusedPointInGridOrderOnAnyThreadCount) {
+  std::vector<double> zetas(3 * 4096, 1.0);
+  zetas[4095] = 2e6;
+  zetas[4096] = 3e6;
+  for (const unsigned threads : {1U, 2U, 4U}) {
+    try {
+      check_sweep(zetas, quick_options(), LawKind::viscoelastic_hertz, threads);
+      ADD_FAILURE() << "no refusal on " << threads << " threads";
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find("zeta = 2000000 "), std::string::npos) << e.what();
+    }
+  }
+}
+
 // --- The CSV table -----------------------------------------------------------------------------------
 
 TEST(SweepTable, FailedRowsKeepTheColumnsAndQuoteTheMessage) {
@@ -314,6 +331,7 @@ TEST(CliSweep, SignalsKeepFinishedRowsAndResumeFinishesWithoutRecomputing) {
     ASSERT_EQ(status, 128 + signal_number) << slurp(dir.path / "err.txt");
     EXPECT_NE(slurp(dir.path / "err.txt").find("--resume"), std::string::npos);
     EXPECT_FALSE(fs::exists(out)) << "an interrupted sweep must not leave a final file";
+    EXPECT_FALSE(fs::exists(out.string() + ".tmp")) << "nor the final file in progress";
     ASSERT_TRUE(fs::exists(partial));
     run.emplace_back("--resume");
   }

@@ -37,6 +37,9 @@ struct SweepPoint {
   double zeta = 0.0;
   std::optional<CollisionResult> result;  // empty when the point failed
   std::string error;                      // the NumericalFailure message when it failed
+  // The sweep thread that computed it, 0 … threads-1 (the thread count as SweepControl::threads, 0 meaning
+  // std::thread::hardware_concurrency()): point_computed may keep a buffer per thread without a lock.
+  unsigned worker = 0;
 };
 
 struct SweepControl {
@@ -68,8 +71,9 @@ struct SweepSummary {
 // Throws InvalidInput naming the first ζ that is outside the checked range or that the options cannot be
 // solved at (e.g. the Taylor engine's naive end beyond ζ = 100, the dash-pot's naive end at r >= 1): run it
 // before writing anything. ζ is the natural form's (ContactLaw::natural) for every member of the family.
+// The points are checked on `threads` threads (0: all cores), as a sweep runs.
 void check_sweep(const std::vector<double>& zetas, const SolveOptions& options,
-                 LawKind law = LawKind::viscoelastic_hertz);
+                 LawKind law = LawKind::viscoelastic_hertz, unsigned threads = 0);
 
 // Solves the law's natural form at every ζ with the same options. Throws InvalidInput for bad options
 // before any point is computed; a NumericalFailure at one point marks that point failed and the sweep goes

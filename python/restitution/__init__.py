@@ -115,7 +115,7 @@ def _law(law, zeta=None, beta=None, material=None):
 
 
 def eps(zeta=None, end="delayed-recovery", tolerance=_TOLERANCE, method="auto", *, beta=None, velocity=None,
-        material=None, law="viscoelastic-hertz"):
+        material=None, law="viscoelastic-hertz", threads=None):
     """Coefficient of restitution eps at one end of the collision.
 
     zeta: float or array-like in the checked range 0 <= zeta <= 1e6 (natural units; above it ValueError, as
@@ -129,19 +129,37 @@ def eps(zeta=None, end="delayed-recovery", tolerance=_TOLERANCE, method="auto", 
     law: the contact law (docs/contact_laws.md): "viscoelastic-hertz" (default), "tsuji-hertz",
         "hertz-constant-damping" or "linear-dashpot"; zeta is that law's natural-form parameter in
         x'' + zeta x^b x' + x^a = 0 (the dash-pot: zeta = 2 r); beta and material are Hertz only.
+    threads: worker threads for an array, an int in [1, 1024]; None (default): all cores. As the command
+        line's sweep --threads. A scalar is solved on the calling thread.
     Returns a float for scalar input, else a float64 array of the same (broadcast) shape, computed on all
-    cores with the GIL released (Ctrl-C -> KeyboardInterrupt).
+    cores (or `threads`) with the GIL released (Ctrl-C -> KeyboardInterrupt).
     Raises ValueError (bad value, empty array; the message names the index), TypeError (wrong type),
     NumericalFailure (accuracy not reached; names the index).
     """
     if (type(zeta) is float and beta is None and material is None and velocity is None and type(end) is str
-            and type(method) is str and type(tolerance) is float and law == "viscoelastic-hertz"):
+            and type(method) is str and type(tolerance) is float and law == "viscoelastic-hertz"
+            and threads is None):
         return _core.eps_scalar(zeta, end, tolerance, method, law)  # fast path; pybind11 checks the types
+    workers = _threads(threads)
     law = _law(law, zeta, beta, material)
     z = zeta_of(zeta, beta=beta, velocity=velocity, material=material)
     if isinstance(z, float):
         return _core.eps_scalar(z, _text("end", end), _tolerance(tolerance), _text("method", method), law)
-    return _core.eps_array(z, _text("end", end), _tolerance(tolerance), _text("method", method), law)
+    return _core.eps_array(z, _text("end", end), _tolerance(tolerance), _text("method", method), law, workers)
+
+
+_MAX_THREADS = 1024  # as the command line's --threads
+
+
+def _threads(threads):
+    """The worker count for the library's sweep: 0 (all cores) for None."""
+    if threads is None:
+        return 0
+    if isinstance(threads, bool) or not isinstance(threads, _numbers.Integral):
+        raise TypeError(f"threads must be an int, got {type(threads).__name__}")
+    if not 1 <= threads <= _MAX_THREADS:
+        raise ValueError(f"threads must lie in [1, {_MAX_THREADS}] (default: all cores), got {threads}")
+    return int(threads)
 
 
 def _tolerance(tolerance):

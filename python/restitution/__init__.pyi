@@ -152,7 +152,7 @@ def zeta_of(
 @overload
 def eps(
     zeta: float, end: End = ..., tolerance: float = ..., method: Method = ..., *, beta: None = ...,
-    velocity: None = ..., material: None = ..., law: Law = ...
+    velocity: None = ..., material: None = ..., law: Law = ..., threads: Optional[int] = ...
 ) -> float: ...
 @overload
 def eps(
@@ -165,6 +165,7 @@ def eps(
     velocity: Optional[ArrayLike] = ...,  # m/s
     material: Optional[Material] = ...,
     law: Law = ...,
+    threads: Optional[int] = ...,  # worker threads for an array; None: all cores
 ) -> Union[float, FloatArray]: ...
 def solve(
     zeta: Optional[float] = ...,

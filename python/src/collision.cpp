@@ -49,7 +49,7 @@ double eps_scalar(double zeta, const std::string& end, double tolerance, const s
 }
 
 DoubleArray eps_array(const DoubleArray& zeta, const std::string& end, double tolerance,
-                      const std::string& method, const std::string& law) {
+                      const std::string& method, const std::string& law, unsigned threads) {
   const SolveOptions options = solve_options(end, tolerance, method, false);
   const LawKind kind = law_from_name(law);
   const CollisionEnd which = end_from_name(end);
@@ -62,7 +62,7 @@ DoubleArray eps_array(const DoubleArray& zeta, const std::string& end, double to
   DoubleArray eps(std::vector<py::ssize_t>(zeta.shape(), zeta.shape() + zeta.ndim()));
   double* out = eps.mutable_data();
   const auto failure = parallel_solve(
-      kind, zetas, options,
+      kind, zetas, options, threads,
       [out, which](std::size_t i, const CollisionResult& r) { out[i] = end_of(r, which).eps; });
   if (failure) {
     throw NumericalFailure(
@@ -173,8 +173,11 @@ void bind_collision(py::module_& m) {
   bind_result_types(m);
   m.def("eps_scalar", &eps_scalar, py::arg("zeta"), py::arg("end"), py::arg("tolerance"), py::arg("method"),
         py::arg("law"), "eps at one zeta (natural units), end naive or delayed-recovery.");
-  m.def("eps_array", &eps_array, py::arg("zeta"), py::arg("end"), py::arg("tolerance"), py::arg("method"),
-        py::arg("law"), "eps at every zeta of an array, on all cores with the GIL released; same shape out.");
+  m.def(
+      "eps_array", &eps_array, py::arg("zeta"), py::arg("end"), py::arg("tolerance"), py::arg("method"),
+      py::arg("law"), py::arg("threads"),
+      "eps at every zeta of an array, on `threads` threads (0: all cores) with the GIL released; same shape "
+      "out.");
   m.attr("law_names") = law_names();
   m.attr("default_tolerance") = SolveOptions{}.tolerance;
   m.attr("largest_checked_zeta") = kLargestCheckedZeta;

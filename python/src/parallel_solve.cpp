@@ -12,11 +12,12 @@
 namespace restitution::python {
 
 std::optional<PointFailure> parallel_solve(
-    LawKind law, const std::vector<double>& zetas, const SolveOptions& options,
+    LawKind law, const std::vector<double>& zetas, const SolveOptions& options, unsigned threads,
     const std::function<void(std::size_t index, const CollisionResult& result)>& store) {
   std::atomic<bool> stop{false};
   std::optional<PointFailure> failure;  // written under the sweep's callback serialization
   SweepControl control;
+  control.threads = threads;
   control.stop_requested = [&stop] { return stop.load(); };
   control.point_finished = [&](const SweepPoint& point) {
     if (point.result) {

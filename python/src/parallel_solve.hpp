@@ -17,13 +17,13 @@ struct PointFailure {
   std::string message;  // the library's NumericalFailure message
 };
 
-// Solves the law's natural form at every ζ on all cores; `store` receives each finished point,
-// from worker threads, one call at a time and without the GIL (it must not touch Python objects).
-// Must be called with the GIL held. Every ~20 ms the GIL is taken back to run Python's signal handlers:
-// if one raises (Ctrl-C -> KeyboardInterrupt) the sweep stops after the points in progress and
+// Solves the law's natural form at every ζ on `threads` threads (0: all cores); `store` receives each
+// finished point, from worker threads, one call at a time and without the GIL (it must not touch Python
+// objects). Must be called with the GIL held. Every ~20 ms the GIL is taken back to run Python's signal
+// handlers: if one raises (Ctrl-C -> KeyboardInterrupt) the sweep stops after the points in progress and
 // pybind11::error_already_set is thrown. The first numerical failure stops the sweep and is returned.
 std::optional<PointFailure> parallel_solve(
-    LawKind law, const std::vector<double>& zetas, const SolveOptions& options,
+    LawKind law, const std::vector<double>& zetas, const SolveOptions& options, unsigned threads,
     const std::function<void(std::size_t index, const CollisionResult& result)>& store);
 
 }  // namespace restitution::python

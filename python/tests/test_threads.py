@@ -54,3 +54,18 @@ def test_another_thread_runs_during_a_long_call():
     assert end - start > 0.05
     # With the GIL held the other thread could not tick at all during the call.
     assert len(inside) >= 10, (len(inside), end - start)
+
+
+def test_the_thread_count_changes_no_value():
+    zetas = np.logspace(-3, 3, 999)
+    default = restitution.eps(zetas, method="taylor")
+    for threads in (1, 2, 3, np.int64(2)):
+        np.testing.assert_array_equal(restitution.eps(zetas, method="taylor", threads=threads), default)
+    assert restitution.eps(0.5, threads=1) == restitution.eps(0.5)
+
+
+@pytest.mark.parametrize("threads, error", [(0, ValueError), (-1, ValueError), (1025, ValueError),
+                                            (1.5, TypeError), (True, TypeError), ("2", TypeError)])
+def test_bad_thread_counts_are_refused(threads, error):
+    with pytest.raises(error, match="threads"):
+        restitution.eps([0.1, 0.2], threads=threads)

@@ -1,28 +1,26 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `restitution sweep`: ε over a grid of ζ, or of impact speeds with β or a material, in parallel, into one
 // CSV file. Nothing finished is lost: each
-// finished row is appended to FILE.partial and flushed; FILE appears (atomically) only when every point is
-// finished; SIGINT/SIGTERM stop the sweep after the points in progress; --resume continues from FILE.partial.
+// finished row is appended to FILE.partial (flushed every 100 ms); the table is written in ζ order into
+// FILE.tmp as the rows come, and FILE appears (renamed) only when every point is finished; SIGINT/SIGTERM
+// stop the sweep after the points in progress; --resume continues from FILE.partial.
 #include <fmt/core.h>
 
-#include <cerrno>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <memory>
-#include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "cli/io_error.hpp"
 #include "cli/material_options.hpp"
 #include "cli/options.hpp"
 #include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "cli/stop_signals.hpp"
+#include "cli/sweep_files.hpp"
 #include "cli/sweep_grid.hpp"
 #include "cli/sweep_table.hpp"
 #include "restitution/errors.hpp"
@@ -56,53 +54,6 @@ std::string settings_line(const SweepOptions& o, const SweepGrid& grid) {
                      number17(o.solver.tolerance));
 }
 
-// Appends finished rows to the partial file, flushing each so that a killed process loses none.
-class PartialFile {
- public:
-  PartialFile(const fs::path& path, std::size_t keep_bytes, const std::string& preamble) : path_(path) {
-    if (keep_bytes > 0) fs::resize_file(path, keep_bytes);  // drop a half-written last line
-    std::error_code error;
-    if (path.has_parent_path()) fs::create_directories(path.parent_path(), error);
-    file_ = std::fopen(path.c_str(), keep_bytes > 0 ? "ab" : "wb");
-    if (file_ == nullptr) throw IoError(fmt::format("--out: cannot write '{}'", path.string()));
-    if (keep_bytes == 0) {
-      append(preamble);
-      flush();
-    }
-  }
-  // Rows still buffered are written: an interrupted sweep keeps every finished point.
-  ~PartialFile() {
-    if (file_ == nullptr) return;
-    std::fflush(file_);
-    std::fclose(file_);
-  }
-  PartialFile(const PartialFile&) = delete;
-  PartialFile& operator=(const PartialFile&) = delete;
-
-  // Buffered, flushed at most every kFlushInterval: a flush per row (a system call each) cost more than a
-  // Taylor solve and, serialized, kept a second thread from paying off. A crash loses at most the rows of
-  // the last interval, which --resume computes again.
-  void append(const std::string& lines) {
-    if (std::fputs(lines.c_str(), file_) < 0) fail();
-    if (const auto now = std::chrono::steady_clock::now(); now - last_flush_ >= kFlushInterval) {
-      flush();
-      last_flush_ = now;
-    }
-  }
-  void flush() {
-    if (std::fflush(file_) != 0) fail();
-  }
-
- private:
-  static constexpr std::chrono::milliseconds kFlushInterval{100};
-  [[noreturn]] void fail() const {
-    throw IoError(fmt::format("--out: cannot write '{}': {}", path_.string(), std::strerror(errno)));
-  }
-  std::chrono::steady_clock::time_point last_flush_ = std::chrono::steady_clock::now();
-  fs::path path_;
-  std::FILE* file_ = nullptr;
-};
-
 int run_sweep_command(const SweepOptions& o) {
   if (o.threads && (*o.threads < 1 || *o.threads > kMaxThreads)) {
     throw InvalidInput(
@@ -112,7 +63,8 @@ int run_sweep_command(const SweepOptions& o) {
   const std::vector<double>& zetas = grid.zetas;
   const VelocityAxis* velocity = grid.velocity ? &*grid.velocity : nullptr;
   const SolveOptions solve = solve_options(o.solver);
-  check_sweep(zetas, solve, grid.law);  // every point, before the first file is touched
+  const unsigned threads = o.threads ? static_cast<unsigned>(*o.threads) : 0U;
+  check_sweep(zetas, solve, grid.law, threads);  // every point, before the first file is touched
   if (fs::path(o.out).filename().empty() || fs::is_directory(o.out)) {
     throw InvalidInput(fmt::format("--out '{}' must name a file, not a folder", o.out));
   }
@@ -149,24 +101,28 @@ int run_sweep_command(const SweepOptions& o) {
     fmt::print(stderr, "restitution: resuming: {} of {} points already finished, computing {}\n",
                done.rows.size(), zetas.size(), zetas.size() - done.rows.size());
   }
-  PartialFile partial(partial_path, done.valid_bytes, settings + "\n" + header + "\n");
+  // As many buffers as the sweep can have workers (SweepControl::threads, 0: one per core).
+  const unsigned writers = threads != 0 ? threads : std::thread::hardware_concurrency();
+  PartialFile partial(partial_path, done.valid_bytes, settings + "\n" + header + "\n", writers);
 
-  std::vector<std::string> rows(zetas.size());
+  OrderedTable table(out, header, zetas.size());
   SweepControl control;
-  control.threads = o.threads ? static_cast<unsigned>(*o.threads) : 0U;
+  control.threads = threads;
   control.already_done.assign(zetas.size(), false);
-  for (const auto& [index, row] : done.rows) {
-    rows[index] = row;
+  for (auto& [index, row] : done.rows) {
+    table.slot(index) = std::move(row);
     control.already_done[index] = true;
+    table.add(index);
   }
   control.stop_requested = [] { return stop_signal_received() != 0; };
-  // Each worker formats its own rows (distinct slots); only the append to FILE.partial is serialized.
+  // Each worker formats its own row into its own slot and appends it to its own buffer of the partial file;
+  // only the table's in-order writing is serialized, and it overlaps the other workers' solves.
   control.point_computed = [&](const SweepPoint& point) {
-    rows[point.index] = sweep_row(point, solve.ends, velocity);
+    std::string& row = table.slot(point.index);
+    row = sweep_row(point, solve.ends, velocity);
+    partial.append(point.worker, point.index, row);
   };
-  control.point_finished = [&](const SweepPoint& point) {
-    partial.append(fmt::format("{},{}\n", point.index, rows[point.index]));
-  };
+  control.point_finished = [&](const SweepPoint& point) { table.add(point.index); };
 
   SweepSummary summary;
   {
@@ -186,9 +142,7 @@ int run_sweep_command(const SweepOptions& o) {
     return 128 + signal_number;
   }
 
-  std::string table = header + "\n";
-  for (const std::string& row : rows) table += row + "\n";
-  write_file_atomically(out, table);
+  table.commit();
   fs::remove(partial_path);
   const std::size_t failed = summary.failed + done.failed;
   fmt::print("wrote {}: {} points, {} failed\n", o.out, zetas.size(), failed);
