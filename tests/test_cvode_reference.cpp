@@ -4,6 +4,9 @@
 // smooth formulation at the ends.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "reference_checks.hpp"
 #include "restitution/collision_solver.hpp"
 
@@ -53,6 +56,47 @@ TEST(CvodeAgainstReference, BdfMeetsTheContract) {
 
 TEST(CvodeAgainstReference, AdamsMeetsTheContract) {
   expect_contract(Method::adams, true, {1e-6, 1e-10}, 100.0);
+}
+
+// The delayed-recovery end alone runs one Sundman phase (docs/performance.md, sixth round); with both ends it
+// runs the phases in u and τ. Both must give the same end across the contact-law family, to within T.
+TEST(CvodeSinglePhase, DelayedEndAloneAgreesWithThePhasedSolveAcrossTheFamily) {
+  CollisionSolver solver;
+  for (const LawKind kind :
+       {LawKind::viscoelastic_hertz, LawKind::tsuji_hertz, LawKind::hertz_constant_damping}) {
+    for (const double zeta : {2e-4, 0.01, 1.0}) {
+      for (const double tolerance : {1e-6, 1e-10}) {
+        const ContactLaw law = ContactLaw::natural(kind, zeta);
+        SolveOptions alone;
+        alone.tolerance = tolerance;
+        alone.ends = EndSet{CollisionEnd::delayed_recovery};
+        SolveOptions both = alone;
+        both.ends = EndSet::both();
+        const EndResult a = *solver.solve(law, alone)[CollisionEnd::delayed_recovery];
+        const EndResult b = *solver.solve(law, both)[CollisionEnd::delayed_recovery];
+        const double scale = std::min(b.eps, b.one_minus_eps);
+        EXPECT_LE(std::max(std::abs(a.eps - b.eps), std::abs(a.one_minus_eps - b.one_minus_eps)),
+                  tolerance * scale)
+            << law_name(kind) << " zeta=" << zeta << " T=" << tolerance;
+        EXPECT_NEAR(a.tau, b.tau, 1e-6 * b.tau) << law_name(kind) << " zeta=" << zeta;  // a root, not ε
+      }
+    }
+  }
+}
+
+// Its trajectory runs forward in τ from the impact to the end, through the maximal compression.
+TEST(CvodeSinglePhase, TrajectoryRunsFromTheImpactToTheDelayedEnd) {
+  CollisionSolver solver;
+  SolveOptions options;
+  options.ends = EndSet{CollisionEnd::delayed_recovery};
+  options.keep_trajectory = true;
+  const CollisionResult r = solver.solve(ContactLaw::hertz_natural(1.0), options);
+  ASSERT_GT(r.trajectory.size(), 10U);
+  EXPECT_EQ(r.trajectory.front().tau, 0.0);
+  for (std::size_t i = 1; i < r.trajectory.size(); ++i)
+    EXPECT_GT(r.trajectory[i].tau, r.trajectory[i - 1].tau);
+  EXPECT_NEAR(r.trajectory.back().tau, r[CollisionEnd::delayed_recovery]->tau, 1e-12);
+  EXPECT_GT(r.max_compression.x, r.trajectory.back().x);
 }
 
 }  // namespace

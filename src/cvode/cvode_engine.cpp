@@ -46,8 +46,14 @@ detail::CvodeIntegrator& CvodeEngine::integrator(Method method) {
 
 CollisionResult CvodeEngine::solve(const ContactLaw& law, const SolveOptions& options) {
   const auto run = [&](const detail::SolvePlan& plan) {
+    detail::CvodeIntegrator& main = integrator(plan.method);  // makes the context
     detail::CvodeIntegrator* tail = plan.tail_method ? &integrator(*plan.tail_method) : nullptr;
-    return detail::run_collision(law, options, plan, integrator(plan.method), tail);
+    detail::CvodeIntegrator* sundman = nullptr;
+    if (plan.single_phase) {
+      if (!sundman_) sundman_.emplace(Method::adams, *context_, detail::state_size(detail::Form::sundman));
+      sundman = &*sundman_;
+    }
+    return detail::run_collision(law, options, plan, main, tail, sundman);
   };
   check(law, options);
   const detail::SolvePlan plan = detail::plan_solve(law, options);

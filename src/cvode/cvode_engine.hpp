@@ -43,6 +43,7 @@ class CvodeEngine final : public Engine {
   std::optional<sundials::Context> context_;  // before the integrators, which use it until destroyed
   std::optional<detail::CvodeIntegrator> bdf_;
   std::optional<detail::CvodeIntegrator> adams_;
+  std::optional<detail::CvodeIntegrator> sundman_;  // Adams on the Sundman form's 4 components
 };
 
 }  // namespace restitution

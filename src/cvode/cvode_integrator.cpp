@@ -16,6 +16,11 @@ namespace {
 
 using Data = CvodeIntegrator::CallbackData;
 
+const char* form_variable(Form form) {
+  if (form == Form::time) return "tau";
+  return form == Form::sundman ? "s" : "u";
+}
+
 // The smallest growth of the step size CVODE acts on with Adams (its default: 1.5).
 constexpr double kStepGrowthThreshold = 1.2;
 // Adams' highest order (CVODE's default: 12). Each step's predictor costs q(q+1)/2 vector sums; above 9 the
@@ -34,6 +39,14 @@ int right_hand_side(sunrealtype t, N_Vector y, N_Vector ydot, void* user_data) n
     d[kFirst] = v;
     d[kVelocity] = law.acceleration(s[kFirst], v);
     d[kDissipation] = law.dissipation_integrand(s[kFirst], v);
+  } else if (data.form == Form::sundman) {
+    const double u = s[kFirst];
+    const double x = law.compression_of(u);
+    const double dtau_ds = law.dcompression_du(u) / law.smoothing_root();  // u^{q-1}
+    d[kFirst] = v / law.smoothing_root();
+    d[kVelocity] = law.acceleration(x, v) * dtau_ds;
+    d[kDissipation] = law.dissipation_integrand(x, v) * dtau_ds;
+    d[kSundmanTau] = dtau_ds;
   } else {
     const double x = law.compression_of(t);
     const double dtau_du = law.dcompression_du(t) / v;
@@ -74,7 +87,9 @@ int jacobian(sunrealtype t, N_Vector y, N_Vector /*fy*/, SUNMatrix J, void* user
 int event_functions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data) noexcept {
   const Data& data = *static_cast<Data*>(user_data);
   const double* s = N_VGetArrayPointer(y);
-  const double x = data.form == Form::time ? s[kFirst] : data.law->compression_of(t);
+  const double x = data.form == Form::time      ? s[kFirst]
+                   : data.form == Form::sundman ? data.law->compression_of(s[kFirst])
+                                                : data.law->compression_of(t);
   const double v = s[kVelocity];
   for (std::size_t i = 0; i < static_cast<std::size_t>(data.event_count); ++i) {
     if (data.ignored[i]) {
@@ -86,7 +101,8 @@ int event_functions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data) 
         g[i] = v;
         break;
       case Event::naive_end:
-        g[i] = x;
+        // u changes sign at x = 0 where x = u^q may not.
+        g[i] = data.form == Form::sundman ? s[kFirst] : x;
         break;
       case Event::delayed_recovery_end:
         g[i] = data.law->force_factor(x, v);
@@ -107,17 +123,18 @@ int event_functions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data) 
 
 }  // namespace
 
-CvodeIntegrator::CvodeIntegrator(Method method, const sundials::Context& context)
-    : state_(sundials::make_small_vector(kStateSize, context)),
-      absolute_tolerance_(sundials::make_serial_vector(kStateSize, context)),
-      memory_(method == Method::adams ? CV_ADAMS : CV_BDF, context) {
+CvodeIntegrator::CvodeIntegrator(Method method, const sundials::Context& context, int size)
+    : state_(sundials::make_small_vector(size, context)),
+      absolute_tolerance_(sundials::make_serial_vector(size, context)),
+      memory_(method == Method::adams ? CV_ADAMS : CV_BDF, context),
+      size_(size) {
   N_VConst(0.0, state_.get());
   N_VConst(1.0, absolute_tolerance_.get());
   if (method == Method::adams) {
     // Adams is chosen where the problem is not stiff: a fixed-point corrector needs no Jacobian.
     fixed_point_solver_ = sundials::make_fixed_point_solver(state_, context);
   } else {
-    jacobian_ = sundials::make_small_dense_matrix(kStateSize, context);
+    jacobian_ = sundials::make_small_dense_matrix(size, context);
     linear_solver_ = sundials::make_small_dense_solver(state_, jacobian_, context);
   }
 }
@@ -134,8 +151,13 @@ void CvodeIntegrator::start(const ContactLaw& law, const PhaseSettings& settings
   data_.ignored.fill(false);
   for (std::size_t i = 0; i < static_cast<std::size_t>(event_count); ++i) data_.events[i] = events[i];
 
+  // The Sundman form has no Jacobian here: it runs with Adams (fixed point) only.
+  if (state_size(settings.form) != size_ || (settings.form == Form::sundman && linear_solver_)) {
+    throw NumericalFailure(fmt::format("this {}-component integrator cannot run a {}-component form", size_,
+                                       state_size(settings.form)));
+  }
   double* s = N_VGetArrayPointer(state_.get());
-  for (std::size_t i = 0; i < kStateSize; ++i) s[i] = state[i];
+  for (std::size_t i = 0; i < static_cast<std::size_t>(size_); ++i) s[i] = state[i];
 
   if (!initialized_) {
     sundials::check_flag(CVodeInit(mem, right_hand_side, t0, state_.get()), "CVodeInit");
@@ -160,7 +182,7 @@ void CvodeIntegrator::start(const ContactLaw& law, const PhaseSettings& settings
   }
 
   double* atol = N_VGetArrayPointer(absolute_tolerance_.get());
-  for (std::size_t i = 0; i < kStateSize; ++i) atol[i] = settings.absolute_tolerance[i];
+  for (std::size_t i = 0; i < static_cast<std::size_t>(size_); ++i) atol[i] = settings.absolute_tolerance[i];
   // CVODE stops with "too much accuracy requested" (flag -2) where DBL_EPSILON/rtol > 1; below 2 DBL_EPSILON
   // its steps are bound by rounding anyway (near critical damping, where the tolerance policy asks for less),
   // and check_solve_request refuses the tolerances that rounding cannot deliver.
@@ -195,7 +217,7 @@ CvodeIntegrator::Step CvodeIntegrator::advance() {
     CVodeGetCurrentTime(memory_.get(), &step.t);
     return NumericalFailure(
         fmt::format("CVODE failed at {}={} with flag {} (too much work: {} steps in one phase)",
-                    data_.form == Form::time ? "tau" : "u", step.t, CV_TOO_MUCH_WORK, steps));
+                    form_variable(data_.form), step.t, CV_TOO_MUCH_WORK, steps));
   };
   if (steps >= max_steps_) throw too_much_work();
   if (!every_step_) {
@@ -207,12 +229,12 @@ CvodeIntegrator::Step CvodeIntegrator::advance() {
     throw too_much_work();
   }
   if (flag < 0) {
-    throw NumericalFailure(fmt::format("CVODE failed at {}={} with flag {} ({})",
-                                       data_.form == Form::time ? "tau" : "u", step.t, flag,
+    throw NumericalFailure(fmt::format("CVODE failed at {}={} with flag {} ({})", form_variable(data_.form),
+                                       step.t, flag,
                                        memory_.last_error().empty() ? "no message" : memory_.last_error()));
   }
   const double* s = N_VGetArrayPointer(state_.get());
-  for (std::size_t i = 0; i < kStateSize; ++i) step.state[i] = s[i];
+  for (std::size_t i = 0; i < static_cast<std::size_t>(size_); ++i) step.state[i] = s[i];
   if (flag == CV_ROOT_RETURN) {
     std::array<int, kMaxEvents> found{};
     sundials::check_flag(CVodeGetRootInfo(memory_.get(), found.data()), "CVodeGetRootInfo");

@@ -15,6 +15,11 @@
 //    of τ (TauLog): there τ ≈ -c ln(u + u*) with c = qζ and u* the u at which inertia takes over from the
 //    slow decay x' ≈ -x^{a-b}/ζ (a - b = 1), a logarithm that costs BDF a step per fraction of u, while σ
 //    stays smooth (docs/performance.md).
+//  * Sundman form, independent variable s with dτ = u^{q-1} ds, state (u, x', I, τ), valid throughout:
+//        du/ds = x'/q,  dx'/ds = u^{q-1}·a(u^q, x'),  dI/ds = u^{q-1}·w(u^q)·x'^2,  dτ/ds = u^{q-1}
+//    polynomial for viscoelastic Hertz, with no singularity at x = 0 or at x' = 0: one phase from the
+//    impact to the delayed-recovery end, so CVODE ramps its order up once instead of three times
+//    (docs/performance.md, sixth round).
 // I = ∫ w(x) x'^2 dτ is the dissipation integral (the dissipated energy is D = c_d · I).
 #include <array>
 #include <cmath>
@@ -27,17 +32,22 @@
 
 namespace restitution::detail {
 
-inline constexpr int kStateSize = 3;
+// The largest state (the Sundman form's); the time and compression forms use the first three entries.
+inline constexpr int kStateSize = 4;
 using State = std::array<double, kStateSize>;
-// Index of x' and I in both forms; index 0 is x in the time form and τ in the compression form.
-enum StateIndex { kFirst = 0, kVelocity = 1, kDissipation = 2 };
+// Index of x' and I in every form; index 0 is x in the time form, τ in the compression form and u in the
+// Sundman form, which carries τ last.
+enum StateIndex { kFirst = 0, kVelocity = 1, kDissipation = 2, kSundmanTau = 3 };
 
-enum class Form { time, compression };
+enum class Form { time, compression, sundman };
+[[nodiscard]] constexpr int state_size(Form form) {
+  return form == Form::sundman ? 4 : 3;
+}
 
 // The events a phase can watch.
 enum class Event {
   max_compression,       // x' = 0
-  naive_end,             // x = 0 (time form only)
+  naive_end,             // x = 0 (time form) or u = 0 (Sundman form)
   delayed_recovery_end,  // c_d x' + c_s x = 0
   velocity_halved,       // x' = x'(0)/2: leave the compression form of the start
   below_switch,          // x = switch_x while decompressing: enter the compression form of the end
@@ -69,7 +79,8 @@ struct PhaseSettings {
 
 class CvodeIntegrator {
  public:
-  CvodeIntegrator(Method method, const sundials::Context& context);
+  // For the phases of `form`'s state size (state_size): 3 (time and compression forms) or 4 (Sundman).
+  CvodeIntegrator(Method method, const sundials::Context& context, int size = 3);
 
   // Starts a phase at independent variable t0 with the given state, watching the given events.
   void start(const ContactLaw& law, const PhaseSettings& settings, double t0, const State& state,
@@ -113,6 +124,7 @@ class CvodeIntegrator {
   double stop_ = 0.0;
   long max_steps_ = 0;  // per phase
   bool every_step_ = false;
+  int size_ = 3;
 };
 
 }  // namespace restitution::detail

@@ -13,6 +13,10 @@
 namespace restitution::detail {
 namespace {
 
+// The Sundman phase's last s, in units of the time limit: dτ/ds = u^{q-1} falls below its value at
+// x = length_scale where x is smaller; the steps are bound by the phase's step limit anyway.
+constexpr double kSundmanStopPerTau = 1e3;
+
 // A point of the trajectory in the law's own units, whatever form produced it.
 struct Point {
   double tau, x, velocity, dissipation;
@@ -20,6 +24,9 @@ struct Point {
 
 Point point_of(const ContactLaw& law, Form form, const TauLog& tau_log, double t, const State& s) {
   if (form == Form::time) return {t, s[kFirst], s[kVelocity], s[kDissipation]};
+  if (form == Form::sundman) {
+    return {s[kSundmanTau], law.compression_of(s[kFirst]), s[kVelocity], s[kDissipation]};
+  }
   return {s[kFirst] - tau_log.offset(t), law.compression_of(t), s[kVelocity], s[kDissipation]};
 }
 
@@ -46,8 +53,8 @@ EndResult end_result(const ContactLaw& law, const Point& p) {
 class CollisionRun {
  public:
   CollisionRun(const ContactLaw& law, const SolveOptions& options, const SolvePlan& plan,
-               CvodeIntegrator& integrator, CvodeIntegrator* tail)
-      : law_(law), options_(options), plan_(plan), integrator_(&integrator), tail_(tail) {
+               CvodeIntegrator& integrator, CvodeIntegrator* tail, CvodeIntegrator* sundman)
+      : law_(law), options_(options), plan_(plan), integrator_(&integrator), tail_(tail), sundman_(sundman) {
     result_.value.law = law.kind();
     result_.value.parameter = law.parameter();
     result_.value.speed_independent = law.speed_independent();
@@ -58,7 +65,9 @@ class CollisionRun {
   CollisionResult run() {
     const State start{0.0, law_.initial_velocity(), 0.0};
     if (options_.keep_trajectory) record({0.0, 0.0, law_.initial_velocity(), 0.0});
-    if (!plan_.smooth_ends) {
+    if (plan_.single_phase && sundman_ != nullptr && sundman_phase()) {
+      // done in one phase
+    } else if (!plan_.smooth_ends) {
       time_phase(Form::time, 0.0, start, /*switch_x=*/-1.0);
     } else {
       // Start: u from 0 until x' has halved (or x = start_phase_x); then τ around maximal compression
@@ -186,6 +195,49 @@ class CollisionRun {
     }
   }
 
+  // The Sundman form from the impact to the delayed-recovery end (the only end asked for). Returns false,
+  // with the result reset (and its steps kept in the statistics), where u reached 0 first: the end's dip of
+  // the force factor around u = 0 was passed over in one step, and the phases in u and τ take over.
+  bool sundman_phase() {
+    form_ = Form::sundman;
+    // dτ/ds = u^{q-1}: s in units of τ per u^{q-1} at x = length_scale.
+    const double ds_per_dtau =
+        law_.smoothing_root() / law_.dcompression_du(law_.smooth_variable(law_.length_scale()));
+    PhaseSettings settings{Form::sundman, plan_.relative_tolerance, plan_.absolute_tolerance_sundman,
+                           kSundmanStopPerTau * plan_.time_limit * ds_per_dtau};
+    settings.max_steps = plan_.max_steps;
+    settings.every_step = options_.keep_trajectory;
+    const std::array<Event, 3> events{Event::max_compression, Event::delayed_recovery_end, Event::naive_end};
+    std::swap(integrator_, sundman_);
+    begin(settings, 0.0, {0.0, law_.initial_velocity(), 0.0, 0.0}, events.data(), 3);
+    while (true) {
+      const CvodeIntegrator::Step step = advance();
+      const Point p = point_of(law_, Form::sundman, TauLog{}, step.t, step.state);
+      if (step.reached_stop) {
+        finish_phase();
+        throw failure(fmt::format("no end of the collision before tau={:g}", p.tau / law_.time_scale()));
+      }
+      if (step.events_found[0]) {
+        found_max_compression(p);
+        integrator_->ignore_event(0);
+      }
+      if (step.events_found[1]) {
+        result_.value[CollisionEnd::delayed_recovery] = end_result(law_, p);
+        finish_phase();
+        std::swap(integrator_, sundman_);
+        return true;
+      }
+      if (step.events_found[2]) {
+        finish_phase();
+        std::swap(integrator_, sundman_);
+        result_.max_compression_found = false;
+        result_.value.trajectory.clear();
+        if (options_.keep_trajectory) record({0.0, 0.0, law_.initial_velocity(), 0.0});
+        return false;
+      }
+    }
+  }
+
   void end_phase(const Point& b) {
     const Point c =
         compression_phase(law_.smooth_variable(b.x), 0.0, {b.tau, b.velocity, b.dissipation}, false);
@@ -280,7 +332,8 @@ class CollisionRun {
   const SolveOptions& options_;
   const SolvePlan& plan_;
   CvodeIntegrator* integrator_;
-  CvodeIntegrator* tail_;  // takes over at the delayed-recovery end (SolvePlan::tail_method)
+  CvodeIntegrator* tail_;     // takes over at the delayed-recovery end (SolvePlan::tail_method)
+  CvodeIntegrator* sundman_;  // runs SolvePlan::single_phase (4 components)
   Form form_ = Form::time;
   TauLog tau_log_;  // of the compression form's current phase
   Accumulated result_;
@@ -289,8 +342,8 @@ class CollisionRun {
 }  // namespace
 
 CollisionResult run_collision(const ContactLaw& law, const SolveOptions& options, const SolvePlan& plan,
-                              CvodeIntegrator& integrator, CvodeIntegrator* tail) {
-  return CollisionRun(law, options, plan, integrator, tail).run();
+                              CvodeIntegrator& integrator, CvodeIntegrator* tail, CvodeIntegrator* sundman) {
+  return CollisionRun(law, options, plan, integrator, tail, sundman).run();
 }
 
 }  // namespace restitution::detail

@@ -11,9 +11,9 @@ namespace restitution::detail {
 
 // Integrates `law` with the tolerances of `plan` on `integrator` and collects the ends `options` asks for;
 // `tail` (the integrator of SolvePlan::tail_method, or null) takes over at the delayed-recovery end while the
-// naive end is pending. Throws InvalidInput when the naive end turns out not to exist, NumericalFailure when
-// CVODE fails.
+// naive end is pending; `sundman` (4 components, Adams) runs SolvePlan::single_phase. Throws InvalidInput
+// when the naive end turns out not to exist, NumericalFailure when CVODE fails.
 CollisionResult run_collision(const ContactLaw& law, const SolveOptions& options, const SolvePlan& plan,
-                              CvodeIntegrator& integrator, CvodeIntegrator* tail);
+                              CvodeIntegrator& integrator, CvodeIntegrator* tail, CvodeIntegrator* sundman);
 
 }  // namespace restitution::detail

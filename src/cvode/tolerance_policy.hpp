@@ -15,11 +15,14 @@ struct SolvePlan {
   // Takes over from `method` at the delayed-recovery end while the naive end is pending.
   std::optional<Method> tail_method;
   bool smooth_ends = false;  // phases in the compression form at both ends
+  // One phase in the Sundman form from the impact to the delayed-recovery end (cvode_integrator.hpp).
+  bool single_phase = false;
   // The logarithm the end phase takes out of τ (the overdamped tail of the naive end); none by default.
   TauLog tail;
   double relative_tolerance = 0.0;
   State absolute_tolerance_time{};         // (x, x', I)
   State absolute_tolerance_compression{};  // (τ, x', I)
+  State absolute_tolerance_sundman{};      // (u, x', I, τ)
   double time_limit = 0.0;                 // law's own τ
   double start_phase_x = 0.0;              // largest x of the compression form of the start
   long max_steps = 0;                      // per phase

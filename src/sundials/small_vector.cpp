@@ -145,6 +145,8 @@ Vector make_small_vector(sunindextype length, const Context& context) {
   // Clones copy this table (N_VCloneEmpty), so every vector CVODE makes from this one uses these loops.
   if (length == 3) {
     Loops<3>::install(v->ops);
+  } else if (length == 4) {  // the Sundman form's state (src/cvode/cvode_integrator.hpp)
+    Loops<4>::install(v->ops);
   } else {
     Loops<0>::install(v->ops);
   }
