@@ -113,7 +113,8 @@ TEST(CheckDeckCli, YadeDeckNamesTheVersionItsLinesAreFor) {
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string deck = slurp(file);
   EXPECT_NE(deck.find("TARGET = '2024.02a'"), std::string::npos);
-  for (const auto& line : json::parse(r.out).at("lines")) {
+  const json out = json::parse(r.out);  // named: a range-for over parse(...).at() would outlive the parse
+  for (const auto& line : out.at("lines")) {
     EXPECT_NE(deck.find(line.get<std::string>()), std::string::npos) << line;
   }
 }
