@@ -5,10 +5,12 @@
 
 namespace restitution::cli {
 
-void write_sundials_build(JsonWriter& json) {
+std::string finish_json_document(JsonWriter& json) {
   const SundialsBuild build = sundials_build();
   json.key("sundials").begin_object().field("version", build.version).field("optimized", build.optimized);
   json.end_object();
+  json.end_object();
+  return json.str();
 }
 
 }  // namespace restitution::cli

@@ -91,9 +91,7 @@ int run_calibrate(const CalibrateOptions& o) {
     if (request.k) json.field("k", *request.k);
     if (c.dissipative_constant_s) json.field("dissipative_constant_s", *c.dissipative_constant_s);
     json.field("solves", c.solves);
-    write_sundials_build(json);
-    json.end_object();
-    fmt::print("{}\n", json.str());
+    fmt::print("{}\n", finish_json_document(json));
     return 0;
   }
   fmt::print("calibration: eps = {} at v = {} m/s, {} end ({})\n", o.eps, o.velocity, end_name(request.end),

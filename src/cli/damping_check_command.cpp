@@ -97,9 +97,7 @@ void print_json(const DampingCheckOptions& o, const std::vector<double>& eps,
   } else {
     entry(0);
   }
-  write_sundials_build(json);
-  json.end_object();
-  fmt::print("{}\n", json.str());
+  fmt::print("{}\n", finish_json_document(json));
 }
 
 std::string speed_text(const CheckPoint& p) {
@@ -181,9 +179,7 @@ int run_inverse(const DampingCheckOptions& o) {
       json.end_object();
     }
     json.end_array();
-    write_sundials_build(json);
-    json.end_object();
-    fmt::print("{}\n", json.str());
+    fmt::print("{}\n", finish_json_document(json));
     return 0;
   }
   fmt::print("# recipe {}: {}\n", damping_check::recipe_name(s.recipe),

@@ -152,9 +152,7 @@ void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optio
   }
   if (from_fit) write_fit_carry_over(json, o.from_fit, from_fit->fit, from_fit->k, speeds_of(r));
   if (o.deck) json.key("deck").begin_object().field("file", *o.deck).field("run", o.deck_run).end_object();
-  write_sundials_build(json);
-  json.end_object();
-  fmt::print("{}\n", json.str());
+  fmt::print("{}\n", finish_json_document(json));
 }
 
 void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optional<FromFit>& from_fit) {

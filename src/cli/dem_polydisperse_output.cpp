@@ -101,9 +101,7 @@ void print_polydisperse_json(const dem::PolydisperseResult& r, const std::option
     json.end_object();
   }
   if (deck) json.key("deck").begin_object().field("file", deck->file).field("run", deck->run).end_object();
-  write_sundials_build(json);
-  json.end_object();
-  fmt::print("{}\n", json.str());
+  fmt::print("{}\n", finish_json_document(json));
 }
 
 }  // namespace restitution::cli

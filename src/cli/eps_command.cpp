@@ -91,9 +91,7 @@ int run_eps(const EpsOptions& o) {
     JsonWriter json;
     json.begin_object();
     write_collision_fields(json, result);
-    write_sundials_build(json);
-    json.end_object();
-    fmt::print("{}\n", json.str());
+    fmt::print("{}\n", finish_json_document(json));
   } else {
     print_table(result);
   }

@@ -85,9 +85,7 @@ int run_fit(const FitOptions& o) {
       json.end_object();
     }
     json.end_array();
-    write_sundials_build(json);
-    json.end_object();
-    fmt::print("{}\n", json.str());
+    fmt::print("{}\n", finish_json_document(json));
     return 0;
   }
   fmt::print("{} end, zeta in [{:g}, {:g}], {} points, tolerance {:g}\n", end_name(end), o.zeta_min,

@@ -132,9 +132,7 @@ std::string fit_json(const FitReportInput& in) {
   JsonWriter json;
   json.begin_object();
   write_fit_json(json, in);
-  write_sundials_build(json);
-  json.end_object();
-  return json.str();
+  return finish_json_document(json);
 }
 
 std::string fit_table(const FitReportInput& in) {

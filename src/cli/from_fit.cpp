@@ -110,9 +110,7 @@ int calibrate_from_fit(const std::filesystem::path& file, std::optional<Collisio
       write_interval(w, "dissipative_constant_ci68", scaled(fit.ci68, factor));
       write_interval(w, "dissipative_constant_ci95", scaled(fit.ci95, factor));
     }
-    write_sundials_build(w);
-    w.end_object();
-    fmt::print("{}\n", w.str());
+    fmt::print("{}\n", finish_json_document(w));
     return 0;
   }
   fmt::print("calibration from the fit {} ({} points{}), {} end\n", file.string(), fit.points,

@@ -98,9 +98,7 @@ class SceneWriter {
     calibrations();
     studies();
     footer(seconds);
-    write_sundials_build(json_);
-    json_.end_object();
-    write_file("summary.json", json_.str() + "\n");
+    write_file("summary.json", finish_json_document(json_) + "\n");
     write_file("report.md", report_);  // last: its presence says the folder is complete
     return std::move(out_);
   }

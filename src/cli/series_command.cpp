@@ -47,10 +47,8 @@ int run_coefficients(const CoefficientsOptions& o) {
   } else {
     for (const auto& list : lists) write_array(json, list.symbol.c_str(), list.values);
   }
-  write_sundials_build(json);
-  json.end_object();
   if (o.json) {
-    fmt::print("{}\n", json.str());
+    fmt::print("{}\n", finish_json_document(json));
     return 0;
   }
   if (o.kind == "max-compression") {
@@ -83,9 +81,7 @@ int run_eval(const EvalOptions& o) {
     json.begin_object().field("kind", o.kind).field("zeta", o.zeta);
     if (terms > 0) json.field("terms", terms).field("coefficients", coefficients);
     json.field("eps", v.eps).field("one_minus_eps", v.one_minus_eps);
-    write_sundials_build(json);
-    json.end_object();
-    fmt::print("{}\n", json.str());
+    fmt::print("{}\n", finish_json_document(json));
   } else {
     fmt::print("{} at zeta = {}{}: eps = {:.17g}, 1 - eps = {:.17g}\n", o.kind, o.zeta,
                terms > 0 ? fmt::format(" ({} terms, {} coefficients)", terms, coefficients) : "", v.eps,

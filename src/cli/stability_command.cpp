@@ -101,9 +101,7 @@ std::string json_text(const StabilityReport& report) {
         .end_object();
   }
   json.end_array();
-  write_sundials_build(json);
-  json.end_object();
-  return json.str() + "\n";
+  return finish_json_document(json) + "\n";
 }
 
 void print_table(const StabilityReport& report) {
