@@ -301,11 +301,15 @@ std::size_t line_count(const fs::path& path) {
   return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
 }
 
+// Sends the signal once the run has added `rows` rows of its own to the partial file. Counting from what the
+// file already holds matters on resume: an earlier run may have left more rows than asked for, and a signal
+// sent before the new process installed its handler kills it without a word.
 int interrupt_after_rows(const std::vector<std::string>& arguments, const fs::path& partial, std::size_t rows,
                          int signal_number, const fs::path& err) {
+  const std::size_t before = fs::exists(partial) ? line_count(partial) : 2;  // 2: the settings and the header
   const pid_t pid = spawn_cli(arguments, err);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (line_count(partial) < rows + 2 && std::chrono::steady_clock::now() < deadline) {
+  while (line_count(partial) < before + rows && std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   kill(pid, signal_number);
@@ -326,10 +330,13 @@ TEST(CliSweep, SignalsKeepFinishedRowsAndResumeFinishesWithoutRecomputing) {
   // SIGINT first, then SIGTERM on the resumed sweep.
   std::vector<std::string> run = arguments;
   for (const int signal_number : {SIGINT, SIGTERM}) {
-    const int status =
-        interrupt_after_rows(run, partial, 20 + 10 * signal_number, signal_number, dir.path / "err.txt");
-    ASSERT_EQ(status, 128 + signal_number) << slurp(dir.path / "err.txt");
-    EXPECT_NE(slurp(dir.path / "err.txt").find("--resume"), std::string::npos);
+    // One file per run: a run killed before it wrote anything must not pass on the last run's message.
+    const fs::path err = dir.path / fmt::format("err{}.txt", signal_number);
+    const int status = interrupt_after_rows(run, partial, 20 + 10 * signal_number, signal_number, err);
+    ASSERT_EQ(status, 128 + signal_number) << slurp(err);
+    EXPECT_NE(slurp(err).find("interrupted by signal " + std::to_string(signal_number)), std::string::npos)
+        << slurp(err);
+    EXPECT_NE(slurp(err).find("--resume"), std::string::npos);
     EXPECT_FALSE(fs::exists(out)) << "an interrupted sweep must not leave a final file";
     EXPECT_FALSE(fs::exists(out.string() + ".tmp")) << "nor the final file in progress";
     ASSERT_TRUE(fs::exists(partial));
