@@ -6,7 +6,7 @@
 #   system:    Debian's libsundials-dev, compiled without optimization (about 2x slower CVODE). The fallback
 #              when the optimized build is off or could not be made.
 # Sets RESTITUTION_SUNDIALS_BUILD ("optimized" | "system"), RESTITUTION_SUNDIALS_VERSION,
-# RESTITUTION_SUNDIALS_OBJECTS and RESTITUTION_SUNDIALS_INCLUDE_DIR (optimized) or
+# RESTITUTION_SUNDIALS_OBJECTS, RESTITUTION_SUNDIALS_INCLUDE_DIR and RESTITUTION_SUNDIALS_PATCHES (optimized) or
 # RESTITUTION_SUNDIALS_TARGETS (system). src/CMakeLists.txt applies them to restitution_lib.
 option(RESTITUTION_SUNDIALS_OPTIMIZED "Link CVODE built -O3 from Debian's source package (scripts/sundials)" ON)
 
@@ -15,8 +15,9 @@ if(RESTITUTION_SUNDIALS_OPTIMIZED)
   execute_process(COMMAND dpkg-query -W -f=\${Version} libsundials-dev OUTPUT_VARIABLE debian_sundials_version
                   RESULT_VARIABLE dpkg_result ERROR_QUIET)
   set(sundials_cache ${PROJECT_SOURCE_DIR}/build/sundials/${debian_sundials_version})
-  if(dpkg_result EQUAL 0 AND NOT EXISTS ${sundials_cache}/.complete)
-    # Idempotent and never fatal: on failure it warns and the fallback below applies.
+  if(dpkg_result EQUAL 0)
+    # Idempotent (returns at once when the cache matches the version and scripts/sundials-patches/) and never
+    # fatal: on failure it warns and the fallback below applies.
     execute_process(COMMAND bash ${PROJECT_SOURCE_DIR}/scripts/sundials)
   endif()
   if(dpkg_result EQUAL 0 AND EXISTS ${sundials_cache}/.complete)
@@ -25,6 +26,13 @@ if(RESTITUTION_SUNDIALS_OPTIMIZED)
     file(STRINGS ${RESTITUTION_SUNDIALS_INCLUDE_DIR}/sundials/sundials_config.h version_line
          REGEX "#define SUNDIALS_VERSION \"")
     string(REGEX REPLACE ".*\"(.*)\".*" "\\1" RESTITUTION_SUNDIALS_VERSION "${version_line}")
+    # Line 2 of .complete: the patches of scripts/sundials-patches/ in the build ("none" if none applied).
+    file(STRINGS ${sundials_cache}/.complete complete_lines)
+    list(LENGTH complete_lines complete_count)
+    set(RESTITUTION_SUNDIALS_PATCHES none)
+    if(complete_count GREATER 1)
+      list(GET complete_lines 1 RESTITUTION_SUNDIALS_PATCHES)
+    endif()
     set(RESTITUTION_SUNDIALS_BUILD optimized)
   endif()
 endif()
@@ -40,7 +48,7 @@ if(RESTITUTION_SUNDIALS_BUILD STREQUAL "system")
                  "-DRESTITUTION_SUNDIALS_OPTIMIZED=ON)")
 else()
   message(STATUS "SUNDIALS: CVODE ${RESTITUTION_SUNDIALS_VERSION} built -O3 from Debian's source package "
-                 "(${sundials_cache})")
+                 "(${sundials_cache}; patches: ${RESTITUTION_SUNDIALS_PATCHES})")
 endif()
 
 # The CVODE calls are written against the SUNDIALS 6 API (SUNContext, SUNLinearSolver, ...); 5 lacks them and 7

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "restitution/build_info.hpp"
 
-// RESTITUTION_SUNDIALS_VERSION and RESTITUTION_SUNDIALS_OPTIMIZED come from cmake/sundials.cmake.
+// RESTITUTION_SUNDIALS_VERSION, RESTITUTION_SUNDIALS_OPTIMIZED and RESTITUTION_SUNDIALS_PATCHES come from
+// cmake/sundials.cmake.
 namespace restitution {
 
 SundialsBuild sundials_build() {
@@ -9,9 +10,10 @@ SundialsBuild sundials_build() {
 }
 
 const char* sundials_build_description() {
-  return RESTITUTION_SUNDIALS_OPTIMIZED != 0
-             ? RESTITUTION_SUNDIALS_VERSION " (optimized, built from Debian's source package)"
-             : RESTITUTION_SUNDIALS_VERSION " (Debian's libsundials, unoptimized)";
+  constexpr const char* optimized = RESTITUTION_SUNDIALS_VERSION
+      " (optimized, built from Debian's source package; patches: " RESTITUTION_SUNDIALS_PATCHES ")";
+  constexpr const char* system = RESTITUTION_SUNDIALS_VERSION " (Debian's libsundials, unoptimized)";
+  return RESTITUTION_SUNDIALS_OPTIMIZED != 0 ? optimized : system;
 }
 
 }  // namespace restitution
