@@ -6,7 +6,8 @@
 #   system:    Debian's libsundials-dev, compiled without optimization (about 2x slower CVODE). The fallback
 #              when the optimized build is off or could not be made.
 # Sets RESTITUTION_SUNDIALS_BUILD ("optimized" | "system"), RESTITUTION_SUNDIALS_VERSION,
-# RESTITUTION_SUNDIALS_OBJECTS, RESTITUTION_SUNDIALS_INCLUDE_DIR and RESTITUTION_SUNDIALS_PATCHES (optimized) or
+# RESTITUTION_SUNDIALS_OBJECTS, RESTITUTION_SUNDIALS_INCLUDE_DIR, RESTITUTION_SUNDIALS_PATCHES and
+# RESTITUTION_SUNDIALS_UNPATCHED_OBJECTS (optimized) or
 # RESTITUTION_SUNDIALS_TARGETS (system). src/CMakeLists.txt applies them to restitution_lib.
 option(RESTITUTION_SUNDIALS_OPTIMIZED "Link CVODE built -O3 from Debian's source package (scripts/sundials)" ON)
 
@@ -22,6 +23,8 @@ if(RESTITUTION_SUNDIALS_OPTIMIZED)
   endif()
   if(dpkg_result EQUAL 0 AND EXISTS ${sundials_cache}/.complete)
     file(GLOB RESTITUTION_SUNDIALS_OBJECTS ${sundials_cache}/objects/*.o)
+    # The objects our patches changed, built without them (tests/sundials_patches.cmake).
+    file(GLOB RESTITUTION_SUNDIALS_UNPATCHED_OBJECTS ${sundials_cache}/unpatched/*.o)
     set(RESTITUTION_SUNDIALS_INCLUDE_DIR ${sundials_cache}/prefix/include)
     file(STRINGS ${RESTITUTION_SUNDIALS_INCLUDE_DIR}/sundials/sundials_config.h version_line
          REGEX "#define SUNDIALS_VERSION \"")
