@@ -3,7 +3,7 @@
 #   optimized: CVODE built -O3 from Debian's own source package by scripts/sundials into
 #              build/sundials/<debian version>/ (the version of the installed libsundials-dev). Its objects go
 #              into librestitution.a itself, so consumers of the installed package need no SUNDIALS at all.
-#   system:    Debian's libsundials-dev, compiled without optimization (about 2x slower CVODE). The fallback
+#   system:    Debian's libsundials-dev, compiled without optimization (CVODE 2-3x slower). The fallback
 #              when the optimized build is off or could not be made.
 # Sets RESTITUTION_SUNDIALS_BUILD ("optimized" | "system"), RESTITUTION_SUNDIALS_VERSION,
 # RESTITUTION_SUNDIALS_OBJECTS, RESTITUTION_SUNDIALS_INCLUDE_DIR, RESTITUTION_SUNDIALS_PATCHES and
@@ -47,7 +47,7 @@ if(RESTITUTION_SUNDIALS_BUILD STREQUAL "system")
       SUNDIALS::cvode_shared SUNDIALS::nvecserial_shared SUNDIALS::sunmatrixdense_shared
       SUNDIALS::sunlinsoldense_shared SUNDIALS::sunnonlinsolfixedpoint_shared)
   message(NOTICE "SUNDIALS: Debian's libsundials ${SUNDIALS_VERSION}, compiled without optimization: CVODE "
-                 "solves take about 2x longer than with the optimized build (bash scripts/sundials; "
+                 "solves take 2-3x longer than with the optimized build (bash scripts/sundials; "
                  "-DRESTITUTION_SUNDIALS_OPTIMIZED=ON)")
 else()
   message(STATUS "SUNDIALS: CVODE ${RESTITUTION_SUNDIALS_VERSION} built -O3 from Debian's source package "
