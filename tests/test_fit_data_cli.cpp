@@ -123,8 +123,32 @@ TEST(FitDataCli, DemFromFitUsesTheFitsAAndSaysItsUncertainty) {
     EXPECT_LT(j["from_fit"]["eps"][i]["ci95"][0].get<double>(), eps);
     EXPECT_GT(j["from_fit"]["eps"][i]["ci95"][1].get<double>(), eps);
   }
+  EXPECT_EQ(j["from_fit"]["eps_given_by"], "the lines above");
   EXPECT_EQ(test_support::run_cli("dem --code lammps --eps 0.5 --from-fit " + json_path + material).status,
             2);
+}
+
+// YADE 2023.02a cannot express the law: its lines give one ε at every speed, so the fit's ε(v) must be
+// attributed to the lines of the version that can, never to the printed ones.
+TEST(FitDataCli, DemFromFitOnAYadeWithoutTheLawNamesTheLinesThatGiveItsEps) {
+  const auto json_path = (std::filesystem::temp_directory_path() / "restitution-fit-yade.json").string();
+  ASSERT_EQ(test_support::run_cli("fit-data " + kExample + " --output " + json_path).status, 0);
+  const std::string request = "dem --code yade --yade-version 2023.02a --from-fit " + json_path +
+                              " --young-modulus 1e7 --poisson-ratio 0.45 --radius 0.01 --density 1100";
+  const auto r = test_support::run_cli(request + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.contains("yade_exact_law"));
+  const std::string given_by = j["from_fit"]["eps_given_by"].get<std::string>();
+  EXPECT_NE(given_by.find("2024.02a lines only, not the lines above"), std::string::npos) << given_by;
+  ASSERT_EQ(j["from_fit"]["eps"].size(), j["yade_exact_law"]["eps"].size());
+  for (std::size_t i = 0; i < j["from_fit"]["eps"].size(); ++i) {
+    EXPECT_NEAR(j["from_fit"]["eps"][i]["eps"].get<double>(),
+                j["yade_exact_law"]["eps"][i]["eps"].get<double>(), 1e-9);
+  }
+  const auto text = test_support::run_cli(request);
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("given by the YADE 2024.02a lines only"), std::string::npos) << text.out;
 }
 
 }  // namespace

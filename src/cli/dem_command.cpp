@@ -79,6 +79,16 @@ std::optional<FromFit> apply_from_fit(DemOptions& o) {
   return f;
 }
 
+// Which lines give the law's ε(v) that --from-fit carries over: these, unless the targeted YADE cannot
+// express the law (then only the lines of the version that can).
+std::string fit_eps_given_by(const dem::LinesResult& r) {
+  if (!r.yade_exact_deck) return "the lines above";
+  return fmt::format(
+      "the YADE 2024.02a lines only, not the lines above (on YADE {} they give the eps printed "
+      "after them)",
+      r.yade_version->text);
+}
+
 std::vector<double> speeds_of(const dem::LinesResult& r) {
   std::vector<double> out;
   for (const auto& e : r.eps) out.push_back(e.velocity_m_s);
@@ -150,7 +160,9 @@ void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optio
     json.field("dissipative_constant_s", r.yade->dissipative_constant_s);
     json.field("eps_at_vn", r.yade->eps_at_vn).end_object();
   }
-  if (from_fit) write_fit_carry_over(json, o.from_fit, from_fit->fit, from_fit->k, speeds_of(r));
+  if (from_fit) {
+    write_fit_carry_over(json, o.from_fit, from_fit->fit, from_fit->k, speeds_of(r), fit_eps_given_by(r));
+  }
   if (o.deck) json.key("deck").begin_object().field("file", *o.deck).field("run", o.deck_run).end_object();
   fmt::print("{}\n", finish_json_document(json));
 }
@@ -195,7 +207,8 @@ void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optio
                r.yade->eps_at_vn);
   }
   if (from_fit)
-    fmt::print("{}", fit_carry_over_text(o.from_fit, from_fit->fit, from_fit->k, speeds_of(r), c));
+    fmt::print("{}", fit_carry_over_text(o.from_fit, from_fit->fit, from_fit->k, speeds_of(r),
+                                         fit_eps_given_by(r), c));
   if (o.deck) fmt::print("{} check deck written to {}: run `{}`\n", c, *o.deck, o.deck_run);
 }
 

@@ -133,13 +133,15 @@ int calibrate_from_fit(const std::filesystem::path& file, std::optional<Collisio
 namespace restitution::cli {
 
 std::string fit_carry_over_text(const std::filesystem::path& file, const FitCarryOver& fit, double k,
-                                const std::vector<double>& speeds_m_s, const char* comment) {
+                                const std::vector<double>& speeds_m_s, const std::string& eps_given_by,
+                                const char* comment) {
   const double factor = dissipative_constant_from(1.0, k);
   std::string out = fmt::format(
       "{} from the fit {} ({} points{}): beta = {:.9g}, 95 % {}; A = {:.9g} s, 68 % {} s, 95 % {} s\n",
       comment, file.string(), fit.points, fit.sigma_estimated ? ", scatter estimated" : "", fit.beta,
       interval_text(fit.ci95), dissipative_constant_from(fit.beta, k),
       interval_text(scaled(fit.ci68, factor)), interval_text(scaled(fit.ci95, factor)));
+  out += fmt::format("{} the law's eps with the fit's uncertainty, given by {}:\n", comment, eps_given_by);
   for (const double v : speeds_m_s) {
     const EpsCarryOver e = eps_at_speed(fit, v);
     out += fmt::format("{}   v = {:<10.6g} m/s  eps = {:.6f}, 95 % {} (the fit's uncertainty)\n", comment, v,
@@ -149,7 +151,7 @@ std::string fit_carry_over_text(const std::filesystem::path& file, const FitCarr
 }
 
 void write_fit_carry_over(JsonWriter& json, const std::filesystem::path& file, const FitCarryOver& fit,
-                          double k, const std::vector<double>& speeds_m_s) {
+                          double k, const std::vector<double>& speeds_m_s, const std::string& eps_given_by) {
   const double factor = dissipative_constant_from(1.0, k);
   json.key("from_fit").begin_object().field("file", file.string()).field("end", end_name(fit.end));
   json.field("sigma_estimated", fit.sigma_estimated).field("beta", fit.beta);
@@ -158,6 +160,7 @@ void write_fit_carry_over(JsonWriter& json, const std::filesystem::path& file, c
   json.field("dissipative_constant_s", dissipative_constant_from(fit.beta, k));
   write_interval(json, "dissipative_constant_ci68", scaled(fit.ci68, factor));
   write_interval(json, "dissipative_constant_ci95", scaled(fit.ci95, factor));
+  json.field("eps_given_by", eps_given_by);
   json.key("eps").begin_array();
   for (const double v : speeds_m_s) {
     const EpsCarryOver e = eps_at_speed(fit, v);

@@ -46,9 +46,12 @@ namespace restitution::cli {
 class JsonWriter;
 // What a fit carries over into `dem --from-fit`: A = β / ((3/2) k^{2/5}) with its intervals and ε at each
 // speed with its interval. As comment lines (prefix "#" or "//") and as the fields of a JSON object
-// "from_fit".
+// "from_fit". These ε are the law's: `eps_given_by` names the lines that give them (the printed lines, or
+// for a YADE that cannot express the law the lines of the version that can), so that no ε stands next to
+// lines that do not produce it.
 std::string fit_carry_over_text(const std::filesystem::path& file, const FitCarryOver& fit, double k,
-                                const std::vector<double>& speeds_m_s, const char* comment);
+                                const std::vector<double>& speeds_m_s, const std::string& eps_given_by,
+                                const char* comment);
 void write_fit_carry_over(JsonWriter& json, const std::filesystem::path& file, const FitCarryOver& fit,
-                          double k, const std::vector<double>& speeds_m_s);
+                          double k, const std::vector<double>& speeds_m_s, const std::string& eps_given_by);
 }  // namespace restitution::cli
