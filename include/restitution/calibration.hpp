@@ -47,4 +47,9 @@ double zeta_for_eps(double eps, CollisionEnd end, const SolveOptions& options, C
 
 Calibration calibrate(const CalibrationRequest& request, CollisionSolver& solver);
 
+// ζ of viscoelastic Hertz with ε(ζ) = eps from the certified fast table, inside the checked range: eps in
+// (0, 1] (1 gives 0). Throws InvalidInput, in the words of every calibration path, when eps lies below
+// ε(kLargestCheckedZeta) (fast::zeta_from_eps itself answers there with the large-ζ law).
+double fast_zeta_for_eps(double eps, CollisionEnd end);
+
 }  // namespace restitution

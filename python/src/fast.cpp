@@ -12,6 +12,8 @@
 
 #include "array_index.hpp"
 #include "bindings.hpp"
+#include "restitution/calibration.hpp"
+#include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
 
 namespace py = pybind11;
@@ -58,31 +60,55 @@ void def_pair(py::module_& m, const char* name, FastFunction f, const char* argu
         py::arg(argument), py::arg("end"), doc);
 }
 
+// Python applies the domain of every front end (docs/accuracy.md): ζ in [0, kLargestCheckedZeta], refused
+// beyond in the CLI's words, where the library's fast functions go on with the large-ζ laws for embedding.
+// Negative and NaN ζ are left to the fast functions' own messages.
+void require_in_domain(double zeta) {
+  if (zeta > kLargestCheckedZeta) require_checked_zeta(zeta);
+}
+double checked_eps(double zeta, CollisionEnd end) {
+  require_in_domain(zeta);
+  return fast::eps(zeta, end);
+}
+double checked_one_minus_eps(double zeta, CollisionEnd end) {
+  require_in_domain(zeta);
+  return fast::one_minus_eps(zeta, end);
+}
+double checked_collision_duration(double zeta, CollisionEnd end) {
+  require_in_domain(zeta);
+  return fast::collision_duration(zeta, end);
+}
+MaxCompression checked_max_compression(double zeta) {
+  require_in_domain(zeta);
+  return fast::max_compression(zeta);
+}
+
 // The maximal compression's two numbers as FastFunctions (it has no end), for apply().
 double max_compression_tau(double zeta, CollisionEnd /*end*/) {
-  return fast::max_compression(zeta).tau;
+  return checked_max_compression(zeta).tau;
 }
 double max_compression_x(double zeta, CollisionEnd /*end*/) {
-  return fast::max_compression(zeta).x;
+  return checked_max_compression(zeta).x;
 }
 
 }  // namespace
 
 void bind_fast(py::module_& m) {
-  def_pair(m, "eps", &fast::eps, "zeta", "eps(zeta) from the certified fast table; zeta >= 0 natural units.");
-  def_pair(m, "one_minus_eps", &fast::one_minus_eps, "zeta",
-           "1 - eps(zeta) to its own relative accuracy; zeta >= 0 natural units.");
-  def_pair(m, "zeta_from_eps", &fast::zeta_from_eps, "eps",
-           "zeta (natural units) with eps(zeta) = eps in (0, 1].");
-  def_pair(
-      m, "collision_duration", &fast::collision_duration, "zeta",
-      "collision duration tau_c (natural units) at zeta >= 0, from the fast table and its large-zeta law.");
+  def_pair(m, "eps", &checked_eps, "zeta",
+           "eps(zeta) from the certified fast table; 0 <= zeta <= 1e6 natural units.");
+  def_pair(m, "one_minus_eps", &checked_one_minus_eps, "zeta",
+           "1 - eps(zeta) to its own relative accuracy; 0 <= zeta <= 1e6 natural units.");
+  def_pair(m, "zeta_from_eps", &fast_zeta_for_eps, "eps",
+           "zeta (natural units) with eps(zeta) = eps in (0, 1], refused below eps(1e6).");
+  def_pair(m, "collision_duration", &checked_collision_duration, "zeta",
+           "collision duration tau_c (natural units) at 0 <= zeta <= 1e6, from the fast table and its "
+           "large-zeta law.");
   const char* compression =
-      "(tau_max, x_max), natural units, at zeta >= 0, from the fast table and its laws.";
+      "(tau_max, x_max), natural units, at 0 <= zeta <= 1e6, from the fast table and its laws.";
   m.def(
       "max_compression",
       [](double zeta) {
-        const MaxCompression c = fast::max_compression(zeta);
+        const MaxCompression c = checked_max_compression(zeta);
         return py::make_tuple(c.tau, c.x);
       },
       py::arg("zeta"), compression);

@@ -82,6 +82,12 @@ double zeta_for_eps(double eps, CollisionEnd end, const SolveOptions& options, C
   return 0.5 * (a + b);
 }
 
+double fast_zeta_for_eps(double eps, CollisionEnd end) {
+  const double zeta = fast::zeta_from_eps(eps, end);
+  if (zeta > kLargestCheckedZeta) throw_below_checked_range(eps, fast::eps(kLargestCheckedZeta, end), end);
+  return zeta;
+}
+
 Calibration calibrate(const CalibrationRequest& request, CollisionSolver& solver) {
   if (!std::isfinite(request.velocity_m_s) || request.velocity_m_s <= 0.0) {
     throw InvalidInput(fmt::format("velocity must be finite and > 0, got {}", request.velocity_m_s));
@@ -98,10 +104,7 @@ Calibration calibrate(const CalibrationRequest& request, CollisionSolver& solver
   }
   if (request.fast) {
     check_measured_eps(request.eps);
-    c.zeta = fast::zeta_from_eps(request.eps, request.end);
-    if (c.zeta > kLargestCheckedZeta) {
-      throw_below_checked_range(request.eps, fast::eps(kLargestCheckedZeta, request.end), request.end);
-    }
+    c.zeta = fast_zeta_for_eps(request.eps, request.end);
     c.eps_at_zeta = fast::eps(c.zeta, request.end);
   } else {
     c.zeta = zeta_for_eps(request.eps, request.end, options, solver, &c.solves, request.law);
