@@ -52,12 +52,9 @@ dem::YadeVersion target_yade(DemOptions& o) {
     o.yade_source = "--yade-version";
     return dem::yade_version_from_name(o.yade_version);
   }
-  if (auto on_path = dem::yade_version_on_path()) {
-    o.yade_source = "yade on PATH";
-    return *on_path;
-  }
-  o.yade_source = "no yade on PATH: the lines of YADE 2024.02a and later";
-  return {};
+  dem::TargetedYade installed = dem::installed_yade_or_newest();
+  o.yade_source = std::move(installed.source);
+  return installed.version;
 }
 
 // --from-fit: the fit's Hertz β (at --end when given, else the lowest AIC) becomes A for this material.

@@ -3,10 +3,47 @@
 
 #include <fmt/core.h>
 
+#include "damping_check/yade_version_lines.hpp"
 #include "dem/lines_check.hpp"
 #include "restitution/material.hpp"
 
 namespace restitution::cli {
+
+namespace {
+
+// YADE (not run by scenes): the lines for the yade on PATH, as `dem --code yade` prints them. On a YADE that
+// cannot express the law (no vn, e.g. Debian's 2023.02a) those are the constant-ε lines with the ε they
+// really give, and the report names the version that takes the exact law and shows its lines.
+// Returns the report's words on the version.
+std::string target_installed_yade(const Material& material, const dem::DampingSource& damping,
+                                  const scene::DemTask& task, double tolerance, dem::CodeComparison& c) {
+  dem::LinesRequest request;
+  request.code = dem::Code::yade;
+  request.end = task.end;
+  request.material = material;
+  request.damping = damping;
+  request.speeds_m_s = task.speeds;
+  request.tolerance = tolerance;
+  request.friction = task.friction;
+  dem::LinesResult r = dem::check_lines(request);
+  const dem::TargetedYade yade = dem::installed_yade_or_newest();
+  damping_check::target_yade_version(r, yade.version, tolerance);
+  c.deck = r.deck;
+  c.predicted_eps.clear();
+  for (const dem::SpeedEps& e : r.eps) c.predicted_eps.push_back(e.eps);
+  std::string words = fmt::format("The yade lines are for YADE {} ({}).", yade.version.text, yade.source);
+  if (r.yade_exact_deck) {
+    words += fmt::format(
+        " YADE {} cannot express this law: the lines above give the eps of the table, the same at every "
+        "speed. On YADE 2024.02a or later these lines give the law itself:\n\n```\n",
+        yade.version.text);
+    for (const auto& line : r.yade_exact_deck->lines) words += line + "\n";
+    words += "```\n";
+  }
+  return words + "\n";
+}
+
+}  // namespace
 
 DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task) {
   const dem::Code code = dem::code_from_name(task.code);
@@ -24,8 +61,11 @@ DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task) {
   const dem::DampingSource damping{
       task.eps ? std::nullopt : std::optional<double>(material_constants(material).dissipative_constant_s),
       task.eps, task.velocity_m_s};
-  const dem::CodeComparison c = dem::compare_with_code(code, material, damping, task.end, task.speeds,
-                                                       task.friction, scene.tolerance, scene.method, program);
+  dem::CodeComparison c = dem::compare_with_code(code, material, damping, task.end, task.speeds,
+                                                 task.friction, scene.tolerance, scene.method, program);
+  std::string yade_words;
+  if (code == dem::Code::yade)
+    yade_words = target_installed_yade(material, damping, task, scene.tolerance, c);
   const dem::Deck& deck = c.deck;
   const double a = c.dissipative_constant_s;
   const std::vector<double>& predicted = c.predicted_eps;
@@ -75,6 +115,7 @@ DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task) {
         "column is the Richardson extrapolation (10 eps_fine - eps_coarse)/9.\n\n",
         dem::code_name(code));
   }
+  md += yade_words;
   return s;
 }
 

@@ -32,6 +32,11 @@ std::optional<YadeVersion> yade_version_on_path() {
   return parse_yade_version(std::string_view(out).substr(at));
 }
 
+TargetedYade installed_yade_or_newest() {
+  if (auto on_path = yade_version_on_path()) return {*on_path, "yade on PATH"};
+  return {YadeVersion{}, "no yade on PATH: the lines of YADE 2024.02a and later"};
+}
+
 Deck yade_constant_eps_deck(const Deck& exact, double betan, double eps, const YadeVersion& version) {
   Deck d = exact;
   d.parameters.clear();

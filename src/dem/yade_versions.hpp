@@ -27,6 +27,14 @@ YadeVersion yade_version_from_name(std::string_view text);
 // `yade --version` of the yade on PATH; empty when there is none or it prints no version.
 std::optional<YadeVersion> yade_version_on_path();
 
+// The YADE the lines are for when no version is named: the one on PATH, else 2024.02a (the first with vn, so
+// the exact law); `source` says which, in words for the output.
+struct TargetedYade {
+  YadeVersion version;
+  std::string source;
+};
+TargetedYade installed_yade_or_newest();
+
 // The lines for a YADE without `vn`: `exact`'s material and law lines with MindlinPhys(betan = betan), betan
 // [1] the damping ratio that gives `eps` at every speed; the notes say so and name the version that would
 // take the exact lines.

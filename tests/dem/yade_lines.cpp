@@ -9,7 +9,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -90,6 +95,46 @@ TEST(YadeLinesVersion, OptionTargetsTheNamedVersion) {
       restitution::test_support::run_cli("dem --code yade --eps 0.8 --yade-version 7" + kMaterial);
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("--yade-version"), std::string::npos) << bad.err;
+}
+
+// A scene's [[dem]] section targets the YADE on PATH as `dem --code yade` does: on Debian's 2023.02a the
+// report shows the lines that run there and the one ε they give, never the 2024.02a lines next to the law's
+// ε(v).
+TEST(YadeLinesVersion, SceneSectionTargetsTheYadeOnPath) {
+  const auto folder =
+      std::filesystem::temp_directory_path() / ("restitution-yade-scene-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  const auto scene = folder / "yade.toml";
+  std::ofstream(scene) << "title = \"yade\"\noutput = \"out\"\n[materials.steel]\nyoung_modulus = "
+                          "2.1e11\npoisson_ratio = 0.3\n"
+                          "density = 7850.0\nradius = 0.005\ndissipative_constant = 5.8e-7\n"
+                          "[[dem]]\nname = \"steel_yade\"\ncode = \"yade\"\nmaterial = \"steel\"\n"
+                          "eps = 0.8\nvelocity = 1.0\nspeeds = [0.1, 1.0, 10.0]\n";
+  setenv("RESTITUTION_PYTHON", "/nonexistent/python3", 1);  // the plots are not what is tested here
+  const auto out = folder / "out";
+  const auto r =
+      restitution::test_support::run_cli("run " + scene.string() + " --quick --output " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string report = restitution::test_support::slurp((out / "report.md").string());
+  EXPECT_NE(report.find("The yade lines are for YADE 2023.02a (yade on PATH)"), std::string::npos) << report;
+  // The lines the report shows for this YADE take betan, not vn (the 2024.02a lines follow, labelled).
+  const std::string shown = report.substr(0, report.find("The yade lines are for"));
+  EXPECT_NE(shown.find("MindlinPhys(betan=MatchMaker(algo='val'"), std::string::npos) << shown;
+  EXPECT_EQ(shown.find("vn="), std::string::npos) << shown;
+  const json cli = run_json("dem --code yade --eps 0.8 --velocity 1 --speeds 0.1 1 10 --json" + kMaterial);
+  const std::string csv = restitution::test_support::slurp((out / "steel_yade.csv").string());
+  std::istringstream rows(csv);
+  std::string row;
+  std::getline(rows, row);  // the header
+  std::size_t i = 0;
+  for (; std::getline(rows, row); ++i) {
+    const double eps = std::stod(row.substr(row.find(',') + 1));
+    EXPECT_NEAR(eps, cli.at("eps").at(i).at("eps").get<double>(), 1e-9) << row;
+    EXPECT_NEAR(eps, 0.8, 1e-9) << row;  // 2023.02a: one ε at every speed
+  }
+  EXPECT_EQ(i, 3U);
+  std::filesystem::remove_all(folder);
 }
 
 }  // namespace
