@@ -84,6 +84,7 @@ void end_struct(std::ostringstream& out, CollisionEnd end, const EndTable& e) {
 std::string c_header_text(const TableData& d) {
   std::ostringstream out;
   out << R"(/* clang-format off */
+/* SPDX-License-Identifier: BSD-3-Clause (the license of the project "restitution", which made this file) */
 /* restitution_fast.h: the coefficient of normal restitution eps of viscoelastic spheres, certified fast.
  * Self-contained C99 (also valid C++), needs only <math.h> (link with -lm). Made by the project
  * "restitution" (`restitution export c-header`); the method and the accuracy are in its docs/fast.md.

@@ -1,4 +1,5 @@
 /* clang-format off */
+/* SPDX-License-Identifier: BSD-3-Clause (the license of the project "restitution", which made this file) */
 /* restitution_fast.h: the coefficient of normal restitution eps of viscoelastic spheres, certified fast.
  * Self-contained C99 (also valid C++), needs only <math.h> (link with -lm). Made by the project
  * "restitution" (`restitution export c-header`); the method and the accuracy are in its docs/fast.md.
