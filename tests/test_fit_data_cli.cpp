@@ -55,6 +55,16 @@ TEST(FitDataCli, WithoutSigmaTheReportSaysTheScatterIsEstimated) {
   EXPECT_TRUE(j["sigma_estimated"].get<bool>());
 }
 
+// A spreadsheet's byte-order mark is not part of the header; one point with σ has no χ²/dof, said so.
+TEST(FitDataCli, ByteOrderMarkAndZeroDegreesOfFreedom) {
+  const auto bom = write_csv("bom", "\xEF\xBB\xBFv,eps,sigma\n1,0.5,0.01\n");
+  const auto r = run_cli("fit-data " + bom);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("1 point, "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("- (0 dof)"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+}
+
 TEST(FitDataCli, BadInputExitsTwoNamingTheLineAndWritesNothing) {
   const auto out = std::filesystem::temp_directory_path() / "restitution-fit-bad-out.json";
   std::filesystem::remove(out);
@@ -70,7 +80,7 @@ TEST(FitDataCli, BadInputExitsTwoNamingTheLineAndWritesNothing) {
                         Case{"text", "v,eps\n1,0.5\n2,abc\n", "'abc' is not a number"},
                         Case{"fields", "v,eps\n1,0.5,3\n", ":2: 3 fields"},
                         Case{"header", "v,e\n1,0.5\n", "unknown column 'e'"}, Case{"empty", "", "empty"},
-                        Case{"one", "v,eps\n1,0.5\n", "at least 2"}}) {
+                        Case{"one", "v,eps\n1,0.5\n", "restitution-fit-one.csv: 1 point cannot fit"}}) {
     const auto path = write_csv(c.name, c.text);
     const auto r = run_cli("fit-data " + path + " --output " + out.string());
     EXPECT_EQ(r.status, 2) << c.name << ": " << r.err;

@@ -12,6 +12,7 @@
 #include "cli/fit_data_report.hpp"
 #include "cli/material_options.hpp"
 #include "cli/output_files.hpp"
+#include "restitution/errors.hpp"
 #include "restitution/fit.hpp"
 #include "restitution/fit_csv.hpp"
 #include "restitution/material.hpp"
@@ -30,6 +31,15 @@ struct FitDataOptions {
   std::string output;
 };
 
+// A refusal of the data as a whole (too few points) names the file, as the row errors of the CSV do.
+void check_data_of_file(const FitData& data, const std::string& file) {
+  try {
+    check_fit_data(data);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("{}: {}", file, e.what()));
+  }
+}
+
 int run_fit_data(const FitDataOptions& o) {
   // Everything is checked before anything is written.
   if (!o.output.empty()) check_output_file(o.output);
@@ -39,6 +49,7 @@ int run_fit_data(const FitDataOptions& o) {
   options.method = method_from_name(o.method);
   if (o.material.any()) options.k = elastic_constants(material_from(o.material)).k;
   const FitData data = read_fit_csv(o.file);
+  check_data_of_file(data, o.file);
   const FitResult result = fit_data(data, options);
   const FitReportInput report{o.file, &data, &result, options.k};
   const std::string json = fit_json(report);

@@ -137,7 +137,7 @@ std::string fit_json(const FitReportInput& in) {
 
 std::string fit_table(const FitReportInput& in) {
   const FitResult& r = *in.result;
-  std::string out = fmt::format("fit-data: {}, {} points, ", in.source, r.points);
+  std::string out = fmt::format("fit-data: {}, {} point{}, ", in.source, r.points, r.points == 1 ? "" : "s");
   out += r.sigma_estimated
              ? fmt::format(
                    "no sigma column: the scatter is estimated from the residuals (t quantiles, {} dof)\n",
@@ -148,18 +148,21 @@ std::string fit_table(const FitReportInput& in) {
   for (const LawFit& f : r.fits) {
     const std::string value = f.status == FitStatus::converged ? fmt::format("{:.7g}", f.value)
                                                                : std::string(fit_status_name(f.status));
+    // No degrees of freedom (as many points as parameters): χ²/dof is undefined, said so rather than nan.
+    const std::string chi2_per_dof =
+        f.dof > 0 ? fmt::format("{:.4g}", f.chi2_per_dof) : std::string("- (0 dof)");
     out +=
-        fmt::format("{:<19} {:<17} {:<14} {:<13} {:<27} {:<27} {:>10.4g} {:>10.4g}  {}\n",
+        fmt::format("{:<19} {:<17} {:<14} {:<13} {:<27} {:<27} {:>10} {:>10.4g}  {}\n",
                     law_name(f.candidate.law), end_name(f.candidate.end), f.parameter, value,
-                    interval_text(f.ci68), interval_text(f.ci95), f.chi2_per_dof, f.aic, f.residuals.verdict);
+                    interval_text(f.ci68), interval_text(f.ci95), chi2_per_dof, f.aic, f.residuals.verdict);
     if (!f.message.empty()) out += fmt::format("  {}: {}\n", law_name(f.candidate.law), f.message);
   }
   if (r.best) {
     const LawFit& b = r.fits[*r.best];
     out += fmt::format("best (lowest AIC): {}, {} end", law_name(b.candidate.law), end_name(b.candidate.end));
     for (const std::size_t i : r.tied_with_best) {
-      out +=
-          fmt::format("; tied with {} (the data cannot tell them apart)", law_name(r.fits[i].candidate.law));
+      out += fmt::format("; tied with {}, {} end (the data cannot tell them apart)",
+                         law_name(r.fits[i].candidate.law), end_name(r.fits[i].candidate.end));
     }
     out += "\n";
   } else {

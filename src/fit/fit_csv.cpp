@@ -80,6 +80,8 @@ FitData parse_fit_csv(const std::string& text, const std::string& name) {
   FitData data;
   while (std::getline(in, line)) {
     ++line_number;
+    // A spreadsheet's UTF-8 byte-order mark before the header is not part of the first column's name.
+    if (line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     const std::string content = trimmed(line);
     if (content.empty() || content.front() == '#') continue;
     const std::string where = fmt::format("{}:{}", name, line_number);
