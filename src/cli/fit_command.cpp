@@ -107,7 +107,7 @@ void add_fit_command(CLI::App& app, Action& chosen) {
   CLI::App* cmd = app.add_subcommand("fit", "least-squares power law of eps against zeta at one end");
   cmd->add_option("--end", o->end, "end of the collision: naive or delayed-recovery")
       ->required()
-      ->check(CLI::IsMember({"naive", "delayed-recovery"}));
+      ->check(CLI::IsMember(end_names()));
   cmd->add_option("--zeta-min", o->zeta_min, "smallest zeta of the fit (> 0)")->required();
   cmd->add_option("--zeta-max", o->zeta_max, "largest zeta of the fit")->required();
   cmd->add_option("--points", o->points, "log-spaced points, ends included (>= 3)")->capture_default_str();
