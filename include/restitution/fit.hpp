@@ -32,13 +32,14 @@ struct FitData {
 void check_fit_data(const FitData& data);
 
 // One law at one end of the collision. The speed-independent members fit the same ε at either end (only
-// their parameter differs); fit_data uses their delayed-recovery end unless told otherwise.
+// their parameter differs); fit_data uses kDefaultSpeedIndependentEnd unless told otherwise.
+inline constexpr CollisionEnd kDefaultSpeedIndependentEnd = CollisionEnd::delayed_recovery;
 struct FitCandidate {
   LawKind law = LawKind::viscoelastic_hertz;
   CollisionEnd end = CollisionEnd::delayed_recovery;
 };
-// Viscoelastic Hertz at the delayed-recovery and naive ends, Tsuji and the linear dash-pot (delayed
-// recovery).
+// Viscoelastic Hertz at the delayed-recovery and naive ends, Tsuji and the linear dash-pot (at
+// kDefaultSpeedIndependentEnd).
 std::vector<FitCandidate> default_fit_candidates();
 // The default candidates restricted to the named laws (law_from_name; empty: all; viscoelastic-hertz brings
 // both ends), the speed-independent ones at `speed_independent_end` (end_from_name). Throws InvalidInput

@@ -31,7 +31,7 @@ struct DemOptions {
   DemTypeOptions types;      // --radius etc., lists for several atom types
   MaterialOptions material;  // the one pair, from `types`
   std::optional<double> eps, velocity, dissipative_constant;
-  std::string end = "delayed-recovery";
+  std::string end = end_name(dem::LinesRequest{}.end);
   std::vector<double> speeds;
   double tolerance = SolveOptions{}.tolerance;
   double friction = 0.0;  // Coulomb mu of the tangential model [1]

@@ -23,7 +23,7 @@ namespace {
 struct FitDataOptions {
   std::string file;
   std::vector<std::string> laws;
-  std::string speed_independent_end = end_name(CollisionEnd::delayed_recovery);
+  std::string speed_independent_end = end_name(kDefaultSpeedIndependentEnd);
   double tolerance = SolveOptions{}.tolerance;
   std::string method = method_name(SolveOptions{}.method);
   MaterialOptions material;

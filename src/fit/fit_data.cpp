@@ -128,8 +128,8 @@ void check_fit_data(const FitData& data) {
 std::vector<FitCandidate> default_fit_candidates() {
   return {{LawKind::viscoelastic_hertz, CollisionEnd::delayed_recovery},
           {LawKind::viscoelastic_hertz, CollisionEnd::naive},
-          {LawKind::tsuji_hertz, CollisionEnd::delayed_recovery},
-          {LawKind::linear_dashpot, CollisionEnd::delayed_recovery}};
+          {LawKind::tsuji_hertz, kDefaultSpeedIndependentEnd},
+          {LawKind::linear_dashpot, kDefaultSpeedIndependentEnd}};
 }
 
 std::vector<FitCandidate> fit_candidates(const std::vector<std::string>& law_names,

@@ -39,8 +39,9 @@ FitTask read_fit_task(TomlReader& r, std::string name, const std::map<std::strin
     r.fail(file ? "data" : "eps", e.what());
   }
   try {
-    t.candidates = fit_candidates(r.words("laws").value_or(std::vector<std::string>{}),
-                                  r.text("speed_independent_end").value_or("delayed-recovery"));
+    t.candidates =
+        fit_candidates(r.words("laws").value_or(std::vector<std::string>{}),
+                       r.text("speed_independent_end").value_or(end_name(kDefaultSpeedIndependentEnd)));
   } catch (const InvalidInput& e) {
     r.fail("laws", e.what());
   }
