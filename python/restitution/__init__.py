@@ -30,6 +30,7 @@ __all__ = ["__version__", "eps", "solve", "calibrate", "fit_data", "zeta_of", "M
 
 _SCALARS = (float, int)
 _TOLERANCE = _core.default_tolerance  # SolveOptions' default, the command line's too
+_SPEED_INDEPENDENT_END = _core.default_speed_independent_end  # fit_data's, as fit-data's on the command line
 
 
 def _real_array(name, value):
@@ -209,8 +210,8 @@ def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=_T
                            _text("method", method), material, law)
 
 
-def fit_data(v, eps, sigma=None, *, laws=None, speed_independent_end="delayed-recovery", material=None,
-             tolerance=1e-10, method="auto"):
+def fit_data(v, eps, sigma=None, *, laws=None, speed_independent_end=_SPEED_INDEPENDENT_END, material=None,
+             tolerance=_TOLERANCE, method="auto"):
     """Fit measured eps at impact speeds v [m/s] (optional standard deviations sigma) with every candidate law.
 
     Candidates: viscoelastic Hertz at the delayed-recovery and naive ends (parameter "beta"

@@ -105,6 +105,7 @@ void bind_fit(py::module_& m) {
       py::arg("v"), py::arg("eps"), py::arg("sigma"), py::arg("laws"), py::arg("speed_independent_end"),
       py::arg("material"), py::arg("tolerance"), py::arg("method"),
       "Fit measured eps(v); see restitution.fit_data.");
+  m.attr("default_speed_independent_end") = end_name(kDefaultSpeedIndependentEnd);
 }
 
 }  // namespace restitution::python
