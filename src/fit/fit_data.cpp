@@ -147,8 +147,8 @@ std::vector<FitCandidate> fit_candidates(const std::vector<std::string>& law_nam
 }
 
 const char* fit_parameter_name(LawKind law) {
-  if (law == LawKind::viscoelastic_hertz) return "beta";
-  return law == LawKind::linear_dashpot ? "damping-ratio" : "zeta";
+  // β for viscoelastic Hertz (ε depends on the speed); else the law's labelled parameter (law_parameter).
+  return law == LawKind::viscoelastic_hertz ? "beta" : law_parameter(law).name;
 }
 
 const char* fit_status_name(FitStatus status) {
@@ -205,11 +205,10 @@ double fit_model_eps(const FitCandidate& candidate, double parameter, double vel
   if (candidate.law == LawKind::viscoelastic_hertz) {
     return fast::eps(zeta_from(parameter, velocity_m_s), candidate.end);
   }
-  const double zeta = candidate.law == LawKind::linear_dashpot ? 2.0 * parameter : parameter;
-  if (zeta == 0.0) return 1.0;
+  if (parameter == 0.0) return 1.0;
   SolveOptions o = options;
   o.ends = EndSet{candidate.end};
-  return end_of(solver.solve(ContactLaw::natural(candidate.law, zeta), o), candidate.end).eps;
+  return end_of(solver.solve(ContactLaw::of_parameter(candidate.law, parameter), o), candidate.end).eps;
 }
 
 FitResult fit_data(const FitData& data, const FitOptions& options) {

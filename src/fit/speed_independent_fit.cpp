@@ -99,8 +99,8 @@ void fit_speed_independent(const Problem& problem, const FitOptions& options, Co
   const double eps_best = weighted / total;
   fit.model_eps.assign(problem.size(), eps_best);
   fit.chi2 = chi_square(problem, fit.model_eps);
-  // The parameter is ζ (Tsuji) or r = ζ/2 (the dash-pot).
-  const double to_parameter = fit.candidate.law == LawKind::linear_dashpot ? 0.5 : 1.0;
+  // The parameter is the law's labelled one (law_parameter): ζ (Tsuji) or r = ζ/2 (the dash-pot).
+  const double zeta_per_parameter = law_parameter(fit.candidate.law).zeta_per_parameter;
   EpsInverse inverse(fit.candidate, options, solver);
   const auto zeta = inverse.zeta_for(eps_best);
   if (!zeta) {
@@ -112,15 +112,15 @@ void fit_speed_independent(const Problem& problem, const FitOptions& options, Co
     return;
   }
   fit.status = FitStatus::converged;
-  fit.value = *zeta * to_parameter;
+  fit.value = *zeta / zeta_per_parameter;
   const double scale = problem.sigma_estimated ? fit.chi2 / static_cast<double>(problem.size() - 1) : 1.0;
   auto interval = [&](double delta) {
     const double half = std::sqrt(delta * scale / total);
     FitInterval out;
     // ε decreases with ζ: the upper ε gives the lower bound.
-    out.low = *inverse.zeta_for(eps_best + half) * to_parameter;
+    out.low = *inverse.zeta_for(eps_best + half) / zeta_per_parameter;
     if (const auto high = inverse.zeta_for(eps_best - half)) {
-      out.high = *high * to_parameter;
+      out.high = *high / zeta_per_parameter;
     } else {
       set_edge_high(out);
     }
