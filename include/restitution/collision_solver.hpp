@@ -24,6 +24,8 @@ const char* method_name(Method method);            // "bdf" | "adams" | "auto" |
 Method method_from_name(const std::string& name);  // the inverse; throws InvalidInput naming the value
 // Every method's name, in the order of kMethods (the choices of a front end's method option).
 const std::vector<std::string>& method_names();
+// "a, b or c": a list of choices (names of methods, ends, ...) as messages and --help give it.
+std::string alternatives(const std::vector<std::string>& names);
 
 // The ends of the collision (CollisionEnd, EndSet, PerEnd) are defined in contact_law.hpp, next to the law
 // that decides where they lie. Their names in text:
@@ -60,6 +62,10 @@ inline constexpr double kMinTolerance = 1e-11;
 inline constexpr double kMaxTolerance = 1e-2;
 // The smallest tolerance the method accepts (kMinTolerance for CVODE, kMinTaylorTolerance for taylor).
 double min_tolerance(Method method);
+// The tolerances each engine accepts, one entry per engine of the registry: "[1e-11, 1e-2] for bdf, adams,
+// auto", "[1e-13, 1e-2] for taylor". With name_engines, an engine that computes several methods is named
+// after them ("... auto (CVODE)"). For --help and messages, so that a new engine appears in both.
+std::vector<std::string> tolerance_ranges(bool name_engines = false);
 
 // Throws InvalidInput naming the tolerance or the ends when the options cannot be honoured for any law.
 void check_solve_options(const SolveOptions& options);

@@ -133,10 +133,12 @@ void add_calibrate_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--tolerance", o->tolerance,
                   "accuracy of each eps, in [1e-11, 1e-2] (taylor: [1e-13, 1e-2])")
       ->capture_default_str();
-  cmd->add_option(
-         "--method", o->method,
-         "integration method: bdf, adams, auto or taylor (the naive end only for zeta <= 100); or fast: "
-         "the certified table (restitution/fast.hpp, 1e-13, no integration, any eps in (0, 1))")
+  cmd->add_option("--method", o->method,
+                  "integration method: " + method_choices([](Method method) {
+                    return method == Method::taylor ? "the naive end only for zeta <= 100" : "";
+                  }) +
+                      "; or fast: the certified table (restitution/fast.hpp, 1e-13, no integration, any eps "
+                      "in (0, 1))")
       ->check(CLI::IsMember(calibration_methods()))
       ->capture_default_str();
   add_material_options(*cmd, o->material);

@@ -82,7 +82,8 @@ void add_fit_data_command(CLI::App& app, Action& chosen) {
                   "accuracy of each solve of tsuji-hertz and linear-dashpot, in [1e-11, 1e-2] (viscoelastic "
                   "Hertz uses the certified fast table, 1e-13)")
       ->capture_default_str();
-  cmd->add_option("--method", o->method, "integration method for those solves: bdf, adams, auto or taylor")
+  cmd->add_option("--method", o->method,
+                  "integration method for those solves: " + alternatives(method_names()))
       ->check(CLI::IsMember(method_names()))
       ->capture_default_str();
   add_material_options(*cmd, o->material);

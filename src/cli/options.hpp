@@ -2,11 +2,13 @@
 #pragma once
 // Option vocabulary shared by the subcommands: names on the command line <-> library enums.
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
 #include <cerrno>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "restitution/collision_solver.hpp"
 
@@ -51,6 +53,35 @@ inline CLI::Validator whole_number_in(long long lo, long long hi) {
           fmt::format("in [{}, {}]", lo, hi)};
 }
 
+// "bdf, adams (NOTE), auto (NOTE) or taylor (NOTE)": every method of kMethods, each followed by what
+// `note` says of it (const char*; "" says nothing), so that a new method appears in every --method help.
+template <typename Note>
+std::string method_choices(Note note) {
+  std::vector<std::string> items;
+  for (const Method method : kMethods) {
+    const std::string said = note(method);
+    items.push_back(said.empty() ? std::string(method_name(method))
+                                 : fmt::format("{} ({})", method_name(method), said));
+  }
+  return alternatives(items);
+}
+
+// What the solver options' --method help says of each method.
+inline const char* method_note(Method method) {
+  switch (method) {
+    case Method::bdf:
+      return "";
+    case Method::adams:
+      return "the naive end only for zeta <= 2000: its tail is stiff";
+    case Method::automatic:
+      return "CVODE, chosen per regime";
+    case Method::taylor:
+      return "Taylor series: about 40x faster than auto, docs/accuracy.md; the naive end only for zeta <= "
+             "100";
+  }
+  return "";
+}
+
 // --law NAME, one of law_names() (the family of docs/contact_laws.md).
 inline void add_law_option(CLI::App& command, std::string& law) {
   command
@@ -69,14 +100,12 @@ inline void add_solver_options(CLI::App& command, SolverArguments& a) {
   command
       .add_option(
           "--tolerance", a.tolerance,
-          "accuracy of eps relative to min(eps, 1 - eps) (read eps when eps is small, one_minus_eps when "
-          "eps is near 1): in [1e-11, 1e-2] for bdf, adams, auto; [1e-13, 1e-2] for taylor")
+          fmt::format(
+              "accuracy of eps relative to min(eps, 1 - eps) (read eps when eps is small, one_minus_eps "
+              "when eps is near 1): in {}",
+              fmt::join(tolerance_ranges(), "; ")))
       ->capture_default_str();
-  command
-      .add_option("--method", a.method,
-                  "integration method: bdf, adams (the naive end only for zeta <= 2000: its tail is stiff), "
-                  "auto (CVODE, chosen per regime) or taylor (Taylor series: about 40x faster than auto, "
-                  "docs/accuracy.md; the naive end only for zeta <= 100)")
+  command.add_option("--method", a.method, "integration method: " + method_choices(method_note))
       ->check(CLI::IsMember(method_names()))
       ->capture_default_str();
 }

@@ -25,9 +25,6 @@ const char* method_name(Method method) {
   return "?";
 }
 
-namespace {
-
-// "a, b or c" for messages.
 std::string alternatives(const std::vector<std::string>& names) {
   std::string out;
   for (std::size_t i = 0; i < names.size(); ++i) {
@@ -36,8 +33,6 @@ std::string alternatives(const std::vector<std::string>& names) {
   }
   return out;
 }
-
-}  // namespace
 
 const std::vector<std::string>& method_names() {
   static const std::vector<std::string> names = [] {

@@ -41,21 +41,14 @@ void check_conditioning(const ContactLaw& law, const SolveOptions& options, cons
   }
 }
 
-// A power of ten as 1e-2 (not {:g}'s 0.01), so that the ranges read as in --help.
-std::string power_of_ten(double x) {
-  return fmt::format("1e{}", std::lround(std::log10(x)));
-}
-
 }  // namespace
 
 void check_solve_options(const SolveOptions& options) {
   const double tol = options.tolerance;
   if (!std::isfinite(tol) || tol < kSmallestTolerance || tol > kMaxTolerance) {
     // The per-engine ranges, as --help and docs/cli.md state them: no method accepts kSmallestTolerance.
-    throw InvalidInput(fmt::format(
-        "tolerance must lie in [{}, {}] for bdf, adams, auto (CVODE) or [{}, {}] for taylor, got {}",
-        power_of_ten(min_tolerance(Method::bdf)), power_of_ten(kMaxTolerance),
-        power_of_ten(min_tolerance(Method::taylor)), power_of_ten(kMaxTolerance), tol));
+    throw InvalidInput(
+        fmt::format("tolerance must lie in {}, got {}", alternatives(tolerance_ranges(true)), tol));
   }
   const double smallest = min_tolerance(options.method);
   if (tol < smallest) {

@@ -2,11 +2,13 @@
 #include "cvode/cvode_run.hpp"
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "restitution/errors.hpp"
 
@@ -28,6 +30,15 @@ Point point_of(const ContactLaw& law, Form form, const TauLog& tau_log, double t
     return {s[kSundmanTau], law.compression_of(s[kFirst]), s[kVelocity], s[kDissipation]};
   }
   return {s[kFirst] - tau_log.offset(t), law.compression_of(t), s[kVelocity], s[kDissipation]};
+}
+
+// The methods a failed solve may be retried with: every method of kMethods but auto, which solves with one.
+std::string retry_methods() {
+  std::vector<std::string> names;
+  for (const Method method : kMethods) {
+    if (method != Method::automatic) names.emplace_back(method_name(method));
+  }
+  return fmt::format("{}", fmt::join(names, ", "));
 }
 
 const char* end_names(EndSet ends) {
@@ -97,9 +108,9 @@ class CollisionRun {
     // What failed, where, and what to try: a looser tolerance or the other engine usually gets through.
     return NumericalFailure{fmt::format(
         "the integration failed for law {} at {}={}, {}, tolerance {:g}, method {}: {}; try a larger "
-        "tolerance or another method (bdf, adams, taylor)",
+        "tolerance or another method ({})",
         law_name(law_.kind()), law_.parameter_name(), law_.parameter(), end_names(options_.ends),
-        options_.tolerance, method_name(plan_.method), what)};
+        options_.tolerance, method_name(plan_.method), what, retry_methods())};
   }
 
   // The naive end was requested but the state entered a region from which x never returns to 0.

@@ -4,8 +4,11 @@
 #include "registry/engine_registry.hpp"
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <vector>
 
 #include "cvode/cvode_engine.hpp"
@@ -43,6 +46,11 @@ std::size_t index_of(Method method) {
   throw InvalidInput(fmt::format("no engine computes method {}", method_name(method)));
 }
 
+// A power of ten as 1e-2 (not {:g}'s 0.01), so that the ranges read as in --help.
+std::string power_of_ten(double x) {
+  return fmt::format("1e{}", std::lround(std::log10(x)));
+}
+
 }  // namespace
 
 const EngineInfo& engine_of(Method method) {
@@ -51,6 +59,19 @@ const EngineInfo& engine_of(Method method) {
 
 double min_tolerance(Method method) {
   return engine_of(method).min_tolerance;
+}
+
+std::vector<std::string> tolerance_ranges(bool name_engines) {
+  std::vector<std::string> out;
+  for (const Entry& entry : entries()) {
+    std::vector<std::string> names;
+    for (const Method method : entry.methods) names.emplace_back(method_name(method));
+    const bool named = name_engines && names.size() > 1;
+    out.push_back(fmt::format("[{}, {}] for {}{}", power_of_ten(entry.info.min_tolerance),
+                              power_of_ten(kMaxTolerance), fmt::join(names, ", "),
+                              named ? fmt::format(" ({})", entry.info.name) : std::string()));
+  }
+  return out;
 }
 
 Engines::Engines() : engines_(entries().size()) {}
