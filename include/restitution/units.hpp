@@ -55,6 +55,9 @@ struct NaturalScales {
   double length_m = 0.0;
 };
 NaturalScales natural_scales(double k, double velocity_m_s);
+// T alone, evaluated as k^{-2/5} · v^{-1/5}: the rounding the DEM check decks' time steps and YADE's k have
+// had (natural_scales' time_s, L / v, may differ in the last bit). Throws InvalidInput naming k or velocity.
+double natural_time_scale_s(double k, double velocity_m_s);
 
 // The coefficients of ContactLaw::physical for one pair: F = k ξ^a + γ ξ^b ξ' on the effective mass m.
 struct PhysicalCoefficients {

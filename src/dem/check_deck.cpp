@@ -47,9 +47,9 @@ double field(const std::string& line, const std::string& key) {
 }  // namespace
 
 double natural_time_s(const Pair& pair, double velocity_m_s) {
-  const double k =
-      hertz_stiffness(pair.effective_modulus_pa, pair.effective_radius_m) / pair.effective_mass_kg;
-  return std::pow(k, -0.4) * std::pow(velocity_m_s, -0.2);
+  return natural_time_scale_s(
+      hertz_stiffness(pair.effective_modulus_pa, pair.effective_radius_m) / pair.effective_mass_kg,
+      velocity_m_s);
 }
 
 bool has_check_deck(Code code) {

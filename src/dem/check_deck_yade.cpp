@@ -73,6 +73,8 @@ SPEEDS = )",
        "# restitution states these lines give at each speed\n"
        "PAIRS = [\n";
   for (const CheckPair& p : r.pairs) {
+    // k as the deck's T = k^-0.4 v^-0.2 gives it back from T at 1 m/s, not k itself: the two differ in the
+    // last bits, and these are the digits the decks have printed.
     const double k_over_m = std::pow(natural_time_s(p.pair, 1.0), -2.5);
     s += fmt::format("    ({}, {}, {}, {}, {}, {}),\n", p.type1, p.type2, p.pair.radius1_m, p.pair.radius2_m,
                      k_over_m, python_list(p.eps_restitution));

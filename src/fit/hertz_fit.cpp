@@ -14,6 +14,7 @@
 
 #include "fit/fit_internal.hpp"
 #include "restitution/fast.hpp"
+#include "restitution/units.hpp"
 
 namespace restitution::fit_detail {
 namespace {
@@ -26,9 +27,10 @@ class HertzChi2 {
  public:
   HertzChi2(const Problem& problem, CollisionEnd end) : problem_(problem), end_(end) {
     const FitData& d = *problem.data;
-    fifth_root_.reserve(d.velocity_m_s.size());
-    for (const double v : d.velocity_m_s) fifth_root_.push_back(std::pow(v, 0.2));
-    const double largest = *std::max_element(fifth_root_.begin(), fifth_root_.end());
+    // ζ = β v^{1/5} is linear in β: each point's ζ per unit β, computed once.
+    zeta_per_beta_.reserve(d.velocity_m_s.size());
+    for (const double v : d.velocity_m_s) zeta_per_beta_.push_back(zeta_from(1.0, v));
+    const double largest = *std::max_element(zeta_per_beta_.begin(), zeta_per_beta_.end());
     u_high_ = std::log(kLargestCheckedZeta / largest);
   }
 
@@ -38,8 +40,8 @@ class HertzChi2 {
   [[nodiscard]] double operator()(double u) const { return chi2_of_beta(std::exp(u)); }
   [[nodiscard]] double chi2_of_beta(double beta) const {
     double sum = 0.0;
-    for (std::size_t i = 0; i < fifth_root_.size(); ++i) {
-      const double r = problem_.data->eps[i] - fast::eps(beta * fifth_root_[i], end_);
+    for (std::size_t i = 0; i < zeta_per_beta_.size(); ++i) {
+      const double r = problem_.data->eps[i] - fast::eps(beta * zeta_per_beta_[i], end_);
       sum += problem_.weight[i] * r * r;
     }
     return sum;
@@ -50,8 +52,8 @@ class HertzChi2 {
     constexpr double h = 1e-4;
     const double beta = std::exp(u);
     double sum = 0.0;
-    for (std::size_t i = 0; i < fifth_root_.size(); ++i) {
-      const double zeta = beta * fifth_root_[i];
+    for (std::size_t i = 0; i < zeta_per_beta_.size(); ++i) {
+      const double zeta = beta * zeta_per_beta_[i];
       const double r = problem_.data->eps[i] - fast::eps(zeta, end_);
       const double d = (fast::eps(zeta * std::exp(h), end_) - fast::eps(zeta * std::exp(-h), end_)) / (2 * h);
       sum += problem_.weight[i] * r * d;
@@ -60,15 +62,15 @@ class HertzChi2 {
   }
   [[nodiscard]] std::vector<double> model(double beta) const {
     std::vector<double> out;
-    out.reserve(fifth_root_.size());
-    for (const double f : fifth_root_) out.push_back(fast::eps(beta * f, end_));
+    out.reserve(zeta_per_beta_.size());
+    for (const double f : zeta_per_beta_) out.push_back(fast::eps(beta * f, end_));
     return out;
   }
 
  private:
   const Problem& problem_;
   CollisionEnd end_;
-  std::vector<double> fifth_root_;
+  std::vector<double> zeta_per_beta_;
   double u_high_ = 0.0;
 };
 

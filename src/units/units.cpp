@@ -81,6 +81,10 @@ NaturalScales natural_scales(double k, double velocity_m_s) {
   return s;
 }
 
+double natural_time_scale_s(double k, double velocity_m_s) {
+  return std::pow(positive(k, "k"), -0.4) * std::pow(positive(velocity_m_s, "velocity"), -0.2);
+}
+
 NaturalScales physical_scales(LawKind kind, const PhysicalCoefficients& c, double velocity_m_s) {
   NaturalScales s;
   s.time_s = physical_time_scale_s(kind, c.stiffness, c.effective_mass_kg, velocity_m_s);
