@@ -72,6 +72,15 @@ TEST(ZetaGrid, EndsAreExactAndSpacingIsEven) {
   EXPECT_EQ(log.back(), 1e3);
   for (std::size_t i = 0; i < log.size(); ++i) EXPECT_NEAR(log[i], std::pow(10.0, -3.0 + i), 1e-12 * log[i]);
   EXPECT_EQ(zeta_values({0.7, 0.7, 1, false}), std::vector<double>{0.7});
+  // No point steps past the range by rounding, linear or logarithmic.
+  EXPECT_EQ(zeta_values({100.0, 100.0, 7, false}), std::vector<double>(7, 100.0));
+  EXPECT_EQ(zeta_values({100.0, 100.0, 7, true}), std::vector<double>(7, 100.0));
+  for (const bool logarithmic : {false, true}) {
+    for (const double z : zeta_values({0.3, 100.0, 1001, logarithmic})) {
+      EXPECT_GE(z, 0.3);
+      EXPECT_LE(z, 100.0);
+    }
+  }
 }
 
 TEST(ZetaGrid, RefusesBadGridsNamingTheKey) {

@@ -2,6 +2,7 @@
 // The ζ values of a sweep.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "restitution/errors.hpp"
@@ -43,7 +44,9 @@ std::vector<double> zeta_values(const ZetaGrid& grid) {
     // Interpolating from both ends keeps the end points exact and the spacing symmetric.
     const double f = last == 0.0 ? 0.0 : static_cast<double>(i) / last;
     const double t = (1.0 - f) * lo + f * hi;
-    zetas[i] = grid.logarithmic ? std::exp(t) : t;
+    // Rounding (and exp of a log) may step a hair past the range: an interior point of the grid 100..100 came
+    // out as 100.00000000000001, which a bound like the Taylor naive end's ζ <= 100 then refused.
+    zetas[i] = std::clamp(grid.logarithmic ? std::exp(t) : t, grid.zeta_min, grid.zeta_max);
   }
   zetas.front() = grid.zeta_min;
   zetas.back() = grid.zeta_max;
