@@ -244,7 +244,9 @@ void add_damping_check_command(CLI::App& app, Action& chosen) {
       ->capture_default_str();
   cmd->add_option("--velocity-min", o->velocity_min, "smallest impact speed in m/s")->capture_default_str();
   cmd->add_option("--velocity-max", o->velocity_max, "largest impact speed in m/s")->capture_default_str();
-  cmd->add_option("--points", o->points, "impact speeds, log-spaced (speed-dependent recipes)")
+  cmd->add_option("--points", o->points,
+                  fmt::format("impact speeds, log-spaced (speed-dependent recipes), in [1, {}]",
+                              damping_check::kMaxSpeedPoints))
       ->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")
       ->capture_default_str();

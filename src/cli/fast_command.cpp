@@ -53,8 +53,13 @@ void add_fast_table_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--out", o->out, "header to write (the repository keeps src/fast/fast_table.h)")
       ->required()
       ->check(non_empty_path());
-  cmd->add_option("--degree", o->settings.degree, "polynomial degree per interval")->capture_default_str();
-  cmd->add_option("--per-unit", o->settings.per_unit, "intervals per unit of ln zeta")->capture_default_str();
+  cmd->add_option(
+         "--degree", o->settings.degree,
+         fmt::format("polynomial degree per interval, in [{}, {}]", fast::kMinDegree, fast::kMaxDegree))
+      ->capture_default_str();
+  cmd->add_option("--per-unit", o->settings.per_unit,
+                  fmt::format("intervals per unit of ln zeta, a whole number in [1, {}]", fast::kMaxPerUnit))
+      ->capture_default_str();
   cmd->add_option("--s-lo", o->settings.s_lo, "ln zeta where the tables start")->capture_default_str();
   cmd->add_option("--s-hi-naive", o->settings.s_hi_naive, "ln zeta where the naive table ends")
       ->capture_default_str();

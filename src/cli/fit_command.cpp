@@ -110,7 +110,9 @@ void add_fit_command(CLI::App& app, Action& chosen) {
       ->check(CLI::IsMember(end_names()));
   cmd->add_option("--zeta-min", o->zeta_min, "smallest zeta of the fit (> 0)")->required();
   cmd->add_option("--zeta-max", o->zeta_max, "largest zeta of the fit")->required();
-  cmd->add_option("--points", o->points, "log-spaced points, ends included (>= 3)")->capture_default_str();
+  cmd->add_option("--points", o->points,
+                  fmt::format("log-spaced points, ends included, in [3, {}]", kMaxFitPoints))
+      ->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance, "accuracy of each fitted eps, in [1e-11, 1e-2]")
       ->capture_default_str();
   cmd->add_flag("--json", o->json,

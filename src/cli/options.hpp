@@ -76,8 +76,9 @@ inline const char* method_note(Method method) {
     case Method::automatic:
       return "CVODE, chosen per regime";
     case Method::taylor:
-      return "Taylor series: about 40x faster than auto, docs/accuracy.md; the naive end only for zeta <= "
-             "100";
+      return "Taylor series: about 9x faster than auto at the same tolerance, bench/RESULTS.md; the naive "
+             "end "
+             "only for zeta <= 100";
   }
   return "";
 }

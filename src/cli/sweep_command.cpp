@@ -186,7 +186,8 @@ void add_sweep_command(CLI::App& app, Action& chosen) {
       ->check(whole_number_in(1, static_cast<long long>(kMaxSweepPoints)));
   cmd->add_flag("--log", o->log, "space the grid logarithmically (needs a minimum > 0); default: linearly");
   add_solver_options(*cmd, o->solver);
-  cmd->add_option("--threads", o->threads, "worker threads, >= 1 (default: all cores)");
+  cmd->add_option("--threads", o->threads,
+                  fmt::format("worker threads, in [1, {}] (default: all cores)", kMaxThreads));
   cmd->add_option("--out", o->out, "the CSV file to write (FILE.partial holds the rows while it runs)")
       ->required()
       ->check(non_empty_path());

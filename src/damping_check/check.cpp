@@ -34,8 +34,8 @@ std::vector<double> speed_grid(double v_min_m_s, double v_max_m_s, int points) {
     throw InvalidInput(fmt::format("--velocity-max must be finite and >= --velocity-min ({}), got {}",
                                    v_min_m_s, v_max_m_s));
   }
-  if (points < 1 || points > 1000)
-    throw InvalidInput(fmt::format("--points must be in [1, 1000], got {}", points));
+  if (points < 1 || points > kMaxSpeedPoints)
+    throw InvalidInput(fmt::format("--points must be in [1, {}], got {}", kMaxSpeedPoints, points));
   // The sweep's grid: log-spaced with both ends exactly the speeds given.
   return zeta_values({.zeta_min = v_min_m_s,
                       .zeta_max = points == 1 ? v_min_m_s : v_max_m_s,

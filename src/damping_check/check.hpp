@@ -63,6 +63,7 @@ CheckResult check_recipe(const CheckRequest& request, CollisionSolver& solver);
 
 // `points` impact speeds [m/s] spaced evenly in log v from v_min to v_max (v_min alone for one point).
 // Throws InvalidInput naming the bad bound or count.
+inline constexpr int kMaxSpeedPoints = 1000;  // speed_grid's largest `points`
 std::vector<double> speed_grid(double v_min_m_s, double v_max_m_s, int points);
 
 // The requested ε of the map: 0.05, 0.10, ..., 0.95 and 0.99.

@@ -417,9 +417,13 @@ std::string fit_laws(const GeneratorSettings& s, TableData& d, long& solves) {
 }  // namespace
 
 TableData generate_tables(const GeneratorSettings& s, const Progress& progress) {
-  if (s.degree < 2 || s.degree > 30) throw InvalidInput(fmt::format("degree {} is not in [2, 30]", s.degree));
-  if (!(s.per_unit >= 1 && s.per_unit <= 64 && s.per_unit == std::round(s.per_unit)))
-    throw InvalidInput(fmt::format("intervals per unit {} is not an integer in [1, 64]", s.per_unit));
+  if (s.degree < kMinDegree || s.degree > kMaxDegree) {
+    throw InvalidInput(fmt::format("degree {} is not in [{}, {}]", s.degree, kMinDegree, kMaxDegree));
+  }
+  if (!(s.per_unit >= 1 && s.per_unit <= kMaxPerUnit && s.per_unit == std::round(s.per_unit))) {
+    throw InvalidInput(
+        fmt::format("intervals per unit {} is not an integer in [1, {}]", s.per_unit, kMaxPerUnit));
+  }
   // The laws above the tables are fitted to reference solves up to 0.6 above s_hi_naive_duration (the naive
   // reference stops at ζ = 1e3) and up to ζ = 1e6 (where the delayed one stops).
   if (!(s.s_lo >= -30 && s.s_lo < s.s_hi_naive && s.s_hi_naive <= s.s_hi_delayed && s.s_hi_naive <= 4 &&

@@ -16,6 +16,8 @@ namespace restitution::fast {
 
 // Random check points per interval: at most this many (fast-table --checks; 2 take about 2 minutes).
 inline constexpr int kMaxChecksPerInterval = 1000;
+inline constexpr int kMinDegree = 2, kMaxDegree = 30;  // GeneratorSettings::degree
+inline constexpr int kMaxPerUnit = 64;                 // GeneratorSettings::per_unit, a whole number >= 1
 
 struct GeneratorSettings {
   int degree = 12;                 // polynomial degree per interval
