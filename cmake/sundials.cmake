@@ -16,11 +16,8 @@ if(RESTITUTION_SUNDIALS_OPTIMIZED)
   execute_process(COMMAND dpkg-query -W -f=\${Version} libsundials-dev OUTPUT_VARIABLE debian_sundials_version
                   RESULT_VARIABLE dpkg_result ERROR_QUIET)
   set(sundials_cache ${PROJECT_SOURCE_DIR}/build/sundials/${debian_sundials_version})
-  if(dpkg_result EQUAL 0)
-    # Idempotent (returns at once when the cache matches the version and scripts/sundials-patches/) and never
-    # fatal: on failure it warns and the fallback below applies.
-    execute_process(COMMAND bash ${PROJECT_SOURCE_DIR}/scripts/sundials)
-  endif()
+  # Configure only reads the cache: building it means apt-get source (and, without a deb-src entry, writing
+  # /etc/apt), which belongs to the set-up (scripts/setup runs scripts/sundials), never to cmake or pip.
   if(dpkg_result EQUAL 0 AND EXISTS ${sundials_cache}/.complete)
     file(GLOB RESTITUTION_SUNDIALS_OBJECTS ${sundials_cache}/objects/*.o)
     # The objects our patches changed, built without them (tests/sundials_patches.cmake).
@@ -47,8 +44,8 @@ if(RESTITUTION_SUNDIALS_BUILD STREQUAL "system")
       SUNDIALS::cvode_shared SUNDIALS::nvecserial_shared SUNDIALS::sunmatrixdense_shared
       SUNDIALS::sunlinsoldense_shared SUNDIALS::sunnonlinsolfixedpoint_shared)
   message(NOTICE "SUNDIALS: Debian's libsundials ${SUNDIALS_VERSION}, compiled without optimization: CVODE "
-                 "solves take 2-3x longer than with the optimized build (bash scripts/sundials; "
-                 "-DRESTITUTION_SUNDIALS_OPTIMIZED=ON)")
+                 "solves take 2-3x longer than with the optimized build (build it with bash scripts/sundials, "
+                 "which bash scripts/setup runs, then configure again)")
 else()
   message(STATUS "SUNDIALS: CVODE ${RESTITUTION_SUNDIALS_VERSION} built -O3 from Debian's source package "
                  "(${sundials_cache}; patches: ${RESTITUTION_SUNDIALS_PATCHES})")
