@@ -7,6 +7,13 @@ include(CMakePackageConfigHelpers)
 
 set(restitution_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/restitution)
 install(TARGETS restitution_lib EXPORT restitutionTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# The CVODE the archive carries stays private to it: its symbols become local (cmake/hide_sundials.sh), so a
+# consumer that links its own SUNDIALS gets its own and restitution keeps the optimized copy.
+if(RESTITUTION_SUNDIALS_BUILD STREQUAL "optimized")
+  install(CODE "execute_process(COMMAND bash ${PROJECT_SOURCE_DIR}/cmake/hide_sundials.sh
+                  \"\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}/$<TARGET_FILE_NAME:restitution_lib>\"
+                  ${RESTITUTION_SUNDIALS_OBJECTS} COMMAND_ERROR_IS_FATAL ANY)")
+endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/restitution DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT restitutionTargets NAMESPACE restitution:: DESTINATION ${restitution_package_dir})
 

@@ -73,6 +73,28 @@ if "$build/restitution" --version | grep -q "SUNDIALS .*(optimized" && ldd "$wor
   exit 1
 fi
 
+# The CVODE the library carries is private to it: the installed archive exports no CVODE, N_Vector or SUNDIALS
+# symbol, and a consumer that calls the system's CVODE itself (tests/install/sundials_beside.cpp) binds its calls
+# to libsundials_cvode.so while restitution's solves keep the library's own copy (local symbols in the program).
+if "$build/restitution" --version | grep -q "SUNDIALS .*(optimized"; then
+  exported=$(nm -g --defined-only "$work/prefix/lib/librestitution.a" | grep -E ' [A-Z] (CVode|N_V|SUN)' || true)
+  [ -z "$exported" ] || { echo "the installed librestitution.a exports SUNDIALS symbols:"; head <<<"$exported"; exit 1; }
+  # shellcheck disable=SC2046  # pkg-config's output is a list of words
+  c++ -o "$work/sundials_beside" "$source/tests/install/sundials_beside.cpp" $(pkg-config --cflags --libs restitution) \
+    -lsundials_cvode -lsundials_nvecserial -ldl
+  beside=$("$work/sundials_beside")
+  grep -qE '^cvode_library .*/libsundials_cvode\.so' <<<"$beside" ||
+    { echo "the consumer's CVodeCreate does not come from the system's libsundials_cvode:"; echo "$beside"; exit 1; }
+  awk '$1 == "own_solve" && $2 + 0 < 1e-6 { ok = 1 } END { exit !ok }' <<<"$beside" ||
+    { echo "the consumer's own CVODE solve is wrong:"; echo "$beside"; exit 1; }
+  local_cvode=$(nm "$work/sundials_beside" | grep -cE ' t CVode' || true)
+  [ "$local_cvode" -gt 0 ] ||
+    { echo "restitution's CVODE is not inside the program as local symbols"; exit 1; }
+  [ "$(awk '$1 == "eps_delayed_recovery" { print $2 }' <<<"$beside")" = \
+    "$("$work/app_pkgconfig" 1 | awk '$1 == "delayed-recovery" { print $2 }')" ] ||
+    { echo "restitution beside the system's SUNDIALS gives another eps:"; echo "$beside"; exit 1; }
+fi
+
 # Default tolerance of SolveOptions: 1e-10. ζ spans the weakly and the strongly damped regime.
 status=0
 for app in "$work/build/app" "$work/app_pkgconfig"; do
