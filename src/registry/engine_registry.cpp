@@ -83,13 +83,4 @@ Engine& Engines::operator()(Method method) {
   return *engines_.at(i);
 }
 
-bool Engines::covers(const ContactLaw& law, const SolveOptions& options) {
-  try {
-    (*this)(options.method).check(law, options);
-    return true;
-  } catch (const InvalidInput&) {
-    return false;
-  }
-}
-
 }  // namespace restitution

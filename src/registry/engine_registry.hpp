@@ -31,8 +31,6 @@ class Engines {
   Engines& operator=(Engines&&) = delete;
 
   Engine& operator()(Method method);
-  // Whether the engine of options.method covers this law, its ends and these options: its check() passes.
-  [[nodiscard]] bool covers(const ContactLaw& law, const SolveOptions& options);
 
  private:
   std::vector<std::unique_ptr<Engine>> engines_;  // one per entry of the table in registry.cpp

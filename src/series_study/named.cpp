@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <utility>
 
 #include "restitution/contact_law.hpp"
@@ -184,9 +185,13 @@ NamedEvaluation evaluate_by_kind(const std::string& kind, std::span<const double
       case Approximation::pade_2011_1_4:
         evaluate = pade_2011_1_4;
         break;
-      default:
+      case Approximation::pade_2011_3_6:
         evaluate = pade_2011_3_6;
         break;
+      case Approximation::naive_series:
+      case Approximation::delayed_recovery_series:
+        throw std::logic_error(
+            "the series are evaluated above");  // no default: a new member must be named here
     }
   }
   // The domain, the same for the command line and Python: the checked range of every solver path and, for a
