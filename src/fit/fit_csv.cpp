@@ -239,7 +239,7 @@ class RowReader {
   RowReader(RecordReader& records, const fit_detail::FitColumns& columns, const std::vector<Field>& header)
       : records_(records), columns_(columns), header_(header) {}
 
-  double number(const std::vector<Field>& row, std::size_t at) const {
+  [[nodiscard]] double number(const std::vector<Field>& row, std::size_t at) const {
     double value = 0.0;
     if (const auto problem = decimal_number(row[at].text, value)) fail(row[at], at, *problem);
     return value;
