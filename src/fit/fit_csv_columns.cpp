@@ -155,9 +155,14 @@ const char* role_name(Role role) {
   return "sigma";
 }
 
+// The header's names for a message: the first ten (a line of 4096 commas would otherwise make a page).
 std::string found(const std::vector<HeaderField>& header) {
+  constexpr std::size_t kShown = 10;
   std::string out;
-  for (const HeaderField& f : header) out += (out.empty() ? "'" : ", '") + quoted_excerpt(f.text) + "'";
+  for (std::size_t i = 0; i < header.size() && i < kShown; ++i) {
+    out += (out.empty() ? "'" : ", '") + quoted_excerpt(header[i].text) + "'";
+  }
+  if (header.size() > kShown) out += fmt::format(" and {} more", header.size() - kShown);
   return out;
 }
 
