@@ -34,5 +34,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/scripts/plots DESTINATION ${restitution_
         FILES_MATCHING PATTERN "*.py" PATTERN "__pycache__" EXCLUDE)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenes DESTINATION ${restitution_share_dir} FILES_MATCHING PATTERN "*.toml")
 install(FILES ${PROJECT_SOURCE_DIR}/data/reference_solutions.csv DESTINATION ${restitution_share_dir}/data)
+# The shipped [[fit]] scenes read their CSV relative to themselves: ../examples/fit/.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples/fit DESTINATION ${restitution_share_dir}/examples FILES_MATCHING PATTERN "*.csv")
 include(${CMAKE_CURRENT_LIST_DIR}/pkgconfig.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/manpage.cmake)

@@ -73,13 +73,13 @@ TEST(FitDataCli, BadInputExitsTwoNamingTheLineAndWritesNothing) {
     const char* text;
     const char* needle;
   };
-  for (const Case& c : {Case{"eps", "v,eps\n1,0.5\n2,1.2\n", ":3: column 'eps'"},
-                        Case{"speed", "v,eps\n1,0.5\n-2,0.4\n", ":3: column 'v'"},
-                        Case{"nan", "v,eps\n1,0.5\n2,nan\n", ":3: column 'eps'"},
-                        Case{"sigma", "v,eps,sigma\n1,0.5,0.1\n2,0.4,0\n", ":3: column 'sigma'"},
-                        Case{"text", "v,eps\n1,0.5\n2,abc\n", "'abc' is not a number"},
-                        Case{"fields", "v,eps\n1,0.5,3\n", ":2: 3 fields"},
-                        Case{"header", "v,e\n1,0.5\n", "unknown column 'e'"}, Case{"empty", "", "empty"},
+  for (const Case& c : {Case{"eps", "v,eps\n1,0.5\n2,1.2\n", ":3:3: column 'eps'"},
+                        Case{"speed", "v,eps\n1,0.5\n-2,0.4\n", ":3:1: column 'v'"},
+                        Case{"nan", "v,eps\n1,0.5\n2,nan\n", ":3:3: column 'eps'"},
+                        Case{"sigma", "v,eps,sigma\n1,0.5,0.1\n2,0.4,0\n", ":3:7: column 'sigma'"},
+                        Case{"text", "v,eps\n1,0.5\n2,abc\n", "'abc' is not a decimal number"},
+                        Case{"fields", "v,eps\n1,0.5,3\n", ":2:1: 3 fields"},
+                        Case{"header", "v,f\n1,0.5\n", "unknown column 'f'"}, Case{"empty", "", "empty"},
                         Case{"one", "v,eps\n1,0.5\n", "restitution-fit-one.csv: 1 point cannot fit"}}) {
     const auto path = write_csv(c.name, c.text);
     const auto r = run_cli("fit-data " + path + " --output " + out.string());

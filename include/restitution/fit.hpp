@@ -26,9 +26,16 @@ struct FitData {
   std::vector<double> sigma;  // empty, or one per point
 };
 
+// The σ a fit takes. χ² = Σ (Δε/σ)² and its sums are formed in double precision: 1/σ² overflows below
+// σ ~ 1e-154 and underflows above ~1e154; within these bounds no sum of a million points leaves the range.
+// (ε lies in (0, 1): a σ above 1 already says the point constrains nothing, one below 1e-16 is finer than a
+// double can resolve ε.)
+inline constexpr double kSmallestFitSigma = 1e-100;
+inline constexpr double kLargestFitSigma = 1e100;
+
 // Throws InvalidInput naming the first bad point (index from 0) or the problem: fewer points than
 // 2 (one parameter, plus one for the scatter when σ is estimated; 1 with σ), sizes that differ, a NaN,
-// ε outside (0, 1), v <= 0, σ <= 0.
+// ε outside (0, 1), v <= 0, σ outside [kSmallestFitSigma, kLargestFitSigma].
 void check_fit_data(const FitData& data);
 
 // One law at one end of the collision. The speed-independent members fit the same ε at either end (only
@@ -43,7 +50,7 @@ struct FitCandidate {
 std::vector<FitCandidate> default_fit_candidates();
 // The default candidates restricted to the named laws (law_from_name; empty: all; viscoelastic-hertz brings
 // both ends), the speed-independent ones at `speed_independent_end` (end_from_name). Throws InvalidInput
-// naming an unknown law or end.
+// naming an unknown law or end, or a law that is not a candidate (naming the candidates).
 std::vector<FitCandidate> fit_candidates(const std::vector<std::string>& law_names,
                                          const std::string& speed_independent_end);
 // "beta" | "zeta" | "damping-ratio": the name of the fitted parameter of a law.
@@ -69,7 +76,7 @@ struct FitInterval {
 // Residuals against ln v: a weighted straight line r = a + b (ln v - mean) (the slope b and its two-sided
 // p-value from the t distribution, or the normal one with known σ) and a Wald-Wolfowitz runs test of the
 // residuals' signs ordered by speed (one-sided p-value for too few runs). Available with >= 3 points and
-// >= 2 distinct speeds.
+// >= 2 distinct speeds; otherwise the verdict is "n/a" and `unavailable` says why.
 struct ResidualTests {
   bool available = false;
   double slope = 0.0;        // d(ε_measured - ε_law)/d ln v
@@ -80,8 +87,9 @@ struct ResidualTests {
   double runs_p_value = 1.0;
   // "none" | "falls-with-speed" (data drop below the law at high speed: plasticity, fracture) |
   // "rises-with-speed" (data below the law at low speed: adhesion) | "runs" (systematic, not monotone):
-  // the verdict at the 1 % level.
-  std::string verdict = "none";
+  // the verdict at the 1 % level; "n/a" when the tests could not run.
+  std::string verdict = "n/a";
+  std::string unavailable = "no fit";  // "too few points" | "one speed" | "no fit"; empty when available
 };
 
 struct LawFit {

@@ -210,6 +210,15 @@ def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=_T
                            _text("method", method), material, law)
 
 
+def _measurements(name, value):
+    """One value per measurement: a 2-D table is refused, not flattened into points it does not hold."""
+    array = _real_array(name, value)
+    if array.ndim > 1:
+        raise ValueError(f"{name} must be one-dimensional (one value per measurement), got an array of shape "
+                         f"{array.shape}")
+    return array.ravel().tolist()
+
+
 def fit_data(v, eps, sigma=None, *, laws=None, speed_independent_end=_SPEED_INDEPENDENT_END, material=None,
              tolerance=_TOLERANCE, method="auto"):
     """Fit measured eps at impact speeds v [m/s] (optional standard deviations sigma) with every candidate law.
@@ -222,13 +231,14 @@ def fit_data(v, eps, sigma=None, *, laws=None, speed_independent_end=_SPEED_INDE
     "aic", "converged", "residual_tests", ...), "best" (index of the lowest AIC), "sigma_estimated" (True
     without sigma: the scatter is estimated from the residuals and the intervals use t quantiles). With a
     Material, the Hertz fits carry "dissipative_constant_s" (A [s]) with its intervals. Raises ValueError for
-    bad data (eps outside (0, 1), v <= 0, sigma <= 0, NaN, too few points).
+    bad data (eps outside (0, 1), v <= 0, sigma outside [1e-100, 1e100], NaN, too few points, an array of more
+    than one dimension) and for a law that is not a candidate.
     """
     if material is not None and not isinstance(material, Material):
         raise TypeError(f"material must be a restitution.Material, got {type(material).__name__}")
-    v = _real_array("v", v).ravel().tolist()
-    eps = _real_array("eps", eps).ravel().tolist()
-    sigma = None if sigma is None else _real_array("sigma", sigma).ravel().tolist()
+    v = _measurements("v", v)
+    eps = _measurements("eps", eps)
+    sigma = None if sigma is None else _measurements("sigma", sigma)
     if laws is not None:
         laws = [_text("laws", law) for law in ([laws] if isinstance(laws, str) else laws)]
     return _core.fit_data(v, eps, sigma, laws, _text("speed_independent_end", speed_independent_end), material,

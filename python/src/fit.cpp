@@ -53,6 +53,7 @@ py::dict fit_dict(const LawFit& f) {
   r["runs_expected"] = f.residuals.runs_expected;
   r["runs_p_value"] = f.residuals.runs_p_value;
   r["verdict"] = f.residuals.verdict;
+  if (!f.residuals.available) r["unavailable"] = f.residuals.unavailable;
   d["residual_tests"] = r;
   if (f.characteristic_velocity_m_s) {
     d["characteristic_velocity_m_s"] = *f.characteristic_velocity_m_s;

@@ -50,3 +50,38 @@ def test_laws_restricts_the_candidates():
 def test_bad_data_raise_value_error(v, eps, sigma):
     with pytest.raises(ValueError):
         restitution.fit_data(v, eps, sigma)
+
+
+# issue 33, items 4, 7 and 9: extreme sigma, laws that are not candidates, untested residuals, 2-D arrays.
+def test_extreme_sigma_is_fitted_or_refused_in_words():
+    v, eps = _data(0.2, "delayed-recovery")
+    for sigma in (1e-100, 1e100):
+        result = restitution.fit_data(v, eps, sigma=[sigma] * len(v))
+        assert all(f["chi2"] == f["chi2"] for f in result["fits"])  # no NaN
+    for sigma in (1e-155, 1e155):
+        with pytest.raises(ValueError, match=r"sigma must be in \[1e-100, 1e\+100\]"):
+            restitution.fit_data(v, eps, sigma=[sigma] * len(v))
+
+
+def test_a_law_that_is_not_a_candidate_is_refused():
+    v, eps = _data(0.2, "delayed-recovery")
+    with pytest.raises(ValueError, match="not a fit candidate: fit-data fits viscoelastic-hertz"):
+        restitution.fit_data(v, eps, laws=["hertz-constant-damping"])
+
+
+def test_residual_tests_that_could_not_run_say_so():
+    result = restitution.fit_data([0.5, 1.0], [0.8, 0.75])
+    for f in result["fits"]:
+        tests = f["residual_tests"]
+        assert tests["available"] is False
+        assert tests["verdict"] == "n/a" and tests["unavailable"] == "too few points"
+
+
+def test_two_dimensional_arrays_are_refused_naming_the_argument():
+    import numpy as np
+
+    v, eps = _data(0.2, "delayed-recovery")
+    for name, args in (("v", (np.array([v, v]), eps + eps)), ("eps", (v + v, np.array([eps, eps]))),
+                       ("sigma", (v, eps, np.full((2, 3), 0.01)))):
+        with pytest.raises(ValueError, match=f"^{name} must be one-dimensional"):
+            restitution.fit_data(*args)

@@ -11,7 +11,9 @@
 #include "cli/commands.hpp"
 #include "cli/fit_data_report.hpp"
 #include "cli/material_options.hpp"
+#include "cli/options.hpp"
 #include "cli/output_files.hpp"
+#include "cli/output_guards.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/fit.hpp"
 #include "restitution/fit_csv.hpp"
@@ -42,7 +44,11 @@ void check_data_of_file(const FitData& data, const std::string& file) {
 
 int run_fit_data(const FitDataOptions& o) {
   // Everything is checked before anything is written.
-  if (!o.output.empty()) check_output_file(o.output);
+  if (!o.output.empty()) {
+    check_output_is_not_input(o.output, {o.file});
+    check_no_folder_through_link(o.output);
+    check_output_file(o.output);
+  }
   FitOptions options;
   options.candidates = fit_candidates(o.laws, o.speed_independent_end);
   options.tolerance = o.tolerance;
@@ -52,7 +58,8 @@ int run_fit_data(const FitDataOptions& o) {
   check_data_of_file(data, o.file);
   const FitResult result = fit_data(data, options);
   const FitReportInput report{o.file, &data, &result, options.k};
-  const std::string json = fit_json(report);
+  // The JSON holds every point: made only when asked for (a million rows make ~100 MB of it).
+  const std::string json = o.json || !o.output.empty() ? fit_json(report) : std::string();
   if (!o.output.empty()) write_file_atomically(o.output, json + "\n");
   fmt::print("{}", o.json ? json + "\n" : fit_table(report));
   if (!o.output.empty() && !o.json) fmt::print("wrote {}\n", o.output);
@@ -68,7 +75,10 @@ void add_fit_data_command(CLI::App& app, Action& chosen) {
       "fit measured eps(v) (CSV: v,eps[,sigma]) with viscoelastic Hertz at both ends, Tsuji and the linear "
       "dash-pot: best parameter, 68 % and 95 % profile intervals, chi2/dof, AIC, residual tests "
       "(docs/fit.md)");
-  cmd->add_option("file", o->file, "CSV with a header naming the columns v [m/s], eps and optionally sigma")
+  cmd->add_option(
+         "file", o->file,
+         "CSV with a header naming the columns v [m/s], eps and optionally sigma (other usual spellings "
+         "and the bounds: docs/fit.md)")
       ->required();
   cmd->add_option(
       "--law", o->laws,
@@ -88,8 +98,11 @@ void add_fit_data_command(CLI::App& app, Action& chosen) {
       ->capture_default_str();
   add_material_options(*cmd, o->material);
   cmd->add_flag("--json", o->json, "print one JSON object instead of the table");
-  cmd->add_option("--output", o->output,
-                  "also write the JSON object to this file (for calibrate --from-fit and dem --from-fit)");
+  cmd->add_option(
+         "--output", o->output,
+         "also write the JSON object to this file (for calibrate --from-fit and dem --from-fit); never "
+         "the input file")
+      ->check(non_empty_path());
   cmd->callback([o, &chosen] { chosen = [o] { return run_fit_data(*o); }; });
 }
 

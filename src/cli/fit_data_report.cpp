@@ -29,6 +29,10 @@ std::string interval_text(const FitInterval& i) {
   return fmt::format("[{}, {}]", bound(i.low, i.low_at_edge), bound(i.high, i.high_at_edge));
 }
 
+std::string verdict_text(const ResidualTests& tests) {
+  return tests.available ? tests.verdict : fmt::format("{} ({})", tests.verdict, tests.unavailable);
+}
+
 namespace {
 
 void residuals_field(JsonWriter& json, const ResidualTests& r) {
@@ -39,7 +43,9 @@ void residuals_field(JsonWriter& json, const ResidualTests& r) {
         .field("slope_p_value", r.slope_p_value);
     json.field("runs", r.runs).field("runs_expected", r.runs_expected).field("runs_p_value", r.runs_p_value);
   }
-  json.field("verdict", r.verdict).end_object();
+  json.field("verdict", r.verdict);
+  if (!r.available) json.field("unavailable", r.unavailable);
+  json.end_object();
 }
 
 void fit_object(JsonWriter& json, const LawFit& f) {
@@ -151,10 +157,10 @@ std::string fit_table(const FitReportInput& in) {
     // No degrees of freedom (as many points as parameters): χ²/dof is undefined, said so rather than nan.
     const std::string chi2_per_dof =
         f.dof > 0 ? fmt::format("{:.4g}", f.chi2_per_dof) : std::string("- (0 dof)");
-    out +=
-        fmt::format("{:<19} {:<17} {:<14} {:<13} {:<27} {:<27} {:>10} {:>10.4g}  {}\n",
-                    law_name(f.candidate.law), end_name(f.candidate.end), f.parameter, value,
-                    interval_text(f.ci68), interval_text(f.ci95), chi2_per_dof, f.aic, f.residuals.verdict);
+    out += fmt::format("{:<19} {:<17} {:<14} {:<13} {:<27} {:<27} {:>10} {:>10.4g}  {}\n",
+                       law_name(f.candidate.law), end_name(f.candidate.end), f.parameter, value,
+                       interval_text(f.ci68), interval_text(f.ci95), chi2_per_dof, f.aic,
+                       verdict_text(f.residuals));
     if (!f.message.empty()) out += fmt::format("  {}: {}\n", law_name(f.candidate.law), f.message);
   }
   if (r.best) {
@@ -180,7 +186,7 @@ std::string fit_table(const FitReportInput& in) {
   }
   out +=
       "residuals: none | falls-with-speed (plasticity?) | rises-with-speed (adhesion?) | runs, at the 1 % "
-      "level\n";
+      "level; n/a: not tested (fewer than 3 points, one speed or no fit)\n";
   return out;
 }
 

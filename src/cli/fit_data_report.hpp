@@ -21,6 +21,9 @@ struct FitReportInput {
 // ("edge" for such a bound).
 void write_interval(JsonWriter& json, const char* name, const FitInterval& interval);
 std::string interval_text(const FitInterval& interval);
+// The residual tests' verdict for a table: "n/a (too few points)" when they could not run, never read as
+// "none" (no systematic deviation).
+std::string verdict_text(const ResidualTests& tests);
 
 // The fields of the report into an open JSON object.
 void write_fit_json(JsonWriter& json, const FitReportInput& in);

@@ -102,7 +102,7 @@ std::string markdown(const scene::FitTask& task, const FitResult& r) {
         "| {} | {} | {} | {} | {} | {} | {:.4g} | {:.4g} | {} |\n", law_name(f.candidate.law),
         end_name(f.candidate.end), f.parameter,
         f.status == FitStatus::converged ? fmt::format("{:.6g}", f.value) : fit_status_name(f.status),
-        interval_text(f.ci68), interval_text(f.ci95), f.chi2_per_dof, f.aic, f.residuals.verdict);
+        interval_text(f.ci68), interval_text(f.ci95), f.chi2_per_dof, f.aic, verdict_text(f.residuals));
   }
   md += "\n";
   if (r.best) {

@@ -29,8 +29,9 @@ void check_point(const FitData& data, std::size_t i) {
   if (!std::isfinite(e) || e <= 0.0 || e >= 1.0) {
     throw InvalidInput(fmt::format("point {}: eps must be in (0, 1), got {}", i, e));
   }
-  if (!data.sigma.empty() && (!std::isfinite(data.sigma[i]) || data.sigma[i] <= 0.0)) {
-    throw InvalidInput(fmt::format("point {}: sigma must be finite and > 0, got {}", i, data.sigma[i]));
+  if (!data.sigma.empty() && !(data.sigma[i] >= kSmallestFitSigma && data.sigma[i] <= kLargestFitSigma)) {
+    throw InvalidInput(fmt::format("point {}: sigma must be in [{:g}, {:g}] (docs/fit.md), got {}", i,
+                                   kSmallestFitSigma, kLargestFitSigma, data.sigma[i]));
   }
 }
 
@@ -137,9 +138,19 @@ std::vector<FitCandidate> fit_candidates(const std::vector<std::string>& law_nam
   const CollisionEnd constant_end = end_from_name(speed_independent_end);
   std::vector<LawKind> laws;
   laws.reserve(law_names.size());
-  for (const std::string& name : law_names) laws.push_back(law_from_name(name));
+  const std::vector<FitCandidate> all = default_fit_candidates();
+  for (const std::string& name : law_names) {
+    const LawKind law = law_from_name(name);
+    if (std::none_of(all.begin(), all.end(), [law](const FitCandidate& c) { return c.law == law; })) {
+      throw InvalidInput(
+          fmt::format("the law {} is not a fit candidate: fit-data fits viscoelastic-hertz, tsuji-hertz and "
+                      "linear-dashpot",
+                      name));
+    }
+    laws.push_back(law);
+  }
   std::vector<FitCandidate> out;
-  for (const FitCandidate& c : default_fit_candidates()) {
+  for (const FitCandidate& c : all) {
     if (!laws.empty() && std::find(laws.begin(), laws.end(), c.law) == laws.end()) continue;
     out.push_back({c.law, c.law == LawKind::viscoelastic_hertz ? c.end : constant_end});
   }

@@ -92,8 +92,13 @@ ResidualTests residual_tests(const Problem& problem, const std::vector<double>& 
   ResidualTests out;
   const FitData& d = *problem.data;
   const auto [lo, hi] = std::minmax_element(d.velocity_m_s.begin(), d.velocity_m_s.end());
-  if (problem.size() < 3 || *lo == *hi) return out;
+  if (problem.size() < 3 || *lo == *hi) {
+    out.unavailable = problem.size() < 3 ? "too few points" : "one speed";
+    return out;
+  }
   out.available = true;
+  out.unavailable.clear();
+  out.verdict = "none";
   std::vector<double> residual(problem.size());
   for (std::size_t i = 0; i < problem.size(); ++i) residual[i] = d.eps[i] - model_eps[i];
   slope_test(problem, residual, out);

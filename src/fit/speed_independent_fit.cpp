@@ -9,6 +9,7 @@
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 #include "fit/fit_internal.hpp"
 #include "restitution/errors.hpp"
@@ -77,6 +78,17 @@ class EpsInverse {
 
   [[nodiscard]] double zeta_high() const { return zeta_high_; }
 
+  // Where the range ends and why (docs/fit.md, "the edge of the checked range").
+  [[nodiscard]] std::string edge() const {
+    if (candidate_.end == CollisionEnd::delayed_recovery) {
+      return fmt::format("zeta = {:g}, the edge of the checked range", zeta_high_);
+    }
+    return fmt::format(
+        "zeta = {:.6g}, the edge of the naive end's range (the closest approach to critical damping, zeta = "
+        "{:g}, where eps -> 0, that the solver accepts)",
+        zeta_high_, 2.0 * std::sqrt(law_exponents(candidate_.law).damping + 1.0));
+  }
+
  private:
   FitCandidate candidate_;
   CollisionSolver& solver_;
@@ -105,8 +117,7 @@ void fit_speed_independent(const Problem& problem, const FitOptions& options, Co
   const auto zeta = inverse.zeta_for(eps_best);
   if (!zeta) {
     fit.status = FitStatus::at_edge;
-    fit.message = fmt::format("eps = {:.6g} lies below eps at zeta = {:g}, the edge of the checked range",
-                              eps_best, inverse.zeta_high());
+    fit.message = fmt::format("eps = {:.6g} lies below eps at {}", eps_best, inverse.edge());
     set_edge_high(fit.ci68);
     set_edge_high(fit.ci95);
     return;
