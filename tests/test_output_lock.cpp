@@ -89,21 +89,26 @@ TEST(OutputLock, AStaleLockIsTakenOver) {
   EXPECT_FALSE(fs::exists(lock_file));
 }
 
-TEST(FolderLock, CreatesTheFolderAndRemovesItOnlyWhenNothingWasWritten) {
+TEST(FolderLock, LocksBesideTheFolderAndRemovesOnlyTheEmptyFoldersItMade) {
   const TempFolder dir;
-  const fs::path folder = dir.path / "a" / "b";
+  const fs::path folder = dir.path / "a" / "b" / "results";
+  const fs::path lock_file = dir.path / "a" / "b" / "results.lock";
+  EXPECT_EQ(cli::folder_lock_path(folder), lock_file);
+  EXPECT_EQ(cli::folder_lock_path(folder / ""), lock_file);
   {
-    const cli::FolderLock lock(folder, "--output 'a/b'");
-    EXPECT_TRUE(fs::exists(folder / ".restitution.lock"));
-    EXPECT_NE(refusal(folder / ".restitution.lock"), "not refused");
+    const cli::FolderLock lock(folder, "--output 'a/b/results'");
+    EXPECT_TRUE(fs::exists(lock_file));
+    EXPECT_FALSE(fs::exists(folder)) << "made by the first file written into it, not by the lock";
+    EXPECT_NE(refusal(lock_file), "not refused");
   }
   EXPECT_FALSE(fs::exists(dir.path / "a")) << "a run that wrote nothing leaves no folder";
   {
-    const cli::FolderLock lock(folder, "--output 'a/b'");
+    const cli::FolderLock lock(folder, "--output 'a/b/results'");
+    fs::create_directories(folder);
     std::ofstream(folder / "report.md") << "done\n";
   }
   EXPECT_TRUE(fs::exists(folder / "report.md"));
-  EXPECT_FALSE(fs::exists(folder / ".restitution.lock"));
+  EXPECT_FALSE(fs::exists(lock_file));
 }
 
 // A sweep of about a second on two threads.
@@ -179,7 +184,7 @@ TEST(CliLock, ASecondRunIntoTheSameFolderIsRefusedAtOnce) {
   const std::string scene = std::string(RESTITUTION_SOURCE_DIR) + "/scenes/trajectory.toml";
   const pid_t first =
       spawn_cli({"run", scene, "--quick", "--output", folder.string()}, dir.path / "first.err");
-  ASSERT_TRUE(wait_for_lock(folder / ".restitution.lock", first));
+  ASSERT_TRUE(wait_for_lock(folder.string() + ".lock", first));
   const std::string other = std::string(RESTITUTION_SOURCE_DIR) + "/scenes/dashpot.toml";
   const auto start = std::chrono::steady_clock::now();
   const auto second = run_cli("run " + other + " --quick --output " + folder.string());
@@ -192,7 +197,7 @@ TEST(CliLock, ASecondRunIntoTheSameFolderIsRefusedAtOnce) {
       << second.err;
   EXPECT_EQ(wait_cli(first), 0) << slurp(dir.path / "first.err");
   EXPECT_TRUE(fs::exists(folder / "report.md"));
-  EXPECT_FALSE(fs::exists(folder / ".restitution.lock"));
+  EXPECT_FALSE(fs::exists(folder.string() + ".lock"));
 }
 
 }  // namespace

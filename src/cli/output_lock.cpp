@@ -90,29 +90,35 @@ OutputLock::~OutputLock() {
   ::close(fd_);
 }
 
-FolderLock::FolderLock(const fs::path& folder, const std::string& what) : folder_(folder) {
-  fs::path existing = folder;
-  while (!existing.empty() && !fs::exists(existing) && existing.has_relative_path()) {
-    created_ = existing;
-    existing = existing.parent_path();
-  }
+FolderLock::FolderLock(const fs::path& folder, const std::string& what) {
+  const fs::path lock_file = folder_lock_path(folder);
+  parent_ = lock_file.parent_path();
+  for (fs::path p = parent_; !p.empty() && !fs::exists(p) && p.has_relative_path(); p = p.parent_path())
+    created_ = p;
   std::error_code error;
-  fs::create_directories(folder, error);
+  fs::create_directories(parent_, error);
   if (error) {
     throw IoError(
-        fmt::format("{}: cannot create the folder '{}': {}", what, folder.string(), error.message()));
+        fmt::format("{}: cannot create the folder '{}': {}", what, parent_.string(), error.message()));
   }
   try {
-    lock_.emplace(folder / ".restitution.lock", what);
+    lock_.emplace(lock_file, what);
   } catch (...) {
-    if (!created_.empty()) remove_empty_folders(folder_, created_);  // never another run's files
+    if (!created_.empty()) remove_empty_folders(parent_, created_);  // never another run's files
     throw;
   }
 }
 
 FolderLock::~FolderLock() {
   lock_.reset();
-  if (!created_.empty()) remove_empty_folders(folder_, created_);
+  if (!created_.empty()) remove_empty_folders(parent_, created_);
+}
+
+fs::path folder_lock_path(const fs::path& folder) {
+  fs::path path = fs::absolute(folder).lexically_normal();
+  if (!path.has_filename()) path = path.parent_path();  // "out/" and "out/." name "out"
+  if (path == path.root_path()) return path / ".restitution.lock";
+  return path.string() + ".lock";
 }
 
 fs::path sweep_lock_path(const fs::path& file) {

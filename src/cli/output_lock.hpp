@@ -25,9 +25,9 @@ class OutputLock {
   int fd_ = -1;
 };
 
-// The lock of an output folder: FOLDER/.restitution.lock. The folder is created for it if missing, and
-// removed again at the end when the command wrote nothing into it (a run that fails leaves no empty folder
-// behind).
+// The lock of an output folder: FOLDER.lock beside it (not inside: the folder itself is made only by the
+// first file written into it, so a run that fails or is killed before that leaves no folder behind). Folders
+// above it are created for the lock file if missing, and removed again at the end when still empty.
 class FolderLock {
  public:
   FolderLock(const std::filesystem::path& folder, const std::string& what);
@@ -36,9 +36,12 @@ class FolderLock {
   FolderLock& operator=(const FolderLock&) = delete;
 
  private:
-  std::filesystem::path folder_, created_;  // created_: the outermost folder made here, or empty
+  std::filesystem::path parent_, created_;  // created_: the outermost folder made here, or empty
   std::optional<OutputLock> lock_;
 };
+
+// The lock file of an output folder: FOLDER.lock beside it (inside it for a file system's root).
+std::filesystem::path folder_lock_path(const std::filesystem::path& folder);
 
 // The lock file of a sweep's output FILE: FILE.lock beside it.
 std::filesystem::path sweep_lock_path(const std::filesystem::path& file);
