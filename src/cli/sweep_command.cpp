@@ -151,18 +151,24 @@ int run_sweep_command(const SweepOptions& o) {
     table.add(point.index, std::move(rows[point.worker].text));
   };
 
+  // A failed write stops the sweep; what FILE.partial holds is valid (nothing is written after the failure).
+  const auto keeping_partial = [&partial_path](const auto& step) {
+    try {
+      step();
+    } catch (const IoError& e) {
+      throw IoError(
+          fmt::format("{}; the finished points in '{}' are kept: run the same command with --resume "
+                      "once it can be written",
+                      e.what(), partial_path.string()));
+    }
+  };
   SweepSummary summary;
-  try {
+  keeping_partial([&] {
     const StopSignals signals;
     ProgressLine progress("sweep");  // ended before any message below
     control.progress = progress.callback();
     summary = run_sweep(zetas, solve, control, grid.law);
-  } catch (const IoError& e) {
-    throw IoError(
-        fmt::format("{}; the finished points in '{}' are kept: run the same command with --resume "
-                    "once the disk has room",
-                    e.what(), partial_path.string()));
-  }
+  });
   const std::size_t finished = summary.computed + summary.skipped;
   if (summary.stopped) {
     const int signal_number = stop_signal_received();
@@ -174,7 +180,7 @@ int run_sweep_command(const SweepOptions& o) {
     return 128 + signal_number;
   }
 
-  table.commit();
+  keeping_partial([&] { table.commit(); });
   fs::remove(partial_path);
   const std::size_t failed = summary.failed + done.failed;
   fmt::print("wrote {}: {} points, {} failed\n", o.out, zetas.size(), failed);
