@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/line_reader.hpp"
 #include "cli/sweep_partial.hpp"
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
@@ -180,6 +181,25 @@ TEST(PartialLine, RoundTripsAndRefusesAnyChangedByte) {
   }
   EXPECT_FALSE(cli::partial_line_row(whole.substr(0, whole.size() - 1)));
   EXPECT_FALSE(cli::partial_line_row(""));
+}
+
+// A block of zeros without a line break (what a crash can leave in a file) is skipped, never held whole.
+TEST(LineReader, AnOverlongLineIsHeldInPartAndSkippedWhole) {
+  const std::size_t kLong = std::size_t{3} << 20;
+  const std::string text = "a\n" + std::string(kLong, '\0') + "\nb\n" + std::string(kLong, '\0');
+  cli::LineReader lines = cli::LineReader::of_text(text);
+  EXPECT_EQ(lines.at(0).text, "a");
+  const cli::LineReader::Line zeros = lines.at(2);
+  EXPECT_TRUE(zeros.complete);
+  EXPECT_EQ(zeros.length, kLong);
+  EXPECT_LE(zeros.text.size(), std::size_t{1} << 20);
+  const cli::LineReader::Line b = lines.at(2 + kLong + 1);
+  EXPECT_EQ(b.text, "b");
+  EXPECT_TRUE(b.complete);
+  const cli::LineReader::Line tail = lines.at(2 + kLong + 3);
+  EXPECT_FALSE(tail.complete);
+  EXPECT_EQ(tail.length, kLong);
+  EXPECT_FALSE(lines.at(text.size()).complete);
 }
 
 }  // namespace

@@ -18,6 +18,8 @@ namespace {
 // 8 windows of 64 KiB: a partial file written by up to 8 workers is read in grid order without re-reading.
 constexpr std::size_t kWindows = 8;
 constexpr std::size_t kWindowBytes = std::size_t{1} << 16;
+// A longer line is held only in part (its text is cut there), whatever the file holds.
+constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
 
 }  // namespace
 
@@ -40,7 +42,7 @@ LineReader::Line LineReader::at(std::uint64_t offset) {
     const std::size_t end = rest.find('\n');
     if (end == std::string_view::npos) break;  // runs past the window: read again from the line's start
     w.last_use = clock_;
-    return {rest.substr(0, end), true};
+    return {rest.substr(0, end), end, true};
   }
   // The least recently used window is read from the line's start, grown until it holds the whole line.
   Window& w = *std::min_element(windows_.begin(), windows_.end(),
@@ -49,15 +51,25 @@ LineReader::Line LineReader::at(std::uint64_t offset) {
   w.last_use = clock_;
   w.bytes.clear();
   std::size_t searched = 0;
-  for (std::size_t want = kWindowBytes;; want *= 2) {
+  for (std::size_t want = kWindowBytes; want <= kMaxLineBytes; want *= 2) {
     const std::size_t held = w.bytes.size();
     w.bytes.resize(want);
     const std::size_t got = read_(offset + held, w.bytes.data() + held, want - held);
     w.bytes.resize(held + got);
     const std::size_t end = std::string_view(w.bytes).find('\n', searched);
-    if (end != std::string_view::npos) return {std::string_view(w.bytes).substr(0, end), true};
+    if (end != std::string_view::npos) return {std::string_view(w.bytes).substr(0, end), end, true};
     searched = w.bytes.size();
-    if (held + got < want) return {w.bytes, false};  // the data ends inside this line
+    if (held + got < want) return {w.bytes, w.bytes.size(), false};  // the data ends inside this line
+  }
+  // Longer than any line the program writes (e.g. a block of zeros a crash left): only its length is found.
+  std::uint64_t length = w.bytes.size();
+  std::string chunk(kWindowBytes, '\0');
+  for (;;) {
+    const std::size_t got = read_(offset + length, chunk.data(), chunk.size());
+    const std::size_t end = std::string_view(chunk.data(), got).find('\n');
+    if (end != std::string_view::npos) return {w.bytes, length + end, true};
+    length += got;
+    if (got < chunk.size()) return {w.bytes, length, false};
   }
 }
 

@@ -22,10 +22,13 @@ class LineReader {
   static LineReader of_text(std::string_view text);
 
   struct Line {
-    std::string_view text;  // without its '\n'; valid until the next call of at()
+    std::string_view text;  // without its '\n'; valid until the next call of at(); cut at 1 MiB
+    std::uint64_t length =
+        0;  // of the whole line without its '\n' (the next line starts at offset + length + 1)
     bool complete = false;  // false: the data ends before a '\n' (a line cut off while being written)
   };
-  // The line that starts at `offset` (at or past the end: an empty, incomplete line).
+  // The line that starts at `offset` (at or past the end: an empty, incomplete line). Holds at most 1 MiB of
+  // a line however long it is.
   Line at(std::uint64_t offset);
 
  private:

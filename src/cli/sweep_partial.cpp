@@ -160,7 +160,7 @@ std::string shortened(std::string_view line) {
 // The line number (1-based) of the line that starts at `offset`; for messages only.
 std::size_t line_number_at(LineReader& lines, std::uint64_t offset) {
   std::size_t number = 1;
-  for (std::uint64_t at = 0; at < offset; ++number) at += lines.at(at).text.size() + 1;
+  for (std::uint64_t at = 0; at < offset; ++number) at += lines.at(at).length + 1;
   return number;
 }
 
@@ -203,7 +203,7 @@ PartialSweep read_partial_sweep(LineReader& lines, const std::filesystem::path& 
     // Cut off while the sweep started (a full disk): no row to keep, the file is written afresh.
     if (!line.complete && std::string_view(*expected).starts_with(line.text)) return partial;
     if (line.text == *expected) {
-      offset += line.text.size() + 1;
+      offset += line.length + 1;
       continue;
     }
     if (line_number == 1) {
@@ -227,10 +227,11 @@ PartialSweep read_partial_sweep(LineReader& lines, const std::filesystem::path& 
     if (!line.complete) break;  // cut off while being written: computed again
     ++line_number;
     const std::uint64_t here = offset;
-    offset += line.text.size() + 1;
+    offset += line.length + 1;
     std::size_t index = 0;
     bool failed = false;
-    if (!valid(line.text, index, failed)) {
+    if (line.length != line.text.size() ||
+        !valid(line.text, index, failed)) {  // a line held in part is no row
       ++partial.dropped;
       if (partial.first_dropped_line == 0) partial.first_dropped_line = line_number;
       continue;
