@@ -13,6 +13,7 @@
 
 #include "cli/line_reader.hpp"
 #include "cli/sweep_partial.hpp"
+#include "cli/sweep_table.hpp"
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/sweep.hpp"
@@ -181,6 +182,31 @@ TEST(PartialLine, RoundTripsAndRefusesAnyChangedByte) {
   }
   EXPECT_FALSE(cli::partial_line_row(whole.substr(0, whole.size() - 1)));
   EXPECT_FALSE(cli::partial_line_row(""));
+}
+
+// A failed point's row keeps its axis columns (ζ, speed, β) and a quoted message with commas and quotes.
+TEST(PartialLine, AFailedRowOfAVelocitySweepIsKeptAndCounted) {
+  const std::vector<double> zetas{0.5, 1.0, 2.0};
+  cli::VelocityAxis axis;
+  axis.velocity_m_s = {0.1, 0.2, 0.3};
+  axis.beta = 0.7;
+  const std::string header = cli::sweep_header(EndSet::both(), &axis);
+  SweepPoint failed;
+  failed.index = 1;
+  failed.zeta = 1.0;
+  failed.error = "CVODE failed, \"flag -1\", at tau=3";
+  std::string text = "# s\n" + cli::partial_header(header) + "\n";
+  cli::append_partial_line(text, 1, cli::sweep_row(failed, EndSet::both(), &axis));
+  const cli::PartialSweep read = cli::parse_partial_sweep(text, "p", "# s", header, zetas);
+  EXPECT_EQ(read.kept, 1U);
+  EXPECT_EQ(read.failed, 1U);
+  EXPECT_EQ(read.dropped, 0U);
+  // The same row with its speed emptied is not one the program writes.
+  std::string damaged = "# s\n" + cli::partial_header(header) + "\n";
+  std::string row = cli::sweep_row(failed, EndSet::both(), &axis);
+  row.replace(row.find(",0.20000000000000001,"), 21, ",,");
+  cli::append_partial_line(damaged, 1, row);
+  EXPECT_EQ(cli::parse_partial_sweep(damaged, "p", "# s", header, zetas).dropped, 1U);
 }
 
 // A block of zeros without a line break (what a crash can leave in a file) is skipped, never held whole.
