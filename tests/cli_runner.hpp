@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace restitution::test_support {
 
@@ -57,5 +58,27 @@ struct TempFolder {
   TempFolder(const TempFolder&) = delete;
   TempFolder& operator=(const TempFolder&) = delete;
 };
+
+// Starts the program in the background with stdout to /dev/null and stderr to `err`; returns its process id.
+inline pid_t spawn_cli(const std::vector<std::string>& arguments, const std::filesystem::path& err) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen(err.c_str(), "w", stderr);
+    std::vector<char*> argv{const_cast<char*>(RESTITUTION_EXE)};
+    for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(RESTITUTION_EXE, argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+// Waits for a process spawn_cli started; its exit status, or 128 + the signal that ended it.
+inline int wait_cli(pid_t pid) {
+  int raw = 0;
+  waitpid(pid, &raw, 0);
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+}
 
 }  // namespace restitution::test_support

@@ -26,6 +26,8 @@ namespace {
 namespace fs = std::filesystem;
 using test_support::run_cli;
 using test_support::slurp;
+using test_support::spawn_cli;
+using test_support::wait_cli;
 
 SolveOptions quick_options() {
   SolveOptions options;
@@ -290,21 +292,6 @@ TEST(CliSweep, OneThreadAndTwoThreadsWriteTheSameBytes) {
   EXPECT_EQ(slurp(dir.path / "one.csv"), slurp(dir.path / "two.csv"));
 }
 
-// Starts the program in the background with stdout/stderr to files; returns its process id.
-pid_t spawn_cli(const std::vector<std::string>& arguments, const fs::path& err) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    std::freopen("/dev/null", "w", stdout);
-    std::freopen(err.c_str(), "w", stderr);
-    std::vector<char*> argv{const_cast<char*>(RESTITUTION_EXE)};
-    for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(RESTITUTION_EXE, argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
 std::size_t line_count(const fs::path& path) {
   const std::string text = slurp(path);
   return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
@@ -322,9 +309,7 @@ int interrupt_after_rows(const std::vector<std::string>& arguments, const fs::pa
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   kill(pid, signal_number);
-  int raw = 0;
-  waitpid(pid, &raw, 0);
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  return wait_cli(pid);
 }
 
 TEST(CliSweep, SignalsKeepFinishedRowsAndResumeFinishesWithoutRecomputing) {

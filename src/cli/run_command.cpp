@@ -12,6 +12,7 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "cli/output_files.hpp"
+#include "cli/output_lock.hpp"
 #include "cli/progress.hpp"
 #include "cli/resource_root.hpp"
 #include "cli/scene_outputs.hpp"
@@ -52,6 +53,8 @@ int run_scene_file(const RunOptions& o) {
   scene::Plan plan =
       scene::plan_scene(s);     // refuses points outside the solver's range before a folder exists
   check_output_folder(folder);  // fail before the work, not after
+  // Before the work too: a second run into the folder is refused at once, not after its own solves.
+  const FolderLock lock(folder, fmt::format("--output '{}'", folder.string()));
 
   scene::RunSettings settings;
   settings.threads = o.threads;

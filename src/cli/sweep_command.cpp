@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `restitution sweep`: ε over a grid of ζ, or of impact speeds with β or a material, in parallel, into one
 // CSV file. Nothing finished is lost: each
-// finished row is appended to FILE.partial (flushed every 100 ms); the table is written in ζ order into
-// FILE.tmp as the rows come, and FILE appears (renamed) only when every point is finished; SIGINT/SIGTERM
-// stop the sweep after the points in progress; --resume continues from FILE.partial.
+// finished row is appended to FILE.partial (flushed every 100 ms, each line with its own checksum); the table
+// is written in ζ order into FILE.tmp as the rows come, and FILE appears (renamed) only when every point is
+// finished; SIGINT/SIGTERM stop the sweep after the points in progress; --resume continues from FILE.partial,
+// keeping every valid row. FILE.lock keeps a second process from writing the same files meanwhile.
 #include <fmt/core.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -18,10 +21,12 @@
 #include "cli/material_options.hpp"
 #include "cli/options.hpp"
 #include "cli/output_files.hpp"
+#include "cli/output_lock.hpp"
 #include "cli/progress.hpp"
 #include "cli/stop_signals.hpp"
 #include "cli/sweep_files.hpp"
 #include "cli/sweep_grid.hpp"
+#include "cli/sweep_partial.hpp"
 #include "cli/sweep_table.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
@@ -54,6 +59,19 @@ std::string settings_line(const SweepOptions& o, const SweepGrid& grid) {
                      number17(o.solver.tolerance));
 }
 
+// A row per worker, formatted on the worker and moved into the table: on its own cache line.
+struct alignas(64) WorkerRow {
+  std::string text;
+};
+
+std::string dropped_note(const PartialSweep& done, const fs::path& partial_path) {
+  if (done.dropped == 0) return "";
+  return fmt::format(
+      " ({} damaged line{} of '{}' dropped, the first at line {}: their points are computed "
+      "again)",
+      done.dropped, done.dropped == 1 ? "" : "s", partial_path.string(), done.first_dropped_line);
+}
+
 int run_sweep_command(const SweepOptions& o) {
   if (o.threads && (*o.threads < 1 || *o.threads > kMaxThreads)) {
     throw InvalidInput(
@@ -82,6 +100,10 @@ int run_sweep_command(const SweepOptions& o) {
   const std::string settings = settings_line(o, grid);
   const std::string header = sweep_header(solve.ends, velocity);
 
+  std::error_code no_folder;  // check_output_file said it can be made; the lock file names it if not
+  if (out.has_parent_path()) fs::create_directories(out.parent_path(), no_folder);
+  // Before the partial file is looked at: a sweep that runs now owns it (and "add --resume" would be wrong).
+  const OutputLock lock(sweep_lock_path(out), fmt::format("--out '{}'", o.out));
   PartialSweep done;
   if (o.resume && !fs::exists(partial_path) && fs::exists(out)) {
     // The sweep finished (FILE.partial is removed only then): recomputing it all would not be a resume.
@@ -97,40 +119,56 @@ int run_sweep_command(const SweepOptions& o) {
           fmt::format("'{}' holds an interrupted sweep: add --resume to continue it, or delete it",
                       partial_path.string()));
     }
-    done = read_partial_sweep(partial_path, settings, header, zetas);
-    fmt::print(stderr, "restitution: resuming: {} of {} points already finished, computing {}\n",
-               done.rows.size(), zetas.size(), zetas.size() - done.rows.size());
+    FileLines lines(partial_path);
+    done = read_partial_sweep(lines.lines(), partial_path, settings, header, zetas);
+    fmt::print(stderr, "restitution: resuming: {} of {} points already finished, computing {}{}\n", done.kept,
+               zetas.size(), zetas.size() - done.kept, dropped_note(done, partial_path));
   }
   // As many buffers as the sweep can have workers (SweepControl::threads, 0: one per core).
   const unsigned writers = threads != 0 ? threads : std::thread::hardware_concurrency();
-  PartialFile partial(partial_path, done.valid_bytes, settings + "\n" + header + "\n", writers);
+  PartialFile partial(partial_path, done.valid_bytes, settings + "\n" + partial_header(header) + "\n",
+                      writers);
 
-  OrderedTable table(out, header, zetas.size());
   SweepControl control;
   control.threads = threads;
-  control.already_done.assign(zetas.size(), false);
-  for (auto& [index, row] : done.rows) {
-    table.slot(index) = std::move(row);
-    control.already_done[index] = true;
-    table.add(index);
+  if (done.kept > 0) {
+    control.already_done.assign(zetas.size(), false);
+    for (std::size_t i = 0; i < zetas.size(); ++i)
+      control.already_done[i] = done.row_offset[i] != PartialSweep::kNotDone;
   }
+  OrderedTable table(out, header, zetas.size(),
+                     done.kept > 0 ? std::move(done.row_offset) : std::vector<std::uint64_t>{}, partial_path);
   control.stop_requested = [] { return stop_signal_received() != 0; };
-  // Each worker formats its own row into its own slot and appends it to its own buffer of the partial file;
-  // only the table's in-order writing is serialized, and it overlaps the other workers' solves.
+  // Each worker formats its row into a string of its own and appends it to its own buffer of the partial
+  // file; only the table's in-order writing is serialized, and it overlaps the other workers' solves.
+  std::vector<WorkerRow> rows(std::max(1U, writers));
   control.point_computed = [&](const SweepPoint& point) {
-    std::string& row = table.slot(point.index);
+    std::string& row = rows.at(point.worker).text;
     row = sweep_row(point, solve.ends, velocity);
     partial.append(point.worker, point.index, row);
   };
-  control.point_finished = [&](const SweepPoint& point) { table.add(point.index); };
+  control.point_finished = [&](const SweepPoint& point) {
+    table.add(point.index, std::move(rows[point.worker].text));
+  };
 
+  // A failed write stops the sweep; what FILE.partial holds is valid (nothing is written after the failure).
+  const auto keeping_partial = [&partial_path](const auto& step) {
+    try {
+      step();
+    } catch (const IoError& e) {
+      throw IoError(
+          fmt::format("{}; the finished points in '{}' are kept: run the same command with --resume "
+                      "once it can be written",
+                      e.what(), partial_path.string()));
+    }
+  };
   SweepSummary summary;
-  {
+  keeping_partial([&] {
     const StopSignals signals;
     ProgressLine progress("sweep");  // ended before any message below
     control.progress = progress.callback();
     summary = run_sweep(zetas, solve, control, grid.law);
-  }
+  });
   const std::size_t finished = summary.computed + summary.skipped;
   if (summary.stopped) {
     const int signal_number = stop_signal_received();
@@ -142,7 +180,7 @@ int run_sweep_command(const SweepOptions& o) {
     return 128 + signal_number;
   }
 
-  table.commit();
+  keeping_partial([&] { table.commit(); });
   fs::remove(partial_path);
   const std::size_t failed = summary.failed + done.failed;
   fmt::print("wrote {}: {} points, {} failed\n", o.out, zetas.size(), failed);

@@ -3,13 +3,8 @@
 
 #include <fmt/core.h>
 
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
-
 #include "cli/output_files.hpp"
 #include "cli/physical_columns.hpp"
-#include "restitution/errors.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -37,11 +32,6 @@ std::vector<std::string> si_columns(EndSet ends, const VelocityAxis* velocity) {
   for (const CollisionEnd end : ends.members()) columns.push_back(duration_column(end));
   for (const std::string& c : si_max_compression_columns()) columns.push_back(c);
   return columns;
-}
-
-[[noreturn]] void damaged(const std::filesystem::path& path, std::size_t line, const std::string& why) {
-  throw InvalidInput(
-      fmt::format("--resume: {}:{}: {}; delete it to start the sweep afresh", path.string(), line, why));
 }
 
 }  // namespace
@@ -93,50 +83,6 @@ std::string sweep_row(const SweepPoint& point, EndSet ends, const VelocityAxis* 
   }
   row += fmt::format(",{},ok,", r.stats.steps);
   return row;
-}
-
-PartialSweep read_partial_sweep(const std::filesystem::path& path, const std::string& settings,
-                                const std::string& header, const std::vector<double>& zetas) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidInput(fmt::format("--resume: cannot read '{}'", path.string()));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parse_partial_sweep(buffer.str(), path, settings, header, zetas);
-}
-
-PartialSweep parse_partial_sweep(const std::string& text, const std::filesystem::path& path,
-                                 const std::string& settings, const std::string& header,
-                                 const std::vector<double>& zetas) {
-  PartialSweep partial;
-  std::size_t line_number = 0;
-  std::size_t begin = 0;
-  while (begin < text.size()) {
-    const std::size_t end = text.find('\n', begin);
-    if (end == std::string::npos) break;  // cut off while being written: computed again
-    const std::string line = text.substr(begin, end - begin);
-    ++line_number;
-    if (line_number == 1 && line != settings) {
-      damaged(path, 1, fmt::format("written by another sweep ('{}', this one is '{}')", line, settings));
-    }
-    if (line_number == 2 && line != header) damaged(path, 2, "its CSV header differs from this sweep's");
-    if (line_number > 2) {
-      const std::size_t comma = line.find(',');
-      char* parsed_end = nullptr;
-      const unsigned long long index = std::strtoull(line.c_str(), &parsed_end, 10);
-      if (comma == std::string::npos || parsed_end != line.c_str() + comma || index >= zetas.size()) {
-        damaged(path, line_number, "not a row of this sweep");
-      }
-      const std::string row = line.substr(comma + 1);
-      if (std::strtod(row.c_str(), nullptr) != zetas[index])
-        damaged(path, line_number, "its zeta differs from the grid's");
-      if (row.find(",failed,") != std::string::npos) ++partial.failed;
-      if (!partial.rows.emplace(index, row).second) damaged(path, line_number, "point listed twice");
-    }
-    begin = end + 1;
-  }
-  if (line_number < 2) damaged(path, line_number, "no settings line and header");
-  partial.valid_bytes = begin;
-  return partial;
 }
 
 }  // namespace restitution::cli

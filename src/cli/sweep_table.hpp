@@ -1,11 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// The CSV table of `restitution sweep` and its partial file. The partial file (FILE.partial) holds a line
-// naming the sweep's settings, the CSV header, then one line per finished point in completion order,
-// prefixed by the point's index; the final file holds the header and the rows in ζ order.
+// The CSV table of `restitution sweep`: the header and the rows in ζ order. (Its partial file, which holds
+// the same rows as they finish: sweep_partial.hpp.)
 #include <cstddef>
-#include <filesystem>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,22 +28,5 @@ struct VelocityAxis {
 std::string sweep_header(EndSet ends, const VelocityAxis* velocity = nullptr);
 // One CSV row (no newline); a failed point has empty numbers, status "failed" and the quoted message.
 std::string sweep_row(const SweepPoint& point, EndSet ends, const VelocityAxis* velocity = nullptr);
-
-// The finished rows of an interrupted sweep, read back from its partial file.
-struct PartialSweep {
-  std::map<std::size_t, std::string> rows;  // index -> row
-  std::size_t failed = 0;
-  std::size_t valid_bytes = 0;  // length of the file up to its last complete line
-};
-
-// Reads a partial file written for the same settings line and header; throws InvalidInput naming the file
-// when it belongs to another sweep or is damaged. An incomplete last line (the program was killed while
-// writing it) is ignored. Rows whose index or ζ does not match `zetas` are refused.
-PartialSweep read_partial_sweep(const std::filesystem::path& path, const std::string& settings,
-                                const std::string& header, const std::vector<double>& zetas);
-// The same on the file's text; `path` names the file in messages.
-PartialSweep parse_partial_sweep(const std::string& text, const std::filesystem::path& path,
-                                 const std::string& settings, const std::string& header,
-                                 const std::vector<double>& zetas);
 
 }  // namespace restitution::cli
