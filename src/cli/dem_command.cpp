@@ -276,9 +276,11 @@ void add_dem_command(CLI::App& app, Action& chosen) {
       fmt::format("also write FILE, a complete input for lammps, liggghts or yade that collides "
                   "the pair at the speeds and prints the eps it measures next to restitution's "
                   "(docs/dem.md); at most {} collisions (type pairs x speeds: {} types at 1 speed, "
-                  "{} at the default 3), yade {} speeds",
+                  "{} at the default 3) and {:.3g} sphere-steps (spheres x steps: radii or speeds far "
+                  "apart need many steps), yade {} speeds",
                   dem::kMaxDeckCollisionsLammps, dem::max_deck_types(dem::Code::lammps, 1),
-                  dem::max_deck_types(dem::Code::lammps, 3), dem::kMaxDeckCollisionsYade));
+                  dem::max_deck_types(dem::Code::lammps, 3), dem::kMaxDeckSphereSteps,
+                  dem::kMaxDeckCollisionsYade));
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, cmd, &chosen] {

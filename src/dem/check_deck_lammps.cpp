@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "dem/check_deck_codes.hpp"
+#include "restitution/errors.hpp"
 
 namespace restitution::dem {
 namespace {
@@ -105,6 +106,14 @@ TimeStep lammps_family_time_step(const CheckDeckRequest& r, int n) {
 std::string lammps_family_check_deck(const CheckDeckRequest& r, int n) {
   const auto [dt, steps] = lammps_family_time_step(r, n);
   const std::vector<Row> rows = rows_of(r);
+  const double sphere_steps = 2.0 * static_cast<double>(rows.size()) * 11.0 * static_cast<double>(steps);
+  if (sphere_steps > kMaxDeckSphereSteps) {
+    throw InvalidInput(fmt::format(
+        "--deck: {} spheres x {} steps (both passes) = {:.3g} sphere-steps; a {} check deck takes at most "
+        "{:.3g} (about three minutes): its collisions differ too much in duration (T grows with the radius "
+        "and with v^(-1/5)), give narrower radii or speeds, or write several decks",
+        2 * rows.size(), 11 * steps, sphere_steps, code_name(r.code), kMaxDeckSphereSteps));
+  }
 
   std::string d = check_deck_preamble(r, n);
   d += fmt::format("\n# pass 1 of 2: dt = T/{} = {} s\n", n, dt);

@@ -4,8 +4,10 @@
 // deck allows (dem::kMaxDeckCollisionsLammps collisions), each in `lmp`, in `liggghts` and under
 // `mpirun -np 2 lmp`. Every deck must print its last check line, every collision's ε within
 // 1e-6 · min(ε, 1 − ε) of the ε the JSON output states, with the spheres apart at the end. One collision more
-// is refused with exit 2 naming the bound, and no file is written. The decks use narrow size and speed ranges
-// so that every collision lasts about as long as the others: the run is then short (about 1e5 steps).
+// is refused with exit 2 naming the bound, and no file is written; so is a deck whose collisions differ so
+// much in duration that it would take more than dem::kMaxDeckSphereSteps. The decks use narrow size and
+// speed ranges so that every collision lasts about as long as the others: the run is then short (about 1e5
+// steps).
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -147,11 +149,6 @@ TEST(DeckBound, OneMoreIsRefusedNamingTheBound) {
       EXPECT_FALSE(std::filesystem::exists(deck)) << code << options;
     }
   }
-  // The bound is the first that fails: the largest allowed deck is written.
-  const auto allowed = run_cli("dem --code lammps" + kSteel + " --radius-range 0.001,0.01 --classes " +
-                               std::to_string(dem::max_deck_types(dem::Code::lammps, 3)) + " --deck " + deck);
-  EXPECT_EQ(allowed.status, 0) << allowed.err;
-  EXPECT_TRUE(std::filesystem::exists(deck));
   // YADE runs each collision as a scene of its own: its bound is lower.
   const auto yade =
       run_cli("dem --code yade --yade-version 2024.02a" + kSteel + " --radius 0.005 --speeds " +
@@ -160,6 +157,22 @@ TEST(DeckBound, OneMoreIsRefusedNamingTheBound) {
   EXPECT_NE(yade.err.find("at most " + std::to_string(dem::kMaxDeckCollisionsYade)), std::string::npos)
       << yade.err;
   EXPECT_FALSE(std::filesystem::exists(deck + ".py"));
+  // Few collisions are not enough: radii 10 um to 10 mm (collisions 1000 times longer than others) would
+  // take about 1e11 sphere-steps.
+  std::string radii;
+  for (int i = 0; i <= 30; ++i) radii += (i > 0 ? "," : "") + std::to_string(1e-5 * std::pow(1e3, i / 30.0));
+  for (const std::string code : {"lammps", "liggghts"}) {
+    const auto slow =
+        run_cli("dem --code " + code + kSteel + " --radius " + radii + " --speeds 1 --deck " + deck);
+    EXPECT_EQ(slow.status, 2) << slow.err;
+    EXPECT_NE(slow.err.find("sphere-steps"), std::string::npos) << slow.err;
+    EXPECT_FALSE(std::filesystem::exists(deck)) << code;
+  }
+  // The bound is the first that fails: the largest allowed deck is written.
+  const auto allowed = run_cli("dem --code lammps" + kSteel + " --radius-range 0.001,0.01 --classes " +
+                               std::to_string(dem::max_deck_types(dem::Code::lammps, 3)) + " --deck " + deck);
+  EXPECT_EQ(allowed.status, 0) << allowed.err;
+  EXPECT_TRUE(std::filesystem::exists(deck));
   // Without --deck the same options are no deck's business.
   const auto lines = run_cli("dem --code lammps" + kSteel + speeds_options(1));
   EXPECT_EQ(lines.status, 0) << lines.err;
