@@ -58,8 +58,10 @@ std::string lammps_family_pass(const CheckDeckRequest& r, double dt, long steps)
                    l.half_width_m, low, l.y_max_m, low, l.z_max_m, r.type_count);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const Pair& p = rows[i].pair->pair;
-    const double y = l.spacing_m * static_cast<double>(i % l.columns);
-    const double z = l.spacing_m * static_cast<double>(i / l.columns);
+    const std::size_t column = i % l.columns;
+    const std::size_t row = i / l.columns;
+    const double y = l.spacing_m * static_cast<double>(column);
+    const double z = l.spacing_m * static_cast<double>(row);
     d += fmt::format("create_atoms {} single {} {} {} units box\n", rows[i].pair->type1, -p.radius1_m, y, z);
     d += fmt::format("create_atoms {} single {} {} {} units box\n", rows[i].pair->type2, p.radius2_m, y, z);
   }

@@ -8,6 +8,7 @@
 // much in duration that it would take more than dem::kMaxDeckSphereSteps. The decks use narrow size and
 // speed ranges so that every collision lasts about as long as the others: the run is then short (about 1e5
 // steps).
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -39,7 +40,8 @@ const std::string kSteel =
 // n numbers from `first` in steps of `step`, joined by `separator`.
 std::string series(std::size_t n, double first, double step, const std::string& separator) {
   std::string s;
-  for (std::size_t i = 0; i < n; ++i) s += (i > 0 ? separator : "") + std::to_string(first + step * i);
+  for (std::size_t i = 0; i < n; ++i)
+    s += (i > 0 ? separator : "") + std::to_string(first + step * static_cast<double>(i));
   return s;
 }
 
@@ -143,7 +145,7 @@ TEST(DeckBound, OneMoreIsRefusedNamingTheBound) {
         " --radius-range 0.001,0.01 --classes " +
             std::to_string(dem::max_deck_types(dem::Code::lammps, 3) + 1)}) {
     for (const std::string code : {"lammps", "liggghts"}) {
-      const auto r = run_cli("dem --code " + code + kSteel + options + " --deck " + deck);
+      const auto r = run_cli(fmt::format("dem --code {}{}{} --deck {}", code, kSteel, options, deck));
       EXPECT_EQ(r.status, 2) << code << options << ":\n" << r.err;
       EXPECT_NE(r.err.find(bound), std::string::npos) << r.err;
       EXPECT_FALSE(std::filesystem::exists(deck)) << code << options;
@@ -163,7 +165,7 @@ TEST(DeckBound, OneMoreIsRefusedNamingTheBound) {
   for (int i = 0; i <= 30; ++i) radii += (i > 0 ? "," : "") + std::to_string(1e-5 * std::pow(1e3, i / 30.0));
   for (const std::string code : {"lammps", "liggghts"}) {
     const auto slow =
-        run_cli("dem --code " + code + kSteel + " --radius " + radii + " --speeds 1 --deck " + deck);
+        run_cli(fmt::format("dem --code {}{} --radius {} --speeds 1 --deck {}", code, kSteel, radii, deck));
     EXPECT_EQ(slow.status, 2) << slow.err;
     EXPECT_NE(slow.err.find("sphere-steps"), std::string::npos) << slow.err;
     EXPECT_FALSE(std::filesystem::exists(deck)) << code;
