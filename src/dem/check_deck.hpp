@@ -49,8 +49,9 @@ struct CheckDeckRequest {
 
 // The most collisions (type pairs × speeds) a check deck holds. LAMMPS and LIGGGHTS run every collision in
 // one system at one dt, about 3e7 sphere-steps a second on one core: 500 collisions take seconds when the
-// collisions last about as long as each other and about a minute when they differ tenfold (radii 1 to 10 mm,
-// speeds 0.1 to 10 m/s). YADE runs each collision as its own scene, about 2 s each.
+// collisions last about as long as each other and a minute or more when they differ tenfold (radii 1 to
+// 10 mm, speeds 0.1 to 10 m/s; kMaxDeckSphereSteps bounds that). YADE runs each collision as its own scene,
+// about 2 s each.
 inline constexpr std::size_t kMaxDeckCollisionsLammps = 500;
 inline constexpr std::size_t kMaxDeckCollisionsYade = 30;
 // LAMMPS and LIGGGHTS: the most sphere-steps (spheres × the steps of both passes) a deck may take, about

@@ -108,6 +108,7 @@ TimeStep lammps_family_time_step(const CheckDeckRequest& r, int n) {
 std::string lammps_family_check_deck(const CheckDeckRequest& r, int n) {
   const auto [dt, steps] = lammps_family_time_step(r, n);
   const std::vector<Row> rows = rows_of(r);
+  // Two spheres a collision; `steps` at dt, then 10 `steps` at dt/10.
   const double sphere_steps = 2.0 * static_cast<double>(rows.size()) * 11.0 * static_cast<double>(steps);
   if (sphere_steps > kMaxDeckSphereSteps) {
     throw InvalidInput(fmt::format(
