@@ -220,6 +220,7 @@ int run_polydisperse(const DemOptions& o) {
   request.code = dem::code_from_name(o.code);
   request.end = end_from_name(o.end);
   set_types(o.types, request);
+  if (o.deck) check_deck_size(request.code, request.types.size(), o.speeds.size());
   request.damping = {o.dissipative_constant, o.eps, o.velocity};
   request.speeds_m_s = o.speeds;
   request.tolerance = o.tolerance;
@@ -270,9 +271,16 @@ void add_dem_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--yade-version", o->yade_version,
                   "YADE version the yade lines are for, e.g. 2023.02a (no vn: a constant eps) or 2024.02a "
                   "(default: yade --version on PATH)");
-  cmd->add_option("--deck", o->deck,
-                  "also write FILE, a complete input for lammps, liggghts or yade that collides the pair at "
-                  "the speeds and prints the eps it measures next to restitution's (docs/dem.md)");
+  cmd->add_option(
+      "--deck", o->deck,
+      fmt::format("also write FILE, a complete input for lammps, liggghts or yade that collides "
+                  "the pair at the speeds and prints the eps it measures next to restitution's "
+                  "(docs/dem.md); at most {} collisions (type pairs x speeds: {} types at 1 speed, "
+                  "{} at the default 3) and {:.3g} sphere-steps (spheres x steps: radii or speeds far "
+                  "apart need many steps), yade {} speeds",
+                  dem::kMaxDeckCollisionsLammps, dem::max_deck_types(dem::Code::lammps, 1),
+                  dem::max_deck_types(dem::Code::lammps, 3), dem::kMaxDeckSphereSteps,
+                  dem::kMaxDeckCollisionsYade));
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, cmd, &chosen] {
@@ -280,6 +288,7 @@ void add_dem_command(CLI::App& app, Action& chosen) {
     chosen = [o] {
       if (o->deck) check_deck_target(*o->deck, dem::code_from_name(o->code));
       if (several_types(o->types)) return run_polydisperse(*o);
+      if (o->deck) check_deck_size(dem::code_from_name(o->code), 1, o->speeds.size());
       o->material = one_pair_material(o->types);
       const std::optional<FromFit> from_fit = apply_from_fit(*o);
       const dem::LinesResult r = compute(*o);

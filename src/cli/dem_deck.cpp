@@ -14,6 +14,12 @@ void check_deck_target(const std::string& path, dem::Code code) {
   check_output_file(path);
 }
 
+void check_deck_size(dem::Code code, std::size_t type_count, std::size_t speed_count) {
+  constexpr std::size_t kDefaultSpeeds = 3;  // v/10, v, 10 v
+  dem::require_deck_size(code, type_count * (type_count + 1) / 2,
+                         speed_count > 0 ? speed_count : kDefaultSpeeds);
+}
+
 std::string write_check_deck(const std::string& path, const dem::CheckDeckRequest& request) {
   write_file_atomically(path, dem::check_deck(request));
   return dem::check_deck_command(request.code, path);

@@ -2,6 +2,7 @@
 #pragma once
 // `restitution dem --deck FILE`: the check deck (dem/check_deck.hpp) for the lines the command prints,
 // written complete or not at all.
+#include <cstddef>
 #include <string>
 
 #include "dem/check_deck.hpp"
@@ -13,6 +14,10 @@ namespace restitution::cli {
 // Before any work: InvalidInput (exit 2) for an empty path or a code without a runnable deck, IoError (exit
 // 3) naming the file when it cannot be written.
 void check_deck_target(const std::string& path, dem::Code code);
+
+// Before any work: InvalidInput (exit 2) naming the bound when the deck of `type_count` atom types (every
+// pair I <= J) at `speed_count` speeds (0: the default v/10, v, 10 v) would exceed dem::max_deck_collisions.
+void check_deck_size(dem::Code code, std::size_t type_count, std::size_t speed_count);
 
 // Writes the deck `request` describes to `path` (complete or not at all) and returns the command that runs
 // it. A set of several atom types fills `request` itself: type_count and one CheckPair per type pair I <= J.

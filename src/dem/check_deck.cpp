@@ -17,6 +17,7 @@ void validate(const CheckDeckRequest& r) {
   require_check_deck(r.code);
   if (r.pairs.empty() || r.speeds_m_s.empty())
     throw InvalidInput("a check deck needs at least one type pair and one speed");
+  require_deck_size(r.code, r.pairs.size(), r.speeds_m_s.size());
   for (const double v : r.speeds_m_s) {
     if (!std::isfinite(v) || v <= 0.0)
       throw InvalidInput(fmt::format("a check deck's speeds must be finite and > 0 m/s, got {}", v));
@@ -50,6 +51,27 @@ double natural_time_s(const Pair& pair, double velocity_m_s) {
   return natural_time_scale_s(
       hertz_stiffness(pair.effective_modulus_pa, pair.effective_radius_m) / pair.effective_mass_kg,
       velocity_m_s);
+}
+
+std::size_t max_deck_collisions(Code code) {
+  return code == Code::yade ? kMaxDeckCollisionsYade : kMaxDeckCollisionsLammps;
+}
+
+std::size_t max_deck_types(Code code, std::size_t speeds) {
+  std::size_t n = 0;
+  while ((n + 1) * (n + 2) / 2 * speeds <= max_deck_collisions(code)) ++n;
+  return n;
+}
+
+void require_deck_size(Code code, std::size_t type_pairs, std::size_t speeds) {
+  const std::size_t most = max_deck_collisions(code);
+  if (type_pairs * speeds <= most) return;
+  throw InvalidInput(
+      fmt::format("--deck: {} type pair{} x {} speed{} = {} collisions; a {} check deck holds at most {} (so "
+                  "that it runs "
+                  "in minutes): give fewer atom types (--radius, --classes) or speeds (--speeds)",
+                  type_pairs, type_pairs == 1 ? "" : "s", speeds, speeds == 1 ? "" : "s", type_pairs * speeds,
+                  code_name(code), most));
 }
 
 bool has_check_deck(Code code) {

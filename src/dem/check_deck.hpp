@@ -13,6 +13,7 @@
 // (one line). eps_code = (10 eps_dt - eps_10dt) / 9, rel_diff = (eps_code - eps_restitution) /
 // eps_restitution, gap_m the distance between the surfaces at the end of the fine run (> 0: the contact is
 // over). Runnable here: LAMMPS (`lmp -in FILE`), LIGGGHTS (`liggghts -in FILE`), YADE (`yade -n -x FILE`).
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -46,6 +47,24 @@ struct CheckDeckRequest {
   std::string yade_version;  // YADE: the version the lines are for; the deck warns when another one runs it
 };
 
+// The most collisions (type pairs × speeds) a check deck holds. LAMMPS and LIGGGHTS run every collision in
+// one system at one dt, about 3e7 sphere-steps a second on one core: 500 collisions take seconds when the
+// collisions last about as long as each other and a minute or more when they differ tenfold (radii 1 to
+// 10 mm, speeds 0.1 to 10 m/s; kMaxDeckSphereSteps bounds that). YADE runs each collision as its own scene,
+// about 2 s each.
+inline constexpr std::size_t kMaxDeckCollisionsLammps = 500;
+inline constexpr std::size_t kMaxDeckCollisionsYade = 30;
+// LAMMPS and LIGGGHTS: the most sphere-steps (spheres × the steps of both passes) a deck may take, about
+// three minutes on one core. The steps grow with how much longer the longest collision lasts than the
+// shortest (T ∝ R v^{-1/5}): 17 classes of radii 1 to 10 mm at 0.1, 1 and 10 m/s take 2.2e9.
+inline constexpr double kMaxDeckSphereSteps = 5e9;
+std::size_t max_deck_collisions(Code code);
+// The most atom types whose every pair I <= J fits in one deck at `speeds` speeds.
+std::size_t max_deck_types(Code code, std::size_t speeds);
+// InvalidInput naming the bound unless type_pairs × speeds <= max_deck_collisions(code) (and both > 0 are
+// left to check_deck()).
+void require_deck_size(Code code, std::size_t type_pairs, std::size_t speeds);
+
 // False for MercuryDPM and Chrono: they are C++ libraries, not programs with an input file, and not packaged.
 bool has_check_deck(Code code);
 // InvalidInput saying why unless has_check_deck(code).
@@ -54,7 +73,8 @@ void require_check_deck(Code code);
 std::string check_deck_command(Code code, const std::string& path);
 
 // The deck's text. Throws InvalidInput for a code without a check deck, no pairs or speeds, a pair whose
-// eps_restitution does not have one value per speed, or types outside 1..type_count.
+// eps_restitution does not have one value per speed, types outside 1..type_count, more collisions than
+// max_deck_collisions or (LAMMPS, LIGGGHTS) more sphere-steps than kMaxDeckSphereSteps.
 std::string check_deck(const CheckDeckRequest& request);
 
 // One check line read back.

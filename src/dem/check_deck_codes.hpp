@@ -26,6 +26,18 @@ struct TimeStep {
   long steps = 0;
 };
 TimeStep lammps_family_time_step(const CheckDeckRequest& r, int n);
+// Where the collisions sit: a square grid in the y-z plane, `spacing_m` (4 largest radii) apart, each pair
+// touching at x = 0 and closing along x, so no sphere ever reaches another collision's. The box holds the
+// grid and, along x, the farthest a sphere flies in the run: it grows with the square root of the number of
+// collisions, not with the number, and keeps the codes' bins (neighbour lists, atom sorting) few.
+struct Layout {
+  double reach_m = 0.0;                 // the largest radius
+  double spacing_m = 0.0;               // between neighbouring collisions
+  std::size_t columns = 1;              // collisions per row along y; row k at z = k spacing
+  double half_width_m = 0.0;            // the box along x: [-half_width, half_width]
+  double y_max_m = 0.0, z_max_m = 0.0;  // the box along y and z: [-spacing/2, max]
+};
+Layout lammps_family_layout(const CheckDeckRequest& r, double run_s);
 std::string lammps_family_pass(const CheckDeckRequest& r, double dt, long steps);
 // The whole deck: both passes (dt = T/n, then T/(10 n)) and the check lines.
 std::string lammps_family_check_deck(const CheckDeckRequest& r, int n);

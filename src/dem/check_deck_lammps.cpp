@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The LAMMPS and LIGGGHTS check deck: both read LAMMPS's input language. One simulation holds every type
-// pair at every speed, each collision a pair of touching spheres closing along x on its own row (20 radii
-// apart, out of each other's reach); the deck runs it at the coarse dt, keeps each ε in a variable (`clear`
+// pair at every speed, each collision a pair of touching spheres closing along x, on a square grid in the y-z
+// plane (lammps_family_layout: out of each other's reach, in a box that grows with the square root of their
+// number); the deck runs it at the coarse dt, keeps each ε in a variable (`clear`
 // keeps variables), runs it again at the fine dt and prints the check lines. Per-atom lookups (vx[i]) work
 // under MPI too: the deck runs unchanged with `mpirun -np N`.
 #include <fmt/core.h>
@@ -10,6 +11,7 @@
 #include <cmath>
 
 #include "dem/check_deck_codes.hpp"
+#include "restitution/errors.hpp"
 
 namespace restitution::dem {
 namespace {
@@ -29,23 +31,39 @@ std::vector<Row> rows_of(const CheckDeckRequest& r) {
 
 }  // namespace
 
+Layout lammps_family_layout(const CheckDeckRequest& r, double run_s) {
+  Layout l;
+  for (const CheckPair& p : r.pairs) l.reach_m = std::max({l.reach_m, p.pair.radius1_m, p.pair.radius2_m});
+  const std::size_t rows = r.pairs.size() * r.speeds_m_s.size();
+  l.columns = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(rows))));
+  l.spacing_m = 4.0 * l.reach_m;
+  // Each sphere leaves at most half the impact speed (ε <= 1), for at most the whole run.
+  const double v_max = *std::max_element(r.speeds_m_s.begin(), r.speeds_m_s.end());
+  l.half_width_m = 4.0 * l.reach_m + 0.5 * v_max * run_s;
+  l.y_max_m = l.spacing_m * (static_cast<double>(l.columns) - 0.5);
+  l.z_max_m = l.spacing_m * (std::ceil(static_cast<double>(rows) / static_cast<double>(l.columns)) - 0.5);
+  return l;
+}
+
 std::string lammps_family_pass(const CheckDeckRequest& r, double dt, long steps) {
   const std::vector<Row> rows = rows_of(r);
-  double reach = 0.0;  // the largest radius
-  for (const CheckPair& p : r.pairs) reach = std::max({reach, p.pair.radius1_m, p.pair.radius2_m});
-  const double spacing = 20.0 * reach;
-  const double box = spacing * static_cast<double>(rows.size() + 1);
+  const Layout l = lammps_family_layout(r, dt * static_cast<double>(steps));
   std::string d = "units si\n";
   d += r.code == Code::liggghts ? "atom_style granular\nnewton off\ncommunicate single vel yes\n"
                                 : "atom_style sphere\ncomm_modify vel yes\n";
-  d += "atom_modify map array\nboundary f f f\n";
-  d += fmt::format("region box block {0} {1} {0} {1} {0} {1} units box\ncreate_box {2} box\n", -box, box,
-                   r.type_count);
+  // No atom sorting: the spheres never mix, and its bins are the codes' first limit on the box.
+  d += "atom_modify map array sort 0 0.0\nboundary f f f\n";
+  const double low = -0.5 * l.spacing_m;
+  d += fmt::format("region box block {} {} {} {} {} {} units box\ncreate_box {} box\n", -l.half_width_m,
+                   l.half_width_m, low, l.y_max_m, low, l.z_max_m, r.type_count);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const Pair& p = rows[i].pair->pair;
-    const double y = spacing * static_cast<double>(i);
-    d += fmt::format("create_atoms {} single {} {} 0 units box\n", rows[i].pair->type1, -p.radius1_m, y);
-    d += fmt::format("create_atoms {} single {} {} 0 units box\n", rows[i].pair->type2, p.radius2_m, y);
+    const std::size_t column = i % l.columns;
+    const std::size_t row = i / l.columns;
+    const double y = l.spacing_m * static_cast<double>(column);
+    const double z = l.spacing_m * static_cast<double>(row);
+    d += fmt::format("create_atoms {} single {} {} {} units box\n", rows[i].pair->type1, -p.radius1_m, y, z);
+    d += fmt::format("create_atoms {} single {} {} {} units box\n", rows[i].pair->type2, p.radius2_m, y, z);
   }
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const Pair& p = rows[i].pair->pair;
@@ -60,7 +78,7 @@ std::string lammps_family_pass(const CheckDeckRequest& r, double dt, long steps)
   }
   d += "# the lines `restitution dem` printed, unchanged:\n";
   for (const std::string& line : r.lines) d += line + "\n";
-  d += fmt::format("neighbor {} bin\nneigh_modify delay 0\n", reach);
+  d += fmt::format("neighbor {} bin\nneigh_modify delay 0\n", l.reach_m);
   d += fmt::format("timestep {}\nfix integrate all nve/sphere\nthermo {}\nrun {}\n", dt, steps, steps);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const Pair& p = rows[i].pair->pair;
@@ -90,6 +108,15 @@ TimeStep lammps_family_time_step(const CheckDeckRequest& r, int n) {
 std::string lammps_family_check_deck(const CheckDeckRequest& r, int n) {
   const auto [dt, steps] = lammps_family_time_step(r, n);
   const std::vector<Row> rows = rows_of(r);
+  // Two spheres a collision; `steps` at dt, then 10 `steps` at dt/10.
+  const double sphere_steps = 2.0 * static_cast<double>(rows.size()) * 11.0 * static_cast<double>(steps);
+  if (sphere_steps > kMaxDeckSphereSteps) {
+    throw InvalidInput(fmt::format(
+        "--deck: {} spheres x {} steps (both passes) = {:.3g} sphere-steps; a {} check deck takes at most "
+        "{:.3g} (about three minutes): its collisions differ too much in duration (T grows with the radius "
+        "and with v^(-1/5)), give narrower radii or speeds, or write several decks",
+        2 * rows.size(), 11 * steps, sphere_steps, code_name(r.code), kMaxDeckSphereSteps));
+  }
 
   std::string d = check_deck_preamble(r, n);
   d += fmt::format("\n# pass 1 of 2: dt = T/{} = {} s\n", n, dt);
