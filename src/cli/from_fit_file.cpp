@@ -72,31 +72,32 @@ class ReportReader {
     return *it;
   }
 
-  bool boolean(const Json& v, const std::string& key) const {
+  [[nodiscard]] bool boolean(const Json& v, const std::string& key) const {
     if (!v.is_boolean()) refuse(key, fmt::format("must be true or false, got {}", shown(v)));
     return v.get<bool>();
   }
 
-  const std::string& text(const Json& v, const std::string& key) const {
+  [[nodiscard]] const std::string& text(const Json& v, const std::string& key) const {
     if (!v.is_string()) refuse(key, fmt::format("must be a string, got {}", shown(v)));
     return v.get_ref<const std::string&>();
   }
 
-  double finite(const Json& v, const std::string& key) const {
+  [[nodiscard]] double finite(const Json& v, const std::string& key) const {
     if (!v.is_number()) refuse(key, fmt::format("must be a number, got {}", shown(v)));
     const double x = v.get<double>();
     if (!std::isfinite(x)) refuse(key, fmt::format("must be a finite number, got {}", x));
     return x;
   }
 
-  double nonnegative(const Json& v, const std::string& key) const {
+  [[nodiscard]] double nonnegative(const Json& v, const std::string& key) const {
     const double x = finite(v, key);
     if (x < 0.0) refuse(key, fmt::format("must be >= 0, got {}", x));
     return x;
   }
 
   // A whole number in [low, high].
-  std::size_t index(const Json& v, const std::string& key, std::size_t low, std::size_t high) const {
+  [[nodiscard]] std::size_t index(const Json& v, const std::string& key, std::size_t low,
+                                  std::size_t high) const {
     std::optional<std::uint64_t> n;
     if (v.is_number_unsigned()) {
       n = v.get<std::uint64_t>();
@@ -229,7 +230,7 @@ std::vector<std::string> rejections(const std::vector<Entry>& fits, std::size_t 
   // With σ given, χ² of a law that describes the data follows the χ² distribution of n − 1 degrees of
   // freedom; with σ estimated from the residuals χ²/dof is that estimate and tests nothing.
   if (!sigma_estimated && points > 1) {
-    const double dof = static_cast<double>(points - 1);
+    const auto dof = static_cast<double>(points - 1);
     const double p = boost::math::cdf(boost::math::complement(boost::math::chi_squared(dof), f.chi2));
     if (p < kSignificance) {
       out.push_back(
