@@ -185,5 +185,19 @@ TEST(FromFit, AnAcceptedFitCarriesItsIntervalsAndTheOtherEndIsNotTheBest) {
       << naive;
 }
 
+// Noise-free data of one ε: the speed-independent fits have zero-width intervals whose bounds come out a
+// rounding step apart in either order, and σ is estimated, so χ² tests nothing: the report is read, and the
+// one reason left is the lower AIC of Tsuji.
+TEST(FromFit, AReportOfNoiseFreeDataIsReadAndOnlyTheAicSpeaks) {
+  const TempFolder folder;
+  const std::filesystem::path file = folder.path / "exact.json";
+  fit_report(write(folder.path / "exact.csv", "v,eps\n0.5,0.8\n1,0.8\n2,0.8\n"), file);
+  const auto r = run_cli("calibrate --json --velocity 1 --from-fit " + file.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["hertz_fit_rejected"].size(), 1U) << j;
+  EXPECT_NE(j["hertz_fit_rejected"][0].get<std::string>().find("tsuji-hertz"), std::string::npos) << j;
+}
+
 }  // namespace
 }  // namespace restitution
