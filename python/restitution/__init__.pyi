@@ -129,11 +129,11 @@ class Calibration:
     @property
     def parameter(self) -> float: ...
     @property
-    def beta(self) -> float: ...  # s^(1/5) m^(-1/5)
+    def beta(self) -> Optional[float]: ...  # s^(1/5) m^(-1/5); None unless law is viscoelastic-hertz
     @property
     def eps_at_zeta(self) -> float: ...
     @property
-    def characteristic_velocity(self) -> float: ...  # g*, m/s
+    def characteristic_velocity(self) -> Optional[float]: ...  # g*, m/s; None unless law is viscoelastic-hertz
     @property
     def dissipative_constant(self) -> Optional[float]: ...  # A, s
     @property

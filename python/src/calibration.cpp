@@ -15,6 +15,21 @@
 namespace py = pybind11;
 
 namespace restitution::python {
+namespace {
+
+// β and g* belong to viscoelastic Hertz (restitution/calibration.hpp): the other laws have none, which
+// Python says with None, as the CLI leaves them out, rather than with the struct's placeholder 0.
+template <double Calibration::*member>
+std::optional<double> hertz_only(const Calibration& c) {
+  if (c.law != LawKind::viscoelastic_hertz) return std::nullopt;
+  return c.*member;
+}
+
+std::string optional_text(const std::optional<double>& x) {
+  return x ? fmt::format("{:.17g}", *x) : std::string("None");
+}
+
+}  // namespace
 
 void bind_calibration(py::module_& m) {
   py::class_<Calibration>(m, "Calibration", "The damping that gives a measured eps at an impact speed.")
@@ -24,20 +39,23 @@ void bind_calibration(py::module_& m) {
           "law", [](const Calibration& c) { return law_name(c.law); }, "The contact law's name.")
       .def_readonly("parameter", &Calibration::parameter,
                     "The law's parameter: zeta, or the damping ratio r = zeta/2 for the linear dash-pot.")
-      .def_readonly("beta", &Calibration::beta,
-                    "beta = zeta / v^(1/5) [s^(1/5) m^(-1/5)] (viscoelastic Hertz; 0 for other laws).")
+      .def_property_readonly(
+          "beta", &hertz_only<&Calibration::beta>,
+          "beta = zeta / v^(1/5) [s^(1/5) m^(-1/5)] (viscoelastic Hertz; None for other laws).")
       .def_readonly("eps_at_zeta", &Calibration::eps_at_zeta, "eps re-solved at zeta, for the record.")
-      .def_readonly("characteristic_velocity", &Calibration::characteristic_velocity_m_s,
-                    "The 1999 paper's g* = (C1 beta)^(-5) [m/s].")
+      .def_property_readonly(
+          "characteristic_velocity", &hertz_only<&Calibration::characteristic_velocity_m_s>,
+          "The 1999 paper's g* = (C1 beta)^(-5) [m/s] (viscoelastic Hertz; None for other laws).")
       .def_readonly("dissipative_constant", &Calibration::dissipative_constant_s,
                     "A [s] for the material, or None without one.")
       .def_readonly("solves", &Calibration::solves, "Collisions integrated by the root finder.")
       .def("__repr__", [](const Calibration& c) {
         return fmt::format(
-            "Calibration(zeta={:.17g}, beta={:.17g}, characteristic_velocity={:.17g}, "
+            "Calibration(law='{}', zeta={:.17g}, beta={}, characteristic_velocity={}, "
             "dissipative_constant={})",
-            c.zeta, c.beta, c.characteristic_velocity_m_s,
-            c.dissipative_constant_s ? fmt::format("{:.17g}", *c.dissipative_constant_s) : "None");
+            law_name(c.law), c.zeta, optional_text(hertz_only<&Calibration::beta>(c)),
+            optional_text(hertz_only<&Calibration::characteristic_velocity_m_s>(c)),
+            optional_text(c.dissipative_constant_s));
       });
   m.def(
       "calibrate",

@@ -123,9 +123,11 @@ void add_calibrate_command(CLI::App& app, Action& chosen) {
       "calibrate", "beta (and A for a material, and the 1999 g*) from a measured eps at one impact speed");
   add_law_option(*cmd, o->law);
   cmd->add_option("--eps", o->eps, "measured coefficient of restitution, in (0, 1)");
-  cmd->add_option("--from-fit", o->from_fit,
-                  "instead of --eps: the JSON of fit-data --output; beta, eps at --velocity and A with the "
-                  "intervals the fit carries over (the Hertz fit with the lowest AIC, or at --end if given)");
+  cmd->add_option(
+      "--from-fit", o->from_fit,
+      "instead of --eps: the JSON of fit-data --output; beta, eps at --velocity and A with the "
+      "intervals the fit carries over (the Hertz fit with the lowest AIC, or at --end if given; one the fit "
+      "itself rejects is said so, without intervals)");
   cmd->add_option("--velocity", o->velocity, "impact speed v > 0 in m/s")->required();
   cmd->add_option("--end", o->end, "end of the collision the measurement corresponds to")
       ->check(CLI::IsMember(end_names()))

@@ -256,7 +256,8 @@ void add_dem_command(CLI::App& app, Action& chosen) {
   cmd->add_option(
       "--from-fit", o->from_fit,
       "instead of --eps or --dissipative-constant: the JSON of fit-data --output; A from its Hertz fit "
-      "(at --end if given, else the lowest AIC) with the uncertainty it carries over");
+      "(at --end if given, else the lowest AIC) with the uncertainty it carries over (none when the fit "
+      "itself rejects it, said so)");
   cmd->add_option("--end", o->end,
                   "end of the collision: naive (no clamp) or delayed-recovery (force clamped)")
       ->check(CLI::IsMember(end_names()))

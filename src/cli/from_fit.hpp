@@ -1,31 +1,20 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// Reading the result of `fit-data --output FILE` (docs/fit.md) for `calibrate --from-fit`: the viscoelastic
-// Hertz fit whose β and intervals carry over, and what they give at one speed.
+// What the viscoelastic Hertz fit of `fit-data --output FILE` (docs/fit.md, cli/from_fit_file.hpp) gives
+// `calibrate --from-fit` and `dem --from-fit`: β and its intervals, and what they give at one speed.
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "restitution/contact_law.hpp"
-#include "restitution/fit.hpp"
+#include "cli/from_fit_file.hpp"
 
 namespace restitution::cli {
 
-struct FitCarryOver {
-  CollisionEnd end = CollisionEnd::delayed_recovery;
-  double beta = 0.0;
-  FitInterval ci68, ci95;
-  bool sigma_estimated = false;
-  std::size_t points = 0;
-};
-
-// The converged viscoelastic Hertz fit at `end` (nullopt: the one with the lowest AIC). Throws InvalidInput
-// naming the file when it cannot be read, is not a fit-data report, or has no such converged fit.
-FitCarryOver read_fit_result(const std::filesystem::path& path, std::optional<CollisionEnd> end);
-
-// ε at speed v [m/s] for β and its interval (ε decreases with β, so the bounds swap; a β bound at the edge
-// gives no ε bound: NaN and the flag set).
+// ε at speed v [m/s] for β and its interval (ε decreases with β, so the bounds swap; a β bound at the edge,
+// or one whose ζ at v lies beyond the checked range, gives no ε bound: NaN and the flag set). Throws
+// InvalidInput when β's own ζ = β v^{1/5} lies outside the checked range (require_checked_zeta), as for a
+// β typed with `eps --beta`.
 struct EpsCarryOver {
   double eps = 0.0;
   FitInterval ci68, ci95;
@@ -37,7 +26,8 @@ EpsCarryOver eps_at_speed(const FitCarryOver& fit, double velocity_m_s);
 namespace restitution::cli {
 // `calibrate --from-fit FILE --velocity V [material]`: the fit's β with its intervals, ε at V with the
 // interval β's carries over, g*, and with k the dissipative constant A with its intervals. Prints the table
-// or (json) one object; returns the exit status.
+// or (json) one object; returns the exit status. When the fit rejects its Hertz fit (rejected_because) the
+// output says why (JSON `hertz_fit_rejected`) and gives no interval.
 int calibrate_from_fit(const std::filesystem::path& file, std::optional<CollisionEnd> end,
                        double velocity_m_s, std::optional<double> k, bool json);
 }  // namespace restitution::cli
@@ -48,7 +38,7 @@ class JsonWriter;
 // speed with its interval. As comment lines (prefix "#" or "//") and as the fields of a JSON object
 // "from_fit". These ε are the law's: `eps_given_by` names the lines that give them (the printed lines, or
 // for a YADE that cannot express the law the lines of the version that can), so that no ε stands next to
-// lines that do not produce it.
+// lines that do not produce it. A rejected Hertz fit is said so and carries no interval, as in calibrate.
 std::string fit_carry_over_text(const std::filesystem::path& file, const FitCarryOver& fit, double k,
                                 const std::vector<double>& speeds_m_s, const std::string& eps_given_by,
                                 const char* comment);
