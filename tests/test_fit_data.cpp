@@ -77,6 +77,23 @@ TEST(FitData, SpeedIndependentDataChooseASpeedIndependentLaw) {
   }
 }
 
+TEST(FitData, ConstantDataGiveIntervalsThatHoldTheValue) {
+  // eps = 0.8 at three speeds, no sigma: chi2 = 0, so the scaled intervals shrink to the value, where the
+  // inverse's own tolerance once ordered a Tsuji interval backwards by ~1e-12.
+  FitData d;
+  d.velocity_m_s = {0.5, 1.0, 2.0};
+  d.eps = {0.8, 0.8, 0.8};
+  for (const LawFit& f : fit_data(d).fits) {
+    if (f.status != FitStatus::converged) continue;
+    for (const FitInterval& i : {f.ci68, f.ci95}) {
+      EXPECT_LE(i.low, f.value) << law_name(f.candidate.law) << " " << end_name(f.candidate.end);
+      if (!i.high_at_edge) {
+        EXPECT_LE(f.value, i.high) << law_name(f.candidate.law) << " " << end_name(f.candidate.end);
+      }
+    }
+  }
+}
+
 TEST(FitData, KnownSigmaGivesDeltaChiSquareOneInterval) {
   // Three points at one β with σ: the 68 % bounds are where χ² rises by exactly 1.
   FitData d = solver_data(LawKind::viscoelastic_hertz, CollisionEnd::delayed_recovery, 0.2);

@@ -6,6 +6,7 @@
 // root finding per number, not per data point.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdint>
@@ -135,6 +136,10 @@ void fit_speed_independent(const Problem& problem, const FitOptions& options, Co
     } else {
       set_edge_high(out);
     }
+    // Noise-free data give half ~ 0, where the inverse's own tolerance could order the bounds backwards by
+    // ~1e-12: the interval holds the value by construction.
+    out.low = std::min(out.low, fit.value);
+    if (!out.high_at_edge) out.high = std::max(out.high, fit.value);
     return out;
   };
   fit.ci68 = interval(problem.delta68);
