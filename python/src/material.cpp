@@ -68,10 +68,8 @@ bool is_boolean(const py::handle& value) {
 bool holds_boolean(const py::handle& value) {
   if (is_boolean(value)) return true;
   if (!py::isinstance<py::tuple>(value) && !py::isinstance<py::list>(value)) return false;
-  for (const py::handle item : value) {
-    if (is_boolean(item)) return true;
-  }
-  return false;
+  const auto items = py::reinterpret_borrow<py::sequence>(value);
+  return std::any_of(items.begin(), items.end(), [](const py::handle item) { return is_boolean(item); });
 }
 
 template <typename T>

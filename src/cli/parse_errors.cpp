@@ -63,7 +63,7 @@ std::string number_text_problem(const std::string& text, bool list) {
   if (!list) return number_problem(text);
   for (std::size_t start = 0; start <= text.size();) {
     const std::size_t comma = std::min(text.find(',', start), text.size());
-    const std::string problem = number_problem(text.substr(start, comma - start));
+    std::string problem = number_problem(text.substr(start, comma - start));
     if (!problem.empty()) return problem;
     start = comma + 1;
   }
