@@ -110,7 +110,9 @@ TEST(NumberEdges, ScenesRefuseUnderflowingAndSubnormalNumbers) {
 TEST(NumberEdges, ZetaZeroIsTheUndampedOscillatorForEveryMember) {
   for (const std::string law :
        {"viscoelastic-hertz", "linear-dashpot", "tsuji-hertz", "hertz-constant-damping"}) {
-    for (const std::string method : {"auto", "bdf", "adams"}) {
+    std::vector<std::string> methods = {"auto", "bdf", "adams"};
+    if (law == "viscoelastic-hertz" || law == "linear-dashpot") methods.emplace_back("taylor");
+    for (const std::string& method : methods) {
       const nlohmann::json j = eps_json("--law " + law + " --zeta 0 --method " + method);
       for (const char* end : {"naive", "delayed_recovery"}) {
         EXPECT_EQ(j[end]["eps"], 1.0) << law << " " << method << " " << end;
