@@ -322,7 +322,7 @@ class SceneWriter {
     json_.key(d.name).begin_object();
     json_.field("kind", "dashpot");
     for (const CollisionEnd e : d.ends.members()) {
-      const std::string c = std::string("relative_error_") + end_key(e);
+      const std::string c = std::string(end_key(e)) + "_relative_error";  // the CSV column
       const double worst = results_.dashpots[i].max_relative_error[e];
       report_ += fmt::format("* largest {}: {:.3g}\n", c, worst);
       json_.field("max_" + c, worst);
