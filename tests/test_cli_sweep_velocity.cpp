@@ -75,7 +75,7 @@ TEST(CliSweepVelocity, BetaFormGivesZetaFromBetaAndTheSpeedsAsGiven) {
   EXPECT_EQ(csv.rows.front()[1], "0.01");  // the numbers given, not exp(log(...))
   EXPECT_EQ(csv.rows.back()[1], "100");
   // Without a material there is no time or length scale: no SI columns.
-  EXPECT_EQ(std::count(csv.header.begin(), csv.header.end(), "duration_s_naive"), 0);
+  EXPECT_EQ(std::count(csv.header.begin(), csv.header.end(), "naive_duration_s"), 0);
   for (std::size_t i = 0; i < csv.rows.size(); ++i) {
     const double v = csv.number(i, "velocity_m_s");
     EXPECT_EQ(csv.number(i, "zeta"), zeta_from(0.2, v));
@@ -111,9 +111,9 @@ TEST(CliSweepVelocity, MaterialFormWritesTheSameNumbersAsASceneSweep) {
   const std::vector<std::string> shared = {"zeta",
                                            "velocity_m_s",
                                            "beta",
-                                           "duration_s_naive",
-                                           "duration_s_delayed_recovery",
-                                           "time_of_max_compression_s",
+                                           "naive_duration_s",
+                                           "delayed_recovery_duration_s",
+                                           "max_compression_time_s",
                                            "max_compression_m"};
   for (const std::string& name : shared) {
     for (std::size_t i = 0; i < csv.rows.size(); ++i)
@@ -121,8 +121,8 @@ TEST(CliSweepVelocity, MaterialFormWritesTheSameNumbersAsASceneSweep) {
   }
   for (std::size_t i = 0; i < csv.rows.size(); ++i) {
     EXPECT_EQ(csv.number(i, "delayed_recovery_eps"),
-              scene_table.rows[i][scene_table.column("eps_delayed_recovery")]);
-    EXPECT_EQ(csv.number(i, "naive_eps"), scene_table.rows[i][scene_table.column("eps_naive")]);
+              scene_table.rows[i][scene_table.column("delayed_recovery_eps")]);
+    EXPECT_EQ(csv.number(i, "naive_eps"), scene_table.rows[i][scene_table.column("naive_eps")]);
   }
 }
 

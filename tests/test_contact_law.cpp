@@ -107,7 +107,7 @@ TEST(ContactLaw, RejectsBadParameters) {
   EXPECT_THROW(ContactLaw::hertz_scaled(-0.2, 1.0), InvalidInput);
   EXPECT_THROW(ContactLaw::hertz_scaled(nan, 1.0), InvalidInput);
   EXPECT_THROW(ContactLaw::hertz_scaled(1e300, 1e300), InvalidInput);  // ζ overflows
-  EXPECT_THROW(ContactLaw::linear_dashpot(0.0), InvalidInput);
+  EXPECT_EQ(ContactLaw::linear_dashpot(0.0).zeta(), 0.0);  // r = 0: undamped, ε = 1 (issue 33)
   EXPECT_THROW(ContactLaw::linear_dashpot(-0.5), InvalidInput);
   EXPECT_THROW(ContactLaw::linear_dashpot(nan), InvalidInput);
   try {

@@ -358,7 +358,7 @@ TEST(LawFamily, PhysicalRefusesBadArguments) {
   EXPECT_THROW(ContactLaw::physical(LawKind::tsuji_hertz, 1.0, 1.0, 0.0, 1.0), InvalidInput);
   EXPECT_THROW(ContactLaw::physical(LawKind::tsuji_hertz, 1.0, 1.0, 1.0, -2.0), InvalidInput);
   EXPECT_THROW(ContactLaw::natural(LawKind::hertz_constant_damping, -1.0), InvalidInput);
-  EXPECT_THROW(ContactLaw::natural(LawKind::linear_dashpot, 0.0), InvalidInput);
+  EXPECT_THROW(ContactLaw::natural(LawKind::linear_dashpot, -1.0), InvalidInput);
 }
 
 }  // namespace

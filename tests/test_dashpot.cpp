@@ -82,7 +82,10 @@ TEST(DashpotClosedForm, EndTimesAreTheEventsOfTheExactSolution) {
       EXPECT_THROW(dashpot_naive_duration(r), InvalidInput);
     }
   }
-  EXPECT_THROW(dashpot_delayed_duration(0.0), InvalidInput);
+  // r = 0, the undamped oscillator: both ends at the half period π (issue 33, item 9).
+  EXPECT_EQ(dashpot_delayed_duration(0.0), M_PI);
+  EXPECT_EQ(dashpot_naive_duration(0.0), M_PI);
+  EXPECT_THROW(dashpot_delayed_duration(-0.1), InvalidInput);
 }
 
 TEST(DashpotClosedForm, DelayedDurationIsContinuousThroughCriticalDamping) {

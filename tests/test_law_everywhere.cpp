@@ -147,7 +147,7 @@ TEST_F(LawEverywhere, PhysicalSweepsMatchContactLawPhysicalByHand) {
       EXPECT_NEAR(c.at("zeta")[i], zeta, 1e-14 * zeta) << law << " v=" << v;
       EXPECT_EQ(c.at("zeta")[i], ContactLaw::physical(law_from_name(law), k, gamma, m, v).zeta()) << law;
       const double tau = c.at("delayed_recovery_tau")[i];
-      EXPECT_NEAR(c.at("duration_s_delayed_recovery")[i], tau * time_s, 1e-14 * tau * time_s) << law;
+      EXPECT_NEAR(c.at("delayed_recovery_duration_s")[i], tau * time_s, 1e-14 * tau * time_s) << law;
       const double x = c.at("max_compression_x")[i];
       EXPECT_NEAR(c.at("max_compression_m")[i], x * v * time_s, 1e-14 * x * v * time_s) << law;
     }
@@ -246,10 +246,10 @@ end = "naive"
   const auto t = read_csv(folder_ / "tsuji.csv");
   ASSERT_EQ(t.at("zeta").size(), 3U);
   for (std::size_t i = 0; i < 3; ++i)
-    expect_eps(t.at("eps_naive")[i], tsuji_naive_eps(t.at("zeta")[i]), "scene");
+    expect_eps(t.at("naive_eps")[i], tsuji_naive_eps(t.at("zeta")[i]), "scene");
   const auto d = read_csv(folder_ / "dashpot.csv");
   for (std::size_t i = 0; i < 2; ++i) {
-    expect_eps(d.at("eps_naive")[i], dashpot_naive_eps(0.5 * d.at("zeta")[i]), "scene dash-pot");
+    expect_eps(d.at("naive_eps")[i], dashpot_naive_eps(0.5 * d.at("zeta")[i]), "scene dash-pot");
   }
   EXPECT_TRUE(fs::exists(folder_ / "dashpot_trajectory.csv"));
   const json summary = json::parse(slurp((folder_ / "summary.json").string()));

@@ -27,8 +27,8 @@ REPEATS = 3
 def reference(path):
     ref = {}
     for row in csv.DictReader(line for line in open(path) if not line.startswith("#")):
-        if row["delayed_eps"]:
-            ref[float(row["zeta"])] = (float(row["delayed_eps"]), float(row["delayed_one_minus_eps"]))
+        if row["delayed_recovery_eps"]:
+            ref[float(row["zeta"])] = (float(row["delayed_recovery_eps"]), float(row["delayed_recovery_one_minus_eps"]))
     return ref
 
 

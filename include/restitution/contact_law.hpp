@@ -14,6 +14,7 @@
 // CollisionEnd::delayed_recovery, docs/design.md §1). The dissipated energy per unit (scaled) mass grows as
 // dD/dτ = c_d · w(x) · x'^2; the elastic energy is U(x) = c_s x^{a+1}/(a+1).
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <cstddef>
 #include <initializer_list>
@@ -62,8 +63,19 @@ double naive_end_critical_zeta(LawKind kind);
 // (docs/accuracy.md). The front ends (CLI, sweeps, scenes, calibration) refuse larger ζ with
 // require_checked_zeta; the solver itself still accepts them (tests probe beyond the range).
 inline constexpr double kLargestCheckedZeta = 1e6;
-// Throws InvalidInput naming ζ and the checked range when zeta > kLargestCheckedZeta (or is not finite).
+// The smallest ζ > 0 served: the smallest normal double (ζ = 0 itself is served, ε = 1 exactly). For small ζ
+// 1 - ε = C ζ with C = 1.153 (viscoelastic Hertz), 1.405 (Tsuji), π/2 (the dash-pot), 1.788 (constant
+// damping), both ends; so from this ζ on ζ, 1 - ε and the dissipated energy 1 - ε² = 2 C ζ are normal
+// doubles, each carried to a relative 1.1e-16, far below the smallest tolerance (1e-13). Below it they would
+// be subnormal, whose fixed spacing 4.9e-324 is a relative step of 5e-4 at ζ = 1e-320: the contract |Δε| <= T
+// (1 - ε) could not hold (docs/accuracy.md).
+inline constexpr double kSmallestServedZeta = DBL_MIN;
+// Throws InvalidInput naming ζ and the checked range when zeta > kLargestCheckedZeta (or is not finite),
+// and require_served_zeta's refusal below kSmallestServedZeta.
 void require_checked_zeta(double zeta);
+// Throws InvalidInput naming ζ and kSmallestServedZeta when 0 < zeta < kSmallestServedZeta. Every engine's
+// check (check_solve_request) calls it, so every front end refuses such a ζ.
+void require_served_zeta(double zeta);
 
 // The time scale T = (v^{1-a} m/k)^{1/(1+a)} [s] of ContactLaw::physical (its length scale is v·T [m]):
 // τ_natural · T is the time in seconds, x_natural · v · T the compression in metres.
@@ -175,7 +187,8 @@ class ContactLaw {
   // The natural viscoelastic Hertz law at ζ = 0 (undamped Hertz spheres).
   ContactLaw() = default;
 
-  // The natural form x'' + ζ x^b x' + x^a = 0, x'(0) = 1 of a member; ζ >= 0 finite (> 0 for the dash-pot).
+  // The natural form x'' + ζ x^b x' + x^a = 0, x'(0) = 1 of a member; ζ >= 0 finite (ζ = 0: ε = 1, every
+  // member).
   static ContactLaw natural(LawKind kind, double zeta);
   // A DEM force F = k ξ^a + γ ξ^b ξ' on effective mass m at impact speed v (SI: k in N/m^a, γ in
   // N s/m^{1+b}, m in kg, v in m/s), as its natural form: ζ = (γ/m) v^b T^{b+1} with the time scale

@@ -34,14 +34,14 @@ _SPEED_INDEPENDENT_END = _core.default_speed_independent_end  # fit_data's, as f
 
 
 def _real_array(name, value):
-    """value as a float64 array; TypeError naming the argument for anything but real numbers."""
-    if isinstance(value, (str, bytes)) or value is None:
+    """value as a float64 array; TypeError naming the argument for anything but real numbers (a bool too)."""
+    if isinstance(value, (str, bytes, bool, _np.bool_)) or value is None:
         raise TypeError(f"{name} must be a real number or an array-like of real numbers, got {type(value).__name__}")
     try:
         array = _np.asarray(value)
     except ValueError as error:  # ragged nested sequences
         raise TypeError(f"{name} must be a real number or a rectangular array-like: {error}") from None
-    if array.dtype.kind not in "biuf":
+    if array.dtype.kind not in "iuf":  # not "b": True is no speed, and would be read as 1
         raise TypeError(f"{name} must hold real numbers, got an array of dtype {array.dtype}")
     return _np.asarray(array, dtype=_np.float64, order="C")  # keeps 0-d arrays 0-d
 

@@ -60,11 +60,13 @@ void def_pair(py::module_& m, const char* name, FastFunction f, const char* argu
         py::arg(argument), py::arg("end"), doc);
 }
 
-// Python applies the domain of every front end (docs/accuracy.md): ζ in [0, kLargestCheckedZeta], refused
-// beyond in the CLI's words, where the library's fast functions go on with the large-ζ laws for embedding.
-// Negative and NaN ζ are left to the fast functions' own messages.
+// Python applies the domain of every front end (docs/accuracy.md): ζ = 0 or in [kSmallestServedZeta,
+// kLargestCheckedZeta], refused outside in the CLI's words, where the library's fast functions go on (the
+// large-ζ laws, the subnormal 1 - ε) for embedding. Negative and NaN ζ are left to the fast functions' own
+// messages.
 void require_in_domain(double zeta) {
   if (zeta > kLargestCheckedZeta) require_checked_zeta(zeta);
+  require_served_zeta(zeta);
 }
 double checked_eps(double zeta, CollisionEnd end) {
   require_in_domain(zeta);

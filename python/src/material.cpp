@@ -59,10 +59,24 @@ std::string field_list() {
 
 // One keyword's value as T, None as absent; a value of the wrong type raises TypeError naming the field
 // (pybind11's own message would dump the constructor's signature instead).
+// True for Python's and numpy's booleans, which pybind11 would read as 1 and 0.
+bool is_boolean(const py::handle& value) {
+  return py::isinstance<py::bool_>(value) ||
+         py::isinstance(value, py::module_::import("numpy").attr("bool_"));
+}
+
+bool holds_boolean(const py::handle& value) {
+  if (is_boolean(value)) return true;
+  if (!py::isinstance<py::tuple>(value) && !py::isinstance<py::list>(value)) return false;
+  const auto items = py::reinterpret_borrow<py::sequence>(value);
+  return std::any_of(items.begin(), items.end(), [](const py::handle item) { return is_boolean(item); });
+}
+
 template <typename T>
 std::optional<T> field(const py::kwargs& kwargs, const char* name) {
   if (!kwargs.contains(name) || kwargs[name].is_none()) return std::nullopt;
   try {
+    if (holds_boolean(kwargs[name])) throw py::cast_error();  // True is no modulus, radius or mass
     return py::cast<T>(kwargs[name]);
   } catch (const py::cast_error&) {
     throw py::type_error(fmt::format("Material: {} must be {}, got {}", name,

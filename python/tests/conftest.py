@@ -30,7 +30,7 @@ def _reference_rows():
 
 @pytest.fixture(scope="session")
 def reference():
-    """Rows with zeta, naive_eps, naive_one_minus_eps, delayed_eps, delayed_one_minus_eps, ... as floats."""
+    """Rows with zeta, naive_eps, naive_one_minus_eps, delayed_recovery_eps, delayed_recovery_one_minus_eps, ... as floats."""
     return _reference_rows()
 
 

@@ -14,7 +14,7 @@ import pytest
 import restitution
 from conftest import SOURCE_DIR
 
-ENDS = {"naive": "naive", "delayed-recovery": "delayed"}
+ENDS = {"naive": "naive", "delayed-recovery": "delayed_recovery"}  # the reference file's column prefixes
 CERTIFIED_ZETA_MAX = {"naive": 1e5, "delayed-recovery": 1e6}  # include/restitution/fast.hpp
 
 
@@ -78,8 +78,8 @@ def test_durations_match_reference_solutions(reference, end):
     np.testing.assert_allclose(restitution.fast.collision_duration(zetas, end=end),
                                [row[prefix + "_tau"] for row in rows], rtol=1e-13, atol=0)
     tau_max, x_max = restitution.fast.max_compression(zetas)
-    np.testing.assert_allclose(tau_max, [row["tau_max"] for row in rows], rtol=1e-13, atol=0)
-    np.testing.assert_allclose(x_max, [row["x_max"] for row in rows], rtol=1e-13, atol=0)
+    np.testing.assert_allclose(tau_max, [row["max_compression_tau"] for row in rows], rtol=1e-13, atol=0)
+    np.testing.assert_allclose(x_max, [row["max_compression_x"] for row in rows], rtol=1e-13, atol=0)
     assert restitution.fast.max_compression(float(zetas[5])) == (tau_max[5], x_max[5])
     assert restitution.fast.collision_duration(float(zetas[5]), end) == restitution.fast.collision_duration(
         zetas, end)[5]

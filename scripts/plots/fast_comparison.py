@@ -97,8 +97,10 @@ def main(exe, bench_csv, reference_csv, png_path, md_path):
         with open(reference_csv, newline="") as f:
             ref = [r for r in csv.DictReader(line for line in f if not line.startswith("#"))
                    if ZETA_MIN <= float(r["zeta"]) <= ZETA_MAX]
-        fast = {end: [(float(r["zeta"]), error(funcs, end, float(r["zeta"]), float(r[end + "_eps"]),
-                                               float(r[end + "_one_minus_eps"]))) for r in ref if r[end + "_eps"]]
+        column = {"naive": "naive", "delayed": "delayed_recovery"}  # the reference file's column prefixes
+        fast = {end: [(float(r["zeta"]), error(funcs, end, float(r["zeta"]), float(r[column[end] + "_eps"]),
+                                               float(r[column[end] + "_one_minus_eps"])))
+                      for r in ref if r[column[end] + "_eps"]]
                 for end in ("naive", "delayed")}
     costs = read_costs(bench_csv)
 

@@ -32,7 +32,7 @@ def main(csv_path, png_path):
     fig, (top, mid, bottom) = plt.subplots(3, 1, figsize=(8, 12), sharex=True)
 
     top.plot(zeta, col["naive_eps"], "k-", lw=2, label="solver, naive end")
-    top.plot(zeta, col["delayed_eps"], "b-", lw=2, label="solver, delayed recovery")
+    top.plot(zeta, col["delayed_recovery_eps"], "b-", lw=2, label="solver, delayed recovery")
     series_styles = {"naive-series:published": ("k", "o"), "delayed-recovery-series:published": ("b", "s")}
     for name, (color, marker) in series_styles.items():
         if name + "_eps" in col:

@@ -112,7 +112,7 @@ void add_eps_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--velocity", o->velocity, "impact speed v > 0 (scaled as in the 2008 paper's Eq. 23)");
   add_law_option(*cmd, o->law);
   cmd->add_option("--damping-ratio", o->damping_ratio,
-                  "damping ratio r > 0 of the linear dash-pot x'' + 2r x' + x = 0");
+                  "damping ratio r >= 0 of the linear dash-pot x'' + 2r x' + x = 0");
   add_solver_options(*cmd, o->solver);
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double); "

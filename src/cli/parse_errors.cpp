@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -35,9 +36,9 @@ std::string expected_value(const CLI::Option* option) {
 
 std::string describe(const CLI::App& app, const std::string& message);
 
-// "" when `text` is a number a double holds (or spells inf/nan: the range checks name those), else why not.
-std::string number_text_problem(const std::string& text) {
-  if (text.find_first_not_of(" \t") == std::string::npos) return "the value is empty, expected a number";
+// "" when the number at the start of `text` is one a double holds (or spells inf/nan: the range checks name
+// those), else why not.
+std::string number_problem(const std::string& text) {
   char* end = nullptr;
   errno = 0;
   const double value = std::strtod(text.c_str(), &end);
@@ -45,15 +46,40 @@ std::string number_text_problem(const std::string& text) {
     return fmt::format(
         "'{}' is beyond the range of a double (magnitude at most 1.8e308): not a finite number", text);
   }
+  // strtod reports ERANGE with 0 only for a nonzero number below the smallest subnormal (4.9e-324): run as
+  // 0 it would answer another question than the one typed.
+  if (errno == ERANGE && value == 0.0) {
+    return fmt::format(
+        "'{}' is nonzero but below the smallest double (4.9e-324): it would be read as 0; write 0 if 0 is "
+        "meant",
+        text);
+  }
   return "";  // not a number at all is CLI11's conversion error, described below
+}
+
+// number_problem of `text`, or of each item of a comma-separated list (options typed "FLOAT[,...]").
+std::string number_text_problem(const std::string& text, bool list) {
+  if (text.find_first_not_of(" \t") == std::string::npos) return "the value is empty, expected a number";
+  if (!list) return number_problem(text);
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    std::string problem = number_problem(text.substr(start, comma - start));
+    if (!problem.empty()) return problem;
+    start = comma + 1;
+  }
+  return "";
 }
 
 }  // namespace
 
 void check_number_texts(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
-    if (option->get_type_name().rfind("FLOAT", 0) == 0) {
-      option->check(CLI::Validator(number_text_problem, ""));  // no description: --help is unchanged
+    const std::string type = option->get_type_name();
+    if (type.rfind("FLOAT", 0) == 0) {
+      const bool list = type.find(',') != std::string::npos;
+      // No description: --help is unchanged.
+      option->check(
+          CLI::Validator([list](std::string& text) { return number_text_problem(text, list); }, ""));
     }
   }
   for (CLI::App* sub : app.get_subcommands({})) check_number_texts(*sub);

@@ -14,7 +14,8 @@ std::string one_line(std::string message);
 std::string describe_parse_error(const CLI::App& app, const CLI::ParseError& error);
 
 // Adds to every number option of `app` and its subcommands a check of the text as typed: an empty value
-// and a number beyond the double range (1e309, which CLI11 would turn into inf) are refused naming the text.
+// a number beyond the double range (1e309, which CLI11 would turn into inf) and a nonzero number that
+// underflows to 0 (1e-400) are refused naming the text; a list option ("FLOAT[,...]") item by item.
 void check_number_texts(CLI::App& app);
 
 }  // namespace restitution::cli

@@ -9,11 +9,11 @@ const std::vector<std::string>& velocity_columns() {
 }
 
 std::string duration_column(CollisionEnd end) {
-  return end == CollisionEnd::naive ? "duration_s_naive" : "duration_s_delayed_recovery";
+  return std::string(end_key(end)) + "_duration_s";
 }
 
 const std::vector<std::string>& si_max_compression_columns() {
-  static const std::vector<std::string> columns = {"time_of_max_compression_s", "max_compression_m"};
+  static const std::vector<std::string> columns = {"max_compression_time_s", "max_compression_m"};
   return columns;
 }
 

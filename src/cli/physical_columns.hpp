@@ -13,9 +13,9 @@ namespace restitution::cli {
 
 // "velocity_m_s", "beta" (s^{1/5} m^{-1/5}).
 const std::vector<std::string>& velocity_columns();
-// "duration_s_naive" | "duration_s_delayed_recovery".
+// "naive_duration_s" | "delayed_recovery_duration_s" (the names of every table: subject, quantity, unit).
 std::string duration_column(CollisionEnd end);
-// "time_of_max_compression_s", "max_compression_m".
+// "max_compression_time_s", "max_compression_m".
 const std::vector<std::string>& si_max_compression_columns();
 
 // τ_c in seconds.

@@ -11,6 +11,7 @@
 #include "cli/fit_data_report.hpp"
 #include "cli/json_writer.hpp"
 #include "cli/output_files.hpp"
+#include "cli/physical_columns.hpp"
 #include "cli/result_json.hpp"
 #include "cli/scene_damping.hpp"
 #include "cli/scene_dem.hpp"
@@ -132,15 +133,15 @@ class SceneWriter {
     const std::string x = physical ? "velocity_m_s" : "zeta";
     std::vector<std::string> eps_columns;
     for (const CollisionEnd e : s.ends.members()) {
-      if (s.quantities.eps) eps_columns.push_back(std::string("eps_") + end_key(e));
+      if (s.quantities.eps) eps_columns.push_back(std::string(end_key(e)) + "_eps");
     }
     std::vector<std::string> dashed;
     std::vector<std::string> differences;
     for (const auto& a : extras.approximations) {
-      dashed.push_back("eps_" + a.label);
-      differences.push_back("rel_diff_" + a.label);
+      dashed.push_back(a.label + "_eps");
+      differences.push_back(a.label + "_rel_diff");
     }
-    if (s.empirical) dashed.emplace_back("eps_empirical");
+    if (s.empirical) dashed.emplace_back("empirical_eps");
     report_ += fmt::format("## {}\n\n", s.title);
     if (!eps_columns.empty()) {
       std::vector<std::string> args = {"--x",      x,
@@ -163,9 +164,9 @@ class SceneWriter {
       shown.push_back(dashed[k]);
       shown.push_back(differences[k]);
     }
-    if (s.empirical) shown.emplace_back("eps_empirical");
+    if (s.empirical) shown.emplace_back("empirical_eps");
     for (const CollisionEnd e : s.ends.members()) {
-      const std::string c = std::string("duration_s_") + end_key(e);
+      const std::string c = duration_column(e);
       if (std::find(t.columns.begin(), t.columns.end(), c) != t.columns.end()) shown.push_back(c);
     }
     if (std::find(t.columns.begin(), t.columns.end(), "max_compression_m") != t.columns.end()) {
@@ -305,9 +306,9 @@ class SceneWriter {
     std::vector<std::string> exact;
     std::vector<std::string> errors;
     for (const CollisionEnd e : d.ends.members()) {
-      numeric.push_back(std::string("eps_") + end_key(e));
-      exact.push_back(std::string("eps_exact_") + end_key(e));
-      errors.push_back(std::string("relative_error_") + end_key(e));
+      numeric.push_back(std::string(end_key(e)) + "_eps");
+      exact.push_back(std::string(end_key(e)) + "_eps_exact");
+      errors.push_back(std::string(end_key(e)) + "_relative_error");
     }
     report_ += plot("scene_xy", d.name,
                     {"--x", "damping_ratio", "--points", join(numeric), "--y", join(exact), "--error",
@@ -321,7 +322,7 @@ class SceneWriter {
     json_.key(d.name).begin_object();
     json_.field("kind", "dashpot");
     for (const CollisionEnd e : d.ends.members()) {
-      const std::string c = std::string("relative_error_") + end_key(e);
+      const std::string c = std::string(end_key(e)) + "_relative_error";  // the CSV column
       const double worst = results_.dashpots[i].max_relative_error[e];
       report_ += fmt::format("* largest {}: {:.3g}\n", c, worst);
       json_.field("max_" + c, worst);

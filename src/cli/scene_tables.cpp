@@ -56,23 +56,23 @@ Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results,
   if (physical) t.columns.insert(t.columns.end(), velocity_columns().begin(), velocity_columns().end());
   for (const CollisionEnd e : ends) {
     const std::string n = end_key(e);
-    if (q.eps) t.columns.push_back("eps_" + n);
-    if (q.one_minus_eps) t.columns.push_back("one_minus_eps_" + n);
-    if (q.duration) t.columns.push_back("tau_" + n);
+    if (q.eps) t.columns.push_back(n + "_eps");
+    if (q.one_minus_eps) t.columns.push_back(n + "_one_minus_eps");
+    if (q.duration) t.columns.push_back(n + "_tau");
     if (q.duration && si) t.columns.push_back(duration_column(e));
   }
   if (q.max_compression) {
-    t.columns.insert(t.columns.end(), {"tau_max_compression", "x_max_compression"});
+    t.columns.insert(t.columns.end(), {"max_compression_tau", "max_compression_x"});
     if (si) {
       const auto& si_columns = si_max_compression_columns();
       t.columns.insert(t.columns.end(), si_columns.begin(), si_columns.end());
     }
   }
   for (const auto& a : extras.approximations) {
-    t.columns.push_back("eps_" + a.label);
-    t.columns.push_back("rel_diff_" + a.label);
+    t.columns.push_back(a.label + "_eps");
+    t.columns.push_back(a.label + "_rel_diff");
   }
-  if (s.empirical) t.columns.emplace_back("eps_empirical");
+  if (s.empirical) t.columns.emplace_back("empirical_eps");
 
   for (std::size_t i = 0; i < points.size(); ++i) {
     const scene::PlannedPoint& p = points[i];
@@ -126,7 +126,7 @@ Table dashpot_table(const scene::Scene& scene, const scene::SceneResults& result
   const auto ends = d.ends.members();
   for (const CollisionEnd e : ends) {
     const std::string n = end_key(e);
-    t.columns.insert(t.columns.end(), {"eps_" + n, "eps_exact_" + n, "relative_error_" + n});
+    t.columns.insert(t.columns.end(), {n + "_eps", n + "_eps_exact", n + "_relative_error"});
   }
   for (const scene::DashpotPoint& p : results.dashpots[index].points) {
     std::vector<double> row = {p.damping_ratio};

@@ -8,7 +8,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_run.hpp"
 
-// Sweep tables hold, per approximation, eps_<label> and rel_diff_<label> = eps_<label> / eps - 1 against the
+// Sweep tables hold, per approximation, <label>_eps and <label>_rel_diff = <label>_eps / eps - 1 against the
 // numerics at the end the approximation describes (ApproximationColumn::relative_difference); dash-pot tables
 // the closed-form checks of DashpotOutcome. The tables only arrange the studies' numbers.
 

@@ -18,7 +18,7 @@ namespace restitution::cli {
 namespace {
 
 std::string validation_csv(const series::ValidationReport& r) {
-  std::string csv = "zeta,naive_eps,naive_one_minus_eps,delayed_eps,delayed_one_minus_eps";
+  std::string csv = "zeta,naive_eps,naive_one_minus_eps,delayed_recovery_eps,delayed_recovery_one_minus_eps";
   for (const auto& c : r.candidates)
     csv += fmt::format(",{0}_eps,{0}_one_minus_eps,{0}_rel_err_eps,{0}_rel_err_one_minus_eps", c.name);
   csv += "\n";

@@ -24,7 +24,7 @@ struct VelocityAxis {
 
 // The CSV columns for the requested ends: zeta, (for a velocity axis: velocity_m_s, beta), per end eps,
 // one_minus_eps, tau, x, then the maximal compression's tau and x, (for a material: duration_s per end,
-// time_of_max_compression_s, max_compression_m), steps, status ("ok" | "failed") and error.
+// max_compression_time_s, max_compression_m), steps, status ("ok" | "failed") and error.
 std::string sweep_header(EndSet ends, const VelocityAxis* velocity = nullptr);
 // One CSV row (no newline); a failed point has empty numbers, status "failed" and the quoted message.
 std::string sweep_row(const SweepPoint& point, EndSet ends, const VelocityAxis* velocity = nullptr);

@@ -43,6 +43,18 @@ void require_checked_zeta(double zeta) {
     throw InvalidInput(
         fmt::format("zeta = {} is outside the checked range 0 <= zeta <= {:g}", zeta, kLargestCheckedZeta));
   }
+  require_served_zeta(zeta);
+}
+
+void require_served_zeta(double zeta) {
+  if (zeta > 0.0 && zeta < kSmallestServedZeta) {
+    throw InvalidInput(fmt::format(
+        "zeta = {} is below the smallest zeta served, {} (the smallest normal double): 1 - eps ~ zeta would "
+        "be a subnormal double, too coarse to carry the tolerance; give zeta = 0 (eps = 1 exactly) or zeta "
+        ">= "
+        "{}",
+        zeta, kSmallestServedZeta, kSmallestServedZeta));
+  }
 }
 
 ContactLaw::ContactLaw(LawKind kind, double zeta) : kind_(kind), zeta_(zeta), damping_(zeta) {
@@ -54,12 +66,8 @@ ContactLaw::ContactLaw(LawKind kind, double zeta) : kind_(kind), zeta_(zeta), da
 }
 
 ContactLaw ContactLaw::natural(LawKind kind, double zeta) {
-  if (kind == LawKind::linear_dashpot) {
-    // The dash-pot's ζ = 2r keeps the refusal of r = 0 of linear_dashpot.
-    require_finite_positive(zeta, "zeta of the linear dash-pot");
-  } else {
-    require_finite_nonnegative(zeta, "zeta");
-  }
+  // ζ = 0, every member: the undamped oscillator, ε = 1 at both ends (docs/contact_laws.md).
+  require_finite_nonnegative(zeta, "zeta");
   return {kind, zeta};
 }
 
@@ -93,7 +101,7 @@ ContactLaw ContactLaw::physical(LawKind kind, double stiffness_N_per_m_a, double
 ContactLaw ContactLaw::of_parameter(LawKind kind, double parameter) {
   const LawParameter p = law_parameter(kind);
   if (p.zeta_per_parameter == 1.0) return natural(kind, parameter);
-  require_finite_positive(parameter, p.name);
+  require_finite_nonnegative(parameter, p.name);
   return natural(kind, p.zeta_per_parameter * parameter);
 }
 

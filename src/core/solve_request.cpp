@@ -67,6 +67,7 @@ void check_solve_options(const SolveOptions& options) {
 
 void check_solve_request(const ContactLaw& law, const SolveOptions& options, const EngineRounding& engine) {
   check_solve_options(options);
+  require_served_zeta(law.zeta());
   if (law.kind() == LawKind::linear_dashpot && options.ends.contains(CollisionEnd::naive) &&
       law.parameter() >= 1.0) {
     throw InvalidInput(fmt::format(

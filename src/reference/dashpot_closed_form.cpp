@@ -10,15 +10,15 @@
 namespace restitution {
 
 double dashpot_naive_duration(double r) {
-  if (!(r > 0.0 && r < 1.0)) {
+  if (!(r >= 0.0 && r < 1.0)) {
     throw InvalidInput(fmt::format("damping-ratio {} has no naive end (x never returns to 0 for r >= 1)", r));
   }
   return M_PI / std::sqrt(1.0 - r * r);
 }
 
 double dashpot_delayed_duration(double r) {
-  if (!(r > 0.0) || !std::isfinite(r))
-    throw InvalidInput(fmt::format("damping-ratio must be > 0, got {}", r));
+  if (!(r >= 0.0) || !std::isfinite(r))
+    throw InvalidInput(fmt::format("damping-ratio must be >= 0, got {}", r));
   if (r < 1.0) {
     const double w = std::sqrt(1.0 - r * r);
     return std::atan2(2.0 * r * w, 2.0 * r * r - 1.0) / w;  // the branch in (0, π)

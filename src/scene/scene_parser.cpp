@@ -565,6 +565,7 @@ Scene parse_scene(std::string_view toml_text, std::string_view file_name) {
   } catch (const toml::parse_error& e) {
     throw InvalidInput(fmt::format("{}:{}: {}", file_name, e.source().begin.line, e.description()));
   }
+  detail::refuse_underflowing_floats(root, ascii_text, file_name);
   return Parser(root, file_name).parse();
 }
 

@@ -176,4 +176,47 @@ void TomlReader::finish() const {
   }
 }
 
+namespace {
+
+// The literal that starts at (line, column), 1-based, of `text`.
+std::string_view literal_at(std::string_view text, std::size_t line, std::size_t column) {
+  std::size_t at = 0;
+  for (std::size_t l = 1; l < line && at != std::string_view::npos; ++l) {
+    at = text.find('\n', at);
+    if (at != std::string_view::npos) ++at;
+  }
+  if (at == std::string_view::npos || column == 0 || at + column - 1 >= text.size()) return {};
+  const std::string_view rest = text.substr(at + column - 1);
+  return rest.substr(0, rest.find_first_not_of("0123456789+-._eE"));
+}
+
+// A decimal float literal with a nonzero digit before its exponent.
+bool nonzero_literal(std::string_view literal) {
+  const std::string_view mantissa = literal.substr(0, literal.find_first_of("eE"));
+  return mantissa.find_first_of("123456789") != std::string_view::npos;
+}
+
+void check_floats(const toml::node& node, std::string_view text, std::string_view file_name) {
+  if (const auto* table = node.as_table()) {
+    for (const auto& [key, value] : *table) check_floats(value, text, file_name);
+  } else if (const auto* array = node.as_array()) {
+    for (const toml::node& item : *array) check_floats(item, text, file_name);
+  } else if (const auto* number = node.as_floating_point(); number != nullptr && number->get() == 0.0) {
+    const toml::source_position at = node.source().begin;
+    const std::string_view literal = literal_at(text, at.line, at.column);
+    if (nonzero_literal(literal)) {
+      throw InvalidInput(fmt::format(
+          "{}:{}: '{}' is nonzero but below the smallest double (4.9e-324): it would be read as 0; write 0 "
+          "if 0 is meant",
+          file_name, at.line, literal));
+    }
+  }
+}
+
+}  // namespace
+
+void refuse_underflowing_floats(const toml::table& root, std::string_view text, std::string_view file_name) {
+  check_floats(root, text, file_name);
+}
+
 }  // namespace restitution::scene::detail

@@ -64,4 +64,9 @@ class TomlReader {
   std::set<std::string, std::less<>> used_;
 };
 
+// Throws InvalidInput "FILE:LINE: '1e-400' is nonzero but below the smallest double ..." for a float of
+// `root` that toml++ read as 0 from a nonzero literal (it rounds an underflow to 0 without a word). `text` is
+// the text `root` was parsed from (ASCII: toml++'s columns are its bytes).
+void refuse_underflowing_floats(const toml::table& root, std::string_view text, std::string_view file_name);
+
 }  // namespace restitution::scene::detail
