@@ -91,7 +91,7 @@ TEST(OutputFiles, NumbersHaveSeventeenDigits) {
 }
 
 TEST(OutputFiles, MissingPlotScriptIsReportedNotThrown) {
-  EXPECT_NE(run_plot_script("no-such-plot", {}).find("not found"), std::string::npos);
+  EXPECT_NE(run_plot_script("no-such-plot", "a.csv", "a.png").find("not found"), std::string::npos);
 }
 
 }  // namespace

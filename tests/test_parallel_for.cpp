@@ -5,7 +5,10 @@
 // records per point let the rest go on.
 #include <gtest/gtest.h>
 
+#include <pthread.h>
+
 #include <atomic>
+#include <chrono>
 #include <mutex>
 #include <set>
 #include <stdexcept>
@@ -113,6 +116,42 @@ TEST(ParallelFor, AThrowingPerThreadConstructorIsRethrownNotTerminate) {
     }
     EXPECT_EQ(made.load(), static_cast<int>(threads));  // every thread started and was joined
   }
+}
+
+TEST(ParallelFor, AThreadEndedByPthreadExitUnwindsThroughTheRun) {
+  // CPython ends a thread that wants the GIL back at interpreter exit with pthread_exit: a forced unwind that
+  // a catch (...) must pass on, or the process aborts ("FATAL: exception not rethrown"). Here the caller's
+  // thread ends itself at index 20 while the helper keeps working; the helper is stopped and joined.
+  struct Run {
+    std::atomic<int> done{0};
+    std::atomic<bool> returned{false};
+    std::thread::id caller;
+  } run;
+  pthread_t thread{};
+  ASSERT_EQ(pthread_create(
+                &thread, nullptr,
+                [](void* argument) -> void* {
+                  auto& r = *static_cast<Run*>(argument);
+                  r.caller = std::this_thread::get_id();
+                  parallel_for({1000000, 2, {}}, [&r]() -> IndexBody {
+                    return [&r](std::size_t) {
+                      if (std::this_thread::get_id() == r.caller && r.done.load() >= 20)
+                        pthread_exit(nullptr);
+                      ++r.done;
+                      std::this_thread::sleep_for(std::chrono::microseconds(50));
+                    };
+                  });
+                  r.returned = true;
+                  return nullptr;
+                },
+                &run),
+            0);
+  ASSERT_EQ(pthread_join(thread, nullptr), 0);
+  EXPECT_FALSE(run.returned.load());  // the thread ended inside the run
+  const int done = run.done.load();
+  EXPECT_GE(done, 20);
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_EQ(run.done.load(), done);  // the helper was stopped and joined before the thread ended
 }
 
 TEST(ParallelFor, StopRequestStartsNoNewIndex) {

@@ -14,6 +14,7 @@
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
 #include "solve_options.hpp"
+#include "without_gil.hpp"
 
 namespace py = pybind11;
 
@@ -38,8 +39,7 @@ ContactLaw natural_law(const std::string& law, double zeta) {
 
 CollisionResult solve_one(const std::string& law, double zeta, const SolveOptions& options) {
   const ContactLaw natural = natural_law(law, zeta);
-  const py::gil_scoped_release release;
-  return thread_solver().solve(natural, options);
+  return without_gil([&] { return thread_solver().solve(natural, options); });
 }
 
 double eps_scalar(double zeta, const std::string& end, double tolerance, const std::string& method,

@@ -15,6 +15,7 @@
 #include "restitution/calibration.hpp"
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
+#include "without_gil.hpp"
 
 namespace py = pybind11;
 
@@ -35,8 +36,7 @@ DoubleArray apply(FastFunction f, const DoubleArray& in, const std::string& end,
   const auto size = static_cast<std::size_t>(in.size());
   std::optional<std::size_t> bad;
   std::string message;
-  {
-    const py::gil_scoped_release release;
+  run_without_gil([&] {
     for (std::size_t i = 0; i < size; ++i) {
       try {
         y[i] = f(x[i], which);
@@ -46,7 +46,7 @@ DoubleArray apply(FastFunction f, const DoubleArray& in, const std::string& end,
         break;
       }
     }
-  }
+  });
   if (bad) throw InvalidInput(fmt::format("{} ({} at {})", message, name, index_text(*bad, in)));
   return out;
 }

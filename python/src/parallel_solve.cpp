@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "parallel_solve.hpp"
 
+#include <cxxabi.h>
 #include <pybind11/pybind11.h>
 
 #include <atomic>
@@ -8,6 +9,7 @@
 #include <future>
 
 #include "restitution/sweep.hpp"
+#include "without_gil.hpp"
 
 namespace restitution::python {
 
@@ -28,25 +30,31 @@ std::optional<PointFailure> parallel_solve(
     }
   };
   bool interrupted = false;
-  {
-    const pybind11::gil_scoped_release release;
+  PyThreadState* const caller = PyThreadState_Get();
+  run_without_gil([&] {
     // The sweep runs beside this thread so that this one can poll for signals, which Python delivers to
     // the main thread only and only with the GIL held.
     auto sweep = std::async(std::launch::async, [&] { return run_sweep(zetas, options, control, law); });
-    while (sweep.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
-      if (interrupted) continue;
-      const pybind11::gil_scoped_acquire acquire;
-      if (PyErr_CheckSignals() != 0) {
-        interrupted = true;  // the Python error stays set until thrown below
-        stop = true;
+    try {
+      while (sweep.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
+        if (interrupted) continue;
+        briefly_with_gil(caller, [&] {
+          if (PyErr_CheckSignals() != 0) {
+            interrupted = true;  // the Python error stays set until thrown below
+            stop = true;
+          }
+        });
       }
+    } catch (abi::__forced_unwind&) {
+      stop = true;  // the interpreter exits and ends this thread; the future's destructor awaits the sweep
+      throw;
     }
     try {
       sweep.get();  // rethrows the sweep's own errors (InvalidInput for bad options)
     } catch (...) {
       if (!interrupted) throw;  // else KeyboardInterrupt, already set, takes precedence
     }
-  }
+  });
   if (interrupted) throw pybind11::error_already_set();
   return failure;
 }

@@ -3,19 +3,21 @@
 
 #include <fcntl.h>
 #include <fmt/core.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <csignal>
 
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <system_error>
+#include <thread>
 
 #include "cli/io_error.hpp"
 #include "cli/resource_root.hpp"
@@ -39,25 +41,39 @@ fs::path scripts_folder() {
   return chosen != nullptr ? fs::path(chosen) : resource_root() / "scripts";
 }
 
-// Runs the program (no shell: nothing to quote) with stdout and stderr into /dev/null and waits for it,
-// through signals that interrupt the wait. Returns its wait status, -1 when it could not be started.
+// Runs the program (no shell: nothing to quote) with stdout and stderr into /dev/null and waits for it.
+// The child never outlives this process: the kernel sends it SIGKILL when this process dies, SIGKILL
+// included (PR_SET_PDEATHSIG), and it gets SIGTERM when this process is asked to stop (SIGINT or SIGTERM to
+// this process alone; Ctrl-C reaches the whole process group anyway). Returns its wait status, -1 when it
+// could not be started.
 int run_quietly(const std::vector<std::string>& command) {
   std::vector<char*> argv;
   for (const std::string& a : command) argv.push_back(const_cast<char*>(a.c_str()));  // NOLINT: POSIX API
   argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  pid_t child = 0;
-  const int spawned = posix_spawnp(&child, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) return -1;
-  int status = 0;
-  while (waitpid(child, &status, 0) < 0) {
-    if (errno != EINTR) return -1;
+  const pid_t parent = getpid();
+  const pid_t child = fork();
+  if (child < 0) return -1;
+  if (child == 0) {
+    // Only async-signal-safe calls from here to exec: other threads of this process may hold locks.
+    // getppid() closes the race of a parent that died before prctl: no signal would ever come.
+    if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent) _exit(127);
+    const int null = open("/dev/null", O_WRONLY);
+    if (null < 0 || dup2(null, STDOUT_FILENO) < 0 || dup2(null, STDERR_FILENO) < 0) _exit(127);
+    execvp(argv[0], argv.data());
+    _exit(127);
   }
-  return status;
+  int status = 0;
+  for (bool stopping = false;;) {
+    const pid_t done = waitpid(child, &status, stopping ? 0 : WNOHANG);
+    if (done == child) return status;
+    if (done < 0 && errno != EINTR) return -1;
+    if (!stopping && stop_signal_received() != 0) {
+      kill(child, SIGTERM);
+      stopping = true;
+    } else if (!stopping) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));  // the signal flag is polled
+    }
+  }
 }
 
 // A child killed by SIGINT or SIGTERM was stopped by the user (Ctrl-C reaches the whole process group), as
@@ -155,18 +171,27 @@ void write_file_atomically(const fs::path& path, const std::string& content) {
   if (error) {
     throw IoError(fmt::format("cannot create the folder of '{}': {}", target.path.string(), error.message()));
   }
+  // Every failure removes the temporary: a half-written FILE.tmp must not outlive the command.
+  const auto fail = [&temporary](const std::string& what) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw IoError(what);
+  };
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw IoError(fmt::format("cannot write '{}': {}", temporary.string(), std::strerror(errno)));
-    out << content;
-    out.flush();
-    if (!out) throw IoError(fmt::format("cannot write '{}': {}", temporary.string(), std::strerror(errno)));
+    if (out) {
+      out << content;
+      out.flush();
+    }
+    const bool written = out.good();
+    const int reason = errno;  // before close and remove change it
+    out.close();
+    if (!written || !out) {
+      fail(fmt::format("cannot write '{}': {}", temporary.string(), std::strerror(written ? errno : reason)));
+    }
   }
   fs::rename(temporary, target.path, error);
-  if (error) {
-    fs::remove(temporary, error);
-    throw IoError(fmt::format("cannot write '{}'", target.path.string()));
-  }
+  if (error) fail(fmt::format("cannot write '{}': {}", target.path.string(), error.message()));
 }
 
 std::string number17(double value) {
@@ -175,7 +200,8 @@ std::string number17(double value) {
   return fmt::format("{:.17g}", value);
 }
 
-std::string run_plot_script(const std::string& script, const std::vector<std::string>& arguments) {
+std::string run_plot_script(const std::string& script, const fs::path& data, const fs::path& image,
+                            const std::vector<std::string>& arguments) {
   const fs::path path = scripts_folder() / "plots" / (script + ".py");
   if (!fs::exists(path)) return fmt::format("no plot: script {} not found", path.string());
   const std::string python = python_interpreter();
@@ -185,13 +211,26 @@ std::string run_plot_script(const std::string& script, const std::vector<std::st
     return fmt::format(
         "no plot: {} cannot import matplotlib (install python3-matplotlib: bash scripts/setup)", python);
   }
-  std::vector<std::string> command = {python, path.string()};
+  // matplotlib picks the format by the extension, so the temporary name keeps it: NAME.tmp.png.
+  const fs::path temporary =
+      image.parent_path() / (image.stem().string() + ".tmp" + image.extension().string());
+  std::vector<std::string> command = {python, path.string(), data.string(), temporary.string()};
   command.insert(command.end(), arguments.begin(), arguments.end());
   const int status = run_quietly(command);
-  stop_if_signalled(status);
-  if (status != 0) {
+  std::error_code error;
+  if (status != 0 || stop_signal_received() != 0) {
+    fs::remove(temporary, error);  // the image of a failed or stopped script is no plot
+    stop_if_signalled(status);
     return fmt::format("no plot: {} failed with status {}", path.filename().string(),
                        WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+  }
+  fs::rename(temporary, image, error);
+  if (error == std::errc::no_such_file_or_directory) {
+    return fmt::format("no plot: {} wrote no image", path.filename().string());
+  }
+  if (error) {
+    fs::remove(temporary, error);
+    throw IoError(fmt::format("cannot write '{}': {}", image.string(), error.message()));
   }
   return {};
 }

@@ -112,10 +112,10 @@ class SceneWriter {
   }
 
   // Runs a plot script; returns the markdown image link, or a note saying why there is no plot.
-  std::string plot(const std::string& script, const std::string& name, std::vector<std::string> arguments) {
+  std::string plot(const std::string& script, const std::string& name,
+                   const std::vector<std::string>& arguments) {
     const std::string png = name + ".png";
-    arguments.insert(arguments.begin(), {(folder_ / (name + ".csv")).string(), (folder_ / png).string()});
-    const std::string why = run_plot_script(script, arguments);
+    const std::string why = run_plot_script(script, folder_ / (name + ".csv"), folder_ / png, arguments);
     if (!why.empty()) {
       out_.warnings.push_back(fmt::format("{}: {}", name, why));
       return fmt::format("*({}; the data are in `{}.csv`)*\n\n", why, name);

@@ -125,7 +125,7 @@ int run_series_validation(const std::string& folder_name) {
   write_file_atomically(csv, validation_csv(report));
   write_file_atomically(json, validation_json(report));
   print_validation_summary(report);
-  const std::string why = run_plot_script("series_validation", {csv.string(), png.string()});
+  const std::string why = run_plot_script("series_validation", csv, png);
   if (!why.empty()) std::fprintf(stderr, "restitution: warning: %s\n", why.c_str());
   fmt::print("wrote {}, {}", csv.string(), json.string());
   if (why.empty()) fmt::print(", {}", png.string());

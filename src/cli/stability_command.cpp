@@ -138,9 +138,8 @@ int run_stability(const StabilityCliOptions& o) {
     const std::filesystem::path folder(o.out);
     write_file_atomically(folder / "stability.csv", csv(report));
     write_file_atomically(folder / "stability.json", json_text(report));
-    const std::string why = run_plot_script(
-        "stability", {(folder / "stability.csv").string(), (folder / "stability.png").string(),
-                      fmt::format("{}", report.tolerance)});
+    const std::string why = run_plot_script("stability", folder / "stability.csv", folder / "stability.png",
+                                            {fmt::format("{}", report.tolerance)});
     if (!why.empty()) fmt::print(stderr, "restitution: warning: no stability plot: {}\n", why);
   }
   if (o.json)

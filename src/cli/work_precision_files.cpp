@@ -44,8 +44,7 @@ WorkPrecisionFiles write_work_precision_files(const std::vector<WorkPrecisionRow
   write_file_atomically(folder / points, points_csv(rows));
   write_file_atomically(folder / summary, summary_csv(rows));
   out.files = {points, summary};
-  out.plot_warning =
-      run_plot_script("work_precision", {(folder / summary).string(), (folder / png).string()});
+  out.plot_warning = run_plot_script("work_precision", folder / summary, folder / png);
   if (out.plot_warning.empty()) out.files.push_back(png);
   return out;
 }

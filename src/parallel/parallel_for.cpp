@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "parallel/parallel_for.hpp"
 
+#include <cxxabi.h>
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -47,6 +49,11 @@ class Pool {
         if (i >= run_.count) return;
         body(i);
       }
+    } catch (abi::__forced_unwind&) {
+      // This thread is being ended (pthread_exit or cancellation): the unwind must go on, or the process
+      // aborts; the other threads stop at their next index.
+      stop_ = true;
+      throw;
     } catch (...) {
       fail(std::current_exception());
     }
