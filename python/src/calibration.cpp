@@ -11,6 +11,7 @@
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 #include "solve_options.hpp"
+#include "without_gil.hpp"
 
 namespace py = pybind11;
 
@@ -75,9 +76,10 @@ void bind_calibration(py::module_& m) {
         request.tolerance = options.tolerance;
         request.method = options.method;
         if (material) request.k = elastic_constants(*material).k;
-        const py::gil_scoped_release release;
-        CollisionSolver solver;
-        return calibrate(request, solver);
+        return without_gil([&] {
+          CollisionSolver solver;
+          return calibrate(request, solver);
+        });
       },
       py::arg("eps"), py::arg("velocity"), py::arg("end"), py::arg("tolerance"), py::arg("method"),
       py::arg("material"), py::arg("law"), "Calibration for one measured eps at one velocity [m/s].");

@@ -11,6 +11,7 @@
 #include "bindings.hpp"
 #include "restitution/fit.hpp"
 #include "restitution/material.hpp"
+#include "without_gil.hpp"
 
 namespace py = pybind11;
 
@@ -96,12 +97,7 @@ void bind_fit(py::module_& m) {
         options.tolerance = tolerance;
         options.method = method_from_name(method);
         if (material) options.k = elastic_constants(*material).k;
-        FitResult result;
-        {
-          const py::gil_scoped_release release;
-          result = fit_data(data, options);
-        }
-        return result_dict(result);
+        return result_dict(without_gil([&] { return fit_data(data, options); }));
       },
       py::arg("v"), py::arg("eps"), py::arg("sigma"), py::arg("laws"), py::arg("speed_independent_end"),
       py::arg("material"), py::arg("tolerance"), py::arg("method"),

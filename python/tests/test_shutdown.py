@@ -12,7 +12,8 @@ import sys
 import textwrap
 
 # A daemon thread loops on every kind of call that releases the GIL: a scalar solve (on the calling thread),
-# an array solve (the library's thread pool) and the fast table; the main thread exits while it is inside one.
+# an array solve (the library's thread pool), the fast table, a calibration and a fit; the main thread exits
+# while it is inside one.
 DAEMON_THREAD_AT_EXIT = textwrap.dedent("""
     import threading, time
     import numpy as np
@@ -26,6 +27,8 @@ DAEMON_THREAD_AT_EXIT = textwrap.dedent("""
             restitution.eps(0.5)
             restitution.eps(zetas, threads=2)
             restitution.fast.eps(zetas)
+            restitution.calibrate(0.8, 1.0)
+            restitution.fit_data([0.5, 1.0, 2.0], [0.82, 0.8, 0.78])
             started.set()
 
     threading.Thread(target=loop, daemon=True).start()
