@@ -27,6 +27,15 @@ inline std::string slurp(const std::string& path) {
   return buffer.str();
 }
 
+// The lines of a text, each without its '\n'; a last line without one is left out (a torn row of a file).
+inline std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t begin = 0;
+  for (std::size_t end; (end = text.find('\n', begin)) != std::string::npos; begin = end + 1)
+    lines.push_back(text.substr(begin, end - begin));
+  return lines;
+}
+
 // `arguments` is appended to the executable's path as given (shell syntax: quote what needs quoting).
 inline CliOutcome run_cli(const std::string& arguments) {
   char out_name[] = "/tmp/restitution-cli-out-XXXXXX";

@@ -24,6 +24,7 @@
 namespace restitution {
 namespace {
 namespace fs = std::filesystem;
+using test_support::lines_of;
 using test_support::run_cli;
 using test_support::slurp;
 using test_support::spawn_cli;
@@ -250,14 +251,6 @@ struct TempFolder {
   }
   ~TempFolder() { fs::remove_all(path); }
 };
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::size_t begin = 0;
-  for (std::size_t end; (end = text.find('\n', begin)) != std::string::npos; begin = end + 1)
-    lines.push_back(text.substr(begin, end - begin));
-  return lines;
-}
 
 TEST(CliSweep, WritesRowsInZetaOrderMatchingTheLibrary) {
   const TempFolder dir;

@@ -22,6 +22,7 @@
 namespace restitution {
 namespace {
 namespace fs = std::filesystem;
+using test_support::lines_of;
 using test_support::slurp;
 using test_support::TempFolder;
 
@@ -69,14 +70,6 @@ int run_with_fault(const std::vector<std::string>& arguments, const Fault& fault
   int raw = 0;
   waitpid(pid, &raw, 0);
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::size_t begin = 0;
-  for (std::size_t end; (end = text.find('\n', begin)) != std::string::npos; begin = end + 1)
-    lines.push_back(text.substr(begin, end - begin));
-  return lines;
 }
 
 // The points whose lines are complete on disk. Each complete line after the first two must be "INDEX,ROW,CRC"

@@ -21,6 +21,7 @@
 namespace restitution {
 namespace {
 namespace fs = std::filesystem;
+using test_support::lines_of;
 using test_support::run_cli;
 using test_support::slurp;
 using test_support::TempFolder;
@@ -32,14 +33,6 @@ const std::string kSweep =
 const std::string kSettings =
     "# restitution sweep: zeta-min=0 zeta-max=10 points=200 spacing=linear end=naive method=taylor "
     "tolerance=0.01";
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::size_t begin = 0;
-  for (std::size_t end; (end = text.find('\n', begin)) != std::string::npos; begin = end + 1)
-    lines.push_back(text.substr(begin, end - begin));
-  return lines;
-}
 
 std::string line(std::size_t index, const std::string& row) {
   std::string text;
