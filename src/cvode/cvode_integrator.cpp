@@ -9,6 +9,7 @@
 #include <cfloat>
 
 #include "restitution/errors.hpp"
+#include "sundials/fixed_point.hpp"
 #include "sundials/small_dense.hpp"
 
 namespace restitution::detail {
@@ -124,12 +125,13 @@ int event_functions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data) 
 // CVODE's error weights for a relative tolerance and a vector of absolute ones, 1/(rtol |y_i| + atol_i), in
 // one loop: the same arithmetic as CVODE's own (CVodeSVtolerances: N_VAbs, N_VLinearSum, N_VInv), without its
 // four vector calls per step (~2 % of a solve's instructions).
+// Size: the state's (3 or 4), fixed per integrator so that the loop unrolls.
+template <std::size_t Size>
 int error_weights(N_Vector y, N_Vector weights, void* user_data) noexcept {
   const Data& data = *static_cast<Data*>(user_data);
   const double* s = NV_DATA_S(y);
   double* w = NV_DATA_S(weights);
-  const auto size = static_cast<std::size_t>(NV_LENGTH_S(y));
-  for (std::size_t i = 0; i < size; ++i) {
+  for (std::size_t i = 0; i < Size; ++i) {
     const double scale = data.relative_tolerance * std::abs(s[i]) + data.absolute_tolerance[i];
     if (scale <= 0.0) return -1;  // as CVODE: a zero weight scale is an error
     w[i] = 1.0 / scale;
@@ -143,10 +145,13 @@ CvodeIntegrator::CvodeIntegrator(Method method, const sundials::Context& context
     : state_(sundials::make_small_vector(size, context)),
       memory_(method == Method::adams ? CV_ADAMS : CV_BDF, context),
       size_(size) {
+  if (size != state_size(Form::time) && size != state_size(Form::sundman)) {
+    throw NumericalFailure(fmt::format("no form of the equation of motion has {} components", size));
+  }
   N_VConst(0.0, state_.get());
   if (method == Method::adams) {
     // Adams is chosen where the problem is not stiff: a fixed-point corrector needs no Jacobian.
-    fixed_point_solver_ = sundials::make_fixed_point_solver(state_, context);
+    fixed_point_solver_ = sundials::make_small_fixed_point_solver(state_, context);
   } else {
     jacobian_ = sundials::make_small_dense_matrix(size, context);
     linear_solver_ = sundials::make_small_dense_solver(state_, jacobian_, context);
@@ -176,7 +181,8 @@ void CvodeIntegrator::start(const ContactLaw& law, const PhaseSettings& settings
   if (!initialized_) {
     sundials::check_flag(CVodeInit(mem, right_hand_side, t0, state_.get()), "CVodeInit");
     sundials::check_flag(CVodeSetUserData(mem, &data_), "CVodeSetUserData");
-    sundials::check_flag(CVodeWFtolerances(mem, error_weights), "CVodeWFtolerances");
+    sundials::check_flag(CVodeWFtolerances(mem, size_ == 4 ? error_weights<4> : error_weights<3>),
+                         "CVodeWFtolerances");
     if (fixed_point_solver_) {
       sundials::check_flag(CVodeSetNonlinearSolver(mem, fixed_point_solver_.get()),
                            "CVodeSetNonlinearSolver");
