@@ -43,8 +43,8 @@ int right_hand_side(sunrealtype t, N_Vector y, N_Vector ydot, void* user_data) n
   } else if (data.form == Form::sundman) {
     const double u = s[kFirst];
     const double x = law.compression_of(u);
-    const double dtau_ds = law.dcompression_du(u) / law.smoothing_root();  // u^{q-1}
-    d[kFirst] = v / law.smoothing_root();
+    const double dtau_ds = data.per_root(law.dcompression_du(u));  // u^{q-1}
+    d[kFirst] = data.per_root(v);
     d[kVelocity] = law.acceleration(x, v) * dtau_ds;
     d[kDissipation] = law.dissipation_integrand(x, v) * dtau_ds;
     d[kSundmanTau] = dtau_ds;
@@ -163,6 +163,7 @@ void CvodeIntegrator::start(const ContactLaw& law, const PhaseSettings& settings
   void* mem = memory_.get();
   memory_.clear_error();
   data_.law = &law;
+  data_.root_inverse = 1.0 / law.smoothing_root();
   data_.form = settings.form;
   data_.switch_x = settings.switch_x;
   data_.tau_log = settings.tau_log;
