@@ -29,9 +29,9 @@ fs::path resource_root() {
   std::error_code error;
   const fs::path program = fs::read_symlink("/proc/self/exe", error);  // Linux: this program's own file
   if (error) return fs::current_path(error);
-  const fs::path installed = program.parent_path().parent_path() / "share" / "restitution";
+  fs::path installed = program.parent_path().parent_path() / "share" / "restitution";
   if (fs::is_directory(installed, error)) return installed;
-  const fs::path source = marked_source_tree(program.parent_path());
+  fs::path source = marked_source_tree(program.parent_path());
   // Neither installed nor in a build tree: the program's own folder, where the files are then reported
   // missing by name.
   return source.empty() ? program.parent_path() : source;
