@@ -4,6 +4,7 @@
 // which `cmake --install` copies as it is.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -28,8 +29,13 @@ TEST(ResourceRoot, NoSourcePathInTheProgram) {
   ASSERT_TRUE(program) << RESTITUTION_EXE;
   const std::string bytes{std::istreambuf_iterator<char>(program), std::istreambuf_iterator<char>()};
   ASSERT_GT(bytes.size(), 100000U);
-  EXPECT_EQ(bytes.find(RESTITUTION_SOURCE_DIR), std::string::npos)
-      << "the program contains the source path " << RESTITUTION_SOURCE_DIR;
+  // A compiler may build a string constant from 16-byte immediates ("/work/src/resti" + "ution/scripts"), so
+  // neither end of the path may appear, not only the whole of it.
+  const std::string source = RESTITUTION_SOURCE_DIR;
+  const std::size_t piece = std::min<std::size_t>(source.size(), 16);
+  for (const std::string& part : {source.substr(0, piece), source.substr(source.size() - piece)}) {
+    EXPECT_EQ(bytes.find(part), std::string::npos) << "the program contains '" << part << "' of " << source;
+  }
 }
 
 }  // namespace
