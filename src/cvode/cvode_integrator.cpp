@@ -43,8 +43,8 @@ int right_hand_side(sunrealtype t, N_Vector y, N_Vector ydot, void* user_data) n
   } else if (data.form == Form::sundman) {
     const double u = s[kFirst];
     const double x = law.compression_of(u);
-    const double dtau_ds = data.per_root(law.dcompression_du(u));  // u^{q-1}
-    d[kFirst] = data.per_root(v);
+    const double dtau_ds = law.dcompression_du(u) / law.smoothing_root();  // u^{q-1}
+    d[kFirst] = v / law.smoothing_root();
     d[kVelocity] = law.acceleration(x, v) * dtau_ds;
     d[kDissipation] = law.dissipation_integrand(x, v) * dtau_ds;
     d[kSundmanTau] = dtau_ds;
@@ -125,13 +125,12 @@ int event_functions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data) 
 // CVODE's error weights for a relative tolerance and a vector of absolute ones, 1/(rtol |y_i| + atol_i), in
 // one loop: the same arithmetic as CVODE's own (CVodeSVtolerances: N_VAbs, N_VLinearSum, N_VInv), without its
 // four vector calls per step (~2 % of a solve's instructions).
-// Size: the state's (3 or 4), fixed per integrator so that the loop unrolls.
-template <std::size_t Size>
 int error_weights(N_Vector y, N_Vector weights, void* user_data) noexcept {
   const Data& data = *static_cast<Data*>(user_data);
   const double* s = NV_DATA_S(y);
   double* w = NV_DATA_S(weights);
-  for (std::size_t i = 0; i < Size; ++i) {
+  const auto size = static_cast<std::size_t>(NV_LENGTH_S(y));
+  for (std::size_t i = 0; i < size; ++i) {
     const double scale = data.relative_tolerance * std::abs(s[i]) + data.absolute_tolerance[i];
     if (scale <= 0.0) return -1;  // as CVODE: a zero weight scale is an error
     w[i] = 1.0 / scale;
@@ -145,9 +144,6 @@ CvodeIntegrator::CvodeIntegrator(Method method, const sundials::Context& context
     : state_(sundials::make_small_vector(size, context)),
       memory_(method == Method::adams ? CV_ADAMS : CV_BDF, context),
       size_(size) {
-  if (size != state_size(Form::time) && size != state_size(Form::sundman)) {
-    throw NumericalFailure(fmt::format("no form of the equation of motion has {} components", size));
-  }
   N_VConst(0.0, state_.get());
   if (method == Method::adams) {
     // Adams is chosen where the problem is not stiff: a fixed-point corrector needs no Jacobian.
@@ -163,7 +159,6 @@ void CvodeIntegrator::start(const ContactLaw& law, const PhaseSettings& settings
   void* mem = memory_.get();
   memory_.clear_error();
   data_.law = &law;
-  data_.root_inverse = 1.0 / law.smoothing_root();
   data_.form = settings.form;
   data_.switch_x = settings.switch_x;
   data_.tau_log = settings.tau_log;
@@ -182,8 +177,7 @@ void CvodeIntegrator::start(const ContactLaw& law, const PhaseSettings& settings
   if (!initialized_) {
     sundials::check_flag(CVodeInit(mem, right_hand_side, t0, state_.get()), "CVodeInit");
     sundials::check_flag(CVodeSetUserData(mem, &data_), "CVodeSetUserData");
-    sundials::check_flag(CVodeWFtolerances(mem, size_ == 4 ? error_weights<4> : error_weights<3>),
-                         "CVodeWFtolerances");
+    sundials::check_flag(CVodeWFtolerances(mem, error_weights), "CVodeWFtolerances");
     if (fixed_point_solver_) {
       sundials::check_flag(CVodeSetNonlinearSolver(mem, fixed_point_solver_.get()),
                            "CVodeSetNonlinearSolver");

@@ -109,13 +109,6 @@ class CvodeIntegrator {
     std::array<Event, kMaxEvents> events{};
     std::array<bool, kMaxEvents> ignored{};
     int event_count = 0;
-    // 1/q: for q a power of two (1, 2, 4: every law's) value·(1/q) is value/q to the bit, and a
-    // multiplication keeps a division (~15 cycles of latency) out of the right-hand side of the Sundman form.
-    double root_inverse = 1.0;
-    [[nodiscard]] double per_root(double value) const {
-      const int q = law->smoothing_root();
-      return (q & (q - 1)) == 0 ? value * root_inverse : value / q;
-    }
     double relative_tolerance = 0.0;  // of the phase, as CVODE is given it (at least 2 DBL_EPSILON)
     State absolute_tolerance{};
   };
