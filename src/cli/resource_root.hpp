@@ -7,7 +7,8 @@
 namespace restitution::cli {
 
 // PREFIX/share/restitution when the program runs as PREFIX/bin/restitution after `cmake --install`
-// (cmake/install.cmake puts those files there), else the source tree it was built from.
+// (cmake/install.cmake puts those files there), else the source tree named by the build tree's marker beside
+// the program (src/CMakeLists.txt): no path of the build machine is compiled into the program.
 std::filesystem::path resource_root();
 
 }  // namespace restitution::cli

@@ -109,11 +109,12 @@ class CvodeIntegrator {
     std::array<Event, kMaxEvents> events{};
     std::array<bool, kMaxEvents> ignored{};
     int event_count = 0;
+    double relative_tolerance = 0.0;  // of the phase, as CVODE is given it (at least 2 DBL_EPSILON)
+    State absolute_tolerance{};
   };
 
  private:
   sundials::Vector state_;
-  sundials::Vector absolute_tolerance_;
   sundials::Matrix jacobian_;
   sundials::LinearSolver linear_solver_;
   sundials::NonlinearSolver fixed_point_solver_;

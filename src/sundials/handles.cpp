@@ -3,7 +3,6 @@
 
 #include <fmt/core.h>
 #include <sunmatrix/sunmatrix_dense.h>
-#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include "restitution/errors.hpp"
 
@@ -35,12 +34,6 @@ Matrix make_dense_matrix(sunindextype rows, sunindextype columns, const Context&
   Matrix m(SUNDenseMatrix(rows, columns, context.get()));
   check_created(m.get(), "SUNDenseMatrix");
   return m;
-}
-
-NonlinearSolver make_fixed_point_solver(const Vector& template_vector, const Context& context) {
-  NonlinearSolver s(SUNNonlinSol_FixedPoint(template_vector.get(), 0, context.get()));
-  check_created(s.get(), "SUNNonlinSol_FixedPoint");
-  return s;
 }
 
 CvodeMemory::CvodeMemory(int linear_multistep_method, const Context& context)

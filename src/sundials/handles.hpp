@@ -52,7 +52,6 @@ struct NonlinearSolverDeleter {
   void operator()(SUNNonlinearSolver s) const { SUNNonlinSolFree(s); }
 };
 using NonlinearSolver = std::unique_ptr<std::remove_pointer_t<SUNNonlinearSolver>, NonlinearSolverDeleter>;
-NonlinearSolver make_fixed_point_solver(const Vector& template_vector, const Context& context);
 
 // CVODE integrator memory. Owns the memory block and collects CVODE's error messages instead of
 // letting CVODE print them (library code never prints).

@@ -2,7 +2,9 @@
 #pragma once
 // A serial N_Vector for the 3-component states of this project. SUNDIALS' serial vector spends more time
 // dispatching (special cases of LinearSum, separate local/global reductions) than computing on three
-// numbers; CVODE's step is O(q^2) vector operations, so they dominate a solve. This vector keeps the
+// numbers; CVODE's step is O(q^2) vector operations, so they dominate a solve (also with the optimized
+// CVODE build: with SUNDIALS' serial vector a delayed-end sweep takes 36 % more instructions and ~12 % more
+// CPU, a naive-end sweep 39 % more instructions, docs/performance.md, issue 34). This vector keeps the
 // serial layout (the dense linear solver and N_VGetArrayPointer work on it unchanged) and replaces the
 // operations CVODE calls per step by plain loops, with the fused operations enabled. Private to the
 // library.
