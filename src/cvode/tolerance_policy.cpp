@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "cvode/cvode_engine.hpp"
-#include "restitution/errors.hpp"
 
 namespace restitution::detail {
 namespace {
@@ -41,7 +40,6 @@ constexpr double kSinglePhaseEndCompression = 1e-4;
 }  // namespace
 
 SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options, double conditioning) {
-  check_solve_request(law, options, cvode_rounding(law, options));
   SolvePlan plan;
   const MethodChoice choice = choose_methods(law, options.method, options.ends);
   plan.method = choice.method;
