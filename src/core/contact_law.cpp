@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "law/law_rhs.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
 
@@ -139,6 +140,28 @@ ContactLaw ContactLaw::unchecked(LawKind kind, double damping, double stiffness)
 
 ContactLaw ContactLaw::natural_form() const {
   return {kind_, zeta_};
+}
+
+double ContactLaw::shape(double x) const {
+  return law_rhs::shape(*this, x);
+}
+double ContactLaw::force_factor(double x, double v) const {
+  return law_rhs::force_factor(*this, x, v);
+}
+double ContactLaw::acceleration(double x, double v) const {
+  return law_rhs::acceleration(*this, x, v);
+}
+double ContactLaw::dissipation_integrand(double x, double v) const {
+  return law_rhs::dissipation_integrand(*this, x, v);
+}
+
+double ContactLaw::elastic_energy(double x) const {
+  if (x <= 0.0) return 0.0;
+  return stiffness_ * energy_coefficient_ * x * x * detail::positive_power(x, a_ - 1.0);
+}
+
+double ContactLaw::force_zero_compression(double velocity) const {
+  return detail::positive_power(damping_ * -velocity / stiffness_, 1.0 / (a_ - b_));
 }
 
 EndValues ContactLaw::end_values(double x, double velocity, double dissipation_integral) const {

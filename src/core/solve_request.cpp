@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "engine/solve_request.hpp"
 #include "registry/engine_registry.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "cvode/cvode_engine.hpp"
+#include "law/law_rhs.hpp"
 
 namespace restitution::detail {
 namespace {
@@ -46,7 +47,7 @@ SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options, double 
   plan.tail_method = choice.tail;
   // The smooth variable u = x^{1/q} pays where the solution is not analytic in τ at x = 0 (q > 1).
   plan.smooth_ends = options.smooth_ends && law.smoothing_root() > 1;
-  const ResolutionScales m = law.resolution_scales(options.ends);
+  const ResolutionScales m = resolution_scales(law, options.ends);
   const double rtol = options.tolerance * local_to_global(plan.method, options.tolerance) *
                       law.conditioning(options.ends) * conditioning;
   plan.relative_tolerance = rtol;

@@ -5,8 +5,10 @@
 // that the resulting error stays below the requested tolerance.
 #include <optional>
 
+#include "cvode/cvode_engine.hpp"
 #include "cvode/cvode_integrator.hpp"
-#include "restitution/collision_solver.hpp"
+#include "engine/solve_request.hpp"
+#include "restitution/solve_types.hpp"
 
 namespace restitution::detail {
 
