@@ -6,8 +6,9 @@
   folders it owns (sundials/ belongs to cvode). An engine includes the interface and nothing of another engine.
 * The __float128 reference (src/reference/) instantiates the Taylor recurrences itself and must not reach
   CVODE's files, so that it stays an independent check of them.
-* core/ (the law and the solver) includes the interface and the registry's header only, never an engine's
-  own files; the registry's header includes no engine either (only its .cpp, the table, does).
+* solver/ (the facade above the engines) includes the interface and the registry's header only, never an
+  engine's own files; the registry's header includes no engine either (only its .cpp, the table, does).
+* law/ (below the engines) includes no engine, no interface and no solver.
 
 A folder or group that matches no file fails, so that a rename cannot make the check pass vacuously.
 Usage: engine_isolation.py SOURCE_DIR
@@ -33,19 +34,20 @@ def group_of(path):
         return f"engine {folder}"
     if folder in owned:
         return f"engine {owned[folder]}"
-    return {"engine": "interface", "core": "core", "reference": "float128 reference"}.get(folder)
+    return {"engine": "interface", "solver": "solver", "law": "law", "reference": "float128 reference"}.get(folder)
 
 
 engine_groups = {f"engine {e}" for e in engines}
 allowed = {
-    "interface": set(),
+    "interface": {"law"},
+    "law": set(),
     "registry header": {"interface"},
-    "registry table": {"interface", "registry header"} | engine_groups,
-    "core": {"interface", "registry header"},
+    "registry table": {"interface", "registry header", "law"} | engine_groups,
+    "solver": {"interface", "registry header", "law"},
     "float128 reference": {"engine taylor"},
 }
 for group in engine_groups:
-    allowed[group] = {"interface"}
+    allowed[group] = {"interface", "law"}
 
 files = {}
 for path in source.rglob("*"):

@@ -4,7 +4,7 @@
 //
 // The family (docs/contact_laws.md), in natural units (x'(0) = 1):
 //     x'' + ζ x^b x' + x^a = 0,   x(0) = 0,  x'(0) = 1,
-// one member per LawKind (exponents a, b in src/core/law_family.cpp). The engines see it as
+// one member per LawKind (exponents a, b in src/law/law_family.cpp). The engines see it as
 //     x'' = -w(x) · (c_d · x' + c_s · x^{a-b}),   w(x) = x^b,
 // with c_d = ζ, c_s = 1 in natural units (the 2008 paper's scaled Hertz form has other c_d, c_s, x'(0)).
 // A non-integer power of x is 0 at x <= 0 (no force without overlap; the root of a trial step's negative x

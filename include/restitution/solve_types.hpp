@@ -53,7 +53,7 @@ struct SolveOptions {
 
 // Tolerances (relative accuracy of ε): the project accepts requests in [kSmallestTolerance,
 // kMaxTolerance]; the CVODE engine delivers down to kMinTolerance and refuses smaller ones with a message
-// saying so. check_solve_options (src/core/solve_request.cpp) is the one place that applies them.
+// saying so. check_solve_options (src/solver/solve_options.cpp) is the one place that applies them.
 inline constexpr double kSmallestTolerance = 1e-14;
 inline constexpr double kMinTolerance = 1e-11;
 inline constexpr double kMaxTolerance = 1e-2;

@@ -16,10 +16,11 @@ struct EngineRounding {
   double smallest_eps = 0.0;      // smallest naive ε the engine resolves (>= the smallest normal double)
   const char* smallest_why = "";  // why, for the message
 };
-// check_solve_options plus the ends that do not exist for this law (the naive end of an overdamped dash-pot)
+// The ends that do not exist for this law (the naive end of an overdamped dash-pot)
 // and the one conditioning check: a tolerance below what rounding lets `engine` deliver for this law and
 // end, or an answer below the engine's smallest ε, is refused with InvalidInput naming the tolerance that can
-// be delivered. Every engine checks its request with it.
+// be delivered. Every engine checks its request with it, once per solve, after the solver has checked the
+// options alone (check_solve_options).
 void check_solve_request(const ContactLaw& law, const SolveOptions& options, const EngineRounding& engine);
 
 }  // namespace restitution
