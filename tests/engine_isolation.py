@@ -2,7 +2,7 @@
 """Each engine in its own room (docs/design.md, "Engines"), checked on the includes, folder by folder.
 
 * src/engine/ is the interface (engine.hpp): it includes no engine.
-* The engines are the folders src/registry/engine_registry.cpp includes (cvode, taylor), each with the
+* The engines are the folders src/solver/engine_registry.cpp includes (cvode, taylor), each with the
   folders it owns (sundials/ belongs to cvode). An engine includes the interface and nothing of another engine.
 * The __float128 reference (src/reference/) instantiates the Taylor recurrences itself and must not reach
   CVODE's files, so that it stays an independent check of them.
@@ -19,16 +19,16 @@ import sys
 
 source = pathlib.Path(sys.argv[1]) / "src"
 owned = {"sundials": "cvode"}  # helper folders and the engine they belong to
-table = (source / "registry" / "engine_registry.cpp").read_text(encoding="utf-8")
-engines = sorted(set(re.findall(r'^#include "([^/"]+)/', table, re.M)) - {"registry", "engine", "restitution"})
+table = (source / "solver" / "engine_registry.cpp").read_text(encoding="utf-8")
+engines = sorted(set(re.findall(r'^#include "([^/"]+)/', table, re.M)) - {"solver", "engine", "law", "restitution"})
 
 
 def group_of(path):
     """The group of a path relative to src/ (folder/file)."""
     folder = path.split("/")[0]
-    if path == "registry/engine_registry.hpp":
+    if path == "solver/engine_registry.hpp":
         return "registry header"
-    if folder == "registry":
+    if path == "solver/engine_registry.cpp":
         return "registry table"
     if folder in engines:
         return f"engine {folder}"

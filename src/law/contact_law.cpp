@@ -8,7 +8,6 @@
 
 #include "law/law_rhs.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/units.hpp"
 
 namespace restitution {
 namespace {
@@ -114,7 +113,8 @@ ContactLaw ContactLaw::hertz_natural(double zeta) {
 ContactLaw ContactLaw::hertz_scaled(double beta, double velocity) {
   require_finite_nonnegative(beta, "beta");
   require_finite_positive(velocity, "velocity");
-  ContactLaw law(LawKind::viscoelastic_hertz, zeta_from(beta, velocity));
+  // ζ = β v^{1/5} (units.hpp's zeta_from, which stands above the law and does not serve it).
+  ContactLaw law(LawKind::viscoelastic_hertz, beta * std::pow(velocity, 0.2));
   law.damping_ = beta * std::pow(velocity, -0.2);
   law.stiffness_ = std::pow(velocity, -0.4);
   law.initial_velocity_ = std::pow(velocity, 0.8);

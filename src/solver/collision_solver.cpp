@@ -6,8 +6,8 @@
 #include <memory>
 #include <string>
 
-#include "registry/engine_registry.hpp"
 #include "restitution/errors.hpp"
+#include "solver/engine_registry.hpp"
 
 namespace restitution {
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <string>
 
-#include "registry/engine_registry.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
+#include "solver/engine_registry.hpp"
 
 namespace restitution {
 
