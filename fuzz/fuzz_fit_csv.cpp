@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// libFuzzer target: the fit CSV reader (restitution/fit_csv.hpp, what `fit-data` and scenes' [[fit]] read).
+// libFuzzer target: the fit CSV reader (restitution/fit.hpp, what `fit-data` and scenes' [[fit]] read).
 // Any bytes give measurements or InvalidInput naming the file; anything else is a finding. Accepted data must
 // be consistent (one eps and at most one sigma per speed, every value finite and in range, no more rows than
 // lines or the bound) and round-trip: written back as v,eps[,sigma] with 17 digits they read back identical.
@@ -14,7 +14,7 @@
 #include <string>
 
 #include "restitution/errors.hpp"
-#include "restitution/fit_csv.hpp"
+#include "restitution/fit.hpp"
 
 namespace {
 

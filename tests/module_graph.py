@@ -3,8 +3,13 @@
 the Python module (python/src) includes only the installed API, its own headers and a module's public interface,
 never a header under a module folder (no study's private header, no library internals).
 
-A module is a folder under src/; `#include "M/..."` in a file of module A is an edge A -> M (restitution/ is the
-public API and no module). A module may have a public interface, src/M/include/P/, that its CMake target exports:
+A module is a folder under src/; `#include "M/..."` in a file of module A is an edge A -> M. A public header
+include/restitution/H.hpp belongs to the module that implements it: the folder named H, else the folder of
+H.cpp, else the one folder whose sources include it first (restitution.hpp, the umbrella: sundials/build_info.cpp);
+a header no folder implements (errors.hpp: inline only) is no module. So `#include "restitution/H.hpp"` in module
+A is an edge A -> H's module, and a public header's own includes are edges of its module (the umbrella's are
+not: it includes everything for users and implements nothing of it). Each edge is printed with the number of
+include lines behind it. A module may have a public interface, src/M/include/P/, that its CMake target exports:
 `#include "P/..."` is an edge to M as well (src/series_study/include/restitution_series_study/). The study
 folders are read from src/CMakeLists.txt (restitution_study_modules).
 Usage: module_graph.py SOURCE_DIR
@@ -19,16 +24,63 @@ study = set(re.search(r"set\(restitution_study_modules ([^)]*)\)",
 modules = {d.name for d in source.iterdir() if d.is_dir()}
 # The interface prefixes P of src/M/include/P/ and their module M.
 interfaces = {p.name: p.parent.parent.name for p in source.glob("*/include/*") if p.is_dir()}
-edges = {m: set() for m in modules}
+public = source.parent / "include" / "restitution"
+umbrella = "restitution.hpp"
+first_includes = {}  # public header -> folders whose sources include it first
+for path in source.rglob("*.cpp"):
+    included = re.findall(r'^#include "([^"]+)"', path.read_text(encoding="utf-8"), re.M)
+    if included and included[0].startswith("restitution/"):
+        first_includes.setdefault(included[0], set()).add(path.relative_to(source).parts[0])
+
+
+def implementer(header):
+    """The module implementing include/restitution/<header>, or None for an inline-only header."""
+    stem = header.removesuffix(".hpp")
+    if stem in modules:
+        return stem
+    folders = {p.relative_to(source).parts[0] for p in source.glob(f"*/{stem}.cpp")}
+    if len(folders) == 1:
+        return folders.pop()
+    if not re.search(r"\)\s*(const\s*)?(noexcept\s*)?;", (public / header).read_text(encoding="utf-8")):
+        return None  # declares no function it does not define: nothing to implement
+    folders = first_includes.get(f"restitution/{header}", set())
+    if len(folders) == 1:
+        return folders.pop()
+    if folders:
+        failures.append(f"public header {header}: implemented by which of {sorted(folders)}?")
+    return None
+
+
+failures = []
+owner = {h.name: implementer(h.name) for h in sorted(public.glob("*.hpp"))}
+edges = {m: {} for m in modules}
+
+
+def add_edge(module, target):
+    if target in modules and target != module:
+        edges[module][target] = edges[module].get(target, 0) + 1
+
+
+def include_targets(text):
+    """The modules a file's includes reach: folders, interfaces and the owners of public headers."""
+    for header in re.findall(r'^#include "([^"]+)"', text, re.M):
+        prefix = header.split("/")[0] if "/" in header else None
+        if prefix == "restitution":
+            yield owner.get(header.split("/", 1)[1])
+        elif prefix is not None:
+            yield interfaces.get(prefix, prefix)
+
+
 for module in modules:
     for path in (source / module).rglob("*"):
         if path.suffix in (".cpp", ".hpp"):
-            for prefix in re.findall(r'^#include "([^/"]+)/', path.read_text(encoding="utf-8"), re.M):
-                target = interfaces.get(prefix, prefix)
-                if target in modules and target != module:
-                    edges[module].add(target)
+            for target in include_targets(path.read_text(encoding="utf-8")):
+                add_edge(module, target)
+for header, module in owner.items():
+    if module is not None and header != umbrella:
+        for target in include_targets((public / header).read_text(encoding="utf-8")):
+            add_edge(module, target)
 
-failures = []
 state = {}  # 1: on the current path, 2: done
 
 
@@ -47,7 +99,7 @@ for module in sorted(modules):
         visit(module, [module])
 library = modules - study - {"cli"}
 for module in sorted(library):
-    for target in sorted(edges[module] & (study | {"cli"})):
+    for target in sorted(set(edges[module]) & (study | {"cli"})):
         failures.append(f"the installable library's module {module} includes {target}")
 python_edges = set()
 python_source = source.parent / "python" / "src"
@@ -58,6 +110,8 @@ for path in sorted(python_source.rglob("*")):
             if prefix is None and (path.parent / header).is_file():
                 continue  # the module's own header
             if prefix == "restitution" and (source.parent / "include" / header).is_file():
+                if owner.get(header.split("/", 1)[1]) is not None:
+                    python_edges.add(owner[header.split("/", 1)[1]])
                 continue  # the installed API
             if prefix in interfaces and (source / interfaces[prefix] / "include" / header).is_file():
                 python_edges.add(interfaces[prefix])
@@ -65,8 +119,9 @@ for path in sorted(python_source.rglob("*")):
             failures.append(f"python/{path.relative_to(python_source.parent)} includes {header}: neither the "
                             "installed API, its own header nor a module's public interface (src/M/include/)")
 for module in sorted(modules):
-    print(f"{module} -> {' '.join(sorted(edges[module])) or '(public headers only)'}")
-print(f"python -> {' '.join(m + ' (its interface)' for m in sorted(python_edges)) or '(public headers only)'}")
+    print(f"{module} -> {', '.join(f'{t} ({n})' for t, n in sorted(edges[module].items())) or '(nothing)'}")
+print(f"python -> {' '.join(sorted(python_edges)) or '(nothing)'}")
+print("public headers: " + ", ".join(f"{h} ({m or 'inline only'})" for h, m in owner.items()))
 for failure in failures:
     print(failure)
 sys.exit(1 if failures else 0)

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
-#include "restitution/build_info.hpp"
+#include "restitution/restitution.hpp"
 
 namespace {
 

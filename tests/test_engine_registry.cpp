@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The registry of engines (src/registry/engine_registry.hpp): which engine computes each method, its name and
+// The registry of engines (src/solver/engine_registry.hpp): which engine computes each method, its name and
 // floor, and whether it covers a law, its ends and the options (its own check()).
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "registry/engine_registry.hpp"
 #include "restitution/errors.hpp"
+#include "solver/engine_registry.hpp"
 #include "taylor/taylor_engine.hpp"
 
 namespace restitution {

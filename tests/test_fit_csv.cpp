@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The fit CSV reader's bounds (restitution/fit_csv.hpp), each met exactly and exceeded by one, and the
+// The fit CSV reader's bounds (restitution/fit.hpp), each met exactly and exceeded by one, and the
 // excerpt that messages quote.
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "restitution/errors.hpp"
-#include "restitution/fit_csv.hpp"
+#include "restitution/fit.hpp"
 
 namespace restitution {
 namespace {

@@ -8,7 +8,7 @@
 #include "reference_values.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/series_tables.hpp"
+#include "series/published_tables.hpp"
 
 namespace restitution {
 namespace {

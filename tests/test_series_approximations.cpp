@@ -11,7 +11,7 @@
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"
-#include "restitution/series_tables.hpp"
+#include "series/published_tables.hpp"
 #include "series_study/series_coefficients.hpp"
 #include "series_study/series_validation.hpp"
 

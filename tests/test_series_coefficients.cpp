@@ -14,7 +14,7 @@
 
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"
-#include "restitution/series_tables.hpp"
+#include "series/published_tables.hpp"
 #include "series_study/series_coefficients.hpp"
 
 namespace restitution::series {

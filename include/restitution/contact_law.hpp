@@ -4,7 +4,7 @@
 //
 // The family (docs/contact_laws.md), in natural units (x'(0) = 1):
 //     x'' + ζ x^b x' + x^a = 0,   x(0) = 0,  x'(0) = 1,
-// one member per LawKind (exponents a, b in src/core/law_family.cpp). The engines see it as
+// one member per LawKind (exponents a, b in src/law/law_family.cpp). The engines see it as
 //     x'' = -w(x) · (c_d · x' + c_s · x^{a-b}),   w(x) = x^b,
 // with c_d = ζ, c_s = 1 in natural units (the 2008 paper's scaled Hertz form has other c_d, c_s, x'(0)).
 // A non-integer power of x is 0 at x <= 0 (no force without overlap; the root of a trial step's negative x
@@ -74,35 +74,13 @@ inline constexpr double kSmallestServedZeta = DBL_MIN;
 // and require_served_zeta's refusal below kSmallestServedZeta.
 void require_checked_zeta(double zeta);
 // Throws InvalidInput naming ζ and kSmallestServedZeta when 0 < zeta < kSmallestServedZeta. Every engine's
-// check (check_solve_request) calls it, so every front end refuses such a ζ.
+// check calls it, so every front end refuses such a ζ.
 void require_served_zeta(double zeta);
 
 // The time scale T = (v^{1-a} m/k)^{1/(1+a)} [s] of ContactLaw::physical (its length scale is v·T [m]):
 // τ_natural · T is the time in seconds, x_natural · v · T the compression in metres.
 double physical_time_scale_s(LawKind kind, double stiffness_N_per_m_a, double effective_mass_kg,
                              double impact_speed_m_s);
-
-namespace detail {
-// x^e for x > 0. The quarter exponents of the named members are written with sqrt, which is correctly
-// rounded (std::pow is not) and several times faster.
-inline double positive_power(double x, double e) {
-  if (e == 0.0) return 1.0;
-  if (e == 1.0) return x;
-  if (e == 0.5) return std::sqrt(x);
-  if (e == 1.5) return x * std::sqrt(x);
-  if (e == 0.25) return std::sqrt(std::sqrt(x));
-  if (e == 0.75) return std::sqrt(x) * std::sqrt(std::sqrt(x));
-  if (e == 1.25) return x * std::sqrt(std::sqrt(x));
-  return std::pow(x, e);
-}
-// x^e continued to x <= 0: smoothly for an integer e, by 0 otherwise (see the header comment).
-inline double continued_power(double x, double e) {
-  if (x > 0.0) return positive_power(x, e);
-  if (e == 0.0) return 1.0;
-  if (e == 1.0) return x;
-  return e == std::floor(e) ? std::pow(x, e) : 0.0;
-}
-}  // namespace detail
 
 // One end of the collision, for callers that ask for a single end. naive: the overlap returns to x = 0
 // ("clamp off"); delayed_recovery: the total force first reaches 0, c_d x' + c_s x^{a-b} = 0, where a DEM
@@ -162,17 +140,9 @@ class PerEnd {
   std::array<T, 2> values_{};
 };
 
-// Natural-unit magnitudes (x'(0) = 1) of the smallest compression, velocity and dissipation integral that
-// decide the requested results: the tolerance policies scale absolute tolerances with them.
-struct ResolutionScales {
-  double x = 1.0;
-  double velocity = 1.0;
-  double dissipation = 1.0;
-};
-
 // Whether the naive end (x back to 0) exists: for every ζ (viscoelastic Hertz), below a critical ζ known in
 // closed form (the dash-pot, Tsuji), or decided by the solve (constant damping: the overlap may approach 0
-// only as τ -> ∞; ContactLaw::naive_end_excluded certifies it).
+// only as τ -> ∞, which the CVODE engine certifies during the solve).
 enum class NaiveEndExistence { always, below_critical_zeta, decided_by_solve };
 
 // ε and 1 - ε at an end, each computed in the form that keeps its relative accuracy.
@@ -249,32 +219,16 @@ class ContactLaw {
     return q_ == 1 ? x : std::pow(x, 1.0 / q_);
   }
 
-  [[nodiscard]] double shape(double x) const { return detail::continued_power(x, b_); }  // w(x) = x^b
-  [[nodiscard]] double shape_derivative(double x) const {
-    if (x <= 0.0 || b_ == 0.0) return 0.0;
-    return b_ / detail::positive_power(x, 1.0 - b_);
-  }
+  // The equation of motion x'' = -w(x) (c_d x' + c_s x^{a-b}), in the law's own units.
+  [[nodiscard]] double shape(double x) const;  // w(x) = x^b
   // c_d x' + c_s x^{a-b}: the force divided by w(x); it changes sign at the force-zero end.
-  [[nodiscard]] double force_factor(double x, double v) const {
-    return damping_ * v + stiffness_ * detail::continued_power(x, a_ - b_);
-  }
-  [[nodiscard]] double acceleration(double x, double v) const { return -shape(x) * force_factor(x, v); }
-  [[nodiscard]] double dacceleration_dx(double x, double v) const {
-    return -(shape_derivative(x) * force_factor(x, v) + shape(x) * (stiffness_ * elastic_slope(x)));
-  }
-  [[nodiscard]] double dacceleration_dv(double x) const { return -shape(x) * damping_; }
+  [[nodiscard]] double force_factor(double x, double v) const;
+  [[nodiscard]] double acceleration(double x, double v) const;
   // The dissipated energy is D = c_d · ∫ w(x) x'^2 dτ; the integrand is kept free of c_d so that it stays
   // of order one as c_d -> 0 and D keeps full relative accuracy.
-  [[nodiscard]] double dissipation_integrand(double x, double v) const { return shape(x) * v * v; }
-  [[nodiscard]] double ddissipation_integrand_dx(double x, double v) const {
-    return shape_derivative(x) * v * v;
-  }
-  [[nodiscard]] double ddissipation_integrand_dv(double x, double v) const { return 2.0 * shape(x) * v; }
+  [[nodiscard]] double dissipation_integrand(double x, double v) const;
   // U(x) = c_s x^{a+1}/(a+1), 0 without overlap (written x·x·x^{a-1}: every member has a >= 1).
-  [[nodiscard]] double elastic_energy(double x) const {
-    if (x <= 0.0) return 0.0;
-    return stiffness_ * energy_coefficient_ * x * x * detail::positive_power(x, a_ - 1.0);
-  }
+  [[nodiscard]] double elastic_energy(double x) const;
 
   // ε and 1 - ε at an end reached at compression x (law's units) with velocity `velocity` and dissipation
   // integral I = ∫ w(x) x'^2 dτ: ε from the velocity, 1 - ε from the energy balance
@@ -282,10 +236,8 @@ class ContactLaw {
   [[nodiscard]] EndValues end_values(double x, double velocity, double dissipation_integral) const;
 
   // What the tolerance policies need (natural units unless said otherwise), derived from the scaling of
-  // the member (docs/contact_laws.md): the magnitudes that decide the requested ends, a factor (<= 1) on
-  // the local tolerance where the end is ill-conditioned, and a time limit (law's own τ) no end lies
-  // beyond.
-  [[nodiscard]] ResolutionScales resolution_scales(EndSet ends) const;
+  // the member (docs/contact_laws.md): a factor (<= 1) on the local tolerance where the end is
+  // ill-conditioned, and a time limit (law's own τ) no end lies beyond.
   [[nodiscard]] double conditioning(EndSet ends) const;
   [[nodiscard]] double time_limit(EndSet ends) const;
 
@@ -301,10 +253,6 @@ class ContactLaw {
   // The critical ζ of a scale-invariant member, naive_end_critical_zeta(kind()): the naive end exists below
   // it (ζ = 2 for the dash-pot, r = 1; sqrt(5) for Tsuji).
   [[nodiscard]] double critical_zeta() const { return naive_end_critical_zeta(kind_); }
-  // For decided_by_solve: a function of the state that is <= 0 only where the overlap provably never
-  // returns to 0 (x > 0, x' <= 0 in the invariant region x' >= -k x^{b+1}, x^{a-2b-1} < ζ²/(4(b+1)),
-  // k = ζ/(2(b+1)): docs/contact_laws.md), positive before maximal compression; natural units.
-  [[nodiscard]] double naive_end_excluded(double x, double v) const;
   // The naive end's balance 1 - a + 2b: its sign decides how the overlap behaves as x -> 0
   // (docs/contact_laws.md). Positive (viscoelastic Hertz): inertia wins near x = 0 and the naive end always
   // exists, reached through x ~ ζ^{-2/(1-a+2b)} at large ζ. Zero (the dash-pot, Tsuji): the law is
@@ -329,19 +277,10 @@ class ContactLaw {
   // differ in 1 - ε by a relative ζ^{(b+1)/(a-b)} < 1e-30, and the engines report the naive end's ε for it.
   [[nodiscard]] double indistinguishable_ends_zeta() const;
   // The compression at the force-zero end for such a ζ, from the velocity there.
-  [[nodiscard]] double force_zero_compression(double velocity) const {
-    return detail::positive_power(damping_ * -velocity / stiffness_, 1.0 / (a_ - b_));
-  }
+  [[nodiscard]] double force_zero_compression(double velocity) const;
 
  private:
   ContactLaw(LawKind kind, double zeta);
-  // d x^{a-b}/dx
-  [[nodiscard]] double elastic_slope(double x) const {
-    const double e = a_ - b_;
-    if (e == 1.0) return 1.0;
-    if (x <= 0.0) return e == std::floor(e) ? e * std::pow(x, e - 1.0) : 0.0;
-    return e * detail::positive_power(x, e - 1.0);
-  }
 
   LawKind kind_ = LawKind::viscoelastic_hertz;
   double a_ = 1.5;

@@ -1,18 +1,34 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The restitution library in one include: contact laws, the collision solver and its engines, units and
-// materials, calibration, the analytic series with the published coefficient tables, and the certified
-// fast ε(ζ) table.
-#include "restitution/build_info.hpp"
+// materials, calibration, the analytic series and the certified
+// fast ε(ζ) table; and which build of SUNDIALS it carries (below).
 #include "restitution/calibration.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/fast.hpp"
 #include "restitution/fit.hpp"
-#include "restitution/fit_csv.hpp"
 #include "restitution/material.hpp"
 #include "restitution/series.hpp"
-#include "restitution/series_tables.hpp"
+#include "restitution/solve_types.hpp"
 #include "restitution/sweep.hpp"
 #include "restitution/units.hpp"
+
+// Which build of SUNDIALS the library's CVODE engine runs on: the program's --version and every JSON output
+// say it, because it doubles or halves the cost of a CVODE solve (docs/performance.md). The numbers do not
+// depend on it.
+namespace restitution {
+
+struct SundialsBuild {
+  const char* version;  // e.g. "6.4.1"
+  // true: CVODE compiled -O3 from Debian's source package (scripts/sundials) and carried inside the library;
+  // false: Debian's libsundials-dev, compiled without optimization.
+  bool optimized;
+};
+
+SundialsBuild sundials_build();
+// "6.4.1 (optimized, built from Debian's source package)" | "6.4.1 (Debian's libsundials, unoptimized)"
+const char* sundials_build_description();
+
+}  // namespace restitution

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "cli/build_json.hpp"
 
-#include "restitution/build_info.hpp"
+#include "restitution/restitution.hpp"
 
 namespace restitution::cli {
 

@@ -16,7 +16,6 @@
 #include "cli/output_guards.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/fit.hpp"
-#include "restitution/fit_csv.hpp"
 #include "restitution/material.hpp"
 
 namespace restitution::cli {

@@ -11,8 +11,8 @@
 #include "cli/io_error.hpp"
 #include "cli/parse_errors.hpp"
 #include "cli/stop_signals.hpp"
-#include "restitution/build_info.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/restitution.hpp"
 
 namespace {
 

@@ -55,7 +55,7 @@ CollisionResult CvodeEngine::solve(const ContactLaw& law, const SolveOptions& op
     }
     return detail::run_collision(law, options, plan, main, tail, sundman);
   };
-  check(law, options);
+  check(law, options);  // the one check of the request: the plans below trust it
   const detail::SolvePlan plan = detail::plan_solve(law, options);
   CollisionResult result = run(plan);
   // A naive end whose conditioning only the solve reveals (constant damping close to the largest ζ with a

@@ -18,6 +18,8 @@ struct MethodChoice {
   std::optional<Method> tail;
 };
 MethodChoice choose_methods(const ContactLaw& law, Method requested, EndSet ends);
+// The method a result of choose_methods carries (the tail's when there is one): what sets CVODE's rounding.
+Method resolve_method(const ContactLaw& law, Method requested, EndSet ends);
 
 // Largest ζ for which method adams computes the naive end (viscoelastic Hertz): the overdamped tail after the
 // delayed-recovery end is stiff and Adams' steps grow like ζ^{5/3} (258 000 at ζ = 1000, 811 000 at 2000,

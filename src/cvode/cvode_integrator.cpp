@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cfloat>
 
+#include "law/law_rhs.hpp"
 #include "restitution/errors.hpp"
 #include "sundials/fixed_point.hpp"
 #include "sundials/small_dense.hpp"
@@ -38,23 +39,23 @@ int right_hand_side(sunrealtype t, N_Vector y, N_Vector ydot, void* user_data) n
   const double v = s[kVelocity];
   if (data.form == Form::time) {
     d[kFirst] = v;
-    d[kVelocity] = law.acceleration(s[kFirst], v);
-    d[kDissipation] = law.dissipation_integrand(s[kFirst], v);
+    d[kVelocity] = law_rhs::acceleration(law, s[kFirst], v);
+    d[kDissipation] = law_rhs::dissipation_integrand(law, s[kFirst], v);
   } else if (data.form == Form::sundman) {
     const double u = s[kFirst];
     const double x = law.compression_of(u);
     const double dtau_ds = law.dcompression_du(u) / law.smoothing_root();  // u^{q-1}
     d[kFirst] = v / law.smoothing_root();
-    d[kVelocity] = law.acceleration(x, v) * dtau_ds;
-    d[kDissipation] = law.dissipation_integrand(x, v) * dtau_ds;
+    d[kVelocity] = law_rhs::acceleration(law, x, v) * dtau_ds;
+    d[kDissipation] = law_rhs::dissipation_integrand(law, x, v) * dtau_ds;
     d[kSundmanTau] = dtau_ds;
   } else {
     const double x = law.compression_of(t);
     const double dtau_du = law.dcompression_du(t) / v;
     const TauLog& tau_log = data.tau_log;
     d[kFirst] = tau_log.coefficient == 0.0 ? dtau_du : dtau_du + tau_log.coefficient / (t + tau_log.shift);
-    d[kVelocity] = law.acceleration(x, v) * dtau_du;
-    d[kDissipation] = law.dissipation_integrand(x, v) * dtau_du;
+    d[kVelocity] = law_rhs::acceleration(law, x, v) * dtau_du;
+    d[kDissipation] = law_rhs::dissipation_integrand(law, x, v) * dtau_du;
   }
   return 0;
 }
@@ -69,18 +70,19 @@ int jacobian(sunrealtype t, N_Vector y, N_Vector /*fy*/, SUNMatrix J, void* user
   if (data.form == Form::time) {
     const double x = s[kFirst];
     SM_ELEMENT_D(J, kFirst, kVelocity) = 1.0;
-    SM_ELEMENT_D(J, kVelocity, kFirst) = law.dacceleration_dx(x, v);
-    SM_ELEMENT_D(J, kVelocity, kVelocity) = law.dacceleration_dv(x);
-    SM_ELEMENT_D(J, kDissipation, kFirst) = law.ddissipation_integrand_dx(x, v);
-    SM_ELEMENT_D(J, kDissipation, kVelocity) = law.ddissipation_integrand_dv(x, v);
+    SM_ELEMENT_D(J, kVelocity, kFirst) = law_rhs::dacceleration_dx(law, x, v);
+    SM_ELEMENT_D(J, kVelocity, kVelocity) = law_rhs::dacceleration_dv(law, x);
+    SM_ELEMENT_D(J, kDissipation, kFirst) = law_rhs::ddissipation_integrand_dx(law, x, v);
+    SM_ELEMENT_D(J, kDissipation, kVelocity) = law_rhs::ddissipation_integrand_dv(law, x, v);
   } else {
     // Only x' appears on the right-hand side: d/dx' of g(x')·q u^{q-1}/x' is q u^{q-1} (g'·x' - g)/x'^2.
     const double x = law.compression_of(t);
     const double scale = law.dcompression_du(t) / (v * v);
     SM_ELEMENT_D(J, kFirst, kVelocity) = -scale;
-    SM_ELEMENT_D(J, kVelocity, kVelocity) = scale * (law.dacceleration_dv(x) * v - law.acceleration(x, v));
-    SM_ELEMENT_D(J, kDissipation, kVelocity) =
-        scale * (law.ddissipation_integrand_dv(x, v) * v - law.dissipation_integrand(x, v));
+    SM_ELEMENT_D(J, kVelocity, kVelocity) =
+        scale * (law_rhs::dacceleration_dv(law, x) * v - law_rhs::acceleration(law, x, v));
+    SM_ELEMENT_D(J, kDissipation, kVelocity) = scale * (law_rhs::ddissipation_integrand_dv(law, x, v) * v -
+                                                        law_rhs::dissipation_integrand(law, x, v));
   }
   return 0;
 }
@@ -106,7 +108,7 @@ int event_functions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data) 
         g[i] = data.form == Form::sundman ? s[kFirst] : x;
         break;
       case Event::delayed_recovery_end:
-        g[i] = data.law->force_factor(x, v);
+        g[i] = law_rhs::force_factor(*data.law, x, v);
         break;
       case Event::velocity_halved:
         g[i] = v - 0.5 * data.law->initial_velocity();
@@ -115,7 +117,7 @@ int event_functions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data) 
         g[i] = x - data.switch_x;
         break;
       case Event::naive_end_excluded:
-        g[i] = data.law->naive_end_excluded(x, v);
+        g[i] = naive_end_excluded(*data.law, x, v);
         break;
     }
   }

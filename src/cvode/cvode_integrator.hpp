@@ -25,8 +25,8 @@
 #include <cmath>
 #include <string>
 
-#include "restitution/collision_solver.hpp"
 #include "restitution/contact_law.hpp"
+#include "restitution/solve_types.hpp"
 #include "sundials/handles.hpp"
 #include "sundials/small_vector.hpp"
 

@@ -5,7 +5,7 @@
 // CVODE root events.
 #include "cvode/cvode_integrator.hpp"
 #include "cvode/tolerance_policy.hpp"
-#include "restitution/collision_solver.hpp"
+#include "restitution/solve_types.hpp"
 
 namespace restitution::detail {
 

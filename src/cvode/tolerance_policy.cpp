@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "cvode/cvode_engine.hpp"
-#include "restitution/errors.hpp"
+#include "law/law_rhs.hpp"
 
 namespace restitution::detail {
 namespace {
@@ -41,14 +41,13 @@ constexpr double kSinglePhaseEndCompression = 1e-4;
 }  // namespace
 
 SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options, double conditioning) {
-  check_solve_request(law, options, cvode_rounding(law, options));
   SolvePlan plan;
   const MethodChoice choice = choose_methods(law, options.method, options.ends);
   plan.method = choice.method;
   plan.tail_method = choice.tail;
   // The smooth variable u = x^{1/q} pays where the solution is not analytic in τ at x = 0 (q > 1).
   plan.smooth_ends = options.smooth_ends && law.smoothing_root() > 1;
-  const ResolutionScales m = law.resolution_scales(options.ends);
+  const ResolutionScales m = resolution_scales(law, options.ends);
   const double rtol = options.tolerance * local_to_global(plan.method, options.tolerance) *
                       law.conditioning(options.ends) * conditioning;
   plan.relative_tolerance = rtol;

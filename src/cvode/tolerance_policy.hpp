@@ -5,8 +5,10 @@
 // that the resulting error stays below the requested tolerance.
 #include <optional>
 
+#include "cvode/cvode_engine.hpp"
 #include "cvode/cvode_integrator.hpp"
-#include "restitution/collision_solver.hpp"
+#include "engine/solve_request.hpp"
+#include "restitution/solve_types.hpp"
 
 namespace restitution::detail {
 
@@ -28,9 +30,9 @@ struct SolvePlan {
   long max_steps = 0;                      // per phase
 };
 
-// Throws InvalidInput for a tolerance outside [kMinTolerance, kMaxTolerance], no end requested, or an end
-// that does not exist for this law. `conditioning` (<= 1) tightens the local tolerances further, for an end
-// found ill-conditioned by a first solve (ContactLaw::naive_end_conditioning).
+// The plan of a request CvodeEngine::check has accepted (the request is checked once per solve, there).
+// `conditioning` (<= 1) tightens the local tolerances further, for an end found ill-conditioned by a first
+// solve (ContactLaw::naive_end_conditioning).
 SolvePlan plan_solve(const ContactLaw& law, const SolveOptions& options, double conditioning = 1.0);
 
 // What rounding lets CVODE deliver (check_solve_request). Measured on the naive ends of the dash-pot and

@@ -8,8 +8,8 @@
 
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"
-#include "restitution/series_tables.hpp"
 #include "restitution/units.hpp"
+#include "series/published_tables.hpp"
 
 namespace restitution::dem {
 namespace {

@@ -4,7 +4,8 @@
 // and the double-precision Taylor method (taylor/taylor_engine.hpp). CollisionSolver picks one per Method
 // and hands it the law in natural form; what is engine-independent stays in the solver. No engine includes
 // another engine's headers (tests/engine_isolation.py checks that), so an engine is added or changed alone.
-#include "restitution/collision_solver.hpp"
+#include "engine/solve_request.hpp"
+#include "restitution/solve_types.hpp"
 
 namespace restitution {
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The fit CSV reader (restitution/fit_csv.hpp): a byte-by-byte RFC 4180 record reader that holds one record
+// The fit CSV reader (restitution/fit.hpp): a byte-by-byte RFC 4180 record reader that holds one record
 // at a time, so memory is the numbers (24 bytes a row), not the text, and every bound is checked as the bytes
 // arrive.
-#include "restitution/fit_csv.hpp"
+#include "restitution/fit.hpp"
 
 #include <fmt/core.h>
 #include <sys/stat.h>

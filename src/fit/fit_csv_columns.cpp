@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "restitution/errors.hpp"
-#include "restitution/fit_csv.hpp"
+#include "restitution/fit.hpp"
 
 namespace restitution::fit_detail {
 namespace {

@@ -11,9 +11,9 @@
 #include "analysis/stability_report.hpp"
 #include "reference/work_precision.hpp"
 #include "restitution/series.hpp"
-#include "restitution/series_tables.hpp"
 #include "restitution_series_study/series_named.hpp"
 #include "scene/scene_approximations.hpp"
+#include "series/published_tables.hpp"
 
 namespace restitution::scene::detail {
 namespace {

@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "restitution/errors.hpp"
-#include "restitution/fit_csv.hpp"
+#include "restitution/fit.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace restitution::scene::detail {

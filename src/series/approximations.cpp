@@ -5,8 +5,8 @@
 
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"
-#include "restitution/series_tables.hpp"
 #include "series/arguments.hpp"
+#include "series/published_tables.hpp"
 
 namespace restitution::series {
 namespace {

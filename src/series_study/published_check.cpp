@@ -5,7 +5,7 @@
 #include <span>
 
 #include "restitution/errors.hpp"
-#include "restitution/series_tables.hpp"
+#include "series/published_tables.hpp"
 #include "series_study/series_coefficients.hpp"
 
 namespace restitution::series {

@@ -9,8 +9,8 @@
 
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/series_tables.hpp"
 #include "restitution_series_study/series_named.hpp"
+#include "series/published_tables.hpp"
 #include "series_study/series_coefficients.hpp"
 #include "series_study/series_validation.hpp"
 

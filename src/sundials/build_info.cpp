@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "restitution/build_info.hpp"
+#include "restitution/restitution.hpp"
 
 // RESTITUTION_SUNDIALS_VERSION, RESTITUTION_SUNDIALS_OPTIMIZED and RESTITUTION_SUNDIALS_PATCHES come from
 // cmake/sundials.cmake.

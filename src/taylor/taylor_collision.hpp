@@ -23,7 +23,7 @@
 #include <optional>
 #include <type_traits>
 
-#include "restitution/collision_solver.hpp"
+#include "restitution/solve_types.hpp"
 #include "restitution/errors.hpp"
 #include "taylor/taylor_series.hpp"
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "law/law_rhs.hpp"
 #include "restitution/errors.hpp"
 #include "taylor/taylor_collision.hpp"
 
@@ -38,7 +39,7 @@ taylor::TaylorSettings settings_for(const ContactLaw& law, const SolveOptions& o
   if (law.kind() == LawKind::viscoelastic_hertz) {
     // Scales of what decides the result (the law's, as in the CVODE tolerance policy): for large ζ the
     // delayed end has ε ~ ζ^{-5/3} at x ~ ζ^{-2/3}, the naive end ε ~ ζ^{-5} reached through x ~ ζ^{-4}.
-    const ResolutionScales m = law.resolution_scales(options.ends);
+    const ResolutionScales m = resolution_scales(law, options.ends);
     s.compression_floor = {1e-2, 1e-2 * m.velocity, 1e-2 / z};
     s.time_floor = {1e-2 * std::sqrt(m.x), 1e-2 * m.velocity, 1e-2 / z};
     // Below u ~ 1/ζ² the damping no longer dominates and the compression form is not stiff; above it,

@@ -5,7 +5,7 @@
 // §4). Same results and accuracy contract as the CVODE engine; reached through CollisionSolver::solve with
 // Method::taylor, or directly here (it holds no state).
 #include "engine/engine.hpp"
-#include "restitution/collision_solver.hpp"
+#include "restitution/solve_types.hpp"
 
 namespace restitution {
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "law/law_rhs.hpp"
 #include "restitution/contact_law.hpp"
 
 namespace restitution {
@@ -21,14 +22,16 @@ bool ContactLaw::naive_end_may_exist() const {
   return zeta_ / critical_zeta() < 1.0;
 }
 
-double ContactLaw::naive_end_excluded(double x, double v) const {
+double naive_end_excluded(const ContactLaw& law, double x, double v) {
   // In the region x' >= -k x^{b+1} with k = ζ/(2(b+1)), d/dτ (x' + k x^{b+1}) = k(ζ - k(b+1)) x^{2b+1} - x^a
   // on its boundary, positive while x^{a-2b-1} < ζ²/(4(b+1)): for a - 2b - 1 = -naive_balance() > 0 every
   // smaller x keeps it positive, so once x' <= 0 the state never leaves the region, where x decays at most
   // like a power or an exponential of τ and never reaches 0.
-  const double k = zeta_ / (2.0 * (b_ + 1.0));
-  const double x_certified = std::pow(zeta_ * zeta_ / (4.0 * (b_ + 1.0)), 1.0 / -naive_balance());
-  const double outside = -(v + k * detail::continued_power(x, b_ + 1.0));
+  const double zeta = law.zeta();
+  const double b = law.damping_exponent();
+  const double k = zeta / (2.0 * (b + 1.0));
+  const double x_certified = std::pow(zeta * zeta / (4.0 * (b + 1.0)), 1.0 / -law.naive_balance());
+  const double outside = -(v + k * detail::continued_power(x, b + 1.0));
   return std::max({outside, x - x_certified, v});
 }
 
@@ -59,12 +62,15 @@ double ContactLaw::indistinguishable_ends_zeta() const {
   return std::pow(1e-30, (a_ - b_) / (b_ + 1.0));
 }
 
-ResolutionScales ContactLaw::resolution_scales(EndSet ends) const {
+ResolutionScales resolution_scales(const ContactLaw& law, EndSet ends) {
   const bool naive_end = ends.contains(CollisionEnd::naive);
   ResolutionScales m;
-  if (kind_ == LawKind::linear_dashpot) {
+  const double zeta = law.zeta();
+  const double a = law.elastic_exponent();
+  const double b = law.damping_exponent();
+  if (law.kind() == LawKind::linear_dashpot) {
     // The dash-pot's own (measured, docs/accuracy.md) scales, in its damping ratio r.
-    const double r = parameter();
+    const double r = law.parameter();
     if (r > 1.0) {
       // Overdamped: x_max ~ 1/(2r) and, at the delayed-recovery end, ε ~ 1/(4 r^2) for large r.
       m.x = 1.0 / (2.0 * r);
@@ -80,22 +86,22 @@ ResolutionScales ContactLaw::resolution_scales(EndSet ends) const {
     m.dissipation = 1.0 / std::max(1.0, r);
     return m;
   }
-  const double z = std::max(zeta_, 1.0);
+  const double z = std::max(zeta, 1.0);
   // Large ζ: the damping stops the compression at x_max ~ ζ^{-1/(b+1)}; the force-zero end follows at that
   // x with x' ~ x^{a-b}/ζ ~ ζ^{-(a+1)/(b+1)} (viscoelastic Hertz: ζ^{-2/3}, ζ^{-5/3}).
-  m.x = std::pow(z, -1.0 / (b_ + 1.0));
-  m.velocity = std::pow(z, -(a_ + 1.0) / (b_ + 1.0));
+  m.x = std::pow(z, -1.0 / (b + 1.0));
+  m.velocity = std::pow(z, -(a + 1.0) / (b + 1.0));
   if (naive_end) {
-    const double balance = naive_balance();
+    const double balance = law.naive_balance();
     if (balance > 0.0) {
       // The naive end is reached through the scale where x'', ζ x^b x' and x^a balance: x ~ ζ^{-2/balance},
       // x' ~ ζ^{1 - 2(1+b)/balance} (viscoelastic Hertz: ζ^{-4}, ζ^{-5}; docs/design.md §4).
       m.x = std::pow(z, -2.0 / balance);
-      m.velocity = std::pow(z, 1.0 - 2.0 * (1.0 + b_) / balance);
+      m.velocity = std::pow(z, 1.0 - 2.0 * (1.0 + b) / balance);
     } else if (balance == 0.0) {
       // As for the dash-pot near critical damping: resolve x and x' down to ε's scale.
       // ρ = ζ/(2 sqrt(b+1)) plays the dash-pot's damping ratio; ε = exp(-πρ/sqrt(1 - ρ²)).
-      const double rho = zeta_ / critical_zeta();
+      const double rho = zeta / law.critical_zeta();
       if (rho < 1.0) {
         const double eps = std::exp(-M_PI * rho / std::sqrt(1.0 - rho * rho));
         m.velocity = std::min(m.velocity, eps);

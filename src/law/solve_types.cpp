@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "restitution/collision_solver.hpp"
+// The vocabulary of a solve (restitution/solve_types.hpp): names of methods and ends, results, statistics.
+#include "restitution/solve_types.hpp"
 
 #include <fmt/core.h>
 
-#include <memory>
 #include <string>
+#include <vector>
 
-#include "registry/engine_registry.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution {
@@ -99,29 +99,6 @@ SolverStats& operator+=(SolverStats& total, const SolverStats& more) {
   total.error_test_failures += more.error_test_failures;
   total.convergence_failures += more.convergence_failures;
   return total;
-}
-
-struct CollisionSolver::Impl {
-  Engines engines;
-};
-
-CollisionSolver::CollisionSolver() : impl_(std::make_unique<Impl>()) {}
-CollisionSolver::~CollisionSolver() = default;
-CollisionSolver::CollisionSolver(CollisionSolver&&) noexcept = default;
-CollisionSolver& CollisionSolver::operator=(CollisionSolver&&) noexcept = default;
-
-void check_solvable(const ContactLaw& law, const SolveOptions& options) {
-  Engines engines;  // cheap: no engine allocates anything before its first solve
-  engines(options.method).check(law, options);
-}
-
-CollisionResult CollisionSolver::solve(const ContactLaw& law, const SolveOptions& options) {
-  // Every result is reported in natural units, and a law depends only on its ζ: integrate the natural
-  // form, whose magnitudes are of order one, rather than the (β, v) form, whose lengths and velocities
-  // (v^{4/5}) under- or overflow the absolute tolerances at extreme speeds (v = 1e-150 m/s).
-  // Hand-made laws (ContactLaw::unchecked) are natural and integrated as given.
-  const ContactLaw natural = law.is_natural() ? law : law.natural_form();
-  return impl_->engines(options.method).solve(natural, options);
 }
 
 }  // namespace restitution

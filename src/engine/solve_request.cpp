@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Which requests a law can honour, whatever the engine: engines call this before they integrate, so that
-// no engine needs another's headers to refuse the same requests.
+// no engine needs another's headers to refuse the same requests. The options alone are the solver's to check
+// (check_solve_options, src/solver/solve_options.cpp), before it hands the request to an engine.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -8,8 +9,7 @@
 #include <cmath>
 #include <string>
 
-#include "registry/engine_registry.hpp"
-#include "restitution/collision_solver.hpp"
+#include "engine/solve_request.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution {
@@ -43,30 +43,7 @@ void check_conditioning(const ContactLaw& law, const SolveOptions& options, cons
 
 }  // namespace
 
-void check_solve_options(const SolveOptions& options) {
-  const double tol = options.tolerance;
-  if (!std::isfinite(tol) || tol < kSmallestTolerance || tol > kMaxTolerance) {
-    // The per-engine ranges, as --help and docs/cli.md state them: no method accepts kSmallestTolerance.
-    throw InvalidInput(
-        fmt::format("tolerance must lie in {}, got {}", alternatives(tolerance_ranges(true)), tol));
-  }
-  const double smallest = min_tolerance(options.method);
-  if (tol < smallest) {
-    throw InvalidInput(fmt::format(
-        "tolerance {:g} is below what the {} engine can deliver ({:g}): double-precision round-off in its "
-        "steps limits the accuracy of eps; ask for a tolerance >= {:g}",
-        tol, engine_of(options.method).name, smallest, smallest));
-  }
-  if (options.max_steps_per_phase < 1) {
-    throw InvalidInput(fmt::format("max_steps_per_phase must be >= 1, got {}", options.max_steps_per_phase));
-  }
-  if (!options.ends.contains(CollisionEnd::naive) && !options.ends.contains(CollisionEnd::delayed_recovery)) {
-    throw InvalidInput("no end of the collision requested: ask for naive, delayed-recovery or both");
-  }
-}
-
 void check_solve_request(const ContactLaw& law, const SolveOptions& options, const EngineRounding& engine) {
-  check_solve_options(options);
   require_served_zeta(law.zeta());
   if (law.kind() == LawKind::linear_dashpot && options.ends.contains(CollisionEnd::naive) &&
       law.parameter() >= 1.0) {

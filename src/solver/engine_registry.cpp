@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The table of engines: adding one is its folder plus an entry here and its include (docs/design.md,
 // "Engines").
-#include "registry/engine_registry.hpp"
+#include "solver/engine_registry.hpp"
 
 #include <fmt/core.h>
 #include <fmt/format.h>

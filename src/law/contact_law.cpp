@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
+#include "law/law_rhs.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/units.hpp"
 
 namespace restitution {
 namespace {
@@ -113,7 +113,8 @@ ContactLaw ContactLaw::hertz_natural(double zeta) {
 ContactLaw ContactLaw::hertz_scaled(double beta, double velocity) {
   require_finite_nonnegative(beta, "beta");
   require_finite_positive(velocity, "velocity");
-  ContactLaw law(LawKind::viscoelastic_hertz, zeta_from(beta, velocity));
+  // ζ = β v^{1/5} (units.hpp's zeta_from, which stands above the law and does not serve it).
+  ContactLaw law(LawKind::viscoelastic_hertz, beta * std::pow(velocity, 0.2));
   law.damping_ = beta * std::pow(velocity, -0.2);
   law.stiffness_ = std::pow(velocity, -0.4);
   law.initial_velocity_ = std::pow(velocity, 0.8);
@@ -139,6 +140,28 @@ ContactLaw ContactLaw::unchecked(LawKind kind, double damping, double stiffness)
 
 ContactLaw ContactLaw::natural_form() const {
   return {kind_, zeta_};
+}
+
+double ContactLaw::shape(double x) const {
+  return law_rhs::shape(*this, x);
+}
+double ContactLaw::force_factor(double x, double v) const {
+  return law_rhs::force_factor(*this, x, v);
+}
+double ContactLaw::acceleration(double x, double v) const {
+  return law_rhs::acceleration(*this, x, v);
+}
+double ContactLaw::dissipation_integrand(double x, double v) const {
+  return law_rhs::dissipation_integrand(*this, x, v);
+}
+
+double ContactLaw::elastic_energy(double x) const {
+  if (x <= 0.0) return 0.0;
+  return stiffness_ * energy_coefficient_ * x * x * detail::positive_power(x, a_ - 1.0);
+}
+
+double ContactLaw::force_zero_compression(double velocity) const {
+  return detail::positive_power(damping_ * -velocity / stiffness_, 1.0 / (a_ - b_));
 }
 
 EndValues ContactLaw::end_values(double x, double velocity, double dissipation_integral) const {

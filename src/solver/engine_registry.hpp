@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Which engine computes which method, with the engine's name and its smallest tolerance: the one place that
-// maps a Method to an engine (src/registry/engine_registry.cpp holds the table). CollisionSolver and the
-// checks of core/ consult it and include no engine's own headers; each engine's limits sit in its check().
+// maps a Method to an engine (src/solver/engine_registry.cpp holds the table). CollisionSolver and the
+// checks of solver/ consult it and include no engine's own headers; each engine's limits sit in its check().
 #include <memory>
 #include <vector>
 
