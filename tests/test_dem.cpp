@@ -354,7 +354,7 @@ TEST(DemScene, ParsesATaskAndNamesWhatIsWrong) {
           "[[dem]]\nname = \"d\"\ncode = \"yade\"\nmaterial = \"rubber\"\nspeeds = [1, 2]\n",
       "dem.toml");
   ASSERT_EQ(s.dems.size(), 1U);
-  EXPECT_EQ(s.dems[0].code, "yade");
+  EXPECT_EQ(s.dems[0].code, dem::Code::yade);
   EXPECT_EQ(s.dems[0].end, CollisionEnd::delayed_recovery);
   EXPECT_NE(scene_error("code = \"gromacs\"\nmaterial = \"rubber\"\nspeeds = [1]\n").find("code"),
             std::string::npos);
