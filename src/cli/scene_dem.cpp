@@ -20,7 +20,7 @@ namespace {
 std::string target_installed_yade(const Material& material, const dem::DampingSource& damping,
                                   const scene::DemTask& task, double tolerance, dem::CodeComparison& c) {
   dem::LinesRequest request;
-  request.code = dem::Code::yade;
+  request.code = task.code;
   request.end = task.end;
   request.material = material;
   request.damping = damping;

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "dem/deck_codes.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
 

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Chrono's lines: ChContactMaterialSMC with Kn, Gn and the Hertz contact force model (C++).
+#include "dem/deck_chrono.hpp"
+
 #include <fmt/core.h>
 
 #include <cmath>
 
-#include "dem/deck_codes.hpp"
+#include "dem/deck_notes.hpp"
 #include "restitution/units.hpp"
 
 namespace restitution::dem {

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // LAMMPS's lines: `pair_style granular` with hertz/material and viscoelastic damping; per type pair
 // `pair_coeff I J`.
+#include "dem/deck_lammps.hpp"
+
 #include <fmt/core.h>
 
 #include <cmath>
 #include <stdexcept>
 
-#include "dem/deck_codes.hpp"
+#include "dem/deck_notes.hpp"
 #include "dem/polydisperse_lines.hpp"
 #include "restitution/units.hpp"
 

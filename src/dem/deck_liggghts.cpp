@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // LIGGGHTS's lines: hertz/stiffness with per-type-pair kn, kt, gamman, gammat, coefficientFriction matrices.
+#include "dem/deck_liggghts.hpp"
+
 #include <fmt/core.h>
 
 #include <cmath>
 #include <stdexcept>
 
-#include "dem/deck_codes.hpp"
+#include "dem/deck_notes.hpp"
 #include "dem/polydisperse_lines.hpp"
 #include "restitution/units.hpp"
 

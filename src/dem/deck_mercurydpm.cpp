@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // MercuryDPM's lines: a HertzianBSHPViscoelasticNormalSpecies (C++).
+#include "dem/deck_mercurydpm.hpp"
+
 #include <fmt/core.h>
 
 #include <cmath>
 
-#include "dem/deck_codes.hpp"
+#include "dem/deck_notes.hpp"
 #include "restitution/units.hpp"
 
 namespace restitution::dem {

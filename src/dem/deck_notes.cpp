@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // What the codes' writers share: numbers as text, the law's coefficients, the notes on clamping, friction and
 // the pair a deck is made for, and the tangential model.
+#include "dem/deck_notes.hpp"
+
 #include <fmt/core.h>
 
 #include <cmath>
 
-#include "dem/deck_codes.hpp"
 #include "restitution/units.hpp"
 
 namespace restitution::dem {

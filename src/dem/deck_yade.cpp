@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // YADE's lines: FrictMat, Ip2_FrictMat_FrictMat_MindlinPhys with (en, vn), Law2_ScGeom_MindlinPhys_Mindlin.
+#include "dem/deck_yade.hpp"
+
 #include <fmt/core.h>
 
 #include <cmath>
 
-#include "dem/deck_codes.hpp"
+#include "dem/deck_notes.hpp"
 #include "dem/yade_conversion.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"

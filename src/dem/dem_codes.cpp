@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The table of DEM codes: adding one is its entry here, its value of `Code` and its writer and reader
-// (docs/design.md, "DEM codes").
+// The table of DEM codes: adding one is its value of `Code`, its entry here with the include of its header,
+// and its own files (docs/design.md, "A new DEM code").
 #include "dem/dem_codes.hpp"
 
 #include <fmt/core.h>
@@ -9,7 +9,11 @@
 
 #include "dem/check_deck.hpp"
 #include "dem/check_deck_codes.hpp"
-#include "dem/deck_codes.hpp"
+#include "dem/deck_chrono.hpp"
+#include "dem/deck_lammps.hpp"
+#include "dem/deck_liggghts.hpp"
+#include "dem/deck_mercurydpm.hpp"
+#include "dem/deck_yade.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::dem {

@@ -35,7 +35,7 @@ struct CodeEntry {
   bool eps_conversion;        // the code turns a measured (en, vn) into A itself: report what it makes of ε
   bool scene_runs;            // a [[dem]] scene section runs the program on the lines (code_runner.hpp)
   // The lines and parameters giving `pair` the law with A [s], YADE's vn [m/s], Coulomb mu [1]
-  // (dem/deck_codes.hpp).
+  // (dem/deck_<code>.hpp).
   void (*write)(Deck& deck, const Pair& pair, double dissipative_constant_s, double reference_velocity_m_s,
                 double friction);
   // What the deck's parameters give `other`, a pair of the deck's material.
