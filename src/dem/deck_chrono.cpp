@@ -37,9 +37,10 @@ void write_chrono(Deck& d, const Pair& p, double a, double /*vn*/, double mu) {
                          num(p.effective_radius_m))};
   d.notes = {
       mu > 0.0 ? "Kt = 8 G* / sqrt(R_eff) (Mindlin), Gt = Gn" : "Kt = Gt = friction = 0: frictionless",
-      "Chrono's R_eff is the contact's effective curvature radius, which only the Multicore collision system "
-      "sets; with Bullet every contact gets ChCollisionInfo's default 0.1 m (Kn, Gn far too large, eps far "
-      "too low) unless SetDefaultEffectiveCurvatureRadius(R_eff) is called",
+      // One note in several literals (parenthesized: not a missing comma).
+      ("Chrono's R_eff is the contact's effective curvature radius, which only the Multicore collision "
+       "system sets; with Bullet every contact gets ChCollisionInfo's default 0.1 m (Kn, Gn far too large, "
+       "eps far too low) unless SetDefaultEffectiveCurvatureRadius(R_eff) is called"),
       friction_note(mu), clamp_note(d.code, d.end),
       "Chrono scales Kn and Gn with R_eff, not sqrt(R_eff), and Gn with m_eff: exact only for the pair it "
       "was made for (" +

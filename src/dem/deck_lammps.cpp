@@ -46,8 +46,7 @@ Coefficients read_lammps(const Deck& d, const Pair& other) {
 }
 
 // Several atom types: each type pair's own pair_coeff line, `* *` made `I J`.
-std::vector<std::string> lammps_type_pair_lines(const std::vector<TypePairLines>& pairs,
-                                                std::size_t /*types*/) {
+std::vector<std::string> lammps_type_pair_lines(const std::vector<TypePairLines>& pairs, std::size_t /*n*/) {
   std::vector<std::string> lines{"pair_style granular"};
   const std::string any_pair = "pair_coeff * * ";
   for (const TypePairLines& p : pairs) {

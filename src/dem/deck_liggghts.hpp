@@ -15,8 +15,8 @@ namespace restitution::dem {
 void write_liggghts(Deck& d, const Pair& p, double a, double vn, double mu);
 // What the deck's parameters give `other`, a pair of the deck's material, read as LIGGGHTS reads them.
 Coefficients read_liggghts(const Deck& d, const Pair& other);
-// Several atom types: the lines from every type pair's own deck (pairs I <= J of `types` types, in the order
+// Several atom types: the lines from every type pair's own deck (pairs I <= J of `n` types, in the order
 // of PolydisperseResult::pairs).
-std::vector<std::string> liggghts_type_pair_lines(const std::vector<TypePairLines>& pairs, std::size_t types);
+std::vector<std::string> liggghts_type_pair_lines(const std::vector<TypePairLines>& pairs, std::size_t n);
 
 }  // namespace restitution::dem

@@ -55,9 +55,9 @@ void write_yade(Deck& d, const Pair& p, double a, double vn, double mu) {
       mu > 0.0 ? "frictionAngle = atan(mu); the Mindlin law takes its shear stiffness from Y and nu"
                : "frictionAngle = 0: frictionless",
       friction_note(mu), clamp_note(d.code, d.end),
-      "vn exists from YADE 2024.02a on: older versions (Debian 12's 2023.02a) reject these lines; "
-      "`restitution "
-      "dem --code yade --yade-version 2023.02a` prints what they can do",
+      // One note in several literals (parenthesized: not a missing comma).
+      ("vn exists from YADE 2024.02a on: older versions (Debian 12's 2023.02a) reject these lines; "
+       "`restitution dem --code yade --yade-version 2023.02a` prints what they can do"),
       "YADE keeps beta = sigma^2 vn^(-1/5) for every contact (A = (2/3) beta (k_n0 / m_eff)^(-2/5)), so "
       "every pair gets this pair's eps(v): exact only for pairs with this pair's k_n0 / m_eff (" +
           pair_note(p) + ")"};

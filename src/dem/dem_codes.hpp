@@ -40,9 +40,9 @@ struct CodeEntry {
                 double friction);
   // What the deck's parameters give `other`, a pair of the deck's material.
   Coefficients (*read)(const Deck& deck, const Pair& other);
-  // Several atom types: the lines from every type pair's own deck (pairs I <= J of `types` types); nullptr:
+  // Several atom types: the lines from every type pair's own deck (pairs I <= J of `n` types); nullptr:
   // one radius only, for the reason `one_radius_only`.
-  std::vector<std::string> (*polydisperse)(const std::vector<TypePairLines>& pairs, std::size_t types);
+  std::vector<std::string> (*polydisperse)(const std::vector<TypePairLines>& pairs, std::size_t n);
   const char* one_radius_only;    // why several atom types are refused (nullptr when they are not)
   const char* polydisperse_note;  // how the code reads the per-type-pair lines
   // The check deck at n coarse steps per natural time (dem/check_deck_codes.hpp); nullptr: none.
