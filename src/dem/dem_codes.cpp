@@ -20,33 +20,109 @@ namespace restitution::dem {
 
 const std::vector<CodeEntry>& dem_codes() {
   static const std::vector<CodeEntry> table = {
-      {Code::lammps, "lammps", false, "#", "lmp", "", false, true, &write_lammps, &read_lammps,
-       &lammps_type_pair_lines, nullptr,
-       "pair_coeff I J: E and nu are the one (Y, nu) that LAMMPS mixes into the pair's E* (and, with "
-       "friction, Mindlin's G*); for two materials an effective pair, not either material's",
-       &lammps_family_check_deck, "lmp -in ", 2000, kMaxDeckCollisionsLammps},
-      {Code::liggghts, "liggghts", false, "#", "liggghts", "", false, true, &write_liggghts, &read_liggghts,
-       &liggghts_type_pair_lines, nullptr,
-       "LIGGGHTS reads kn, kt, gamman, gammat and coefficientFriction per type pair (row I, column J); "
-       "hertz/stiffness uses no youngsModulus or poissonsRatio",
-       &lammps_family_check_deck, "liggghts -in ", 2000, kMaxDeckCollisionsLammps},
-      {Code::mercurydpm, "mercurydpm", true, "//", "", "", false, false, &write_mercurydpm, &read_mercurydpm,
-       nullptr,
-       "--code mercurydpm takes one radius: its species' E* and A do not depend on size or mass, so the "
-       "one-radius lines are already exact for every size of one material; two materials need a mixed "
-       "species per material pair, which restitution does not print",
-       "", nullptr, "", 0, 0},
-      // YADE's Tsuji-type damping converges more slowly in dt: 5000 coarse steps per natural time.
-      {Code::yade, "yade", true, "#", "yade", "yade --version", true, false, &write_yade, &read_yade, nullptr,
-       "--code yade takes one radius: YADE turns (en, vn) into one beta per material pair and gives every "
-       "contact that beta, so sizes with another k_n0/m_eff get another eps(v) (and YADE 2023.02a cannot "
-       "express the law at all); use lammps or liggghts for several sizes",
-       "", &yade_check_deck, "yade -n -x ", 5000, kMaxDeckCollisionsYade},
-      {Code::chrono, "chrono", true, "//", "", "", false, false, &write_chrono, &read_chrono, nullptr,
-       "--code chrono takes one radius: Kn and Gn belong to each body's material and Chrono combines two "
-       "bodies' values into a contact's, so the R_eff and m_eff they contain cannot be set per pair of "
-       "sizes; use lammps or liggghts for several sizes",
-       "", nullptr, "", 0, 0},
+      {.code = Code::lammps,
+       .name = "lammps",
+       .always_clamps = false,
+       .comment = "#",
+       .program = "lmp",
+       .version_query = "",
+       .eps_conversion = false,
+       .scene_runs = true,
+       .write = &write_lammps,
+       .read = &read_lammps,
+       .polydisperse = &lammps_type_pair_lines,
+       .one_radius_only = nullptr,
+       .polydisperse_note =
+           "pair_coeff I J: E and nu are the one (Y, nu) that LAMMPS mixes into the pair's E* (and, with "
+           "friction, Mindlin's G*); for two materials an effective pair, not either material's",
+       .check_deck = &lammps_family_check_deck,
+       .check_deck_run = "lmp -in ",
+       .check_deck_steps = 2000,
+       .max_deck_collisions = kMaxDeckCollisionsLammps},
+      {.code = Code::liggghts,
+       .name = "liggghts",
+       .always_clamps = false,
+       .comment = "#",
+       .program = "liggghts",
+       .version_query = "",
+       .eps_conversion = false,
+       .scene_runs = true,
+       .write = &write_liggghts,
+       .read = &read_liggghts,
+       .polydisperse = &liggghts_type_pair_lines,
+       .one_radius_only = nullptr,
+       .polydisperse_note =
+           "LIGGGHTS reads kn, kt, gamman, gammat and coefficientFriction per type pair (row I, column J); "
+           "hertz/stiffness uses no youngsModulus or poissonsRatio",
+       .check_deck = &lammps_family_check_deck,
+       .check_deck_run = "liggghts -in ",
+       .check_deck_steps = 2000,
+       .max_deck_collisions = kMaxDeckCollisionsLammps},
+      // MercuryDPM's BSHP species always clamps the normal force at zero.
+      {.code = Code::mercurydpm,
+       .name = "mercurydpm",
+       .always_clamps = true,
+       .comment = "//",
+       .program = "",
+       .version_query = "",
+       .eps_conversion = false,
+       .scene_runs = false,
+       .write = &write_mercurydpm,
+       .read = &read_mercurydpm,
+       .polydisperse = nullptr,
+       .one_radius_only =
+           "--code mercurydpm takes one radius: its species' E* and A do not depend on size or mass, so the "
+           "one-radius lines are already exact for every size of one material; two materials need a mixed "
+           "species per material pair, which restitution does not print",
+       .polydisperse_note = "",
+       .check_deck = nullptr,
+       .check_deck_run = "",
+       .check_deck_steps = 0,
+       .max_deck_collisions = 0},
+      // YADE's Mindlin law always clamps; its Tsuji-type damping converges more slowly in dt (5000 coarse
+      // steps per natural time).
+      {.code = Code::yade,
+       .name = "yade",
+       .always_clamps = true,
+       .comment = "#",
+       .program = "yade",
+       .version_query = "yade --version",
+       .eps_conversion = true,
+       .scene_runs = false,
+       .write = &write_yade,
+       .read = &read_yade,
+       .polydisperse = nullptr,
+       .one_radius_only =
+           "--code yade takes one radius: YADE turns (en, vn) into one beta per material pair and gives "
+           "every "
+           "contact that beta, so sizes with another k_n0/m_eff get another eps(v) (and YADE 2023.02a cannot "
+           "express the law at all); use lammps or liggghts for several sizes",
+       .polydisperse_note = "",
+       .check_deck = &yade_check_deck,
+       .check_deck_run = "yade -n -x ",
+       .check_deck_steps = 5000,
+       .max_deck_collisions = kMaxDeckCollisionsYade},
+      // Chrono's SMC contact always clamps.
+      {.code = Code::chrono,
+       .name = "chrono",
+       .always_clamps = true,
+       .comment = "//",
+       .program = "",
+       .version_query = "",
+       .eps_conversion = false,
+       .scene_runs = false,
+       .write = &write_chrono,
+       .read = &read_chrono,
+       .polydisperse = nullptr,
+       .one_radius_only =
+           "--code chrono takes one radius: Kn and Gn belong to each body's material and Chrono combines two "
+           "bodies' values into a contact's, so the R_eff and m_eff they contain cannot be set per pair of "
+           "sizes; use lammps or liggghts for several sizes",
+       .polydisperse_note = "",
+       .check_deck = nullptr,
+       .check_deck_run = "",
+       .check_deck_steps = 0,
+       .max_deck_collisions = 0},
   };
   return table;
 }

@@ -33,7 +33,8 @@ struct CodeEntry {
   const char* program;        // the program that runs its input; "" for a C++ library
   const char* version_query;  // the command naming the installed version the lines are for; "": any version
   bool eps_conversion;        // the code turns a measured (en, vn) into A itself: report what it makes of ε
-  bool scene_runs;            // a [[dem]] scene section runs the program on the lines (code_runner.hpp)
+  // A [[dem]] scene section runs the program on the lines: a LAMMPS-family input (dem/code_runner.hpp).
+  bool scene_runs;
   // The lines and parameters giving `pair` the law with A [s], YADE's vn [m/s], Coulomb mu [1]
   // (dem/deck_<code>.hpp).
   void (*write)(Deck& deck, const Pair& pair, double dissipative_constant_s, double reference_velocity_m_s,
