@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -103,7 +104,7 @@ dem::LinesResult compute(DemOptions& o) {
   request.friction = o.friction;
   // The targeted YADE first: a bad --yade-version is refused before any solve.
   std::optional<dem::YadeVersion> yade;
-  if (request.code == dem::Code::yade) yade = target_yade(o);
+  if (!std::string_view(dem::code_entry(request.code).version_query).empty()) yade = target_yade(o);
   dem::LinesResult r = dem::check_lines(request);
   if (yade) damping_check::target_yade_version(r, *yade, o.tolerance);
   return r;
@@ -165,8 +166,7 @@ void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optio
 }
 
 void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optional<FromFit>& from_fit) {
-  const bool cpp = r.deck.code == dem::Code::mercurydpm || r.deck.code == dem::Code::chrono;
-  const char* c = cpp ? "//" : "#";
+  const char* c = dem::code_entry(r.deck.code).comment;
   fmt::print("{} restitution dem --code {}: viscoelastic Hertz law, A = {:.10g} s, {} end\n", c,
              dem::code_name(r.deck.code), r.dissipative_constant_s, end_name(r.deck.end));
   if (r.yade_version) {
@@ -241,11 +241,10 @@ int run_polydisperse(const DemOptions& o) {
 void add_dem_command(CLI::App& app, Action& chosen) {
   auto o = std::make_shared<DemOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "dem",
-      "input lines giving a DEM code (lammps, liggghts, mercurydpm, yade, chrono) this law, and its eps");
-  cmd->add_option("--code", o->code, "DEM code: lammps, liggghts, mercurydpm, yade or chrono")
+      "dem", "input lines giving a DEM code (" + dem::code_list(", ") + ") this law, and its eps");
+  cmd->add_option("--code", o->code, "DEM code: " + dem::code_list(" or "))
       ->required()
-      ->check(CLI::IsMember({"lammps", "liggghts", "mercurydpm", "yade", "chrono"}));
+      ->check(CLI::IsMember(dem::code_names()));
   add_dem_type_options(*cmd, o->types);
   cmd->add_option("--eps", o->eps, "measured coefficient of restitution in (0, 1): calibrate A first");
   cmd->add_option(
@@ -274,11 +273,12 @@ void add_dem_command(CLI::App& app, Action& chosen) {
                   "(default: yade --version on PATH)");
   cmd->add_option(
       "--deck", o->deck,
-      fmt::format("also write FILE, a complete input for lammps, liggghts or yade that collides "
+      fmt::format("also write FILE, a complete input for {} that collides "
                   "the pair at the speeds and prints the eps it measures next to restitution's "
                   "(docs/dem.md); at most {} collisions (type pairs x speeds: {} types at 1 speed, "
                   "{} at the default 3) and {:.3g} sphere-steps (spheres x steps: radii or speeds far "
                   "apart need many steps), yade {} speeds",
+                  dem::code_list(" or ", [](const dem::CodeEntry& e) { return e.check_deck != nullptr; }),
                   dem::kMaxDeckCollisionsLammps, dem::max_deck_types(dem::Code::lammps, 1),
                   dem::max_deck_types(dem::Code::lammps, 3), dem::kMaxDeckSphereSteps,
                   dem::kMaxDeckCollisionsYade));

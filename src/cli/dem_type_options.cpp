@@ -40,6 +40,11 @@ std::optional<double> single(const std::string& text, const char* option) {
   return values[0];
 }
 
+// The codes that take several atom types, for the help texts.
+std::string polydisperse_codes() {
+  return dem::code_list(", ", [](const dem::CodeEntry& e) { return e.polydisperse != nullptr; });
+}
+
 // An option taking one number or a comma-separated list.
 void add_list_option(CLI::App& command, const std::string& name, std::string& target, const std::string& help,
                      const char* type_name = "FLOAT[,...]") {
@@ -55,17 +60,17 @@ void add_dem_type_options(CLI::App& command, DemTypeOptions& o) {
                   "material: Poisson ratio in (-1, 0.5); nu1,nu2,...: one per --radius");
   add_list_option(command, "--radius", o.radius,
                   "material: sphere radius in m (both spheres unless --radius2); R1,R2,...: atom types 1, 2, "
-                  "... (lammps, liggghts)");
+                  "... (" +
+                      polydisperse_codes() + ")");
   command.add_option("--radius2", o.radius2, "material: radius of the second sphere in m");
   add_list_option(command, "--density", o.density,
                   "material: density in kg/m^3 (gives the masses); d1,d2,...: one per --radius");
   command.add_option("--mass", o.mass, "material: sphere mass in kg (instead of --density)");
   command.add_option("--mass2", o.mass2, "material: mass of the second sphere in kg");
-  add_list_option(
-      command, "--radius-range", o.radius_range,
-      "RMIN,RMAX in m: a size range binned into --classes log-spaced atom types (lammps, liggghts), "
-      "with the worst eps error the binning causes",
-      "FLOAT,FLOAT");
+  add_list_option(command, "--radius-range", o.radius_range,
+                  "RMIN,RMAX in m: a size range binned into --classes log-spaced atom types (" +
+                      polydisperse_codes() + "), with the worst eps error the binning causes",
+                  "FLOAT,FLOAT");
   command.add_option("--classes", o.classes, "number of log-spaced size classes of --radius-range (1..100)");
 }
 

@@ -3,6 +3,8 @@
 
 #include <fmt/core.h>
 
+#include <string_view>
+
 #include "damping_check/yade_version_lines.hpp"
 #include "dem/lines_check.hpp"
 #include "restitution/material.hpp"
@@ -18,7 +20,7 @@ namespace {
 std::string target_installed_yade(const Material& material, const dem::DampingSource& damping,
                                   const scene::DemTask& task, double tolerance, dem::CodeComparison& c) {
   dem::LinesRequest request;
-  request.code = dem::Code::yade;
+  request.code = task.code;
   request.end = task.end;
   request.material = material;
   request.damping = damping;
@@ -46,15 +48,16 @@ std::string target_installed_yade(const Material& material, const dem::DampingSo
 }  // namespace
 
 DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task) {
-  const dem::Code code = dem::code_from_name(task.code);
+  const dem::Code code = task.code;
+  const dem::CodeEntry& entry = dem::code_entry(code);
   const Material& material = scene.materials.at(task.material);
   DemSection s;
   std::string program;
-  if (task.run_code && (code == dem::Code::lammps || code == dem::Code::liggghts)) {
+  if (task.run_code && entry.scene_runs) {
     program = dem::dem_program(code);
     if (program.empty()) {
       s.warnings.push_back(
-          fmt::format("{} is not installed (scripts/setup installs it): not run", task.code));
+          fmt::format("{} is not installed (scripts/setup installs it): not run", entry.name));
     }
   }
   // Without a calibration the material's own A.
@@ -64,7 +67,7 @@ DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task) {
   dem::CodeComparison c = dem::compare_with_code(code, material, damping, task.end, task.speeds,
                                                  task.friction, scene.tolerance, scene.method, program);
   std::string yade_words;
-  if (code == dem::Code::yade)
+  if (!std::string_view(entry.version_query).empty())
     yade_words = target_installed_yade(material, damping, task, scene.tolerance, c);
   const dem::Deck& deck = c.deck;
   const double a = c.dissipative_constant_s;

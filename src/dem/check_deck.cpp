@@ -54,7 +54,7 @@ double natural_time_s(const Pair& pair, double velocity_m_s) {
 }
 
 std::size_t max_deck_collisions(Code code) {
-  return code == Code::yade ? kMaxDeckCollisionsYade : kMaxDeckCollisionsLammps;
+  return code_entry(code).max_deck_collisions;
 }
 
 std::size_t max_deck_types(Code code, std::size_t speeds) {
@@ -75,7 +75,7 @@ void require_deck_size(Code code, std::size_t type_pairs, std::size_t speeds) {
 }
 
 bool has_check_deck(Code code) {
-  return code == Code::lammps || code == Code::liggghts || code == Code::yade;
+  return code_entry(code).check_deck != nullptr;
 }
 
 void require_check_deck(Code code) {
@@ -83,23 +83,14 @@ void require_check_deck(Code code) {
     throw InvalidInput(fmt::format(
         "--deck: no runnable deck for {}: it is a C++ library, not a program that reads an input file, and "
         "is "
-        "not installed here to check one against; check decks exist for lammps, liggghts and yade",
-        code_name(code)));
+        "not installed here to check one against; check decks exist for {}",
+        code_name(code), code_list(" and ", [](const CodeEntry& e) { return e.check_deck != nullptr; })));
   }
 }
 
 std::string check_deck_command(Code code, const std::string& path) {
-  switch (code) {
-    case Code::lammps:
-      return "lmp -in " + path;
-    case Code::liggghts:
-      return "liggghts -in " + path;
-    case Code::yade:
-      return "yade -n -x " + path;
-    default:
-      require_check_deck(code);
-  }
-  return {};
+  require_check_deck(code);
+  return code_entry(code).check_deck_run + path;
 }
 
 std::string check_deck_preamble(const CheckDeckRequest& r, int n) {
@@ -123,9 +114,9 @@ std::string check_deck_preamble(const CheckDeckRequest& r, int n) {
 
 std::string check_deck(const CheckDeckRequest& request) {
   validate(request);
-  const bool yade = request.code == Code::yade;
-  const int n = request.steps_per_time > 0 ? request.steps_per_time : (yade ? 5000 : 2000);
-  return yade ? yade_check_deck(request, n) : lammps_family_check_deck(request, n);
+  const CodeEntry& code = code_entry(request.code);
+  const int n = request.steps_per_time > 0 ? request.steps_per_time : code.check_deck_steps;
+  return code.check_deck(request, n);
 }
 
 std::vector<CheckLine> read_check_lines(const std::string& output) {

@@ -57,9 +57,10 @@ DemRun run_deck(const std::string& program, const std::string& deck, std::size_t
 }  // namespace
 
 std::string dem_program(Code code) {
-  if (code == Code::lammps) return find_on_path("lmp");
-  if (code == Code::liggghts) return find_on_path("liggghts");
-  throw InvalidInput(fmt::format("{} cannot be run here: only lammps and liggghts are", code_name(code)));
+  const CodeEntry& entry = code_entry(code);
+  if (entry.scene_runs) return find_on_path(entry.program);
+  throw InvalidInput(fmt::format("{} cannot be run here: only {} are", code_name(code),
+                                 code_list(" and ", [](const CodeEntry& e) { return e.scene_runs; })));
 }
 
 DemRun run_dem_code(const std::string& program, const Deck& deck, const Pair& pair,

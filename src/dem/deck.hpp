@@ -6,19 +6,11 @@
 #include <string_view>
 #include <vector>
 
+#include "dem/dem_codes.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/material.hpp"
 
 namespace restitution::dem {
-
-enum class Code { lammps, liggghts, mercurydpm, yade, chrono };
-
-// "lammps" | "liggghts" | "mercurydpm" | "yade" | "chrono"; throws InvalidInput naming the code otherwise.
-Code code_from_name(std::string_view name);
-const char* code_name(Code code);
-// MercuryDPM's BSHP species, YADE's Mindlin law and Chrono's SMC contact always clamp the normal force at
-// zero: they end every collision at the delayed-recovery end.
-bool always_clamps(Code code);
 
 // The pair of spheres a deck is made for, in SI units.
 struct Pair {

@@ -49,7 +49,7 @@ LinesResult check_lines(const LinesRequest& request) {
   const double beta = deck_beta(r.deck, pair);
   for (double s : speeds) r.eps.push_back({s, eps_for(beta, s, end, request.tolerance, solver)});
   r.sizes = size_checks(r.deck, pair, r.dissipative_constant_s, v, {0.5, 2.0}, request.tolerance, solver);
-  if (code == Code::yade) {
+  if (code_entry(code).eps_conversion) {
     YadeCheck y;
     y.true_eps =
         eps_for(hertz_constants(k, r.dissipative_constant_s).beta, v, end, request.tolerance, solver);

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Every pair of types gets the single-pair deck of its own E*, R_eff, m_eff (deck.cpp's convention of each
-// code); the LAMMPS lines are those decks' pair_coeff lines with `* *` made `I J`, the LIGGGHTS lines their
-// parameters gathered into symmetric per-type-pair matrices.
+// code); the code's entry (dem/dem_codes.hpp) makes the lines from those decks.
 #include "dem/polydisperse_lines.hpp"
 
 #include <fmt/core.h>
@@ -14,34 +13,6 @@
 #include "restitution/units.hpp"
 
 namespace restitution::dem {
-namespace {
-
-void refuse_other_codes(Code code) {
-  switch (code) {
-    case Code::lammps:
-    case Code::liggghts:
-      return;
-    case Code::mercurydpm:
-      throw InvalidInput(
-          "--code mercurydpm takes one radius: its species' E* and A do not depend on size or mass, so the "
-          "one-radius lines are already exact for every size of one material; two materials need a mixed "
-          "species per material pair, which restitution does not print");
-    case Code::yade:
-      throw InvalidInput(
-          "--code yade takes one radius: YADE turns (en, vn) into one beta per material pair and gives every "
-          "contact that beta, so sizes with another k_n0/m_eff get another eps(v) (and YADE 2023.02a cannot "
-          "express the law at all); use lammps or liggghts for several sizes");
-    case Code::chrono:
-      throw InvalidInput(
-          "--code chrono takes one radius: Kn and Gn belong to each body's material and Chrono combines two "
-          "bodies' values into a contact's, so the R_eff and m_eff they contain cannot be set per pair of "
-          "sizes; use lammps or liggghts for several sizes");
-  }
-}
-
-std::string num(double x) {
-  return fmt::format("{}", x);
-}
 
 std::size_t pair_index(std::size_t i, std::size_t j, std::size_t n) {
   if (i > j) std::swap(i, j);
@@ -49,37 +20,7 @@ std::size_t pair_index(std::size_t i, std::size_t j, std::size_t n) {
   return i * n - i * (i - 1) / 2 + (j - i);
 }
 
-std::vector<std::string> lammps_lines(const std::vector<TypePairLines>& pairs) {
-  std::vector<std::string> lines{"pair_style granular"};
-  const std::string any_pair = "pair_coeff * * ";
-  for (const TypePairLines& p : pairs) {
-    const std::string& line = p.deck.lines.at(1);
-    if (line.rfind(any_pair, 0) != 0) throw std::logic_error("LAMMPS deck without pair_coeff * *: " + line);
-    lines.push_back(fmt::format("pair_coeff {} {} {}", p.type1, p.type2, line.substr(any_pair.size())));
-  }
-  return lines;
-}
-
-std::vector<std::string> liggghts_lines(const std::vector<TypePairLines>& pairs, std::size_t n) {
-  std::vector<std::string> lines;
-  for (const auto& [fix, name] :
-       {std::pair{"dem_kn", "kn"}, std::pair{"dem_kt", "kt"}, std::pair{"dem_gamman", "gamman"},
-        std::pair{"dem_gammat", "gammat"}, std::pair{"dem_cof", "coefficientFriction"}}) {
-    std::string line = fmt::format("fix {} all property/global {} peratomtypepair {}", fix, name, n);
-    // Row I, column J: LIGGGHTS reads the n x n matrix row by row.
-    for (std::size_t i = 0; i < n; ++i) {
-      for (std::size_t j = 0; j < n; ++j) {
-        line += ' ';
-        line += num(pairs[pair_index(i, j, n)].deck.parameter(name));
-      }
-    }
-    lines.push_back(line);
-  }
-  // The pair_style and pair_coeff lines do not depend on the pair.
-  lines.push_back(pairs.front().deck.lines.at(5));
-  lines.push_back(pairs.front().deck.lines.at(6));
-  return lines;
-}
+namespace {
 
 double law_beta(const Pair& p, double dissipative_constant_s) {
   const double k = hertz_stiffness(p.effective_modulus_pa, p.effective_radius_m) / p.effective_mass_kg;
@@ -155,15 +96,7 @@ std::vector<std::string> notes(const PolydisperseResult& r) {
   n.emplace_back(
       "each type pair has its own E*, R_eff and m_eff: exact for spheres of exactly these radii and "
       "densities; a sphere of another size in a type gets A' = A m_eff'/m_eff");
-  if (r.code == Code::lammps) {
-    n.emplace_back(
-        "pair_coeff I J: E and nu are the one (Y, nu) that LAMMPS mixes into the pair's E* (and, with "
-        "friction, Mindlin's G*); for two materials an effective pair, not either material's");
-  } else {
-    n.emplace_back(
-        "LIGGGHTS reads kn, kt, gamman, gammat and coefficientFriction per type pair (row I, column J); "
-        "hertz/stiffness uses no youngsModulus or poissonsRatio");
-  }
+  n.emplace_back(code_entry(r.code).polydisperse_note);
   n.emplace_back("set each type's diameter and density as listed: m_eff is part of the damping coefficients");
   return n;
 }
@@ -171,7 +104,8 @@ std::vector<std::string> notes(const PolydisperseResult& r) {
 }  // namespace
 
 PolydisperseResult polydisperse_lines(const PolydisperseRequest& request) {
-  refuse_other_codes(request.code);
+  const CodeEntry& code = code_entry(request.code);
+  if (code.polydisperse == nullptr) throw InvalidInput(code.one_radius_only);
   if (request.types.empty()) throw InvalidInput("a polydisperse set needs at least one atom type");
   check_friction(request.friction);
   PolydisperseResult r;
@@ -206,7 +140,7 @@ PolydisperseResult polydisperse_lines(const PolydisperseRequest& request) {
       r.pairs.push_back(std::move(p));
     }
   }
-  r.lines = r.code == Code::lammps ? lammps_lines(r.pairs) : liggghts_lines(r.pairs, n);
+  r.lines = code.polydisperse(r.pairs, n);
   r.notes = notes(r);
   if (request.classes) r.binning = binning_error(r, *request.classes, speeds, solver);
   return r;

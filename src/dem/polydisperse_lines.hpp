@@ -34,6 +34,9 @@ struct BinningError {
   double eps_code = 0.0, eps_law = 0.0;                         // there
 };
 
+// Where the pair of types (i, j) (0-based, either order) of n types is in PolydisperseResult::pairs.
+std::size_t pair_index(std::size_t i, std::size_t j, std::size_t n);
+
 struct PolydisperseRequest {
   Code code = Code::lammps;
   CollisionEnd end = CollisionEnd::delayed_recovery;
@@ -59,7 +62,7 @@ struct PolydisperseResult {
   std::optional<BinningError> binning;
 };
 
-// Throws InvalidInput for codes other than lammps and liggghts with more than one type, saying why.
+// Throws InvalidInput for a code whose entry has no polydisperse writer (dem/dem_codes.hpp), saying why.
 PolydisperseResult polydisperse_lines(const PolydisperseRequest& request);
 
 // The check deck (`dem --deck`) of the result: its lines, every type pair at every speed against its ε.

@@ -26,7 +26,7 @@ YadeVersion yade_version_from_name(std::string_view text) {
 
 std::optional<YadeVersion> yade_version_on_path() {
   // yade prints its banner noise on stderr; only the "Yade version: ..." line matters.
-  const std::string out = output_of("yade --version 2>/dev/null");
+  const std::string out = output_of(std::string(code_entry(Code::yade).version_query) + " 2>/dev/null");
   const auto at = out.find("Yade version:");
   if (at == std::string::npos) return std::nullopt;
   return parse_yade_version(std::string_view(out).substr(at));

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "dem/dem_codes.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/material.hpp"
@@ -118,7 +119,7 @@ inline constexpr int kMaxStudyRepeats = 100;  // = kMaxWorkPrecisionRepeats (ref
 struct DemTask {
   std::string name;
   std::string title;
-  std::string code;                    // lammps | liggghts | mercurydpm | yade | chrono
+  dem::Code code = dem::Code::lammps;
   std::string material;                // a [materials.X] of this scene
   std::optional<double> eps;           // with velocity: calibrate A; without: the material's A
   std::optional<double> velocity_m_s;  // the calibration speed (YADE's vn; default 1 m/s)

@@ -443,13 +443,12 @@ class Parser {
     d.name = read_name(r, "dem");
     d.title = r.text("title").value_or(d.name);
     const auto code = r.text("code");
-    if (!code) r.fail("code", "missing (lammps, liggghts, mercurydpm, yade or chrono)");
+    if (!code) r.fail("code", "missing (" + dem::code_list(" or ") + ")");
     try {
-      (void)dem::code_from_name(*code);
+      d.code = dem::code_from_name(*code);
     } catch (const InvalidInput& e) {
       r.fail("code", e.what());
     }
-    d.code = *code;
     const auto material = read_material_name(r);
     if (!material) r.fail("material", "missing: the [materials.X] the lines are for");
     d.material = *material;

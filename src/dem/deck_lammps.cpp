@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// LAMMPS's lines: `pair_style granular` with hertz/material and viscoelastic damping; per type pair
+// `pair_coeff I J`.
+#include "dem/deck_lammps.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "dem/deck_notes.hpp"
+#include "dem/polydisperse_lines.hpp"
+#include "restitution/units.hpp"
+
+namespace restitution::dem {
+
+void write_lammps(Deck& d, const Pair& p, double a, double /*vn*/, double mu) {
+  const double eta = damping_per_mass(a, p.effective_modulus_pa, p.effective_mass_kg);
+  d.parameters = {
+      {"E", p.young_modulus_pa,
+       "Young's modulus Y [Pa]; LAMMPS mixes two equal types to E* = Y / (2 (1 - nu^2))"},
+      {"eta_n0", eta, "damping eta_n0 = 2 A E* / m_eff [1/(m s)], multiplied by m_eff sqrt(R_eff xi)"},
+      {"nu", p.poisson_ratio, "Poisson ratio [1]"},
+      {"mu_s", mu, "Coulomb friction coefficient [1]"},
+  };
+  // With friction: Mindlin's k_t = 8 G* a from Y and nu (NULL), the same law family as the normal force,
+  // and x_gamma_t = 1, a tangential dashpot as strong as the normal one.
+  const std::string tangential =
+      mu > 0.0 ? fmt::format("mindlin NULL 1 {}", num(mu)) : "linear_nohistory 0 0";
+  d.lines = {"pair_style granular",
+             fmt::format("pair_coeff * * hertz/material {} {} {} tangential {} damping viscoelastic{}",
+                         num(p.young_modulus_pa), num(eta), num(p.poisson_ratio), tangential,
+                         d.end == CollisionEnd::delayed_recovery ? " limit_damping" : "")};
+  d.notes = {mu > 0.0 ? "tangential mindlin NULL 1 mu: k_t = 8 G* a from Y and nu (Mindlin), x_gamma_t = 1 "
+                        "(tangential damping = normal damping)"
+                      : "tangential linear_nohistory 0 0: frictionless (x_gamma_t = 0, mu_s = 0)",
+             friction_note(mu), clamp_note(d.code, d.end),
+             "eta_n0 contains 1/m_eff: exact only for the pair it was made for (" + pair_note(p) +
+                 "); other pairs get A' = A m_eff' / m_eff"};
+}
+
+Coefficients read_lammps(const Deck& d, const Pair& other) {
+  return {
+      hertz_stiffness(effective_modulus_pa(d.parameter("E"), d.parameter("nu")), other.effective_radius_m),
+      d.parameter("eta_n0") * other.effective_mass_kg * std::sqrt(other.effective_radius_m)};
+}
+
+// Several atom types: each type pair's own pair_coeff line, `* *` made `I J`.
+std::vector<std::string> lammps_type_pair_lines(const std::vector<TypePairLines>& pairs, std::size_t /*n*/) {
+  std::vector<std::string> lines{"pair_style granular"};
+  const std::string any_pair = "pair_coeff * * ";
+  for (const TypePairLines& p : pairs) {
+    const std::string& line = p.deck.lines.at(1);
+    if (line.rfind(any_pair, 0) != 0) throw std::logic_error("LAMMPS deck without pair_coeff * *: " + line);
+    lines.push_back(fmt::format("pair_coeff {} {} {}", p.type1, p.type2, line.substr(any_pair.size())));
+  }
+  return lines;
+}
+
+}  // namespace restitution::dem

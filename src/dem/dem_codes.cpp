@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The table of DEM codes: adding one is its value of `Code`, its entry here with the include of its header,
+// and its own files (docs/design.md, "A new DEM code").
+#include "dem/dem_codes.hpp"
+
+#include <fmt/core.h>
+
+#include <stdexcept>
+
+#include "dem/check_deck.hpp"
+#include "dem/check_deck_codes.hpp"
+#include "dem/deck_chrono.hpp"
+#include "dem/deck_lammps.hpp"
+#include "dem/deck_liggghts.hpp"
+#include "dem/deck_mercurydpm.hpp"
+#include "dem/deck_yade.hpp"
+#include "restitution/errors.hpp"
+
+namespace restitution::dem {
+
+const std::vector<CodeEntry>& dem_codes() {
+  static const std::vector<CodeEntry> table = {
+      {.code = Code::lammps,
+       .name = "lammps",
+       .always_clamps = false,
+       .comment = "#",
+       .program = "lmp",
+       .version_query = "",
+       .eps_conversion = false,
+       .scene_runs = true,
+       .write = &write_lammps,
+       .read = &read_lammps,
+       .polydisperse = &lammps_type_pair_lines,
+       .one_radius_only = nullptr,
+       .polydisperse_note =
+           "pair_coeff I J: E and nu are the one (Y, nu) that LAMMPS mixes into the pair's E* (and, with "
+           "friction, Mindlin's G*); for two materials an effective pair, not either material's",
+       .check_deck = &lammps_family_check_deck,
+       .check_deck_run = "lmp -in ",
+       .check_deck_steps = 2000,
+       .max_deck_collisions = kMaxDeckCollisionsLammps},
+      {.code = Code::liggghts,
+       .name = "liggghts",
+       .always_clamps = false,
+       .comment = "#",
+       .program = "liggghts",
+       .version_query = "",
+       .eps_conversion = false,
+       .scene_runs = true,
+       .write = &write_liggghts,
+       .read = &read_liggghts,
+       .polydisperse = &liggghts_type_pair_lines,
+       .one_radius_only = nullptr,
+       .polydisperse_note =
+           "LIGGGHTS reads kn, kt, gamman, gammat and coefficientFriction per type pair (row I, column J); "
+           "hertz/stiffness uses no youngsModulus or poissonsRatio",
+       .check_deck = &lammps_family_check_deck,
+       .check_deck_run = "liggghts -in ",
+       .check_deck_steps = 2000,
+       .max_deck_collisions = kMaxDeckCollisionsLammps},
+      // MercuryDPM's BSHP species always clamps the normal force at zero.
+      {.code = Code::mercurydpm,
+       .name = "mercurydpm",
+       .always_clamps = true,
+       .comment = "//",
+       .program = "",
+       .version_query = "",
+       .eps_conversion = false,
+       .scene_runs = false,
+       .write = &write_mercurydpm,
+       .read = &read_mercurydpm,
+       .polydisperse = nullptr,
+       .one_radius_only =
+           "--code mercurydpm takes one radius: its species' E* and A do not depend on size or mass, so the "
+           "one-radius lines are already exact for every size of one material; two materials need a mixed "
+           "species per material pair, which restitution does not print",
+       .polydisperse_note = "",
+       .check_deck = nullptr,
+       .check_deck_run = "",
+       .check_deck_steps = 0,
+       .max_deck_collisions = 0},
+      // YADE's Mindlin law always clamps; its Tsuji-type damping converges more slowly in dt (5000 coarse
+      // steps per natural time).
+      {.code = Code::yade,
+       .name = "yade",
+       .always_clamps = true,
+       .comment = "#",
+       .program = "yade",
+       .version_query = "yade --version",
+       .eps_conversion = true,
+       .scene_runs = false,
+       .write = &write_yade,
+       .read = &read_yade,
+       .polydisperse = nullptr,
+       .one_radius_only =
+           "--code yade takes one radius: YADE turns (en, vn) into one beta per material pair and gives "
+           "every "
+           "contact that beta, so sizes with another k_n0/m_eff get another eps(v) (and YADE 2023.02a cannot "
+           "express the law at all); use lammps or liggghts for several sizes",
+       .polydisperse_note = "",
+       .check_deck = &yade_check_deck,
+       .check_deck_run = "yade -n -x ",
+       .check_deck_steps = 5000,
+       .max_deck_collisions = kMaxDeckCollisionsYade},
+      // Chrono's SMC contact always clamps.
+      {.code = Code::chrono,
+       .name = "chrono",
+       .always_clamps = true,
+       .comment = "//",
+       .program = "",
+       .version_query = "",
+       .eps_conversion = false,
+       .scene_runs = false,
+       .write = &write_chrono,
+       .read = &read_chrono,
+       .polydisperse = nullptr,
+       .one_radius_only =
+           "--code chrono takes one radius: Kn and Gn belong to each body's material and Chrono combines two "
+           "bodies' values into a contact's, so the R_eff and m_eff they contain cannot be set per pair of "
+           "sizes; use lammps or liggghts for several sizes",
+       .polydisperse_note = "",
+       .check_deck = nullptr,
+       .check_deck_run = "",
+       .check_deck_steps = 0,
+       .max_deck_collisions = 0},
+  };
+  return table;
+}
+
+const CodeEntry& code_entry(Code code) {
+  for (const CodeEntry& e : dem_codes()) {
+    if (e.code == code) return e;
+  }
+  throw std::logic_error(fmt::format("DEM code {} has no entry", static_cast<int>(code)));
+}
+
+Code code_from_name(std::string_view name) {
+  for (const CodeEntry& e : dem_codes()) {
+    if (name == e.name) return e.code;
+  }
+  throw InvalidInput(fmt::format("code must be {}, got '{}'", code_list(" or "), std::string(name)));
+}
+
+const char* code_name(Code code) {
+  return code_entry(code).name;
+}
+
+bool always_clamps(Code code) {
+  return code_entry(code).always_clamps;
+}
+
+std::vector<std::string> code_names(bool (*keep)(const CodeEntry&)) {
+  std::vector<std::string> names;
+  for (const CodeEntry& e : dem_codes()) {
+    if (keep == nullptr || keep(e)) names.emplace_back(e.name);
+  }
+  return names;
+}
+
+std::string code_list(std::string_view last, bool (*keep)(const CodeEntry&)) {
+  const std::vector<std::string> names = code_names(keep);
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) text += i + 1 == names.size() ? std::string(last) : std::string(", ");
+    text += names[i];
+  }
+  return text;
+}
+
+}  // namespace restitution::dem

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// The DEM codes restitution writes lines for, one entry each (docs/design.md, "DEM codes"): the name, whether
+// the code clamps the attractive force, its program and version query, and what it supports (several atom
+// types, a check deck, runs in a scene), with the writer and reader behind each. Every name list in help
+// texts, messages and the scene parser comes from this table.
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace restitution::dem {
+
+enum class Code { lammps, liggghts, mercurydpm, yade, chrono };
+
+struct Deck;
+struct Pair;
+struct TypePairLines;
+struct CheckDeckRequest;
+
+// The elastic and dissipative coefficients K [N m^-3/2], D [N s m^-3/2] of m_eff ξ'' = -K ξ^{3/2} - D sqrt(ξ)
+// ξ': what a code's parameters give a pair, read as the code reads them.
+struct Coefficients {
+  double elastic = 0.0;
+  double damping = 0.0;
+};
+
+struct CodeEntry {
+  Code code;
+  const char* name;           // --code, a scene's `code`, the JSON "code"
+  bool always_clamps;         // the code always clamps the normal force at zero: delayed-recovery end only
+  const char* comment;        // how the code's input comments a line: "#" or "//"
+  const char* program;        // the program that runs its input; "" for a C++ library
+  const char* version_query;  // the command naming the installed version the lines are for; "": any version
+  bool eps_conversion;        // the code turns a measured (en, vn) into A itself: report what it makes of ε
+  // A [[dem]] scene section runs the program on the lines: a LAMMPS-family input (dem/code_runner.hpp).
+  bool scene_runs;
+  // The lines and parameters giving `pair` the law with A [s], YADE's vn [m/s], Coulomb mu [1]
+  // (dem/deck_<code>.hpp).
+  void (*write)(Deck& deck, const Pair& pair, double dissipative_constant_s, double reference_velocity_m_s,
+                double friction);
+  // What the deck's parameters give `other`, a pair of the deck's material.
+  Coefficients (*read)(const Deck& deck, const Pair& other);
+  // Several atom types: the lines from every type pair's own deck (pairs I <= J of `n` types); nullptr:
+  // one radius only, for the reason `one_radius_only`.
+  std::vector<std::string> (*polydisperse)(const std::vector<TypePairLines>& pairs, std::size_t n);
+  const char* one_radius_only;    // why several atom types are refused (nullptr when they are not)
+  const char* polydisperse_note;  // how the code reads the per-type-pair lines
+  // The check deck at n coarse steps per natural time (dem/check_deck_codes.hpp); nullptr: none.
+  std::string (*check_deck)(const CheckDeckRequest& request, int n);
+  const char* check_deck_run;       // the command before the deck's path
+  int check_deck_steps;             // the default n
+  std::size_t max_deck_collisions;  // type pairs x speeds in one deck
+};
+
+// Every code, in the order of the help texts.
+const std::vector<CodeEntry>& dem_codes();
+const CodeEntry& code_entry(Code code);
+
+// A name of the table; throws InvalidInput naming the code and the table's names otherwise.
+Code code_from_name(std::string_view name);
+const char* code_name(Code code);
+bool always_clamps(Code code);
+
+// The names of the codes `keep` accepts (all when nullptr), for CLI11's IsMember.
+std::vector<std::string> code_names(bool (*keep)(const CodeEntry&) = nullptr);
+// The same names as text: "a, b, c" joined by ", " and `last` before the last ("a, b or c" with " or ").
+std::string code_list(std::string_view last, bool (*keep)(const CodeEntry&) = nullptr);
+
+}  // namespace restitution::dem
