@@ -149,7 +149,7 @@ def eps(zeta=None, end="delayed-recovery", tolerance=_TOLERANCE, method="auto", 
     return _core.eps_array(z, _text("end", end), _tolerance(tolerance), _text("method", method), law, workers)
 
 
-_MAX_THREADS = 1024  # as the command line's --threads
+_MAX_THREADS = _core.max_threads  # the library's bound, as the command line's --threads
 
 
 def _threads(threads):

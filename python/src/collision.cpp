@@ -12,6 +12,7 @@
 #include "parallel_solve.hpp"
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/sweep.hpp"
 #include "restitution/units.hpp"
 #include "solve_options.hpp"
 
@@ -181,6 +182,7 @@ void bind_collision(py::module_& m) {
   m.attr("law_names") = law_names();
   m.attr("default_tolerance") = SolveOptions{}.tolerance;
   m.attr("largest_checked_zeta") = kLargestCheckedZeta;
+  m.attr("max_threads") = kMaxSweepThreads;  // as the command line's --threads
   m.def("require_checked_zeta", &require_checked_zeta, py::arg("zeta"),
         "ValueError unless 0 <= zeta <= 1e6 (the checked range).");
   m.def("zeta_from", &zeta_from, py::arg("beta"), py::arg("velocity"),
