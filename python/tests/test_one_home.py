@@ -2,23 +2,14 @@
 """Facts the module shares with the library and the command line have one home: the module reads them from the
 library, and these tests fail when a copy typed by hand (a docstring, the .pyi, the CLI's help) drifts."""
 
-import os
-import subprocess
+import ast
+import pathlib
+import re
 
 import pytest
 
 import restitution
 from restitution import _restitution as _core
-
-
-def _cli(*args):
-    """The output of this build's command line (ctest sets RESTITUTION_CLI), or skip where there is none."""
-    cli = os.environ.get("RESTITUTION_CLI")
-    if not cli or not os.path.exists(cli):
-        pytest.skip("RESTITUTION_CLI names no built command line")
-    done = subprocess.run([cli, *args], capture_output=True, text=True, timeout=120)
-    assert done.returncode == 0, done.stderr
-    return done.stdout
 
 
 def test_the_thread_bound_is_the_library_s():
@@ -31,5 +22,43 @@ def test_the_thread_bound_is_the_library_s():
 
 
 @pytest.mark.parametrize("command", ["sweep", "run"])
-def test_the_command_line_s_thread_bound_is_the_module_s(command):
-    assert f"[1, {_core.max_threads}]" in _cli(command, "--help")
+def test_the_command_line_s_thread_bound_is_the_module_s(command, cli):
+    assert f"[1, {_core.max_threads}]" in cli(command, "--help")
+
+
+def _pyi_literal(name):
+    """The strings of `NAME = Literal[...]` in the package's __init__.pyi (installed next to __init__.py)."""
+    stub = pathlib.Path(restitution.__file__).with_suffix(".pyi")
+    for node in ast.parse(stub.read_text()).body:
+        if isinstance(node, ast.Assign) and [t.id for t in node.targets if isinstance(t, ast.Name)] == [name]:
+            return [element.value for element in node.value.slice.elts]
+    raise AssertionError(f"{stub} has no {name} = Literal[...]")
+
+
+def test_the_stub_s_law_literal_is_the_family_table():
+    assert _pyi_literal("Law") == list(_core.law_names)
+
+
+def test_the_eps_docstring_names_every_law():
+    for name in _core.law_names:
+        assert f'"{name}"' in restitution.eps.__doc__, name
+
+
+@pytest.mark.parametrize("law", list(_core.law_names))
+def test_beta_and_material_follow_the_family_table(law, steel):
+    if _core.has_dissipative_constant(law):
+        assert 0 < restitution.eps(beta=1e-3, velocity=1.0, law=law) < 1
+        assert restitution.calibrate(0.8, 1.0, material=steel, law=law).dissipative_constant > 0
+    else:
+        with pytest.raises(TypeError, match="describe law='viscoelastic-hertz'"):
+            restitution.eps(beta=1e-3, velocity=1.0, law=law)
+        with pytest.raises(TypeError, match="describe law='viscoelastic-hertz'"):
+            restitution.calibrate(0.8, 1.0, material=steel, law=law)
+
+
+@pytest.mark.parametrize("command", ["eps", "sweep", "calibrate"])
+def test_the_law_help_lists_the_family_table(command, cli):
+    text = " ".join(cli(command, "--help").split())
+    listed = re.search(r"contact law: (.*?) \(docs/contact_laws\.md\)", text).group(1)
+    assert re.split(r", | or ", listed) == list(_core.law_names)
+

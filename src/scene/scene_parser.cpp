@@ -307,7 +307,7 @@ class Parser {
     s.law = read_law(r);
     const auto zeta = r.numbers("zeta");
     const auto velocity = r.numbers("velocity");
-    if (velocity && s.law != LawKind::viscoelastic_hertz) {
+    if (velocity && !has_dissipative_constant(s.law)) {
       r.fail("velocity",
              fmt::format("a sweep over impact speeds is for law \"viscoelastic-hertz\"; law \"{}\" "
                          "sweeps zeta (`restitution sweep --law {} --stiffness ...` sweeps its "
@@ -405,7 +405,7 @@ class Parser {
       check_zeta(r, {*t.zeta});
       check_law_zeta(r, t.law, t.ends, {*t.zeta});
     } else {
-      if (t.law != LawKind::viscoelastic_hertz)
+      if (!has_dissipative_constant(t.law))
         r.fail("law", "a trajectory of a law other than viscoelastic-hertz takes zeta (its natural form)");
       if (!t.velocity_m_s) r.fail("", "give zeta, or velocity with beta or material");
       if (t.beta.has_value() == t.material.has_value())
@@ -432,7 +432,7 @@ class Parser {
     c.velocity_m_s = *velocity;
     c.end = read_end(r);
     c.material = read_material_name(r);
-    if (c.material && c.law != LawKind::viscoelastic_hertz)
+    if (c.material && !has_dissipative_constant(c.law))
       r.fail("material", "a material gives the dissipative constant A of law \"viscoelastic-hertz\" only");
     return c;
   }
