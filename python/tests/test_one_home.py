@@ -62,3 +62,19 @@ def test_the_law_help_lists_the_family_table(command, cli):
     listed = re.search(r"contact law: (.*?) \(docs/contact_laws\.md\)", text).group(1)
     assert re.split(r", | or ", listed) == list(_core.law_names)
 
+
+
+# A Material is assembled by the library's material_from_fields for Python, scenes and the command line alike:
+# the same rule in the same words everywhere (the scene parser's test checks its side).
+@pytest.mark.parametrize(
+    "fields, words",
+    [
+        (dict(radius=0.01, radii=(0.01, 0.02)), "material: radius: give radius (both spheres) or radii = [R1, R2]"),
+        (dict(), "material: radius: give radius (both spheres) or radii = [R1, R2]"),
+        (dict(radius=0.01, mass=1.0, masses=(1.0, 2.0)), "material: mass: give mass or masses, not both"),
+    ],
+)
+def test_material_fields_follow_the_library_s_rules(fields, words):
+    with pytest.raises(ValueError) as error:
+        restitution.Material(young_modulus=6e10, poisson_ratio=0.2, density=2500.0, **fields)
+    assert str(error.value) == words
