@@ -2,10 +2,12 @@
 // The scene parser alone: what it accepts, and that every rejection names the file, the line and the key.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
 
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/material.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_plan.hpp"
 
@@ -110,6 +112,32 @@ TEST(SceneParser, MaterialErrorsNameTheMaterialAndTheKey) {
   EXPECT_NE(error_of("output = \"o\"\n[[sweep]]\nmaterial = \"steel\"\nvelocity = 1\n")
                 .find("test.toml:3: sweep[0].material: no [materials.steel]"),
             std::string::npos);
+}
+
+// A material's optional fields are assembled by the library (material_from_fields), so a scene, Python and
+// the command line follow one rule in the same words; the scene names the file, the line and the key.
+TEST(SceneParser, MaterialFieldsFollowTheLibrarysRules) {
+  const std::string head =
+      "output = \"o\"\n[materials.glass]\nyoung_modulus = 6e10\npoisson_ratio = 0.2\ndensity = 2500\n";
+  const std::string both_radii = error_of(head + "radius = 0.01\nradii = [0.01, 0.02]\n");
+  EXPECT_NE(
+      both_radii.find("test.toml:6: materials.glass.radius: give radius (both spheres) or radii = [R1, R2]"),
+      std::string::npos)
+      << both_radii;
+  const std::string both_masses = error_of(head + "radius = 0.01\nmass = 1\nmasses = [1, 2]\n");
+  EXPECT_NE(both_masses.find("test.toml:7: materials.glass.mass: give mass or masses, not both"),
+            std::string::npos)
+      << both_masses;
+  MaterialFields fields;
+  fields.young_modulus_pa = 6e10;
+  fields.poisson_ratio = 0.2;
+  fields.radius_m = 0.01;
+  fields.masses_kg = std::array<double, 2>{1.0, 2.0};
+  const Material m = material_from_fields(fields);
+  EXPECT_EQ(m.radius2_m, 0.01);
+  EXPECT_EQ(m.mass2_kg, 2.0);
+  fields.mass_kg = 1.0;
+  EXPECT_THROW((void)material_from_fields(fields), InvalidInput);
 }
 
 // Issue 12, item 18: a material only calibrated needs no damping (the calibration computes it); the tasks

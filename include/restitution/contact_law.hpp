@@ -34,6 +34,9 @@ const char* law_name(LawKind kind);
 LawKind law_from_name(const std::string& name);  // the inverse; throws InvalidInput naming the value
 // Every member's name, in the order of kLawKinds (the choices of a front end's law option).
 const std::vector<std::string>& law_names();
+// Whether a material sets the law's damping through the dissipative constant A (so that A, β and a Material
+// describe it): viscoelastic Hertz alone; the other members take their natural-form parameter only.
+bool has_dissipative_constant(LawKind kind);
 
 // The parameter a member's results are labelled with and taken in: ζ of the natural form, or for the
 // linear dash-pot its damping ratio r (ζ = 2r).

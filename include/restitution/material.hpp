@@ -5,6 +5,7 @@
 //     ρ = 2 Y sqrt(R_eff) / (3 (1 - ν²)),  R_eff = R1 R2 / (R1 + R2),  m_eff = m1 m2 / (m1 + m2),
 //     A = (1/3) (3η2 - η1)² / (3η2 + 2η1) · (1 - ν²)(1 - 2ν) / (Y ν²).
 // Both spheres are of the same material. Error messages name the offending key as scene files spell it.
+#include <array>
 #include <optional>
 
 #include "restitution/units.hpp"
@@ -48,5 +49,36 @@ ElasticConstants elastic_constants(const Material& material);
 // Validates every field (InvalidInput naming the key: young_modulus, poisson_ratio, radius1, radius2,
 // density, mass1, mass2, dissipative_constant, viscosities) and derives the constants.
 MaterialConstants material_constants(const Material& material);
+
+// The fields a front end reads for a Material, each optional: a scene's [material] table, Python's
+// restitution.Material and the command line's material options all assemble a Material through
+// material_from_fields, so the rules (one radius for both spheres or a pair, one mass or a pair) and their
+// words have one home.
+struct MaterialFields {
+  std::optional<double> young_modulus_pa;
+  std::optional<double> poisson_ratio;
+  std::optional<double> radius_m;                // both spheres
+  std::optional<std::array<double, 2>> radii_m;  // or one each
+  std::optional<double> density_kg_m3;
+  std::optional<double> mass_kg;                   // both spheres
+  std::optional<std::array<double, 2>> masses_kg;  // or one each
+  std::optional<double> dissipative_constant_s;
+  std::optional<Viscosities> viscosities;
+};
+
+// A missing or contradictory field: the key as scene files spell it, and what is wrong with it.
+struct MaterialFieldProblem {
+  const char* field = "";
+  const char* message = "";
+};
+std::optional<MaterialFieldProblem> material_fields_problem(const MaterialFields& fields);
+
+// The Material of the fields; throws InvalidInput "material: FIELD: MESSAGE" for
+// material_fields_problem(fields). The values themselves are checked by check_material.
+Material material_from_fields(const MaterialFields& fields);
+
+// Validates what a material gives: the elastic data always, the dissipation when given (without it a
+// material can still be calibrated, which computes A). Throws InvalidInput naming the key.
+void check_material(const Material& material);
 
 }  // namespace restitution

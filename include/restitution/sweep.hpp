@@ -26,6 +26,8 @@ struct ZetaGrid {
   const char* variable = "zeta";
 };
 inline constexpr std::size_t kMaxSweepPoints = 10'000'000;
+// The most worker threads a sweep or a scene run is asked for (command line and Python check it).
+inline constexpr unsigned kMaxSweepThreads = 1024;
 
 // Throws InvalidInput naming VARIABLE-min, VARIABLE-max or points: non-finite or negative bounds, min > max,
 // logarithmic spacing with zeta-min = 0, points outside [1, kMaxSweepPoints], one point with min != max.

@@ -110,8 +110,9 @@ def _law(law, zeta=None, beta=None, material=None):
     _text("law", law)
     if law not in _core.law_names:
         raise ValueError(f"law must be one of {', '.join(_core.law_names)}, got '{law}'")
-    if law != "viscoelastic-hertz" and (beta is not None or material is not None):
-        raise TypeError(f"beta and material describe law='viscoelastic-hertz'; law='{law}' takes zeta")
+    if (beta is not None or material is not None) and not _core.has_dissipative_constant(law):
+        described = " or ".join(f"law='{name}'" for name in _core.law_names if _core.has_dissipative_constant(name))
+        raise TypeError(f"beta and material describe {described}; law='{law}' takes zeta")
     return law
 
 
@@ -149,7 +150,7 @@ def eps(zeta=None, end="delayed-recovery", tolerance=_TOLERANCE, method="auto", 
     return _core.eps_array(z, _text("end", end), _tolerance(tolerance), _text("method", method), law, workers)
 
 
-_MAX_THREADS = 1024  # as the command line's --threads
+_MAX_THREADS = _core.max_threads  # the library's bound, as the command line's --threads
 
 
 def _threads(threads):

@@ -13,7 +13,7 @@ __version__: str  # e.g. "0.3.0", the same as `restitution --version`
 
 End = Literal["naive", "delayed-recovery"]
 Method = Literal["auto", "bdf", "adams", "taylor"]
-Law = Literal["viscoelastic-hertz", "tsuji-hertz", "hertz-constant-damping", "linear-dashpot"]
+Law = Literal["viscoelastic-hertz", "linear-dashpot", "tsuji-hertz", "hertz-constant-damping"]  # the family table's order
 ArrayLike = Union[npt.ArrayLike, Sequence[float]]
 FloatArray = npt.NDArray[np.float64]
 

@@ -22,7 +22,7 @@ namespace {
 // Python says with None, as the CLI leaves them out, rather than with the struct's placeholder 0.
 template <double Calibration::*member>
 std::optional<double> hertz_only(const Calibration& c) {
-  if (c.law != LawKind::viscoelastic_hertz) return std::nullopt;
+  if (!has_dissipative_constant(c.law)) return std::nullopt;
   return c.*member;
 }
 
@@ -64,7 +64,7 @@ void bind_calibration(py::module_& m) {
          const std::optional<Material>& material, const std::string& law) {
         CalibrationRequest request;
         request.law = law_from_name(law);
-        if (material && request.law != LawKind::viscoelastic_hertz) {
+        if (material && !has_dissipative_constant(request.law)) {
           throw InvalidInput(fmt::format(
               "material gives the dissipative constant A of law='viscoelastic-hertz' only, not law='{}'",
               law));

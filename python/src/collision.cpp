@@ -12,6 +12,7 @@
 #include "parallel_solve.hpp"
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/sweep.hpp"
 #include "restitution/units.hpp"
 #include "solve_options.hpp"
 #include "without_gil.hpp"
@@ -179,8 +180,13 @@ void bind_collision(py::module_& m) {
       "eps at every zeta of an array, on `threads` threads (0: all cores) with the GIL released; same shape "
       "out.");
   m.attr("law_names") = law_names();
+  m.def(
+      "has_dissipative_constant",
+      [](const std::string& law) { return has_dissipative_constant(law_from_name(law)); }, py::arg("law"),
+      "Whether beta, a Material and the dissipative constant A describe the law (viscoelastic Hertz).");
   m.attr("default_tolerance") = SolveOptions{}.tolerance;
   m.attr("largest_checked_zeta") = kLargestCheckedZeta;
+  m.attr("max_threads") = kMaxSweepThreads;  // as the command line's --threads
   m.def("require_checked_zeta", &require_checked_zeta, py::arg("zeta"),
         "ValueError unless 0 <= zeta <= 1e6 (the checked range).");
   m.def("zeta_from", &zeta_from, py::arg("beta"), py::arg("velocity"),

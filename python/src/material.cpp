@@ -25,24 +25,18 @@ Material make_material(double young_modulus, double poisson_ratio, std::optional
                        std::optional<Pair> radii, std::optional<double> density, std::optional<double> mass,
                        std::optional<Pair> masses, std::optional<double> dissipative_constant,
                        std::optional<Pair> viscosities) {
-  if (radius.has_value() == radii.has_value())
-    throw InvalidInput("material: give radius (both spheres) or radii = (R1, R2)");
-  if (mass && masses) throw InvalidInput("material: give mass or masses, not both");
-  Material m;
-  m.young_modulus_pa = young_modulus;
-  m.poisson_ratio = poisson_ratio;
-  m.radius1_m = radius ? *radius : (*radii)[0];
-  m.radius2_m = radius ? *radius : (*radii)[1];
-  m.density_kg_m3 = density;
-  if (mass) m.mass1_kg = m.mass2_kg = *mass;
-  if (masses) {
-    m.mass1_kg = (*masses)[0];
-    m.mass2_kg = (*masses)[1];
-  }
-  m.dissipative_constant_s = dissipative_constant;
-  if (viscosities) m.viscosities = Viscosities{(*viscosities)[0], (*viscosities)[1]};
-  (void)elastic_constants(m);  // the elastic data are checked now, the dissipation where it is needed
-  if (m.dissipative_constant_s || m.viscosities) (void)material_constants(m);
+  MaterialFields f;
+  f.young_modulus_pa = young_modulus;
+  f.poisson_ratio = poisson_ratio;
+  f.radius_m = radius;
+  f.radii_m = radii;
+  f.density_kg_m3 = density;
+  f.mass_kg = mass;
+  f.masses_kg = masses;
+  f.dissipative_constant_s = dissipative_constant;
+  if (viscosities) f.viscosities = Viscosities{(*viscosities)[0], (*viscosities)[1]};
+  const Material m = material_from_fields(f);
+  check_material(m);  // the elastic data now, the dissipation when given
   return m;
 }
 

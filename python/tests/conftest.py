@@ -41,3 +41,20 @@ def steel():
 
     return restitution.Material(young_modulus=2.0e11, poisson_ratio=0.3, radius=0.01, density=7800.0,
                                 dissipative_constant=1.0e-6)
+
+
+@pytest.fixture
+def cli():
+    """Runs this build's command line (ctest sets RESTITUTION_CLI) and returns its output; skips where there is none."""
+    import subprocess
+
+    path = os.environ.get("RESTITUTION_CLI")
+    if not path or not os.path.exists(path):
+        pytest.skip("RESTITUTION_CLI names no built command line")
+
+    def run(*args):
+        done = subprocess.run([path, *args], capture_output=True, text=True, timeout=120)
+        assert done.returncode == 0, done.stderr
+        return done.stdout
+
+    return run

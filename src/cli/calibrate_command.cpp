@@ -61,7 +61,7 @@ int run_calibrate(const CalibrateOptions& o) {
   if (o.eps == 0.0) throw InvalidInput("--eps is required (or --from-fit FILE)");
   CalibrationRequest request;
   request.law = law_from_name(o.law);
-  const bool hertz = request.law == LawKind::viscoelastic_hertz;
+  const bool hertz = has_dissipative_constant(request.law);
   if (!hertz && o.material.any()) {
     throw InvalidInput(
         fmt::format("a material gives A for --law viscoelastic-hertz only, not --law {}", o.law));

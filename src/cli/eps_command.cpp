@@ -34,7 +34,7 @@ ContactLaw law_from(const EpsOptions& o) {
   // A law labelled by another parameter than ζ (the dash-pot's damping ratio) also takes it by name.
   const char* parameter = law_parameter(kind).name;
   const bool takes_ratio = std::string_view(parameter) == "damping-ratio";
-  if (kind != LawKind::viscoelastic_hertz && (o.beta || o.velocity)) {
+  if (!has_dissipative_constant(kind) && (o.beta || o.velocity)) {
     throw InvalidInput(
         fmt::format("--beta and --velocity belong to --law viscoelastic-hertz; --law {} takes {}", o.law,
                     takes_ratio ? "--damping-ratio or --zeta" : "--zeta"));

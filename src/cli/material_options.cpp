@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "cli/material_options.hpp"
 
+#include <array>
+
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -24,19 +26,22 @@ Material material_from(const MaterialOptions& o) {
     throw InvalidInput(
         "a material needs --young-modulus, --poisson-ratio and --radius (and --density or --mass)");
   }
-  Material m;
-  m.young_modulus_pa = *o.young_modulus;
-  m.poisson_ratio = *o.poisson_ratio;
-  m.radius1_m = *o.radius;
-  m.radius2_m = o.radius2.value_or(*o.radius);
-  m.density_kg_m3 = o.density;
-  if (o.mass) {
-    m.mass1_kg = o.mass;
-    m.mass2_kg = o.mass2.value_or(*o.mass);
-  } else if (o.mass2) {
-    throw InvalidInput("--mass2 needs --mass");
+  if (o.mass2 && !o.mass) throw InvalidInput("--mass2 needs --mass");
+  MaterialFields f;
+  f.young_modulus_pa = o.young_modulus;
+  f.poisson_ratio = o.poisson_ratio;
+  if (o.radius2) {
+    f.radii_m = std::array<double, 2>{*o.radius, *o.radius2};
+  } else {
+    f.radius_m = o.radius;
   }
-  return m;
+  f.density_kg_m3 = o.density;
+  if (o.mass2) {
+    f.masses_kg = std::array<double, 2>{*o.mass, *o.mass2};
+  } else {
+    f.mass_kg = o.mass;
+  }
+  return material_from_fields(f);
 }
 
 }  // namespace restitution::cli

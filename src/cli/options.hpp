@@ -85,10 +85,12 @@ inline const char* method_note(Method method) {
 
 // --law NAME, one of law_names() (the family of docs/contact_laws.md).
 inline void add_law_option(CLI::App& command, std::string& law) {
+  const std::vector<std::string>& names = law_names();
+  const std::vector<std::string> all_but_last(names.begin(), names.end() - 1);
   command
       .add_option("--law", law,
-                  "contact law: viscoelastic-hertz, tsuji-hertz, hertz-constant-damping or linear-dashpot "
-                  "(docs/contact_laws.md)")
+                  fmt::format("contact law: {} or {} (docs/contact_laws.md)", fmt::join(all_but_last, ", "),
+                              names.back()))
       ->check(CLI::IsMember(law_names()))
       ->capture_default_str();
 }

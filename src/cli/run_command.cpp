@@ -19,6 +19,7 @@
 #include "cli/stop_signals.hpp"
 #include "cli/work_precision_files.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/sweep.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/scene_run.hpp"
@@ -95,8 +96,9 @@ void add_run_command(CLI::App& app, Action& chosen) {
   cmd->add_flag(
       "--quick", o->quick,
       fmt::format("small settings for CI: at most {} points per range, tolerance >= 1e-8", kQuickPoints));
-  cmd->add_option("--threads", o->threads, "worker threads, in [1, 1024] (default: one per core)")
-      ->check(CLI::Range(1U, 1024U));
+  cmd->add_option("--threads", o->threads,
+                  fmt::format("worker threads, in [1, {}] (default: one per core)", kMaxSweepThreads))
+      ->check(CLI::Range(1U, kMaxSweepThreads));
   cmd->callback([o, &chosen] { chosen = [o] { return run_scene_file(*o); }; });
 }
 

@@ -37,8 +37,6 @@ namespace restitution::cli {
 namespace {
 namespace fs = std::filesystem;
 
-constexpr long long kMaxThreads = 1024;
-
 // The first line of the partial file: a resumed sweep must have the same settings.
 std::string settings_line(const SweepOptions& o, const SweepGrid& grid) {
   std::string range = fmt::format("zeta-min={} zeta-max={}", number17(o.zeta_min.value_or(0.0)),
@@ -73,9 +71,9 @@ std::string dropped_note(const PartialSweep& done, const fs::path& partial_path)
 }
 
 int run_sweep_command(const SweepOptions& o) {
-  if (o.threads && (*o.threads < 1 || *o.threads > kMaxThreads)) {
-    throw InvalidInput(
-        fmt::format("--threads must lie in [1, {}] (default: all cores), got {}", kMaxThreads, *o.threads));
+  if (o.threads && (*o.threads < 1 || *o.threads > kMaxSweepThreads)) {
+    throw InvalidInput(fmt::format("--threads must lie in [1, {}] (default: all cores), got {}",
+                                   kMaxSweepThreads, *o.threads));
   }
   const SweepGrid grid = sweep_grid(o);
   const std::vector<double>& zetas = grid.zetas;
@@ -225,7 +223,7 @@ void add_sweep_command(CLI::App& app, Action& chosen) {
   cmd->add_flag("--log", o->log, "space the grid logarithmically (needs a minimum > 0); default: linearly");
   add_solver_options(*cmd, o->solver);
   cmd->add_option("--threads", o->threads,
-                  fmt::format("worker threads, in [1, {}] (default: all cores)", kMaxThreads));
+                  fmt::format("worker threads, in [1, {}] (default: all cores)", kMaxSweepThreads));
   cmd->add_option("--out", o->out, "the CSV file to write (FILE.partial holds the rows while it runs)")
       ->required()
       ->check(non_empty_path());

@@ -52,7 +52,7 @@ VelocityAxis velocity_subject(const SweepOptions& o, LawKind law, std::optional<
   VelocityAxis axis;
   if (physical_form(o)) return axis;
   const bool material = o.material.any() || o.dissipative_constant;
-  if (law != LawKind::viscoelastic_hertz) {
+  if (!has_dissipative_constant(law)) {
     throw InvalidInput(fmt::format(
         "--beta and a material describe --law viscoelastic-hertz; --law {} sweeps impact speeds with "
         "--stiffness, --damping-coefficient and --effective-mass (ContactLaw::physical)",

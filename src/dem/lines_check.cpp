@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "analysis/contract_error.hpp"
 #include "dem/yade_conversion.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/errors.hpp"
@@ -75,8 +76,7 @@ CodeComparison compare_with_code(Code code, const Material& material, const Damp
   c.measured = measure_dem_eps(program, c.deck, pair, speeds_m_s);
   for (std::size_t i = 0; i < speeds_m_s.size(); ++i) {
     const double predicted = c.predicted_eps[i];
-    c.relative_difference.push_back((c.measured->extrapolated[i] - predicted) /
-                                    std::min(predicted, 1.0 - predicted));
+    c.relative_difference.push_back(analysis::contract_difference(c.measured->extrapolated[i], predicted));
   }
   return c;
 }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "analysis/contract_error.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
 
@@ -64,7 +65,7 @@ BinningError binning_error(const PolydisperseResult& r, const SizeClasses& class
         const double code = eps_for(beta_code, v, r.end, tolerance, solver);
         const double law = eps_for(beta_law, v, r.end, tolerance, solver);
         const double abs_error = std::fabs(code - law);
-        const double relative = abs_error / std::min(law, 1.0 - law);
+        const double relative = analysis::contract_error(code, law);
         e.worst_abs_error = std::max(e.worst_abs_error, abs_error);
         if (relative > e.worst_relative_error) {
           e.worst_relative_error = relative;

@@ -79,4 +79,8 @@ double naive_end_critical_zeta(LawKind kind) {
   return 2.0 * std::sqrt(law_exponents(kind).damping + 1.0);
 }
 
+bool has_dissipative_constant(LawKind kind) {
+  return kind == LawKind::viscoelastic_hertz;
+}
+
 }  // namespace restitution

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "analysis/contract_error.hpp"
 #include "reference/dashpot_closed_form.hpp"
 #include "scene/scene_run.hpp"
 
@@ -71,7 +72,7 @@ DashpotOutcome check_dashpot(const DashpotCheck& check, const std::vector<double
       if (end == nullptr) continue;
       const double tau = e == CollisionEnd::naive ? dashpot_naive_duration(r) : dashpot_delayed_duration(r);
       const double exact = dashpot_eps(r, tau);
-      const double error = std::abs(end->eps - exact) / std::min(exact, 1.0 - exact);
+      const double error = analysis::contract_error(end->eps, exact);
       point.ends[e] = DashpotEndCheck{end->eps, exact, error};
       if (std::isfinite(error)) out.max_relative_error[e] = std::max(out.max_relative_error[e], error);
     }

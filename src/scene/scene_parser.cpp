@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -90,43 +91,30 @@ bool has_dissipation(const Material& m) {
 }
 
 Material read_material(TomlReader& r) {
-  Material m;
-  const auto young = r.number("young_modulus");
-  const auto nu = r.number("poisson_ratio");
-  if (!young) r.fail("young_modulus", "missing (Pa)");
-  if (!nu) r.fail("poisson_ratio", "missing");
-  m.young_modulus_pa = *young;
-  m.poisson_ratio = *nu;
-  const auto radius = r.number("radius");
-  const auto radii = r.numbers("radii");
-  if (radius.has_value() == radii.has_value())
-    r.fail("radius", "give radius (both spheres) or radii = [R1, R2]");
-  if (radii && radii->size() != 2) r.fail("radii", "expected [R1, R2] in m");
-  m.radius1_m = radius ? *radius : (*radii)[0];
-  m.radius2_m = radius ? *radius : (*radii)[1];
-  m.density_kg_m3 = r.number("density");
-  const auto mass = r.number("mass");
-  const auto masses = r.numbers("masses");
-  if (mass && masses) r.fail("mass", "give mass or masses, not both");
-  if (masses && masses->size() != 2) r.fail("masses", "expected [m1, m2] in kg");
-  if (mass) m.mass1_kg = m.mass2_kg = *mass;
-  if (masses) {
-    m.mass1_kg = (*masses)[0];
-    m.mass2_kg = (*masses)[1];
+  MaterialFields f;
+  f.young_modulus_pa = r.number("young_modulus");
+  f.poisson_ratio = r.number("poisson_ratio");
+  f.radius_m = r.number("radius");
+  if (const auto radii = r.numbers("radii")) {
+    if (radii->size() != 2) r.fail("radii", "expected [R1, R2] in m");
+    f.radii_m = std::array<double, 2>{(*radii)[0], (*radii)[1]};
   }
-  m.dissipative_constant_s = r.number("dissipative_constant");
+  f.density_kg_m3 = r.number("density");
+  f.mass_kg = r.number("mass");
+  if (const auto masses = r.numbers("masses")) {
+    if (masses->size() != 2) r.fail("masses", "expected [m1, m2] in kg");
+    f.masses_kg = std::array<double, 2>{(*masses)[0], (*masses)[1]};
+  }
+  f.dissipative_constant_s = r.number("dissipative_constant");
   if (const auto eta = r.numbers("viscosities")) {
     if (eta->size() != 2) r.fail("viscosities", "expected [eta1, eta2] in Pa s");
-    m.viscosities = Viscosities{(*eta)[0], (*eta)[1]};
+    f.viscosities = Viscosities{(*eta)[0], (*eta)[1]};
   }
+  if (const auto problem = material_fields_problem(f)) r.fail(problem->field, problem->message);
+  const Material m = material_from_fields(f);
   r.finish();
   try {
-    // Without dissipation the material can still be calibrated (which computes A): validate what is given.
-    if (has_dissipation(m)) {
-      (void)material_constants(m);
-    } else {
-      (void)elastic_constants(m);
-    }
+    check_material(m);
   } catch (const InvalidInput& e) {
     r.fail("", e.what());
   }
@@ -307,7 +295,7 @@ class Parser {
     s.law = read_law(r);
     const auto zeta = r.numbers("zeta");
     const auto velocity = r.numbers("velocity");
-    if (velocity && s.law != LawKind::viscoelastic_hertz) {
+    if (velocity && !has_dissipative_constant(s.law)) {
       r.fail("velocity",
              fmt::format("a sweep over impact speeds is for law \"viscoelastic-hertz\"; law \"{}\" "
                          "sweeps zeta (`restitution sweep --law {} --stiffness ...` sweeps its "
@@ -405,7 +393,7 @@ class Parser {
       check_zeta(r, {*t.zeta});
       check_law_zeta(r, t.law, t.ends, {*t.zeta});
     } else {
-      if (t.law != LawKind::viscoelastic_hertz)
+      if (!has_dissipative_constant(t.law))
         r.fail("law", "a trajectory of a law other than viscoelastic-hertz takes zeta (its natural form)");
       if (!t.velocity_m_s) r.fail("", "give zeta, or velocity with beta or material");
       if (t.beta.has_value() == t.material.has_value())
@@ -432,7 +420,7 @@ class Parser {
     c.velocity_m_s = *velocity;
     c.end = read_end(r);
     c.material = read_material_name(r);
-    if (c.material && c.law != LawKind::viscoelastic_hertz)
+    if (c.material && !has_dissipative_constant(c.law))
       r.fail("material", "a material gives the dissipative constant A of law \"viscoelastic-hertz\" only");
     return c;
   }
