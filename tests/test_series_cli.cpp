@@ -94,7 +94,9 @@ TEST(CliSeries, ValidateWritesCsvJsonAndPlot) {
   const auto outcome = run_cli("series validate --out " + folder.string());
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   const std::string csv = slurp((folder / "series_validation.csv").string());
-  EXPECT_EQ(csv.rfind("zeta,naive_eps,naive_one_minus_eps,delayed_recovery_eps,delayed_recovery_one_minus_eps,", 0), 0u);
+  EXPECT_EQ(
+      csv.rfind("zeta,naive_eps,naive_one_minus_eps,delayed_recovery_eps,delayed_recovery_one_minus_eps,", 0),
+      0u);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 101);  // header + 20 points per decade
   const json j = json::parse(slurp((folder / "series_validation.json").string()));
   EXPECT_EQ(j["approximations"].size(), 9u);

@@ -112,7 +112,8 @@ std::vector<std::string> split(const std::string& line) {
 
 constexpr const char* kHeader =
     "zeta,max_compression_tau,max_compression_x,naive_eps,naive_one_minus_eps,naive_tau,naive_x,"
-    "delayed_recovery_eps,delayed_recovery_one_minus_eps,delayed_recovery_tau,delayed_recovery_x,agreement,steps";
+    "delayed_recovery_eps,delayed_recovery_one_minus_eps,delayed_recovery_tau,delayed_recovery_x,agreement,"
+    "steps";
 
 }  // namespace
 

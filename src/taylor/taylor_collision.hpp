@@ -23,8 +23,8 @@
 #include <optional>
 #include <type_traits>
 
-#include "restitution/solve_types.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/solve_types.hpp"
 #include "taylor/taylor_series.hpp"
 
 namespace restitution::taylor {
