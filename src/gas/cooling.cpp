@@ -64,8 +64,10 @@ std::vector<double> output_times(const CoolingRequest& r, double duration_s) {
   const double decades = std::log10(duration_s / first);
   const auto intervals = static_cast<int>(std::ceil(decades * r.points_per_decade - 1e-9));
   std::vector<double> times;
-  for (int i = 0; i <= intervals; ++i) times.push_back(first * std::pow(10.0, decades * i / intervals));
-  times.back() = duration_s;
+  // Counted down from the duration, so that a whole number of decades gives round times.
+  for (int i = 0; i <= intervals; ++i) {
+    times.push_back(duration_s * std::pow(10.0, -decades * (intervals - i) / intervals));
+  }
   return times;
 }
 
@@ -179,14 +181,16 @@ double solve_in_panel(const Panel& p, const Rule& rule, double target) {
 
 }  // namespace
 
-double haff_time_s(const CoolingRequest& request) {
+HaffReference haff_reference(const CoolingRequest& request) {
   check(request);
   Gas gas(request);
   const double rate = gas.cooling_rate(request.initial_temperature_j);
   if (!(rate > 0.0)) {
     throw InvalidInput("the law loses no energy at these speeds (eps = 1): the gas does not cool");
   }
-  return 2.0 / rate;
+  const double eps = request.law.constant_eps ? *request.law.constant_eps
+                                              : gas.integral().effective_eps(request.initial_temperature_j);
+  return {2.0 / rate, eps};
 }
 
 CoolingCurve cooling_curve(const CoolingRequest& request) {
@@ -196,13 +200,10 @@ CoolingCurve cooling_curve(const CoolingRequest& request) {
   c.contact_correlation = contact_correlation(request.particles.packing_fraction);
   c.number_density_m3 = number_density_m3(request.particles.packing_fraction, request.particles.diameter_m);
   c.a2 = request.a2.value_or(0.0);
+  const HaffReference haff = haff_reference(request);
+  c.tau0_s = haff.tau0_s;
+  c.haff_eps = haff.eps;
   Gas gas(request);
-  const double initial_rate = gas.cooling_rate(t0);
-  if (!(initial_rate > 0.0)) {
-    throw InvalidInput("the law loses no energy at these speeds (eps = 1): the gas does not cool");
-  }
-  c.tau0_s = 2.0 / initial_rate;
-  c.haff_eps = request.law.constant_eps ? *request.law.constant_eps : gas.integral().effective_eps(t0);
   if (!std::isfinite(request.duration) || request.duration <= 0.0) {
     throw InvalidInput(fmt::format("duration must be finite and > 0, got {}", request.duration));
   }
@@ -231,8 +232,8 @@ CoolingCurve cooling_curve(const CoolingRequest& request) {
     const double rate = gas.cooling_rate(temperature);
     c.time_s.push_back(t);
     c.temperature_j.push_back(temperature);
-    const double haff = 1.0 + t / c.tau0_s;
-    c.haff_temperature_j.push_back(t0 / (haff * haff));
+    const double haff_factor = 1.0 + t / c.tau0_s;
+    c.haff_temperature_j.push_back(t0 / (haff_factor * haff_factor));
     c.cooling_rate_hz.push_back(rate);
     c.local_exponent.push_back(-t * rate);
     c.collision_frequency_hz.push_back(gas.collision_frequency(temperature));

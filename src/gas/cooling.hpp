@@ -64,7 +64,11 @@ struct CoolingCurve {
 // initial_temperature, duration, times, a2, collision_rate_factor; a law without dissipation).
 CoolingCurve cooling_curve(const CoolingRequest& request);
 
-// τ₀ = 2/ζ(T₀) alone (what a duration in Haff times multiplies).
-double haff_time_s(const CoolingRequest& request);
+// Haff's law tangent at t = 0 alone (what a duration in Haff times multiplies): τ₀ = 2/ζ(T₀) [s] and its ε.
+struct HaffReference {
+  double tau0_s = 0.0;
+  double eps = 0.0;
+};
+HaffReference haff_reference(const CoolingRequest& request);
 
 }  // namespace restitution::gas
