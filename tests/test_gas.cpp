@@ -65,11 +65,11 @@ TEST(GasHaff, ConstantEpsFollowsHaffsLawTo1e10) {
 TEST(GasHaff, ConstantSonineCoefficientScalesTheRatesByItsClosedForms) {
   const double eps = 0.5;
   CoolingRequest r = issue_gas(constant_eps_law(eps));
-  const double maxwell = haff_time_s(r);
+  const double maxwell = haff_reference(r).tau0_s;
   const double a2 = sonine_a2_constant_eps(eps);
   EXPECT_NEAR(a2, 16.0 * 0.5 * 0.5 / (81.0 - 8.5 + 30.0 * 0.25 * 0.5), 1e-15);
   r.a2 = a2;
-  EXPECT_NEAR(maxwell / haff_time_s(r), 1.0 + 3.0 * a2 / 16.0, 1e-13);
+  EXPECT_NEAR(maxwell / haff_reference(r).tau0_s, 1.0 + 3.0 * a2 / 16.0, 1e-13);
   const CoolingCurve c = cooling_curve(r);
   EXPECT_NEAR(c.effective_eps.back(), eps, 1e-13);
   const double omega = collision_frequency_hz(0.1, 0.01, r.particles.mass_kg, r.initial_temperature_j, 0.0);
