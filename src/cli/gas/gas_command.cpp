@@ -16,6 +16,7 @@
 #include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
 #include "cli/gas/gas_options.hpp"
+#include "cli/gas/gas_table.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -27,7 +28,7 @@ struct GasCommandOptions {
   std::string plot;  // PNG file
 };
 
-// The columns of the CSV and of the table, each with its values.
+// The arrays of the JSON, each with its values.
 struct Column {
   const char* name;
   const std::vector<double>* values;
@@ -41,25 +42,6 @@ std::vector<Column> columns(const gas::CoolingCurve& c) {
           {"collision_frequency_hz", &c.collision_frequency_hz},
           {"collisions_per_particle", &c.collisions_per_particle},
           {"effective_eps", &c.effective_eps}};
-}
-
-std::string csv(const gas::CoolingCurve& c) {
-  const std::vector<Column> cols = columns(c);
-  std::string out;
-  for (std::size_t j = 0; j < cols.size(); ++j) out += fmt::format("{}{}", j ? "," : "", cols[j].name);
-  out += "\n";
-  for (std::size_t i = 0; i < c.time_s.size(); ++i) {
-    for (std::size_t j = 0; j < cols.size(); ++j)
-      out += fmt::format("{}{}", j ? "," : "", number17((*cols[j].values)[i]));
-    out += "\n";
-  }
-  return out;
-}
-
-std::string law_text(const gas::CoolingRequest& r) {
-  if (r.law.constant_eps) return fmt::format("constant eps = {:.10g}", *r.law.constant_eps);
-  return fmt::format("{}, zeta = {:.10g} at {:g} m/s, {} end", law_name(r.law.kind), r.law.zeta_at_reference,
-                     r.law.reference_speed_m_s, end_name(r.law.end));
 }
 
 std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const GasCommandOptions& o) {
@@ -86,7 +68,7 @@ std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, 
 }
 
 void print_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c) {
-  fmt::print("# restitution gas: {}\n", law_text(r));
+  fmt::print("# restitution gas: {}\n", gas_law_text(r));
   fmt::print(
       "# spheres m = {:.6g} kg, sigma = {:.6g} m, phi = {:g} (g2 = {:.6g}, n = {:.6g} 1/m^3); T0 = {:.6g} "
       "J\n",
@@ -105,15 +87,13 @@ void print_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c) {
 }
 
 void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const GasCommandOptions& o) {
-  const std::string table = csv(c);
+  const std::string table = gas_csv(c);
   if (!o.out.empty()) write_file_atomically(o.out, table);
   if (o.plot.empty()) return;
   // Without --out the plot reads a scratch copy of the table beside the image, removed afterwards.
   const std::filesystem::path data(o.out.empty() ? o.plot + ".data.csv" : o.out);
   if (o.out.empty()) write_file_atomically(data, table);
-  const std::string why = run_plot_script(
-      "gas_cooling", data, o.plot,
-      {number17(r.initial_temperature_j), number17(c.tau0_s), number17(c.haff_eps), law_text(r)});
+  const std::string why = run_plot_script("gas_cooling", data, o.plot, gas_plot_arguments(r, c));
   if (o.out.empty()) {
     std::error_code ignored;
     std::filesystem::remove(data, ignored);
