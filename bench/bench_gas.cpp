@@ -8,7 +8,7 @@
 
 #include <numbers>
 
-#include "gas/cooling.hpp"
+#include "restitution/gas.hpp"
 
 namespace {
 

@@ -9,6 +9,7 @@
 #include "restitution/errors.hpp"
 #include "restitution/fast.hpp"
 #include "restitution/fit.hpp"
+#include "restitution/gas.hpp"
 #include "restitution/material.hpp"
 #include "restitution/series.hpp"
 #include "restitution/solve_types.hpp"

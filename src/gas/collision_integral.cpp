@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "gas/collision_integral.hpp"
+#include "restitution/gas.hpp"
 
 #include <fmt/core.h>
 

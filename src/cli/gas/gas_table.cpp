@@ -18,11 +18,12 @@ std::string gas_csv(const gas::CoolingCurve& c) {
       {"collisions_per_particle", &c.collisions_per_particle},
       {"effective_eps", &c.effective_eps}};
   std::string out;
-  for (std::size_t j = 0; j < columns.size(); ++j) out += fmt::format("{}{}", j ? "," : "", columns[j].first);
+  for (std::size_t j = 0; j < columns.size(); ++j)
+    out += fmt::format("{}{}", j > 0 ? "," : "", columns[j].first);
   out += "\n";
   for (std::size_t i = 0; i < c.time_s.size(); ++i) {
     for (std::size_t j = 0; j < columns.size(); ++j) {
-      out += fmt::format("{}{}", j ? "," : "", number17((*columns[j].second)[i]));
+      out += fmt::format("{}{}", j > 0 ? "," : "", number17((*columns[j].second)[i]));
     }
     out += "\n";
   }

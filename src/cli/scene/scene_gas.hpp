@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "gas/cooling.hpp"
+#include "restitution/gas.hpp"
 #include "scene/scene.hpp"
 
 namespace restitution::cli {
