@@ -14,6 +14,10 @@ namespace {
 // The section as the command's options, so that both take one path to the request.
 GasOptions options_of(const scene::Scene& scene, const scene::GasTask& task) {
   const Material& m = scene.materials.at(task.material);
+  if (m.radius1_m != m.radius2_m || (m.mass1_kg && m.mass1_kg != m.mass2_kg)) {
+    throw InvalidInput(fmt::format("material: [materials.{}] has two sizes; the gas is of one (monodisperse)",
+                                   task.material));
+  }
   GasOptions o;
   o.material.radius = m.radius1_m;
   o.material.density = m.density_kg_m3;
