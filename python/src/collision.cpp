@@ -46,9 +46,9 @@ CollisionResult solve_one(const std::string& law, double zeta, const SolveOption
 
 // solve(end="both"): each end as eps() computes it, so that the two agree to the last digit. One solve of
 // both ends plans its tolerances and method for both (the delayed-recovery eps then differs from the
-// one-end solve in the 12th digit, both inside the tolerance); two one-end solves cost ~1.5x and give one
-// answer. The naive end's solve, which runs through the whole collision, gives the maximal compression, the
-// method and the trajectory; the statistics are the sum of both solves.
+// one-end solve in the 12th digit, both inside the tolerance); two one-end solves cost 1.2-1.8x the one solve
+// and give one answer. The naive end's solve, which runs through the whole collision, gives the maximal
+// compression, the method and the trajectory; the statistics are the sum of both solves.
 CollisionResult solve_both_ends(const std::string& law, double zeta, SolveOptions options) {
   options.ends = EndSet{CollisionEnd::naive};  // refused, in the library's words, where it does not exist
   CollisionResult result = solve_one(law, zeta, options);
