@@ -160,11 +160,42 @@ Material material_from_state(const py::tuple& t) {
 }  // namespace
 
 void bind_material(py::module_& m) {
-  py::class_<Material>(m, "Material",
-                       "Two spheres of one viscoelastic material, in SI units (the fields of a scene's "
-                       "[material] table). Give radius or radii, density or mass or masses, and "
-                       "dissipative_constant or viscosities (or neither, for calibrate()). Raises ValueError "
-                       "naming the field that is out of range.")
+  py::class_<Material>(
+      m, "Material",
+      R"(Two spheres of one viscoelastic material, in SI units (the fields of a scene's [material] table).
+
+Parameters
+----------
+young_modulus : float
+    Young's modulus Y [Pa], > 0.
+poisson_ratio : float
+    Poisson ratio nu, in (-1, 0.5).
+radius, radii : float or (float, float)
+    R [m] of both spheres, or (R1, R2) [m].
+density, mass, masses : float or (float, float)
+    Density [kg/m^3], or the mass [kg] of both, or (m1, m2) [kg].
+dissipative_constant, viscosities : float or (float, float), optional
+    A [s], or (eta1, eta2) [Pa s]; neither for calibrate(), which finds A.
+
+Raises
+------
+ValueError
+    A field out of range, named.
+TypeError
+    A missing, unknown or mistyped field, or a positional argument.
+
+Examples
+--------
+>>> import pickle, restitution
+>>> rubber = restitution.Material(young_modulus=1e7, poisson_ratio=0.45, radius=0.01, density=1100.0,
+...                               dissipative_constant=5.8e-5)
+>>> rubber
+Material(young_modulus=10000000 Pa, poisson_ratio=0.45, radii=(0.01, 0.01) m, density=1100 kg/m^3, masses=None, dissipative_constant=5.8e-05 s, viscosities=None)
+>>> round(rubber.beta, 6)   # s^(1/5) m^(-1/5)
+0.201004
+>>> pickle.loads(pickle.dumps(rubber)).dissipative_constant
+5.8e-05
+)")
       .def(py::init(&material_from_keywords),
            "Material(*, young_modulus, poisson_ratio, radius=None, radii=None, density=None, mass=None, "
            "masses=None, dissipative_constant=None, viscosities=None): "

@@ -11,7 +11,7 @@ import restitution
 import restitution.fast
 import restitution.series
 
-MODULES = [restitution, restitution.fast, restitution.series]
+MODULES = [restitution, restitution.fast, restitution.series, restitution._restitution]  # the last: Material
 
 
 @pytest.mark.parametrize("module", MODULES, ids=lambda m: m.__name__)
@@ -22,6 +22,7 @@ def test_docstring_examples_run(module):
 
 def test_the_package_has_examples_to_run():
     assert doctest.testmod(restitution).attempted >= 25
+    assert doctest.testmod(restitution._restitution).attempted >= 4  # Material's
 
 
 @pytest.mark.parametrize("name", ["eps", "solve", "calibrate", "fit_data", "zeta_of", "build_info"])
