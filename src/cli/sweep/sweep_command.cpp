@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "cli/common/commands.hpp"
 #include "cli/common/material_options.hpp"
@@ -59,7 +60,7 @@ int run_sweep_command(const SweepOptions& o) {
     throw InvalidInput(fmt::format("--threads must lie in [1, {}] (default: all cores), got {}",
                                    kMaxSweepThreads, *o.threads));
   }
-  const SweepGrid grid = sweep_grid(o);
+  SweepGrid grid = sweep_grid(o);
   const SolveOptions solve = solve_options(o.solver);
   SweepControl control;
   control.threads = o.threads ? static_cast<unsigned>(*o.threads) : 0U;
@@ -80,7 +81,7 @@ int run_sweep_command(const SweepOptions& o) {
   file.path = target.path;
   file.resume = o.resume;
   file.settings = settings_line(o, grid);
-  file.columns = grid.velocity;
+  file.columns = std::move(grid.velocity);  // after settings_line, which reads its beta
   file.given = o.out;
   file.option = "--out";
   file.resume_option = "--resume";
