@@ -201,3 +201,19 @@ def fit_data(
     tolerance: float = ...,
     method: Method = ...,
 ) -> Dict[str, Any]: ...
+
+from os import PathLike
+from typing import Callable
+
+def sweep_to_file(
+    zetas: ArrayLike,
+    path: Union[str, PathLike[str]],
+    *,
+    resume: bool = ...,
+    end: Union[End, Literal["both"]] = ...,
+    tolerance: float = ...,
+    method: Method = ...,
+    threads: Optional[int] = ...,
+    law: Law = ...,
+    stop: Optional[Callable[[], bool]] = ...,
+) -> Dict[str, Any]: ...  # "status", "path", "partial_path", "points", "finished", "resumed", "damaged_lines", ...
