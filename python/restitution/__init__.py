@@ -464,3 +464,31 @@ def build_info():
     (True, ['description', 'optimized', 'version'])
     """
     return _core.build_info()
+import os as _os  # noqa: E402 (sweep_to_file's section, kept together)
+
+
+def sweep_to_file(zetas, path, *, resume=False, end="both", tolerance=_TOLERANCE, method="auto", threads=None,
+                  law="viscoelastic-hertz", stop=None):
+    """Solve at every zeta of a 1-d array and write the table into the CSV file `path`, as `restitution sweep`
+    writes it (the same bytes for the same grid and options), keeping every finished row in path.partial.
+
+    Ctrl-C (KeyboardInterrupt) or stop (a callable polled every ~20 ms, stopping the sweep when it returns
+    True) ends the sweep after the points in progress and keeps path.partial; the same call with resume=True
+    continues from it and writes the same bytes as an uninterrupted sweep. end "naive", "delayed-recovery" or
+    "both"; law, tolerance, method and threads as for eps(). Returns a dict: "status" ("complete",
+    "already_complete": resume=True found path complete and computed nothing, or "stopped"), "path",
+    "partial_path", "points", "finished", "resumed" (rows kept from path.partial), "damaged_lines",
+    "first_damaged_line" (1-based, 0: none) and "failed" (points whose rows say why they failed). Raises
+    ValueError for a bad zeta or option, for path.partial without resume=True, and for a path.partial written
+    by another sweep (naming the file); OSError when a file cannot be written.
+    """
+    z = _real_array("zetas", zetas)
+    if z.ndim != 1:
+        raise ValueError(f"zetas must be a 1-d array, got {z.ndim} dimensions")
+    if stop is not None and not callable(stop):
+        raise TypeError(f"stop must be callable or None, got {type(stop).__name__}")
+    return _core.sweep_to_file(z.tolist(), _os.fspath(path), bool(resume), _text("end", end), _tolerance(tolerance),
+                               _text("method", method), _threads(threads), _law(law), stop)
+
+
+__all__.append("sweep_to_file")

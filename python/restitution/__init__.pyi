@@ -272,3 +272,18 @@ class BuildInfo(TypedDict):
     sundials: SundialsInfo
 
 def build_info() -> BuildInfo: ...
+from os import PathLike
+from typing import Callable
+
+def sweep_to_file(
+    zetas: ArrayLike,
+    path: Union[str, PathLike[str]],
+    *,
+    resume: bool = ...,
+    end: Union[End, Literal["both"]] = ...,
+    tolerance: float = ...,
+    method: Method = ...,
+    threads: Optional[int] = ...,
+    law: Law = ...,
+    stop: Optional[Callable[[], bool]] = ...,
+) -> Dict[str, Any]: ...  # "status", "path", "partial_path", "points", "finished", "resumed", "damaged_lines", ...
