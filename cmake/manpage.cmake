@@ -16,7 +16,7 @@ add_custom_command(
   OUTPUT ${restitution_man_page}
   COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:restitution> -DOUTPUT=${restitution_man_commands}
           -P ${PROJECT_SOURCE_DIR}/cmake/manpage_commands.cmake
-  COMMAND ${HELP2MAN} --no-info --no-discard-stderr --section 1 --source "restitution ${PROJECT_VERSION}"
+  COMMAND ${HELP2MAN} --no-info --no-discard-stderr --section 1 --source "restitution ${RESTITUTION_VERSION}"
           --name "coefficient of restitution of colliding viscoelastic spheres"
           --include ${restitution_man_commands} --output ${restitution_man_page} $<TARGET_FILE:restitution>
   DEPENDS restitution ${PROJECT_SOURCE_DIR}/cmake/manpage_commands.cmake

@@ -5,7 +5,7 @@
 # errors: the public headers need no GNU extension), runs it and compares its ε at both ends with
 # data/reference_solutions.csv within the solver's accuracy contract |ε - ε_ref| <= tol · min(ε, 1 - ε).
 # The same app is then built without CMake, by `c++ app.cpp $(pkg-config --cflags --libs restitution)` alone,
-# and checked the same way. The installed program answers --version with the file VERSION, as does
+# and checked the same way. The installed program answers --version with the version cmake/version.cmake computes, as does
 # pkg-config --modversion, its man page (help2man) renders with `man -l`, and it runs the default scene from the
 # installed share/restitution.
 # Usage: install_consumer.sh BUILD_DIR SOURCE_DIR
@@ -32,7 +32,7 @@ for f in restitutionConfig.cmake restitutionConfigVersion.cmake restitutionTarge
   test -f "$work/prefix/lib/cmake/restitution/$f" || { echo "missing lib/cmake/restitution/$f"; exit 1; }
 done
 
-version=$(tr -d '[:space:]' <"$source/VERSION")
+version=$(cmake -DROOT="$source" -P "$source/cmake/version.cmake" | head -1)  # docs/release.md
 program_version=$("$work/prefix/bin/restitution" --version | head -1)  # the next line names the SUNDIALS build
 if [ "$program_version" != "restitution $version" ]; then
   echo "installed bin/restitution --version: $program_version, VERSION: $version"
