@@ -5,7 +5,8 @@
 # errors: the public headers need no GNU extension), runs it and compares its ε at both ends with
 # data/reference_solutions.csv within the solver's accuracy contract |ε - ε_ref| <= tol · min(ε, 1 - ε).
 # The same app is then built without CMake, by `c++ app.cpp $(pkg-config --cflags --libs restitution)` alone,
-# and checked the same way. The installed program answers --version with the version cmake/version.cmake computes, as does
+# and checked the same way, and once more against the shared library (-lrestitution: its SONAME, its exports).
+# The installed program answers --version with the version cmake/version.cmake computes, as does
 # pkg-config --modversion, its man page (help2man) renders with `man -l`, and it runs the default scene from the
 # installed share/restitution.
 # Usage: install_consumer.sh BUILD_DIR SOURCE_DIR
@@ -32,7 +33,7 @@ for f in restitutionConfig.cmake restitutionConfigVersion.cmake restitutionTarge
   test -f "$work/prefix/lib/cmake/restitution/$f" || { echo "missing lib/cmake/restitution/$f"; exit 1; }
 done
 
-version=$(cmake -DROOT="$source" -P "$source/cmake/version.cmake" | head -1)  # docs/release.md
+version=$(cmake -DROOT="$source" -P "$source/cmake/version.cmake" | sed -n 1p)  # docs/release.md
 program_version=$("$work/prefix/bin/restitution" --version | head -1)  # the next line names the SUNDIALS build
 if [ "$program_version" != "restitution $version" ]; then
   echo "installed bin/restitution --version: $program_version, VERSION: $version"
@@ -46,11 +47,26 @@ fi
 # No flag of our own: restitution.pc brings -std=c++20 (g++ 12 defaults to C++17) and every library.
 # shellcheck disable=SC2046  # pkg-config's output is a list of words
 c++ -o "$work/app_pkgconfig" "$source/examples/cpp/app.cpp" $(pkg-config --cflags --libs restitution)
+# The shared library beside the static one: SONAME librestitution.so.X.Y of the version, restitution's API its
+# only exports (no CVODE, N_Vector, SUNDIALS or fmt symbol), and a consumer linked with -lrestitution loads it.
+soname=$(readelf -d "$work/prefix/lib/librestitution.so" | sed -n 's/.*Library soname: \[\(.*\)\]/\1/p')
+expected_soname="librestitution.so.$(cut -d. -f1,2 <<<"$version")"
+[ "$soname" = "$expected_soname" ] || { echo "SONAME of lib/librestitution.so: '$soname', expected $expected_soname"; exit 1; }
+test -f "$work/prefix/lib/$soname" || { echo "lib/$soname (the SONAME's link) is not installed"; exit 1; }
+foreign=$(nm -D --defined-only -C "$work/prefix/lib/librestitution.so" | grep -vE ' (typeinfo( name)? for |vtable for |VTT for |guard variable for )?restitution::' || true)
+[ -z "$foreign" ] || { echo "lib/librestitution.so exports more than restitution's API:"; head <<<"$foreign"; exit 1; }
+c++ -std=c++20 -o "$work/app_shared" "$source/examples/cpp/app.cpp" -I"$work/prefix/include" -L"$work/prefix/lib" \
+  -lrestitution -Wl,-rpath,"$work/prefix/lib"
+readelf -d "$work/app_shared" | grep -qF "[$soname]" || { echo "app_shared does not load $soname:"; readelf -d "$work/app_shared" | grep NEEDED; exit 1; }
 man_page="$work/prefix/share/man/man1/restitution.1"
 test -f "$man_page" || { echo "missing share/man/man1/restitution.1"; exit 1; }
 rendered=$(LC_ALL=C MANWIDTH=80 man -l "$man_page" 2>&1 | tr -s " ")  # ASCII hyphens, unjustified
-for expected in "restitution - coefficient of restitution" "restitution eps" "--tolerance" "restitution $version"; do
+for expected in "restitution - coefficient of restitution" "restitution eps" "--tolerance" "restitution $version" "share/doc/restitution"; do
   grep -qF -- "$expected" <<<"$rendered" || { echo "man -l $man_page lacks '$expected':"; head -20 <<<"$rendered"; exit 1; }
+done
+
+for doc in cli.md library.md release.md README.md LICENSE CHANGELOG.md; do  # the docs SEE ALSO points to
+  test -f "$work/prefix/share/doc/restitution/$doc" || { echo "missing share/doc/restitution/$doc"; exit 1; }
 done
 
 # The installed program needs no checkout: a bare `run` (outside any checkout) takes the installed default scene
@@ -97,7 +113,7 @@ fi
 
 # Default tolerance of SolveOptions: 1e-10. ζ spans the weakly and the strongly damped regime.
 status=0
-for app in "$work/build/app" "$work/app_pkgconfig"; do
+for app in "$work/build/app" "$work/app_pkgconfig" "$work/app_shared"; do
 for zeta in 0.001 1 100 10000; do
   output=$("$app" "$zeta")
   awk -F, -v zeta="$zeta" -v out="$output" -v tol=1e-10 '

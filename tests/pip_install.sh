@@ -23,7 +23,7 @@ echo "pip_install: built $(basename "$wheel") in $((SECONDS - start)) s"
 /usr/bin/python3 -m venv --system-site-packages "$work/venv"
 "$work/venv/bin/pip" install --no-index --no-deps --quiet "$wheel"
 
-version=$(cmake -DROOT="$source" -P "$source/cmake/version.cmake" | head -1)  # docs/release.md
+version=$(cmake -DROOT="$source" -P "$source/cmake/version.cmake" | sed -n 1p)  # docs/release.md
 cd "$work"
 "$work/venv/bin/python" - "$work/venv" "$version" <<'PY'
 import pathlib, sys
