@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "reference/reference_solution.hpp"
 #include "restitution/restitution.hpp"
 
 namespace {
@@ -130,6 +131,15 @@ TEST(VersionInOutputs, SceneSummaryAndReportNameTheCode) {
   EXPECT_NE(report.find(std::string("SUNDIALS ") + restitution::sundials_build_description()),
             std::string::npos)
       << report;
+}
+
+TEST(VersionInOutputs, ReferenceCsvHeaderNamesTheCode) {
+  const std::vector<std::string> lines = lines_of(restitution::reference_csv({}));
+  ASSERT_GE(lines.size(), 3U);
+  EXPECT_EQ(lines[1], "# Computed by restitution " + version_flag_version() + " (commit " +
+                          restitution::library_version().commit + ").");
+  // The reader skips comment lines: the header does not change what is read.
+  EXPECT_EQ(lines[2].rfind("zeta,", 0), 0U) << lines[2];
 }
 
 }  // namespace
