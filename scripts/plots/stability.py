@@ -48,10 +48,10 @@ def main():
             ok = [(zz, max(d, floor)) for zz, d in pairs if d is not None and d > 0]
             failed = [zz for zz, d in pairs if d is None]
             if ok:
-                error.loglog(*zip(*ok), marker=marker, ls="--", label=f"{end}: {engine} against production")
+                error.loglog(*zip(*ok), marker=marker, ls="--", label=f"{end}: {style.ENGINES.get(engine, engine)} against production")
             if failed:
                 error.loglog(failed, [tolerance] * len(failed), marker="x", ls="none", ms=10,
-                             label=f"{end}: {engine} too much work (stiff)")
+                             label=f"{end}: {style.ENGINES.get(engine, engine)} too much work (stiff)")
     error.axhline(tolerance, color="k", lw=0.8, label="tolerance $T$")
     cost.set_ylabel("work per solve (count)")
     style.set_title(cost, f"stability report (tolerance $T$ = {tolerance:g}, method auto)")

@@ -7,7 +7,6 @@ Text stays text in PDF (TrueType, no Type 3 fonts) and SVG (editable, searchable
 import argparse
 import os
 import re
-import textwrap
 
 import matplotlib
 
@@ -68,6 +67,10 @@ AXES = {
     "requested_eps": r"requested $\varepsilon$",
     "tau": r"scaled time $\tau$",
 }
+
+# The integration engines by their names on the command line.
+ENGINES = {"taylor": "Taylor series", "adams": "CVODE Adams", "bdf": "CVODE BDF", "adams-plain": "CVODE Adams, plain",
+           "bdf-plain": "CVODE BDF, plain", "auto": "automatic choice"}
 
 DEM_CODES = {"lammps": "LAMMPS", "liggghts": "LIGGGHTS", "yade": "YADE"}
 
@@ -143,24 +146,34 @@ def axis_label(column):
     return AXES.get(column, column.replace("_", " "))
 
 
-def _wrapped(text, width_inches, fontsize):
-    # A character of the default sans font is about 0.55 em wide; mathtext is shorter than its source.
-    chars = max(20, int(width_inches * 72 / (0.55 * fontsize)))
-    return "\n".join(textwrap.wrap(text, chars)) if len(text) > chars else text
+def _fitted(text_artist, width_pixels):
+    """Breaks a title's text into lines no wider than width_pixels, measured as drawn; a $...$ formula is never
+    split."""
+    words = re.findall(r"(?:\$[^$]*\$|[^\s$])+", text_artist.get_text())
+    renderer = text_artist.figure.canvas.get_renderer()
+    lines = []
+    for word in words:
+        candidate = (lines[-1] + " " + word) if lines else word
+        text_artist.set_text(candidate)
+        if lines and text_artist.get_window_extent(renderer).width > width_pixels:
+            lines.append(word)
+        elif lines:
+            lines[-1] = candidate
+        else:
+            lines.append(word)
+    text_artist.set_text("\n".join(lines))
 
 
 def set_title(ax, text):
-    """A title wrapped to the width of its axes, so that it never runs off the figure."""
-    if not text:
-        return
-    width = ax.get_position().width * ax.figure.get_figwidth()
-    ax.set_title(_wrapped(text, width, matplotlib.rcParams["axes.titlesize"]))
+    """A title broken into lines that fit the width of its axes, so that it never runs off the figure."""
+    if text:
+        _fitted(ax.set_title(text), ax.get_position().width * ax.figure.bbox.width)
 
 
 def suptitle(fig, text):
-    """A figure title wrapped to the figure's width."""
+    """A figure title broken into lines that fit the figure's width."""
     if text:
-        fig.suptitle(_wrapped(text, fig.get_figwidth() * 0.95, matplotlib.rcParams["axes.titlesize"] + 1))
+        _fitted(fig.suptitle(text, fontsize=matplotlib.rcParams["axes.titlesize"] + 1), 0.95 * fig.bbox.width)
 
 
 def parse_formats(text):

@@ -8,8 +8,6 @@ import csv
 import style  # first: it selects the Agg backend and sets the style
 import matplotlib.pyplot as plt  # noqa: E402
 
-# The engines by their names in the summary (`--engines`) and what each is.
-ENGINES = {"taylor": "Taylor series", "adams": "CVODE Adams", "bdf": "CVODE BDF", "auto": "automatic choice"}
 END_WORDS = {"naive": style.ENDS["naive"], "delayed-recovery": style.ENDS["delayed_recovery"]}
 
 
@@ -30,7 +28,7 @@ def main():
             pts.sort(key=lambda r: -float(r["tolerance"]))
             t = [float(r["mean_median_us"]) for r in pts]
             e = [max(float(r["max_error"]), 1e-17) for r in pts]
-            ax.loglog(t, e, "o-", label=ENGINES.get(engine, engine))
+            ax.loglog(t, e, "o-", label=style.ENGINES.get(engine, engine))
         style.set_title(ax, END_WORDS.get(end, end))
         ax.set_xlabel(r"mean run time per solve over the $\zeta$ set (µs)")
         ax.grid(True, which="both")
