@@ -32,7 +32,7 @@ void write_lammps(Deck& d, const Pair& p, double a, double /*vn*/, double mu) {
                          num(p.young_modulus_pa), num(eta), num(p.poisson_ratio), tangential,
                          d.end == CollisionEnd::delayed_recovery ? " limit_damping" : "")};
   d.prerequisites = {"units si", "atom_style sphere", "comm_modify vel yes"};
-  d.checked_on = "LAMMPS 20220106 (Debian's lammps 20220106.git7586adbb6a)";
+  d.checked_on = "LAMMPS 29 Sep 2021 - Update 2 (Debian 12's lammps 20220106.git7586adbb6a)";
   d.notes = {
       "needs units si (under other units the numbers model another material), atom_style sphere and "
       "comm_modify vel yes (without it LAMMPS stops: Pair granular requires ghost atoms store velocity)",
