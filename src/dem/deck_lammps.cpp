@@ -34,8 +34,8 @@ void write_lammps(Deck& d, const Pair& p, double a, double /*vn*/, double mu) {
   d.prerequisites = {"units si", "atom_style sphere", "comm_modify vel yes"};
   d.checked_on = "LAMMPS 29 Sep 2021 - Update 2 (Debian 12's lammps 20220106.git7586adbb6a)";
   d.notes = {
-      "needs units si (under other units the numbers model another material), atom_style sphere and "
-      "comm_modify vel yes (without it LAMMPS stops: Pair granular requires ghost atoms store velocity)",
+      "the prerequisites matter: under other units than si the numbers model another material, and without "
+      "comm_modify vel yes LAMMPS stops (Pair granular requires ghost atoms store velocity)",
       mu > 0.0 ? "tangential mindlin NULL 1 mu: k_t = 8 G* a from Y and nu (Mindlin), x_gamma_t = 1 "
                  "(tangential damping = normal damping)"
                : "tangential linear_nohistory 0 0: frictionless (x_gamma_t = 0, mu_s = 0)",

@@ -38,14 +38,12 @@ void write_liggghts(Deck& d, const Pair& p, double a, double /*vn*/, double mu) 
              "pair_coeff * *"};
   d.prerequisites = {"units si", "atom_style granular", "newton off", "communicate single vel yes"};
   d.checked_on = "LIGGGHTS 3.8.0 (Debian's liggghts 3.8.0+repack1)";
-  d.notes = {
-      "needs units si (under other units the numbers model another material), atom_style granular, "
-      "newton off and communicate single vel yes",
-      mu > 0.0 ? "tangential history: kt = 8 G* (Mindlin), gammat = gamman"
-               : "kt = gammat = coefficientFriction = 0: frictionless",
-      friction_note(mu), clamp_note(d.code, d.end),
-      "gamman contains 1/m_eff: exact only for the pair it was made for (" + pair_note(p) +
-          "); other pairs get A' = A m_eff' / m_eff"};
+  d.notes = {"the prerequisites matter: under other units than si the numbers model another material",
+             mu > 0.0 ? "tangential history: kt = 8 G* (Mindlin), gammat = gamman"
+                      : "kt = gammat = coefficientFriction = 0: frictionless",
+             friction_note(mu), clamp_note(d.code, d.end),
+             "gamman contains 1/m_eff: exact only for the pair it was made for (" + pair_note(p) +
+                 "); other pairs get A' = A m_eff' / m_eff"};
 }
 
 Coefficients read_liggghts(const Deck& d, const Pair& other) {

@@ -79,6 +79,12 @@ double verlet_eps(double zeta, CollisionEnd end, double step, double phase) {
       fmt::format("the integrated collision at zeta = {} did not end in {} steps", zeta, steps));
 }
 
+double contact_duration_s(const Pair& pair, double dissipative_constant_s, CollisionEnd end,
+                          double velocity_m_s, double tolerance, CollisionSolver& solver) {
+  const Law law = law_at(pair, dissipative_constant_s, velocity_m_s);
+  return law_end(law.zeta, end, tolerance, solver).tau * law.natural_time_s;
+}
+
 IntegratorError integrator_error(const Pair& pair, double dissipative_constant_s, CollisionEnd end,
                                  double velocity_m_s, double time_step_s, double tolerance,
                                  CollisionSolver& solver) {

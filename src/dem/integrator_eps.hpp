@@ -31,6 +31,10 @@ struct IntegratorError {
   double worst_error = 0.0;         // the phase with the largest |ε_integrator - ε_law| (signed)
 };
 
+// The law's contact duration [s] of `pair` with A [s] at impact speed v [m/s], at `end` (the solver).
+double contact_duration_s(const Pair& pair, double dissipative_constant_s, CollisionEnd end,
+                          double velocity_m_s, double tolerance, CollisionSolver& solver);
+
 // The pair of `pair`'s material with dissipative constant A [s] at impact speed v [m/s] integrated at time
 // step dt [s]. Throws InvalidInput naming --timestep unless dt > 0 and at most a fifth of the contact
 // duration.
