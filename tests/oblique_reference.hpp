@@ -58,19 +58,18 @@ class Integrator {
       // elapsed, from 1e-9 of the step on (the local error stays ~(h/t)^5 t^{3/2}).
       const Real h = std::fmin(step, std::fmax(1e-9L * step, 0.05L * t));
       const Y next = rk4(y, h, stick_);
-      const Real end_before = force_factor(y), end_after = force_factor(next);
-      const Real sw_before = indicator(y), sw_after = indicator(next);
-      const bool ends = t > 0 && end_before > 0 && end_after <= 0;
-      const bool switches = sw_before > 0 && sw_after <= 0;
+      const bool ends = t > 0 && force_factor(y) > 0 && force_factor(next) <= 0;
+      const bool switches = indicator(y) > 0 && indicator(next) <= 0;
       if (!ends && !switches) {
         y = next;
         t += h;
         continue;
       }
       // The first crossing in the step, by bisection on the sub-step.
-      Real lo = 0, hi = h;
-      const auto crossed = [&](Real h) {
-        const Y z = rk4(y, h, stick_);
+      Real lo = 0;
+      Real hi = h;
+      const auto crossed = [&](Real sub) {
+        const Y z = rk4(y, sub, stick_);
         return (ends && force_factor(z) <= 0) || (switches && indicator(z) <= 0);
       };
       for (int k = 0; k < 90; ++k) {
@@ -98,18 +97,24 @@ class Integrator {
 
  private:
   using Y = std::array<Real, 6>;
-  Real slip(const Y& y) const { return y[3] + p_.radius1 * y[4] + (p_.wall ? 0 : p_.radius2 * y[5]); }
-  Real normal_force(const Y& y) const {
+  [[nodiscard]] Real slip(const Y& y) const {
+    return y[3] + p_.radius1 * y[4] + (p_.wall ? 0 : p_.radius2 * y[5]);
+  }
+  [[nodiscard]] Real normal_force(const Y& y) const {
     const Real r = std::sqrt(std::fmax(y[0], 0.0L));
     return r * (p_.kn * y[0] + p_.gamma_n * y[1]);
   }
-  Real force_factor(const Y& y) const { return p_.kn * y[0] + p_.gamma_n * y[1]; }
-  Real cap(const Y& y) const { return p_.mu * std::fabs(normal_force(y)); }
-  Real viscous(const Y& y) const { return p_.gamma_t * p_.gamma_n * std::sqrt(std::fmax(y[0], 0.0L)); }
-  Real trial(const Y& y) const { return -p_.kt * y[2] - viscous(y) * slip(y); }
-  Real capped_displacement(const Y& y) const { return -(sign_ * cap(y) + viscous(y) * slip(y)) / p_.kt; }
+  [[nodiscard]] Real force_factor(const Y& y) const { return p_.kn * y[0] + p_.gamma_n * y[1]; }
+  [[nodiscard]] Real cap(const Y& y) const { return p_.mu * std::fabs(normal_force(y)); }
+  [[nodiscard]] Real viscous(const Y& y) const {
+    return p_.gamma_t * p_.gamma_n * std::sqrt(std::fmax(y[0], 0.0L));
+  }
+  [[nodiscard]] Real trial(const Y& y) const { return -p_.kt * y[2] - viscous(y) * slip(y); }
+  [[nodiscard]] Real capped_displacement(const Y& y) const {
+    return -(sign_ * cap(y) + viscous(y) * slip(y)) / p_.kt;
+  }
   // > 0 while the mode lasts.
-  Real indicator(const Y& y) const {
+  [[nodiscard]] Real indicator(const Y& y) const {
     if (stick_) return cap(y) - std::fabs(trial(y));
     Y z = y;
     z[2] = capped_displacement(y);
@@ -117,8 +122,8 @@ class Integrator {
     const auto beyond = [&](const Y& w) { return sign_ * trial(w) - cap(w); };
     return (beyond(rk4(z, h, true)) - beyond(rk4(z, -h, true))) / (2 * h);
   }
-  Real step_scale() const { return std::pow(meff_ * meff_ / (p_.kn * p_.kn * p_.vn), 0.2L); }
-  Y rates(const Y& y, bool stick) const {
+  [[nodiscard]] Real step_scale() const { return std::pow(meff_ * meff_ / (p_.kn * p_.kn * p_.vn), 0.2L); }
+  [[nodiscard]] Y rates(const Y& y, bool stick) const {
     const Real fn = normal_force(y);
     const Real ft = stick ? trial(y) : sign_ * cap(y);
     Y d{};
@@ -130,7 +135,7 @@ class Integrator {
     d[5] = p_.wall ? 0 : p_.radius2 * ft / p_.inertia2;
     return d;
   }
-  Y rk4(const Y& y, Real h, bool stick) const {
+  [[nodiscard]] Y rk4(const Y& y, Real h, bool stick) const {
     const auto add = [](const Y& a, const Y& b, Real c) {
       Y r;
       for (std::size_t i = 0; i < r.size(); ++i) r[i] = a[i] + c * b[i];

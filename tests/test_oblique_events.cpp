@@ -69,7 +69,7 @@ TEST_P(ObliqueEvents, SwitchTimesAndOutputsMatchTheReference) {
   oblique_reference::Integrator reference(reference_problem(g, v));
   const oblique_reference::Outcome fine = reference.run(r.contact_time_s / 2e4);
   const oblique_reference::Outcome coarse = reference.run(r.contact_time_s / 1e4);
-  const double tc = static_cast<double>(fine.contact_time);
+  const auto tc = static_cast<double>(fine.contact_time);
   // The reference is converged far below what is checked.
   ASSERT_EQ(fine.switches.size(), coarse.switches.size());
   for (std::size_t i = 0; i < fine.switches.size(); ++i) {
@@ -87,7 +87,7 @@ TEST_P(ObliqueEvents, SwitchTimesAndOutputsMatchTheReference) {
   }
   EXPECT_NEAR(r.contact_time_s, tc, 1e-9 * tc);
   EXPECT_NEAR(r.normal_restitution, static_cast<double>(fine.eps), 1e-9);
-  const double et = static_cast<double>(-fine.slip_final / fine.slip_initial);
+  const auto et = static_cast<double>(-fine.slip_final / fine.slip_initial);
   EXPECT_NEAR(r.tangential_restitution, et, 1e-8 * std::abs(et));
 }
 
