@@ -52,28 +52,44 @@ struct CallbackData {
   CollisionEnd end = CollisionEnd::delayed_recovery;
 };
 
-State read(N_Vector y) {
+// CVODE integrates the Sundman form of the engines (src/cvode/cvode_integrator.hpp): independent variable σ
+// with dτ = u^{q-1} dσ, u = x^{1/q} (ContactLaw::smoothing_root), state (u, x', ξ, u_t, R1ω1, R2ω2, τ). For
+// viscoelastic Hertz every right-hand side is then a polynomial in the state (w(x) = u, a = sqrt(R* δ) ∝ u),
+// where in τ the start and the naive end are sqrt singularities that cost CVODE its order.
+constexpr int kCvodeSize = detail::kStateSize + 1;
+constexpr int kTau = detail::kStateSize;
+
+// The state in τ form (index 0 the overlap x) from the integrated one (index 0 u).
+State read(const ContactLaw& law, N_Vector y) {
   State s{};
   const double* d = N_VGetArrayPointer(y);
   std::copy(d, d + detail::kStateSize, s.begin());
+  s[detail::kOverlap] = law.compression_of(d[0]);
   return s;
 }
 
 int right_hand_side(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_data) noexcept {
   const auto& data = *static_cast<CallbackData*>(user_data);
+  const ContactLaw& law = data.model->law;
   State rates{};
-  data.model->rates(read(y), data.mode, data.sign, rates);
-  std::copy(rates.begin(), rates.end(), N_VGetArrayPointer(ydot));
+  data.model->rates(read(law, y), data.mode, data.sign, rates);
+  const double u = N_VGetArrayPointer(y)[0];
+  const double dtau = law.dcompression_du(u) / law.smoothing_root();  // u^{q-1}
+  double* d = N_VGetArrayPointer(ydot);
+  d[0] = rates[detail::kOverlap] / law.smoothing_root();  // du/dσ = x'/q
+  for (int i = 1; i < detail::kStateSize; ++i) d[i] = rates[static_cast<std::size_t>(i)] * dtau;
+  d[kTau] = dtau;
   return 0;
 }
 
 // g[0]: the end of the contact (the normal law's own end functions); g[1]: the switch out of the mode.
 int root_functions(sunrealtype /*t*/, N_Vector y, sunrealtype* g, void* user_data) noexcept {
   const auto& data = *static_cast<CallbackData*>(user_data);
-  const State s = read(y);
-  const double x = s[detail::kOverlap];
-  g[0] = data.end == CollisionEnd::naive ? x
-                                         : law_rhs::force_factor(data.model->law, x, s[detail::kOverlapRate]);
+  const State s = read(data.model->law, y);
+  // u changes sign at the naive end where x = u^q may not.
+  g[0] = data.end == CollisionEnd::naive
+             ? N_VGetArrayPointer(y)[0]
+             : law_rhs::force_factor(data.model->law, s[detail::kOverlap], s[detail::kOverlapRate]);
   // Without friction the force is 0 in every mode (LAMMPS caps it at 0): nothing to switch.
   g[1] = data.model->friction == 0.0 ? 1.0 : data.model->switch_function(s, data.mode, data.sign);
   return 0;
@@ -235,10 +251,10 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
   const double tangential_scale = std::max({1.0, std::abs(slip0), std::abs(y[detail::kTangential])});
   const double rtol = options.relative_tolerance;
   sundials::Context context;
-  sundials::Vector state = sundials::make_small_vector(detail::kStateSize, context);
-  sundials::Vector atol = sundials::make_small_vector(detail::kStateSize, context);
+  sundials::Vector state = sundials::make_small_vector(kCvodeSize, context);
+  sundials::Vector atol = sundials::make_small_vector(kCvodeSize, context);
   double* a = N_VGetArrayPointer(atol.get());
-  a[detail::kOverlap] = a[detail::kOverlapRate] = 1e-3 * rtol;
+  a[detail::kOverlap] = a[detail::kOverlapRate] = a[kTau] = 1e-3 * rtol;
   for (const int i : {detail::kDisplacement, detail::kTangential, detail::kSpinFirst, detail::kSpinSecond}) {
     a[i] = 1e-3 * rtol * tangential_scale;
   }
@@ -248,6 +264,8 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
 
   ObliqueResult result;
   result.switches.push_back({0.0, data.mode});
+  double* raw = N_VGetArrayPointer(state.get());
+  double sigma = 0.0;  // CVODE's independent variable
   double t = kStartTime;
   double mode_start = 0.0;
   bool initialized = false;
@@ -256,34 +274,37 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
       throw NumericalFailure(fmt::format("the contact crossed the stick/slip boundary more than {} times",
                                          options.max_switches));
     }
-    std::copy(y.begin(), y.end(), N_VGetArrayPointer(state.get()));
+    // The τ-form state back into CVODE's (only ξ changes at a switch; u stays as integrated).
+    std::copy(y.begin() + 1, y.end(), raw + 1);
     if (!initialized) {
-      sundials::check_flag(CVodeInit(mem, right_hand_side, t, state.get()), "CVodeInit");
+      raw[0] = model.law.smooth_variable(y[detail::kOverlap]);
+      raw[kTau] = t;
+      sundials::check_flag(CVodeInit(mem, right_hand_side, sigma, state.get()), "CVodeInit");
       sundials::check_flag(CVodeSetUserData(mem, &data), "CVodeSetUserData");
       sundials::check_flag(CVodeSetNonlinearSolver(mem, corrector.get()), "CVodeSetNonlinearSolver");
       sundials::check_flag(CVodeSVtolerances(mem, rtol, atol.get()), "CVodeSVtolerances");
       sundials::check_flag(CVodeSetMaxNumSteps(mem, kMaxSteps), "CVodeSetMaxNumSteps");
       sundials::check_flag(CVodeSetStopTime(mem, kStopTime), "CVodeSetStopTime");
-      sundials::check_flag(CVodeSetInitStep(mem, kStartTime), "CVodeSetInitStep");
       sundials::check_flag(CVodeRootInit(mem, 2, root_functions), "CVodeRootInit");
       initialized = true;
     } else {
-      sundials::check_flag(CVodeReInit(mem, t, state.get()), "CVodeReInit");
+      sundials::check_flag(CVodeReInit(mem, sigma, state.get()), "CVodeReInit");
     }
     // The end is a downward crossing; a stick ends where its function falls through 0, a slip of a history
     // model where h rises through 0, a slip of linear_nohistory where g|s| - C falls through 0.
     std::array<int, 2> directions{-1, data.mode == ContactMode::slip && model.has_history() ? 1 : -1};
     sundials::check_flag(CVodeSetRootDirection(mem, directions.data()), "CVodeSetRootDirection");
 
-    const int flag = CVode(mem, kStopTime, state.get(), &t, CV_NORMAL);
+    const int flag = CVode(mem, kStopTime, state.get(), &sigma, CV_NORMAL);
+    t = raw[kTau];
     if (flag < 0) {
       throw NumericalFailure(fmt::format("CVODE failed at tau={} with flag {} ({})", t, flag,
                                          memory.last_error().empty() ? "no message" : memory.last_error()));
     }
     if (flag != CV_ROOT_RETURN) {
-      throw NumericalFailure(fmt::format("the contact did not end before tau={}", kStopTime));
+      throw NumericalFailure(fmt::format("the contact did not end before sigma={}", kStopTime));
     }
-    y = read(state.get());
+    y = read(model.law, state.get());
     std::array<int, 2> found{};
     sundials::check_flag(CVodeGetRootInfo(mem, found.data()), "CVodeGetRootInfo");
     if (found[0] == 0 && !model.leaving_is_consistent(y, data.mode, data.sign)) {
