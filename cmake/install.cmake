@@ -27,7 +27,7 @@ install(FILES ${PROJECT_BINARY_DIR}/restitutionConfig.cmake ${PROJECT_BINARY_DIR
 
 # The program, its man page and the pkg-config file.
 install(TARGETS restitution RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# What the program reads beside itself (src/cli/resource_root.hpp): plot scripts, the default scene (with the
+# What the program reads beside itself (src/cli/common/resource_root.hpp): plot scripts, the default scene (with the
 # other shipped scenes) and the reference solutions, so that the installed program needs no checkout.
 set(restitution_share_dir ${CMAKE_INSTALL_DATADIR}/restitution)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/scripts/plots DESTINATION ${restitution_share_dir}/scripts

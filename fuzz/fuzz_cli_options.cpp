@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/commands.hpp"
-#include "cli/parse_errors.hpp"
+#include "cli/common/commands.hpp"
+#include "cli/common/parse_errors.hpp"
 
 namespace {
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: the fit JSON that `calibrate --from-fit` and `dem --from-fit` read
-// (cli/from_fit_file.hpp). Any text must give a carry-over that keeps the invariants the reader promises, or
-// InvalidInput naming the file; what the carry-over then gives at a few speeds must keep them too. Anything
-// else is a finding.
+// (cli/dem/from_fit_file.hpp). Any text must give a carry-over that keeps the invariants the reader promises,
+// or InvalidInput naming the file; what the carry-over then gives at a few speeds must keep them too.
+// Anything else is a finding.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "cli/from_fit.hpp"
+#include "cli/dem/from_fit.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
 

@@ -13,9 +13,9 @@
 #include <string_view>
 #include <vector>
 
-#include "cli/output_files.hpp"
-#include "cli/sweep_partial.hpp"
-#include "cli/sweep_table.hpp"
+#include "cli/common/output_files.hpp"
+#include "cli/sweep/sweep_partial.hpp"
+#include "cli/sweep/sweep_table.hpp"
 #include "restitution/errors.hpp"
 
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/scene_tables.hpp"
+#include "cli/scene/scene_tables.hpp"
 #include "cli_runner.hpp"
 #include "restitution/units.hpp"
 #include "scene/scene.hpp"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/json_writer.hpp"
+#include "cli/common/json_writer.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/output_files.hpp"
+#include "cli/common/output_files.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 
 #include <fstream>
 
-#include "cli/io_error.hpp"
+#include "cli/common/io_error.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {

@@ -17,7 +17,7 @@
 #include <thread>
 #include <vector>
 
-#include "cli/output_lock.hpp"
+#include "cli/common/output_lock.hpp"
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/progress.hpp"
-#include "cli/work_precision_files.hpp"
+#include "cli/common/progress.hpp"
+#include "cli/solve/work_precision_files.hpp"
 #include "cli_runner.hpp"
 #include "reference/reference_solution.hpp"
 #include "reference/work_precision.hpp"

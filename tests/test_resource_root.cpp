@@ -10,7 +10,7 @@
 #include <iterator>
 #include <string>
 
-#include "cli/resource_root.hpp"
+#include "cli/common/resource_root.hpp"
 
 namespace {
 

@@ -16,7 +16,7 @@
 #include <set>
 #include <thread>
 
-#include "cli/sweep_table.hpp"
+#include "cli/sweep/sweep_table.hpp"
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/sweep.hpp"

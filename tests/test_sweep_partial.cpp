@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/line_reader.hpp"
-#include "cli/sweep_partial.hpp"
-#include "cli/sweep_table.hpp"
+#include "cli/common/line_reader.hpp"
+#include "cli/sweep/sweep_partial.hpp"
+#include "cli/sweep/sweep_table.hpp"
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/sweep.hpp"

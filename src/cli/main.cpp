@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <string>
 
-#include "cli/commands.hpp"
-#include "cli/io_error.hpp"
-#include "cli/parse_errors.hpp"
-#include "cli/stop_signals.hpp"
+#include "cli/common/commands.hpp"
+#include "cli/common/io_error.hpp"
+#include "cli/common/parse_errors.hpp"
+#include "cli/common/stop_signals.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/restitution.hpp"
 

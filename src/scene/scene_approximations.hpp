@@ -2,7 +2,7 @@
 #pragma once
 // The approximations a scene can set beside the numerics: their names in scene files, their table columns
 // and the end of the collision each describes (evaluated with the published coefficients). What each is and
-// where it comes from is the report's wording (src/cli/scene_text.cpp).
+// where it comes from is the report's wording (src/cli/scene/scene_text.cpp).
 #include <array>
 
 #include "restitution/collision_solver.hpp"

@@ -1,0 +1,238 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "cli/common/output_files.hpp"
+
+#include <fcntl.h>
+#include <fmt/core.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <system_error>
+#include <thread>
+
+#include "cli/common/io_error.hpp"
+#include "cli/common/resource_root.hpp"
+#include "cli/common/stop_signals.hpp"
+#include "restitution/errors.hpp"
+
+namespace restitution::cli {
+namespace fs = std::filesystem;
+
+namespace {
+
+// The python interpreter with Debian's matplotlib; RESTITUTION_PYTHON overrides it (tests use this to
+// simulate a machine without matplotlib).
+std::string python_interpreter() {
+  const char* chosen = std::getenv("RESTITUTION_PYTHON");
+  return chosen != nullptr ? chosen : "/usr/bin/python3";
+}
+
+fs::path scripts_folder() {
+  const char* chosen = std::getenv("RESTITUTION_SCRIPTS_DIR");
+  return chosen != nullptr ? fs::path(chosen) : resource_root() / "scripts";
+}
+
+// Runs the program (no shell: nothing to quote) with stdout and stderr into /dev/null and waits for it.
+// The child never outlives this process: the kernel sends it SIGKILL when this process dies, SIGKILL
+// included (PR_SET_PDEATHSIG), and it gets SIGTERM when this process is asked to stop (SIGINT or SIGTERM to
+// this process alone; Ctrl-C reaches the whole process group anyway). Returns its wait status, -1 when it
+// could not be started.
+int run_quietly(const std::vector<std::string>& command) {
+  std::vector<char*> argv;
+  for (const std::string& a : command) argv.push_back(const_cast<char*>(a.c_str()));  // NOLINT: POSIX API
+  argv.push_back(nullptr);
+  const pid_t parent = getpid();
+  const pid_t child = fork();
+  if (child < 0) return -1;
+  if (child == 0) {
+    // Only async-signal-safe calls from here to exec: other threads of this process may hold locks.
+    // getppid() closes the race of a parent that died before prctl: no signal would ever come.
+    if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent) _exit(127);
+    const int null = open("/dev/null", O_WRONLY);
+    if (null < 0 || dup2(null, STDOUT_FILENO) < 0 || dup2(null, STDERR_FILENO) < 0) _exit(127);
+    execvp(argv[0], argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  for (bool stopping = false;;) {
+    const pid_t done = waitpid(child, &status, stopping ? 0 : WNOHANG);
+    if (done == child) return status;
+    if (done < 0 && errno != EINTR) return -1;
+    if (!stopping && stop_signal_received() != 0) {
+      kill(child, SIGTERM);
+      stopping = true;
+    } else if (!stopping) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));  // the signal flag is polled
+    }
+  }
+}
+
+// A child killed by SIGINT or SIGTERM was stopped by the user (Ctrl-C reaches the whole process group), as
+// was this process when its own handler saw the signal: stop the command rather than carry on without it.
+void stop_if_signalled(int status) {
+  if (status > 0 && WIFSIGNALED(status) && (WTERMSIG(status) == SIGINT || WTERMSIG(status) == SIGTERM)) {
+    throw Interrupted(WTERMSIG(status));
+  }
+  throw_if_interrupted();
+}
+
+}  // namespace
+
+void flush_standard_output() {
+  if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
+    throw IoError(fmt::format("cannot write to standard output: {}", std::strerror(errno)));
+  }
+}
+
+namespace {
+
+// `file` (empty for a folder output) names what is to be written there, so that the message says which output
+// failed; the system's reason comes last, in brackets, since for /proc it reads "No such file or directory".
+void check_writable_folder(const fs::path& folder, const fs::path& file) {
+  std::error_code error;
+  const fs::path start = folder.empty() ? fs::path(".") : folder;
+  fs::path existing = start;
+  while (!fs::exists(fs::symlink_status(existing, error)) && existing.has_parent_path() &&
+         existing.parent_path() != existing) {
+    existing = existing.parent_path();
+  }
+  if (!fs::exists(existing)) existing = ".";  // a relative path none of whose parts exists yet
+  const std::string what =
+      existing != start ? fmt::format("cannot create output folder '{}'", folder.string())
+      : file.empty()    ? fmt::format("cannot write into output folder '{}'", folder.string())
+                        : fmt::format("cannot write '{}'", file.string());
+  if (!fs::is_directory(existing)) {
+    throw IoError(fmt::format("{}: '{}' is not a folder", what, existing.string()));
+  }
+  // access(W_OK) says yes to root everywhere, /proc included: probe with a file that is removed at once.
+  std::string probe = (existing / ".restitution-probe-XXXXXX").string();
+  const int fd = mkstemp(probe.data());
+  if (fd < 0) {
+    throw IoError(
+        fmt::format("{}: the folder '{}' does not let this program create files in it (the system "
+                    "says: {})",
+                    what, existing.string(), std::strerror(errno)));
+  }
+  close(fd);
+  unlink(probe.c_str());
+}
+
+}  // namespace
+
+void check_output_folder(const fs::path& folder) {
+  check_writable_folder(folder, {});
+}
+
+void check_output_file(const fs::path& path) {
+  const OutputTarget target = output_target(path);
+  if (!target.in_place) check_writable_folder(target.path.parent_path(), path);
+}
+
+OutputTarget output_target(const fs::path& path) {
+  std::error_code error;
+  const fs::file_status followed = fs::status(path, error);
+  if (fs::is_directory(followed)) {
+    throw InvalidInput(fmt::format("'{}' is a folder, not a file", path.string()));
+  }
+  if (fs::exists(followed) && !fs::is_regular_file(followed)) return {path, true};  // device, FIFO, socket
+  fs::path at = path;
+  for (int hops = 0; fs::is_symlink(fs::symlink_status(at, error)); ++hops) {
+    if (hops == 40) throw InvalidInput(fmt::format("'{}': too many levels of symbolic links", path.string()));
+    const fs::path link = fs::read_symlink(at, error);
+    if (error) throw InvalidInput(fmt::format("cannot read the link '{}': {}", at.string(), error.message()));
+    at = link.is_absolute() ? link : at.parent_path() / link;
+    // /dev/stdout -> /proc/self/fd/1: an open stream, whatever file it happens to be.
+    if (at.lexically_normal().string().rfind("/proc/", 0) == 0) return {path, true};
+  }
+  return {at.lexically_normal(), false};
+}
+
+void write_file_atomically(const fs::path& path, const std::string& content) {
+  const OutputTarget target = output_target(path);
+  if (target.in_place) {
+    std::ofstream out(target.path, std::ios::binary);
+    out << content;
+    out.flush();
+    if (!out) throw IoError(fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno)));
+    return;
+  }
+  const fs::path temporary = target.path.string() + ".tmp";
+  std::error_code error;
+  if (target.path.has_parent_path()) fs::create_directories(target.path.parent_path(), error);
+  if (error) {
+    throw IoError(fmt::format("cannot create the folder of '{}': {}", target.path.string(), error.message()));
+  }
+  // Every failure removes the temporary: a half-written FILE.tmp must not outlive the command.
+  const auto fail = [&temporary](const std::string& what) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw IoError(what);
+  };
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (out) {
+      out << content;
+      out.flush();
+    }
+    const bool written = out.good();
+    const int reason = errno;  // before close and remove change it
+    out.close();
+    if (!written || !out) {
+      fail(fmt::format("cannot write '{}': {}", temporary.string(), std::strerror(written ? errno : reason)));
+    }
+  }
+  fs::rename(temporary, target.path, error);
+  if (error) fail(fmt::format("cannot write '{}': {}", target.path.string(), error.message()));
+}
+
+std::string number17(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  return fmt::format("{:.17g}", value);
+}
+
+std::string run_plot_script(const std::string& script, const fs::path& data, const fs::path& image,
+                            const std::vector<std::string>& arguments) {
+  const fs::path path = scripts_folder() / "plots" / (script + ".py");
+  if (!fs::exists(path)) return fmt::format("no plot: script {} not found", path.string());
+  const std::string python = python_interpreter();
+  const int probe = run_quietly({python, "-c", "import matplotlib"});
+  stop_if_signalled(probe);  // a probe killed by Ctrl-C says nothing about matplotlib
+  if (probe != 0) {
+    return fmt::format(
+        "no plot: {} cannot import matplotlib (install python3-matplotlib: bash scripts/setup)", python);
+  }
+  // matplotlib picks the format by the extension, so the temporary name keeps it: NAME.tmp.png.
+  const fs::path temporary =
+      image.parent_path() / (image.stem().string() + ".tmp" + image.extension().string());
+  std::vector<std::string> command = {python, path.string(), data.string(), temporary.string()};
+  command.insert(command.end(), arguments.begin(), arguments.end());
+  const int status = run_quietly(command);
+  std::error_code error;
+  if (status != 0 || stop_signal_received() != 0) {
+    fs::remove(temporary, error);  // the image of a failed or stopped script is no plot
+    stop_if_signalled(status);
+    return fmt::format("no plot: {} failed with status {}", path.filename().string(),
+                       WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+  }
+  fs::rename(temporary, image, error);
+  if (error == std::errc::no_such_file_or_directory) {
+    return fmt::format("no plot: {} wrote no image", path.filename().string());
+  }
+  if (error) {
+    fs::remove(temporary, error);
+    throw IoError(fmt::format("cannot write '{}': {}", image.string(), error.message()));
+  }
+  return {};
+}
+
+}  // namespace restitution::cli

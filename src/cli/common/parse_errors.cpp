@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "cli/common/parse_errors.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <string_view>
+
+namespace restitution::cli {
+namespace {
+
+// The option called `name` ("--zeta") in the app or any of its subcommands, or null.
+const CLI::Option* find_option(const CLI::App& app, const std::string& name) {
+  for (const CLI::Option* option : app.get_options()) {
+    if (option->check_name(name)) return option;
+  }
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (const CLI::Option* option = find_option(*sub, name)) return option;
+  }
+  return nullptr;
+}
+
+std::string expected_value(const CLI::Option* option) {
+  if (option == nullptr) return "a valid value";
+  // A checked option's type reads "UINT:UINT in [1 - 1024]": its first word is the type.
+  std::string type = option->get_type_name();
+  type = type.substr(0, type.find_first_of(": "));
+  if (type == "FLOAT") return "a number";
+  if (type == "UINT") return "a whole number >= 0";
+  if (type == "INT") return "a whole number";
+  return "a valid " + type;
+}
+
+std::string describe(const CLI::App& app, const std::string& message);
+
+// "" when the number at the start of `text` is one a double holds (or spells inf/nan: the range checks name
+// those), else why not.
+std::string number_problem(const std::string& text) {
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(text.c_str(), &end);
+  if (errno == ERANGE && std::isinf(value)) {
+    return fmt::format(
+        "'{}' is beyond the range of a double (magnitude at most 1.8e308): not a finite number", text);
+  }
+  // strtod reports ERANGE with 0 only for a nonzero number below the smallest subnormal (4.9e-324): run as
+  // 0 it would answer another question than the one typed.
+  if (errno == ERANGE && value == 0.0) {
+    return fmt::format(
+        "'{}' is nonzero but below the smallest double (4.9e-324): it would be read as 0; write 0 if 0 is "
+        "meant",
+        text);
+  }
+  return "";  // not a number at all is CLI11's conversion error, described below
+}
+
+// number_problem of `text`, or of each item of a comma-separated list (options typed "FLOAT[,...]").
+std::string number_text_problem(const std::string& text, bool list) {
+  if (text.find_first_not_of(" \t") == std::string::npos) return "the value is empty, expected a number";
+  if (!list) return number_problem(text);
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    std::string problem = number_problem(text.substr(start, comma - start));
+    if (!problem.empty()) return problem;
+    start = comma + 1;
+  }
+  return "";
+}
+
+}  // namespace
+
+void check_number_texts(CLI::App& app) {
+  for (CLI::Option* option : app.get_options()) {
+    const std::string type = option->get_type_name();
+    if (type.rfind("FLOAT", 0) == 0) {
+      const bool list = type.find(',') != std::string::npos;
+      // No description: --help is unchanged.
+      option->check(
+          CLI::Validator([list](std::string& text) { return number_text_problem(text, list); }, ""));
+    }
+  }
+  for (CLI::App* sub : app.get_subcommands({})) check_number_texts(*sub);
+}
+
+std::string one_line(std::string message) {
+  for (char& c : message) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  }
+  return message;
+}
+
+std::string describe_parse_error(const CLI::App& app, const CLI::ParseError& error) {
+  return one_line(describe(app, error.what()));
+}
+
+namespace {
+
+std::string describe(const CLI::App& app, const std::string& message) {
+  // CLI11: "Could not convert: --zeta = abc" for a value of the wrong type.
+  constexpr std::string_view kConversion = "Could not convert: ";
+  if (message.rfind(kConversion, 0) == 0) {
+    const std::size_t equals = message.find(" = ", kConversion.size());
+    if (equals != std::string::npos) {
+      const std::string name = message.substr(kConversion.size(), equals - kConversion.size());
+      const std::string value = message.substr(equals + 3);
+      return fmt::format("{} expects {}, got '{}'", name, expected_value(find_option(app, name)), value);
+    }
+  }
+  // CLI11: "--zeta: 1 required FLOAT missing" for an option given without its value.
+  const std::size_t colon = message.find(": ");
+  if (colon != std::string::npos && message.rfind("--", 0) == 0) {
+    const std::string name = message.substr(0, colon);
+    const std::string rest = message.substr(colon + 2);
+    if (rest.find("required") != std::string::npos && rest.find("missing") != std::string::npos) {
+      return fmt::format("{} needs a value: {}", name, expected_value(find_option(app, name)));
+    }
+    // CLI11: "--zeta: At Most 1 required but received 2" for an option repeated.
+    if (rest.rfind("At Most 1 required", 0) == 0) return fmt::format("{} is given more than once", name);
+  }
+  return message;
+}
+
+}  // namespace
+}  // namespace restitution::cli

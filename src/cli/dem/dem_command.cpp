@@ -1,0 +1,307 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// `restitution dem`: the input lines for a DEM code (LAMMPS, LIGGGHTS, MercuryDPM, YADE, Chrono) that give a
+// material the viscoelastic Hertz law, with the ε they give at a few impact speeds (docs/dem.md).
+#include <fmt/core.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "cli/common/build_json.hpp"
+#include "cli/common/commands.hpp"
+#include "cli/common/json_writer.hpp"
+#include "cli/common/material_options.hpp"
+#include "cli/dem/dem_deck.hpp"
+#include "cli/dem/dem_polydisperse_output.hpp"
+#include "cli/dem/dem_type_options.hpp"
+#include "cli/dem/from_fit.hpp"
+#include "damping_check/yade_version_lines.hpp"
+#include "dem/lines_check.hpp"
+#include "restitution/collision_solver.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/material.hpp"
+
+namespace restitution::cli {
+namespace {
+
+struct DemOptions {
+  std::string code;
+  DemTypeOptions types;      // --radius etc., lists for several atom types
+  MaterialOptions material;  // the one pair, from `types`
+  std::optional<double> eps, velocity, dissipative_constant;
+  std::string end = end_name(dem::LinesRequest{}.end);
+  std::vector<double> speeds;
+  double tolerance = SolveOptions{}.tolerance;
+  double friction = 0.0;  // Coulomb mu of the tangential model [1]
+  bool json = false;
+  std::string from_fit;  // fit-data --output FILE: A (and the end) from a fit, with its uncertainty
+  bool end_given = false;
+  std::string yade_version;  // --yade-version; empty: the yade on PATH
+  std::string yade_source;   // how the targeted YADE was chosen (set by target_yade)
+
+  std::optional<std::string> deck;  // --deck FILE: the check deck (cli/dem/dem_deck.hpp)
+  std::string deck_run;             // the command that runs it, once written
+};
+
+// The YADE the lines are for: --yade-version, else `yade --version` of the one on PATH, else the newest
+// lines (2024.02a, the exact law). The second member says which.
+dem::YadeVersion target_yade(DemOptions& o) {
+  if (!o.yade_version.empty()) {
+    o.yade_source = "--yade-version";
+    return dem::yade_version_from_name(o.yade_version);
+  }
+  dem::TargetedYade installed = dem::installed_yade_or_newest();
+  o.yade_source = std::move(installed.source);
+  return installed.version;
+}
+
+// --from-fit: the fit's Hertz β (at --end when given, else the lowest AIC) becomes A for this material.
+struct FromFit {
+  FitCarryOver fit;
+  double k = 0.0;
+};
+std::optional<FromFit> apply_from_fit(DemOptions& o) {
+  if (o.from_fit.empty()) return std::nullopt;
+  if (o.eps || o.dissipative_constant) {
+    throw InvalidInput("--from-fit excludes --eps and --dissipative-constant");
+  }
+  FromFit f;
+  f.fit = read_fit_result(o.from_fit,
+                          o.end_given ? std::optional<CollisionEnd>(end_from_name(o.end)) : std::nullopt);
+  f.k = elastic_constants(material_from(o.material)).k;
+  o.dissipative_constant = dissipative_constant_from(f.fit.beta, f.k);
+  o.end = end_name(f.fit.end);
+  return f;
+}
+
+// Which lines give the law's ε(v) that --from-fit carries over: these, unless the targeted YADE cannot
+// express the law (then only the lines of the version that can).
+std::string fit_eps_given_by(const dem::LinesResult& r) {
+  if (!r.yade_exact_deck) return "the lines above";
+  return fmt::format(
+      "the YADE 2024.02a lines only, not the lines above (on YADE {} they give the eps printed "
+      "after them)",
+      r.yade_version->text);
+}
+
+std::vector<double> speeds_of(const dem::LinesResult& r) {
+  std::vector<double> out;
+  for (const auto& e : r.eps) out.push_back(e.velocity_m_s);
+  return out;
+}
+
+dem::LinesResult compute(DemOptions& o) {
+  dem::LinesRequest request;
+  request.code = dem::code_from_name(o.code);
+  request.end = end_from_name(o.end);
+  request.material = material_from(o.material);
+  request.damping = {o.dissipative_constant, o.eps, o.velocity};
+  request.speeds_m_s = o.speeds;
+  request.tolerance = o.tolerance;
+  request.friction = o.friction;
+  // The targeted YADE first: a bad --yade-version is refused before any solve.
+  std::optional<dem::YadeVersion> yade;
+  if (!std::string_view(dem::code_entry(request.code).version_query).empty()) yade = target_yade(o);
+  dem::LinesResult r = dem::check_lines(request);
+  if (yade) damping_check::target_yade_version(r, *yade, o.tolerance);
+  return r;
+}
+
+void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optional<FromFit>& from_fit) {
+  JsonWriter json;
+  json.begin_object();
+  json.field("code", dem::code_name(r.deck.code)).field("end", end_name(r.deck.end));
+  json.field("dissipative_constant_s", r.dissipative_constant_s);
+  json.field("reference_velocity_m_s", r.reference_velocity_m_s).field("friction", r.friction);
+  json.key("parameters").begin_object();
+  for (const auto& p : r.deck.parameters) json.field(p.name, p.value);
+  json.end_object();
+  json.key("meanings").begin_object();
+  for (const auto& p : r.deck.parameters) json.field(p.name, p.meaning);
+  json.end_object();
+  json.key("lines").begin_array();
+  for (const auto& line : r.deck.lines) json.value(line);
+  json.end_array();
+  json.key("notes").begin_array();
+  for (const auto& note : r.deck.notes) json.value(note);
+  json.end_array();
+  json.key("eps").begin_array();
+  for (const auto& e : r.eps)
+    json.begin_object().field("velocity_m_s", e.velocity_m_s).field("eps", e.eps).end_object();
+  json.end_array();
+  json.key("sizes").begin_array();
+  for (const auto& s : r.sizes) {
+    json.begin_object().field("radius_factor", s.radius_factor);
+    json.field("eps_lines", s.eps_lines).field("eps_law", s.eps_law).end_object();
+  }
+  json.end_array();
+  if (r.yade_version) {
+    json.field("yade_version", r.yade_version->text).field("yade_version_source", o.yade_source);
+  }
+  if (r.yade_exact_deck) {
+    // Not these lines: the ones YADE 2024.02a and later take for the exact law, and the ε(v) they give there.
+    json.key("yade_exact_law").begin_object().field("needs_yade", "2024.02a");
+    json.key("lines").begin_array();
+    for (const auto& line : r.yade_exact_deck->lines) json.value(line);
+    json.end_array();
+    json.key("eps").begin_array();
+    for (const auto& e : r.yade_exact_eps)
+      json.begin_object().field("velocity_m_s", e.velocity_m_s).field("eps", e.eps).end_object();
+    json.end_array().end_object();
+  }
+  if (r.yade && !r.yade_exact_deck) {
+    json.key("yade_own_conversion").begin_object();
+    json.field("en", r.yade->true_eps).field("vn", r.reference_velocity_m_s);
+    json.field("dissipative_constant_s", r.yade->dissipative_constant_s);
+    json.field("eps_at_vn", r.yade->eps_at_vn).end_object();
+  }
+  if (from_fit) {
+    write_fit_carry_over(json, o.from_fit, from_fit->fit, from_fit->k, speeds_of(r), fit_eps_given_by(r));
+  }
+  if (o.deck) json.key("deck").begin_object().field("file", *o.deck).field("run", o.deck_run).end_object();
+  fmt::print("{}\n", finish_json_document(json));
+}
+
+void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optional<FromFit>& from_fit) {
+  const char* c = dem::code_entry(r.deck.code).comment;
+  fmt::print("{} restitution dem --code {}: viscoelastic Hertz law, A = {:.10g} s, {} end\n", c,
+             dem::code_name(r.deck.code), r.dissipative_constant_s, end_name(r.deck.end));
+  if (r.yade_version) {
+    fmt::print("{} for YADE {} ({}){}\n", c, r.yade_version->text, o.yade_source,
+               r.yade_exact_deck
+                   ? ": it cannot express this law; the lines below give the eps printed after them"
+                   : "");
+  }
+  for (const auto& p : r.deck.parameters) fmt::print("{} {} = {}: {}\n", c, p.name, p.value, p.meaning);
+  for (const auto& n : r.deck.notes) fmt::print("{} {}\n", c, n);
+  for (const auto& line : r.deck.lines) fmt::print("{}\n", line);
+  fmt::print("{} eps these lines give this pair ({} end):\n", c, end_name(r.deck.end));
+  for (const auto& e : r.eps) fmt::print("{}   v = {:<10.6g} m/s  eps = {:.10g}\n", c, e.velocity_m_s, e.eps);
+  fmt::print("{} other sizes of this material (radii scaled, same density) at v = {:g} m/s:\n", c,
+             r.reference_velocity_m_s);
+  for (const auto& s : r.sizes) {
+    fmt::print("{}   radii x{:<4g} eps = {:.10g}, the law gives {:.10g}\n", c, s.radius_factor, s.eps_lines,
+               s.eps_law);
+  }
+  if (r.yade_exact_deck) {
+    fmt::print("{} on YADE 2024.02a or later these lines give the law itself (not runnable on YADE {}):\n", c,
+               r.yade_version->text);
+    for (const auto& line : r.yade_exact_deck->lines) fmt::print("{}   {}\n", c, line);
+    fmt::print("{} and there give:", c);
+    for (const auto& e : r.yade_exact_eps) fmt::print(" eps({:g} m/s) = {:.10f}", e.velocity_m_s, e.eps);
+    fmt::print("\n");
+  }
+  if (r.yade && !r.yade_exact_deck) {
+    fmt::print(
+        "{} YADE's own conversion of the true (en = {:.10g}, vn = {:g} m/s) gives A = {:.10g} s ({:+.3g} "
+        "%),\n",
+        c, r.yade->true_eps, r.reference_velocity_m_s, r.yade->dissipative_constant_s,
+        100.0 * (r.yade->dissipative_constant_s / r.dissipative_constant_s - 1.0));
+    fmt::print("{} which makes eps(vn) = {:.10g}; the en above instead makes YADE recover the exact A\n", c,
+               r.yade->eps_at_vn);
+  }
+  if (from_fit)
+    fmt::print("{}", fit_carry_over_text(o.from_fit, from_fit->fit, from_fit->k, speeds_of(r),
+                                         fit_eps_given_by(r), c));
+  if (o.deck) fmt::print("{} check deck written to {}: run `{}`\n", c, *o.deck, o.deck_run);
+}
+
+// Several atom types (docs/dem.md, "Polydisperse sets"): lammps and liggghts only.
+int run_polydisperse(const DemOptions& o) {
+  if (!o.from_fit.empty() || !o.yade_version.empty()) {
+    throw InvalidInput(
+        "several atom types take --eps/--velocity or --dissipative-constant, not --from-fit "
+        "or --yade-version");
+  }
+  dem::PolydisperseRequest request;
+  request.code = dem::code_from_name(o.code);
+  request.end = end_from_name(o.end);
+  set_types(o.types, request);
+  if (o.deck) check_deck_size(request.code, request.types.size(), o.speeds.size());
+  request.damping = {o.dissipative_constant, o.eps, o.velocity};
+  request.speeds_m_s = o.speeds;
+  request.tolerance = o.tolerance;
+  request.friction = o.friction;
+  const dem::PolydisperseResult r = dem::polydisperse_lines(request);
+  std::optional<WrittenDeck> deck;
+  if (o.deck) deck = WrittenDeck{*o.deck, write_check_deck(*o.deck, dem::check_deck_request(r))};
+  if (o.json) {
+    print_polydisperse_json(r, deck);
+  } else {
+    print_polydisperse_text(r, deck);
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_dem_command(CLI::App& app, Action& chosen) {
+  auto o = std::make_shared<DemOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "dem", "input lines giving a DEM code (" + dem::code_list(", ") + ") this law, and its eps");
+  cmd->add_option("--code", o->code, "DEM code: " + dem::code_list(" or "))
+      ->required()
+      ->check(CLI::IsMember(dem::code_names()));
+  add_dem_type_options(*cmd, o->types);
+  cmd->add_option("--eps", o->eps, "measured coefficient of restitution in (0, 1): calibrate A first");
+  cmd->add_option(
+      "--velocity", o->velocity,
+      "impact speed in m/s at which --eps was measured (required with --eps; also YADE's vn and the "
+      "reference speed, 1 m/s with --dissipative-constant)");
+  cmd->add_option("--dissipative-constant", o->dissipative_constant, "the dissipative constant A in s");
+  cmd->add_option(
+      "--from-fit", o->from_fit,
+      "instead of --eps or --dissipative-constant: the JSON of fit-data --output; A from its Hertz fit "
+      "(at --end if given, else the lowest AIC) with the uncertainty it carries over (none when the fit "
+      "itself rejects it, said so)");
+  cmd->add_option("--end", o->end,
+                  "end of the collision: naive (no clamp) or delayed-recovery (force clamped)")
+      ->check(CLI::IsMember(end_names()))
+      ->capture_default_str();
+  cmd->add_option("--speeds", o->speeds, "impact speeds in m/s to report eps at (default v/10, v, 10 v)");
+  cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")
+      ->capture_default_str();
+  cmd->add_option("--friction", o->friction,
+                  "Coulomb friction coefficient mu >= 0 of the tangential model (0: frictionless); it does "
+                  "not change the head-on eps")
+      ->capture_default_str();
+  cmd->add_option("--yade-version", o->yade_version,
+                  "YADE version the yade lines are for, e.g. 2023.02a (no vn: a constant eps) or 2024.02a "
+                  "(default: yade --version on PATH)");
+  cmd->add_option(
+      "--deck", o->deck,
+      fmt::format("also write FILE, a complete input for {} that collides "
+                  "the pair at the speeds and prints the eps it measures next to restitution's "
+                  "(docs/dem.md); at most {} collisions (type pairs x speeds: {} types at 1 speed, "
+                  "{} at the default 3) and {:.3g} sphere-steps (spheres x steps: radii or speeds far "
+                  "apart need many steps), yade {} speeds",
+                  dem::code_list(" or ", [](const dem::CodeEntry& e) { return e.check_deck != nullptr; }),
+                  dem::kMaxDeckCollisionsLammps, dem::max_deck_types(dem::Code::lammps, 1),
+                  dem::max_deck_types(dem::Code::lammps, 3), dem::kMaxDeckSphereSteps,
+                  dem::kMaxDeckCollisionsYade));
+  cmd->add_flag("--json", o->json,
+                "print one JSON object (numbers in the shortest form that reads back to the same double)");
+  cmd->callback([o, cmd, &chosen] {
+    o->end_given = cmd->count("--end") > 0;
+    chosen = [o] {
+      if (o->deck) check_deck_target(*o->deck, dem::code_from_name(o->code));
+      if (several_types(o->types)) return run_polydisperse(*o);
+      if (o->deck) check_deck_size(dem::code_from_name(o->code), 1, o->speeds.size());
+      o->material = one_pair_material(o->types);
+      const std::optional<FromFit> from_fit = apply_from_fit(*o);
+      const dem::LinesResult r = compute(*o);
+      if (o->deck) o->deck_run = write_check_deck(*o->deck, r, material_from(o->material));
+      if (o->json) {
+        print_json(r, *o, from_fit);
+      } else {
+        print_text(r, *o, from_fit);
+      }
+      return 0;
+    };
+  });
+}
+
+}  // namespace restitution::cli

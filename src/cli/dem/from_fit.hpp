@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// What the viscoelastic Hertz fit of `fit-data --output FILE` (docs/fit.md, cli/dem/from_fit_file.hpp) gives
+// `calibrate --from-fit` and `dem --from-fit`: β and its intervals, and what they give at one speed.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/dem/from_fit_file.hpp"
+
+namespace restitution::cli {
+
+// ε at speed v [m/s] for β and its interval (ε decreases with β, so the bounds swap; a β bound at the edge,
+// or one whose ζ at v lies beyond the checked range, gives no ε bound: NaN and the flag set). Throws
+// InvalidInput when β's own ζ = β v^{1/5} lies outside the checked range (require_checked_zeta), as for a
+// β typed with `eps --beta`.
+struct EpsCarryOver {
+  double eps = 0.0;
+  FitInterval ci68, ci95;
+};
+EpsCarryOver eps_at_speed(const FitCarryOver& fit, double velocity_m_s);
+
+}  // namespace restitution::cli
+
+namespace restitution::cli {
+// `calibrate --from-fit FILE --velocity V [material]`: the fit's β with its intervals, ε at V with the
+// interval β's carries over, g*, and with k the dissipative constant A with its intervals. Prints the table
+// or (json) one object; returns the exit status. When the fit rejects its Hertz fit (rejected_because) the
+// output says why (JSON `hertz_fit_rejected`) and gives no interval.
+int calibrate_from_fit(const std::filesystem::path& file, std::optional<CollisionEnd> end,
+                       double velocity_m_s, std::optional<double> k, bool json);
+}  // namespace restitution::cli
+
+namespace restitution::cli {
+class JsonWriter;
+// What a fit carries over into `dem --from-fit`: A = β / ((3/2) k^{2/5}) with its intervals and ε at each
+// speed with its interval. As comment lines (prefix "#" or "//") and as the fields of a JSON object
+// "from_fit". These ε are the law's: `eps_given_by` names the lines that give them (the printed lines, or
+// for a YADE that cannot express the law the lines of the version that can), so that no ε stands next to
+// lines that do not produce it. A rejected Hertz fit is said so and carries no interval, as in calibrate.
+std::string fit_carry_over_text(const std::filesystem::path& file, const FitCarryOver& fit, double k,
+                                const std::vector<double>& speeds_m_s, const std::string& eps_given_by,
+                                const char* comment);
+void write_fit_carry_over(JsonWriter& json, const std::filesystem::path& file, const FitCarryOver& fit,
+                          double k, const std::vector<double>& speeds_m_s, const std::string& eps_given_by);
+}  // namespace restitution::cli

@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// `restitution fit`: least-squares power law ε ≈ c ζ^p over a ζ range at one end, with local slopes from the
+// solver and the derived large-ζ law beside it (docs/asymptotics.md).
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "analysis/asymptotics.hpp"
+#include "analysis/power_law_fit.hpp"
+#include "cli/common/build_json.hpp"
+#include "cli/common/commands.hpp"
+#include "cli/common/json_writer.hpp"
+#include "cli/common/progress.hpp"
+#include "restitution/collision_solver.hpp"
+#include "restitution/errors.hpp"
+
+namespace restitution::cli {
+namespace {
+
+struct FitOptions {
+  std::string end;
+  double zeta_min = 0.0;
+  double zeta_max = 0.0;
+  long long points = 9;  // signed and wide: a huge or negative count is reported, not wrapped
+  double tolerance = SolveOptions{}.tolerance;
+  bool json = false;
+};
+
+struct DerivedLaw {
+  double exponent, prefactor;
+};
+
+DerivedLaw derived_law(CollisionEnd end) {
+  if (end == CollisionEnd::naive) return {asymptotics::kNaiveExponent, asymptotics::naive_prefactor().value};
+  return {asymptotics::kDelayedRecoveryExponent, asymptotics::delayed_recovery_prefactor()};
+}
+
+// A power law over a range gains nothing from more points than this; each point is two solves.
+constexpr long long kMaxFitPoints = 100000;
+
+int run_fit(const FitOptions& o) {
+  const CollisionEnd end = end_from_name(o.end);
+  if (o.points > kMaxFitPoints) {
+    throw InvalidInput(fmt::format("--points must be at most {}, got {}", kMaxFitPoints, o.points));
+  }
+  const std::vector<double> zetas = log_grid(o.zeta_min, o.zeta_max, static_cast<int>(o.points));
+  require_checked_zeta(o.zeta_max);
+  CollisionSolver solver;
+  SolveOptions options;
+  options.tolerance = o.tolerance;
+  options.ends = EndSet{end};
+  std::vector<double> eps;
+  std::vector<LocalSlope> slopes;
+  {
+    ProgressLine progress("fit");
+    for (const double zeta : zetas) {
+      eps.push_back(end_of(solver.solve(ContactLaw::hertz_natural(zeta), options), end).eps);
+      slopes.push_back(local_slope(solver, zeta, end, kMinTolerance));
+      progress.update(eps.size(), zetas.size());
+    }
+  }
+  const PowerLawFit fit = fit_power_law(zetas, eps);
+  const DerivedLaw derived = derived_law(end);
+  if (o.json) {
+    JsonWriter json;
+    json.begin_object()
+        .field("end", end_name(end))
+        .field("exponent_zeta", fit.exponent)
+        .field("exponent_velocity", fit.exponent / 5.0)
+        .field("stderr", fit.exponent_stderr)
+        .field("prefactor", fit.prefactor)
+        .field("log_prefactor_stderr", fit.log_prefactor_stderr)
+        .field("max_residual", fit.max_residual)
+        .field("points", fit.points)
+        .field("zeta_min", o.zeta_min)
+        .field("zeta_max", o.zeta_max)
+        .field("tolerance", o.tolerance);
+    json.key("derived").begin_object();
+    json.field("exponent_zeta", derived.exponent).field("prefactor", derived.prefactor).end_object();
+    json.key("local_slopes").begin_array();
+    for (std::size_t i = 0; i < slopes.size(); ++i) {
+      const LocalSlope& s = slopes[i];
+      json.begin_object().field("zeta", s.zeta).field("slope", s.slope).field("error", s.error_estimate);
+      json.field("eps", eps[i]);
+      json.end_object();
+    }
+    json.end_array();
+    fmt::print("{}\n", finish_json_document(json));
+    return 0;
+  }
+  fmt::print("{} end, zeta in [{:g}, {:g}], {} points, tolerance {:g}\n", end_name(end), o.zeta_min,
+             o.zeta_max, fit.points, o.tolerance);
+  fmt::print("  fit:     eps = {:.10g} * zeta^({:.10g} +- {:.2g})  (velocity exponent {:.10g})\n",
+             fit.prefactor, fit.exponent, fit.exponent_stderr, fit.exponent / 5.0);
+  fmt::print("  derived: eps = {:.10g} * zeta^({:.10g}) as zeta -> infinity\n", derived.prefactor,
+             derived.exponent);
+  fmt::print("  {:>14} {:>20} {:>12}\n", "zeta", "d ln eps/d ln zeta", "error");
+  for (const LocalSlope& s : slopes)
+    fmt::print("  {:>14.6g} {:>20.12g} {:>12.2g}\n", s.zeta, s.slope, s.error_estimate);
+  return 0;
+}
+
+}  // namespace
+
+void add_fit_command(CLI::App& app, Action& chosen) {
+  auto o = std::make_shared<FitOptions>();
+  CLI::App* cmd = app.add_subcommand("fit", "least-squares power law of eps against zeta at one end");
+  cmd->add_option("--end", o->end, "end of the collision: naive or delayed-recovery")
+      ->required()
+      ->check(CLI::IsMember(end_names()));
+  cmd->add_option("--zeta-min", o->zeta_min, "smallest zeta of the fit (> 0)")->required();
+  cmd->add_option("--zeta-max", o->zeta_max, "largest zeta of the fit")->required();
+  cmd->add_option("--points", o->points,
+                  fmt::format("log-spaced points, ends included, in [3, {}]", kMaxFitPoints))
+      ->capture_default_str();
+  cmd->add_option("--tolerance", o->tolerance, "accuracy of each fitted eps, in [1e-11, 1e-2]")
+      ->capture_default_str();
+  cmd->add_flag("--json", o->json,
+                "print one JSON object (numbers in the shortest form that reads back to the same double)");
+  cmd->callback([o, &chosen] { chosen = [o] { return run_fit(*o); }; });
+}
+
+}  // namespace restitution::cli

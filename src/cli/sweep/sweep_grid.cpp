@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "cli/sweep/sweep_grid.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <utility>
+
+#include "restitution/contact_law.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/material.hpp"
+#include "restitution/sweep.hpp"
+#include "restitution/units.hpp"
+
+namespace restitution::cli {
+namespace {
+
+bool physical_form(const SweepOptions& o) {
+  return o.stiffness || o.damping_coefficient || o.effective_mass;
+}
+
+bool velocity_form(const SweepOptions& o) {
+  return o.velocity_min || o.velocity_max || o.beta || o.dissipative_constant || o.material.any() ||
+         physical_form(o);
+}
+
+// ContactLaw::physical's coefficients: all three, and nothing of the Hertz forms beside them.
+PhysicalCoefficients physical_coefficients(const SweepOptions& o) {
+  if (o.beta || o.dissipative_constant || o.material.any()) {
+    throw InvalidInput(
+        "--stiffness, --damping-coefficient and --effective-mass replace --beta and a material: give one "
+        "form");
+  }
+  if (!o.stiffness || !o.damping_coefficient || !o.effective_mass) {
+    throw InvalidInput(
+        "a sweep in physical units needs --stiffness, --damping-coefficient and --effective-mass together");
+  }
+  return {*o.stiffness, *o.damping_coefficient, *o.effective_mass};
+}
+
+// β (and k for a material) of the ε(v) forms; throws InvalidInput naming what is missing or mixed.
+VelocityAxis velocity_subject(const SweepOptions& o, LawKind law, std::optional<double>& hertz_k) {
+  if (o.zeta_min || o.zeta_max) {
+    throw InvalidInput(
+        "give --zeta-min/--zeta-max, or --velocity-min/--velocity-max with --beta or a material, not both");
+  }
+  if (!o.velocity_min || !o.velocity_max) {
+    throw InvalidInput(
+        fmt::format("an impact-speed sweep needs --velocity-min and --velocity-max (m/s): --{} is required",
+                    o.velocity_min ? "velocity-max" : "velocity-min"));
+  }
+  VelocityAxis axis;
+  if (physical_form(o)) return axis;
+  const bool material = o.material.any() || o.dissipative_constant;
+  if (!has_dissipative_constant(law)) {
+    throw InvalidInput(fmt::format(
+        "--beta and a material describe --law viscoelastic-hertz; --law {} sweeps impact speeds with "
+        "--stiffness, --damping-coefficient and --effective-mass (ContactLaw::physical)",
+        law_name(law)));
+  }
+  if (o.beta.has_value() == material) {
+    throw InvalidInput(
+        "--velocity-min/--velocity-max need exactly one of --beta and a material (--young-modulus, "
+        "--poisson-ratio, --radius, --density or --mass, --dissipative-constant), or the physical "
+        "coefficients --stiffness, --damping-coefficient and --effective-mass");
+  }
+  if (o.beta) {
+    if (!std::isfinite(*o.beta) || *o.beta < 0.0) {
+      throw InvalidInput(
+          fmt::format("--beta must be a finite number >= 0 (s^(1/5) m^(-1/5)), got {}", *o.beta));
+    }
+    axis.beta = *o.beta;
+    return axis;
+  }
+  Material m = material_from(o.material);
+  if (!o.dissipative_constant) {
+    throw InvalidInput(
+        "a material sweep needs --dissipative-constant (A in s; `restitution calibrate` computes it from a "
+        "measured eps)");
+  }
+  m.dissipative_constant_s = *o.dissipative_constant;
+  const MaterialConstants c = material_constants(m);
+  axis.beta = c.hertz.beta;
+  hertz_k = c.hertz.k;
+  return axis;
+}
+
+// ζ of each impact speed; throws InvalidInput naming the first speed whose ζ is outside the checked range.
+void check_zeta_of_velocity(double zeta, double v, const std::string& subject) {
+  if (zeta > kLargestCheckedZeta) {
+    throw InvalidInput(
+        fmt::format("velocity {} m/s with {} gives zeta = {:g}, outside the checked range 0 "
+                    "<= zeta <= {:g}",
+                    v, subject, zeta, kLargestCheckedZeta));
+  }
+}
+
+}  // namespace
+
+SweepGrid sweep_grid(const SweepOptions& o) {
+  // Signed on the command line so that a negative count is reported as such, not wrapped around.
+  if (o.points < 1) throw InvalidInput(fmt::format("--points must be >= 1, got {}", o.points));
+  const auto points = static_cast<std::size_t>(o.points);
+  SweepGrid grid;
+  try {
+    grid.law = law_from_name(o.law);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("--law: {}", e.what()));
+  }
+  if (!velocity_form(o)) {
+    if (!o.zeta_min && !o.zeta_max) {
+      throw InvalidInput(
+          "give --zeta-min and --zeta-max, or --velocity-min/--velocity-max with --beta or a material");
+    }
+    if (!o.zeta_min || !o.zeta_max) {
+      throw InvalidInput(fmt::format("--{} is required with --{}", o.zeta_min ? "zeta-max" : "zeta-min",
+                                     o.zeta_min ? "zeta-min" : "zeta-max"));
+    }
+    grid.zetas = zeta_values({*o.zeta_min, *o.zeta_max, points, o.log});
+    return grid;
+  }
+  std::optional<double> hertz_k;
+  VelocityAxis axis = velocity_subject(o, grid.law, hertz_k);
+  axis.velocity_m_s = zeta_values({*o.velocity_min, *o.velocity_max, points, o.log, "velocity"});
+  if (physical_form(o)) {
+    const PhysicalCoefficients c = physical_coefficients(o);
+    for (const double v : axis.velocity_m_s) {
+      const double zeta =
+          ContactLaw::physical(grid.law, c.stiffness, c.damping, c.effective_mass_kg, v).zeta();
+      check_zeta_of_velocity(zeta, v, "these coefficients");
+      grid.zetas.push_back(zeta);
+      axis.scales.push_back(physical_scales(grid.law, c, v));
+    }
+  } else {
+    for (const double v : axis.velocity_m_s) {
+      const double zeta = zeta_from(*axis.beta, v);
+      check_zeta_of_velocity(zeta, v, fmt::format("beta {}", *axis.beta));
+      grid.zetas.push_back(zeta);
+      if (hertz_k) axis.scales.push_back(natural_scales(*hertz_k, v));
+    }
+  }
+  grid.velocity = std::move(axis);
+  return grid;
+}
+
+}  // namespace restitution::cli

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// The options of `restitution sweep` and the grid they describe: ζ values, or impact speeds with β or a
+// material (ζ = β v^{1/5}), checked before anything is computed or written.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/common/material_options.hpp"
+#include "cli/common/options.hpp"
+#include "cli/sweep/sweep_table.hpp"
+
+namespace restitution::cli {
+
+struct SweepOptions {
+  std::string law = law_name(LawKind::viscoelastic_hertz);
+  std::optional<double> zeta_min, zeta_max;
+  // The ε(v) forms: impact speeds with β, or with a material and its dissipative constant (viscoelastic
+  // Hertz), or with the physical coefficients of ContactLaw::physical (every law).
+  std::optional<double> velocity_min, velocity_max, beta, dissipative_constant;
+  std::optional<double> stiffness, damping_coefficient, effective_mass;
+  MaterialOptions material;
+  long long points = 0;
+  bool log = false;
+  SolverArguments solver;
+  std::optional<long long> threads;  // default: all cores
+  std::string out;
+  bool resume = false;
+};
+
+// What the sweep runs over: the ζ values and, for the ε(v) forms, the impact speeds they come from.
+struct SweepGrid {
+  LawKind law = LawKind::viscoelastic_hertz;
+  std::vector<double> zetas;  // of the law's natural form
+  std::optional<VelocityAxis> velocity;
+};
+
+// The grid of the form the options give (exactly one of zeta-min/max, beta with velocity-min/max, a material
+// with velocity-min/max, the physical coefficients with velocity-min/max); throws InvalidInput naming what
+// is missing, mixed or outside the checked range.
+SweepGrid sweep_grid(const SweepOptions& o);
+
+}  // namespace restitution::cli
