@@ -86,8 +86,9 @@ int right_hand_side(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_dat
 int root_functions(sunrealtype /*t*/, N_Vector y, sunrealtype* g, void* user_data) noexcept {
   const auto& data = *static_cast<CallbackData*>(user_data);
   const State s = read(data.model->law, y);
-  // u changes sign at the naive end where x = u^q may not.
-  g[0] = data.end == CollisionEnd::naive
+  // u changes sign at the naive end where x = u^q may not; without damping the force-zero end is the naive
+  // one, where the force factor x^{a-b} = u^{q(a-b)} only touches 0.
+  g[0] = data.end == CollisionEnd::naive || data.model->law.damping() == 0.0
              ? N_VGetArrayPointer(y)[0]
              : law_rhs::force_factor(data.model->law, s[detail::kOverlap], s[detail::kOverlapRate]);
   // Without friction the force is 0 in every mode (LAMMPS caps it at 0): nothing to switch.
