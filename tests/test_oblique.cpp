@@ -2,6 +2,7 @@
 // The oblique contact (src/oblique/) against its closed forms: a contact that slides throughout changes the
 // contact-point velocity by μ(1 + ε) v_n (1 + m* R1²/I1 + m* R2²/I2) whatever the normal law; a frictionless
 // contact leaves the tangential velocity and the spins as they were; the normal restitution is the head-on ε.
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -113,6 +114,44 @@ TEST(ObliqueGrossSliding, PairWithSpinsChangesSlipByTheClosedForm) {
   EXPECT_NEAR(r.spin_second_rad_s - v.spin_second_rad_s,
               g.second->radius_m * m * du / g.second->inertia_kg_m2,
               1e-9 * std::abs(r.spin_second_rad_s - v.spin_second_rad_s));
+}
+
+// The linear dash-pot with a linear tangential spring (the model of Becker, Schwager & Pöschel, PRE 77,
+// 011304 (2008)) in its sticking limit μ -> ∞, on a wall: the slip obeys ξ'' + 2β_t ξ' + ω_t² ξ = 0 with ω_t²
+// = k_t K/m, 2β_t = γ_t γ_n K/m, K = 1 + m R²/I = 7/2, during the delayed-recovery contact of the dash-pot,
+// t_c = (π - atan(2β ω_d/(ω0² - 2β²)))/ω_d, ω0² = k_n/m, β = γ_n/(2m), ω_d² = ω0² - β²: so
+// e_t = -s(t_c)/s0 = -e^{-β_t t_c}(cos Ω t_c - (β_t/Ω) sin Ω t_c), Ω² = ω_t² - β_t². μ = 1e9: the cap
+// vanishes with F_n at the end, where a finite μ slides for the last ~1/μ of the contact (e_t moves by
+// ~1e-10); k_t/k_n = 2/7 undamped gives e_t = 1 (ω_t = ω0).
+TEST(ObliqueLinearSpring, StickingLimitIsTheDampedOscillatorOverTheDashpotContact) {
+  const double kn = 1e7;
+  const double kk = 3.5;  // 1 + m R²/I, solid sphere
+  for (const double gamma_n : {0.0, 0.05}) {
+    for (const double kt_ratio : {2.0 / 7.0, 0.2, 0.5, 1.0}) {
+      for (const double gamma_t : {0.0, 0.5}) {
+        const double kt = kt_ratio * kn;
+        const double omega0 = std::sqrt(kn / kMass);
+        const double beta = gamma_n / (2.0 * kMass);
+        const double omega_d = std::sqrt(omega0 * omega0 - beta * beta);
+        const double tc =
+            (std::numbers::pi - std::atan2(2.0 * beta * omega_d, omega0 * omega0 - 2.0 * beta * beta)) /
+            omega_d;
+        const double beta_t = gamma_t * gamma_n * kk / (2.0 * kMass);
+        const double big_omega = std::sqrt(kt * kk / kMass - beta_t * beta_t);
+        const double expected = -std::exp(-beta_t * tc) *
+                                (std::cos(big_omega * tc) - beta_t / big_omega * std::sin(big_omega * tc));
+        ObliqueOptions options;
+        options.relative_tolerance = 1e-12;
+        const ObliqueResult r =
+            solve_oblique(wall_geometry(), {LawKind::linear_dashpot, kn, gamma_n},
+                          {TangentialKind::linear_history, kt, gamma_t, 1e9}, at_angle(30.0), options);
+        const std::string label = fmt::format("gamma_n={} kt/kn={} gamma_t={}", gamma_n, kt_ratio, gamma_t);
+        EXPECT_NEAR(r.contact_time_s, tc, 1e-10 * tc) << label;
+        EXPECT_NEAR(r.tangential_restitution, expected, 1e-9) << label;
+        EXPECT_EQ(r.switches.front().mode, ContactMode::stick) << label;
+      }
+    }
+  }
 }
 
 TEST(ObliqueFrictionless, LeavesTangentialVelocityAndSpinUnchanged) {
