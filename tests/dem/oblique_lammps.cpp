@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Debian's LAMMPS (20220106) on oblique impacts of a sphere on a `fix wall/gran granular` wall, against
 // src/oblique/: nine impact angles from nearly head-on (1°) to grazing (85°), with and without initial spin,
-// for `linear_history` and `linear_nohistory`. One deck holds one sphere per angle (no pair style: they do
-// not interact); it runs at dt = t_c/n and t_c/(10 n) (n = 2000) and every output is Richardson-extrapolated
-// (fix nve/sphere is first order in dt for these forces). The tangential restitution e_t, the rebound angle
-// and the spin agree within 1e-4 relative (1e-5 absolute where e_t is near 0). The wall is the case where the
-// model is LAMMPS's own dt -> 0 limit (fixed normal, torque arm R, fix_wall_gran.cpp:1512; docs/oblique.md).
+// for `linear_history`, `linear_nohistory` and `mindlin`. One deck holds one sphere per angle (no pair style:
+// they do not interact); it runs at dt = t_c/n and t_c/(10 n) (n = 2000) and every output is
+// Richardson-extrapolated (fix nve/sphere is first order in dt for these forces). The tangential restitution
+// e_t, the rebound angle and the spin agree within 1e-4 relative (1e-5 absolute where e_t is near 0). The
+// wall is the case where the model is LAMMPS's own dt -> 0 limit (fixed normal, torque arm R,
+// fix_wall_gran.cpp:1512; docs/oblique.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -31,8 +32,14 @@ using restitution::test_support::TempFolder;
 constexpr double kRadius = 1e-3;
 const double kMass = 4.0 / 3.0 * std::numbers::pi * kRadius * kRadius * kRadius * 7800.0;
 constexpr double kHertz = 4.63e9;  // N/m^{3/2}: LAMMPS `hertz` K = kHertz/sqrt(R) (K δ a, a = sqrt(R δ))
-constexpr double kHertzDamping = 694.0;  // N s/m^{3/2}: `damping viscoelastic` η_n0 = γ/(m sqrt(R))
-constexpr double kTangentialStiffness = 2.2e6;
+constexpr double kHertzDamping = 694.0;         // N s/m^{3/2}: `damping viscoelastic` η_n0 = γ/(m sqrt(R))
+constexpr double kTangentialStiffness = 2.2e6;  // N/m, linear_history
+// N/m², mindlin: 8G* = 2E/((2 - ν)(1 + ν)) of steel (E = 2e11 Pa, ν = 0.3), LAMMPS's pair `NULL`, given as a
+// number (the wall's own NULL is another formula, fix_wall_gran.cpp:248).
+constexpr double kMindlinStiffness = 1.81e11;
+double tangential_stiffness(TangentialKind kind) {
+  return kind == TangentialKind::mindlin ? kMindlinStiffness : kTangentialStiffness;
+}
 constexpr double kTangentialDamping = 0.5;
 constexpr double kFriction = 0.3;
 const std::vector<double> kAnglesDeg{1.0, 5.0, 10.0, 20.0, 30.0, 45.0, 60.0, 75.0, 85.0};
@@ -69,7 +76,7 @@ std::vector<Outcome> run_lammps(const std::string& program, TangentialKind kind,
   deck << "fix 1 all nve/sphere\n"
        << "fix w all wall/gran granular hertz " << kHertz / std::sqrt(kRadius) << " " << eta << " tangential "
        << tangential_name(kind) << " ";
-  if (kind != TangentialKind::linear_nohistory) deck << kTangentialStiffness << " ";
+  if (kind != TangentialKind::linear_nohistory) deck << tangential_stiffness(kind) << " ";
   deck << kTangentialDamping << " " << kFriction << " damping viscoelastic limit_damping zplane 0 NULL\n"
        << "timestep " << dt << "\nthermo " << steps << "\n"
        << "dump d all custom " << steps << " " << (folder.path / "out.dump").string() << " id vx vz omegay\n"
@@ -110,7 +117,7 @@ TEST_P(ObliqueLammps, WallImpactsAgreeWithin1e4) {
   double longest = 0.0;
   for (const double angle : kAnglesDeg) {
     predicted.push_back(solve_oblique(wall, {LawKind::viscoelastic_hertz, kHertz, kHertzDamping},
-                                      {kind, kTangentialStiffness, kTangentialDamping, kFriction},
+                                      {kind, tangential_stiffness(kind), kTangentialDamping, kFriction},
                                       impact_at(angle, spin), options));
     shortest = std::min(shortest, predicted.back().contact_time_s);
     longest = std::max(longest, predicted.back().contact_time_s);
@@ -142,7 +149,8 @@ TEST_P(ObliqueLammps, WallImpactsAgreeWithin1e4) {
 
 INSTANTIATE_TEST_SUITE_P(Models, ObliqueLammps,
                          ::testing::Combine(::testing::Values(TangentialKind::linear_history,
-                                                              TangentialKind::linear_nohistory),
+                                                              TangentialKind::linear_nohistory,
+                                                              TangentialKind::mindlin),
                                             ::testing::Values(0.0, 300.0)));
 
 }  // namespace
