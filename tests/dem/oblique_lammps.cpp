@@ -93,7 +93,9 @@ std::vector<Outcome> run_lammps(const std::string& program, TangentialKind kind,
   for (std::size_t i = 0; i < kAnglesDeg.size(); ++i) {
     std::istringstream row(lines.at(first + i));
     long id = 0;
-    double vx = 0, vz = 0, wy = 0;
+    double vx = 0;
+    double vz = 0;
+    double wy = 0;
     row >> id >> vx >> vz >> wy;
     const ImpactVelocity v = impact_at(kAnglesDeg[static_cast<std::size_t>(id - 1)], spin);
     const double s0 = v.tangential_m_s + kRadius * spin;
