@@ -19,6 +19,7 @@ void add_all_commands(CLI::App& app, Action& chosen) {
   add_export_command(app, chosen);
   add_damping_check_command(app, chosen);
   add_gas_command(app, chosen);
+  add_oblique_command(app, chosen);
 }
 
 }  // namespace restitution::cli
