@@ -39,6 +39,9 @@ std::map<std::string, std::string> json_invocations(const fs::path& folder) {
       {"series eval", "series eval --kind naive-series --zeta 0.1 --json"},
       {"dem", "dem --code lammps --eps 0.6 --velocity 2 --json" + kMaterial},
       {"damping-check", "damping-check --recipe lammps-tsuji --eps 0.5 --json"},
+      {"gas",
+       "gas --radius 0.005 --density 920 --eps 0.8 --velocity 2 --packing-fraction 0.1 --rms-speed 1 "
+       "--haff-times 10 --points-per-decade 1 --json"},
   };
 }
 
