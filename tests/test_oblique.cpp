@@ -28,9 +28,10 @@ ObliqueGeometry wall_geometry() {
 }
 
 ObliqueGeometry pair_geometry() {
-  // Unequal spheres, one of them hollow-ish, so that both rotation terms count and differ.
+  // Unequal spheres, one of them hollow-ish, so that both rotation terms count and differ; the normal of the
+  // impact kept throughout, as the closed form has it.
   return {solid_sphere(kRadius, kMass), Body{1.5e-3, 2.0 * kMass, 0.55 * 2.0 * kMass * 1.5e-3 * 1.5e-3},
-          TorqueArm::radius};
+          TorqueArm::radius, /*fixed_normal=*/true};
 }
 
 double rotation_factor(const ObliqueGeometry& g) {
