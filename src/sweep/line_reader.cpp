@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/common/line_reader.hpp"
+#include "sweep/line_reader.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -10,9 +10,9 @@
 #include <cstring>
 #include <utility>
 
-#include "cli/common/io_error.hpp"
+#include "restitution/errors.hpp"
 
-namespace restitution::cli {
+namespace restitution {
 namespace {
 
 // 8 windows of 64 KiB: a partial file written by up to 8 workers is read in grid order without re-reading.
@@ -94,4 +94,4 @@ FileLines::~FileLines() {
   ::close(fd_);
 }
 
-}  // namespace restitution::cli
+}  // namespace restitution

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/sweep/sweep_table.hpp"
+#include "sweep/sweep_table.hpp"
 
 #include <fmt/core.h>
 
-#include "cli/common/output_files.hpp"
-#include "cli/common/physical_columns.hpp"
+#include "sweep/number_text.hpp"
+#include "sweep/physical_columns.hpp"
 
-namespace restitution::cli {
+namespace restitution {
 namespace {
 
 constexpr std::size_t kNumbersPerEnd = 4;
@@ -26,7 +26,7 @@ std::string quoted_field(const std::string& text) {
 }
 
 // Columns after the maximal compression's for a material: its SI durations and maximal compression.
-std::vector<std::string> si_columns(EndSet ends, const VelocityAxis* velocity) {
+std::vector<std::string> si_columns(EndSet ends, const SweepColumns* velocity) {
   std::vector<std::string> columns;
   if (velocity == nullptr || velocity->scales.empty()) return columns;
   for (const CollisionEnd end : ends.members()) columns.push_back(duration_column(end));
@@ -36,7 +36,7 @@ std::vector<std::string> si_columns(EndSet ends, const VelocityAxis* velocity) {
 
 }  // namespace
 
-std::string sweep_header(EndSet ends, const VelocityAxis* velocity) {
+std::string sweep_header(EndSet ends, const SweepColumns* velocity) {
   std::string header = "zeta";
   if (velocity != nullptr) {
     header += ",velocity_m_s";
@@ -51,7 +51,7 @@ std::string sweep_header(EndSet ends, const VelocityAxis* velocity) {
   return header + ",steps,status,error";
 }
 
-std::string sweep_row(const SweepPoint& point, EndSet ends, const VelocityAxis* velocity) {
+std::string sweep_row(const SweepPoint& point, EndSet ends, const SweepColumns* velocity) {
   std::string row = number17(point.zeta);
   if (velocity != nullptr) {
     row += fmt::format(",{}", number17(velocity->velocity_m_s.at(point.index)));
@@ -85,4 +85,4 @@ std::string sweep_row(const SweepPoint& point, EndSet ends, const VelocityAxis* 
   return row;
 }
 
-}  // namespace restitution::cli
+}  // namespace restitution

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/common/output_lock.hpp"
+#include "sweep/output_lock.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -14,10 +14,9 @@
 #include <system_error>
 #include <thread>
 
-#include "cli/common/io_error.hpp"
 #include "restitution/errors.hpp"
 
-namespace restitution::cli {
+namespace restitution {
 namespace {
 namespace fs = std::filesystem;
 
@@ -125,4 +124,4 @@ fs::path sweep_lock_path(const fs::path& file) {
   return file.string() + ".lock";
 }
 
-}  // namespace restitution::cli
+}  // namespace restitution

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/sweep/sweep_partial.hpp"
+#include "sweep/sweep_partial.hpp"
 
 #include <fmt/format.h>
 
@@ -9,11 +9,11 @@
 #include <cstring>
 #include <iterator>
 
-#include "cli/common/output_files.hpp"
-#include "cli/common/physical_columns.hpp"
 #include "restitution/errors.hpp"
+#include "sweep/number_text.hpp"
+#include "sweep/physical_columns.hpp"
 
-namespace restitution::cli {
+namespace restitution {
 namespace {
 
 constexpr std::size_t kCrcDigits = 8;
@@ -153,8 +153,9 @@ std::string shortened(std::string_view line) {
                                        : fmt::format("{}...", line.substr(0, kMaxQuotedLine));
 }
 
-[[noreturn]] void refuse(const std::filesystem::path& path, std::size_t line, const std::string& why) {
-  throw InvalidInput(fmt::format("--resume: {}:{}: {}", path.string(), line, why));
+[[noreturn]] void refuse(std::string_view resume_option, const std::filesystem::path& path, std::size_t line,
+                         const std::string& why) {
+  throw InvalidInput(fmt::format("{}: {}:{}: {}", resume_option, path.string(), line, why));
 }
 
 // The line number (1-based) of the line that starts at `offset`; for messages only.
@@ -192,7 +193,7 @@ std::optional<std::string_view> partial_line_row(std::string_view line) {
 
 PartialSweep read_partial_sweep(LineReader& lines, const std::filesystem::path& path,
                                 const std::string& settings, const std::string& header,
-                                const std::vector<double>& zetas) {
+                                const std::vector<double>& zetas, std::string_view resume_option) {
   PartialSweep partial;
   const std::string header_line = partial_header(header);
   std::uint64_t offset = 0;
@@ -207,17 +208,17 @@ PartialSweep read_partial_sweep(LineReader& lines, const std::filesystem::path& 
       continue;
     }
     if (line_number == 1) {
-      refuse(path, 1,
+      refuse(resume_option, path, 1,
              fmt::format("written by another sweep ('{}', this one is '{}'): resume it with that sweep's "
                          "settings, or delete it to start this one",
                          shortened(line.text), settings));
     }
     if (line.text == header) {
-      refuse(path, 2,
+      refuse(resume_option, path, 2,
              "written by an earlier version of restitution (rows without checksums): finish it with that "
              "version, or delete it to start afresh");
     }
-    refuse(path, 2, "its CSV header differs from this sweep's: delete it to start afresh");
+    refuse(resume_option, path, 2, "its CSV header differs from this sweep's: delete it to start afresh");
   }
 
   partial.row_offset.assign(zetas.size(), PartialSweep::kNotDone);
@@ -248,10 +249,10 @@ PartialSweep read_partial_sweep(LineReader& lines, const std::filesystem::path& 
       ++partial.duplicates;
       continue;
     }
-    refuse(path, line_number,
+    refuse(resume_option, path, line_number,
            fmt::format("point {} (zeta = {}) has two valid rows that differ, here and at line {}: keep the "
-                       "one you trust, delete the other line, and run --resume again",
-                       index, number17(zetas[index]), line_number_at(lines, first)));
+                       "one you trust, delete the other line, and run {} again",
+                       index, number17(zetas[index]), line_number_at(lines, first), resume_option));
   }
   partial.valid_bytes = offset;
   return partial;
@@ -259,9 +260,9 @@ PartialSweep read_partial_sweep(LineReader& lines, const std::filesystem::path& 
 
 PartialSweep parse_partial_sweep(std::string_view text, const std::filesystem::path& path,
                                  const std::string& settings, const std::string& header,
-                                 const std::vector<double>& zetas) {
+                                 const std::vector<double>& zetas, std::string_view resume_option) {
   LineReader lines = LineReader::of_text(text);
-  return read_partial_sweep(lines, path, settings, header, zetas);
+  return read_partial_sweep(lines, path, settings, header, zetas, resume_option);
 }
 
-}  // namespace restitution::cli
+}  // namespace restitution

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// The partial file of `restitution sweep` (FILE.partial): what --resume trusts. Line 1 names the sweep's
-// settings, line 2 is "index," + the CSV header + ",crc32", then one line per finished point in completion
-// order: "INDEX,ROW,CRC", where ROW is the point's row of the final table and CRC the CRC-32 (IEEE, as zlib's
-// crc32) of "INDEX,ROW" in 8 lowercase hex digits. A row carries its own integrity: a line cut off by a
-// failed write, or joined to the next one, fails its checksum; every field is also parsed against the header.
+// The partial file of a sweep written to a file (FILE.partial; sweep_to_file, `restitution sweep`): what
+// --resume trusts. Line 1 names the sweep's settings, line 2 is "index," + the CSV header + ",crc32", then
+// one line per finished point in completion order: "INDEX,ROW,CRC", where ROW is the point's row of the final
+// table and CRC the CRC-32 (IEEE, as zlib's crc32) of "INDEX,ROW" in 8 lowercase hex digits. A row carries
+// its own integrity: a line cut off by a failed write, or joined to the next one, fails its checksum; every
+// field is also parsed against the header.
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -14,9 +15,9 @@
 #include <string_view>
 #include <vector>
 
-#include "cli/common/line_reader.hpp"
+#include "sweep/line_reader.hpp"
 
-namespace restitution::cli {
+namespace restitution {
 
 // Line 2 of the partial file for a table with this CSV header.
 std::string partial_header(const std::string& header);
@@ -45,13 +46,16 @@ struct PartialSweep {
 // when its checksum holds and every field parses as the header says (numbers as the table writes them, its
 // ζ the grid's); any other line is dropped and its point computed again, as is a cut-off last line. An exact
 // repeat of a kept line is ignored. Throws InvalidInput naming the file (and line) when the file belongs to
-// another sweep, or when one point has two valid rows that differ. `path` names the file in messages.
+// another sweep, or when one point has two valid rows that differ. `path` names the file in messages, and
+// `resume_option` what asked to resume (SweepFile::resume_option).
 PartialSweep read_partial_sweep(LineReader& lines, const std::filesystem::path& path,
                                 const std::string& settings, const std::string& header,
-                                const std::vector<double>& zetas);
+                                const std::vector<double>& zetas,
+                                std::string_view resume_option = "--resume");
 // The same on a file's text (tests, fuzzing).
 PartialSweep parse_partial_sweep(std::string_view text, const std::filesystem::path& path,
                                  const std::string& settings, const std::string& header,
-                                 const std::vector<double>& zetas);
+                                 const std::vector<double>& zetas,
+                                 std::string_view resume_option = "--resume");
 
-}  // namespace restitution::cli
+}  // namespace restitution

@@ -9,7 +9,7 @@
 #include "restitution/collision_solver.hpp"
 #include "restitution/units.hpp"
 
-namespace restitution::cli {
+namespace restitution {
 
 // "velocity_m_s", "beta" (s^{1/5} m^{-1/5}).
 const std::vector<std::string>& velocity_columns();
@@ -23,4 +23,4 @@ double duration_s(const EndResult& end, const NaturalScales& scales);
 // The time [s] and compression [m] of the maximal compression, in the order of si_max_compression_columns().
 std::vector<double> si_max_compression(const MaxCompression& m, const NaturalScales& scales);
 
-}  // namespace restitution::cli
+}  // namespace restitution

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// The two files a running `restitution sweep` writes: FILE.partial (every finished row, in completion
-// order per worker, for --resume; format in sweep_partial.hpp) and the final table, written in grid order
-// into FILE.tmp while the workers compute and renamed onto FILE when the last row is in. Writing the table as
-// rows arrive, rather than building and writing it once every point is solved, keeps that work off the one
-// thread that runs after the solves: on two threads it was the serial part that capped the speed-up
-// (docs/performance.md).
+// The two files a running sweep_to_file (`restitution sweep`) writes: FILE.partial (every finished row, in
+// completion order per worker, for --resume; format in sweep_partial.hpp) and the final table, written in
+// grid order into FILE.tmp while the workers compute and renamed onto FILE when the last row is in. Writing
+// the table as rows arrive, rather than building and writing it once every point is solved, keeps that work
+// off the one thread that runs after the solves: on two threads it was the serial part that capped the
+// speed-up (docs/performance.md).
 //
 // A failed write is the last write to its file: the lines a buffer held when its write(2) failed (short or
 // refused) are dropped, and nothing is appended after them later, not even by a destructor once space was
@@ -21,9 +21,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/common/line_reader.hpp"
+#include "sweep/line_reader.hpp"
 
-namespace restitution::cli {
+namespace restitution {
 
 // Appends finished rows to the partial file. Each worker thread has its own buffer, written with one
 // append-mode write(2) of whole lines when it holds 256 KiB or every 100 ms: no lock between the workers per
@@ -33,9 +33,10 @@ namespace restitution::cli {
 class PartialFile {
  public:
   // keep_bytes > 0: resume an existing file, cut to its last complete line; else start it with `preamble`.
-  // `writers`: the number of worker threads that append (each with its own number below it).
+  // `writers`: the number of worker threads that append (each with its own number below it). `option`
+  // begins the message of a failed write ("--out"; empty: nothing).
   PartialFile(const std::filesystem::path& path, std::uint64_t keep_bytes, const std::string& preamble,
-              unsigned writers);
+              unsigned writers, const std::string& option = "");
   // What the buffers still hold is written (an interrupted sweep keeps every finished point), unless a write
   // to the file has failed.
   ~PartialFile();
@@ -54,6 +55,7 @@ class PartialFile {
   void write(Buffer& buffer);
   [[noreturn]] void fail(int error) const;
   std::filesystem::path path_;
+  std::string failure_prefix_;
   int fd_ = -1;
   std::vector<Buffer> buffers_;
   std::mutex write_mutex_;     // one write(2) at a time, none after a failure
@@ -95,4 +97,4 @@ class OrderedTable {
   std::unique_ptr<FileLines> partial_;  // open while done rows remain to be copied
 };
 
-}  // namespace restitution::cli
+}  // namespace restitution

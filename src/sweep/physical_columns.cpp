@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/common/physical_columns.hpp"
+#include "sweep/physical_columns.hpp"
 
-namespace restitution::cli {
+namespace restitution {
 
 const std::vector<std::string>& velocity_columns() {
   static const std::vector<std::string> columns = {"velocity_m_s", "beta"};
@@ -25,4 +25,4 @@ std::vector<double> si_max_compression(const MaxCompression& m, const NaturalSca
   return {m.tau * scales.time_s, m.x * scales.length_m};
 }
 
-}  // namespace restitution::cli
+}  // namespace restitution

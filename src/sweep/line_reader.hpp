@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-namespace restitution::cli {
+namespace restitution {
 
 class LineReader {
  public:
@@ -58,4 +58,4 @@ class FileLines {
   LineReader lines_;
 };
 
-}  // namespace restitution::cli
+}  // namespace restitution

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/sweep/sweep_files.hpp"
+#include "sweep/sweep_files.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -13,10 +13,10 @@
 #include <system_error>
 #include <utility>
 
-#include "cli/common/io_error.hpp"
-#include "cli/sweep/sweep_partial.hpp"
+#include "restitution/errors.hpp"
+#include "sweep/sweep_partial.hpp"
 
-namespace restitution::cli {
+namespace restitution {
 namespace {
 namespace fs = std::filesystem;
 
@@ -56,8 +56,8 @@ int open_for_writing(const fs::path& path, int flags) {
 }  // namespace
 
 PartialFile::PartialFile(const fs::path& path, std::uint64_t keep_bytes, const std::string& preamble,
-                         unsigned writers)
-    : path_(path), buffers_(std::max(1U, writers)) {
+                         unsigned writers, const std::string& option)
+    : path_(path), failure_prefix_(option.empty() ? "" : option + ": "), buffers_(std::max(1U, writers)) {
   if (keep_bytes > 0) fs::resize_file(path, keep_bytes);  // drop a half-written last line
   std::error_code error;
   if (path.has_parent_path()) fs::create_directories(path.parent_path(), error);
@@ -108,7 +108,8 @@ void PartialFile::write(Buffer& buffer) {
 }
 
 void PartialFile::fail(int error) const {
-  throw IoError(fmt::format("--out: cannot write '{}': {}", path_.string(), std::strerror(error)));
+  throw IoError(
+      fmt::format("{}cannot write '{}': {}", failure_prefix_, path_.string(), std::strerror(error)));
 }
 
 OrderedTable::OrderedTable(fs::path target, const std::string& header, std::size_t rows,
@@ -205,4 +206,4 @@ void OrderedTable::fail(int error) {
   throw IoError(fmt::format("cannot write '{}': {}", temporary_.string(), std::strerror(error)));
 }
 
-}  // namespace restitution::cli
+}  // namespace restitution

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-namespace restitution::cli {
+namespace restitution {
 
 class OutputLock {
  public:
@@ -46,4 +46,4 @@ std::filesystem::path folder_lock_path(const std::filesystem::path& folder);
 // The lock file of a sweep's output FILE: FILE.lock beside it.
 std::filesystem::path sweep_lock_path(const std::filesystem::path& file);
 
-}  // namespace restitution::cli
+}  // namespace restitution
