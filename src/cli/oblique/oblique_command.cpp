@@ -40,7 +40,7 @@ struct ObliqueCommandOptions {
   double speed = 1.0;
   double spin = 0.0;
   std::string end = "delayed-recovery";
-  std::string torque_arm = "radius";
+  std::string torque_arm = "lammps";
   double tolerance = 1e-10;
   bool json = false;
   std::string out;
@@ -73,7 +73,11 @@ Setup setup_of(const ObliqueCommandOptions& o) {
   s.geometry.first = solid_sphere(m.radius1_m, mass(m.radius1_m, m.mass1_kg));
   if (!o.wall) s.geometry.second = solid_sphere(m.radius2_m, mass(m.radius2_m, m.mass2_kg));
   s.geometry.fixed_normal = o.fixed_normal;
-  s.geometry.torque_arm = o.torque_arm == "radius" ? TorqueArm::radius : TorqueArm::radius_minus_half_overlap;
+  // "lammps": what LAMMPS does, R - δ/2 for a pair (pair_granular.cpp:663), R for a wall
+  // (fix_wall_gran.cpp:1512).
+  const bool half_overlap =
+      o.torque_arm == "radius-minus-half-overlap" || (o.torque_arm == "lammps" && !o.wall);
+  s.geometry.torque_arm = half_overlap ? TorqueArm::radius_minus_half_overlap : TorqueArm::radius;
   s.effective_modulus_pa = effective_modulus_pa(m.young_modulus_pa, m.poisson_ratio);
   // F = ρ δ^{3/2} + (3/2) A ρ sqrt(δ) δ', ρ = (4/3) E* sqrt(R*): a wall of the sphere's material has the same
   // E*.
@@ -246,8 +250,8 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
       ->check(CLI::IsMember(end_names()))
       ->capture_default_str();
   cmd->add_option("--torque-arm", o->torque_arm,
-                  "radius, or radius-minus-half-overlap (LAMMPS's pair granular)")
-      ->check(CLI::IsMember({"radius", "radius-minus-half-overlap"}))
+                  "lammps (R - delta/2 for a pair, R for a wall), radius or radius-minus-half-overlap")
+      ->check(CLI::IsMember({"lammps", "radius", "radius-minus-half-overlap"}))
       ->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance, "CVODE's relative tolerance, in [1e-14, 1e-2]")
       ->capture_default_str();
