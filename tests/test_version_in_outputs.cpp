@@ -39,6 +39,7 @@ std::map<std::string, std::string> json_invocations(const fs::path& folder) {
       {"series eval", "series eval --kind naive-series --zeta 0.1 --json"},
       {"dem", "dem --code lammps --eps 0.6 --velocity 2 --json" + kMaterial},
       {"damping-check", "damping-check --recipe lammps-tsuji --eps 0.5 --json"},
+      {"oblique", "oblique --tangential mindlin --friction 0.3 --angle 30 --json" + kMaterial},
   };
 }
 
