@@ -444,6 +444,8 @@ class SceneWriter {
             ? ""
             : " (the [[dem]] and [[damping_check]] sections solve their own collisions, not counted here)",
         scene_.description.empty() ? "" : "\n\n" + scene_.description + "\n");
+    // The code that computed the numbers, as summary.json names it (docs/release.md).
+    report_ += fmt::format("\nComputed by {}.\n", build_description());
     json_.field("collisions", static_cast<long>(results_.collisions));
     json_.field("distinct_collisions", static_cast<long>(results_.plan.jobs.size()));
     json_.field("seconds", seconds);
