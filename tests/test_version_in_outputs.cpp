@@ -42,6 +42,7 @@ std::map<std::string, std::string> json_invocations(const fs::path& folder) {
       {"gas",
        "gas --radius 0.005 --density 920 --eps 0.8 --velocity 2 --packing-fraction 0.1 --rms-speed 1 "
        "--haff-times 10 --points-per-decade 1 --json"},
+      {"oblique", "oblique --tangential mindlin --friction 0.3 --angle 30 --json" + kMaterial},
   };
 }
 
