@@ -4,7 +4,8 @@
 # (`pip wheel --no-build-isolation --no-deps .`, setup.py driving CMake), installs it into a fresh venv that sees
 # Debian's numpy (--system-site-packages), and runs the pytest suite (python/tests) against the INSTALLED
 # package from a folder outside the checkout, with no PYTHONPATH (conftest.py checks where restitution comes
-# from). Also checks restitution.__version__ against cmake/version.cmake's, that `pip install --no-build-isolation .`
+# from), and executes examples/notebooks/restitution_tour.ipynb with Debian's nbconvert in a kernel of that venv.
+# Also checks restitution.__version__ against cmake/version.cmake's, that `pip install --no-build-isolation .`
 # straight from the checkout (the README's command) installs an importable package into another fresh venv, and
 # that the sdist (`python3 -m build --sdist --no-isolation`) alone builds a wheel whose eps(1) is right.
 # Usage: tests/pip_install.sh [SOURCE_DIR]   (CMAKE_ARGS, RESTITUTION_CMAKE_BUILD_DIR etc. pass through to setup.py)
@@ -38,6 +39,10 @@ print(f"pip_install: restitution {restitution.__version__} from {where.parent}, 
 PY
 RESTITUTION_INSTALLED_UNDER="$work/venv" RESTITUTION_SOURCE_DIR="$source" \
   "$work/venv/bin/python" -m pytest -q -p no:cacheprovider "$source/python/tests"
+# The notebook with Debian's nbconvert, in a kernel that runs the venv's python (Debian's kernel runs
+# /usr/bin/python3, which does not see the venv): it must import the wheel installed there.
+"$work/venv/bin/python" "$source/python/tests/run_notebook.py" "$source/examples/notebooks/restitution_tour.ipynb" \
+  "$work/venv/bin/python" "$work/venv"
 
 # The README's command: pip builds from the checkout itself (reusing setup.py's CMake build folder).
 /usr/bin/python3 -m venv --system-site-packages "$work/venv2"
