@@ -67,13 +67,20 @@ GasSetup gas_setup(const GasDeckRequest& request) {
 
 double late_exponent(const std::vector<double>& time_s, const std::vector<double>& temperature_j) {
   const double from = time_s.back() / kLateSpan;
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  double sx = 0.0;
+  double sy = 0.0;
+  double sxx = 0.0;
+  double sxy = 0.0;
   double count = 0;
   for (std::size_t i = 0; i < time_s.size(); ++i) {
     if (time_s[i] < from * (1.0 - 1e-12)) continue;
     const double x = std::log(time_s[i]);
     const double y = std::log(temperature_j[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y, count += 1;
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+    count += 1;
   }
   if (count < 2) return NAN;
   return (count * sxy - sx * sy) / (count * sxx - sx * sx);
@@ -91,7 +98,8 @@ GasComparison compare_with_theory(const GasSetup& setup, const std::vector<Cooli
   if (companion != curves.end()) {
     const Split s = split(*companion);
     const double tau0 = gas::haff_reference(request_for(setup, constant, s.t0_j, s.time_s, 1.0)).tau0_s;
-    double xy = 0.0, xx = 0.0;
+    double xy = 0.0;
+    double xx = 0.0;
     for (std::size_t i = 0; i < s.time_s.size(); ++i) {
       const double x = s.time_s[i] / tau0;
       xy += x * (std::sqrt(s.t0_j / s.temperature_j[i]) - 1.0);
@@ -114,7 +122,9 @@ GasComparison compare_with_theory(const GasSetup& setup, const std::vector<Cooli
       r.max_relative_deviation =
           std::max(r.max_relative_deviation, std::abs(s.temperature_j[i] / theory.temperature_j[i] - 1.0));
     }
-    std::vector<double> t{0.0}, temperature{s.t0_j}, theory_temperature{s.t0_j};
+    std::vector<double> t{0.0};
+    std::vector<double> temperature{s.t0_j};
+    std::vector<double> theory_temperature{s.t0_j};
     t.insert(t.end(), s.time_s.begin(), s.time_s.end());
     temperature.insert(temperature.end(), s.temperature_j.begin(), s.temperature_j.end());
     theory_temperature.insert(theory_temperature.end(), theory.temperature_j.begin(),
