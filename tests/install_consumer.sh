@@ -23,7 +23,7 @@ if [ -z "${RESTITUTION_INSTALLED_PREFIX:-}" ]; then
 fi
 
 headers=$(cd "$prefix/include/restitution" && ls | tr '\n' ' ')
-expected="calibration.hpp collision_solver.hpp contact_law.hpp errors.hpp fast.hpp fit.hpp material.hpp restitution.hpp series.hpp solve_types.hpp sweep.hpp units.hpp "
+expected="calibration.hpp collision_solver.hpp contact_law.hpp errors.hpp fast.hpp fit.hpp material.hpp restitution.hpp series.hpp solve_types.hpp sweep.hpp units.hpp version.hpp "
 if [ "$headers" != "$expected" ]; then
   echo "installed headers: $headers"
   echo "expected:          $expected"

@@ -28,9 +28,10 @@ ObliqueGeometry wall_geometry() {
 }
 
 ObliqueGeometry pair_geometry() {
-  // Unequal spheres, one of them hollow-ish, so that both rotation terms count and differ.
+  // Unequal spheres, one of them hollow-ish, so that both rotation terms count and differ; the normal of the
+  // impact kept throughout, as the closed form has it.
   return {solid_sphere(kRadius, kMass), Body{1.5e-3, 2.0 * kMass, 0.55 * 2.0 * kMass * 1.5e-3 * 1.5e-3},
-          TorqueArm::radius};
+          TorqueArm::radius, /*fixed_normal=*/true};
 }
 
 double rotation_factor(const ObliqueGeometry& g) {
@@ -165,6 +166,32 @@ TEST(ObliqueFrictionless, LeavesTangentialVelocityAndSpinUnchanged) {
     EXPECT_EQ(r.spin_first_rad_s, v.spin_first_rad_s) << tangential_name(kind);
     EXPECT_DOUBLE_EQ(r.tangential_restitution, -1.0) << tangential_name(kind);
     EXPECT_EQ(r.impulse_ratio, 0.0) << tangential_name(kind);
+  }
+}
+
+// A pair whose line of centres turns: without friction the normal force is central, so an elastic contact is
+// a scattering: the relative speed is kept and the outgoing velocity is the incoming one mirrored about the
+// apse line, the line of centres at maximal compression, halfway through the turn θ (the orbit is symmetric).
+TEST(ObliqueTurningNormal, FrictionlessElasticPairIsACentralForceScattering) {
+  ObliqueGeometry g = pair_geometry();
+  g.fixed_normal = false;
+  const NormalForce elastic{LawKind::viscoelastic_hertz, kHertzStiffness, 0.0};
+  for (const double angle : {10.0, 45.0, 80.0}) {
+    const ImpactVelocity v = at_angle(angle, 3.0);
+    ObliqueOptions options;
+    options.relative_tolerance = 1e-12;
+    const ObliqueResult r =
+        solve_oblique(g, elastic, {TangentialKind::linear_history, 2e6, 0.0, 0.0}, v, options);
+    const double speed0 = std::hypot(v.normal_m_s, v.tangential_m_s);
+    const double speed1 = std::hypot(r.normal_velocity_m_s, r.tangential_velocity_m_s);
+    EXPECT_NEAR(speed1, speed0, 1e-10 * speed0) << angle;
+    EXPECT_GT(r.line_of_centres_turn_rad, 0.0) << angle;
+    // The incoming relative velocity (u, -v_n) mirrored about the apse n = (sin θ/2, cos θ/2): v - 2 (v·n) n.
+    const double th = 0.5 * r.line_of_centres_turn_rad;
+    const double vn = v.tangential_m_s * std::sin(th) - v.normal_m_s * std::cos(th);
+    EXPECT_NEAR(r.tangential_velocity_m_s, v.tangential_m_s - 2.0 * vn * std::sin(th), 1e-9 * speed0)
+        << angle;
+    EXPECT_NEAR(r.normal_velocity_m_s, -v.normal_m_s - 2.0 * vn * std::cos(th), 1e-9 * speed0) << angle;
   }
 }
 

@@ -97,7 +97,7 @@ int root_functions(sunrealtype /*t*/, N_Vector y, sunrealtype* g, void* user_dat
 }
 
 NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& normal,
-                           const TangentialForce& tangential, double impact_speed_m_s) {
+                           const TangentialForce& tangential, double impact_speed_m_s, CollisionEnd end) {
   const double mass = effective_mass_kg(geometry);
   const double time_s = physical_time_scale_s(normal.kind, normal.stiffness, mass, impact_speed_m_s);
   const double length_m = impact_speed_m_s * time_s;
@@ -120,6 +120,10 @@ NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& n
   };
   rotation(geometry.first, 0);
   if (geometry.second) rotation(*geometry.second, 1);
+  model.cap_of_signed_force = end == CollisionEnd::delayed_recovery;
+  if (geometry.second && !geometry.fixed_normal) {
+    model.centre_distance = (geometry.first.radius_m + geometry.second->radius_m) / length_m;
+  }
   return model;
 }
 
@@ -231,7 +235,7 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
                             const ObliqueOptions& options) {
   validate(geometry, normal, tangential, impact, options);
   const double speed = impact.normal_m_s;
-  const NaturalModel model = natural_model(geometry, normal, tangential, speed);
+  const NaturalModel model = natural_model(geometry, normal, tangential, speed, options.end);
   const double time_s =
       physical_time_scale_s(normal.kind, normal.stiffness, effective_mass_kg(geometry), speed);
 
@@ -259,6 +263,7 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
   for (const int i : {detail::kDisplacement, detail::kTangential, detail::kSpinFirst, detail::kSpinSecond}) {
     a[i] = 1e-3 * rtol * tangential_scale;
   }
+  a[detail::kTurn] = 1e-3 * rtol;
   sundials::NonlinearSolver corrector = sundials::make_small_fixed_point_solver(state, context);
   sundials::CvodeMemory memory(CV_ADAMS, context);
   void* mem = memory.get();
@@ -330,19 +335,27 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
     result.switches.push_back({t * time_s, data.mode});
   }
 
-  const double separation = -y[detail::kOverlapRate];
+  // Back in the frame of the impact (normal n0, tangent t0): the line of centres has turned by θ, so the
+  // relative velocity -δ' n + u t has components -δ' cos θ - u sin θ along n0 and u cos θ - δ' sin θ along
+  // t0.
+  const double turn = y[detail::kTurn];
+  const double separation =
+      -y[detail::kOverlapRate] * std::cos(turn) - y[detail::kTangential] * std::sin(turn);
+  const double tangential_after =
+      y[detail::kTangential] * std::cos(turn) - y[detail::kOverlapRate] * std::sin(turn);
+  result.line_of_centres_turn_rad = turn;
   result.normal_restitution = separation;
   result.normal_velocity_m_s = separation * speed;
-  result.tangential_velocity_m_s = y[detail::kTangential] * speed;
+  result.tangential_velocity_m_s = tangential_after * speed;
   result.spin_first_rad_s = y[detail::kSpinFirst] * speed / geometry.first.radius_m;
   result.spin_second_rad_s =
       geometry.second ? y[detail::kSpinSecond] * speed / geometry.second->radius_m : 0.0;
-  const double slip = NaturalModel::slip_velocity(y);
+  const double slip = tangential_after + y[detail::kSpinFirst] + y[detail::kSpinSecond];
   result.slip_velocity_m_s = slip * speed;
   result.tangential_restitution = slip0 != 0.0 ? -slip / slip0 : std::nan("");
   result.impact_angle_rad = std::atan2(impact.tangential_m_s, speed);
   result.rebound_angle_rad = std::atan2(result.tangential_velocity_m_s, result.normal_velocity_m_s);
-  result.impulse_ratio = (y[detail::kTangential] - impact.tangential_m_s / speed) / (1.0 + separation);
+  result.impulse_ratio = (tangential_after - impact.tangential_m_s / speed) / (1.0 + separation);
   result.contact_time_s = t * time_s;
   return result;
 }

@@ -8,9 +8,10 @@
 // as CVODE root-function events; the contact ends at the normal law's end event. docs/oblique.md derives the
 // model from the source, line by line.
 //
-// The impact is planar: the normal n is fixed (exact for a wall; for a pair it neglects the turning of the
-// line of centres during contact, docs/oblique.md), t is the tangent of the impact plane, spins are about
-// n × t. The contact-point slip velocity of the first body relative to the second is
+// The impact is planar: n is the line of centres (fixed for a wall; for a pair it turns during the contact
+// unless ObliqueGeometry::fixed_normal), t the tangent in the impact plane, spins are about n × t. Results
+// are given in the frame of the impact (the normal at first contact). The contact-point slip velocity of the
+// first body relative to the second is
 //     s = u + R1 ω1 + R2 ω2
 // with u the tangential velocity of the first centre relative to the second; a positive spin adds to s.
 #include <optional>
@@ -57,6 +58,11 @@ struct ObliqueGeometry {
   Body first;
   std::optional<Body> second;  // none: a flat immovable wall (effective radius R1, effective mass m1)
   TorqueArm torque_arm = TorqueArm::radius;
+  // A pair's line of centres turns during the contact as the centres pass each other (LAMMPS's pair: n from
+  // the positions every step, the history projected onto the new tangent plane with its magnitude kept,
+  // pair_granular.cpp:450-471); true keeps the normal of the impact throughout (the textbook model, the
+  // closed forms). A wall's normal is fixed either way.
+  bool fixed_normal = false;
 };
 
 // The normal force F_n = k δ^a + γ δ^b δ' of a member of the family (SI: k in N/m^a, γ in N s/m^{1+b}).
@@ -103,16 +109,17 @@ struct ModeSwitch {
 };
 
 struct ObliqueResult {
-  double normal_restitution = 0.0;       // ε = -v_n'/v_n
-  double tangential_restitution = 0.0;   // e_t = -s'/s (NaN when s = 0 at impact)
-  double slip_velocity_m_s = 0.0;        // s' after contact
-  double tangential_velocity_m_s = 0.0;  // u' after contact
-  double normal_velocity_m_s = 0.0;      // separation speed ε v_n
-  double spin_first_rad_s = 0.0;         // ω1' after contact
-  double spin_second_rad_s = 0.0;        // ω2' (0 for a wall)
-  double impact_angle_rad = 0.0;         // atan2(u, v_n) before contact
-  double rebound_angle_rad = 0.0;        // atan2(u', ε v_n) after contact
-  double impulse_ratio = 0.0;            // J_t/J_n, tangential over normal impulse on the first body
+  double normal_restitution = 0.0;        // ε = -v_n'/v_n
+  double tangential_restitution = 0.0;    // e_t = -s'/s (NaN when s = 0 at impact)
+  double slip_velocity_m_s = 0.0;         // s' after contact
+  double tangential_velocity_m_s = 0.0;   // u' after contact
+  double normal_velocity_m_s = 0.0;       // separation speed ε v_n
+  double spin_first_rad_s = 0.0;          // ω1' after contact
+  double spin_second_rad_s = 0.0;         // ω2' (0 for a wall)
+  double impact_angle_rad = 0.0;          // atan2(u, v_n) before contact
+  double rebound_angle_rad = 0.0;         // atan2(u', ε v_n) after contact
+  double impulse_ratio = 0.0;             // J_t/J_n, tangential over normal impulse on the first body
+  double line_of_centres_turn_rad = 0.0;  // θ: how far a pair's line of centres turned during the contact
   double contact_time_s = 0.0;
   double stick_time_s = 0.0;  // time below the Coulomb cap
   double slip_time_s = 0.0;   // time at the cap

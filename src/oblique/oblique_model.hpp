@@ -19,16 +19,18 @@
 
 namespace restitution::oblique::detail {
 
-inline constexpr int kStateSize = 6;
+inline constexpr int kStateSize = 7;
 using State = std::array<double, kStateSize>;
-// δ, δ', tangential displacement ξ (history), u, R1 ω1, R2 ω2, each in natural units.
+// δ, δ', tangential displacement ξ (history), u, R1 ω1, R2 ω2, each in natural units, and the angle θ the
+// line of centres has turned through.
 enum Index {
   kOverlap = 0,
   kOverlapRate = 1,
   kDisplacement = 2,
   kTangential = 3,
   kSpinFirst = 4,
-  kSpinSecond = 5
+  kSpinSecond = 5,
+  kTurn = 6
 };
 
 struct NaturalModel {
@@ -40,21 +42,44 @@ struct NaturalModel {
   // ρ_i(x) = rotation_base_i - rotation_slope_i x: d(R_i ω_i)/dτ = ρ_i f_t.
   std::array<double, 2> rotation_base{};
   std::array<double, 2> rotation_slope{};
+  // R1 + R2 in natural lengths for a pair whose line of centres turns (the distance is r = centre_distance -
+  // x, and in polar form δ'' = -f_n - u²/r, u' = f_t + δ' u/r, θ' = u/r); 0 for a wall or a fixed normal.
+  double centre_distance = 0.0;
+  bool cap_of_signed_force = false;  // true at the delayed-recovery end (see cap)
+
+  [[nodiscard]] double inverse_distance(double x) const {
+    return centre_distance > 0.0 ? 1.0 / (centre_distance - x) : 0.0;
+  }
+  [[nodiscard]] double overlap_acceleration(const State& y) const {
+    const double u = y[kTangential];
+    return law_rhs::acceleration(law, y[kOverlap], y[kOverlapRate]) - u * u * inverse_distance(y[kOverlap]);
+  }
+  // ds/dτ under the tangential force f: f (1 + ρ1 + ρ2) plus the turning frame's δ' u/r.
+  [[nodiscard]] double slip_rate(const State& y, double force) const {
+    const double x = y[kOverlap];
+    return force * mobility(x) + y[kOverlapRate] * y[kTangential] * inverse_distance(x);
+  }
 
   [[nodiscard]] bool has_history() const { return kind != TangentialKind::linear_nohistory; }
 
   [[nodiscard]] double normal_force(double x, double v) const { return -law_rhs::acceleration(law, x, v); }
-  // d f_n/dτ along the motion (x'' = -f_n).
-  [[nodiscard]] double normal_force_rate(double x, double v) const {
-    const double fn = normal_force(x, v);
+  // d f_n/dτ along the motion.
+  [[nodiscard]] double normal_force_rate(const State& y) const {
+    const double x = y[kOverlap];
+    const double v = y[kOverlapRate];
     return law_rhs::shape_derivative(law, x) * v * law_rhs::force_factor(law, x, v) +
-           law_rhs::shape(law, x) *
-               (law.damping() * -fn + law.stiffness() * law_rhs::elastic_slope(law, x) * v);
+           law_rhs::shape(law, x) * (law.damping() * overlap_acceleration(y) +
+                                     law.stiffness() * law_rhs::elastic_slope(law, x) * v);
   }
-  [[nodiscard]] double cap(double x, double v) const { return friction * std::abs(normal_force(x, v)); }
-  [[nodiscard]] double cap_rate(double x, double v) const {
+  // C = μ|f_n| (LAMMPS's Fncrit = fabs(Fntot)); where the contact ends at the force-zero end f_n >= 0 until
+  // the end, and μ f_n itself keeps the right-hand side smooth for the steps CVODE takes past it.
+  [[nodiscard]] double cap(double x, double v) const {
     const double fn = normal_force(x, v);
-    return friction * (fn < 0.0 ? -1.0 : 1.0) * normal_force_rate(x, v);
+    return friction * (cap_of_signed_force ? fn : std::abs(fn));
+  }
+  [[nodiscard]] double cap_rate(const State& y) const {
+    const double fn = normal_force(y[kOverlap], y[kOverlapRate]);
+    return friction * (fn < 0.0 && !cap_of_signed_force ? -1.0 : 1.0) * normal_force_rate(y);
   }
   [[nodiscard]] double tangential_damping(double x) const {
     return damping_factor * law.damping() * law_rhs::shape(law, x);
@@ -92,11 +117,13 @@ struct NaturalModel {
     const double v = y[kOverlapRate];
     const double ft = tangential_force(y, mode, sign);
     dy[kOverlap] = v;
-    dy[kOverlapRate] = law_rhs::acceleration(law, x, v);
+    const double inverse_r = inverse_distance(x);
+    dy[kOverlapRate] = overlap_acceleration(y);
     dy[kDisplacement] = mode == ContactMode::stick && has_history() ? slip_velocity(y) : 0.0;
-    dy[kTangential] = ft;
+    dy[kTangential] = ft + v * y[kTangential] * inverse_r;
     dy[kSpinFirst] = (rotation_base[0] - rotation_slope[0] * x) * ft;
     dy[kSpinSecond] = (rotation_base[1] - rotation_slope[1] * x) * ft;
+    dy[kTurn] = y[kTangential] * inverse_r;
   }
 
   // The root function of the switch out of `mode`: crosses 0 downwards (stick) or upwards (history slip).
@@ -108,9 +135,9 @@ struct NaturalModel {
     const double s = slip_velocity(y);
     const double g = tangential_damping(x);
     if (!has_history()) return g * std::abs(s) - c;
-    const double ds = sign * c * mobility(x);
+    const double ds = slip_rate(y, sign * c);
     const double dgs = tangential_damping_rate(x, v) * s + g * ds;
-    return cap_rate(x, v) + sign * (tangential_stiffness(x) * s + dgs) -
+    return cap_rate(y) + sign * (tangential_stiffness(x) * s + dgs) -
            stiffness_log_rate(x, v) * (c + sign * g * s);
   }
   // Whether leaving `mode` where its switch function crossed 0 agrees with the rate of the force against the
@@ -129,8 +156,8 @@ struct NaturalModel {
     const double s = slip_velocity(y);
     const double force = tangential_force(y, mode, sign);
     const double excess_rate = tangential_damping_rate(x, v) * std::abs(s) +
-                               tangential_damping(x) * (s < 0.0 ? -1.0 : 1.0) * force * mobility(x) -
-                               cap_rate(x, v);
+                               tangential_damping(x) * (s < 0.0 ? -1.0 : 1.0) * slip_rate(y, force) -
+                               cap_rate(y);
     return mode == ContactMode::stick ? excess_rate > 0.0 : excess_rate < 0.0;
   }
   // The displacement a history model carries from a slip into a stick: the capped force, -κξ - g s = σC.

@@ -31,6 +31,7 @@ struct ObliqueCommandOptions {
   MaterialOptions material;
   double dissipative_constant = 0.0;
   bool wall = false;
+  bool fixed_normal = false;
   std::string tangential = "linear_history";
   std::optional<double> tangential_stiffness;
   double tangential_damping = 0.0;
@@ -39,7 +40,7 @@ struct ObliqueCommandOptions {
   double speed = 1.0;
   double spin = 0.0;
   std::string end = "delayed-recovery";
-  std::string torque_arm = "radius";
+  std::string torque_arm = "lammps";
   double tolerance = 1e-10;
   bool json = false;
   std::string out;
@@ -71,7 +72,12 @@ Setup setup_of(const ObliqueCommandOptions& o) {
   };
   s.geometry.first = solid_sphere(m.radius1_m, mass(m.radius1_m, m.mass1_kg));
   if (!o.wall) s.geometry.second = solid_sphere(m.radius2_m, mass(m.radius2_m, m.mass2_kg));
-  s.geometry.torque_arm = o.torque_arm == "radius" ? TorqueArm::radius : TorqueArm::radius_minus_half_overlap;
+  s.geometry.fixed_normal = o.fixed_normal;
+  // "lammps": what LAMMPS does, R - δ/2 for a pair (pair_granular.cpp:663), R for a wall
+  // (fix_wall_gran.cpp:1512).
+  const bool half_overlap =
+      o.torque_arm == "radius-minus-half-overlap" || (o.torque_arm == "lammps" && !o.wall);
+  s.geometry.torque_arm = half_overlap ? TorqueArm::radius_minus_half_overlap : TorqueArm::radius;
   s.effective_modulus_pa = effective_modulus_pa(m.young_modulus_pa, m.poisson_ratio);
   // F = ρ δ^{3/2} + (3/2) A ρ sqrt(δ) δ', ρ = (4/3) E* sqrt(R*): a wall of the sphere's material has the same
   // E*.
@@ -124,7 +130,7 @@ void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
   JsonWriter json;
   json.begin_object().field("tangential_model", tangential_name(s.tangential.kind));
   json.field("contact", o.wall ? "sphere-wall" : "sphere-sphere").field("end", o.end);
-  json.field("torque_arm", o.torque_arm);
+  json.field("torque_arm", o.torque_arm).field("fixed_normal", o.wall || o.fixed_normal);
   json.field("normal_stiffness_N_m1_5", s.normal.stiffness)
       .field("normal_damping_N_s_m1_5", s.normal.damping);
   json.field("tangential_stiffness", s.tangential.stiffness);
@@ -146,6 +152,7 @@ void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
     json.field("spin_rad_s", r.spin_first_rad_s);
     if (!o.wall) json.field("spin2_rad_s", r.spin_second_rad_s);
     json.field("impulse_ratio", r.impulse_ratio).field("contact_time_s", r.contact_time_s);
+    if (!o.wall) json.field("line_of_centres_turn_deg", r.line_of_centres_turn_rad / kDegree);
     json.field("stick_time_s", r.stick_time_s).field("slip_time_s", r.slip_time_s);
     json.key("modes").begin_array();
     for (const ModeSwitch& m : r.switches) {
@@ -218,6 +225,10 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--dissipative-constant", o->dissipative_constant, "the dissipative constant A in s")
       ->capture_default_str();
   cmd->add_flag("--wall", o->wall, "a sphere on a flat wall of the same material instead of two spheres");
+  cmd->add_flag(
+      "--fixed-normal", o->fixed_normal,
+      "two spheres: keep the normal of the impact (the textbook model) instead of letting the line of "
+      "centres turn as in LAMMPS");
   cmd->add_option("--tangential", o->tangential,
                   "tangential model: linear_nohistory, linear_history or mindlin")
       ->check(CLI::IsMember(tangential_names()))
@@ -239,8 +250,8 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
       ->check(CLI::IsMember(end_names()))
       ->capture_default_str();
   cmd->add_option("--torque-arm", o->torque_arm,
-                  "radius, or radius-minus-half-overlap (LAMMPS's pair granular)")
-      ->check(CLI::IsMember({"radius", "radius-minus-half-overlap"}))
+                  "lammps (R - delta/2 for a pair, R for a wall), radius or radius-minus-half-overlap")
+      ->check(CLI::IsMember({"lammps", "radius", "radius-minus-half-overlap"}))
       ->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance, "CVODE's relative tolerance, in [1e-14, 1e-2]")
       ->capture_default_str();

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "restitution/restitution.hpp"
+#include "restitution/version.hpp"
 
 // RESTITUTION_LIBRARY_VERSION and RESTITUTION_LIBRARY_COMMIT come from cmake/version.cmake, set on this file
 // alone (src/CMakeLists.txt), so that a new commit recompiles one file.
