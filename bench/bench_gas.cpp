@@ -8,7 +8,7 @@
 
 #include <numbers>
 
-#include "restitution/gas.hpp"
+#include "gas/cooling.hpp"
 
 namespace {
 

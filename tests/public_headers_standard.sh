@@ -11,7 +11,7 @@ source=$1
 cxx=${2:-c++}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-needs_cxx20="calibration.hpp collision_solver.hpp contact_law.hpp fast.hpp fit.hpp gas.hpp material.hpp restitution.hpp series.hpp solve_types.hpp sweep.hpp units.hpp"
+needs_cxx20="calibration.hpp collision_solver.hpp contact_law.hpp fast.hpp fit.hpp material.hpp restitution.hpp series.hpp solve_types.hpp sweep.hpp units.hpp"
 status=0
 failing17=""
 for header in "$source"/include/restitution/*.hpp; do

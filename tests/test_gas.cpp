@@ -11,9 +11,10 @@
 #include <numbers>
 #include <string>
 
+#include "gas/collision_integral.hpp"
+#include "gas/cooling.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/gas.hpp"
 #include "restitution/series.hpp"
 
 namespace restitution::gas {

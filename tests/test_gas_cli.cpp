@@ -9,7 +9,7 @@
 #include <string>
 
 #include "cli_runner.hpp"
-#include "restitution/gas.hpp"
+#include "gas/cooling.hpp"
 #include "restitution/material.hpp"
 
 namespace restitution::gas {

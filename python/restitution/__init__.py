@@ -33,7 +33,7 @@ from ._restitution import CollisionResult, EndResult, Calibration, Material, Max
 from ._restitution import NumericalFailure, SolverStats
 from ._restitution import __version__  # the file VERSION at the root of the checkout
 
-__all__ = ["__version__", "eps", "solve", "calibrate", "fit_data", "gas", "zeta_of", "build_info", "Material",
+__all__ = ["__version__", "eps", "solve", "calibrate", "fit_data", "zeta_of", "build_info", "Material",
            "NumericalFailure", "CollisionResult", "EndResult", "MaxCompression", "SolverStats", "Calibration", "series",
            "fast"]
 
@@ -492,46 +492,3 @@ def sweep_to_file(zetas, path, *, resume=False, end="both", tolerance=_TOLERANCE
 
 
 __all__.append("sweep_to_file")
-
-
-_GAS_ARRAYS = ("time_s", "temperature_j", "haff_temperature_j", "local_exponent", "cooling_rate_hz",
-               "collision_frequency_hz", "collisions_per_particle", "effective_eps")
-
-
-def gas(*, mass, diameter, packing_fraction, eps=None, velocity=None, beta=None, law="viscoelastic-hertz",
-        end="delayed-recovery", rms_speed=None, temperature=None, duration=None, haff_times=None,
-        points_per_decade=20, a2=None, collision_rate_factor=1.0, tolerance=_TOLERANCE):
-    """The freely cooling gas of identical spheres from kinetic theory with the law's exact eps(v) (docs/gas.md).
-
-    mass [kg], diameter [m], packing_fraction in (0, 0.5); the law: eps at the impact speed velocity [m/s]
-    (calibrated for law, any member), or beta [s^(1/5) m^(-1/5)] of viscoelastic Hertz (e.g. Material.beta);
-    end as for eps(); exactly one of rms_speed [m/s per direction] and temperature (T0 = m<v^2>/3 [J]); exactly
-    one of duration [s] and haff_times (in Haff times tau0); a2: a constant first Sonine coefficient (None:
-    Maxwellian); collision_rate_factor on Enskog's rate. Returns a dict with the keys of
-    `restitution gas --json`: "tau0_s" (Haff's law tangent at t = 0), "haff_eps", "a2", "contact_correlation",
-    "number_density_m3", "duration_s", ... and numpy arrays "time_s", "temperature_j", "haff_temperature_j",
-    "local_exponent", "cooling_rate_hz", "collision_frequency_hz", "collisions_per_particle", "effective_eps"
-    on a log-spaced time grid (six decades, points_per_decade each). Raises ValueError naming a bad argument.
-    """
-    numbers = {"mass": mass, "diameter": diameter, "packing_fraction": packing_fraction, "eps": eps,
-               "velocity": velocity, "beta": beta, "rms_speed": rms_speed, "temperature": temperature,
-               "duration": duration, "haff_times": haff_times, "a2": a2,
-               "collision_rate_factor": collision_rate_factor}
-    for name, value in numbers.items():
-        if value is None and name not in ("mass", "diameter", "packing_fraction", "collision_rate_factor"):
-            continue
-        if isinstance(value, bool) or not isinstance(value, _numbers.Real):
-            raise TypeError(f"{name} must be a real number, got {type(value).__name__}")
-    if isinstance(points_per_decade, bool) or not isinstance(points_per_decade, _numbers.Integral):
-        raise TypeError(f"points_per_decade must be an int, got {type(points_per_decade).__name__}")
-    law = _law(law, beta=beta)
-    result = _core.gas(float(mass), float(diameter), float(packing_fraction),
-                       *(None if numbers[k] is None else float(numbers[k]) for k in ("eps", "velocity", "beta")),
-                       law, _text("end", end),
-                       *(None if numbers[k] is None else float(numbers[k])
-                         for k in ("rms_speed", "temperature", "duration", "haff_times")),
-                       int(points_per_decade), None if a2 is None else float(a2), float(collision_rate_factor),
-                       _tolerance(tolerance))
-    for key in _GAS_ARRAYS:
-        result[key] = _np.asarray(result[key], dtype=_np.float64)
-    return result

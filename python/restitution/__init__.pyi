@@ -250,26 +250,6 @@ def calibrate(
     law: Law = ...,
 ) -> Calibration: ...
 
-def gas(
-    *,
-    mass: float,  # kg
-    diameter: float,  # m
-    packing_fraction: float,
-    eps: Optional[float] = ...,
-    velocity: Optional[float] = ...,  # m/s
-    beta: Optional[float] = ...,  # s^(1/5) m^(-1/5)
-    law: Law = ...,
-    end: End = ...,
-    rms_speed: Optional[float] = ...,  # m/s per direction
-    temperature: Optional[float] = ...,  # J
-    duration: Optional[float] = ...,  # s
-    haff_times: Optional[float] = ...,
-    points_per_decade: int = ...,
-    a2: Optional[float] = ...,
-    collision_rate_factor: float = ...,
-    tolerance: float = ...,
-) -> Dict[str, Any]: ...
-
 def fit_data(
     v: ArrayLike,  # m/s
     eps: ArrayLike,

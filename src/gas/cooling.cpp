@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "restitution/gas.hpp"
+#include "gas/cooling.hpp"
+#include "gas/collision_integral.hpp"
 
 #include <fmt/core.h>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "restitution/gas.hpp"
+#include "gas/impact_law.hpp"
 
 #include <fmt/core.h>
 

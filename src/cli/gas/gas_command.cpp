@@ -18,6 +18,7 @@
 #include "cli/common/json_writer.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
+#include "cli/gas/gas_deck_options.hpp"
 #include "cli/gas/gas_options.hpp"
 #include "cli/gas/gas_table.hpp"
 
@@ -26,6 +27,7 @@ namespace {
 
 struct GasCommandOptions {
   GasOptions gas;
+  GasDeckOptions deck;  // --deck, --compare (cli/gas/gas_deck_options.hpp)
   bool json = false;
   std::string out;   // CSV file
   std::string plot;  // PNG file
@@ -112,6 +114,7 @@ void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const
 }
 
 int run_gas(const GasCommandOptions& o) {
+  if (gas_deck_requested(o.deck)) return run_gas_deck(o.deck, o.gas, o.json);
   if (!o.out.empty()) check_output_file(o.out);
   if (!o.plot.empty()) check_output_file(o.plot);
   const gas::CoolingRequest request = cooling_request(o.gas);
@@ -132,6 +135,7 @@ void add_gas_command(CLI::App& app, Action& chosen) {
       "the freely cooling gas of these spheres from kinetic theory with the exact eps(v): T(t), Haff's "
       "tau0, the local exponent (docs/gas.md)");
   add_gas_options(*cmd, o->gas);
+  add_gas_deck_options(*cmd, o->deck);
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->add_option("--out", o->out, "write the curve to this CSV file")->check(non_empty_path());

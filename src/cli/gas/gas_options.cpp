@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "cli/common/options.hpp"
+#include "gas/collision_integral.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/gas.hpp"
 #include "restitution/material.hpp"
 #include "restitution/units.hpp"
 

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "cli/common/material_options.hpp"
-#include "restitution/gas.hpp"
+#include "gas/cooling.hpp"
 
 namespace restitution::cli {
 

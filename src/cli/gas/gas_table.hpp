@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "restitution/gas.hpp"
+#include "gas/cooling.hpp"
 
 namespace restitution::cli {
 
