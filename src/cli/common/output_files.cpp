@@ -203,7 +203,7 @@ std::string number17(double value) {
 std::vector<std::string> figure_file_names(const std::string& stem, const std::vector<std::string>& formats) {
   std::vector<std::string> names;
   names.reserve(formats.size());
-  for (const std::string& format : formats) names.push_back(stem + "." + format);
+  for (const std::string& format : formats) names.push_back(fmt::format("{}.{}", stem, format));
   return names;
 }
 
@@ -221,7 +221,8 @@ std::string run_plot_script(const std::string& script, const fs::path& data, con
   }
   // matplotlib picks the format by the extension, so the temporary names keep it: NAME.tmp.png, ...
   const auto figure = [&](const std::string& format, bool temporary) {
-    return image.parent_path() / (image.stem().string() + (temporary ? ".tmp." : ".") + format);
+    return image.parent_path() /
+           fmt::format("{}{}{}", image.stem().string(), temporary ? ".tmp." : ".", format);
   };
   std::string format_list;
   for (const std::string& format : formats) format_list += (format_list.empty() ? "" : ",") + format;
