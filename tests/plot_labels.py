@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: BSD-3-Clause
 """The report figures are fit for a paper (issue 36): every figure of every shipped scene and of the commands
-that draw one (`series validate`, `stability`) is drawn by the program itself, and each figure's texts are
+that draw one (`series validate`, `stability`, `gas --plot`) is drawn by the program itself, and each figure's texts are
 judged as matplotlib holds them (tests/plot_hook/sitecustomize.py records them):
 
 * axis labels carry a mathtext symbol or a unit, and a physical quantity always its unit (or "scaled");
@@ -78,13 +78,16 @@ def main(exe, source):
             pngs += sum(1 for f in os.listdir(out) if f.endswith(".png"))
         run(exe, ["series", "validate", "--out", os.path.join(folder, "series")], env, source)
         run(exe, ["stability", "--tolerance", "1e-6", "--out", os.path.join(folder, "stability")], env, source)
-        pngs += 2
+        run(exe, ["gas", "--radius", "0.005", "--density", "920", "--eps", "0.8", "--velocity", "2",
+                  "--packing-fraction", "0.1", "--rms-speed", "1", "--haff-times", "100", "--points-per-decade", "4",
+                  "--plot", os.path.join(folder, "gas.png")], env, source)
+        pngs += 3
         with open(log) as f:
             figures = [json.loads(line) for line in f]
         # Each PNG written was recorded (the hook ran in every plot script), and none of them has a problem.
         recorded = sum(1 for fig in figures if fig["format"] == "png")
-        if recorded != pngs or pngs < 15:
-            failures.append(f"{recorded} figures recorded, {pngs} PNG files written (expected >= 15)")
+        if recorded != pngs or pngs < 16:
+            failures.append(f"{recorded} figures recorded, {pngs} PNG files written (expected >= 16)")
         for figure in figures:
             failures += problems_of(figure)
 
