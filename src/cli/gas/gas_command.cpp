@@ -4,6 +4,7 @@
 // the cooling rate, the collision frequency and ε_eff(T), as a table, JSON, CSV and a plot.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -17,6 +18,7 @@
 #include "cli/common/output_files.hpp"
 #include "cli/gas/gas_deck_options.hpp"
 #include "cli/gas/gas_options.hpp"
+#include "scene/figure_formats.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -113,9 +115,15 @@ void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const
   // Without --out the plot reads a scratch copy of the table beside the image, removed afterwards.
   const std::filesystem::path data(o.out.empty() ? o.plot + ".data.csv" : o.out);
   if (o.out.empty()) write_file_atomically(data, table);
+  // The format the file's name asks for (gas.pdf, gas.svg); PNG for any other name.
+  const std::string extension = std::filesystem::path(o.plot).extension().string();
+  const bool known =
+      extension.size() > 1 && std::find(scene::kFigureFormats.begin(), scene::kFigureFormats.end(),
+                                        extension.substr(1)) != scene::kFigureFormats.end();
   const std::string why = run_plot_script(
       "gas_cooling", data, o.plot,
-      {number17(r.initial_temperature_j), number17(c.tau0_s), number17(c.haff_eps), law_text(r)});
+      {number17(r.initial_temperature_j), number17(c.tau0_s), number17(c.haff_eps), law_text(r)},
+      {known ? extension.substr(1) : "png"});
   if (o.out.empty()) {
     std::error_code ignored;
     std::filesystem::remove(data, ignored);
