@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
@@ -21,6 +22,7 @@
 #include "cli/gas/gas_deck_options.hpp"
 #include "cli/gas/gas_options.hpp"
 #include "cli/gas/gas_table.hpp"
+#include "scene/figure_formats.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -105,7 +107,13 @@ void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const
   // Without --out the plot reads a scratch copy of the table beside the image, removed afterwards.
   const std::filesystem::path data(o.out.empty() ? o.plot + ".data.csv" : o.out);
   if (o.out.empty()) write_file_atomically(data, table);
-  const std::string why = run_plot_script("gas_cooling", data, o.plot, gas_plot_arguments(r, c));
+  // The format the file's name asks for (gas.pdf, gas.svg); PNG for any other name.
+  const std::string extension = std::filesystem::path(o.plot).extension().string();
+  const bool known =
+      extension.size() > 1 && std::find(scene::kFigureFormats.begin(), scene::kFigureFormats.end(),
+                                        extension.substr(1)) != scene::kFigureFormats.end();
+  const std::string why = run_plot_script("gas_cooling", data, o.plot, gas_plot_arguments(r, c),
+                                          {known ? extension.substr(1) : "png"});
   if (o.out.empty()) {
     std::error_code ignored;
     std::filesystem::remove(data, ignored);
