@@ -38,8 +38,8 @@ class ImpactDissipation {
   // tolerance: accuracy of each solve for the members without a fast table (SolveOptions::tolerance).
   explicit ImpactDissipation(const ImpactLaw& law, double tolerance = SolveOptions{}.tolerance);
   ~ImpactDissipation();
-  ImpactDissipation(ImpactDissipation&&) noexcept;
-  ImpactDissipation& operator=(ImpactDissipation&&) noexcept;
+  ImpactDissipation(ImpactDissipation&& other) noexcept;
+  ImpactDissipation& operator=(ImpactDissipation&& other) noexcept;
   ImpactDissipation(const ImpactDissipation&) = delete;
   ImpactDissipation& operator=(const ImpactDissipation&) = delete;
 

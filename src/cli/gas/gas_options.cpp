@@ -132,6 +132,14 @@ gas::CoolingRequest cooling_request(const GasOptions& o) {
   require_positive(o.haff_times, "--haff-times", "");
   r.duration = one_of(o.duration, "--duration", o.haff_times, "--haff-times");
   r.duration_in_haff_times = o.haff_times.has_value();
+  if (!std::isfinite(o.first_time) || o.first_time < 0.0) {
+    throw InvalidInput(
+        fmt::format("--first-time must be finite and >= 0 s (0: six decades), got {}", o.first_time));
+  }
+  if (o.points_per_decade < 1 || o.points_per_decade > 1000) {
+    throw InvalidInput(fmt::format("--points-per-decade must be in [1, 1000], got {}", o.points_per_decade));
+  }
+  require_positive(std::optional<double>(o.collision_rate_factor), "--collision-rate-factor", "");
   r.first_time_s = o.first_time;
   r.points_per_decade = o.points_per_decade;
   r.collision_rate_factor = o.collision_rate_factor;

@@ -16,6 +16,7 @@
 #include "cli/scene/scene_damping.hpp"
 #include "cli/scene/scene_dem.hpp"
 #include "cli/scene/scene_fit_section.hpp"
+#include "cli/scene/scene_gas.hpp"
 #include "cli/scene/scene_tables.hpp"
 #include "cli/scene/scene_text.hpp"
 #include "cli/solve/work_precision_files.hpp"
@@ -88,6 +89,7 @@ class SceneWriter {
       order.emplace_back(scene_.damping_checks[i].line, 4, i);
     }
     for (std::size_t i = 0; i < scene_.fits.size(); ++i) order.emplace_back(scene_.fits[i].line, 5, i);
+    for (std::size_t i = 0; i < scene_.gases.size(); ++i) order.emplace_back(scene_.gases[i].line, 6, i);
     std::sort(order.begin(), order.end());
     for (const auto& [line, kind, i] : order) {
       if (kind == 0) sweep(i);
@@ -96,6 +98,7 @@ class SceneWriter {
       if (kind == 3) dem(i);
       if (kind == 4) damping_check(i);
       if (kind == 5) fit(i);
+      if (kind == 6) gas(i);
     }
     calibrations();
     studies();
@@ -352,6 +355,21 @@ class SceneWriter {
       report_ += p.caption;
     }
     report_ += section.findings;
+  }
+
+  // [[gas]]: T(t)/T0 and the local exponent with Haff's law; Haff's tau0 and the curve's end in summary.json.
+  void gas(std::size_t i) {
+    const scene::GasTask& task = scene_.gases[i];
+    const GasSection section = gas_section(scene_, task);
+    write_file(task.name + ".csv", section.csv);
+    report_ += fmt::format("## {}\n\n", task.title);
+    report_ += plot("gas_cooling", task.name, section.plot_args);
+    report_ += section.markdown;
+    const gas::CoolingCurve& c = section.curve;
+    json_.key("gas_" + task.name).begin_object();
+    json_.field("tau0_s", c.tau0_s).field("haff_eps", c.haff_eps).field("duration_s", c.duration_s);
+    json_.field("final_temperature_j", c.temperature_j.back());
+    json_.field("final_local_exponent", c.local_exponent.back()).end_object();
   }
 
   // [[fit]]: the data with error bars, each law's curve with its 95 % band and the residuals (one plot), the
