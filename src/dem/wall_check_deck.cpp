@@ -50,25 +50,26 @@ std::string pass(const WallResult& w, double dt, long steps) {
 
 }  // namespace
 
-std::string wall_check_deck(const WallResult& w, int steps_per_time) {
-  if (w.deck.code != Code::lammps) throw InvalidInput("--wall --deck: only lammps has a wall check deck");
-  if (w.eps.empty()) throw InvalidInput("--wall --deck needs at least one speed");
+std::string wall_check_deck(const WallResult& result, int steps_per_time) {
+  if (result.deck.code != Code::lammps)
+    throw InvalidInput("--wall --deck: only lammps has a wall check deck");
+  if (result.eps.empty()) throw InvalidInput("--wall --deck needs at least one speed");
   const int n = steps_per_time > 0 ? steps_per_time : kDefaultSteps;
   double v_min = INFINITY;
   double v_max = 0.0;
-  for (const SpeedEps& e : w.eps) {
+  for (const SpeedEps& e : result.eps) {
     v_min = std::min(v_min, e.velocity_m_s);
     v_max = std::max(v_max, e.velocity_m_s);
   }
   // The fastest impact sets dt, the slowest the run (five natural times: the contact is over after three).
-  const double dt = natural_time_s(w.contact, v_max) / n;
-  const long steps = std::lround(std::ceil(5.0 * natural_time_s(w.contact, v_min) / dt));
-  const double sphere_steps = static_cast<double>(w.eps.size()) * 11.0 * static_cast<double>(steps);
+  const double dt = natural_time_s(result.contact, v_max) / n;
+  const long steps = std::lround(std::ceil(5.0 * natural_time_s(result.contact, v_min) / dt));
+  const double sphere_steps = static_cast<double>(result.eps.size()) * 11.0 * static_cast<double>(steps);
   if (sphere_steps > kMaxDeckSphereSteps) {
     throw InvalidInput(fmt::format(
         "--deck: {} spheres x {} steps (both passes) = {:.3g} sphere-steps; a wall check deck takes at most "
         "{:.3g}: give speeds closer together",
-        w.eps.size(), 11 * steps, sphere_steps, kMaxDeckSphereSteps));
+        result.eps.size(), 11 * steps, sphere_steps, kMaxDeckSphereSteps));
   }
   std::string d = fmt::format(
       "# restitution wall check deck: run `lmp -in FILE`. Spheres of R = {} m, m = {} kg on a {} wall "
@@ -76,25 +77,25 @@ std::string wall_check_deck(const WallResult& w, int steps_per_time) {
       "repeats "
       "at dt = T/{} and T/{}, and one line per speed prints\n# {} code=lammps types=1,0 speed=V eps_10dt "
       "eps_dt eps_code (Richardson) eps_restitution rel_diff gap_m\n",
-      w.contact.radius1_m, w.contact.mass1_kg, w.rigid_wall ? "rigid" : "given",
-      w.contact.effective_modulus_pa, w.dissipative_constant_s, n, 10 * n, kCheckTag);
+      result.contact.radius1_m, result.contact.mass1_kg, result.rigid_wall ? "rigid" : "given",
+      result.contact.effective_modulus_pa, result.dissipative_constant_s, n, 10 * n, kCheckTag);
   d += fmt::format("\n# pass 1 of 2: dt = T/{} = {} s\n", n, dt);
-  d += pass(w, dt, steps);
-  for (std::size_t i = 0; i < w.eps.size(); ++i)
+  d += pass(result, dt, steps);
+  for (std::size_t i = 0; i < result.eps.size(); ++i)
     d += fmt::format("variable rc_10dt{0} equal ${{rc_eps{0}}}\n", i);
   d += "clear\n";
   d += fmt::format("\n# pass 2 of 2: dt = T/{} = {} s\n", 10 * n, dt / 10.0);
-  d += pass(w, dt / 10.0, 10 * steps);
+  d += pass(result, dt / 10.0, 10 * steps);
   d += "\n# the check lines\n";
-  for (std::size_t i = 0; i < w.eps.size(); ++i) {
-    const double eps = w.eps[i].eps;
+  for (std::size_t i = 0; i < result.eps.size(); ++i) {
+    const double eps = result.eps[i].eps;
     d += fmt::format("variable rc_dt{0} equal ${{rc_eps{0}}}\n", i);
     d += fmt::format("variable rc_code{0} equal (10*v_rc_dt{0}-v_rc_10dt{0})/9\n", i);
     d += fmt::format("variable rc_diff{0} equal (v_rc_code{0}-{1})/{1}\n", i, eps);
     d += fmt::format(
         "print \"{1} code=lammps types=1,0 speed={2} eps_10dt=${{rc_10dt{0}}} eps_dt=${{rc_dt{0}}} "
         "eps_code=${{rc_code{0}}} eps_restitution={3} rel_diff=${{rc_diff{0}}} gap_m=${{rc_gap{0}}}\"\n",
-        i, kCheckTag, w.eps[i].velocity_m_s, eps);
+        i, kCheckTag, result.eps[i].velocity_m_s, eps);
   }
   return d;
 }
