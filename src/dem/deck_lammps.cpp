@@ -91,22 +91,26 @@ void write_lammps_wall(Deck& d, const Pair& contact, double shear_modulus_pa, do
                   d.end == CollisionEnd::delayed_recovery ? " limit_damping" : "")};
   d.prerequisites = {"units si", "atom_style sphere"};
   d.checked_on = "LAMMPS 29 Sep 2021 - Update 2 (Debian 12's lammps 20220106.git7586adbb6a)";
-  d.notes = {
+  const std::string convention =
       "fix wall/gran granular: the wall's own convention, not pair granular's; the same pair_coeff string on "
       "a "
-      "wall gives another eps (steel: 0.856 on a wall against 0.900 for a pair at 1 m/s)",
+      "wall gives another eps (steel: 0.856 on a wall against 0.900 for a pair at 1 m/s)";
+  const std::string wallstyle =
       "zplane 0 NULL is an example wall: any wallstyle (xplane, yplane, zcylinder, region) keeps the "
       "numbers; "
-      "for a curved wall R* is no longer R",
-      mu > 0.0 ? fmt::format("tangential mindlin {} 1 mu: k_t = 8 G* a, G* of sphere and wall, given as a "
-                             "number (the wall's NULL gives E (2 - nu)(1 + nu)/4 instead)",
-                             num(kt))
-               : "tangential linear_nohistory 0 0: frictionless (x_gamma_t = 0, mu_s = 0)",
-      friction_note(mu),
-      clamp_note(d.code, d.end),
-      "eta_n0 contains 1/m: exact only for the sphere it was made for (R = " +
-          num(contact.effective_radius_m) + " m, m = " + num(contact.effective_mass_kg) +
-          " kg); other spheres get A' = A m' / m"};
+      "for a curved wall R* is no longer R";
+  d.notes = {convention,
+             wallstyle,
+             mu > 0.0
+                 ? fmt::format("tangential mindlin {} 1 mu: k_t = 8 G* a, G* of sphere and wall, given as a "
+                               "number (the wall's NULL gives E (2 - nu)(1 + nu)/4 instead)",
+                               num(kt))
+                 : "tangential linear_nohistory 0 0: frictionless (x_gamma_t = 0, mu_s = 0)",
+             friction_note(mu),
+             clamp_note(d.code, d.end),
+             "eta_n0 contains 1/m: exact only for the sphere it was made for (R = " +
+                 num(contact.effective_radius_m) + " m, m = " + num(contact.effective_mass_kg) +
+                 " kg); other spheres get A' = A m' / m"};
 }
 
 }  // namespace restitution::dem
