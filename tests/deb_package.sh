@@ -15,7 +15,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 # What the package installs must be built (a no-op after scripts/test's full build).
-cmake --build "$build" --target restitution restitution_lib restitution_shared restitution_man_page >/dev/null
+targets=(restitution restitution_lib restitution_shared restitution_man_page)
+if cmake --build "$build" --target help | grep -q '^_restitution:'; then targets+=(_restitution); fi  # the Python module
+cmake --build "$build" --target "${targets[@]}" >/dev/null
 (cd "$build" && cpack -G DEB -B "$work" >"$work/cpack.log" 2>&1) || { tail -30 "$work/cpack.log"; echo "cpack failed"; exit 1; }
 deb=$(ls "$work"/restitution_*.deb)
 version=$(cmake -DROOT="$source" -P "$source/cmake/version.cmake" | sed -n 1p)

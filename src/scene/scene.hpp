@@ -149,6 +149,7 @@ struct Scene {
   std::filesystem::path output;  // as written in the file (relative paths: to the working directory)
   double tolerance = SolveOptions{}.tolerance;
   Method method = SolveOptions{}.method;
+  std::vector<std::string> figure_formats{"png"};  // `format`: each figure in each (figure_formats.hpp)
   std::map<std::string, Material> materials;
   std::vector<Sweep> sweeps;
   std::vector<Trajectory> trajectories;

@@ -16,6 +16,7 @@
 #include "reference/work_precision.hpp"
 #include "restitution/errors.hpp"
 #include "restitution_series_study/series_named.hpp"
+#include "scene/figure_formats.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_approximations.hpp"
 #include "scene/toml_ascii.hpp"
@@ -159,6 +160,13 @@ class Parser {
         scene_.method = method_from_name(*method);
       } catch (const InvalidInput& e) {
         root_.fail("method", e.what());
+      }
+    }
+    if (const auto formats = root_.words("format")) {
+      try {
+        scene_.figure_formats = figure_formats(*formats);
+      } catch (const InvalidInput& e) {
+        root_.fail("format", e.what());
       }
     }
     if (const toml::table* materials = root_.table("materials")) {

@@ -4,6 +4,7 @@
 // the cooling rate, the collision frequency and ε_eff(T), as a table, JSON, CSV and a plot.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -15,13 +16,16 @@
 #include "cli/common/json_writer.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
+#include "cli/gas/gas_deck_options.hpp"
 #include "cli/gas/gas_options.hpp"
+#include "scene/figure_formats.hpp"
 
 namespace restitution::cli {
 namespace {
 
 struct GasCommandOptions {
   GasOptions gas;
+  GasDeckOptions deck;  // --deck, --compare (cli/gas/gas_deck_options.hpp)
   bool json = false;
   std::string out;   // CSV file
   std::string plot;  // PNG file
@@ -111,9 +115,15 @@ void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const
   // Without --out the plot reads a scratch copy of the table beside the image, removed afterwards.
   const std::filesystem::path data(o.out.empty() ? o.plot + ".data.csv" : o.out);
   if (o.out.empty()) write_file_atomically(data, table);
+  // The format the file's name asks for (gas.pdf, gas.svg); PNG for any other name.
+  const std::string extension = std::filesystem::path(o.plot).extension().string();
+  const bool known =
+      extension.size() > 1 && std::find(scene::kFigureFormats.begin(), scene::kFigureFormats.end(),
+                                        extension.substr(1)) != scene::kFigureFormats.end();
   const std::string why = run_plot_script(
       "gas_cooling", data, o.plot,
-      {number17(r.initial_temperature_j), number17(c.tau0_s), number17(c.haff_eps), law_text(r)});
+      {number17(r.initial_temperature_j), number17(c.tau0_s), number17(c.haff_eps), law_text(r)},
+      {known ? extension.substr(1) : "png"});
   if (o.out.empty()) {
     std::error_code ignored;
     std::filesystem::remove(data, ignored);
@@ -122,6 +132,7 @@ void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const
 }
 
 int run_gas(const GasCommandOptions& o) {
+  if (gas_deck_requested(o.deck)) return run_gas_deck(o.deck, o.gas, o.json);
   if (!o.out.empty()) check_output_file(o.out);
   if (!o.plot.empty()) check_output_file(o.plot);
   const gas::CoolingRequest request = cooling_request(o.gas);
@@ -144,6 +155,7 @@ void add_gas_command(CLI::App& app, Action& chosen) {
       "the freely cooling gas of these spheres from kinetic theory with the exact eps(v): T(t), Haff's "
       "tau0, the local exponent (docs/gas.md)");
   add_gas_options(*cmd, o->gas);
+  add_gas_deck_options(*cmd, o->deck);
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->add_option("--out", o->out, "write the curve to this CSV file")->check(non_empty_path());
