@@ -19,6 +19,7 @@
 #include "cli/dem/dem_polydisperse_output.hpp"
 #include "cli/dem/dem_production.hpp"
 #include "cli/dem/dem_type_options.hpp"
+#include "cli/dem/dem_wall.hpp"
 #include "cli/dem/from_fit.hpp"
 #include "damping_check/yade_version_lines.hpp"
 #include "dem/lines_check.hpp"
@@ -47,6 +48,7 @@ struct DemOptions {
   std::optional<std::string> deck;  // --deck FILE: the check deck (cli/dem/dem_deck.hpp)
   std::string deck_run;             // the command that runs it, once written
   ProductionOptions production;     // --timestep, --max-eps-error, --constant-eps
+  WallOptions wall;                 // --wall: a sphere on a wall (cli/dem/dem_wall.hpp)
 };
 
 // The YADE the lines are for: --yade-version, else `yade --version` of the one on PATH, else the newest
@@ -251,6 +253,30 @@ int run_polydisperse(const DemOptions& o) {
   return 0;
 }
 
+// --wall: one sphere on a wall; the options of pairs and type sets are refused by name.
+int run_wall(const DemOptions& o) {
+  if (several_types(o.types) || o.types.radius2 || o.types.mass2) {
+    throw InvalidInput("--wall takes one sphere: one --radius, no --radius2, --mass2 or --radius-range");
+  }
+  if (!o.from_fit.empty() || !o.yade_version.empty() || any_production_option(o.production)) {
+    throw InvalidInput(
+        "--wall takes --eps/--velocity or --dissipative-constant, not --from-fit, --yade-version, "
+        "--timestep, --max-eps-error or --constant-eps");
+  }
+  dem::WallRequest request;
+  request.code = dem::code_from_name(o.code);
+  request.end = end_from_name(o.end);
+  request.sphere = material_from(one_pair_material(o.types));
+  request.wall = wall_material(o.wall);
+  request.damping = {o.dissipative_constant, o.eps, o.velocity};
+  request.speeds_m_s = o.speeds;
+  request.tolerance = o.tolerance;
+  request.friction = o.friction;
+  const dem::WallResult r = dem::wall_lines(request);
+  print_wall(r, o.json, o.deck);
+  return 0;
+}
+
 }  // namespace
 
 void add_dem_command(CLI::App& app, Action& chosen) {
@@ -298,11 +324,16 @@ void add_dem_command(CLI::App& app, Action& chosen) {
                   dem::max_deck_types(dem::Code::lammps, 3), dem::kMaxDeckSphereSteps,
                   dem::kMaxDeckCollisionsYade));
   add_production_options(*cmd, o->production);
+  add_wall_options(*cmd, o->wall);
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, cmd, &chosen] {
     o->end_given = cmd->count("--end") > 0;
     chosen = [o] {
+      if (o->wall.wall || o->wall.young_modulus || o->wall.poisson_ratio) {
+        if (o->deck) check_deck_target(*o->deck, dem::code_from_name(o->code));
+        return run_wall(*o);
+      }
       if (o->deck) check_deck_target(*o->deck, dem::code_from_name(o->code));
       if (several_types(o->types)) return run_polydisperse(*o);
       if (o->deck) check_deck_size(dem::code_from_name(o->code), 1, o->speeds.size());
