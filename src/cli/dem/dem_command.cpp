@@ -15,6 +15,7 @@
 #include "cli/common/commands.hpp"
 #include "cli/common/json_writer.hpp"
 #include "cli/common/material_options.hpp"
+#include "cli/dem/deck_json.hpp"
 #include "cli/dem/dem_deck.hpp"
 #include "cli/dem/dem_polydisperse_output.hpp"
 #include "cli/dem/dem_production.hpp"
@@ -122,26 +123,8 @@ void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optio
   json.field("code", dem::code_name(r.deck.code)).field("end", end_name(r.deck.end));
   json.field("dissipative_constant_s", r.dissipative_constant_s);
   json.field("reference_velocity_m_s", r.reference_velocity_m_s).field("friction", r.friction);
-  json.key("parameters").begin_object();
-  for (const auto& p : r.deck.parameters) json.field(p.name, p.value);
-  json.end_object();
-  json.key("meanings").begin_object();
-  for (const auto& p : r.deck.parameters) json.field(p.name, p.meaning);
-  json.end_object();
-  json.key("prerequisites").begin_array();
-  for (const auto& line : r.deck.prerequisites) json.value(line);
-  json.end_array();
-  if (!r.deck.checked_on.empty()) json.field("checked_on", r.deck.checked_on);
-  json.key("lines").begin_array();
-  for (const auto& line : r.deck.lines) json.value(line);
-  json.end_array();
-  json.key("notes").begin_array();
-  for (const auto& note : r.deck.notes) json.value(note);
-  json.end_array();
-  json.key("eps").begin_array();
-  for (const auto& e : r.eps)
-    json.begin_object().field("velocity_m_s", e.velocity_m_s).field("eps", e.eps).end_object();
-  json.end_array();
+  write_deck_json(json, r.deck);
+  write_speed_eps_json(json, r.eps);
   json.key("sizes").begin_array();
   for (const auto& s : r.sizes) {
     json.begin_object().field("radius_factor", s.radius_factor);

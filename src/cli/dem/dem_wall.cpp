@@ -7,6 +7,7 @@
 #include "cli/common/build_json.hpp"
 #include "cli/common/json_writer.hpp"
 #include "cli/common/output_files.hpp"
+#include "cli/dem/deck_json.hpp"
 #include "dem/check_deck.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
@@ -29,26 +30,8 @@ void print_json(const dem::WallResult& r, const std::optional<std::string>& deck
   json.field("effective_mass_kg", r.contact.effective_mass_kg);
   json.field("dissipative_constant_s", r.dissipative_constant_s);
   json.field("reference_velocity_m_s", r.reference_velocity_m_s).field("friction", r.friction);
-  json.key("parameters").begin_object();
-  for (const auto& p : r.deck.parameters) json.field(p.name, p.value);
-  json.end_object();
-  json.key("meanings").begin_object();
-  for (const auto& p : r.deck.parameters) json.field(p.name, p.meaning);
-  json.end_object();
-  json.key("prerequisites").begin_array();
-  for (const auto& line : r.deck.prerequisites) json.value(line);
-  json.end_array();
-  json.field("checked_on", r.deck.checked_on);
-  json.key("lines").begin_array();
-  for (const auto& line : r.deck.lines) json.value(line);
-  json.end_array();
-  json.key("notes").begin_array();
-  for (const auto& note : r.deck.notes) json.value(note);
-  json.end_array();
-  json.key("eps").begin_array();
-  for (const auto& e : r.eps)
-    json.begin_object().field("velocity_m_s", e.velocity_m_s).field("eps", e.eps).end_object();
-  json.end_array();
+  write_deck_json(json, r.deck);
+  write_speed_eps_json(json, r.eps);
   if (deck) json.key("deck").begin_object().field("file", *deck).field("run", run).end_object();
   fmt::print("{}\n", finish_json_document(json));
 }

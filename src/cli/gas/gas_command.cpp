@@ -35,22 +35,6 @@ struct GasCommandOptions {
   std::string plot;  // PNG file
 };
 
-// The arrays of the JSON, each with its values.
-struct Column {
-  const char* name;
-  const std::vector<double>* values;
-};
-std::vector<Column> columns(const gas::CoolingCurve& c) {
-  return {{"time_s", &c.time_s},
-          {"temperature_j", &c.temperature_j},
-          {"haff_temperature_j", &c.haff_temperature_j},
-          {"local_exponent", &c.local_exponent},
-          {"cooling_rate_hz", &c.cooling_rate_hz},
-          {"collision_frequency_hz", &c.collision_frequency_hz},
-          {"collisions_per_particle", &c.collisions_per_particle},
-          {"effective_eps", &c.effective_eps}};
-}
-
 std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const GasCommandOptions& o) {
   JsonWriter json;
   json.begin_object();
@@ -64,7 +48,7 @@ std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, 
   json.field("initial_temperature_j", r.initial_temperature_j);
   json.field("tau0_s", c.tau0_s).field("haff_eps", c.haff_eps).field("a2", c.a2);
   json.field("collision_rate_factor", r.collision_rate_factor).field("duration_s", c.duration_s);
-  for (const Column& col : columns(c)) {
+  for (const GasColumn& col : gas_columns(c)) {
     json.key(col.name).begin_array();
     for (const double v : *col.values) json.value(v);
     json.end_array();
