@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "gas/cooling.hpp"
 #include "gas_deck/gas_log.hpp"
 #include "gas_deck/lammps_gas_deck.hpp"
+#include "restitution_gas/cooling.hpp"
 
 namespace restitution::gas_deck {
 
