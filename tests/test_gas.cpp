@@ -12,10 +12,10 @@
 #include <string>
 
 #include "gas/collision_integral.hpp"
-#include "gas/cooling.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"
+#include "restitution_gas/cooling.hpp"
 
 namespace restitution::gas {
 namespace {

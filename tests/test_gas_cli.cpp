@@ -9,8 +9,8 @@
 #include <string>
 
 #include "cli_runner.hpp"
-#include "gas/cooling.hpp"
 #include "restitution/material.hpp"
+#include "restitution_gas/cooling.hpp"
 
 namespace restitution::gas {
 namespace {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "gas/cooling.hpp"
+#include "restitution_gas/cooling.hpp"
 #include "gas/collision_integral.hpp"
 
 #include <fmt/core.h>

@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// A gas deck's runs against the kinetic theory (gas/cooling.hpp; docs/gas.md, "The LAMMPS deck"): each
-// cooling curve read from LAMMPS's output next to the theory's T(t) at the same times from the same T0, for
-// its law (the viscoelastic ε(v), or the companion's constant ε: Haff's law). The theory's collision rate
+// A gas deck's runs against the kinetic theory (restitution_gas/cooling.hpp; docs/gas.md, "The LAMMPS deck"):
+// each cooling curve read from LAMMPS's output next to the theory's T(t) at the same times from the same T0,
+// for its law (the viscoelastic ε(v), or the companion's constant ε: Haff's law). The theory's collision rate
 // carries one factor measured on the constant-ε run (Enskog's rate is a few per cent off at φ = 0.1): the
 // least-squares c of sqrt(T0/T) - 1 = c t / τ0 (Haff's law), applied to both laws.
 #include <string>
 #include <vector>
 
-#include "gas/cooling.hpp"
 #include "gas_deck/gas_log.hpp"
 #include "gas_deck/lammps_gas_deck.hpp"
+#include "restitution_gas/cooling.hpp"
 
 namespace restitution::gas_deck {
 

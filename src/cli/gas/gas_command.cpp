@@ -22,6 +22,7 @@
 #include "cli/gas/gas_deck_options.hpp"
 #include "cli/gas/gas_options.hpp"
 #include "cli/gas/gas_table.hpp"
+#include "restitution_gas/gas_inputs.hpp"
 #include "scene/figure_formats.hpp"
 
 namespace restitution::cli {
@@ -48,7 +49,7 @@ std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, 
   json.field("initial_temperature_j", r.initial_temperature_j);
   json.field("tau0_s", c.tau0_s).field("haff_eps", c.haff_eps).field("a2", c.a2);
   json.field("collision_rate_factor", r.collision_rate_factor).field("duration_s", c.duration_s);
-  for (const GasColumn& col : gas_columns(c)) {
+  for (const gas::CurveColumn& col : gas::curve_columns(c)) {
     json.key(col.name).begin_array();
     for (const double v : *col.values) json.value(v);
     json.end_array();

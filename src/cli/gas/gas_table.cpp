@@ -4,22 +4,12 @@
 #include <fmt/core.h>
 
 #include "cli/common/output_files.hpp"
+#include "restitution_gas/gas_inputs.hpp"
 
 namespace restitution::cli {
 
-std::vector<GasColumn> gas_columns(const gas::CoolingCurve& c) {
-  return {{"time_s", &c.time_s},
-          {"temperature_j", &c.temperature_j},
-          {"haff_temperature_j", &c.haff_temperature_j},
-          {"local_exponent", &c.local_exponent},
-          {"cooling_rate_hz", &c.cooling_rate_hz},
-          {"collision_frequency_hz", &c.collision_frequency_hz},
-          {"collisions_per_particle", &c.collisions_per_particle},
-          {"effective_eps", &c.effective_eps}};
-}
-
 std::string gas_csv(const gas::CoolingCurve& c) {
-  const std::vector<GasColumn> columns = gas_columns(c);
+  const std::vector<gas::CurveColumn> columns = gas::curve_columns(c);
   std::string out;
   for (std::size_t j = 0; j < columns.size(); ++j)
     out += fmt::format("{}{}", j > 0 ? "," : "", columns[j].name);

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "gas/cooling.hpp"
+#include "restitution_gas/cooling.hpp"
 #include "scene/scene.hpp"
 
 namespace restitution::cli {
