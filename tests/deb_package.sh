@@ -43,13 +43,15 @@ if [ "${RESTITUTION_DEB_INSTALL:-0}" != 1 ] || [ "$(id -u)" -ne 0 ]; then
   echo "deb_package: the unpacked package checks out (dpkg -i: RESTITUTION_DEB_INSTALL=1 as root, CI only)"
   exit 0
 fi
-if dpkg-query -W restitution >/dev/null 2>&1 || [ -e /usr/bin/restitution ]; then
+# Installed means dpkg's status "install ok installed": a package removed with its configuration left ("rc") is
+# not installed, and is purged like the one this check installs.
+if dpkg-query -W -f='${Status}' restitution 2>/dev/null | grep -q ' installed$' || [ -e /usr/bin/restitution ]; then
   echo "deb_package: restitution is installed on this machine already; not replacing it"
   exit 1
 fi
-trap 'dpkg -r restitution >/dev/null 2>&1 || true; rm -rf "$work"' EXIT
+trap 'dpkg --purge restitution >/dev/null 2>&1 || true; rm -rf "$work"' EXIT
 dpkg -i "$deb" >/dev/null
 [ "$(/usr/bin/restitution --version | sed -n 1p)" = "restitution $version" ] ||
   { echo "/usr/bin/restitution --version: $(/usr/bin/restitution --version | sed -n 1p), expected restitution $version"; exit 1; }
 RESTITUTION_INSTALLED_PREFIX=/usr bash "$source/tests/install_consumer.sh" "$build" "$source"
-echo "deb_package: dpkg -i, /usr/bin/restitution --version and the consumers check out; removed again"
+echo "deb_package: dpkg -i, /usr/bin/restitution --version and the consumers check out; purged again"
