@@ -13,6 +13,7 @@
 #include "gas_deck/gas_log.hpp"
 #include "gas_deck/lammps_gas_deck.hpp"
 #include "gas_deck/placement.hpp"
+#include "issue_gas.hpp"
 #include "restitution/errors.hpp"
 
 namespace {
@@ -91,15 +92,8 @@ TEST(GasScales, HaffTimeIsTheEnskogIntegral) {
 }
 
 gd::GasDeckRequest issue_gas(std::size_t n) {
-  gd::GasDeckRequest r;
-  r.material.young_modulus_pa = 1e8;
-  r.material.poisson_ratio = 0.4;
-  r.material.density_kg_m3 = 920.0;
-  r.material.radius1_m = r.material.radius2_m = 0.005;
-  r.damping.eps = 0.8;
-  r.damping.velocity_m_s = 2.0;
+  gd::GasDeckRequest r = restitution::test_support::issue_gas();
   r.particles = n;
-  r.packing_fraction = 0.1;
   r.rms_speed_m_s = 1.0;
   r.haff_times = 100.0;
   return r;

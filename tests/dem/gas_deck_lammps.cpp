@@ -25,21 +25,16 @@
 #include "gas_deck/gas_comparison.hpp"
 #include "gas_deck/gas_log.hpp"
 #include "gas_deck/lammps_gas_deck.hpp"
+#include "issue_gas.hpp"
 
 namespace {
 
 namespace gd = restitution::gas_deck;
 
-gd::GasDeckRequest issue_gas() {
-  gd::GasDeckRequest r;
-  r.material.young_modulus_pa = 1e8;
-  r.material.poisson_ratio = 0.4;
-  r.material.density_kg_m3 = 920.0;
-  r.material.radius1_m = r.material.radius2_m = 0.005;
-  r.damping.eps = 0.8;
-  r.damping.velocity_m_s = 2.0;
+// Issue 35's run: N = 2000, rms speed 1 m/s per direction, 30 tau0.
+gd::GasDeckRequest issue_run() {
+  gd::GasDeckRequest r = restitution::test_support::issue_gas();
   r.particles = 2000;
-  r.packing_fraction = 0.1;
   r.rms_speed_m_s = 1.0;
   r.haff_times = 30.0;
   return r;
@@ -76,7 +71,7 @@ TEST(GasDeckLammps, CoolsAsTheTheorySaysSeriallyAndOnTwoRanks) {
   ASSERT_FALSE(restitution::dem::dem_program(restitution::dem::Code::lammps).empty())
       << "lmp not found on PATH: scripts/setup installs Debian's lammps";
   restitution::test_support::TempFolder folder;
-  const gd::GasDeckRequest request = issue_gas();
+  const gd::GasDeckRequest request = issue_run();
   const gd::GasDeck deck = gd::lammps_gas_deck(request, "gas.data");
   ASSERT_TRUE(deck.warnings.empty()) << deck.warnings.front();
   std::ofstream(folder.path / "gas.data") << deck.data;
