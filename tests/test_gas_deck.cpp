@@ -99,6 +99,41 @@ gd::GasDeckRequest issue_gas(std::size_t n) {
   return r;
 }
 
+// LIGGGHTS 3.8.0 (run by tests/dem/gas_deck_liggghts.cpp): its prerequisites, hertz/stiffness and the model
+// hertz companion, no immediate variables (it has none), and the same data file, time step and schedule.
+TEST(GasDeck, LiggghtsDeckSpeaksLiggghts) {
+  gd::GasDeckRequest r = issue_gas(2000);
+  const gd::GasDeck lammps = gd::lammps_gas_deck(r, "gas.data");
+  r.code = restitution::dem::Code::liggghts;
+  const gd::GasDeck d = gd::lammps_gas_deck(r, "gas.data");
+  for (const std::string& input : {d.law_input, d.constant_eps_input}) {
+    for (const char* needed :
+         {"units si\n", "atom_style granular\n", "newton off\n", "communicate single vel yes\n",
+          "read_data gas.data\n", "run ${gas_steps}\n", "liggghts -in FILE"})
+      EXPECT_NE(input.find(needed), std::string::npos) << needed;
+    EXPECT_EQ(input.find("$("), std::string::npos);
+    EXPECT_EQ(input.find("comm_modify"), std::string::npos);
+  }
+  EXPECT_NE(d.law_input.find("pair_style gran model hertz/stiffness tangential no_history limitForce on"),
+            std::string::npos);
+  EXPECT_NE(d.constant_eps_input.find("pair_style gran model hertz tangential no_history limitForce on"),
+            std::string::npos);
+  EXPECT_NE(d.constant_eps_input.find("coefficientRestitution peratomtypepair 1 0.79"), std::string::npos);
+  EXPECT_EQ(d.data, lammps.data);
+  EXPECT_EQ(d.time_step_s, lammps.time_step_s);
+  EXPECT_EQ(d.print_times_s, lammps.print_times_s);
+  EXPECT_NEAR(d.constant_eps, 0.8, 1e-9);
+  r.code = restitution::dem::Code::yade;
+  try {
+    (void)gd::lammps_gas_deck(r, "gas.data");
+    ADD_FAILURE() << "yade accepted";
+  } catch (const restitution::InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("--code yade: the gas deck is written for lammps and liggghts only"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(GasDeck, TimeStepScheduleAndPrerequisites) {
   const gd::GasDeck d = gd::lammps_gas_deck(issue_gas(2000), "gas.data");
   for (const std::string& input : {d.law_input, d.constant_eps_input}) {
