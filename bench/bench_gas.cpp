@@ -27,8 +27,9 @@ gas::CoolingRequest issue_gas(const gas::ImpactLaw& law) {
   return r;
 }
 
-void run(benchmark::State& state, const gas::ImpactLaw& law) {
-  const gas::CoolingRequest r = issue_gas(law);
+void run(benchmark::State& state, const gas::ImpactLaw& law, bool a2_evolving = false) {
+  gas::CoolingRequest r = issue_gas(law);
+  r.a2_evolving = a2_evolving;
   std::size_t points = 0;
   for (auto _ : state) {
     const gas::CoolingCurve c = gas::cooling_curve(r);
@@ -42,6 +43,20 @@ void BM_GasViscoelasticHertz(benchmark::State& state) {
   run(state, gas::impact_law_from_eps(LawKind::viscoelastic_hertz, 0.8, 2.0, CollisionEnd::delayed_recovery));
 }
 BENCHMARK(BM_GasViscoelasticHertz)->Unit(benchmark::kMillisecond);
+
+// The same with the evolving Sonine a₂ (--a2 evolving): μ₄ too at each node, and the collocation of a₂.
+void BM_GasViscoelasticHertzEvolvingA2(benchmark::State& state) {
+  run(state, gas::impact_law_from_eps(LawKind::viscoelastic_hertz, 0.8, 2.0, CollisionEnd::delayed_recovery),
+      true);
+}
+BENCHMARK(BM_GasViscoelasticHertzEvolvingA2)->Unit(benchmark::kMillisecond);
+
+// Small dissipation (ε = 0.99 at 2 m/s): a₂ relaxes fast against the cooling, so its panels narrow.
+void BM_GasViscoelasticHertzEvolvingA2SmallDissipation(benchmark::State& state) {
+  run(state, gas::impact_law_from_eps(LawKind::viscoelastic_hertz, 0.99, 2.0, CollisionEnd::delayed_recovery),
+      true);
+}
+BENCHMARK(BM_GasViscoelasticHertzEvolvingA2SmallDissipation)->Unit(benchmark::kMillisecond);
 
 void BM_GasConstantEps(benchmark::State& state) {
   run(state, gas::constant_eps_law(0.8));

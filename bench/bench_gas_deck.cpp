@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "../tests/issue_gas.hpp"  // the issue's gas, shared with the tests
 #include "gas_deck/lammps_gas_deck.hpp"
 #include "gas_deck/placement.hpp"
 
@@ -15,15 +16,8 @@ namespace {
 using namespace restitution;
 
 void BM_GasDeck1e5(benchmark::State& state) {
-  gas_deck::GasDeckRequest r;
-  r.material.young_modulus_pa = 1e8;
-  r.material.poisson_ratio = 0.4;
-  r.material.density_kg_m3 = 920.0;
-  r.material.radius1_m = r.material.radius2_m = 0.005;
-  r.damping.eps = 0.8;
-  r.damping.velocity_m_s = 2.0;
+  gas_deck::GasDeckRequest r = test_support::issue_gas();
   r.particles = 100000;
-  r.packing_fraction = 0.1;
   for (auto _ : state) benchmark::DoNotOptimize(gas_deck::lammps_gas_deck(r, "gas.data"));
 }
 BENCHMARK(BM_GasDeck1e5)->Unit(benchmark::kMillisecond);

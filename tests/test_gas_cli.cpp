@@ -24,10 +24,8 @@ using test_support::TempFolder;
 // The issue's spheres: R = 5 mm, ρ = 920 kg/m³, φ = 0.1, rms speed 1 m/s per direction.
 const std::string kGas = "gas --radius 0.005 --density 920 --packing-fraction 0.1 --rms-speed 1 ";
 
-TEST(GasCli, JsonCarriesTheLibrarysCurve) {
-  const auto outcome = run_cli(kGas + "--eps 0.8 --velocity 2 --haff-times 100 --points-per-decade 4 --json");
-  ASSERT_EQ(outcome.status, 0) << outcome.err;
-  const json j = json::parse(outcome.out);
+// What kGas + "--eps 0.8 --velocity 2 --haff-times 100 --points-per-decade 4" asks of the library.
+CoolingRequest issue_request() {
   CoolingRequest r;
   r.particles = {sphere_mass_kg(0.005, 920.0), 0.01, 0.1};
   r.initial_temperature_j = r.particles.mass_kg;
@@ -35,7 +33,14 @@ TEST(GasCli, JsonCarriesTheLibrarysCurve) {
   r.duration = 100.0;
   r.duration_in_haff_times = true;
   r.points_per_decade = 4;
-  const CoolingCurve c = cooling_curve(r);
+  return r;
+}
+
+TEST(GasCli, JsonCarriesTheLibrarysCurve) {
+  const auto outcome = run_cli(kGas + "--eps 0.8 --velocity 2 --haff-times 100 --points-per-decade 4 --json");
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const json j = json::parse(outcome.out);
+  const CoolingCurve c = cooling_curve(issue_request());
   EXPECT_EQ(j.at("tau0_s").get<double>(), c.tau0_s);
   ASSERT_EQ(j.at("time_s").size(), c.time_s.size());
   EXPECT_EQ(c.time_s.size(), 25U);  // six decades at 4 per decade, both ends
@@ -86,6 +91,30 @@ TEST(GasCli, CsvHoldsTheSameRows) {
   EXPECT_EQ(lines.size(), json::parse(outcome.out).at("time_s").size() + 1);
 }
 
+// --a2 evolving: the JSON's "a2" becomes the library's a2(t), bit for bit, and the CSV gains the column a2.
+TEST(GasCli, EvolvingA2IsAColumn) {
+  const TempFolder folder;
+  const std::string csv = (folder.path / "gas.csv").string();
+  const auto outcome = run_cli(kGas +
+                               "--eps 0.8 --velocity 2 --haff-times 100 --points-per-decade 4 --a2 evolving "
+                               "--out " +
+                               csv + " --json");
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const json j = json::parse(outcome.out);
+  CoolingRequest r = issue_request();
+  r.a2_evolving = true;
+  const CoolingCurve c = cooling_curve(r);
+  ASSERT_EQ(j.at("a2").size(), c.sonine_a2.size());
+  for (std::size_t i = 0; i < c.time_s.size(); ++i) {
+    EXPECT_EQ(j.at("a2")[i].get<double>(), c.sonine_a2[i]);
+    EXPECT_EQ(j.at("temperature_j")[i].get<double>(), c.temperature_j[i]);
+  }
+  EXPECT_LT(c.sonine_a2.back(), -0.01);
+  const std::vector<std::string> lines = lines_of(slurp(csv));
+  ASSERT_FALSE(lines.empty());
+  EXPECT_NE(lines[0].find(",effective_eps,a2"), std::string::npos) << lines[0];
+}
+
 TEST(GasCli, BadInputExitsTwoNamingTheOption) {
   const std::string law = "--eps 0.8 --velocity 2 --duration 1 ";
   const std::vector<std::pair<std::string, std::string>> cases = {
@@ -98,6 +127,7 @@ TEST(GasCli, BadInputExitsTwoNamingTheOption) {
       {"gas --density 920 --packing-fraction 0.1 --rms-speed 1 " + law, "--radius"},
       {kGas + "--eps 0.8 --duration 1", "--velocity"},
       {kGas + law + "--a2 much", "--a2"},
+      {kGas + law + "--a2 evolvin", "--a2 must be a number, haff or evolving"},
       {kGas + "--law tsuji-hertz --dissipative-constant 1e-5 --duration 1", "--dissipative-constant"},
       {kGas + law + "--radius2 0.004", "monodisperse"},
       {kGas + law + "--points-per-decade 0", "--points-per-decade"},

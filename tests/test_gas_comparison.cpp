@@ -7,23 +7,13 @@
 #include <cmath>
 
 #include "gas_deck/gas_comparison.hpp"
+#include "issue_gas.hpp"
 #include "restitution/errors.hpp"
 
 namespace {
 
 namespace gd = restitution::gas_deck;
-
-gd::GasDeckRequest issue_gas() {
-  gd::GasDeckRequest r;
-  r.material.young_modulus_pa = 1e8;
-  r.material.poisson_ratio = 0.4;
-  r.material.density_kg_m3 = 920.0;
-  r.material.radius1_m = r.material.radius2_m = 0.005;
-  r.damping.eps = 0.8;
-  r.damping.velocity_m_s = 2.0;
-  r.packing_fraction = 0.1;
-  return r;
-}
+using restitution::test_support::issue_gas;
 
 gd::CoolingCurve curve_of(const std::string& law, const std::vector<double>& t,
                           const std::vector<double>& temperature, double t0) {

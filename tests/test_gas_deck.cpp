@@ -13,6 +13,7 @@
 #include "gas_deck/gas_log.hpp"
 #include "gas_deck/lammps_gas_deck.hpp"
 #include "gas_deck/placement.hpp"
+#include "issue_gas.hpp"
 #include "restitution/errors.hpp"
 
 namespace {
@@ -91,18 +92,46 @@ TEST(GasScales, HaffTimeIsTheEnskogIntegral) {
 }
 
 gd::GasDeckRequest issue_gas(std::size_t n) {
-  gd::GasDeckRequest r;
-  r.material.young_modulus_pa = 1e8;
-  r.material.poisson_ratio = 0.4;
-  r.material.density_kg_m3 = 920.0;
-  r.material.radius1_m = r.material.radius2_m = 0.005;
-  r.damping.eps = 0.8;
-  r.damping.velocity_m_s = 2.0;
+  gd::GasDeckRequest r = restitution::test_support::issue_gas();
   r.particles = n;
-  r.packing_fraction = 0.1;
   r.rms_speed_m_s = 1.0;
   r.haff_times = 100.0;
   return r;
+}
+
+// LIGGGHTS 3.8.0 (run by tests/dem/gas_deck_liggghts.cpp): its prerequisites, hertz/stiffness and the model
+// hertz companion, no immediate variables (it has none), and the same data file, time step and schedule.
+TEST(GasDeck, LiggghtsDeckSpeaksLiggghts) {
+  gd::GasDeckRequest r = issue_gas(2000);
+  const gd::GasDeck lammps = gd::lammps_gas_deck(r, "gas.data");
+  r.code = restitution::dem::Code::liggghts;
+  const gd::GasDeck d = gd::lammps_gas_deck(r, "gas.data");
+  for (const std::string& input : {d.law_input, d.constant_eps_input}) {
+    for (const char* needed :
+         {"units si\n", "atom_style granular\n", "newton off\n", "communicate single vel yes\n",
+          "read_data gas.data\n", "run ${gas_steps}\n", "liggghts -in FILE"})
+      EXPECT_NE(input.find(needed), std::string::npos) << needed;
+    EXPECT_EQ(input.find("$("), std::string::npos);
+    EXPECT_EQ(input.find("comm_modify"), std::string::npos);
+  }
+  EXPECT_NE(d.law_input.find("pair_style gran model hertz/stiffness tangential no_history limitForce on"),
+            std::string::npos);
+  EXPECT_NE(d.constant_eps_input.find("pair_style gran model hertz tangential no_history limitForce on"),
+            std::string::npos);
+  EXPECT_NE(d.constant_eps_input.find("coefficientRestitution peratomtypepair 1 0.79"), std::string::npos);
+  EXPECT_EQ(d.data, lammps.data);
+  EXPECT_EQ(d.time_step_s, lammps.time_step_s);
+  EXPECT_EQ(d.print_times_s, lammps.print_times_s);
+  EXPECT_NEAR(d.constant_eps, 0.8, 1e-9);
+  r.code = restitution::dem::Code::yade;
+  try {
+    (void)gd::lammps_gas_deck(r, "gas.data");
+    ADD_FAILURE() << "yade accepted";
+  } catch (const restitution::InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("--code yade: the gas deck is written for lammps and liggghts only"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(GasDeck, TimeStepScheduleAndPrerequisites) {

@@ -532,8 +532,10 @@ def gas(*, radius=None, density=None, mass=None, eps=None, velocity=None, dissip
         First time of the log-spaced grid [s]; 0: six decades below the end.
     points_per_decade : int
         Points of the time grid per decade, in [1, 1000].
-    a2 : float or "haff", optional
-        The first Sonine coefficient, held constant; "haff": van Noije & Ernst's of the Haff eps; None: Maxwellian.
+    a2 : float, "haff" or "evolving", optional
+        The first Sonine coefficient, held constant; "haff": van Noije & Ernst's of the Haff eps; "evolving":
+        a2(t) from the Sonine moment equations, starting Maxwellian (the result's "a2" is then an array of the
+        curve); None: Maxwellian.
     collision_rate_factor : float
         A factor on Enskog's collision rate.
     tolerance : float
@@ -547,7 +549,7 @@ def gas(*, radius=None, density=None, mass=None, eps=None, velocity=None, dissip
         "number_density_m3", "initial_temperature_j", "tau0_s", "haff_eps", "a2", "collision_rate_factor",
         "duration_s", and the curve as numpy arrays: "time_s", "temperature_j", "haff_temperature_j",
         "local_exponent", "cooling_rate_hz", "collision_frequency_hz", "collisions_per_particle",
-        "effective_eps".
+        "effective_eps" (and "a2" with a2="evolving").
 
     Raises
     ------

@@ -291,7 +291,7 @@ def gas(
     haff_times: Optional[float] = ...,
     first_time: float = ...,  # s
     points_per_decade: int = ...,
-    a2: Union[None, float, Literal["haff"]] = ...,
+    a2: Union[None, float, Literal["haff", "evolving"]] = ...,  # "evolving": the result's "a2" is an array
     collision_rate_factor: float = ...,
     tolerance: float = ...,
 ) -> Dict[str, Any]: ...  # the keys of `restitution gas --json`, the curve as float64 arrays

@@ -23,18 +23,21 @@ namespace {
 
 using Number = std::optional<double>;
 
-// a2: None (Maxwellian), a number, or "haff" (van Noije & Ernst's a2 of the Haff eps).
+// a2: None (Maxwellian), a number, "haff" (van Noije & Ernst's a2 of the Haff eps), held constant, or
+// "evolving" (a2(t) from the Sonine moment equations).
 void read_a2(const py::object& a2, gas::GasInputs& in) {
   if (a2.is_none()) return;
   if (py::isinstance<py::str>(a2)) {
-    if (a2.cast<std::string>() != "haff") {
-      throw InvalidInput("a2 must be a number or 'haff', got '" + a2.cast<std::string>() + "'");
+    const auto word = a2.cast<std::string>();
+    if (word != "haff" && word != "evolving") {
+      throw InvalidInput("a2 must be a number, 'haff' or 'evolving', got '" + word + "'");
     }
-    in.a2_of_haff_eps = true;
+    in.a2_of_haff_eps = word == "haff";
+    in.a2_evolving = word == "evolving";
     return;
   }
   if (py::isinstance<py::bool_>(a2) || !(py::isinstance<py::float_>(a2) || py::isinstance<py::int_>(a2))) {
-    throw py::type_error("a2 must be None, a number or 'haff'");
+    throw py::type_error("a2 must be None, a number, 'haff' or 'evolving'");
   }
   in.a2 = a2.cast<double>();
 }
@@ -55,7 +58,7 @@ py::dict cooling_dict(const gas::CoolingRequest& r, const gas::CoolingCurve& c) 
   out["initial_temperature_j"] = r.initial_temperature_j;
   out["tau0_s"] = c.tau0_s;
   out["haff_eps"] = c.haff_eps;
-  out["a2"] = c.a2;
+  out["a2"] = c.a2;  // evolving: replaced by the curve's array "a2" below
   out["collision_rate_factor"] = r.collision_rate_factor;
   out["duration_s"] = c.duration_s;
   for (const gas::CurveColumn& column : gas::curve_columns(c)) {

@@ -16,6 +16,8 @@ ISSUE = dict(radius=0.005, density=920.0, eps=0.8, velocity=2.0, packing_fractio
 # The same spheres by their material's dissipative constant, over 1 s, with van Noije & Ernst's a2.
 MATERIAL = dict(radius=0.005, density=920.0, young_modulus=1e8, poisson_ratio=0.4, dissipative_constant=1e-5,
                 packing_fraction=0.1, temperature=1e-4, duration=1.0, points_per_decade=5, a2="haff")
+# The issue's gas with the evolving a2: its curve gains the array "a2", in place of the number.
+EVOLVING = dict(ISSUE, a2="evolving", haff_times=100)
 
 
 def _options(arguments):
@@ -38,7 +40,7 @@ def _same(python_value, cli_value, key):
         assert python_value == cli_value, key
 
 
-@pytest.mark.parametrize("arguments", [ISSUE, MATERIAL], ids=["issue", "material"])
+@pytest.mark.parametrize("arguments", [ISSUE, MATERIAL, EVOLVING], ids=["issue", "material", "evolving"])
 def test_gas_equals_the_command_lines_json(cli, arguments):
     expected = json.loads(cli("gas", *_options(arguments), "--json"))
     for build_field in ("restitution", "sundials"):  # what built the program: restitution.build_info() says it
@@ -47,6 +49,12 @@ def test_gas_equals_the_command_lines_json(cli, arguments):
     assert set(got) == set(expected)
     for key in expected:
         _same(got[key], expected[key], key)
+
+
+def test_evolving_a2_is_an_array_of_the_curve():
+    g = restitution.gas(**EVOLVING)
+    assert g["a2"].shape == g["time_s"].shape
+    assert g["a2"][0] == pytest.approx(0.0, abs=1e-4) and g["a2"][-1] < -0.01  # from Maxwellian to negative
 
 
 def test_mass_gives_what_density_gives():
@@ -90,7 +98,7 @@ def test_a_constant_eps_cools_by_haffs_law():
     (dict(dissipative_constant=1e-5), "dissipative_constant excludes eps and velocity"),
     (dict(law="hooke"), "law"),
     (dict(end="late"), "end"),
-    (dict(a2="much"), "a2 must be a number or 'haff'"),
+    (dict(a2="much"), "a2 must be a number, 'haff' or 'evolving'"),
     (dict(points_per_decade=0), "points_per_decade must be in"),
     (dict(first_time=-1.0), "first_time"),
     (dict(collision_rate_factor=0.0), "collision_rate_factor"),

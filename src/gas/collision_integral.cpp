@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -37,6 +38,10 @@ double sonine_a2_constant_eps(double eps) {
   return 16.0 * (1.0 - eps) * (1.0 - 2.0 * eps * eps) / (81.0 - 17.0 * eps + 30.0 * eps * eps * (1.0 - eps));
 }
 
+double effective_eps_of(double mean_loss, double a2) {
+  return std::sqrt(std::max(0.0, 1.0 - mean_loss / (1.0 + 3.0 * a2 / 16.0)));
+}
+
 CollisionIntegral::CollisionIntegral(ImpactDissipation& dissipation, double mass_kg, double a2)
     : dissipation_(&dissipation), mass_kg_(mass_kg), a2_(a2) {
   const double half_exponent = 0.5 * dissipation.speed_exponent();
@@ -45,16 +50,22 @@ CollisionIntegral::CollisionIntegral(ImpactDissipation& dissipation, double mass
   for (int k = 0; k < count; ++k) {
     const double z = std::exp(lo + kStep * k);
     const double sonine = 1.0 + 0.5 * a2 * (0.5 * z * z - 1.5 * z + 0.375);
-    weights_.push_back(kStep * z * z * std::exp(-z) * sonine);
+    nodes_.push_back(z);
+    maxwellian_.push_back(kStep * z * z * std::exp(-z));
+    weights_.push_back(maxwellian_.back() * sonine);
     zeta_factors_.push_back(std::pow(z, half_exponent));
   }
 }
 
-double CollisionIntegral::mean_loss(double temperature_j) {
+double CollisionIntegral::thermal_zeta(double temperature_j) const {
   if (!(temperature_j > 0.0) || !std::isfinite(temperature_j)) {
     throw InvalidInput(fmt::format("temperature must be finite and > 0 J, got {}", temperature_j));
   }
-  const double thermal_zeta = dissipation_->zeta_at_speed(2.0 * std::sqrt(temperature_j / mass_kg_));
+  return dissipation_->zeta_at_speed(2.0 * std::sqrt(temperature_j / mass_kg_));
+}
+
+double CollisionIntegral::mean_loss(double temperature_j) {
+  const double thermal_zeta = this->thermal_zeta(temperature_j);
   double sum = 0.0;
   for (std::size_t k = 0; k < weights_.size(); ++k) {
     sum += weights_[k] * dissipation_->loss_at_zeta(thermal_zeta * zeta_factors_[k]);
@@ -63,8 +74,26 @@ double CollisionIntegral::mean_loss(double temperature_j) {
 }
 
 double CollisionIntegral::effective_eps(double temperature_j) {
-  const double loss = mean_loss(temperature_j) / (1.0 + 3.0 * a2_ / 16.0);
-  return std::sqrt(std::max(0.0, 1.0 - loss));
+  return effective_eps_of(mean_loss(temperature_j), a2_);
+}
+
+SonineMoments CollisionIntegral::moments(double temperature_j) {
+  const double thermal_zeta = this->thermal_zeta(temperature_j);
+  SonineMoments m;
+  for (std::size_t k = 0; k < nodes_.size(); ++k) {
+    const double z = nodes_[k];
+    const double w = maxwellian_[k];
+    const double loss = dissipation_->loss_at_zeta(thermal_zeta * zeta_factors_[k]);
+    const double eps = std::sqrt(std::max(0.0, 1.0 - loss));
+    m.mu2 += w * loss;
+    m.mu2_a2 += w * loss * 0.5 * (0.5 * z * z - 1.5 * z + 0.375);
+    m.mu4 += w * loss * 0.5 * (7.0 + (2.0 - loss) * z);
+    // The a₂ part of μ₄ keeps a term without L: elastic collisions relax a₂ too.
+    m.mu4_a2 += w / 32.0 *
+                (loss * z * (4.0 * (2.0 - loss) * z * z + (4.0 + 12.0 * loss) * z + 26.0 - 3.0 * loss) +
+                 (1.0 + eps) * (31.0 * eps + 33.0));
+  }
+  return m;
 }
 
 }  // namespace restitution::gas

@@ -12,6 +12,16 @@
 // one-dimensional second Sonine polynomial: the relative velocity halves a₂, its normal component keeps it),
 // which for a constant ε gives the known factor 1 + 3a₂/16 of the cooling rate (van Noije & Ernst, Granular
 // Matter 1, 57 (1998)) and 1 − a₂/16 of the collision frequency.
+//
+// The evolving a₂ needs the fourth moment too. In the notation of Brilliantov & Pöschel, PRE 61, 5573 (2000),
+// μ_p = −∫ c^p Ĩ(f̃, f̃) dc of the dimensionless collision integral, c = v/v_T, v_T = √(2T/m); to first order
+// in a₂, with z = g_n²/2 (g_n the normal relative velocity in units of v_T), L = 1 − ε², ε = ε(u) at
+// u = 2√(zT/m) (docs/gas.md derives them):
+//     μ₂/√(2π) = ∫₀^∞ z e^{−z} L [1 + (a₂/2) S(z)] dz   (= J),
+//     μ₄/√(2π) = ∫₀^∞ z e^{−z} { L [7 + (2 − L) z]/2
+//                + (a₂/32) [ L (4(2 − L) z³ + (4 + 12L) z² + (26 − 3L) z) + (1 + ε)(31ε + 33) ] } dz.
+// For a constant ε they are √(2π)(1 − ε²)(1 + 3a₂/16) and √(2π)[(1 − ε²)(9/2 + ε²)
+// + a₂ (1 + ε)(271 − 207ε + 30ε² − 30ε³)/32] (Brilliantov & Pöschel; van Noije & Ernst 1998).
 #include "gas/impact_law.hpp"
 
 namespace restitution::gas {
@@ -27,6 +37,18 @@ double collision_frequency_hz(double packing_fraction, double diameter_m, double
 // expansion: 16(1 − ε)(1 − 2ε²)/(81 − 17ε + 30ε²(1 − ε)) (van Noije & Ernst 1998, their Eq. for d = 3).
 double sonine_a2_constant_eps(double eps);
 
+// The Sonine moments at one temperature, divided by √(2π) and split by their order in a₂:
+// μ₂/√(2π) = mu2 + a₂ mu2_a2, μ₄/√(2π) = mu4 + a₂ mu4_a2.
+struct SonineMoments {
+  double mu2 = 0.0, mu2_a2 = 0.0, mu4 = 0.0, mu4_a2 = 0.0;
+  // J = μ₂/√(2π) at this a₂.
+  [[nodiscard]] double mean_loss(double a2) const { return mu2 + a2 * mu2_a2; }
+};
+
+// The effective constant ε that cools at the rate J with the Sonine coefficient a₂: 1 − ε_eff² = J/(1 +
+// 3a₂/16).
+double effective_eps_of(double mean_loss, double a2);
+
 // J(T) by the trapezoidal rule in ln z on [1e-7, 60] with step 1/4 (82 nodes): the integrand is analytic
 // in ln z and decays as z^2 below and as e^{−z} above, so the rule converges geometrically; against an
 // adaptive quadrature of the solver's ε its relative error is below 1e-12 (tests/test_gas.cpp).
@@ -38,14 +60,21 @@ class CollisionIntegral {
   double mean_loss(double temperature_j);
   // The effective constant ε that cools at the same rate at T: 1 − ε_eff² = J(T)/(1 + 3a₂/16).
   double effective_eps(double temperature_j);
+  // μ₂ and μ₄ at T by the same rule (the a₂ given to the constructor plays no part).
+  SonineMoments moments(double temperature_j);
   [[nodiscard]] double a2() const { return a2_; }
 
  private:
+  // ζ at the thermal speed 2√(T/m); throws InvalidInput unless T is finite and > 0.
+  [[nodiscard]] double thermal_zeta(double temperature_j) const;
+
   ImpactDissipation* dissipation_;
   double mass_kg_ = 0.0;
   double a2_ = 0.0;
   std::vector<double> weights_;       // h z² e^{−z} (1 + (a₂/2) S(z)) at the nodes
   std::vector<double> zeta_factors_;  // z^{p/2}: ζ(u) = ζ(2√(T/m)) · z^{p/2}
+  std::vector<double> nodes_;         // z
+  std::vector<double> maxwellian_;    // h z² e^{−z}
 };
 
 }  // namespace restitution::gas

@@ -146,9 +146,10 @@ CoolingRequest cooling_request(const GasInputs& in, ArgumentStyle style) {
   r.points_per_decade = in.points_per_decade;
   r.collision_rate_factor = in.collision_rate_factor;
   r.tolerance = in.tolerance;
-  if (in.a2_of_haff_eps && in.a2) {
-    throw InvalidInput(fmt::format("{}: a number or haff, not both", name("a2")));
+  if (int{in.a2_of_haff_eps} + int{in.a2.has_value()} + int{in.a2_evolving} > 1) {
+    throw InvalidInput(fmt::format("{}: one of a number, haff and evolving", name("a2")));
   }
+  r.a2_evolving = in.a2_evolving;
   if (in.a2_of_haff_eps) {
     r.a2 = sonine_a2_constant_eps(haff_reference(r).eps);  // the Maxwellian gas's Haff ε
   } else {
@@ -158,14 +159,16 @@ CoolingRequest cooling_request(const GasInputs& in, ArgumentStyle style) {
 }
 
 std::vector<CurveColumn> curve_columns(const CoolingCurve& c) {
-  return {{"time_s", &c.time_s},
-          {"temperature_j", &c.temperature_j},
-          {"haff_temperature_j", &c.haff_temperature_j},
-          {"local_exponent", &c.local_exponent},
-          {"cooling_rate_hz", &c.cooling_rate_hz},
-          {"collision_frequency_hz", &c.collision_frequency_hz},
-          {"collisions_per_particle", &c.collisions_per_particle},
-          {"effective_eps", &c.effective_eps}};
+  std::vector<CurveColumn> columns{{"time_s", &c.time_s},
+                                   {"temperature_j", &c.temperature_j},
+                                   {"haff_temperature_j", &c.haff_temperature_j},
+                                   {"local_exponent", &c.local_exponent},
+                                   {"cooling_rate_hz", &c.cooling_rate_hz},
+                                   {"collision_frequency_hz", &c.collision_frequency_hz},
+                                   {"collisions_per_particle", &c.collisions_per_particle},
+                                   {"effective_eps", &c.effective_eps}};
+  if (c.a2_evolving) columns.push_back({"a2", &c.sonine_a2});
+  return columns;
 }
 
 }  // namespace restitution::gas

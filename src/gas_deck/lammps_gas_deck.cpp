@@ -10,16 +10,87 @@
 #include <numbers>
 
 #include "damping_check/constant_eps_lines.hpp"
+#include "damping_check/inverse.hpp"
+#include "dem/deck_eps.hpp"
+#include "dem/deck_notes.hpp"
 #include "dem/integrator_eps.hpp"
 #include "gas_deck/cooling_scales.hpp"
 #include "gas_deck/placement.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/units.hpp"
 
 namespace restitution::gas_deck {
 namespace {
 
 // The time step is checked down to this fraction of the initial temperature (the fast speed falls 1000-fold).
 constexpr int kCheckedDecadesOfSpeed = 3;
+
+// The companion of the code's law lines: LAMMPS `damping tsuji` (`dem --constant-eps`), LIGGGHTS `model
+// hertz` given the coefficientRestitution that its recipe (Tsuji-type damping, speed-independent ε) turns
+// into the law's ε at the calibration speed.
+damping_check::ConstantEpsLines companion_lines(const dem::LinesResult& law, const dem::Pair& pair,
+                                                double tolerance, CollisionSolver& solver) {
+  if (law.deck.code == dem::Code::lammps)
+    return damping_check::constant_eps_lines(law, pair, tolerance, solver);
+  const double k =
+      hertz_stiffness(pair.effective_modulus_pa, pair.effective_radius_m) / pair.effective_mass_kg;
+  damping_check::ConstantEpsLines c;
+  c.velocity_m_s = law.reference_velocity_m_s;
+  c.eps = dem::eps_for(hertz_constants(k, law.dissipative_constant_s).beta, c.velocity_m_s, law.deck.end,
+                       tolerance, solver);
+  damping_check::InverseRequest request;
+  request.recipe = damping_check::Recipe::liggghts_hertz;
+  request.target_eps = c.eps;
+  request.target_velocity_m_s = c.velocity_m_s;
+  request.clamp =
+      law.deck.end == CollisionEnd::delayed_recovery ? damping_check::Clamp::on : damping_check::Clamp::off;
+  request.speeds_m_s = {c.velocity_m_s};
+  request.tolerance = tolerance;
+  c.eps_to_request = damping_check::invert_recipe(request, solver).eps_to_request;
+  c.lines = {
+      fmt::format("fix dem_youngs all property/global youngsModulus peratomtype {}",
+                  dem::num(pair.young_modulus_pa)),
+      fmt::format("fix dem_poisson all property/global poissonsRatio peratomtype {}",
+                  dem::num(pair.poisson_ratio)),
+      fmt::format("fix dem_restitution all property/global coefficientRestitution peratomtypepair 1 {}",
+                  dem::num(c.eps_to_request)),
+      "fix dem_cof all property/global coefficientFriction peratomtypepair 1 0",
+      fmt::format("pair_style gran model hertz tangential no_history limitForce {}",
+                  law.deck.end == CollisionEnd::delayed_recovery ? "on" : "off"),
+      "pair_coeff * *"};
+  return c;
+}
+
+// The schedule's idioms: LAMMPS evaluates $(...) in place; LIGGGHTS 3.8.0 has no immediate variables, so its
+// values go through equal-style variables, substituted when the line is read.
+struct ScheduleIdioms {
+  std::string definitions, time, temperature, timestep, step, next_timestep;
+  [[nodiscard]] std::string steps_to(double t) const;
+  dem::Code code = dem::Code::lammps;
+};
+
+ScheduleIdioms schedule_idioms(dem::Code code) {
+  if (code == dem::Code::lammps) {
+    return {"",           "$(time:%.10g)", "$(v_temperature:%.10g)",
+            "$(dt:%.6g)", "$(step)",       "$(v_dt0*(v_T0/v_temperature)^0.1)",
+            code};
+  }
+  return {
+      "variable gas_time equal time\nvariable gas_temperature equal v_temperature\n"
+      "variable gas_dt equal dt\nvariable gas_step equal step\n"
+      "variable gas_next_dt equal v_dt0*(v_T0/v_temperature)^0.1\n",
+      "${gas_time}",
+      "${gas_temperature}",
+      "${gas_dt}",
+      "${gas_step}",
+      "${gas_next_dt}",
+      code};
+}
+
+std::string ScheduleIdioms::steps_to(double t) const {
+  if (code == dem::Code::lammps) return fmt::format("run $(ceil(({}-time)/dt):%.0f)\n", t);
+  return fmt::format("variable gas_steps equal ceil(({}-time)/dt)\nrun ${{gas_steps}}\n", t);
+}
 
 std::string data_file(const GasDeck& g, const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                       double density, std::uint64_t seed) {
@@ -38,9 +109,9 @@ std::string data_file(const GasDeck& g, const std::vector<Vec3>& x, const std::v
   return fmt::to_string(out);
 }
 
-std::string input(const GasDeck& g, std::string_view law, const std::vector<std::string>& header,
-                  const std::vector<std::string>& prerequisites, const std::vector<std::string>& lines,
-                  const std::string& data_file_name) {
+std::string input(const GasDeck& g, dem::Code code, std::string_view law,
+                  const std::vector<std::string>& header, const std::vector<std::string>& prerequisites,
+                  const std::vector<std::string>& lines, const std::string& data_file_name) {
   std::string d;
   for (const auto& h : header) d += "# " + h + "\n";
   for (const auto& p : prerequisites) d += p + "\n";
@@ -55,15 +126,16 @@ std::string input(const GasDeck& g, std::string_view law, const std::vector<std:
   // thermo 0: output at the first and last step of each run only, which keeps c_kinetic current between runs.
   d += "thermo_style custom step time dt c_kinetic\nthermo 0\n";
   d += fmt::format("variable dt0 equal {}\nvariable T0 equal {}\n", g.time_step_s, g.initial_temperature_j);
-  const std::string print = fmt::format(
-      "print \"{} law={} time_s=$(time:%.10g) temperature_j=$(v_temperature:%.10g) "
-      "timestep_s=$(dt:%.6g) step=$(step)\"\n",
-      kGasTag, law);
+  const ScheduleIdioms idioms = schedule_idioms(code);
+  d += idioms.definitions;
+  const std::string print =
+      fmt::format("print \"{} law={} time_s={} temperature_j={} timestep_s={} step={}\"\n", kGasTag, law,
+                  idioms.time, idioms.temperature, idioms.timestep, idioms.step);
   d += "timestep ${dt0}\nrun 0\n" + print;
   for (double t : g.print_times_s) {
     // dt grows as the contact duration does, T^(-1/10); each block runs to the next scheduled time.
-    d += "timestep $(v_dt0*(v_T0/v_temperature)^0.1)\n";
-    d += fmt::format("run $(ceil(({}-time)/dt):%.0f)\n", t);
+    d += "timestep " + idioms.next_timestep + "\n";
+    d += idioms.steps_to(t);
     d += print;
   }
   return d;
@@ -79,7 +151,14 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
   if (r.points_per_decade < 1 || r.points_per_decade > 100)
     throw InvalidInput(fmt::format("--points-per-decade must be in [1, 100], got {}", r.points_per_decade));
   dem::LinesRequest lines_request;
-  lines_request.code = dem::Code::lammps;
+  if (r.code != dem::Code::lammps && r.code != dem::Code::liggghts) {
+    throw InvalidInput(
+        fmt::format("--code {}: the gas deck is written for lammps and liggghts only (a data file "
+                    "of spheres, the law's pair lines and a log-spaced schedule in their input "
+                    "language)",
+                    dem::code_name(r.code)));
+  }
+  lines_request.code = r.code;
   lines_request.end = r.end;
   lines_request.material = r.material;
   lines_request.damping = r.damping;
@@ -87,8 +166,7 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
   const dem::LinesResult law = dem::check_lines(lines_request);
   const dem::Pair pair = dem::pair_of(r.material);
   CollisionSolver solver;
-  const damping_check::ConstantEpsLines companion =
-      damping_check::constant_eps_lines(law, pair, r.tolerance, solver);
+  const damping_check::ConstantEpsLines companion = companion_lines(law, pair, r.tolerance, solver);
 
   GasDeck g;
   g.dissipative_constant_s = law.dissipative_constant_s;
@@ -161,32 +239,33 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
       fmt::format("each line starting {} is one scheduled time (log-spaced, {} per decade): law, time_s, "
                   "temperature_j = m <v^2>/3, timestep_s, step",
                   kGasTag, r.points_per_decade),
-      std::string(
-          "run: lmp -in FILE, or on several cores mpirun -np 4 lmp -in FILE (as root add "
-          "--allow-run-as-root; on oversubscribed cores set OMPI_MCA_mpi_yield_when_idle=1), from the "
-          "folder of the data file"),
+      fmt::format("run: {}, or on several cores {} (as root add --allow-run-as-root; on oversubscribed cores "
+                  "set OMPI_MCA_mpi_yield_when_idle=1), from the folder of the data file",
+                  gas_deck_command(r.code, "FILE", 1), gas_deck_command(r.code, "FILE", 4)),
       "checked on " + law.deck.checked_on};
   header.insert(header.end(), g.warnings.begin(), g.warnings.end());
 
   std::vector<std::string> law_header = header;
   law_header.insert(law_header.begin(), fmt::format("viscoelastic Hertz law, A = {:.10g} s ({} end)",
                                                     g.dissipative_constant_s, end_name(r.end)));
-  g.law_input = input(g, "viscoelastic", law_header, law.deck.prerequisites, law.deck.lines, data_file_name);
+  g.law_input =
+      input(g, r.code, "viscoelastic", law_header, law.deck.prerequisites, law.deck.lines, data_file_name);
   std::vector<std::string> companion_header = header;
   companion_header.insert(
       companion_header.begin(),
-      fmt::format(
-          "constant-eps companion: damping tsuji given {:.10g}, which makes eps = {:.10g} at every speed "
-          "(the law's eps at {} m/s)",
-          companion.eps_to_request, companion.eps, companion.velocity_m_s));
-  g.constant_eps_input =
-      input(g, "constant-eps", companion_header, law.deck.prerequisites, companion.lines, data_file_name);
+      fmt::format("constant-eps companion: {} given {:.10g}, which makes eps = {:.10g} at every speed (the "
+                  "law's eps at {} m/s)",
+                  r.code == dem::Code::lammps ? "damping tsuji" : "model hertz coefficientRestitution",
+                  companion.eps_to_request, companion.eps, companion.velocity_m_s));
+  g.constant_eps_input = input(g, r.code, "constant-eps", companion_header, law.deck.prerequisites,
+                               companion.lines, data_file_name);
   return g;
 }
 
-std::string gas_deck_command(const std::string& path, int ranks) {
-  if (ranks <= 1) return "lmp -in " + path;
-  return fmt::format("mpirun -np {} lmp -in {}", ranks, path);
+std::string gas_deck_command(dem::Code code, const std::string& path, int ranks) {
+  const char* program = code == dem::Code::liggghts ? "liggghts" : "lmp";
+  if (ranks <= 1) return fmt::format("{} -in {}", program, path);
+  return fmt::format("mpirun -np {} {} -in {}", ranks, program, path);
 }
 
 }  // namespace restitution::gas_deck

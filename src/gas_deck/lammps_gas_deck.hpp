@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// A complete LAMMPS input for the freely cooling gas of N equal spheres at packing fraction φ in a periodic
-// cube (docs/gas.md, "The LAMMPS deck"): a data file of the initial state (gas_deck/placement.hpp), the law's
-// lines with their prerequisites, a time step that keeps the ε error of LAMMPS's integrator below a bound at
-// the fast end of the impact speeds and grows with the cooling as the contact duration does, the temperature
-// printed on a log-spaced schedule of times, and the same gas with the constant-ε companion lines (the
-// recipe whose ε at the calibration speed is the law's) for Haff's law.
+// A complete LAMMPS (or LIGGGHTS) input for the freely cooling gas of N equal spheres at packing fraction φ
+// in a periodic cube (docs/gas.md, "The LAMMPS deck"): a data file of the initial state
+// (gas_deck/placement.hpp), the law's lines with their prerequisites, a time step that keeps the ε error of
+// LAMMPS's integrator below a bound at the fast end of the impact speeds and grows with the cooling as the
+// contact duration does, the temperature printed on a log-spaced schedule of times, and the same gas with the
+// constant-ε companion lines (the recipe whose ε at the calibration speed is the law's) for Haff's law.
+// LIGGGHTS 3.8.0 reads the same data file; its law is `hertz/stiffness` (dem/deck_liggghts.hpp), its
+// companion `model hertz` with the coefficientRestitution that gives the law's ε at the calibration speed
+// (damping-check's liggghts-hertz recipe), and, lacking LAMMPS's immediate variables $(...), the schedule
+// uses equal-style ones.
 //
 // Each input prints one line per scheduled time, read back by `restitution gas --compare`:
 //   restitution-gas law=viscoelastic time_s=... temperature_j=... timestep_s=... step=...
@@ -24,7 +28,8 @@ inline constexpr std::string_view kGasTag = "restitution-gas";
 inline constexpr double kFastSpeedFactor = 3.0;
 
 struct GasDeckRequest {
-  Material material;           // one radius (radius1 = radius2) and the density
+  dem::Code code = dem::Code::lammps;  // lammps or liggghts
+  Material material;                   // one radius (radius1 = radius2) and the density
   dem::DampingSource damping;  // A, or ε at a speed (also the constant-ε companion's calibration speed)
   CollisionEnd end = CollisionEnd::delayed_recovery;
   std::size_t particles = 2000;
@@ -62,7 +67,8 @@ struct GasDeck {
 // Throws InvalidInput naming the option for a bad request (two radii, N < 2, φ out of range, ...).
 GasDeck lammps_gas_deck(const GasDeckRequest& request, const std::string& data_file_name);
 
-// How to run an input `path` (with the data file next to it), on `ranks` MPI ranks (1: no mpirun).
-std::string gas_deck_command(const std::string& path, int ranks);
+// How to run an input `path` (with the data file next to it) with `code`, on `ranks` MPI ranks (1: no
+// mpirun).
+std::string gas_deck_command(dem::Code code, const std::string& path, int ranks);
 
 }  // namespace restitution::gas_deck

@@ -8,7 +8,6 @@
 // exponent within 0.05 of the serial run's). The two serial runs go side by side, then the MPI run: about 2 x
 // 15 s here on an idle machine.
 #include <gtest/gtest.h>
-#include <sys/resource.h>
 
 #include <chrono>
 #include <cmath>
@@ -21,67 +20,38 @@
 
 #include "cli_runner.hpp"
 #include "dem/code_runner.hpp"
-#include "dem/process_output.hpp"
+#include "dem/gas_deck_runs.hpp"
 #include "gas_deck/gas_comparison.hpp"
 #include "gas_deck/gas_log.hpp"
 #include "gas_deck/lammps_gas_deck.hpp"
+#include "issue_gas.hpp"
 
 namespace {
 
 namespace gd = restitution::gas_deck;
 
-gd::GasDeckRequest issue_gas() {
-  gd::GasDeckRequest r;
-  r.material.young_modulus_pa = 1e8;
-  r.material.poisson_ratio = 0.4;
-  r.material.density_kg_m3 = 920.0;
-  r.material.radius1_m = r.material.radius2_m = 0.005;
-  r.damping.eps = 0.8;
-  r.damping.velocity_m_s = 2.0;
+// Issue 35's run: N = 2000, rms speed 1 m/s per direction, 30 tau0.
+gd::GasDeckRequest issue_run() {
+  gd::GasDeckRequest r = restitution::test_support::issue_gas();
   r.particles = 2000;
-  r.packing_fraction = 0.1;
   r.rms_speed_m_s = 1.0;
   r.haff_times = 30.0;
   return r;
 }
 
-struct TimedRun {
-  std::string output;
-  double wall_s = 0.0;
-};
-
-TimedRun run(const std::string& command) {
-  const auto start = std::chrono::steady_clock::now();
-  TimedRun r;
-  r.output = restitution::dem::output_of(command + " 2>&1");
-  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return r;
-}
-
-// CPU seconds of every finished child process so far (the shells popen ran, and their lmp and mpirun).
-double children_cpu_s() {
-  rusage u{};
-  getrusage(RUSAGE_CHILDREN, &u);
-  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
-const gd::RunComparison& run_of(const gd::GasComparison& c, const std::string& law) {
-  for (const auto& r : c.runs)
-    if (r.law == law) return r;
-  throw std::runtime_error("no " + law + " run");
-}
+using restitution::test_support::children_cpu_s;
+using restitution::test_support::run_of;
+using restitution::test_support::timed_run;
+using restitution::test_support::TimedRun;
 
 TEST(GasDeckLammps, CoolsAsTheTheorySaysSeriallyAndOnTwoRanks) {
   ASSERT_FALSE(restitution::dem::dem_program(restitution::dem::Code::lammps).empty())
       << "lmp not found on PATH: scripts/setup installs Debian's lammps";
   restitution::test_support::TempFolder folder;
-  const gd::GasDeckRequest request = issue_gas();
+  const gd::GasDeckRequest request = issue_run();
   const gd::GasDeck deck = gd::lammps_gas_deck(request, "gas.data");
   ASSERT_TRUE(deck.warnings.empty()) << deck.warnings.front();
-  std::ofstream(folder.path / "gas.data") << deck.data;
-  std::ofstream(folder.path / "gas.in") << deck.law_input;
-  std::ofstream(folder.path / "gas_constant_eps.in") << deck.constant_eps_input;
+  restitution::test_support::write_gas_deck_files(folder.path, deck);
 
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
@@ -90,13 +60,14 @@ TEST(GasDeckLammps, CoolsAsTheTheorySaysSeriallyAndOnTwoRanks) {
   setenv("OMPI_MCA_mpi_yield_when_idle", "1", 1);
   const std::string in = "cd " + folder.path.string() + " && ";
   const double cpu_before = children_cpu_s();
-  auto law = std::async(std::launch::async, [&] { return run(in + "lmp -log none -in gas.in"); });
+  auto law = std::async(std::launch::async, [&] { return timed_run(in + "lmp -log none -in gas.in"); });
   auto companion =
-      std::async(std::launch::async, [&] { return run(in + "lmp -log none -in gas_constant_eps.in"); });
+      std::async(std::launch::async, [&] { return timed_run(in + "lmp -log none -in gas_constant_eps.in"); });
   const TimedRun serial = law.get();
   const TimedRun constant = companion.get();
   const double serial_cpu_s = children_cpu_s() - cpu_before;
-  const TimedRun mpi = run(in + "mpirun --allow-run-as-root --oversubscribe -np 2 lmp -log none -in gas.in");
+  const TimedRun mpi =
+      timed_run(in + "mpirun --allow-run-as-root --oversubscribe -np 2 lmp -log none -in gas.in");
 
   const gd::GasSetup setup = gd::gas_setup(request);
   const auto both = gd::read_gas_log(serial.output + constant.output, "serial runs");

@@ -47,7 +47,8 @@ std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, 
   json.field("packing_fraction", r.particles.packing_fraction);
   json.field("contact_correlation", c.contact_correlation).field("number_density_m3", c.number_density_m3);
   json.field("initial_temperature_j", r.initial_temperature_j);
-  json.field("tau0_s", c.tau0_s).field("haff_eps", c.haff_eps).field("a2", c.a2);
+  json.field("tau0_s", c.tau0_s).field("haff_eps", c.haff_eps);
+  if (!c.a2_evolving) json.field("a2", c.a2);  // evolving: the array "a2" of the curve
   json.field("collision_rate_factor", r.collision_rate_factor).field("duration_s", c.duration_s);
   for (const gas::CurveColumn& col : gas::curve_columns(c)) {
     json.key(col.name).begin_array();
@@ -69,18 +70,21 @@ std::string text_table(const gas::CoolingRequest& r, const gas::CoolingCurve& c)
       "J\n",
       r.particles.mass_kg, r.particles.diameter_m, r.particles.packing_fraction, c.contact_correlation,
       c.number_density_m3, r.initial_temperature_j);
+  const char* a2_kind = c.a2_evolving ? " (first Sonine correction, evolving from this: column a2)"
+                        : c.a2 == 0.0 ? " (Maxwellian)"
+                                      : " (first Sonine correction, constant)";
   fmt::format_to(line, "# Haff's law tangent at t = 0: tau0 = {:.10g} s, eps = {:.10g}; a2 = {:g}{}\n",
-                 c.tau0_s, c.haff_eps, c.a2,
-                 c.a2 == 0.0 ? " (Maxwellian)" : " (first Sonine correction, constant)");
-  fmt::format_to(line, "{:>13} {:>13} {:>10} {:>10} {:>9} {:>12} {:>12} {:>12} {:>10}\n", "time_s",
+                 c.tau0_s, c.haff_eps, c.a2, a2_kind);
+  fmt::format_to(line, "{:>13} {:>13} {:>10} {:>10} {:>9} {:>12} {:>12} {:>12} {:>10}{}\n", "time_s",
                  "temperature_j", "T/T0", "Haff T/T0", "exponent", "cooling_1/s", "collisions/s",
-                 "collisions", "eps_eff");
+                 "collisions", "eps_eff", c.a2_evolving ? fmt::format(" {:>11}", "a2") : "");
   for (std::size_t i = 0; i < c.time_s.size(); ++i) {
     fmt::format_to(
-        line, "{:>13.6e} {:>13.6e} {:>10.4e} {:>10.4e} {:>9.5f} {:>12.5e} {:>12.5e} {:>12.5e} {:>10.7f}\n",
+        line, "{:>13.6e} {:>13.6e} {:>10.4e} {:>10.4e} {:>9.5f} {:>12.5e} {:>12.5e} {:>12.5e} {:>10.7f}{}\n",
         c.time_s[i], c.temperature_j[i], c.temperature_j[i] / r.initial_temperature_j,
         c.haff_temperature_j[i] / r.initial_temperature_j, c.local_exponent[i], c.cooling_rate_hz[i],
-        c.collision_frequency_hz[i], c.collisions_per_particle[i], c.effective_eps[i]);
+        c.collision_frequency_hz[i], c.collisions_per_particle[i], c.effective_eps[i],
+        c.a2_evolving ? fmt::format(" {:>11.4e}", c.sonine_a2[i]) : "");
   }
   return out;
 }

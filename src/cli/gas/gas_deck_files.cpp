@@ -58,11 +58,11 @@ void print_gas_deck_text(const GasDeckPaths& paths, const gas_deck::GasDeck& d,
   fmt::print("# shear instability: L_c = {:.4g} diameters; longest shear mode grows {:.3g}-fold\n",
              d.shear_critical_length_m / d.diameter_m, d.shear_mode_growth);
   for (const auto& w : d.warnings) fmt::print("# warning: {}\n", w);
-  fmt::print(
-      "# run from {}: {} and {} (or mpirun -np 4 lmp -in ...); then restitution gas --compare LOG...\n",
-      paths.data.parent_path().empty() ? fs::path(".").string() : paths.data.parent_path().string(),
-      gas_deck::gas_deck_command(paths.law_input.filename().string(), 1),
-      gas_deck::gas_deck_command(paths.constant_eps_input.filename().string(), 1));
+  fmt::print("# run from {}: {} and {} (or {}); then restitution gas --compare LOG...\n",
+             paths.data.parent_path().empty() ? fs::path(".").string() : paths.data.parent_path().string(),
+             gas_deck::gas_deck_command(request.code, paths.law_input.filename().string(), 1),
+             gas_deck::gas_deck_command(request.code, paths.constant_eps_input.filename().string(), 1),
+             gas_deck::gas_deck_command(request.code, "...", 4));
 }
 
 void write_gas_deck_json(JsonWriter& json, const GasDeckPaths& paths, const gas_deck::GasDeck& d) {

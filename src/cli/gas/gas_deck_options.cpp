@@ -17,8 +17,13 @@ namespace restitution::cli {
 void add_gas_deck_options(CLI::App& cmd, GasDeckOptions& o) {
   cmd.add_option(
       "--deck", o.deck,
-      "write a LAMMPS input of this gas to FILE, its constant-eps companion to STEM_constant_eps.EXT "
+      "write a LAMMPS (or --code liggghts) input of this gas to FILE, its constant-eps companion to "
+      "STEM_constant_eps.EXT "
       "and their data file to STEM.data (docs/gas.md, The LAMMPS deck)");
+  cmd.add_option("--code", o.code,
+                 "with --deck: the DEM code, lammps or liggghts (LIGGGHTS 3.8.0: the same data "
+                 "file, hertz/stiffness lines, a model hertz companion)")
+      ->capture_default_str();
   cmd.add_option("--particles", o.particles, "spheres in the deck's periodic box (>= 2)")
       ->capture_default_str();
   cmd.add_option("--seed", o.seed, "seed of the deck's random positions and velocities")
@@ -48,6 +53,11 @@ gas_deck::GasDeckRequest deck_request(const GasDeckOptions& o, const GasOptions&
     throw InvalidInput("--deck and --compare: only --law viscoelastic-hertz (LAMMPS's damping viscoelastic)");
   const gas::CoolingRequest theory = cooling_request(gas);
   gas_deck::GasDeckRequest r;
+  try {
+    r.code = dem::code_from_name(o.code);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("--code: {}", e.what()));
+  }
   r.material = material_from(gas.material);
   r.damping = {gas.dissipative_constant, gas.eps, gas.velocity};
   r.end = end_from_name(gas.end);

@@ -23,6 +23,7 @@ struct GasDeckOptions {
   std::size_t particles = 2000;
   std::uint64_t seed = 1;
   double max_eps_error = 1e-3;
+  std::string code = "lammps";  // --code: lammps or liggghts
 };
 void add_gas_deck_options(CLI::App& cmd, GasDeckOptions& o);
 [[nodiscard]] bool gas_deck_requested(const GasDeckOptions& o);

@@ -39,8 +39,9 @@ void add_gas_options(CLI::App& command, GasOptions& o) {
   command.add_option("--points-per-decade", o.points_per_decade, "points of the time grid per decade")
       ->capture_default_str();
   command.add_option("--a2", o.a2,
-                     "first Sonine coefficient a2, held constant: a number, or haff (van Noije & Ernst's a2 "
-                     "of the Haff eps); default Maxwellian (a2 = 0)");
+                     "first Sonine coefficient a2: a number or haff (van Noije & Ernst's a2 of the Haff "
+                     "eps), held constant, or evolving (a2(t) from the Sonine moment equations, from 0); "
+                     "default Maxwellian (a2 = 0)");
   command
       .add_option("--collision-rate-factor", o.collision_rate_factor,
                   "factor on Enskog's collision rate (e.g. one measured on a simulation)")
@@ -74,7 +75,8 @@ gas::CoolingRequest cooling_request(const GasOptions& o) {
   in.collision_rate_factor = o.collision_rate_factor;
   in.tolerance = o.tolerance;
   in.a2_of_haff_eps = o.a2 == "haff";
-  if (!o.a2.empty() && !in.a2_of_haff_eps) {
+  in.a2_evolving = o.a2 == "evolving";
+  if (!o.a2.empty() && !in.a2_of_haff_eps && !in.a2_evolving) {
     std::size_t used = 0;
     double value = 0.0;
     try {
@@ -82,7 +84,9 @@ gas::CoolingRequest cooling_request(const GasOptions& o) {
     } catch (const std::exception&) {
       used = 0;
     }
-    if (used != o.a2.size()) throw InvalidInput(fmt::format("--a2 must be a number or haff, got '{}'", o.a2));
+    if (used != o.a2.size()) {
+      throw InvalidInput(fmt::format("--a2 must be a number, haff or evolving, got '{}'", o.a2));
+    }
     in.a2 = value;
   }
   return gas::cooling_request(in, gas::ArgumentStyle::option);

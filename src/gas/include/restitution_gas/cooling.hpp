@@ -9,6 +9,8 @@
 // T = T₀/(1 + t/τ₀)², 1/τ₀ = ζ(T₀)/2 (Haff, J. Fluid Mech. 134, 401 (1983)); viscoelastic Hertz cools more
 // slowly, T ∝ t^{−5/3} as t -> ∞ (Brilliantov & Pöschel, PRE 61, 5573 (2000); Schwager & Pöschel, PRE 57, 650
 // (1998)), the local exponent d ln T/d ln t = −t ζ(T) approaching −5/3 as ζ(T) at the thermal speed vanishes.
+// With an evolving a₂ the system is two-dimensional: a₂(x) solves da₂/dx = F(x, a₂) (no time in it) by
+// Gauss collocation on the same panels, and t(x) is again the quadrature of 1/ζ(T, a₂) (docs/gas.md).
 #include <optional>
 #include <vector>
 
@@ -34,8 +36,11 @@ struct CoolingRequest {
   double first_time_s = 0.0;
   int points_per_decade = 20;
   std::vector<double> times_s;
-  // The first Sonine coefficient a₂, held constant (docs/gas.md); none: Maxwellian (a₂ = 0).
+  // The first Sonine coefficient a₂, held constant (docs/gas.md); none: Maxwellian (a₂ = 0). With
+  // a2_evolving, a₂(t) follows the Sonine moment equations from this initial value (none: 0, a Maxwellian
+  // start like the deck's), integrated with T (docs/gas.md, "The first Sonine correction").
   std::optional<double> a2;
+  bool a2_evolving = false;
   // A factor on the collision rate (1: Enskog's); e.g. one measured on a simulation (docs/gas.md).
   double collision_rate_factor = 1.0;
   double tolerance = SolveOptions{}.tolerance;  // each solve of a law without a fast table
@@ -44,7 +49,8 @@ struct CoolingRequest {
 struct CoolingCurve {
   double contact_correlation = 0.0;  // g₂ (Carnahan–Starling)
   double number_density_m3 = 0.0;    // n [1/m³]
-  double a2 = 0.0;                   // the Sonine coefficient used
+  double a2 = 0.0;                   // the Sonine coefficient used (evolving: its initial value)
+  bool a2_evolving = false;
   // Haff's law tangent at t = 0: τ₀ = 2/ζ(T₀) [s], the Haff time of haff_eps, the constant ε that cools at
   // the initial rate (ε_eff(T₀); the law's ε itself when it is constant).
   double tau0_s = 0.0;
@@ -58,6 +64,7 @@ struct CoolingCurve {
   std::vector<double> collision_frequency_hz;   // ω(T) per sphere [1/s]
   std::vector<double> collisions_per_particle;  // ∫₀^t ω dt'
   std::vector<double> effective_eps;            // ε_eff(T) (collision_integral.hpp)
+  std::vector<double> sonine_a2;                // a₂(t) when it evolves; empty when held constant
 };
 
 // Throws InvalidInput naming the argument (mass, diameter, packing_fraction outside (0, 0.5),

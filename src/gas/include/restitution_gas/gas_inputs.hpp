@@ -26,6 +26,7 @@ struct GasInputs {
   int points_per_decade = CoolingRequest{}.points_per_decade;
   std::optional<double> a2;     // none: Maxwellian, unless a2_of_haff_eps
   bool a2_of_haff_eps = false;  // van Noije & Ernst's a₂ of the Maxwellian gas's Haff ε
+  bool a2_evolving = false;     // a₂(t) from the Sonine moment equations, from 0 (a Maxwellian start)
   double collision_rate_factor = 1.0;
   double tolerance = SolveOptions{}.tolerance;
 };
@@ -41,7 +42,8 @@ struct CurveColumn {
   const char* name;
   const std::vector<double>* values;
 };
-// The columns in the order the CSV and the JSON give them, one per field of CoolingCurve.
+// The columns in the order the CSV and the JSON give them, one per field of CoolingCurve; "a2" (a₂(t)) last,
+// only when it evolves.
 std::vector<CurveColumn> curve_columns(const CoolingCurve& curve);
 
 }  // namespace restitution::gas
