@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -66,6 +67,31 @@ TEST(GasScene, RefusesBadKeysByName) {
   std::string unknown = kGas;
   unknown.replace(unknown.find("\"pe\""), 4, "\"ice\"");
   EXPECT_NE(error_of(kHead + unknown).find("material"), std::string::npos);
+}
+
+TEST(GasScene, ReadsTheSonineCoefficientInTheCommandsWords) {
+  EXPECT_EQ(parse_scene(kHead + kGas, "gas.toml").gases[0].a2, "");
+  EXPECT_EQ(parse_scene(kHead + kGas + "a2 = -0.0125\n", "gas.toml").gases[0].a2, "-0.0125");
+  EXPECT_EQ(parse_scene(kHead + kGas + "a2 = \"haff\"\n", "gas.toml").gases[0].a2, "haff");
+  EXPECT_EQ(parse_scene(kHead + kGas + "a2 = \"evolving\"\n", "gas.toml").gases[0].a2, "evolving");
+  for (const char* bad : {"a2 = \"evolve\"\n", "a2 = true\n"}) {
+    const std::string error = error_of(kHead + kGas + bad);
+    EXPECT_NE(error.find("gas.toml:"), std::string::npos) << error;
+    EXPECT_NE(error.find("a2"), std::string::npos) << error;
+    EXPECT_NE(error.find("evolving"), std::string::npos) << error;
+  }
+}
+
+TEST(GasScene, EvolvingSonineCoefficientIsAColumnOfTheSectionsTable) {
+  const test_support::TempFolder folder;
+  const std::filesystem::path scene = folder.path / "gas.toml";
+  std::ofstream(scene) << kHead + kGas + "a2 = \"evolving\"\n";
+  const auto outcome =
+      test_support::run_cli("run " + scene.string() + " --output " + (folder.path / "out").string());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const std::string table = test_support::slurp((folder.path / "out" / "g.csv").string());
+  const std::string header = table.substr(0, table.find('\n'));
+  EXPECT_NE(header.find(",a2"), std::string::npos) << header;
 }
 
 TEST(GasScene, SceneWritesBothCurves) {

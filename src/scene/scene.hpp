@@ -156,6 +156,8 @@ struct GasTask {
   std::optional<double> rms_speed_m_s, temperature_j;  // exactly one
   std::optional<double> duration_s, haff_times;        // exactly one
   int points_per_decade = 20;
+  std::string
+      a2;  // the first Sonine coefficient as `gas --a2` takes it: "" (Maxwellian), a number, haff, evolving
   int line = 0;
 };
 

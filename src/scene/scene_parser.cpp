@@ -517,7 +517,20 @@ class Parser {
           "a whole number in [1, 1000]");
       g.points_per_decade = static_cast<int>(*points);
     }
+    g.a2 = read_sonine_a2(r);
     return g;
+  }
+
+  // `a2 = 0.02`, "haff" or "evolving", in the words of `gas --a2` (the library checks the number's range).
+  static std::string read_sonine_a2(TomlReader& r) {
+    if (!r.has("a2")) return {};
+    const toml::node* node = r.take("a2");
+    if (node->is_number()) return fmt::format("{}", *r.number("a2"));
+    const auto* word = node->as_string();
+    if (word == nullptr || (word->get() != "haff" && word->get() != "evolving")) {
+      r.fail("a2", "a number, \"haff\" (van Noije & Ernst's a2 of the Haff eps) or \"evolving\" (a2(t))");
+    }
+    return word->get();
   }
 
   DampingCheckTask read_damping_check(TomlReader& r) {

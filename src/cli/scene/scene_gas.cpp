@@ -35,6 +35,7 @@ GasOptions options_of(const scene::Scene& scene, const scene::GasTask& task) {
   o.duration = task.duration_s;
   o.haff_times = task.haff_times;
   o.points_per_decade = task.points_per_decade;
+  o.a2 = task.a2;
   o.tolerance = scene.tolerance;
   return o;
 }
