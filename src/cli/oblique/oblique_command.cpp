@@ -188,8 +188,8 @@ void draw(const ObliqueCommandOptions& o, const Setup& s, const std::vector<Obli
   } else if (const auto folder = std::filesystem::path(o.plot).parent_path(); !folder.empty()) {
     std::filesystem::create_directories(folder);
   }
-  const std::string why = plot_maw(s, impacts.front().result.normal_restitution, {maw_series(s, data)},
-                                   o.plot, scene::figure_formats_from_list(o.format));
+  const std::string why = plot_maw(s, impacts.front().result.normal_restitution, data, o.plot,
+                                   scene::figure_formats_from_list(o.format));
   if (o.out.empty()) {
     std::error_code ignored;
     std::filesystem::remove(data, ignored);

@@ -49,11 +49,16 @@ const char* oblique_csv_header() {
          "contact_time_s,stick_time_s,slip_time_s,switches,initial_spin_rad_s,psi_in,psi_out";
 }
 
-std::string oblique_csv(const std::vector<ObliqueImpact>& impacts) {
+std::string oblique_csv_header_with_model() {
+  return std::string("tangential_model,") + oblique_csv_header();
+}
+
+std::string oblique_csv_rows(const std::vector<ObliqueImpact>& impacts, const char* model) {
   constexpr double kDegree = 3.14159265358979323846 / 180.0;
-  std::string csv = std::string(oblique_csv_header()) + "\n";
+  std::string csv;
   for (const ObliqueImpact& i : impacts) {
     const ObliqueResult& r = i.result;
+    if (model != nullptr) csv += std::string(model) + ",";
     csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{}\n", number17(i.angle_deg),
                        number17(r.normal_restitution), number17(r.tangential_restitution),
                        number17(r.rebound_angle_rad / kDegree), number17(r.spin_first_rad_s),
@@ -64,23 +69,29 @@ std::string oblique_csv(const std::vector<ObliqueImpact>& impacts) {
   return csv;
 }
 
-MawSeries maw_series(const ObliqueSetup& setup, const std::filesystem::path& csv_path) {
-  return {csv_path, setup.tangential.kind, sticking_limit_restitution(setup)};
+std::string oblique_csv(const std::vector<ObliqueImpact>& impacts) {
+  return std::string(oblique_csv_header()) + "\n" + oblique_csv_rows(impacts, nullptr);
 }
 
-std::string plot_maw(const ObliqueSetup& setup, double normal_restitution,
-                     const std::vector<MawSeries>& series, const std::filesystem::path& image,
-                     const std::vector<std::string>& formats) {
-  if (series.empty()) return "no plot: no sweep";
-  if (!(setup.tangential.friction > 0.0)) return "no plot: Maw's diagram needs friction > 0";
-  std::vector<std::string> arguments = {number17(maw_chi(setup)), number17(normal_restitution),
-                                        tangential_name(series.front().model),
-                                        number17(series.front().sticking_restitution)};
-  for (std::size_t i = 1; i < series.size(); ++i) {
-    arguments.insert(arguments.end(), {"--series", series[i].csv.string(), tangential_name(series[i].model),
-                                       number17(series[i].sticking_restitution)});
+MawModel maw_model(const ObliqueSetup& setup) {
+  return {setup.tangential.kind, sticking_limit_restitution(setup)};
+}
+
+std::vector<std::string> maw_plot_arguments(const ObliqueSetup& setup, double normal_restitution,
+                                            const std::vector<MawModel>& models) {
+  std::vector<std::string> arguments = {number17(maw_chi(setup)), number17(normal_restitution)};
+  for (const MawModel& m : models) {
+    arguments.insert(arguments.end(),
+                     {"--model", tangential_name(m.model), number17(m.sticking_restitution)});
   }
-  return run_plot_script("oblique_maw", series.front().csv, image, arguments, formats);
+  return arguments;
+}
+
+std::string plot_maw(const ObliqueSetup& setup, double normal_restitution, const std::filesystem::path& csv,
+                     const std::filesystem::path& image, const std::vector<std::string>& formats) {
+  if (!(setup.tangential.friction > 0.0)) return "no plot: Maw's diagram needs friction > 0";
+  return run_plot_script("oblique_maw", csv, image,
+                         maw_plot_arguments(setup, normal_restitution, {maw_model(setup)}), formats);
 }
 
 }  // namespace restitution::cli

@@ -17,23 +17,28 @@ std::vector<double> angle_range(const std::string& text);
 
 // The CSV's header line (without newline).
 const char* oblique_csv_header();
-// The header and one row per impact.
+// The header and one row per impact; with a model, a first column tangential_model holding it (a scene's
+// section sweeps several models into one table).
 std::string oblique_csv(const std::vector<oblique::ObliqueImpact>& impacts);
+std::string oblique_csv_header_with_model();
+std::string oblique_csv_rows(const std::vector<oblique::ObliqueImpact>& impacts, const char* model);
 
-// One model's sweep on Maw's diagram: its CSV (oblique_csv), the model and its sticking-limit e_t.
-struct MawSeries {
-  std::filesystem::path csv;
+// One model on Maw's diagram: the model and its sticking-limit e_t.
+struct MawModel {
   oblique::TangentialKind model = oblique::TangentialKind::linear_history;
   double sticking_restitution = 0.0;
 };
+MawModel maw_model(const oblique::ObliqueSetup& setup);
 
-// The series of a setup and its sweep, written to csv_path.
-MawSeries maw_series(const oblique::ObliqueSetup& setup, const std::filesystem::path& csv_path);
+// The arguments of scripts/plots/oblique_maw.py after its CSV and image: χ and ε of the gross-slip line, each
+// model with its sticking limit.
+std::vector<std::string> maw_plot_arguments(const oblique::ObliqueSetup& setup, double normal_restitution,
+                                            const std::vector<MawModel>& models);
 
-// Draws ψ₂ against ψ₁ for every series (the first one's χ and ε give the gross-slip line) into image in each
-// format. Returns "" or why no plot was made (as run_plot_script).
+// Draws ψ₂ against ψ₁ of the CSV into image in each format. Returns "" or why no plot was made (as
+// run_plot_script); friction 0 has no ψ.
 std::string plot_maw(const oblique::ObliqueSetup& setup, double normal_restitution,
-                     const std::vector<MawSeries>& series, const std::filesystem::path& image,
+                     const std::filesystem::path& csv, const std::filesystem::path& image,
                      const std::vector<std::string>& formats);
 
 }  // namespace restitution::cli
