@@ -24,8 +24,10 @@ std::string spelled(const char* keyword, ArgumentStyle style) {
   return option;
 }
 
+// The lists are named as the command and Python take them, one value or several: --angle, angle (a scene's
+// parser checks its own `angles` and `spins` before).
 void check_lists(const ObliqueInputs& in, ArgumentStyle style) {
-  const std::string angle = spelled("angles", style);
+  const std::string angle = spelled("angle", style);
   if (in.angles_deg.empty())
     throw InvalidInput(fmt::format("give {} (one or more impact angles from the normal, degrees)", angle));
   for (const double a : in.angles_deg) {
@@ -33,7 +35,7 @@ void check_lists(const ObliqueInputs& in, ArgumentStyle style) {
       throw InvalidInput(fmt::format("{} must be in [0, 90) degrees from the normal, got {}", angle, a));
     }
   }
-  const std::string spin = spelled("spins", style);
+  const std::string spin = spelled("spin", style);
   if (in.spins_rad_s.empty()) throw InvalidInput(fmt::format("give {} (one or more, rad/s)", spin));
   for (const double w : in.spins_rad_s) {
     if (!std::isfinite(w)) throw InvalidInput(fmt::format("{} must be finite rad/s, got {}", spin, w));
@@ -133,19 +135,21 @@ double maw_chi(const ObliqueSetup& setup) {
   return (1.0 - nu) / (2.0 - nu) * inertia_factor;
 }
 
+ObliqueImpact solve_impact(const ObliqueSetup& setup, double angle_deg, double spin_rad_s) {
+  const ImpactVelocity v = impact_at(setup, angle_deg, spin_rad_s);
+  ObliqueImpact impact{angle_deg, spin_rad_s,
+                       solve_oblique(setup.geometry, setup.normal, setup.tangential, v, setup.options)};
+  const double slip_in = v.tangential_m_s + setup.geometry.first.radius_m * spin_rad_s;
+  impact.psi_in = maw_psi(setup, slip_in, v.normal_m_s);
+  impact.psi_out = maw_psi(setup, impact.result.slip_velocity_m_s, v.normal_m_s);
+  return impact;
+}
+
 std::vector<ObliqueImpact> oblique_sweep(const ObliqueSetup& setup) {
   std::vector<ObliqueImpact> out;
   out.reserve(setup.angles_deg.size() * setup.spins_rad_s.size());
   for (const double angle : setup.angles_deg) {
-    for (const double spin : setup.spins_rad_s) {
-      const ImpactVelocity v = impact_at(setup, angle, spin);
-      ObliqueImpact impact{angle, spin,
-                           solve_oblique(setup.geometry, setup.normal, setup.tangential, v, setup.options)};
-      const double slip_in = v.tangential_m_s + setup.geometry.first.radius_m * spin;
-      impact.psi_in = maw_psi(setup, slip_in, v.normal_m_s);
-      impact.psi_out = maw_psi(setup, impact.result.slip_velocity_m_s, v.normal_m_s);
-      out.push_back(std::move(impact));
-    }
+    for (const double spin : setup.spins_rad_s) out.push_back(solve_impact(setup, angle, spin));
   }
   return out;
 }

@@ -10,7 +10,6 @@
 #include <numbers>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <system_error>
 #include <utility>
 #include <vector>
@@ -83,17 +82,7 @@ Setup setup_of(const ObliqueCommandOptions& o) {
   in.speed_m_s = o.speed;
   in.angles_deg = o.angle_range.empty() ? o.angles_deg : angle_range(o.angle_range);
   in.spins_rad_s = o.spins;
-  try {
-    return oblique_setup(in, ArgumentStyle::option);
-  } catch (const InvalidInput& e) {
-    // The study names its lists as keywords do (--angles, --spins); the command's options are singular.
-    std::string message = e.what();
-    for (const std::string_view plural : {"--angles", "--spins"}) {
-      if (const auto at = message.find(plural); at != std::string::npos)
-        message.erase(at + plural.size() - 1, 1);
-    }
-    throw InvalidInput(message);
-  }
+  return oblique_setup(in, ArgumentStyle::option);
 }
 
 void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueImpact>& impacts) {

@@ -74,6 +74,9 @@ struct ObliqueImpact {
   double psi_out = 0.0;  // ψ₂ of the outgoing one, over the same incoming normal speed
 };
 
+// One impact of the setup at angle_deg from the normal, the first sphere spinning at spin_rad_s.
+ObliqueImpact solve_impact(const ObliqueSetup& setup, double angle_deg, double spin_rad_s);
+
 // Every (angle, spin) pair, angles outermost, in the order given.
 std::vector<ObliqueImpact> oblique_sweep(const ObliqueSetup& setup);
 
