@@ -47,9 +47,12 @@ def main():
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
     markers = "osd^v<>"
     spins = sorted({spin for curves in data.values() for spin in curves})
-    hi = max([4.0 * a.chi] + [p[0] for curves in data.values() for points in curves.values() for p in points])
-    # The diagram's shape lies below psi_1 of a few 4 chi; grazing impacts beyond continue on the gross-slip line.
+    psi = [p[0] for curves in data.values() for points in curves.values() for p in points]
+    hi = max([4.0 * a.chi] + psi)
+    # The diagram's shape lies within |psi_1| of a few 4 chi; grazing impacts beyond continue on the gross-slip
+    # line. A spin against the slip gives psi_1 < 0, where the diagram is the mirror image.
     right = min(hi, 12.0 * a.chi)
+    left = max(min([0.0] + psi), -12.0 * a.chi)
     for index, (model, e_stick) in enumerate(a.model):
         e_stick = float(e_stick)
         color = f"C{index}"
@@ -67,15 +70,19 @@ def main():
         for spin in spins:
             ax.plot([], [], ls="none", color="gray", marker=markers[spins.index(spin) % len(markers)],
                     label=rf"initial spin $\omega_0$ = {spin:g} rad/s")
-    line = [0.0, right]
-    ax.plot(line, [v - 2.0 * (1.0 + a.eps) * a.chi for v in line], ls="--", color="k", lw=1,
+    shift = 2.0 * (1.0 + a.eps) * a.chi
+    ax.plot([0.0, right], [-shift, right - shift], ls="--", color="k", lw=1,
             label=rf"gross slip $\psi_2 = \psi_1 - 2(1+\varepsilon)\chi$, $\chi$ = {a.chi:.4g}")
-    ax.set_xlim(0.0, right * 1.02)
-    top = max(2.0, right - 2.0 * (1.0 + a.eps) * a.chi)
-    ax.set_ylim(-2.0 * (1.0 + a.eps) * a.chi - 0.5, top + 0.5)
-    if hi > right:
-        ax.text(0.98, 0.02, rf"$\psi_1$ up to {hi:.3g} continue on the gross-slip line", transform=ax.transAxes,
-                ha="right", va="bottom", fontsize=8)
+    mirrored = left < -shift  # the data reach the mirrored gross-slip line
+    if mirrored:
+        ax.plot([left, 0.0], [left + shift, shift], ls="--", color="k", lw=1)
+    ax.set_xlim(left * 1.02, right * 1.02)
+    top = max(2.0, right - shift, shift if mirrored else 0.0)
+    bottom = min(-shift, left + shift)
+    ax.set_ylim(bottom - 0.5, top + 0.5)
+    if hi > right or min([0.0] + psi) < left:
+        ax.text(0.98, 0.02, rf"$|\psi_1|$ up to {max(hi, -min(psi)):.3g} continue on the gross-slip line",
+                transform=ax.transAxes, ha="right", va="bottom", fontsize=8)
     ax.axhline(0.0, color="gray", lw=0.6)
     ax.set_xlabel(r"incoming $\psi_1 = \kappa\, s_1 / (\mu v_n)$, $\kappa = 2(1-\nu)/(2-\nu)$")
     ax.set_ylabel(r"outgoing $\psi_2 = \kappa\, s_2 / (\mu v_n)$")
