@@ -118,10 +118,13 @@ def test_docstring_example_runs():
     (dict(angle="10"), TypeError, "angle"),
     (dict(angle=10.0, wall=1), TypeError, "wall"),
     (dict(angle=[10.0, 20.0], spin=[1.0, 2.0, 3.0]), ValueError, "broadcast"),
+    (dict(angle=10.0, wall=True, material=restitution.Material(young_modulus=2e11, poisson_ratio=0.3,
+                                                               radii=(1e-3, 2e-3), density=7800.0)),
+     ValueError, "wall takes one sphere"),
 ])
 def test_bad_arguments_are_named(arguments, error, words):
     keywords = dict(material=restitution.Material(**STEEL), friction=0.3, tangential="mindlin")
-    keywords.update(arguments)
+    keywords.update(arguments)  # a material of its own replaces the default
     with pytest.raises(error, match=None) as caught:
         restitution.oblique(**keywords)
     assert words in str(caught.value)

@@ -58,6 +58,10 @@ ObliqueSetup oblique_setup(const ObliqueInputs& in, ArgumentStyle style) {
   }
   if (!in.friction)
     throw InvalidInput(fmt::format("give {} MU (0 for a frictionless contact)", name("friction")));
+  if (in.wall && (m.radius1_m != m.radius2_m || m.mass1_kg != m.mass2_kg)) {
+    throw InvalidInput(
+        fmt::format("{} takes one sphere: the material has two sizes or masses", name("wall")));
+  }
   ObliqueSetup s;
   const auto mass = [&](double radius, const std::optional<double>& given) {
     return given ? *given : sphere_mass_kg(radius, *m.density_kg_m3);
