@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: BSD-3-Clause
 """The report figures are fit for a paper (issue 36): every figure of every shipped scene and of the commands
-that draw one (`series validate`, `stability`, `gas --plot`) is drawn by the program itself, and each figure's texts are
+that draw one (`series validate`, `stability`, `gas --plot`, `oblique --plot`) is drawn by the program itself, and each figure's texts are
 judged as matplotlib holds them (tests/plot_hook/sitecustomize.py records them):
 
 * axis labels carry a mathtext symbol or a unit, and a physical quantity always its unit (or "scaled");
@@ -81,7 +81,10 @@ def main(exe, source):
         run(exe, ["gas", "--radius", "0.005", "--density", "920", "--eps", "0.8", "--velocity", "2",
                   "--packing-fraction", "0.1", "--rms-speed", "1", "--haff-times", "100", "--points-per-decade", "4",
                   "--plot", os.path.join(folder, "gas.png")], env, source)
-        pngs += 3
+        run(exe, ["oblique", "--young-modulus", "2e11", "--poisson-ratio", "0.3", "--radius", "1e-3", "--density",
+                  "7800", "--wall", "--tangential", "mindlin", "--friction", "0.3", "--angle-range", "1:80:6",
+                  "--spin", "0,300", "--plot", os.path.join(folder, "oblique_maw.png")], env, source)
+        pngs += 4
         with open(log) as f:
             figures = [json.loads(line) for line in f]
         # Each PNG written was recorded (the hook ran in every plot script), and none of them has a problem.

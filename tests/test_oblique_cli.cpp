@@ -65,7 +65,7 @@ TEST(ObliqueCli, CsvHoldsTheJsonNumbers) {
       row.push_back(std::stod(line.substr(begin, end - begin)));
     }
     row.push_back(std::stod(line.substr(begin)));
-    ASSERT_EQ(row.size(), 10U);
+    ASSERT_EQ(row.size(), 13U);
     EXPECT_EQ(row[0], impact["angle_deg"].get<double>());
     EXPECT_EQ(row[2], impact["tangential_restitution"].get<double>());
     EXPECT_EQ(row[4], impact["spin_rad_s"].get<double>());

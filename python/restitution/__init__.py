@@ -584,3 +584,7 @@ def gas(*, radius=None, density=None, mass=None, eps=None, velocity=None, dissip
 
 
 __all__.append("gas")
+
+from ._oblique import ObliqueResult, oblique  # noqa: E402 (it uses the helpers above)
+
+__all__ += ["oblique", "ObliqueResult"]

@@ -8,6 +8,7 @@ import numpy.typing as npt
 
 from . import fast as fast
 from . import series as series
+from ._oblique import ObliqueResult as ObliqueResult, oblique as oblique
 
 __version__: str  # e.g. "0.3.0", the same as `restitution --version`
 

@@ -17,6 +17,7 @@
 #include "restitution/material.hpp"
 #include "restitution/series.hpp"
 #include "scene/scene_fit.hpp"
+#include "scene/scene_oblique.hpp"
 
 namespace restitution::scene {
 
@@ -177,8 +178,9 @@ struct Scene {
   std::vector<ExternalStudy> studies;
   std::vector<DemTask> dems;
   std::vector<DampingCheckTask> damping_checks;
-  std::vector<FitTask> fits;   // [[fit]]: measured eps(v) (scene_fit.hpp)
-  std::vector<GasTask> gases;  // [[gas]]
+  std::vector<FitTask> fits;          // [[fit]]: measured eps(v) (scene_fit.hpp)
+  std::vector<GasTask> gases;         // [[gas]]
+  std::vector<ObliqueTask> obliques;  // [[oblique]] (scene_oblique.hpp)
 };
 
 // Parses and validates a scene. file_name is used in messages only. Throws InvalidInput.

@@ -186,6 +186,9 @@ class Parser {
     each("dem", [this](TomlReader& r) { scene_.dems.push_back(read_dem(r)); });
     each("damping_check", [this](TomlReader& r) { scene_.damping_checks.push_back(read_damping_check(r)); });
     each("gas", [this](TomlReader& r) { scene_.gases.push_back(read_gas(r)); });
+    each("oblique", [this](TomlReader& r) {
+      scene_.obliques.push_back(detail::read_oblique_task(r, read_name(r, "oblique"), scene_.materials));
+    });
     each("fit", [this](TomlReader& r) {
       scene_.fits.push_back(detail::read_fit_task(r, read_name(r, "fit"), scene_.materials));
     });

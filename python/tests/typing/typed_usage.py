@@ -42,3 +42,8 @@ fast_array: np.ndarray = restitution.fast.eps(speeds)
 series_array: np.ndarray = restitution.series.eval("naive", speeds)
 cooling: dict = restitution.gas(radius=0.005, density=920.0, eps=0.8, velocity=2.0, packing_fraction=0.1,
                                 rms_speed=1.0, haff_times=10, a2="haff")
+
+grazing: float = restitution.oblique(material=steel, friction=0.3, angle=80.0, wall=True,
+                                     tangential_stiffness=2.2e6).tangential_restitution
+spins_after: npt.NDArray[np.float64] = restitution.oblique(material=steel, friction=0.3, angle=[10.0, 80.0],
+                                                           tangential="mindlin").spin  # rad/s

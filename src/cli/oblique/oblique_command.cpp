@@ -5,22 +5,28 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <numbers>
 #include <optional>
 #include <string>
+#include <system_error>
+#include <utility>
 #include <vector>
 
 #include "cli/common/build_json.hpp"
 #include "cli/common/commands.hpp"
 #include "cli/common/json_writer.hpp"
 #include "cli/common/material_options.hpp"
+#include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
-#include "oblique/oblique_contact.hpp"
+#include "cli/oblique/oblique_sweep.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 #include "restitution/solve_types.hpp"
 #include "restitution/units.hpp"
+#include "restitution_oblique/oblique_study.hpp"
+#include "scene/figure_formats.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -37,96 +43,49 @@ struct ObliqueCommandOptions {
   double tangential_damping = 0.0;
   std::optional<double> friction;
   std::vector<double> angles_deg;
+  std::string angle_range;  // FROM:TO:N, instead of --angle
   double speed = 1.0;
-  double spin = 0.0;
+  std::vector<double> spins = {0.0};
   std::string end = "delayed-recovery";
   std::string torque_arm = "lammps";
   double tolerance = 1e-10;
   bool json = false;
   std::string out;
+  std::string plot;  // Maw's diagram
+  std::string format = "png";
 };
 
-struct Setup {
-  ObliqueGeometry geometry;
-  NormalForce normal;
-  TangentialForce tangential;
-  ObliqueOptions options;
-  double effective_modulus_pa = 0.0;
-};
+using Setup = ObliqueSetup;
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
+// The options as the study's inputs; its rules (src/oblique/oblique_study.cpp) check them.
 Setup setup_of(const ObliqueCommandOptions& o) {
-  const Material m = material_from(o.material);
-  if (!(o.dissipative_constant >= 0.0) || !std::isfinite(o.dissipative_constant)) {
-    throw InvalidInput(fmt::format("--dissipative-constant must be a non-negative number of seconds, got {}",
-                                   o.dissipative_constant));
-  }
-  if (!o.friction) throw InvalidInput("give --friction MU (0 for a frictionless contact)");
   if (o.wall && (o.material.radius2 || o.material.mass2)) {
     throw InvalidInput("--wall takes one sphere: drop --radius2 and --mass2");
   }
-  Setup s;
-  const auto mass = [&](double radius, const std::optional<double>& given) {
-    return given ? *given : sphere_mass_kg(radius, *m.density_kg_m3);
-  };
-  s.geometry.first = solid_sphere(m.radius1_m, mass(m.radius1_m, m.mass1_kg));
-  if (!o.wall) s.geometry.second = solid_sphere(m.radius2_m, mass(m.radius2_m, m.mass2_kg));
-  s.geometry.fixed_normal = o.fixed_normal;
-  // "lammps": what LAMMPS does, R - δ/2 for a pair (pair_granular.cpp:663), R for a wall
-  // (fix_wall_gran.cpp:1512).
-  const bool half_overlap =
-      o.torque_arm == "radius-minus-half-overlap" || (o.torque_arm == "lammps" && !o.wall);
-  s.geometry.torque_arm = half_overlap ? TorqueArm::radius_minus_half_overlap : TorqueArm::radius;
-  s.effective_modulus_pa = effective_modulus_pa(m.young_modulus_pa, m.poisson_ratio);
-  // F = ρ δ^{3/2} + (3/2) A ρ sqrt(δ) δ', ρ = (4/3) E* sqrt(R*): a wall of the sphere's material has the same
-  // E*.
-  const double rho = hertz_stiffness(s.effective_modulus_pa, effective_radius_m(s.geometry));
-  s.normal = {LawKind::viscoelastic_hertz, rho, 1.5 * o.dissipative_constant * rho};
-  s.tangential.kind = tangential_from_name(o.tangential);
-  s.tangential.damping_factor = o.tangential_damping;
-  s.tangential.friction = *o.friction;
-  if (o.tangential_stiffness) {
-    s.tangential.stiffness = *o.tangential_stiffness;
-  } else if (s.tangential.kind == TangentialKind::mindlin) {
-    // LAMMPS's `mindlin NULL`: 8 G* with 1/G* = 2 · 2(2 - ν)(1 + ν)/E for two spheres of one material
-    // (pair_granular.cpp:1021-1023, mix_stiffnessG at line 1790).
-    const double nu = m.poisson_ratio;
-    s.tangential.stiffness = 8.0 * m.young_modulus_pa / (4.0 * (2.0 - nu) * (1.0 + nu));
-  } else if (s.tangential.kind == TangentialKind::linear_history) {
-    throw InvalidInput("linear_history needs --tangential-stiffness K_T in N/m");
+  if (!o.angle_range.empty() && !o.angles_deg.empty()) {
+    throw InvalidInput("give --angle or --angle-range, not both");
   }
-  s.options.end = end_from_name(o.end);
-  s.options.relative_tolerance = o.tolerance;
-  if (o.angles_deg.empty())
-    throw InvalidInput("give --angle DEG (one or more impact angles from the normal)");
-  for (const double a : o.angles_deg) {
-    if (!(a >= 0.0 && a < 90.0)) {
-      throw InvalidInput(fmt::format("--angle must be in [0, 90) degrees from the normal, got {}", a));
-    }
-  }
-  if (!(o.speed > 0.0) || !std::isfinite(o.speed)) {
-    throw InvalidInput(fmt::format("--speed must be a positive number of m/s, got {}", o.speed));
-  }
-  return s;
+  ObliqueInputs in;
+  in.material = material_from(o.material);
+  in.dissipative_constant_s = o.dissipative_constant;
+  in.wall = o.wall;
+  in.fixed_normal = o.fixed_normal;
+  in.tangential = o.tangential;
+  in.tangential_stiffness = o.tangential_stiffness;
+  in.tangential_damping = o.tangential_damping;
+  in.friction = o.friction;
+  in.end = o.end;
+  in.torque_arm = o.torque_arm;
+  in.tolerance = o.tolerance;
+  in.speed_m_s = o.speed;
+  in.angles_deg = o.angle_range.empty() ? o.angles_deg : angle_range(o.angle_range);
+  in.spins_rad_s = o.spins;
+  return oblique_setup(in, ArgumentStyle::option);
 }
 
-ImpactVelocity impact_at(const ObliqueCommandOptions& o, double angle_deg) {
-  return {o.speed * std::cos(angle_deg * kDegree), o.speed * std::sin(angle_deg * kDegree), o.spin, 0.0};
-}
-
-const char* kColumns =
-    "angle_deg,normal_restitution,tangential_restitution,rebound_angle_deg,spin_rad_s,impulse_ratio,"
-    "contact_time_s,stick_time_s,slip_time_s,switches";
-
-std::string csv_row(double angle, const ObliqueResult& r) {
-  return fmt::format("{},{},{},{},{},{},{},{},{},{}\n", number17(angle), number17(r.normal_restitution),
-                     number17(r.tangential_restitution), number17(r.rebound_angle_rad / kDegree),
-                     number17(r.spin_first_rad_s), number17(r.impulse_ratio), number17(r.contact_time_s),
-                     number17(r.stick_time_s), number17(r.slip_time_s), r.switches.size() - 1);
-}
-
-void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueResult>& results) {
+void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueImpact>& impacts) {
   JsonWriter json;
   json.begin_object().field("tangential_model", tangential_name(s.tangential.kind));
   json.field("contact", o.wall ? "sphere-wall" : "sphere-sphere").field("end", o.end);
@@ -136,11 +95,15 @@ void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
   json.field("tangential_stiffness", s.tangential.stiffness);
   json.field("tangential_damping_factor", s.tangential.damping_factor)
       .field("friction", s.tangential.friction);
-  json.field("speed_m_s", o.speed).field("initial_spin_rad_s", o.spin).field("tolerance", o.tolerance);
+  json.field("speed_m_s", o.speed).field("tolerance", o.tolerance);
+  json.field("maw_chi", maw_chi(s));
+  if (!o.out.empty()) json.field("csv", o.out);
+  if (!o.plot.empty()) json.field("plot", o.plot);
   json.key("impacts").begin_array();
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const ObliqueResult& r = results[i];
-    json.begin_object().field("angle_deg", o.angles_deg[i]);
+  for (const ObliqueImpact& impact : impacts) {
+    const ObliqueResult& r = impact.result;
+    json.begin_object().field("angle_deg", impact.angle_deg);
+    json.field("initial_spin_rad_s", impact.initial_spin_rad_s);
     json.field("normal_restitution", r.normal_restitution);
     json.key("tangential_restitution");
     if (std::isfinite(r.tangential_restitution)) {
@@ -160,56 +123,81 @@ void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
     }
     json.end_array();
     json.field("steps", r.stats.steps);
+    // Maw's ψ: null without friction, where it is undefined.
+    for (const auto& [key, psi] :
+         {std::pair{"psi_in", impact.psi_in}, std::pair{"psi_out", impact.psi_out}}) {
+      json.key(key);
+      if (std::isfinite(psi)) {
+        json.value(psi);
+      } else {
+        json.null();
+      }
+    }
     json.end_object();
   }
   json.end_array();
   fmt::print("{}\n", finish_json_document(json));
 }
 
-void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueResult>& results) {
+void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueImpact>& impacts) {
   fmt::print(
       "# oblique impact, {}: viscoelastic Hertz k = {:.10g} N/m^1.5, gamma = {:.10g} N s/m^1.5, {} end\n",
       o.wall ? "sphere on a wall" : "two spheres", s.normal.stiffness, s.normal.damping, o.end);
   fmt::print(
       "# tangential {} (LAMMPS pair granular): k_t = {:.10g} {}, damping {:.6g}, friction {:.6g}; "
-      "speed {:g} m/s, initial spin {:g} rad/s\n",
+      "speed {:g} m/s\n",
       tangential_name(s.tangential.kind), s.tangential.stiffness,
       s.tangential.kind == TangentialKind::mindlin ? "N/m^2 (times sqrt(R* delta))" : "N/m",
-      s.tangential.damping_factor, s.tangential.friction, o.speed, o.spin);
-  fmt::print("{:>9} {:>14} {:>14} {:>12} {:>14} {:>12} {:>12} {:>10} {:>10}  modes\n", "angle_deg", "eps_n",
-             "e_t", "rebound_deg", "spin_rad_s", "impulse", "contact_s", "stick", "slip");
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const ObliqueResult& r = results[i];
+      s.tangential.damping_factor, s.tangential.friction, o.speed);
+  fmt::print("{:>9} {:>11} {:>14} {:>14} {:>12} {:>14} {:>12} {:>12} {:>10} {:>10}  modes\n", "angle_deg",
+             "spin0_rad_s", "eps_n", "e_t", "rebound_deg", "spin_rad_s", "impulse", "contact_s", "stick",
+             "slip");
+  for (const ObliqueImpact& impact : impacts) {
+    const ObliqueResult& r = impact.result;
     std::string modes;
     for (const ModeSwitch& m : r.switches)
       modes += fmt::format("{}{}", modes.empty() ? "" : ",", mode_name(m.mode));
-    fmt::print("{:9.4g} {:14.10f} {:14.10f} {:12.6f} {:14.8g} {:12.8f} {:12.6g} {:10.4g} {:10.4g}  {}\n",
-               o.angles_deg[i], r.normal_restitution, r.tangential_restitution, r.rebound_angle_rad / kDegree,
-               r.spin_first_rad_s, r.impulse_ratio, r.contact_time_s, r.stick_time_s / r.contact_time_s,
-               r.slip_time_s / r.contact_time_s, modes);
+    fmt::print(
+        "{:9.4g} {:11.5g} {:14.10f} {:14.10f} {:12.6f} {:14.8g} {:12.8f} {:12.6g} {:10.4g} {:10.4g}  {}\n",
+        impact.angle_deg, impact.initial_spin_rad_s, r.normal_restitution, r.tangential_restitution,
+        r.rebound_angle_rad / kDegree, r.spin_first_rad_s, r.impulse_ratio, r.contact_time_s,
+        r.stick_time_s / r.contact_time_s, r.slip_time_s / r.contact_time_s, modes);
   }
   fmt::print(
       "# e_t = -s'/s at the contact point (-1: unchanged); stick and slip as fractions of the contact "
       "time\n");
 }
 
+// Maw's diagram of the sweep; without --out the script reads a scratch copy of the CSV beside the image.
+void draw(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueImpact>& impacts,
+          const std::string& csv) {
+  const std::filesystem::path data(o.out.empty() ? o.plot + ".data.csv" : o.out);
+  if (o.out.empty()) {
+    write_file_atomically(data, csv);  // also makes the image's folder
+  } else if (const auto folder = std::filesystem::path(o.plot).parent_path(); !folder.empty()) {
+    std::filesystem::create_directories(folder);
+  }
+  const std::string why = plot_maw(s, impacts.front().result.normal_restitution, data, o.plot,
+                                   scene::figure_formats_from_list(o.format));
+  if (o.out.empty()) {
+    std::error_code ignored;
+    std::filesystem::remove(data, ignored);
+  }
+  if (!why.empty()) fmt::print(stderr, "restitution: warning: no oblique plot: {}\n", why);
+}
+
 int run(const ObliqueCommandOptions& o) {
   const Setup s = setup_of(o);
   if (!o.out.empty()) check_output_file(o.out);
-  std::vector<ObliqueResult> results;
-  results.reserve(o.angles_deg.size());
-  for (const double angle : o.angles_deg) {
-    results.push_back(solve_oblique(s.geometry, s.normal, s.tangential, impact_at(o, angle), s.options));
-  }
-  if (!o.out.empty()) {
-    std::string csv = std::string(kColumns) + "\n";
-    for (std::size_t i = 0; i < results.size(); ++i) csv += csv_row(o.angles_deg[i], results[i]);
-    write_file_atomically(o.out, csv);
-  }
+  if (!o.plot.empty()) check_output_file(o.plot);
+  const std::vector<ObliqueImpact> impacts = oblique_sweep(s);
+  const std::string csv = oblique_csv(impacts);
+  if (!o.out.empty()) write_file_atomically(o.out, csv);
+  if (!o.plot.empty()) draw(o, s, impacts, csv);
   if (o.json) {
-    print_json(o, s, results);
+    print_json(o, s, impacts);
   } else {
-    print_text(o, s, results);
+    print_text(o, s, impacts);
   }
   return 0;
 }
@@ -241,9 +229,13 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--friction", o->friction, "Coulomb friction coefficient mu");
   cmd->add_option("--angle", o->angles_deg, "impact angle(s) from the normal in degrees, in [0, 90)")
       ->delimiter(',');
+  cmd->add_option("--angle-range", o->angle_range,
+                  "FROM:TO:N: N impact angles from FROM to TO degrees, evenly spaced (instead of --angle)");
   cmd->add_option("--speed", o->speed, "impact speed in m/s")->capture_default_str();
-  cmd->add_option("--spin", o->spin,
-                  "initial spin of the (first) sphere in rad/s (positive adds to the slip)")
+  cmd->add_option("--spin", o->spins,
+                  "initial spin(s) of the (first) sphere in rad/s (positive adds to the slip); every angle "
+                  "with every spin")
+      ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--end", o->end,
                   "end of the collision: naive (no clamp) or delayed-recovery (force clamped)")
@@ -257,6 +249,11 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
       ->capture_default_str();
   cmd->add_flag("--json", o->json, "print JSON instead of the table");
   cmd->add_option("--out", o->out, "also write the table as CSV to this file");
+  cmd->add_option(
+         "--plot", o->plot,
+         "draw Maw, Barber & Fawcett's diagram (psi_2 against psi_1) to this file (needs friction > 0)")
+      ->check(non_empty_path());
+  add_figure_format_option(cmd, o->format);
   cmd->callback([o, &chosen] { chosen = [o] { return run(*o); }; });
 }
 

@@ -17,6 +17,7 @@
 #include "cli/scene/scene_dem.hpp"
 #include "cli/scene/scene_fit_section.hpp"
 #include "cli/scene/scene_gas.hpp"
+#include "cli/scene/scene_oblique.hpp"
 #include "cli/scene/scene_tables.hpp"
 #include "cli/scene/scene_text.hpp"
 #include "cli/solve/work_precision_files.hpp"
@@ -90,6 +91,8 @@ class SceneWriter {
     }
     for (std::size_t i = 0; i < scene_.fits.size(); ++i) order.emplace_back(scene_.fits[i].line, 5, i);
     for (std::size_t i = 0; i < scene_.gases.size(); ++i) order.emplace_back(scene_.gases[i].line, 6, i);
+    for (std::size_t i = 0; i < scene_.obliques.size(); ++i)
+      order.emplace_back(scene_.obliques[i].line, 7, i);
     std::sort(order.begin(), order.end());
     for (const auto& [line, kind, i] : order) {
       if (kind == 0) sweep(i);
@@ -99,6 +102,7 @@ class SceneWriter {
       if (kind == 4) damping_check(i);
       if (kind == 5) fit(i);
       if (kind == 6) gas(i);
+      if (kind == 7) oblique(i);
     }
     calibrations();
     studies();
@@ -370,6 +374,27 @@ class SceneWriter {
     json_.field("tau0_s", c.tau0_s).field("haff_eps", c.haff_eps).field("duration_s", c.duration_s);
     json_.field("final_temperature_j", c.temperature_j.back());
     json_.field("final_local_exponent", c.local_exponent.back()).end_object();
+  }
+
+  // [[oblique]]: every model's sweep in one CSV, Maw's diagram, a summary per model; χ, ε and each model's
+  // sticking limit in summary.json.
+  void oblique(std::size_t i) {
+    const scene::ObliqueTask& task = scene_.obliques[i];
+    const ObliqueSection section = oblique_section(scene_, task);
+    write_file(task.name + ".csv", section.csv);
+    report_ += fmt::format("## {}\n\n", task.title);
+    if (!section.plot_args.empty()) report_ += plot("oblique_maw", task.name, section.plot_args);
+    report_ += section.markdown;
+    json_.key("oblique_" + task.name).begin_object();
+    json_.field("csv", task.name + ".csv")
+        .field("impacts", static_cast<long>(section.runs.front().impacts.size()));
+    json_.field("normal_restitution", section.runs.front().impacts.front().result.normal_restitution);
+    json_.field("maw_chi", oblique::maw_chi(section.runs.front().setup));
+    json_.key("sticking_restitution").begin_object();
+    for (const ObliqueModelRun& run : section.runs) {
+      json_.field(oblique::tangential_name(run.setup.tangential.kind), run.maw.sticking_restitution);
+    }
+    json_.end_object().end_object();
   }
 
   // [[fit]]: the data with error bars, each law's curve with its 95 % band and the residuals (one plot), the

@@ -1,0 +1,166 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""restitution.oblique: oblique impacts with a LAMMPS tangential model (docs/oblique.md), the arguments of
+`restitution oblique` as keywords; array angles and spins broadcast and give arrays."""
+
+import numpy as _np
+
+from . import _restitution as _core
+from . import _optional_real, _real_array, _text, Material
+
+# The outputs in the order the repr shows them: attribute, unit (as the repr writes it), what it is.
+_FIELDS = (
+    ("angle_deg", "deg", "impact angle from the normal, as given"),
+    ("initial_spin", "rad/s", "spin of the (first) sphere before contact, as given"),
+    ("normal_restitution", "", "eps = -v_n'/v_n"),
+    ("tangential_restitution", "", "e_t = -s'/s at the contact point (-1: s unchanged; NaN where s = 0)"),
+    ("rebound_angle", "rad", "atan2(u', eps v_n): the centre's velocity after contact, from the normal"),
+    ("rebound_angle_deg", "deg", "the rebound angle in degrees"),
+    ("impact_angle", "rad", "atan2(u, v_n) before contact"),
+    ("spin", "rad/s", "spin of the (first) sphere after contact"),
+    ("spin2", "rad/s", "spin of the second sphere after contact (0 on a wall)"),
+    ("slip_velocity", "m/s", "s' of the contact point after contact"),
+    ("tangential_velocity", "m/s", "u' of the first centre relative to the second after contact"),
+    ("normal_velocity", "m/s", "separation speed eps v_n"),
+    ("impulse_ratio", "", "J_t/J_n, tangential over normal impulse (-mu for a slide throughout)"),
+    ("line_of_centres_turn", "rad", "how far a pair's line of centres turned during the contact"),
+    ("contact_time", "s", "duration of the contact"),
+    ("stick_time", "s", "time below the Coulomb cap"),
+    ("slip_time", "s", "time at the cap"),
+    ("psi_in", "", "Maw, Barber & Fawcett's psi_1 = 2(1 - nu)/(mu(2 - nu)) s/v_n (NaN without friction)"),
+    ("psi_out", "", "psi_2 of the outgoing slip over the same v_n"),
+)
+
+
+class ObliqueResult:
+    """The outcome of oblique impacts (restitution.oblique): floats for one impact, float64 arrays of the
+    broadcast shape of angle and spin for several.
+
+    Attributes (SI units; angles in rad unless named _deg): angle_deg, initial_spin [rad/s],
+    normal_restitution, tangential_restitution, rebound_angle [rad], rebound_angle_deg, impact_angle [rad],
+    spin, spin2 [rad/s], slip_velocity, tangential_velocity, normal_velocity [m/s], impulse_ratio,
+    line_of_centres_turn [rad], contact_time, stick_time, slip_time [s], psi_in, psi_out; switch_times [s]
+    (per impact the times of the mode switches, the first 0) and modes (per impact "stick"/"slip" from each of
+    them) as arrays, or for several impacts object arrays of them; tangential_model and maw_chi (chi of Maw's
+    diagram: the gross-slip line is psi_2 = psi_1 - 2(1 + eps) chi).
+    """
+
+    def __init__(self, **values):
+        self.__dict__.update(values)
+
+    def __eq__(self, other):
+        if not isinstance(other, ObliqueResult) or self.__dict__.keys() != other.__dict__.keys():
+            return NotImplemented
+        return all(_same(self.__dict__[k], other.__dict__[k]) for k in self.__dict__)
+
+    __hash__ = None  # mutable arrays inside
+
+    def __repr__(self):
+        parts = [f"tangential_model={self.tangential_model!r}"]
+        for name, unit, _ in _FIELDS:
+            value = getattr(self, name)
+            text = _np.array2string(value, precision=6) if isinstance(value, _np.ndarray) else f"{value:.6g}"
+            parts.append(f"{name}={text}" + (f" {unit}" if unit else ""))
+        if isinstance(self.angle_deg, float):
+            parts.append("modes=" + ", ".join(f"{m} from {t:.4g} s" for m, t in zip(self.modes, self.switch_times)))
+        return "ObliqueResult(" + ", ".join(parts) + ")"
+
+
+def _same(a, b):
+    if isinstance(a, _np.ndarray) and a.dtype == object:
+        return a.shape == b.shape and all(_same(x, y) for x, y in zip(a.ravel(), b.ravel()))
+    if isinstance(a, (_np.ndarray, float)):
+        return bool(_np.array_equal(a, b, equal_nan=True))
+    return a == b
+
+
+def oblique(*, material, friction, angle, spin=0.0, speed=1.0, tangential="linear_history",
+            tangential_stiffness=None, tangential_damping=0.0, wall=False, fixed_normal=False,
+            end="delayed-recovery", torque_arm="lammps", tolerance=1e-10):
+    """Oblique impacts of two spheres of one material, or of a sphere on a wall of it, with a tangential model
+    as Debian's LAMMPS writes it in `pair granular` (docs/oblique.md), as `restitution oblique` computes them.
+
+    Parameters
+    ----------
+    material : Material
+        Young's modulus, Poisson's ratio, radius (or radii), density or masses; its dissipation (A, or the
+        viscosities) gives viscoelastic Hertz, without one the contact is elastic.
+    friction : float
+        Coulomb's mu >= 0.
+    angle : float or array_like
+        Impact angle(s) from the normal in degrees, in [0, 90).
+    spin : float or array_like
+        Spin of the (first) sphere before contact [rad/s], positive adding to the slip; broadcast with angle.
+    speed : float
+        Impact speed [m/s]: v cos(angle) normal, v sin(angle) tangential.
+    tangential : {"linear_history", "linear_nohistory", "mindlin"}
+    tangential_stiffness : float, optional
+        k_t [N/m] of linear_history (required there), [N/m^2] of mindlin (default LAMMPS's NULL, 8 G*).
+    tangential_damping : float
+        LAMMPS's tangential damping factor, times the normal damping coefficient.
+    wall : bool
+        A sphere on a flat wall of its material instead of two spheres.
+    fixed_normal : bool
+        Two spheres: keep the impact's normal instead of letting the line of centres turn as LAMMPS's pair does.
+    end : {"delayed-recovery", "naive"}
+    torque_arm : {"lammps", "radius", "radius-minus-half-overlap"}
+    tolerance : float
+        CVODE's relative tolerance, in [1e-14, 1e-2].
+
+    Returns
+    -------
+    ObliqueResult
+        Floats for scalar angle and spin, float64 arrays of their broadcast shape otherwise: e_t, eps, the
+        rebound angle in rad and deg, the spins in rad/s, the impulse ratio, contact, stick and slip times in s,
+        the switch times and modes, Maw's psi.
+
+    Raises
+    ------
+    ValueError
+        A missing or bad argument, named (friction, angle, spin, tangential_stiffness, ...).
+
+    Examples
+    --------
+    >>> import restitution
+    >>> steel = restitution.Material(young_modulus=2e11, poisson_ratio=0.3, radius=1e-3, density=7800.0)
+    >>> r = restitution.oblique(material=steel, friction=0.3, angle=80.0, wall=True, tangential="mindlin")
+    >>> r.modes, round(r.impulse_ratio, 12)            # grazing: slides throughout, J_t/J_n = -mu
+    (('slip',), -0.3)
+    >>> round(r.rebound_angle_deg, 4), round(r.spin, 2)  # deg, rad/s
+    (78.845, -260.47)
+    >>> restitution.oblique(material=steel, friction=0.3, angle=[10.0, 80.0], wall=True,
+    ...                     tangential="mindlin").tangential_restitution.round(4)
+    array([-0.9463, -0.6297])
+    """
+    if not isinstance(material, Material):
+        raise TypeError(f"material must be a restitution.Material, got {type(material).__name__}")
+    angles, spins = _np.broadcast_arrays(_real_array("angle", angle), _real_array("spin", spin))
+    for name, flag in (("wall", wall), ("fixed_normal", fixed_normal)):
+        if not isinstance(flag, bool):
+            raise TypeError(f"{name} must be a bool, got {type(flag).__name__}")
+    numbers = {name: _optional_real(name, value) for name, value in (
+        ("friction", friction), ("speed", speed), ("tangential_damping", tangential_damping),
+        ("tolerance", tolerance))}
+    for name in ("speed", "tangential_damping", "tolerance"):
+        if numbers[name] is None:
+            raise TypeError(f"{name} must be a real number")
+    columns = _core.oblique_impacts(
+        material, angles.ravel().tolist(), spins.ravel().tolist(), friction=numbers["friction"],
+        tangential=_text("tangential", tangential),
+        tangential_stiffness=_optional_real("tangential_stiffness", tangential_stiffness),
+        tangential_damping=numbers["tangential_damping"], speed=numbers["speed"], wall=wall,
+        fixed_normal=fixed_normal, end=_text("end", end), torque_arm=_text("torque_arm", torque_arm),
+        tolerance=numbers["tolerance"])
+    shape = angles.shape
+    values = {"tangential_model": columns["tangential_model"], "maw_chi": columns["maw_chi"]}
+    columns["rebound_angle_deg"] = _np.degrees(columns["rebound_angle"])
+    for name, _, _ in _FIELDS:
+        values[name] = float(columns[name][0]) if shape == () else columns[name].reshape(shape)
+    if shape == ():
+        values["switch_times"] = columns["switch_times"][0]
+        values["modes"] = columns["modes"][0]
+    else:
+        for name in ("switch_times", "modes"):
+            cells = _np.empty(len(columns[name]), dtype=object)
+            cells[:] = columns[name]
+            values[name] = cells.reshape(shape)
+    return ObliqueResult(**values)

@@ -1,0 +1,75 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# Type stubs of restitution.oblique and its result: floats for scalar angle and spin, float64 arrays otherwise.
+from typing import Any, Generic, Literal, Optional, Sequence, Tuple, TypeVar, Union, overload
+
+import numpy as np
+import numpy.typing as npt
+
+from . import Material
+
+_Real = Union[float, np.floating[Any], np.integer[Any]]
+_Array = Union[npt.NDArray[Any], Sequence[float], Sequence[Sequence[float]]]
+_Value = TypeVar("_Value", float, npt.NDArray[np.float64], covariant=True)
+Tangential = Literal["linear_history", "linear_nohistory", "mindlin"]
+TorqueArm = Literal["lammps", "radius", "radius-minus-half-overlap"]
+
+class ObliqueResult(Generic[_Value]):
+    tangential_model: Tangential
+    maw_chi: float
+    angle_deg: _Value  # deg
+    initial_spin: _Value  # rad/s
+    normal_restitution: _Value
+    tangential_restitution: _Value
+    rebound_angle: _Value  # rad
+    rebound_angle_deg: _Value  # deg
+    impact_angle: _Value  # rad
+    spin: _Value  # rad/s
+    spin2: _Value  # rad/s
+    slip_velocity: _Value  # m/s
+    tangential_velocity: _Value  # m/s
+    normal_velocity: _Value  # m/s
+    impulse_ratio: _Value
+    line_of_centres_turn: _Value  # rad
+    contact_time: _Value  # s
+    stick_time: _Value  # s
+    slip_time: _Value  # s
+    psi_in: _Value
+    psi_out: _Value
+    # One impact: the switch times (s) as an array and the modes as a tuple; several: object arrays of them.
+    switch_times: Any
+    modes: Any
+
+@overload
+def oblique(
+    *,
+    material: Material,
+    friction: Optional[float],
+    angle: _Real,  # deg
+    spin: _Real = ...,  # rad/s
+    speed: float = ...,  # m/s
+    tangential: Tangential = ...,
+    tangential_stiffness: Optional[float] = ...,  # N/m, N/m^2 for mindlin
+    tangential_damping: float = ...,
+    wall: bool = ...,
+    fixed_normal: bool = ...,
+    end: Literal["naive", "delayed-recovery"] = ...,
+    torque_arm: TorqueArm = ...,
+    tolerance: float = ...,
+) -> ObliqueResult[float]: ...
+@overload
+def oblique(
+    *,
+    material: Material,
+    friction: Optional[float],
+    angle: Union[_Real, _Array],
+    spin: Union[_Real, _Array] = ...,
+    speed: float = ...,
+    tangential: Tangential = ...,
+    tangential_stiffness: Optional[float] = ...,
+    tangential_damping: float = ...,
+    wall: bool = ...,
+    fixed_normal: bool = ...,
+    end: Literal["naive", "delayed-recovery"] = ...,
+    torque_arm: TorqueArm = ...,
+    tolerance: float = ...,
+) -> ObliqueResult[npt.NDArray[np.float64]]: ...

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// restitution.oblique: oblique impacts with a LAMMPS tangential model (src/oblique/, docs/oblique.md), from
+// the arguments of `restitution oblique` as keywords, one impact per (angle, spin) pair;
+// restitution/_oblique.py broadcasts the arrays and wraps the columns in ObliqueResult.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bindings.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/material.hpp"
+#include "restitution_oblique/oblique_study.hpp"
+#include "without_gil.hpp"
+
+namespace py = pybind11;
+
+namespace restitution::python {
+namespace {
+
+using namespace restitution::oblique;
+
+py::array_t<double> array_of(const std::vector<double>& values) {
+  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+}
+
+// The impacts as columns: one float64 array per scalar output, lists of the switch times and modes.
+py::dict columns_of(const ObliqueSetup& setup, const std::vector<ObliqueImpact>& impacts) {
+  const std::vector<std::pair<const char*, double (*)(const ObliqueImpact&)>> scalars = {
+      {"angle_deg", [](const ObliqueImpact& i) { return i.angle_deg; }},
+      {"initial_spin", [](const ObliqueImpact& i) { return i.initial_spin_rad_s; }},
+      {"normal_restitution", [](const ObliqueImpact& i) { return i.result.normal_restitution; }},
+      {"tangential_restitution", [](const ObliqueImpact& i) { return i.result.tangential_restitution; }},
+      {"rebound_angle", [](const ObliqueImpact& i) { return i.result.rebound_angle_rad; }},
+      {"impact_angle", [](const ObliqueImpact& i) { return i.result.impact_angle_rad; }},
+      {"spin", [](const ObliqueImpact& i) { return i.result.spin_first_rad_s; }},
+      {"spin2", [](const ObliqueImpact& i) { return i.result.spin_second_rad_s; }},
+      {"slip_velocity", [](const ObliqueImpact& i) { return i.result.slip_velocity_m_s; }},
+      {"tangential_velocity", [](const ObliqueImpact& i) { return i.result.tangential_velocity_m_s; }},
+      {"normal_velocity", [](const ObliqueImpact& i) { return i.result.normal_velocity_m_s; }},
+      {"impulse_ratio", [](const ObliqueImpact& i) { return i.result.impulse_ratio; }},
+      {"line_of_centres_turn", [](const ObliqueImpact& i) { return i.result.line_of_centres_turn_rad; }},
+      {"contact_time", [](const ObliqueImpact& i) { return i.result.contact_time_s; }},
+      {"stick_time", [](const ObliqueImpact& i) { return i.result.stick_time_s; }},
+      {"slip_time", [](const ObliqueImpact& i) { return i.result.slip_time_s; }},
+      {"psi_in", [](const ObliqueImpact& i) { return i.psi_in; }},
+      {"psi_out", [](const ObliqueImpact& i) { return i.psi_out; }},
+  };
+  py::dict out;
+  for (const auto& [name, get] : scalars) {
+    std::vector<double> values;
+    values.reserve(impacts.size());
+    for (const ObliqueImpact& i : impacts) values.push_back(get(i));
+    out[name] = array_of(values);
+  }
+  py::list switch_times;
+  py::list modes;
+  for (const ObliqueImpact& i : impacts) {
+    std::vector<double> times;
+    py::list names;
+    for (const ModeSwitch& m : i.result.switches) {
+      times.push_back(m.time_s);
+      names.append(mode_name(m.mode));
+    }
+    switch_times.append(array_of(times));
+    modes.append(py::tuple(names));
+  }
+  out["switch_times"] = switch_times;
+  out["modes"] = modes;
+  out["tangential_model"] = tangential_name(setup.tangential.kind);
+  out["maw_chi"] = maw_chi(setup);
+  return out;
+}
+
+// angles and spins are paired, one impact each (the Python side broadcast them).
+py::dict oblique_impacts(const Material& material, const std::vector<double>& angles,
+                         const std::vector<double>& spins, std::optional<double> friction,
+                         const std::string& tangential, std::optional<double> tangential_stiffness,
+                         double tangential_damping, double speed, bool wall, bool fixed_normal,
+                         const std::string& end, const std::string& torque_arm, double tolerance) {
+  if (angles.size() != spins.size()) throw InvalidInput("angle and spin must broadcast to one shape");
+  ObliqueInputs in;
+  in.material = material;
+  // The material's dissipation when it has one (A, or the viscosities' A); elastic otherwise, as in scenes.
+  if (material.dissipative_constant_s || material.viscosities) {
+    in.dissipative_constant_s = material_constants(material).dissipative_constant_s;
+  }
+  in.friction = friction;
+  in.tangential = tangential;
+  in.tangential_stiffness = tangential_stiffness;
+  in.tangential_damping = tangential_damping;
+  in.speed_m_s = speed;
+  in.wall = wall;
+  in.fixed_normal = fixed_normal;
+  in.end = end;
+  in.torque_arm = torque_arm;
+  in.tolerance = tolerance;
+  in.angles_deg = angles;
+  in.spins_rad_s = spins.empty() ? std::vector<double>{0.0} : spins;
+  const ObliqueSetup setup = oblique_setup(in, ArgumentStyle::keyword);
+  const std::vector<ObliqueImpact> impacts = without_gil([&] {
+    std::vector<ObliqueImpact> solved;
+    solved.reserve(angles.size());
+    for (std::size_t k = 0; k < angles.size(); ++k)
+      solved.push_back(solve_impact(setup, angles[k], spins[k]));
+    return solved;
+  });
+  return columns_of(setup, impacts);
+}
+
+}  // namespace
+
+void bind_oblique(py::module_& m) {
+  m.def(
+      "oblique_impacts", &oblique_impacts, py::arg("material"), py::arg("angles"), py::arg("spins"),
+      py::kw_only(), py::arg("friction") = py::none(), py::arg("tangential") = "linear_history",
+      py::arg("tangential_stiffness") = py::none(), py::arg("tangential_damping") = 0.0,
+      py::arg("speed") = 1.0, py::arg("wall") = false, py::arg("fixed_normal") = false,
+      py::arg("end") = "delayed-recovery", py::arg("torque_arm") = "lammps",
+      py::arg("tolerance") = ObliqueInputs{}.tolerance,
+      "One oblique impact per (angle, spin) pair as columns (restitution.oblique documents the arguments).");
+}
+
+}  // namespace restitution::python

@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "cli/scene/scene_oblique.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "restitution/errors.hpp"
+#include "restitution/material.hpp"
+
+namespace restitution::cli {
+namespace {
+
+using namespace restitution::oblique;
+
+// The section as the study's inputs for one model, so that the scene and the command take one path.
+ObliqueInputs inputs_of(const scene::Scene& scene, const scene::ObliqueTask& task, const std::string& model) {
+  const Material& m = scene.materials.at(task.material);
+  ObliqueInputs in;
+  in.material = m;
+  // The material's dissipation when it has one (A, or the viscosities' A); elastic otherwise.
+  if (m.dissipative_constant_s || m.viscosities) {
+    in.dissipative_constant_s = material_constants(m).dissipative_constant_s;
+  }
+  in.wall = task.wall;
+  in.fixed_normal = task.fixed_normal;
+  in.tangential = model;
+  in.tangential_stiffness = model == "mindlin" ? task.mindlin_stiffness : task.tangential_stiffness;
+  in.tangential_damping = task.tangential_damping;
+  in.friction = task.friction;
+  in.end = task.end;
+  in.torque_arm = task.torque_arm;
+  in.tolerance = task.tolerance;
+  in.speed_m_s = task.speed_m_s;
+  in.angles_deg = task.angles_deg;
+  in.spins_rad_s = task.spins_rad_s;
+  return in;
+}
+
+// One sentence per model: e_t's range, how many impacts slide, the sticking limit.
+std::string model_summary(const ObliqueModelRun& run) {
+  double lowest = std::numeric_limits<double>::infinity();
+  double highest = -std::numeric_limits<double>::infinity();
+  std::size_t sliding = 0;
+  for (const ObliqueImpact& i : run.impacts) {
+    const double e = i.result.tangential_restitution;
+    if (std::isfinite(e)) {
+      lowest = std::min(lowest, e);
+      highest = std::max(highest, e);
+    }
+    // With damping the contact sticks for its first instants (the damping's part of the cap): "sliding" is
+    // sliding for 99 % of the contact.
+    if (i.result.slip_time_s >= 0.99 * i.result.contact_time_s) ++sliding;
+  }
+  return fmt::format(
+      "* {}: e_t from {:.6g} to {:.6g}; {} of {} impacts slide for at least 99 % of the contact; sticking "
+      "limit e_t(μ → ∞) = "
+      "{:.6g}.\n",
+      tangential_name(run.setup.tangential.kind), lowest, highest, sliding, run.impacts.size(),
+      run.maw.sticking_restitution);
+}
+
+}  // namespace
+
+ObliqueSection oblique_section(const scene::Scene& scene, const scene::ObliqueTask& task) {
+  ObliqueSection s;
+  s.csv = oblique_csv_header_with_model() + "\n";
+  try {
+    for (const std::string& model : task.models) {
+      ObliqueModelRun run;
+      run.setup = oblique_setup(inputs_of(scene, task, model), ArgumentStyle::keyword);
+      run.impacts = oblique_sweep(run.setup);
+      run.maw = maw_model(run.setup);
+      s.csv += oblique_csv_rows(run.impacts, tangential_name(run.setup.tangential.kind));
+      s.runs.push_back(std::move(run));
+    }
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("{}: oblique \"{}\": {}", scene.file_name, task.name, e.what()));
+  }
+  const ObliqueModelRun& first = s.runs.front();
+  const double eps = first.impacts.front().result.normal_restitution;
+  if (task.plot && task.friction > 0.0) {
+    std::vector<MawModel> models;
+    for (const ObliqueModelRun& run : s.runs) models.push_back(run.maw);
+    s.plot_args = maw_plot_arguments(first.setup, eps, models);
+  }
+  s.markdown = fmt::format(
+      "Oblique impacts (docs/oblique.md) of {} of [materials.{}] at {:g} m/s, μ = {:g}, {} angle(s) from "
+      "{:g}° to "
+      "{:g}°, {} initial spin(s); ε = {:.10g}, Maw's χ = {:.6g} (gross slip: ψ₂ = ψ₁ − 2(1 + ε)χ).\n\n",
+      task.wall ? "a sphere on a wall" : "two spheres", task.material, task.speed_m_s, task.friction,
+      task.angles_deg.size(), *std::min_element(task.angles_deg.begin(), task.angles_deg.end()),
+      *std::max_element(task.angles_deg.begin(), task.angles_deg.end()), task.spins_rad_s.size(), eps,
+      maw_chi(first.setup));
+  for (const ObliqueModelRun& run : s.runs) s.markdown += model_summary(run);
+  s.markdown += fmt::format("\nEvery impact is a row of `{}.csv`.\n\n", task.name);
+  return s;
+}
+
+}  // namespace restitution::cli

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// The oblique impact as a front end gives it (the command `restitution oblique`, a scene's [[oblique]]
+// section, Python's restitution.oblique): a material, a tangential model, impact angles and initial spins,
+// turned into the solver's geometry and forces by one set of rules whose errors name the argument in the
+// caller's spelling
+// (--friction on the command line, friction in Python and scenes); the sweep over every (angle, spin) pair;
+// and Maw, Barber & Fawcett's normalized variables ψ (Wear 38, 101 (1976)), docs/oblique.md "Maw's diagram".
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "restitution/material.hpp"
+// The solver's interface (src/oblique/oblique_contact.hpp) stays where the other studies include it from;
+// this folder is the part of the module the Python module may include, and it re-exports that header by its
+// path.
+#include "../../oblique_contact.hpp"
+
+namespace restitution::oblique {
+
+struct ObliqueInputs {
+  // Elastic data, radii, density or masses (material_from_fields); its dissipation fields are not read.
+  Material material;
+  double dissipative_constant_s = 0.0;  // A of viscoelastic Hertz
+  bool wall = false;                    // a sphere on a flat wall of its own material
+  bool fixed_normal = false;            // two spheres: keep the normal of the impact
+  std::string tangential = "linear_history";
+  std::optional<double> tangential_stiffness;  // N/m (linear_history), N/m² (mindlin; default 8 G*)
+  double tangential_damping = 0.0;             // LAMMPS's factor on the normal damping coefficient
+  std::optional<double> friction;              // μ, required
+  std::string end = "delayed-recovery";
+  std::string torque_arm = "lammps";        // lammps | radius | radius-minus-half-overlap
+  double tolerance = 1e-10;                 // CVODE's relative tolerance
+  double speed_m_s = 1.0;                   // impact speed: v cos θ normal, v sin θ tangential
+  std::vector<double> angles_deg;           // from the normal, in [0, 90)
+  std::vector<double> spins_rad_s = {0.0};  // initial spins of the first sphere
+};
+
+// How errors spell an argument: "--tangential-stiffness" (option) or "tangential_stiffness" (keyword).
+enum class ArgumentStyle { option, keyword };
+
+struct ObliqueSetup {
+  ObliqueGeometry geometry;
+  NormalForce normal;
+  TangentialForce tangential;
+  ObliqueOptions options;
+  double effective_modulus_pa = 0.0;  // E*
+  double poisson_ratio = 0.0;
+  double speed_m_s = 1.0;
+  std::vector<double> angles_deg;
+  std::vector<double> spins_rad_s;
+};
+
+// The setup the inputs describe; throws InvalidInput naming the argument that is missing or bad.
+ObliqueSetup oblique_setup(const ObliqueInputs& inputs, ArgumentStyle style);
+
+// The velocities before contact at angle_deg from the normal, the first sphere spinning at spin_rad_s.
+ImpactVelocity impact_at(const ObliqueSetup& setup, double angle_deg, double spin_rad_s);
+
+// Maw, Barber & Fawcett's normalized contact-point velocity, ψ = κ s/(μ v_n) with κ = 2(1 − ν)/(2 − ν): the
+// Mindlin stiffness over the normal one (8G*·a over 2E*·a for spheres of one material), so that the sticking
+// condition |F_t| <= μ F_n and the stick and slip equations of the elastic Mindlin contact, written in ψ and
+// the normal law's natural time, depend on χ alone (docs/oblique.md derives it). NaN for μ = 0.
+double maw_psi(const ObliqueSetup& setup, double slip_m_s, double normal_speed_m_s);
+// χ = (1 − ν)/(2 − ν) · (1 + m* Σ R_i²/I_i): 7(1 − ν)/(2(2 − ν)) for a homogeneous sphere on a wall or a pair
+// of equal ones. A contact that slides throughout moves ψ by −2(1 + ε)χ (−4χ elastic).
+double maw_chi(const ObliqueSetup& setup);
+
+struct ObliqueImpact {
+  double angle_deg = 0.0;
+  double initial_spin_rad_s = 0.0;
+  ObliqueResult result;
+  double psi_in = 0.0;   // ψ₁ of the incoming slip velocity
+  double psi_out = 0.0;  // ψ₂ of the outgoing one, over the same incoming normal speed
+};
+
+// One impact of the setup at angle_deg from the normal, the first sphere spinning at spin_rad_s.
+ObliqueImpact solve_impact(const ObliqueSetup& setup, double angle_deg, double spin_rad_s);
+
+// Every (angle, spin) pair, angles outermost, in the order given.
+std::vector<ObliqueImpact> oblique_sweep(const ObliqueSetup& setup);
+
+// The tangential restitution of the sticking limit μ → ∞ (the slope −ψ₂/ψ₁ of Maw's diagram at ψ₁ → 0), from
+// an impact at 1° without spin: the limit's equations are linear in the slip.
+double sticking_limit_restitution(const ObliqueSetup& setup);
+
+}  // namespace restitution::oblique

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "scene/scene_oblique.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <tuple>
+
+#include "restitution/errors.hpp"
+#include "restitution_oblique/oblique_study.hpp"
+#include "scene/toml_reader.hpp"
+
+namespace restitution::scene::detail {
+
+ObliqueTask read_oblique_task(TomlReader& r, std::string name,
+                              const std::map<std::string, Material>& materials) {
+  ObliqueTask t;
+  t.line = r.line();
+  t.name = std::move(name);
+  t.title = r.text("title").value_or(t.name);
+  const auto material = r.text("material");
+  if (!material) r.fail("material", "missing: the [materials.X] whose spheres collide");
+  if (!materials.contains(*material))
+    r.fail("material", fmt::format("no [materials.{}] in this scene", *material));
+  t.material = *material;
+  t.models = r.words("model").value_or(std::vector<std::string>{"linear_history"});
+  if (t.models.empty()) r.fail("model", "empty: leave the key out for linear_history");
+  for (const std::string& model : t.models) {
+    try {
+      (void)oblique::tangential_from_name(model);
+    } catch (const InvalidInput& e) {
+      r.fail("model", e.what());
+    }
+  }
+  const auto friction = r.number("friction");
+  if (!friction)
+    r.fail("friction", "missing: the Coulomb friction coefficient (0 for a frictionless contact)");
+  r.check_each(
+      "friction", {*friction}, [](double v) { return v >= 0.0 && std::isfinite(v); }, "a value >= 0");
+  t.friction = *friction;
+  t.tangential_stiffness = r.number("tangential_stiffness");
+  t.mindlin_stiffness = r.number("mindlin_stiffness");
+  for (const auto& [key, value, unit] : {std::tuple{"tangential_stiffness", t.tangential_stiffness, "N/m"},
+                                         std::tuple{"mindlin_stiffness", t.mindlin_stiffness, "N/m^2"}}) {
+    if (value)
+      r.check_each(
+          key, {*value}, [](double v) { return v > 0.0 && std::isfinite(v); },
+          fmt::format("a value > 0 ({})", unit));
+  }
+  t.tangential_damping = r.number("tangential_damping").value_or(0.0);
+  r.check_each(
+      "tangential_damping", {t.tangential_damping}, [](double v) { return v >= 0.0; }, "a value >= 0");
+  const auto angles = r.numbers("angles");
+  if (!angles || angles->empty()) r.fail("angles", "missing: the impact angles from the normal (degrees)");
+  r.check_each(
+      "angles", *angles, [](double a) { return a >= 0.0 && a < 90.0; }, "angles in [0, 90) degrees");
+  t.angles_deg = *angles;
+  if (const auto spins = r.numbers("spins")) {
+    if (spins->empty()) r.fail("spins", "empty: leave the key out for no initial spin");
+    r.check_each(
+        "spins", *spins, [](double w) { return std::isfinite(w); }, "finite spins in rad/s");
+    t.spins_rad_s = *spins;
+  }
+  t.speed_m_s = r.number("speed").value_or(1.0);
+  r.check_each(
+      "speed", {t.speed_m_s}, [](double v) { return v > 0.0 && std::isfinite(v); }, "a speed > 0 (m/s)");
+  t.wall = r.flag("wall").value_or(false);
+  t.fixed_normal = r.flag("fixed_normal").value_or(false);
+  t.end = r.text("end").value_or(t.end);
+  t.torque_arm = r.text("torque_arm").value_or(t.torque_arm);
+  t.tolerance = r.number("tolerance").value_or(t.tolerance);
+  r.check_each(
+      "tolerance", {t.tolerance}, [](double v) { return v >= 1e-14 && v <= 1e-2; },
+      "a value in [1e-14, 1e-2]");
+  t.plot = r.flag("plot").value_or(true);
+  const Material& m = materials.at(t.material);
+  if (t.wall && (m.radius1_m != m.radius2_m || m.mass1_kg != m.mass2_kg)) {
+    r.fail("wall", fmt::format("a wall takes one sphere: [materials.{}] has two", t.material));
+  }
+  return t;
+}
+
+}  // namespace restitution::scene::detail

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// A scene's [[oblique]] section: oblique impacts of a material's spheres (or a sphere on a wall) with one or
+// more LAMMPS tangential models over impact angles and initial spins, and Maw, Barber & Fawcett's diagram
+// (docs/oblique.md, docs/scenes.md). The keys mean what `restitution oblique`'s options mean.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "restitution/material.hpp"
+
+namespace restitution::scene {
+
+struct ObliqueTask {
+  std::string name;
+  std::string title;
+  std::string material;             // a [materials.X]: radius (radius2), density or mass, and A if given
+  std::vector<std::string> models;  // tangential models, LAMMPS's keywords; default linear_history
+  double friction = 0.0;            // μ
+  // One section may sweep several models, whose stiffnesses differ in unit: k_t of linear_history (N/m) and
+  // of mindlin (N/m², its default LAMMPS's NULL, 8 G*).
+  std::optional<double> tangential_stiffness;
+  std::optional<double> mindlin_stiffness;
+  double tangential_damping = 0.0;
+  std::vector<double> angles_deg;
+  std::vector<double> spins_rad_s = {0.0};
+  double speed_m_s = 1.0;
+  bool wall = false;
+  bool fixed_normal = false;
+  std::string end = "delayed-recovery";
+  std::string torque_arm = "lammps";
+  double tolerance = 1e-10;  // CVODE's relative tolerance of the oblique solve
+  bool plot = true;          // Maw's diagram (needs friction > 0)
+  int line = 0;
+};
+
+namespace detail {
+class TomlReader;
+// Reads the keys of one [[oblique]] (name already read): material, model, friction, angles, spins, wall,
+// speed, tangential_stiffness, mindlin_stiffness, tangential_damping, end, torque_arm, fixed_normal,
+// tolerance, plot, title. Throws InvalidInput naming the key.
+ObliqueTask read_oblique_task(TomlReader& r, std::string name,
+                              const std::map<std::string, Material>& materials);
+}  // namespace detail
+
+}  // namespace restitution::scene

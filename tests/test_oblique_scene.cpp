@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The [[oblique]] scene section (docs/scenes.md, docs/oblique.md): its keys are read and checked (a
+// misspelled one is refused by name), and scenes/oblique.toml writes every model's sweep with the numbers
+// `restitution oblique` gives for the same impact, Maw's diagram, a report line per model and the summary.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+#include "restitution/errors.hpp"
+#include "scene/scene.hpp"
+
+namespace restitution::scene {
+namespace {
+
+const std::string kHead = R"(output = "out/oblique"
+[materials.steel]
+young_modulus = 2e11
+poisson_ratio = 0.3
+density = 7800.0
+radius = 1e-3
+)";
+
+const std::string kOblique = R"([[oblique]]
+name = "o"
+material = "steel"
+friction = 0.3
+angles = [10.0, 40.0]
+)";
+
+std::string error_of(const std::string& text) {
+  try {
+    (void)parse_scene(text, "oblique.toml");
+  } catch (const InvalidInput& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ObliqueScene, ReadsTheSection) {
+  const Scene s =
+      parse_scene(kHead + kOblique +
+                      "model = [\"mindlin\", \"linear_nohistory\"]\nspins = { from = -100.0, to = 100.0, "
+                      "points = 3 }\nwall = true\nspeed = 2.0\ntangential_damping = 0.5\nplot = false\n",
+                  "oblique.toml");
+  ASSERT_EQ(s.obliques.size(), 1U);
+  const ObliqueTask& t = s.obliques[0];
+  EXPECT_EQ(t.material, "steel");
+  EXPECT_EQ(t.models, (std::vector<std::string>{"mindlin", "linear_nohistory"}));
+  EXPECT_EQ(t.friction, 0.3);
+  EXPECT_EQ(t.angles_deg, (std::vector<double>{10.0, 40.0}));
+  EXPECT_EQ(t.spins_rad_s, (std::vector<double>{-100.0, 0.0, 100.0}));
+  EXPECT_TRUE(t.wall);
+  EXPECT_EQ(t.speed_m_s, 2.0);
+  EXPECT_EQ(t.tangential_damping, 0.5);
+  EXPECT_FALSE(t.plot);
+  EXPECT_EQ(t.tolerance, 1e-10);
+  const Scene defaults = parse_scene(kHead + kOblique, "oblique.toml");
+  EXPECT_EQ(defaults.obliques[0].models, std::vector<std::string>{"linear_history"});
+  EXPECT_EQ(defaults.obliques[0].spins_rad_s, std::vector<double>{0.0});
+}
+
+TEST(ObliqueScene, RefusesBadKeysByName) {
+  const auto refused = [](const std::string& extra, const std::string& key) {
+    const std::string message = error_of(kHead + kOblique + extra);
+    EXPECT_NE(message.find(key), std::string::npos) << extra << ": " << message;
+  };
+  refused("frictoin = 0.3\n", "frictoin");  // misspelled: "unknown key", named
+  refused("frictoin = 0.3\n", "unknown key");
+  refused("model = \"mindlim\"\n", "mindlim");
+  refused("spins = [1.0, nan]\n", "spins");
+  refused("speed = 0.0\n", "speed");
+  refused("tolerance = 1.0\n", "tolerance");
+  refused("mindlin_stiffness = -1.0\n", "mindlin_stiffness");
+  std::string steep = kOblique;
+  steep.replace(steep.find("40.0"), 4, "90.0");
+  EXPECT_NE(error_of(kHead + steep).find("angles"), std::string::npos);
+  std::string no_friction = kOblique;
+  no_friction.erase(no_friction.find("friction = 0.3\n"), 15);
+  EXPECT_NE(error_of(kHead + no_friction).find("friction"), std::string::npos);
+  EXPECT_NE(error_of(kHead + "[[obliqe]]\nmaterial = \"steel\"\n").find("obliqe"), std::string::npos);
+}
+
+// The fields of a CSV line.
+std::vector<std::string> fields_of(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream in(line);
+  for (std::string f; std::getline(in, f, ',');) fields.push_back(f);
+  return fields;
+}
+
+TEST(ObliqueScene, ShippedSceneWritesTheCommandsNumbers) {
+  const test_support::TempFolder folder;
+  const auto outcome = test_support::run_cli(std::string("run ") + RESTITUTION_SOURCE_DIR +
+                                             "/scenes/oblique.toml --output " + folder.path.string());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  for (const char* file : {"steel_on_wall.csv", "report.md", "summary.json"}) {
+    EXPECT_TRUE(std::filesystem::exists(folder.path / file)) << file;
+  }
+  const auto lines =
+      test_support::lines_of(test_support::slurp((folder.path / "steel_on_wall.csv").string()));
+  ASSERT_EQ(lines.size(), 1U + 2U * 29U * 2U);  // two models, 29 angles, two spins
+  EXPECT_EQ(lines[0].rfind("tangential_model,angle_deg,", 0), 0U);
+  // A mindlin row and a linear_history row against the command with the scene's arguments.
+  const std::string command =
+      "oblique --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --dissipative-constant "
+      "1e-9 "
+      "--wall --friction 0.3 --speed 1 --json";
+  for (const std::size_t row : {std::size_t{12}, std::size_t{58 + 31}}) {
+    const std::vector<std::string> f = fields_of(lines[row]);
+    ASSERT_EQ(f.size(), 14U);
+    const std::string model = f[0] == "mindlin" ? " --tangential mindlin" : " --tangential-stiffness 2.2e6";
+    const auto one = test_support::run_cli(command + model + " --angle " + f[1] + " --spin " + f[11]);
+    ASSERT_EQ(one.status, 0) << one.err;
+    const auto impact = nlohmann::json::parse(one.out)["impacts"][0];
+    EXPECT_EQ(std::stod(f[3]), impact["tangential_restitution"].get<double>()) << lines[row];
+    EXPECT_EQ(std::stod(f[5]), impact["spin_rad_s"].get<double>()) << lines[row];
+    EXPECT_EQ(std::stod(f[13]), impact["psi_out"].get<double>()) << lines[row];
+  }
+  const auto summary = nlohmann::json::parse(test_support::slurp((folder.path / "summary.json").string()));
+  const auto& section = summary["oblique_steel_on_wall"];
+  EXPECT_EQ(section["impacts"].get<int>(), 58);
+  EXPECT_NEAR(section["maw_chi"].get<double>(), 3.5 * 0.7 / 1.7, 1e-15);
+  EXPECT_TRUE(section["sticking_restitution"].contains("mindlin"));
+  const std::string report = test_support::slurp((folder.path / "report.md").string());
+  EXPECT_NE(report.find("* mindlin: e_t from"), std::string::npos);
+  EXPECT_NE(report.find("* linear_history: e_t from"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace restitution::scene
