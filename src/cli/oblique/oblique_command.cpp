@@ -16,6 +16,7 @@
 #include "cli/common/json_writer.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/common/output_files.hpp"
+#include "oblique/oblique_accuracy.hpp"
 #include "oblique/oblique_contact.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
@@ -97,7 +98,7 @@ Setup setup_of(const ObliqueCommandOptions& o) {
     throw InvalidInput("linear_history needs --tangential-stiffness K_T in N/m");
   }
   s.options.end = end_from_name(o.end);
-  s.options.relative_tolerance = o.tolerance;
+  require_oblique_tolerance(o.tolerance, "--tolerance");
   if (o.angles_deg.empty())
     throw InvalidInput("give --angle DEG (one or more impact angles from the normal)");
   for (const double a : o.angles_deg) {
@@ -126,7 +127,8 @@ std::string csv_row(double angle, const ObliqueResult& r) {
                      number17(r.stick_time_s), number17(r.slip_time_s), r.switches.size() - 1);
 }
 
-void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueResult>& results) {
+void print_json(const ObliqueCommandOptions& o, const Setup& s,
+                const std::vector<ContractedOblique>& solves) {
   JsonWriter json;
   json.begin_object().field("tangential_model", tangential_name(s.tangential.kind));
   json.field("contact", o.wall ? "sphere-wall" : "sphere-sphere").field("end", o.end);
@@ -138,8 +140,8 @@ void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
       .field("friction", s.tangential.friction);
   json.field("speed_m_s", o.speed).field("initial_spin_rad_s", o.spin).field("tolerance", o.tolerance);
   json.key("impacts").begin_array();
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const ObliqueResult& r = results[i];
+  for (std::size_t i = 0; i < solves.size(); ++i) {
+    const ObliqueResult& r = solves[i].result;
     json.begin_object().field("angle_deg", o.angles_deg[i]);
     json.field("normal_restitution", r.normal_restitution);
     json.key("tangential_restitution");
@@ -159,14 +161,16 @@ void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
       json.begin_object().field("time_s", m.time_s).field("mode", mode_name(m.mode)).end_object();
     }
     json.end_array();
-    json.field("steps", r.stats.steps);
+    json.field("steps", r.stats.steps).field("relative_tolerance", solves[i].relative_tolerance);
+    json.field("conditioning", solves[i].conditioning);
     json.end_object();
   }
   json.end_array();
   fmt::print("{}\n", finish_json_document(json));
 }
 
-void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueResult>& results) {
+void print_text(const ObliqueCommandOptions& o, const Setup& s,
+                const std::vector<ContractedOblique>& solves) {
   fmt::print(
       "# oblique impact, {}: viscoelastic Hertz k = {:.10g} N/m^1.5, gamma = {:.10g} N s/m^1.5, {} end\n",
       o.wall ? "sphere on a wall" : "two spheres", s.normal.stiffness, s.normal.damping, o.end);
@@ -178,8 +182,8 @@ void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
       s.tangential.damping_factor, s.tangential.friction, o.speed, o.spin);
   fmt::print("{:>9} {:>14} {:>14} {:>12} {:>14} {:>12} {:>12} {:>10} {:>10}  modes\n", "angle_deg", "eps_n",
              "e_t", "rebound_deg", "spin_rad_s", "impulse", "contact_s", "stick", "slip");
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const ObliqueResult& r = results[i];
+  for (std::size_t i = 0; i < solves.size(); ++i) {
+    const ObliqueResult& r = solves[i].result;
     std::string modes;
     for (const ModeSwitch& m : r.switches)
       modes += fmt::format("{}{}", modes.empty() ? "" : ",", mode_name(m.mode));
@@ -191,25 +195,37 @@ void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
   fmt::print(
       "# e_t = -s'/s at the contact point (-1: unchanged); stick and slip as fractions of the contact "
       "time\n");
+  fmt::print(
+      "# eps and e_t within {:g}, rebound angle within {:g} rad, spin within {:g} of max(|spin|, v/R)\n",
+      o.tolerance, o.tolerance, o.tolerance);
+  for (std::size_t i = 0; i < solves.size(); ++i) {
+    if (solves[i].ill_conditioned) fmt::print("# at {:g} deg: {}\n", o.angles_deg[i], solves[i].conditioning);
+  }
 }
 
 int run(const ObliqueCommandOptions& o) {
   const Setup s = setup_of(o);
   if (!o.out.empty()) check_output_file(o.out);
-  std::vector<ObliqueResult> results;
-  results.reserve(o.angles_deg.size());
+  std::vector<ContractedOblique> solves;
+  solves.reserve(o.angles_deg.size());
   for (const double angle : o.angles_deg) {
-    results.push_back(solve_oblique(s.geometry, s.normal, s.tangential, impact_at(o, angle), s.options));
+    solves.push_back(solve_oblique_within(s.geometry, s.normal, s.tangential, impact_at(o, angle),
+                                          o.tolerance, s.options));
+    // Never silently: an outcome the tolerance cannot be shown for is said on stderr as well.
+    if (solves.back().ill_conditioned) {
+      fmt::print(stderr, "restitution oblique: warning: at {:g} deg, {}\n", angle,
+                 solves.back().conditioning);
+    }
   }
   if (!o.out.empty()) {
     std::string csv = std::string(kColumns) + "\n";
-    for (std::size_t i = 0; i < results.size(); ++i) csv += csv_row(o.angles_deg[i], results[i]);
+    for (std::size_t i = 0; i < solves.size(); ++i) csv += csv_row(o.angles_deg[i], solves[i].result);
     write_file_atomically(o.out, csv);
   }
   if (o.json) {
-    print_json(o, s, results);
+    print_json(o, s, solves);
   } else {
-    print_text(o, s, results);
+    print_text(o, s, solves);
   }
   return 0;
 }
@@ -253,7 +269,10 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
                   "lammps (R - delta/2 for a pair, R for a wall), radius or radius-minus-half-overlap")
       ->check(CLI::IsMember({"lammps", "radius", "radius-minus-half-overlap"}))
       ->capture_default_str();
-  cmd->add_option("--tolerance", o->tolerance, "CVODE's relative tolerance, in [1e-14, 1e-2]")
+  cmd->add_option(
+         "--tolerance", o->tolerance,
+         "bound on eps, e_t (absolute), rebound angle (rad) and spins (relative to max(|spin|, v/R)), "
+         "in [1e-10, 1e-2)")
       ->capture_default_str();
   cmd->add_flag("--json", o->json, "print JSON instead of the table");
   cmd->add_option("--out", o->out, "also write the table as CSV to this file");
