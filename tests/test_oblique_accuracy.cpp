@@ -11,6 +11,7 @@
 #include <iostream>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "oblique/oblique_accuracy.hpp"
@@ -243,6 +244,42 @@ TEST(ObliqueAccuracy, RefusesToleranceOutsideTheContract) {
     } catch (const InvalidInput& e) {
       EXPECT_NE(std::string(e.what()).find("[1e-10, 0.01)"), std::string::npos) << e.what();
     }
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// A mindlin contact whose trial force exceeds the cap at first contact while h > 0 (LAMMPS's next step
+// sticks): it used to start sliding and never stop, driving s through 0 to e_t = 4.47. Debian's LAMMPS
+// (tests/dem/oblique_lammps.cpp's wall deck with k_t = 1e11 N/m², γ_t = 1, γ = 1000 N s/m^{3/2}, dt =
+// t_c/2000 and t_c/20000 extrapolated) gives e_t = 0.40221904 at 20°.
+TEST(ObliqueAccuracy, HistorySlipThatCannotLastStartsInStick) {
+  const ObliqueGeometry g{solid_sphere(kRadius, kMass), std::nullopt, TorqueArm::radius};
+  const double a = 20.0 * kDegree;
+  const ContractedOblique s = solve_oblique_within(g, {LawKind::viscoelastic_hertz, kHertzStiffness, 1000.0},
+                                                   {TangentialKind::mindlin, 1e11, 1.0, kFriction},
+                                                   {std::cos(a), std::sin(a), 0.0, 0.0}, 1e-8);
+  ASSERT_FALSE(s.result.switches.empty());
+  EXPECT_EQ(s.result.switches.front().mode, ContactMode::stick);
+  EXPECT_NEAR(s.result.tangential_restitution, 0.40221904, 2e-7);
+}
+
+// The same on the linear dash-pot (F = k δ + γ δ', k = 1e7 N/m, γ = 0.05 N s/m, limit_damping; mindlin
+// k_t = 1e10 N/m², γ_t = 0.5, μ = 0.1): the capped force of the first instant would slide throughout, but
+// mindlin's stiffness grows from 0 under a cap that starts at γ v_n, and LAMMPS sticks first. Debian's
+// LAMMPS (`hooke 1e7 0.05 ... damping velocity limit_damping` on fix wall/gran, extrapolated) gives e_t =
+// -0.87494987 at 75° and -0.95145815 at 85° (sliding throughout would give -0.939 at 85°).
+TEST(ObliqueAccuracy, MindlinOnTheDashpotSticksFirstAsLammpsDoes) {
+  const ObliqueGeometry g{solid_sphere(kRadius, kMass), std::nullopt, TorqueArm::radius};
+  for (const auto& [angle, lammps] : {std::pair{75.0, -0.87494987}, std::pair{85.0, -0.95145815}}) {
+    const double a = angle * kDegree;
+    const ContractedOblique s = solve_oblique_within(g, {LawKind::linear_dashpot, 1e7, 0.05},
+                                                     {TangentialKind::mindlin, 1e10, 0.5, 0.1},
+                                                     {std::cos(a), std::sin(a), 0.0, 0.0}, 1e-8);
+    EXPECT_EQ(s.result.switches.front().mode, ContactMode::stick) << angle;
+    EXPECT_NEAR(s.result.tangential_restitution, lammps, 2e-7) << angle;
   }
 }
 

@@ -194,7 +194,28 @@ void initial_mode(const NaturalModel& model, State& y, ContactMode& mode, double
   mode = std::abs(trial) <= model.cap(y[detail::kOverlap], y[detail::kOverlapRate]) ? ContactMode::stick
                                                                                     : ContactMode::slip;
   sign = trial < 0.0 ? -1.0 : 1.0;
-  if (mode == ContactMode::slip && model.has_history()) y[detail::kDisplacement] = 0.0;
+  if (mode == ContactMode::slip && model.has_history()) {
+    y[detail::kDisplacement] = 0.0;
+    // A history slip lasts while h < 0 and ends where h rises through 0: one that starts with h > 0 would
+    // never end (the capped force would drive s through 0 and beyond). LAMMPS's next step sticks there, and
+    // the contact stays stuck where the trial force, from the cap, then falls below it (a first-order step
+    // of the stick tells). Where it does not, LAMMPS alternates stick and slip every step, a force at the cap
+    // as dt -> 0: the slip stays.
+    if (model.switch_function(y, ContactMode::slip, sign) > 0.0) {
+      State stuck = y;
+      stuck[detail::kDisplacement] = model.displacement_at_cap(y, sign);
+      State rates{};
+      model.rates(stuck, ContactMode::stick, sign, rates);
+      State ahead = stuck;
+      const double step = 1e-3 * y[detail::kOverlap];
+      for (std::size_t i = 0; i < ahead.size(); ++i) ahead[i] += step * rates[i];
+      if (model.switch_function(ahead, ContactMode::stick, sign) >=
+          model.switch_function(stuck, ContactMode::stick, sign)) {
+        mode = ContactMode::stick;
+        y = stuck;
+      }
+    }
+  }
 }
 
 SolverStats phase_stats(void* memory) {
