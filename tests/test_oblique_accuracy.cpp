@@ -284,3 +284,21 @@ TEST(ObliqueAccuracy, MindlinOnTheDashpotSticksFirstAsLammpsDoes) {
 }
 
 }  // namespace
+
+namespace {
+
+// linear_nohistory with a strong viscous force (γ_t = 1e4 on a 1 mm steel wall at 20°) stops the slip at
+// once: s decays to 0 and the contact holds it there (e_t = 0). Its slip used to end where g|s| fell below
+// the cap, which a step carrying s through 0 could jump over: the slip then ran on to e_t = 4.56.
+TEST(ObliqueAccuracy, StrongViscousForceStopsTheSlip) {
+  const ObliqueGeometry g{solid_sphere(kRadius, kMass), std::nullopt, TorqueArm::radius};
+  const double a = 20.0 * kDegree;
+  for (const double damping_factor : {1e3, 1e4, 1e5}) {
+    const ContractedOblique s =
+        solve_oblique_within(g, kNormal, {TangentialKind::linear_nohistory, 0.0, damping_factor, kFriction},
+                             {std::cos(a), std::sin(a), 0.0, 0.0}, 1e-8);
+    EXPECT_NEAR(s.result.tangential_restitution, 0.0, 1e-8) << damping_factor;
+  }
+}
+
+}  // namespace

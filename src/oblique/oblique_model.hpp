@@ -134,7 +134,9 @@ struct NaturalModel {
     if (mode == ContactMode::stick) return c - std::abs(trial_force(y));
     const double s = slip_velocity(y);
     const double g = tangential_damping(x);
-    if (!has_history()) return g * std::abs(s) - c;
+    // -σ g s is g|s| while s keeps the sign it slid with, and negative once it crosses 0: a strong damping
+    // that carries s through 0 within one step cannot hide the end of the slip.
+    if (!has_history()) return -sign * g * s - c;
     const double ds = slip_rate(y, sign * c);
     const double dgs = tangential_damping_rate(x, v) * s + g * ds;
     return cap_rate(y) + sign * (tangential_stiffness(x) * s + dgs) -
