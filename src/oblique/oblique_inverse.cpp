@@ -16,11 +16,12 @@ namespace {
 
 // The scan: 6 decades below the natural scale and 3 above, 10 points a decade. Above, a linear spring
 // chatters between stick and slip (more than solve_oblique's 1000 switches at 1e6), and linear_nohistory's
-// γ_t has long stopped the slip (e_t = 0 to 1e-12 from γ_t = 100 on a 1 mm steel wall at 20°), while from
-// γ_t ~ 3000 the solve no longer finds the slip's end (docs/oblique.md, "The inverse").
+// γ_t has long stopped the slip (e_t = 0 to 1e-12 from γ_t = 100 on a 1 mm steel wall at 20°).
 constexpr int kDecadesBelow = 6;
 constexpr int kDecadesAbove = 3;
 constexpr int kPointsPerDecade = 10;
+// |e_t| <= 1 up to what a pair's turning line of centres exchanges with the normal motion.
+constexpr double kSlack = 1e-3;
 
 // The parameter's natural scale: κ = 1 in the natural units of the normal law (k_t T²/m*, and mindlin's
 // k_t sqrt(R* v T) T²/m*); γ_t = 1 (a tangential damping as strong as the normal one).
@@ -33,6 +34,32 @@ double natural_scale(const TangentialInverseRequest& r) {
     scale /= std::sqrt(effective_radius_m(r.geometry) * r.impact.normal_m_s * time_s);
   }
   return scale;
+}
+
+// The root of e_t(log p) - E in [lo, hi], where f_lo and f_hi differ in sign: TOMS 748, stopped once e_t is
+// within T/2 of E (each solve's own error is about T/200) or the bracket is at the resolution of doubles; the
+// closest point seen.
+template <class Et>
+double root_in(const Et& et_at, double lo, double hi, double f_lo, double f_hi, double target,
+               double tolerance) {
+  if (f_lo == 0.0) return lo;
+  if (f_hi == 0.0) return hi;
+  const double half = 0.5 * tolerance;
+  std::uintmax_t iterations = 200;
+  double closest = std::abs(f_lo) < std::abs(f_hi) ? lo : hi;
+  double closest_error = std::min(std::abs(f_lo), std::abs(f_hi));
+  boost::math::tools::toms748_solve(
+      [&](double x) {
+        const double error = et_at(x) - target;
+        if (std::abs(error) < closest_error) {
+          closest = x;
+          closest_error = std::abs(error);
+        }
+        return std::abs(error) <= half ? 0.0 : error;
+      },
+      lo, hi, f_lo, f_hi,
+      [](double x, double y) { return std::abs(x - y) <= 1e-15 * std::max(1.0, std::abs(x)); }, iterations);
+  return closest;
 }
 
 TangentialForce with_parameter(const TangentialInverseRequest& r, double parameter) {
@@ -77,8 +104,11 @@ TangentialInverseResult tangential_parameter_for(const TangentialInverseRequest&
     logs.push_back(std::log(10.0) * i / kPointsPerDecade);
     // A very stiff spring can chatter between stick and slip beyond solve_oblique's limit of switches:
     // such a point is left out of the scan.
+    // So is a point whose |e_t| exceeds 1: a passive contact cannot return more slip than it met, and a
+    // solve that says so has failed.
     try {
-      ets.push_back(et_at(logs.back()));
+      const double et = et_at(logs.back());
+      ets.push_back(std::abs(et) <= 1.0 + kSlack ? et : std::nan(""));
     } catch (const NumericalFailure&) {
       ets.push_back(std::nan(""));
     }
@@ -101,57 +131,37 @@ TangentialInverseResult tangential_parameter_for(const TangentialInverseRequest&
         scale * std::pow(10.0, -kDecadesBelow), scale * std::pow(10.0, kDecadesAbove),
         result.lowest_reachable_et, result.highest_reachable_et));
   }
-  // The sign change nearest the natural scale (log 0).
-  std::size_t best = 0;
+  // The sign changes, nearest the natural scale (log 0) first; the first that holds a root within T.
+  std::vector<std::size_t> brackets;
   for (std::size_t i = 0; i + 1 < ets.size(); ++i) {
-    const bool brackets = (ets[i] - target) * (ets[i + 1] - target) <= 0.0;  // false with a NaN
-    if (!brackets) continue;
-    ++result.roots_in_scan;
-    const auto distance = [&](std::size_t j) { return std::abs(logs[j] + logs[j + 1]); };
-    if (result.roots_in_scan == 1 || distance(i) < distance(best)) best = i;
+    if ((ets[i] - target) * (ets[i + 1] - target) <= 0.0) brackets.push_back(i);  // false with a NaN
   }
-  double log_root = logs[best];
-  if (ets[best] != target) {
-    if (ets[best + 1] == target) {
-      log_root = logs[best + 1];
-    } else {
-      // Stops once e_t is within T/2 of E (each solve's own error is about T/200) or the bracket is at the
-      // resolution of doubles.
-      const double half = 0.5 * request.tolerance;
-      std::uintmax_t iterations = 200;
-      double closest = logs[best];
-      double closest_error = std::abs(ets[best] - target);
-      const auto [a, b] = boost::math::tools::toms748_solve(
-          [&](double x) {
-            const double error = et_at(x) - target;
-            if (std::abs(error) < closest_error) {
-              closest = x;
-              closest_error = std::abs(error);
-            }
-            return std::abs(error) <= half ? 0.0 : error;
-          },
-          logs[best], logs[best + 1], ets[best] - target, ets[best + 1] - target,
-          [](double x, double y) { return std::abs(x - y) <= 1e-15 * std::max(1.0, std::abs(x)); },
-          iterations);
-      (void)a;
-      (void)b;
-      log_root = closest;
+  result.roots_in_scan = static_cast<int>(brackets.size());
+  std::stable_sort(brackets.begin(), brackets.end(), [&](std::size_t i, std::size_t j) {
+    return std::abs(logs[i] + logs[i + 1]) < std::abs(logs[j] + logs[j + 1]);
+  });
+  double jump_at = 0.0;
+  double jump_reaches = 0.0;
+  for (const std::size_t i : brackets) {
+    const double log_root =
+        root_in(et_at, logs[i], logs[i + 1], ets[i] - target, ets[i + 1] - target, target, request.tolerance);
+    result.parameter = scale * std::exp(log_root);
+    result.check =
+        solve_oblique_within(request.geometry, request.normal, with_parameter(request, result.parameter),
+                             request.impact, request.tolerance, request.options);
+    const double reached = result.check.result.tangential_restitution;
+    if (std::abs(reached - target) <= request.tolerance) return result;
+    // e_t jumps across the target here (where the stick/slip sequence changes): no root.
+    if (jump_at == 0.0) {
+      jump_at = result.parameter;
+      jump_reaches = reached;
     }
   }
-  result.parameter = scale * std::exp(log_root);
-  result.check =
-      solve_oblique_within(request.geometry, request.normal, with_parameter(request, result.parameter),
-                           request.impact, request.tolerance, request.options);
-  // e_t can jump where the stick/slip sequence changes: a sign change there is no root.
-  const double reached = result.check.result.tangential_restitution;
-  if (!(std::abs(reached - target) <= request.tolerance)) {
-    throw InvalidInput(
-        fmt::format("e_t jumps across the target {} at {} = {:.6g} (a stick/slip boundary): it reaches "
-                    "{:.10g} there, not "
-                    "within {:g}",
-                    target, result.parameter_name, result.parameter, reached, request.tolerance));
-  }
-  return result;
+  throw InvalidInput(
+      fmt::format("e_t jumps across the target {} (at a stick/slip boundary) wherever it crosses it: at {} = "
+                  "{:.6g} it reaches "
+                  "{:.10g}, not within {:g}",
+                  target, result.parameter_name, jump_at, jump_reaches, request.tolerance));
 }
 
 }  // namespace restitution::oblique
