@@ -28,8 +28,7 @@ struct DemObliqueOptions {
 void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o);
 
 // LAMMPS's integration error of e_t is first order in the step: |Δe_t| <= C/N at N steps per contact, C
-// measured with Debian's LAMMPS (tests/dem/oblique_lammps.cpp, largest over 9 angles 1°-85°, spin 0 and
-// 300 rad/s, a wall and two pairs of 1 mm steel spheres, dt = t_c/2000 against the library).
+// measured with Debian's LAMMPS on the lines dem prints (dem_oblique.cpp says where and what).
 double lammps_et_error_coefficient(oblique::TangentialKind kind);
 
 // The lines' oblique impacts at one speed (the reference speed of the lines).
