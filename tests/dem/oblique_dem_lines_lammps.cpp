@@ -146,6 +146,46 @@ TEST_P(ObliqueDemLines, LammpsGivesThePrintedObliqueOutputs) {
                        std::string(wall ? "wall" : "pair") + ", the inverse's line");
 }
 
+// `--deck FILE` with friction: after the head-on collisions the deck collides the pair (or the sphere and
+// the wall) at each listed angle and prints a restitution-oblique-check line per angle, LAMMPS's extrapolated
+// e_t against the printed one (measured: |diff| <= 2e-7).
+TEST_P(ObliqueDemLines, CheckDeckCoversTheObliqueImpacts) {
+  const bool wall = GetParam();
+  ASSERT_FALSE(restitution::dem::dem_program(restitution::dem::Code::lammps).empty())
+      << "lmp not found on PATH: scripts/setup installs Debian's lammps";
+  TempFolder folder;
+  const auto deck = folder.path / "check.lmp";
+  const auto r = run_cli(kSteel + (wall ? " --wall" : "") + " --deck " + deck.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto out = nlohmann::json::parse(r.out);
+  const auto& impacts = out["oblique"]["impacts"];
+  const std::string command = restitution::dem::dem_program(restitution::dem::Code::lammps) +
+                              " -log none -in " + deck.string() + " > " + (folder.path / "out.txt").string() +
+                              " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << slurp((folder.path / "out.txt").string());
+  std::istringstream text(slurp((folder.path / "out.txt").string()));
+  std::size_t head_on = 0;
+  std::size_t oblique = 0;
+  for (std::string line; std::getline(text, line);) {
+    if (line.rfind("restitution-check ", 0) == 0) ++head_on;
+    if (line.rfind("restitution-oblique-check ", 0) != 0) continue;
+    ASSERT_LT(oblique, impacts.size()) << line;
+    const auto field = [&](const std::string& key) {
+      const std::size_t at = line.find(" " + key + "=");
+      EXPECT_NE(at, std::string::npos) << key << " in " << line;
+      return std::stod(line.substr(at + key.size() + 2));
+    };
+    EXPECT_EQ(field("angle"), impacts[oblique]["angle_deg"].get<double>()) << line;
+    EXPECT_NEAR(field("et_restitution"), impacts[oblique]["tangential_restitution"].get<double>(), 1e-12)
+        << line;
+    EXPECT_NEAR(field("diff"), 0.0, 1e-6) << line;
+    EXPECT_NEAR(field("et_code"), impacts[oblique]["tangential_restitution"].get<double>(), 1e-6) << line;
+    ++oblique;
+  }
+  EXPECT_EQ(head_on, 3U);  // v/10, v, 10 v
+  EXPECT_EQ(oblique, impacts.size());
+}
+
 INSTANTIATE_TEST_SUITE_P(PairAndWall, ObliqueDemLines, ::testing::Values(false, true));
 
 }  // namespace
