@@ -90,6 +90,9 @@ TEST(ObliqueGrossSliding, WallChangesSlipByTheClosedFormForEveryModelAndLaw) {
       options.end = n.end;
       options.relative_tolerance = 1e-12;
       if (kind == TangentialKind::linear_nohistory && n.normal.damping == 0.0) continue;  // no viscous force
+      // mindlin on the dash-pot sticks first (its stiffness grows from 0 under a cap that does not: LAMMPS
+      // sticks there too, tests/test_oblique_accuracy.cpp): no slide throughout.
+      if (kind == TangentialKind::mindlin && n.normal.kind == LawKind::linear_dashpot) continue;
       const ObliqueResult r = solve_oblique(wall_geometry(), n.normal, t, v, options);
       expect_gross_sliding(r, v, wall_geometry(), mu, std::string(n.name) + " / " + tangential_name(kind));
     }

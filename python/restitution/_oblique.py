@@ -2,6 +2,8 @@
 """restitution.oblique: oblique impacts with a LAMMPS tangential model (docs/oblique.md), the arguments of
 `restitution oblique` as keywords; array angles and spins broadcast and give arrays."""
 
+import warnings as _warnings
+
 import numpy as _np
 
 from . import _restitution as _core
@@ -104,7 +106,9 @@ def oblique(*, material, friction, angle, spin=0.0, speed=1.0, tangential="linea
     end : {"delayed-recovery", "naive"}
     torque_arm : {"lammps", "radius", "radius-minus-half-overlap"}
     tolerance : float
-        CVODE's relative tolerance, in [1e-14, 1e-2].
+        The accuracy contract, in [1e-10, 1e-2): eps and e_t within it, the rebound angle within it in rad, the
+        spins within it times max(|spin|, v/R). An impact near the stick/slip boundary, where that cannot be
+        shown, gives a RuntimeWarning that says why (docs/oblique.md, "Accuracy and cost").
 
     Returns
     -------
@@ -150,6 +154,10 @@ def oblique(*, material, friction, angle, spin=0.0, speed=1.0, tangential="linea
         tangential_damping=numbers["tangential_damping"], speed=numbers["speed"], wall=wall,
         fixed_normal=fixed_normal, end=_text("end", end), torque_arm=_text("torque_arm", torque_arm),
         tolerance=numbers["tolerance"])
+    for angle_deg, spin_rad_s, why in zip(angles.ravel(), spins.ravel(), columns["ill_conditioned"]):
+        if why:  # never silently: the outputs of this impact are not shown to be within the tolerance
+            _warnings.warn(f"oblique impact at {angle_deg:g} deg, spin {spin_rad_s:g} rad/s: {why}", RuntimeWarning,
+                           stacklevel=2)
     shape = angles.shape
     values = {"tangential_model": columns["tangential_model"], "maw_chi": columns["maw_chi"]}
     columns["rebound_angle_deg"] = _np.degrees(columns["rebound_angle"])

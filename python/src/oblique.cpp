@@ -68,6 +68,9 @@ py::dict columns_of(const ObliqueSetup& setup, const std::vector<ObliqueImpact>&
     switch_times.append(array_of(times));
     modes.append(py::tuple(names));
   }
+  py::list ill_conditioned;  // what the accuracy contract could not show, per impact ("" where it could)
+  for (const ObliqueImpact& i : impacts) ill_conditioned.append(i.ill_conditioned ? i.conditioning : "");
+  out["ill_conditioned"] = ill_conditioned;
   out["switch_times"] = switch_times;
   out["modes"] = modes;
   out["tangential_model"] = tangential_name(setup.tangential.kind);

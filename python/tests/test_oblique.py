@@ -7,6 +7,7 @@ import doctest
 import json
 import math
 import pickle
+import warnings
 
 import numpy as np
 import pytest
@@ -128,3 +129,22 @@ def test_bad_arguments_are_named(arguments, error, words):
     with pytest.raises(error, match=None) as caught:
         restitution.oblique(**keywords)
     assert words in str(caught.value)
+
+
+def test_an_ill_conditioned_impact_warns_as_the_command_line_does(cli, steel_damped):
+    # Near the stick/slip boundary (a second stick phase appears near 17.95 deg for this wall impact) the contract
+    # cannot be shown: the command line says so on stderr and in the JSON, Python with a RuntimeWarning.
+    arguments = dict(friction=0.3, tangential="linear_history", tangential_stiffness=2.2e6, tangential_damping=0.5,
+                     wall=True)
+    angles = np.linspace(17.94, 17.96, 21)
+    out = json.loads(cli("oblique", *STEEL_CLI, "--dissipative-constant", "1e-7", "--tangential", "linear_history",
+                         "--tangential-stiffness", "2.2e6", "--tangential-damping", "0.5", "--friction", "0.3",
+                         "--wall", "--angle", ",".join(repr(a) for a in angles), "--json"))
+    flagged = [impact["angle_deg"] for impact in out["impacts"] if impact["conditioning"] != "well-conditioned"]
+    assert flagged, "no flagged impact: the case no longer crosses the boundary"
+    with pytest.warns(RuntimeWarning, match="ill-conditioned") as caught:
+        restitution.oblique(material=steel_damped, angle=angles, **arguments)
+    assert len([w for w in caught if "ill-conditioned" in str(w.message)]) == len(flagged)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        restitution.oblique(material=steel_damped, angle=[5.0, 45.0], **arguments)

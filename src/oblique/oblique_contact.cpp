@@ -50,6 +50,14 @@ struct CallbackData {
   ContactMode mode = ContactMode::stick;
   double sign = 1.0;
   CollisionEnd end = CollisionEnd::delayed_recovery;
+  // The switch function's distance from 0 over its scale at the last two step ends of this phase (-1: none
+  // yet), the largest so far in the phase and when it was last sampled, and the smallest interior minimum of
+  // it over the contact: where it comes back close to 0 without crossing, a switch nearly happened.
+  double before_previous = -1.0;
+  double previous = -1.0;
+  double phase_largest = 0.0;
+  double last_sample = -HUGE_VAL;
+  double closest = 1.0;
 };
 
 // CVODE integrates the Sundman form of the engines (src/cvode/cvode_integrator.hpp): independent variable σ
@@ -83,8 +91,32 @@ int right_hand_side(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_dat
 }
 
 // g[0]: the end of the contact (the normal law's own end functions); g[1]: the switch out of the mode.
-int root_functions(sunrealtype /*t*/, N_Vector y, sunrealtype* g, void* user_data) noexcept {
-  const auto& data = *static_cast<CallbackData*>(user_data);
+// A sample of the switch function: an interior minimum of its distance from 0 is a near miss.
+// Only the step ends count (CVODE's root finding samples back inside the last step, around a root), and
+// only a minimum far below what the phase reached before (a phase starts at a switch, where its function is
+// 0).
+void track_switch_distance(CallbackData& data, double sigma, const State& s, double value) {
+  const double scale = data.model->switch_scale(s, data.mode, data.sign);
+  if (!(sigma > data.last_sample) || !(scale > 0.0) || !std::isfinite(scale)) return;
+  data.last_sample = sigma;
+  // On the side where the mode lasts (a history slip's h below 0, the others above); across it a crossing.
+  const bool lasts = data.mode == ContactMode::slip && data.model->has_history() ? value < 0.0 : value > 0.0;
+  if (!lasts) {
+    data.before_previous = data.previous = -1.0;
+    return;
+  }
+  const double distance = std::abs(value) / scale;
+  if (data.before_previous > data.previous && data.previous >= 0.0 && distance > data.previous &&
+      data.phase_largest > 1e-2 && data.previous < 1e-2 * data.phase_largest) {
+    data.closest = std::min(data.closest, data.previous);
+  }
+  data.phase_largest = std::max(data.phase_largest, distance);
+  data.before_previous = data.previous;
+  data.previous = distance;
+}
+
+int root_functions(sunrealtype sigma, N_Vector y, sunrealtype* g, void* user_data) noexcept {
+  auto& data = *static_cast<CallbackData*>(user_data);
   const State s = read(data.model->law, y);
   // u changes sign at the naive end where x = u^q may not; without damping the force-zero end is the naive
   // one, where the force factor x^{a-b} = u^{q(a-b)} only touches 0.
@@ -93,6 +125,7 @@ int root_functions(sunrealtype /*t*/, N_Vector y, sunrealtype* g, void* user_dat
              : law_rhs::force_factor(data.model->law, s[detail::kOverlap], s[detail::kOverlapRate]);
   // Without friction the force is 0 in every mode (LAMMPS caps it at 0): nothing to switch.
   g[1] = data.model->friction == 0.0 ? 1.0 : data.model->switch_function(s, data.mode, data.sign);
+  if (data.model->friction != 0.0) track_switch_distance(data, sigma, s, g[1]);
   return 0;
 }
 
@@ -161,7 +194,28 @@ void initial_mode(const NaturalModel& model, State& y, ContactMode& mode, double
   mode = std::abs(trial) <= model.cap(y[detail::kOverlap], y[detail::kOverlapRate]) ? ContactMode::stick
                                                                                     : ContactMode::slip;
   sign = trial < 0.0 ? -1.0 : 1.0;
-  if (mode == ContactMode::slip && model.has_history()) y[detail::kDisplacement] = 0.0;
+  if (mode == ContactMode::slip && model.has_history()) {
+    y[detail::kDisplacement] = 0.0;
+    // A history slip lasts while h < 0 and ends where h rises through 0: one that starts with h > 0 would
+    // never end (the capped force would drive s through 0 and beyond). LAMMPS's next step sticks there, and
+    // the contact stays stuck where the trial force, from the cap, then falls below it (a first-order step
+    // of the stick tells). Where it does not, LAMMPS alternates stick and slip every step, a force at the cap
+    // as dt -> 0: the slip stays.
+    if (model.switch_function(y, ContactMode::slip, sign) > 0.0) {
+      State stuck = y;
+      stuck[detail::kDisplacement] = model.displacement_at_cap(y, sign);
+      State rates{};
+      model.rates(stuck, ContactMode::stick, sign, rates);
+      State ahead = stuck;
+      const double step = 1e-3 * y[detail::kOverlap];
+      for (std::size_t i = 0; i < ahead.size(); ++i) ahead[i] += step * rates[i];
+      if (model.switch_function(ahead, ContactMode::stick, sign) >=
+          model.switch_function(stuck, ContactMode::stick, sign)) {
+        mode = ContactMode::stick;
+        y = stuck;
+      }
+    }
+  }
 }
 
 SolverStats phase_stats(void* memory) {
@@ -298,6 +352,9 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
     }
     // The end is a downward crossing; a stick ends where its function falls through 0, a slip of a history
     // model where h rises through 0, a slip of linear_nohistory where g|s| - C falls through 0.
+    data.before_previous = data.previous = -1.0;  // a new phase
+    data.phase_largest = 0.0;
+    data.last_sample = -HUGE_VAL;
     std::array<int, 2> directions{-1, data.mode == ContactMode::slip && model.has_history() ? 1 : -1};
     sundials::check_flag(CVodeSetRootDirection(mem, directions.data()), "CVodeSetRootDirection");
 
@@ -357,6 +414,7 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
   result.rebound_angle_rad = std::atan2(result.tangential_velocity_m_s, result.normal_velocity_m_s);
   result.impulse_ratio = (tangential_after - impact.tangential_m_s / speed) / (1.0 + separation);
   result.contact_time_s = t * time_s;
+  result.closest_switch_approach = data.closest;
   return result;
 }
 

@@ -124,6 +124,10 @@ struct ObliqueResult {
   double stick_time_s = 0.0;  // time below the Coulomb cap
   double slip_time_s = 0.0;   // time at the cap
   std::vector<ModeSwitch> switches;
+  // The smallest interior minimum of a switch function's distance from 0, relative to the size of its terms,
+  // over the contact (1: none): near 0 the contact nearly switched, and the outcome is ill-conditioned
+  // (oblique_accuracy.hpp).
+  double closest_switch_approach = 1.0;
   SolverStats stats;
 };
 

@@ -134,11 +134,28 @@ struct NaturalModel {
     if (mode == ContactMode::stick) return c - std::abs(trial_force(y));
     const double s = slip_velocity(y);
     const double g = tangential_damping(x);
-    if (!has_history()) return g * std::abs(s) - c;
+    // -σ g s is g|s| while s keeps the sign it slid with, and negative once it crosses 0: a strong damping
+    // that carries s through 0 within one step cannot hide the end of the slip.
+    if (!has_history()) return -sign * g * s - c;
     const double ds = slip_rate(y, sign * c);
     const double dgs = tangential_damping_rate(x, v) * s + g * ds;
     return cap_rate(y) + sign * (tangential_stiffness(x) * s + dgs) -
            stiffness_log_rate(x, v) * (c + sign * g * s);
+  }
+  // The size of the terms of the switch function out of `mode`, against which its distance from 0 is measured
+  // (a near miss: ObliqueResult::closest_switch_approach).
+  [[nodiscard]] double switch_scale(const State& y, ContactMode mode, double sign) const {
+    const double x = y[kOverlap];
+    const double v = y[kOverlapRate];
+    const double c = cap(x, v);
+    if (mode == ContactMode::stick) return c + std::abs(trial_force(y));
+    const double s = slip_velocity(y);
+    const double g = tangential_damping(x);
+    if (!has_history()) return g * std::abs(s) + c;
+    const double ds = slip_rate(y, sign * c);
+    return std::abs(cap_rate(y)) + tangential_stiffness(x) * std::abs(s) +
+           std::abs(tangential_damping_rate(x, v) * s) + std::abs(g * ds) +
+           std::abs(stiffness_log_rate(x, v)) * (c + g * std::abs(s));
   }
   // Whether leaving `mode` where its switch function crossed 0 agrees with the rate of the force against the
   // cap. Just after a switch the new mode's function starts at 0 and is tangent to it, so the integration

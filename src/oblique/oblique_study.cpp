@@ -7,7 +7,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
+#include "oblique/oblique_accuracy.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
 
@@ -107,7 +109,9 @@ ObliqueSetup oblique_setup(const ObliqueInputs& in, ArgumentStyle style) {
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("{}: {}", name("end"), e.what()));
   }
-  s.options.relative_tolerance = in.tolerance;
+  require_oblique_tolerance(in.tolerance, name("tolerance").c_str());
+  s.tolerance = in.tolerance;
+  s.options.relative_tolerance = in.tolerance * kObliqueRtolFactor;
   check_lists(in, style);
   s.speed_m_s = in.speed_m_s;
   s.angles_deg = in.angles_deg;
@@ -141,8 +145,12 @@ double maw_chi(const ObliqueSetup& setup) {
 
 ObliqueImpact solve_impact(const ObliqueSetup& setup, double angle_deg, double spin_rad_s) {
   const ImpactVelocity v = impact_at(setup, angle_deg, spin_rad_s);
-  ObliqueImpact impact{angle_deg, spin_rad_s,
-                       solve_oblique(setup.geometry, setup.normal, setup.tangential, v, setup.options)};
+  ContractedOblique solve =
+      solve_oblique_within(setup.geometry, setup.normal, setup.tangential, v, setup.tolerance, setup.options);
+  ObliqueImpact impact{angle_deg, spin_rad_s, std::move(solve.result)};
+  impact.relative_tolerance = solve.relative_tolerance;
+  impact.ill_conditioned = solve.ill_conditioned;
+  impact.conditioning = std::move(solve.conditioning);
   const double slip_in = v.tangential_m_s + setup.geometry.first.radius_m * spin_rad_s;
   impact.psi_in = maw_psi(setup, slip_in, v.normal_m_s);
   impact.psi_out = maw_psi(setup, impact.result.slip_velocity_m_s, v.normal_m_s);

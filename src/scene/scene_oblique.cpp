@@ -70,8 +70,12 @@ ObliqueTask read_oblique_task(TomlReader& r, std::string name,
   t.torque_arm = r.text("torque_arm").value_or(t.torque_arm);
   t.tolerance = r.number("tolerance").value_or(t.tolerance);
   r.check_each(
-      "tolerance", {t.tolerance}, [](double v) { return v >= 1e-14 && v <= 1e-2; },
-      "a value in [1e-14, 1e-2]");
+      "tolerance", {t.tolerance},
+      [](double v) {
+        return v >= oblique::kSmallestObliqueTolerance && v < oblique::kLargestObliqueTolerance;
+      },
+      fmt::format("a value in [{:g}, {:g}) (the accuracy contract, docs/oblique.md)",
+                  oblique::kSmallestObliqueTolerance, oblique::kLargestObliqueTolerance));
   t.plot = r.flag("plot").value_or(true);
   const Material& m = materials.at(t.material);
   if (t.wall && (m.radius1_m != m.radius2_m || m.mass1_kg != m.mass2_kg)) {

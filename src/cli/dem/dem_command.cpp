@@ -17,6 +17,7 @@
 #include "cli/common/material_options.hpp"
 #include "cli/dem/deck_json.hpp"
 #include "cli/dem/dem_deck.hpp"
+#include "cli/dem/dem_oblique.hpp"
 #include "cli/dem/dem_polydisperse_output.hpp"
 #include "cli/dem/dem_production.hpp"
 #include "cli/dem/dem_type_options.hpp"
@@ -50,6 +51,7 @@ struct DemOptions {
   std::string deck_run;             // the command that runs it, once written
   ProductionOptions production;     // --timestep, --max-eps-error, --constant-eps
   WallOptions wall;                 // --wall: a sphere on a wall (cli/dem/dem_wall.hpp)
+  DemObliqueOptions oblique;        // --angles, --target-et (cli/dem/dem_oblique.hpp)
 };
 
 // The YADE the lines are for: --yade-version, else `yade --version` of the one on PATH, else the newest
@@ -117,7 +119,7 @@ dem::LinesResult compute(DemOptions& o) {
 }
 
 void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optional<FromFit>& from_fit,
-                const Production& production) {
+                const Production& production, const std::optional<DemOblique>& oblique) {
   JsonWriter json;
   json.begin_object();
   json.field("code", dem::code_name(r.deck.code)).field("end", end_name(r.deck.end));
@@ -155,12 +157,13 @@ void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optio
     write_fit_carry_over(json, o.from_fit, from_fit->fit, from_fit->k, speeds_of(r), fit_eps_given_by(r));
   }
   write_production_json(json, r, production, o.production);
+  if (oblique) write_oblique_json(json, *oblique);
   if (o.deck) json.key("deck").begin_object().field("file", *o.deck).field("run", o.deck_run).end_object();
   fmt::print("{}\n", finish_json_document(json));
 }
 
 void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optional<FromFit>& from_fit,
-                const Production& production) {
+                const Production& production, const std::optional<DemOblique>& oblique) {
   const char* c = dem::code_entry(r.deck.code).comment;
   fmt::print("{} restitution dem --code {}: viscoelastic Hertz law, A = {:.10g} s, {} end\n", c,
              dem::code_name(r.deck.code), r.dissipative_constant_s, end_name(r.deck.end));
@@ -206,11 +209,15 @@ void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optio
     fmt::print("{}", fit_carry_over_text(o.from_fit, from_fit->fit, from_fit->k, speeds_of(r),
                                          fit_eps_given_by(r), c));
   print_production_text(r, production, o.production);
+  if (oblique) print_oblique_text(*oblique, c);
   if (o.deck) fmt::print("{} check deck written to {}: run `{}`\n", c, *o.deck, o.deck_run);
 }
 
 // Several atom types (docs/dem.md, "Polydisperse sets"): lammps and liggghts only.
 int run_polydisperse(const DemOptions& o) {
+  if (wants_oblique(o.oblique, dem::code_from_name(o.code), 0.0)) {
+    throw InvalidInput("several atom types take no --angles, --target-et or --reference-angle");
+  }
   if (!o.from_fit.empty() || !o.yade_version.empty() || any_production_option(o.production)) {
     throw InvalidInput(
         "several atom types take --eps/--velocity or --dissipative-constant, not --from-fit, "
@@ -255,8 +262,11 @@ int run_wall(const DemOptions& o) {
   request.speeds_m_s = o.speeds;
   request.tolerance = o.tolerance;
   request.friction = o.friction;
+  const bool oblique = wants_oblique(o.oblique, request.code, o.friction);
   const dem::WallResult r = dem::wall_lines(request);
-  print_wall(r, o.json, o.deck);
+  std::optional<DemOblique> impacts;
+  if (oblique) impacts = wall_oblique(r.deck, r.contact, o.oblique, r.reference_velocity_m_s, o.tolerance);
+  print_wall(r, o.json, o.deck, impacts);
   return 0;
 }
 
@@ -308,6 +318,7 @@ void add_dem_command(CLI::App& app, Action& chosen) {
                   dem::kMaxDeckCollisionsYade));
   add_production_options(*cmd, o->production);
   add_wall_options(*cmd, o->wall);
+  add_dem_oblique_options(*cmd, o->oblique);
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, cmd, &chosen] {
@@ -321,14 +332,20 @@ void add_dem_command(CLI::App& app, Action& chosen) {
       if (several_types(o->types)) return run_polydisperse(*o);
       if (o->deck) check_deck_size(dem::code_from_name(o->code), 1, o->speeds.size());
       o->material = one_pair_material(o->types);
+      const bool oblique = wants_oblique(o->oblique, dem::code_from_name(o->code), o->friction);
       const std::optional<FromFit> from_fit = apply_from_fit(*o);
       const dem::LinesResult r = compute(*o);
       const Production p = production(r, material_from(o->material), o->production, o->tolerance);
-      if (o->deck) o->deck_run = write_check_deck(*o->deck, r, material_from(o->material));
+      std::optional<DemOblique> impacts;
+      if (oblique) {
+        impacts = pair_oblique(r.deck, dem::pair_of(material_from(o->material)), o->oblique,
+                               r.reference_velocity_m_s, o->tolerance);
+      }
+      if (o->deck) o->deck_run = write_check_deck(*o->deck, r, material_from(o->material), impacts);
       if (o->json) {
-        print_json(r, *o, from_fit, p);
+        print_json(r, *o, from_fit, p, impacts);
       } else {
-        print_text(r, *o, from_fit, p);
+        print_text(r, *o, from_fit, p, impacts);
       }
       return 0;
     };

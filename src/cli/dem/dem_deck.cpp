@@ -4,6 +4,7 @@
 #include <fmt/core.h>
 
 #include "cli/common/output_files.hpp"
+#include "cli/dem/oblique_check_deck.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -25,7 +26,8 @@ std::string write_check_deck(const std::string& path, const dem::CheckDeckReques
   return dem::check_deck_command(request.code, path);
 }
 
-std::string write_check_deck(const std::string& path, const dem::LinesResult& r, const Material& material) {
+std::string write_check_deck(const std::string& path, const dem::LinesResult& r, const Material& material,
+                             const std::optional<DemOblique>& oblique) {
   dem::CheckDeckRequest request;
   request.code = r.deck.code;
   request.lines = r.deck.lines;
@@ -48,7 +50,10 @@ std::string write_check_deck(const std::string& path, const dem::LinesResult& r,
         r.yade_exact_deck ? ": it cannot express the law; eps_restitution is the eps these lines give there"
                           : ""));
   }
-  return write_check_deck(path, request);
+  if (!oblique) return write_check_deck(path, request);
+  write_file_atomically(
+      path, dem::check_deck(request) + oblique_check_section(*oblique, r.deck.prerequisites, r.deck.lines));
+  return dem::check_deck_command(request.code, path);
 }
 
 }  // namespace restitution::cli

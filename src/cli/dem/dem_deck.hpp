@@ -3,8 +3,10 @@
 // `restitution dem --deck FILE`: the check deck (dem/check_deck.hpp) for the lines the command prints,
 // written complete or not at all.
 #include <cstddef>
+#include <optional>
 #include <string>
 
+#include "cli/dem/dem_oblique.hpp"
 #include "dem/check_deck.hpp"
 #include "dem/lines_check.hpp"
 #include "restitution/material.hpp"
@@ -24,6 +26,8 @@ void check_deck_size(dem::Code code, std::size_t type_count, std::size_t speed_c
 std::string write_check_deck(const std::string& path, const dem::CheckDeckRequest& request);
 // The one-pair deck: `r`'s lines on `material`'s pair (type 1 for both spheres) at `r`'s speeds against `r`'s
 // ε.
-std::string write_check_deck(const std::string& path, const dem::LinesResult& r, const Material& material);
+// With `oblique`, the deck also collides the pair at its angles (cli/dem/oblique_check_deck.hpp).
+std::string write_check_deck(const std::string& path, const dem::LinesResult& r, const Material& material,
+                             const std::optional<DemOblique>& oblique = std::nullopt);
 
 }  // namespace restitution::cli

@@ -8,6 +8,7 @@
 #include "cli/common/json_writer.hpp"
 #include "cli/common/output_files.hpp"
 #include "cli/dem/deck_json.hpp"
+#include "cli/dem/oblique_check_deck.hpp"
 #include "dem/check_deck.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
@@ -19,7 +20,8 @@ std::string wall_words(const dem::WallResult& r) {
   return r.rigid_wall ? "rigid wall" : "wall of its own material";
 }
 
-void print_json(const dem::WallResult& r, const std::optional<std::string>& deck, const std::string& run) {
+void print_json(const dem::WallResult& r, const std::optional<std::string>& deck, const std::string& run,
+                const std::optional<DemOblique>& oblique) {
   JsonWriter json;
   json.begin_object();
   json.field("code", dem::code_name(r.deck.code)).field("end", end_name(r.deck.end));
@@ -32,11 +34,13 @@ void print_json(const dem::WallResult& r, const std::optional<std::string>& deck
   json.field("reference_velocity_m_s", r.reference_velocity_m_s).field("friction", r.friction);
   write_deck_json(json, r.deck);
   write_speed_eps_json(json, r.eps);
+  if (oblique) write_oblique_json(json, *oblique);
   if (deck) json.key("deck").begin_object().field("file", *deck).field("run", run).end_object();
   fmt::print("{}\n", finish_json_document(json));
 }
 
-void print_text(const dem::WallResult& r, const std::optional<std::string>& deck, const std::string& run) {
+void print_text(const dem::WallResult& r, const std::optional<std::string>& deck, const std::string& run,
+                const std::optional<DemOblique>& oblique) {
   const char* c = dem::code_entry(r.deck.code).comment;
   fmt::print(
       "{} restitution dem --code {} --wall: a sphere on a {}, viscoelastic Hertz law, A = {:.10g} s, {} "
@@ -52,6 +56,7 @@ void print_text(const dem::WallResult& r, const std::optional<std::string>& deck
   for (const auto& line : r.deck.lines) fmt::print("{}\n", line);
   fmt::print("{} eps these lines give this sphere on the wall ({} end):\n", c, end_name(r.deck.end));
   for (const auto& e : r.eps) fmt::print("{}   v = {:<10.6g} m/s  eps = {:.10g}\n", c, e.velocity_m_s, e.eps);
+  if (oblique) print_oblique_text(*oblique, c);
   if (deck) fmt::print("{} wall check deck written to {}: run `{}`\n", c, *deck, run);
 }
 
@@ -79,16 +84,19 @@ std::optional<dem::WallMaterial> wall_material(const WallOptions& o) {
   return dem::WallMaterial{*o.young_modulus, *o.poisson_ratio};
 }
 
-void print_wall(const dem::WallResult& r, bool json, const std::optional<std::string>& deck) {
+void print_wall(const dem::WallResult& r, bool json, const std::optional<std::string>& deck,
+                const std::optional<DemOblique>& oblique) {
   std::string run;
   if (deck) {
-    write_file_atomically(*deck, dem::wall_check_deck(r));
+    std::string text = dem::wall_check_deck(r);
+    if (oblique) text += oblique_check_section(*oblique, r.deck.prerequisites, r.deck.lines);
+    write_file_atomically(*deck, text);
     run = dem::check_deck_command(r.deck.code, *deck);
   }
   if (json) {
-    print_json(r, deck, run);
+    print_json(r, deck, run, oblique);
   } else {
-    print_text(r, deck, run);
+    print_text(r, deck, run, oblique);
   }
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/dem/dem_oblique.hpp"
 #include "dem/wall_lines.hpp"
 
 namespace restitution::cli {
@@ -22,6 +23,8 @@ void add_wall_options(CLI::App& command, WallOptions& o);
 std::optional<dem::WallMaterial> wall_material(const WallOptions& o);
 
 // Prints the wall lines (and writes the deck to `deck` when given, complete or not at all).
-void print_wall(const dem::WallResult& r, bool json, const std::optional<std::string>& deck);
+// With `oblique`, what the wall lines give oblique impacts (cli/dem/dem_oblique.hpp).
+void print_wall(const dem::WallResult& r, bool json, const std::optional<std::string>& deck,
+                const std::optional<DemOblique>& oblique = std::nullopt);
 
 }  // namespace restitution::cli

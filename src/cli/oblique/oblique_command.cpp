@@ -122,7 +122,8 @@ void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
       json.begin_object().field("time_s", m.time_s).field("mode", mode_name(m.mode)).end_object();
     }
     json.end_array();
-    json.field("steps", r.stats.steps);
+    json.field("steps", r.stats.steps).field("relative_tolerance", impact.relative_tolerance);
+    json.field("conditioning", impact.conditioning);
     // Maw's ψ: null without friction, where it is undefined.
     for (const auto& [key, psi] :
          {std::pair{"psi_in", impact.psi_in}, std::pair{"psi_out", impact.psi_out}}) {
@@ -166,6 +167,15 @@ void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
   fmt::print(
       "# e_t = -s'/s at the contact point (-1: unchanged); stick and slip as fractions of the contact "
       "time\n");
+  fmt::print(
+      "# eps and e_t within {:g}, rebound angle within {:g} rad, spin within {:g} of max(|spin|, v/R)\n",
+      o.tolerance, o.tolerance, o.tolerance);
+  for (const ObliqueImpact& impact : impacts) {
+    if (impact.ill_conditioned) {
+      fmt::print("# at {:g} deg, spin {:g} rad/s: {}\n", impact.angle_deg, impact.initial_spin_rad_s,
+                 impact.conditioning);
+    }
+  }
 }
 
 // Maw's diagram of the sweep; without --out the script reads a scratch copy of the CSV beside the image.
@@ -191,6 +201,13 @@ int run(const ObliqueCommandOptions& o) {
   if (!o.out.empty()) check_output_file(o.out);
   if (!o.plot.empty()) check_output_file(o.plot);
   const std::vector<ObliqueImpact> impacts = oblique_sweep(s);
+  for (const ObliqueImpact& impact : impacts) {
+    // Never silently: an outcome the tolerance cannot be shown for is said on stderr as well.
+    if (impact.ill_conditioned) {
+      fmt::print(stderr, "restitution oblique: warning: at {:g} deg, spin {:g} rad/s, {}\n", impact.angle_deg,
+                 impact.initial_spin_rad_s, impact.conditioning);
+    }
+  }
   const std::string csv = oblique_csv(impacts);
   if (!o.out.empty()) write_file_atomically(o.out, csv);
   if (!o.plot.empty()) draw(o, s, impacts, csv);
@@ -245,7 +262,10 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
                   "lammps (R - delta/2 for a pair, R for a wall), radius or radius-minus-half-overlap")
       ->check(CLI::IsMember({"lammps", "radius", "radius-minus-half-overlap"}))
       ->capture_default_str();
-  cmd->add_option("--tolerance", o->tolerance, "CVODE's relative tolerance, in [1e-14, 1e-2]")
+  cmd->add_option(
+         "--tolerance", o->tolerance,
+         "bound on eps, e_t (absolute), rebound angle (rad) and spins (relative to max(|spin|, v/R)), "
+         "in [1e-10, 1e-2)")
       ->capture_default_str();
   cmd->add_flag("--json", o->json, "print JSON instead of the table");
   cmd->add_option("--out", o->out, "also write the table as CSV to this file");

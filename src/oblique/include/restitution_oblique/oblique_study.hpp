@@ -14,6 +14,7 @@
 // The solver's interface (src/oblique/oblique_contact.hpp) stays where the other studies include it from;
 // this folder is the part of the module the Python module may include, and it re-exports that header by its
 // path.
+#include "../../oblique_accuracy.hpp"
 #include "../../oblique_contact.hpp"
 
 namespace restitution::oblique {
@@ -30,7 +31,7 @@ struct ObliqueInputs {
   std::optional<double> friction;              // μ, required
   std::string end = "delayed-recovery";
   std::string torque_arm = "lammps";        // lammps | radius | radius-minus-half-overlap
-  double tolerance = 1e-10;                 // CVODE's relative tolerance
+  double tolerance = 1e-10;                 // the accuracy contract's T (oblique_accuracy.hpp)
   double speed_m_s = 1.0;                   // impact speed: v cos θ normal, v sin θ tangential
   std::vector<double> angles_deg;           // from the normal, in [0, 90)
   std::vector<double> spins_rad_s = {0.0};  // initial spins of the first sphere
@@ -44,6 +45,7 @@ struct ObliqueSetup {
   NormalForce normal;
   TangentialForce tangential;
   ObliqueOptions options;
+  double tolerance = 1e-10;           // the contract's T; options.relative_tolerance is CVODE's rtol for it
   double effective_modulus_pa = 0.0;  // E*
   double poisson_ratio = 0.0;
   double speed_m_s = 1.0;
@@ -72,9 +74,15 @@ struct ObliqueImpact {
   ObliqueResult result;
   double psi_in = 0.0;   // ψ₁ of the incoming slip velocity
   double psi_out = 0.0;  // ψ₂ of the outgoing one, over the same incoming normal speed
+  // The accuracy contract (oblique_accuracy.hpp): CVODE's rtol of `result`, and whether the outputs could not
+  // be shown within the tolerance (near the stick/slip boundary), said in words in `conditioning`.
+  double relative_tolerance = 0.0;
+  bool ill_conditioned = false;
+  std::string conditioning;
 };
 
-// One impact of the setup at angle_deg from the normal, the first sphere spinning at spin_rad_s.
+// One impact of the setup at angle_deg from the normal, the first sphere spinning at spin_rad_s, solved
+// within the setup's tolerance (solve_oblique_within).
 ObliqueImpact solve_impact(const ObliqueSetup& setup, double angle_deg, double spin_rad_s);
 
 // Every (angle, spin) pair, angles outermost, in the order given.

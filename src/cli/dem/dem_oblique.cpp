@@ -1,0 +1,304 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "cli/dem/dem_oblique.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "restitution/errors.hpp"
+#include "restitution/units.hpp"
+
+namespace restitution::cli {
+namespace {
+
+using namespace restitution::oblique;
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+const std::vector<double> kDefaultAngles{5.0, 15.0, 30.0, 45.0, 60.0, 80.0};
+// The oblique contract's range (oblique_accuracy.hpp); dem's --tolerance goes down to 1e-11 and up to 1e-2.
+constexpr double kLoosestObliqueTolerance = 1e-3;
+
+std::vector<std::string> words_of(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> words;
+  for (std::string w; in >> w;) words.push_back(w);
+  return words;
+}
+
+// The words after `tangential` in a LAMMPS granular line: MODEL [k_t] x_gamma_t mu.
+struct TangentialWords {
+  std::size_t position = 0;  // of MODEL in the line's words
+  std::vector<std::string> words;
+};
+TangentialWords tangential_words(const std::vector<std::string>& words) {
+  const auto at = std::find(words.begin(), words.end(), "tangential");
+  if (at == words.end() || at + 1 == words.end())
+    throw std::logic_error("a LAMMPS granular line without tangential");
+  TangentialWords t;
+  t.position = static_cast<std::size_t>(at - words.begin()) + 1;
+  const std::size_t count = *(at + 1) == "linear_nohistory" ? 3 : 4;
+  if (t.position + count > words.size()) throw std::logic_error("a LAMMPS tangential model cut short");
+  t.words.assign(at + 1, at + 1 + static_cast<std::ptrdiff_t>(count));
+  return t;
+}
+
+// The tangential force the words give; `null_stiffness` is what `mindlin NULL` means where the line is read.
+TangentialForce tangential_of(const TangentialWords& t, double null_stiffness) {
+  TangentialForce f;
+  f.kind = tangential_from_name(t.words[0]);
+  const bool nohistory = f.kind == TangentialKind::linear_nohistory;
+  if (!nohistory) f.stiffness = t.words[1] == "NULL" ? null_stiffness : std::stod(t.words[1]);
+  f.damping_factor = std::stod(t.words[nohistory ? 1 : 2]);
+  f.friction = std::stod(t.words[nohistory ? 2 : 3]);
+  return f;
+}
+
+std::string joined(const std::vector<std::string>& words) {
+  std::string out;
+  for (const auto& w : words) out += (out.empty() ? "" : " ") + w;
+  return out;
+}
+
+std::vector<ContractedOblique> impacts_at(const DemOblique& r, const TangentialForce& tangential) {
+  std::vector<ContractedOblique> out;
+  for (const double angle : r.angles_deg) {
+    const ImpactVelocity v{r.speed_m_s * std::cos(angle * kDegree), r.speed_m_s * std::sin(angle * kDegree),
+                           0.0, 0.0};
+    out.push_back(solve_oblique_within(r.geometry, r.normal, tangential, v, r.tolerance, r.options));
+    // Never silently: an outcome the tolerance cannot be shown for is said on stderr as well.
+    if (out.back().ill_conditioned) {
+      fmt::print(stderr, "restitution dem: warning: oblique impact at {:g} deg, {}\n", angle,
+                 out.back().conditioning);
+    }
+  }
+  return out;
+}
+
+// Solves the impacts, the steps per contact and the inverse for a contact read from `line`.
+DemOblique complete(DemOblique r, const std::string& line, const TangentialWords& words,
+                    const DemObliqueOptions& o) {
+  r.angles_deg = o.angles_deg.empty() ? kDefaultAngles : o.angles_deg;
+  r.impacts = impacts_at(r, r.tangential);
+  r.et_accuracy = o.et_accuracy;
+  r.error_coefficient = lammps_et_error_coefficient(r.tangential.kind);
+  r.steps_per_contact = std::ceil(r.error_coefficient / r.et_accuracy);
+  double shortest = HUGE_VAL;
+  for (const auto& i : r.impacts) shortest = std::min(shortest, i.result.contact_time_s);
+  r.timestep_s = shortest / r.steps_per_contact;
+  if (o.target_et) {
+    TangentialInverseRequest request;
+    request.geometry = r.geometry;
+    request.normal = r.normal;
+    request.tangential = r.tangential;
+    const double angle = *o.reference_angle_deg * kDegree;
+    request.impact = {r.speed_m_s * std::cos(angle), r.speed_m_s * std::sin(angle), 0.0, 0.0};
+    request.target_et = *o.target_et;
+    request.tolerance = r.tolerance;
+    request.options = r.options;
+    r.inverse = tangential_parameter_for(request);
+    r.target_et = *o.target_et;
+    r.reference_angle_deg = *o.reference_angle_deg;
+    // The line with the parameter found in place of the one printed (LAMMPS's own parameter of the model,
+    // the first after its name: k_t, or linear_nohistory's x_gamma_t).
+    std::vector<std::string> changed = words_of(line);
+    const bool nohistory = r.tangential.kind == TangentialKind::linear_nohistory;
+    changed[words.position + 1] = fmt::format("{}", r.inverse->parameter);
+    r.inverse_lines = {joined(changed)};
+    TangentialForce found = r.tangential;
+    (nohistory ? found.damping_factor : found.stiffness) = r.inverse->parameter;
+    r.inverse_impacts = impacts_at(r, found);
+  }
+  return r;
+}
+
+void write_impacts(JsonWriter& json, const DemOblique& r, const std::vector<ContractedOblique>& impacts) {
+  json.begin_array();
+  for (std::size_t i = 0; i < impacts.size(); ++i) {
+    const ObliqueResult& x = impacts[i].result;
+    json.begin_object().field("angle_deg", r.angles_deg[i]).field("normal_restitution", x.normal_restitution);
+    json.key("tangential_restitution");
+    if (std::isfinite(x.tangential_restitution)) {
+      json.value(x.tangential_restitution);
+    } else {
+      json.null();  // no slip at impact: e_t is undefined
+    }
+    json.field("rebound_angle_deg", x.rebound_angle_rad / kDegree).field("spin_rad_s", x.spin_first_rad_s);
+    if (r.geometry.second) json.field("spin2_rad_s", x.spin_second_rad_s);
+    json.field("contact_time_s", x.contact_time_s).field("conditioning", impacts[i].conditioning);
+    json.end_object();
+  }
+  json.end_array();
+}
+
+void print_impacts(const DemOblique& r, const std::vector<ContractedOblique>& impacts, const char* c) {
+  fmt::print("{}   {:>9} {:>14} {:>14} {:>12} {:>14}\n", c, "angle_deg", "eps_n", "e_t", "rebound_deg",
+             "spin_rad_s");
+  for (std::size_t i = 0; i < impacts.size(); ++i) {
+    const ObliqueResult& x = impacts[i].result;
+    fmt::print("{}   {:9.4g} {:14.10f} {:14.10f} {:12.6f} {:14.8g}{}\n", c, r.angles_deg[i],
+               x.normal_restitution, x.tangential_restitution, x.rebound_angle_rad / kDegree,
+               x.spin_first_rad_s, impacts[i].ill_conditioned ? "  (" + impacts[i].conditioning + ")" : "");
+  }
+}
+
+}  // namespace
+
+void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o) {
+  command
+      .add_option("--angles", o.angles_deg,
+                  "with --friction (lammps): the impact angles from the normal in degrees, in [0, 90), "
+                  "at which to report what the lines give oblique impacts (default 5,15,30,45,60,80)")
+      ->delimiter(',');
+  command
+      .add_option("--et-accuracy", o.et_accuracy,
+                  "the accuracy of e_t LAMMPS's steps per contact are reported for, in (0, 0.1]")
+      ->capture_default_str();
+  command.add_option("--target-et", o.target_et,
+                     "with --reference-angle (lammps, --friction): find the tangential stiffness (mindlin's "
+                     "k_t) that gives this tangential restitution e_t at that angle, and print its line");
+  command.add_option("--reference-angle", o.reference_angle_deg,
+                     "the impact angle in degrees from the normal at which --target-et holds, in (0, 90)");
+}
+
+double lammps_et_error_coefficient(TangentialKind kind) {
+  // Measured 2026-11-27 with Debian's LAMMPS 20220106: the largest N |e_t(N) - e_t| at dt = t_c/N, the error
+  // falling tenfold with the step (first order). mindlin with x_gamma_t = 1, as dem prints it
+  // (tests/dem/oblique_dem_lines_lammps.cpp, pair and wall, six angles 5°-80°, the printed line and the
+  // --target-et line): 0.48 for steel (ε = 0.9, μ = 0.3), 0.60 for glass (E = 6e10 Pa, ν = 0.25, ε = 0.7,
+  // μ = 0.5), 0.14 for steel at ε = 0.98, μ = 0.1; taken as 1. The linear models with x_gamma_t = 0.5
+  // (tests/dem/oblique_lammps.cpp, nine angles, spin 0 and 300 rad/s): 0.064 and 0.033, taken as 0.1.
+  return kind == TangentialKind::mindlin ? 1.0 : 0.1;
+}
+
+bool wants_oblique(const DemObliqueOptions& o, dem::Code code, double friction) {
+  const bool asked = !o.angles_deg.empty() || o.target_et || o.reference_angle_deg;
+  if (code != dem::Code::lammps) {
+    if (asked) {
+      throw InvalidInput(
+          "--angles, --target-et and --reference-angle are for --code lammps (the other codes' tangential "
+          "models are not modelled yet)");
+    }
+    return false;
+  }
+  for (const double a : o.angles_deg) {
+    if (!(a >= 0.0 && a < 90.0)) {
+      throw InvalidInput(fmt::format("--angles must be in [0, 90) degrees from the normal, got {}", a));
+    }
+  }
+  if (!(o.et_accuracy > 0.0 && o.et_accuracy <= 0.1)) {
+    throw InvalidInput(fmt::format("--et-accuracy must be in (0, 0.1], got {}", o.et_accuracy));
+  }
+  if (o.target_et.has_value() != o.reference_angle_deg.has_value()) {
+    throw InvalidInput("give --target-et and --reference-angle together");
+  }
+  if (o.reference_angle_deg && !(*o.reference_angle_deg > 0.0 && *o.reference_angle_deg < 90.0)) {
+    throw InvalidInput(fmt::format("--reference-angle must be in (0, 90) degrees from the normal, got {}",
+                                   *o.reference_angle_deg));
+  }
+  if (o.target_et && !(friction > 0.0)) {
+    throw InvalidInput(
+        "--target-et needs --friction MU > 0: without friction e_t = -1 whatever the stiffness");
+  }
+  return asked || friction > 0.0;
+}
+
+DemOblique pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
+                        double speed_m_s, double tolerance) {
+  DemOblique r;
+  const std::string& line = deck.lines.at(1);
+  const TangentialWords words = tangential_words(words_of(line));
+  r.tangential_words = joined(words.words);
+  // pair granular: E* and η_n0 m* sqrt(R*) (dem/deck_lammps.cpp read_lammps); `mindlin NULL` is 8 G* with
+  // 1/G* = 2 · 2(2 - ν)(1 + ν)/E for two types of one material (pair_granular.cpp:1021-1023, 1790).
+  const dem::Coefficients normal = dem::code_entry(dem::Code::lammps).read(deck, pair);
+  r.normal = {LawKind::viscoelastic_hertz, normal.elastic, normal.damping};
+  const double e = deck.parameter("E");
+  const double nu = deck.parameter("nu");
+  r.tangential = tangential_of(words, 8.0 * e / (4.0 * (2.0 - nu) * (1.0 + nu)));
+  r.geometry.first = solid_sphere(pair.radius1_m, pair.mass1_kg);
+  r.geometry.second = solid_sphere(pair.radius2_m, pair.mass2_kg);
+  r.geometry.torque_arm = TorqueArm::radius_minus_half_overlap;  // pair_granular.cpp:663
+  r.options.end = deck.end;
+  r.speed_m_s = speed_m_s;
+  r.tolerance = std::clamp(tolerance, kSmallestObliqueTolerance, kLoosestObliqueTolerance);
+  return complete(r, line, words, o);
+}
+
+DemOblique wall_oblique(const dem::Deck& deck, const dem::Pair& contact, const DemObliqueOptions& o,
+                        double speed_m_s, double tolerance) {
+  DemOblique r;
+  const std::string& line = deck.lines.at(0);
+  const TangentialWords words = tangential_words(words_of(line));
+  r.tangential_words = joined(words.words);
+  // fix wall/gran granular reads hertz/material E ν as (4/3) E/(2(1 - ν)) (fix_wall_gran.cpp:160) and
+  // `mindlin NULL` as E (2 - ν)(1 + ν)/4 (line 248); the damping as the pair's, on the sphere's mass.
+  const double e = deck.parameter("E");
+  const double nu = deck.parameter("nu");
+  const double radius = contact.effective_radius_m;
+  r.normal = {LawKind::viscoelastic_hertz, hertz_stiffness(e / (2.0 * (1.0 - nu)), radius),
+              deck.parameter("eta_n0") * contact.effective_mass_kg * std::sqrt(radius)};
+  r.tangential = tangential_of(words, e * (2.0 - nu) * (1.0 + nu) / 4.0);
+  r.geometry.first = solid_sphere(radius, contact.effective_mass_kg);
+  r.geometry.torque_arm = TorqueArm::radius;  // fix_wall_gran.cpp:1512
+  r.options.end = deck.end;
+  r.speed_m_s = speed_m_s;
+  r.tolerance = std::clamp(tolerance, kSmallestObliqueTolerance, kLoosestObliqueTolerance);
+  return complete(r, line, words, o);
+}
+
+void print_oblique_text(const DemOblique& r, const char* c) {
+  fmt::print(
+      "{} oblique impacts these lines give at {:g} m/s (tangential {}; e_t = -s'/s at the contact point, "
+      "eps and e_t within {:g}):\n",
+      c, r.speed_m_s, r.tangential_words, r.tolerance);
+  print_impacts(r, r.impacts, c);
+  fmt::print(
+      "{} LAMMPS decides stick or slip once per step and is first order in dt: e_t within {:g} needs {:g} "
+      "steps per contact (|error| <= {:g}/N, a bound over Debian's LAMMPS measured; docs/dem.md), timestep "
+      "<= "
+      "{:.4g} s for the shortest contact here\n",
+      c, r.et_accuracy, r.steps_per_contact, r.error_coefficient, r.timestep_s);
+  if (!r.inverse) return;
+  fmt::print(
+      "{} for e_t = {:g} at {:g} deg: {} = {:.10g} (e_t there {:.10f}; reachable by this parameter: [{:.6g}, "
+      "{:.6g}]), the line:\n",
+      c, r.target_et, r.reference_angle_deg, r.inverse->parameter_name, r.inverse->parameter,
+      r.inverse->check.result.tangential_restitution, r.inverse->lowest_reachable_et,
+      r.inverse->highest_reachable_et);
+  for (const auto& line : r.inverse_lines) fmt::print("{}\n", line);
+  fmt::print("{} which gives:\n", c);
+  print_impacts(r, r.inverse_impacts, c);
+}
+
+void write_oblique_json(JsonWriter& json, const DemOblique& r) {
+  json.key("oblique").begin_object();
+  json.field("tangential", r.tangential_words).field("tangential_model", tangential_name(r.tangential.kind));
+  json.field("tangential_stiffness", r.tangential.stiffness)
+      .field("tangential_damping_factor", r.tangential.damping_factor);
+  json.field("speed_m_s", r.speed_m_s).field("tolerance", r.tolerance);
+  json.key("impacts");
+  write_impacts(json, r, r.impacts);
+  json.key("lammps_steps").begin_object();
+  json.field("et_accuracy", r.et_accuracy).field("error_coefficient", r.error_coefficient);
+  json.field("steps_per_contact", r.steps_per_contact).field("timestep_s", r.timestep_s).end_object();
+  if (r.inverse) {
+    json.key("inverse").begin_object();
+    json.field("target_et", r.target_et).field("reference_angle_deg", r.reference_angle_deg);
+    json.field("parameter", r.inverse->parameter_name).field("value", r.inverse->parameter);
+    json.field("tangential_restitution", r.inverse->check.result.tangential_restitution);
+    json.key("reachable_et").begin_array().value(r.inverse->lowest_reachable_et);
+    json.value(r.inverse->highest_reachable_et).end_array();
+    json.key("lines").begin_array();
+    for (const auto& line : r.inverse_lines) json.value(line);
+    json.end_array();
+    json.key("impacts");
+    write_impacts(json, r, r.inverse_impacts);
+    json.end_object();
+  }
+  json.end_object();
+}
+
+}  // namespace restitution::cli

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// `restitution dem --code lammps --friction MU`: what the printed lines give oblique impacts (docs/dem.md,
+// "Oblique impacts"): the lines' own normal and tangential numbers read as LAMMPS reads them (pair granular,
+// or fix wall/gran granular with --wall), solved by src/oblique/ under the accuracy contract at the listed
+// impact angles; how many steps per contact LAMMPS needs for a requested accuracy of e_t; and with
+// --target-et E
+// --reference-angle DEG the mindlin stiffness that gives e_t = E there, with the line that carries it.
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/common/json_writer.hpp"
+#include "dem/deck.hpp"
+#include "oblique/oblique_accuracy.hpp"
+#include "oblique/oblique_inverse.hpp"
+
+namespace restitution::cli {
+
+struct DemObliqueOptions {
+  std::vector<double> angles_deg;   // --angles; empty: kDefaultAngles when there is friction
+  double et_accuracy = 1e-4;        // --et-accuracy: the e_t accuracy LAMMPS's steps per contact are for
+  std::optional<double> target_et;  // --target-et
+  std::optional<double> reference_angle_deg;  // --reference-angle
+};
+
+void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o);
+
+// LAMMPS's integration error of e_t is first order in the step: |Δe_t| <= C/N at N steps per contact, C
+// measured with Debian's LAMMPS on the lines dem prints (dem_oblique.cpp says where and what).
+double lammps_et_error_coefficient(oblique::TangentialKind kind);
+
+// The lines' oblique impacts at one speed (the reference speed of the lines).
+struct DemOblique {
+  std::string tangential_words;  // as the line has them, e.g. "mindlin NULL 1 0.3"
+  oblique::ObliqueGeometry geometry;
+  oblique::NormalForce normal;
+  oblique::TangentialForce tangential;
+  oblique::ObliqueOptions options;  // the end of the lines
+  double speed_m_s = 0.0;
+  double tolerance = 0.0;
+  std::vector<double> angles_deg;
+  std::vector<oblique::ContractedOblique> impacts;
+  // Steps per contact for e_t within et_accuracy, and the step that gives it for the shortest contact.
+  double et_accuracy = 0.0;
+  double error_coefficient = 0.0;
+  double steps_per_contact = 0.0;
+  double timestep_s = 0.0;
+  // --target-et: the parameter found, the line carrying it, and the impacts of the new line.
+  std::optional<oblique::TangentialInverseResult> inverse;
+  double target_et = 0.0;
+  double reference_angle_deg = 0.0;
+  std::vector<std::string> inverse_lines;
+  std::vector<oblique::ContractedOblique> inverse_impacts;
+};
+
+// Whether the options or the friction ask for oblique outputs; InvalidInput naming the options when the code
+// is not LAMMPS or they are out of range.
+bool wants_oblique(const DemObliqueOptions& o, dem::Code code, double friction);
+
+// The pair's lines (pair granular: the pair's 8 G* for `mindlin NULL`, torque arm R - δ/2, the line of
+// centres turning) and the wall's (fix wall/gran granular: its E, its NULL, torque arm R).
+DemOblique pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
+                        double speed_m_s, double tolerance);
+DemOblique wall_oblique(const dem::Deck& deck, const dem::Pair& contact, const DemObliqueOptions& o,
+                        double speed_m_s, double tolerance);
+
+void print_oblique_text(const DemOblique& r, const char* comment);
+// "oblique": {...}
+void write_oblique_json(JsonWriter& json, const DemOblique& r);
+
+}  // namespace restitution::cli

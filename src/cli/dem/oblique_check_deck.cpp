@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "cli/dem/oblique_check_deck.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace restitution::cli {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+// One pass: a fresh system with one collision per angle at dt, e_t of each into variable `name`{i}. A pair:
+// atom 2i+1 at rest, 2i+2 above it moving down onto it; a wall: atom i+1 touching the plane z = 0. LAMMPS's
+// slip is vx - R omega_y per sphere with the normal +z towards the mover.
+std::string pass(const DemOblique& r, const std::vector<std::string>& prerequisites,
+                 const std::vector<std::string>& lines, double dt, long steps, const char* name) {
+  const bool pair = r.geometry.second.has_value();
+  const double r1 = r.geometry.first.radius_m;
+  const double r2 = pair ? r.geometry.second->radius_m : 0.0;
+  const double spacing = 10.0 * (r1 + std::max(r1, r2));
+  const std::size_t n = r.angles_deg.size();
+  std::string d = "clear\n";
+  for (const auto& line : prerequisites) d += line + "\n";
+  d += "atom_modify map array\nboundary f f f\n";
+  d += fmt::format("region rc_oblique_box block {} {} {} {} {} {} units box\ncreate_box 1 rc_oblique_box\n",
+                   -spacing, spacing * static_cast<double>(n), -spacing, spacing, -spacing, spacing);
+  const std::size_t per_angle = pair ? 2 : 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = spacing * static_cast<double>(i);
+    if (pair) d += fmt::format("create_atoms 1 single {} 0 0 units box\n", x);
+    d += fmt::format("create_atoms 1 single {} 0 {} units box\n", x, pair ? r1 + r2 : r1);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t mover = per_angle * (i + 1);
+    // Diameter before mass: LAMMPS' `set diameter` recomputes the mass from the density.
+    if (pair) {
+      d += fmt::format("set atom {} diameter {}\nset atom {} mass {}\n", mover - 1, 2.0 * r2, mover - 1,
+                       r.geometry.second->mass_kg);
+    }
+    d += fmt::format("set atom {} diameter {}\nset atom {} mass {}\n", mover, 2.0 * r1, mover,
+                     r.geometry.first.mass_kg);
+    const double a = r.angles_deg[i] * kDegree;
+    d += fmt::format("set atom {} vx {} vz {}\n", mover, r.speed_m_s * std::sin(a),
+                     -r.speed_m_s * std::cos(a));
+  }
+  for (const auto& line : lines) d += line + "\n";
+  if (pair) d += fmt::format("neighbor {} bin\nneigh_modify every 1 delay 0 check no\n", 0.1 * r1);
+  // Spins are no atom vector of variable formulas: a per-atom compute, evaluated by fix ave/time on the last
+  // step, whose value can be read after the run.
+  d += "compute rc_oblique_omega all property/atom omegay\n";
+  std::string values;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t mover = per_angle * (i + 1);
+    const double slip0 = r.speed_m_s * std::sin(r.angles_deg[i] * kDegree);
+    const std::string rest =
+        pair ? fmt::format("-vx[{}]-{}*c_rc_oblique_omega[{}]", mover - 1, r2, mover - 1) : "";
+    d += fmt::format("variable rc_oblique_et{0} equal -(vx[{1}]-{2}*c_rc_oblique_omega[{1}]{3})/{4}\n", i,
+                     mover, r1, rest, slip0);
+    values += fmt::format(" v_rc_oblique_et{}", i);
+  }
+  d += fmt::format("fix rc_oblique_nve all nve/sphere\nfix rc_oblique_hold all ave/time {0} 1 {0}{1}\n",
+                   steps, values);
+  d += fmt::format("timestep {}\nthermo {}\nrun {}\n", dt, steps, steps);
+  for (std::size_t i = 0; i < n; ++i) {
+    d += fmt::format("variable rc_oblique_got{0} equal f_rc_oblique_hold[{1}]\n", i, i + 1);
+    d += fmt::format("variable {}{} equal ${{rc_oblique_got{}}}\n", name, i, i);
+  }
+  return d;
+}
+
+}  // namespace
+
+std::string oblique_check_section(const DemOblique& r, const std::vector<std::string>& prerequisites,
+                                  const std::vector<std::string>& lines) {
+  double shortest = HUGE_VAL;
+  double longest = 0.0;
+  for (const auto& i : r.impacts) {
+    shortest = std::min(shortest, i.result.contact_time_s);
+    longest = std::max(longest, i.result.contact_time_s);
+  }
+  const double dt = shortest / kObliqueCheckSteps;
+  const auto steps = static_cast<long>(std::ceil(1.1 * longest / dt));
+  const char* contact = r.geometry.second ? "pair" : "wall";
+  std::string d = fmt::format(
+      "\n# oblique impacts ({}): the lines again, at each angle restitution dem lists, at {} m/s; "
+      "dt = t_c/{} and t_c/{}, t_c = {} s the shortest contact\n",
+      contact, r.speed_m_s, kObliqueCheckSteps, 10 * kObliqueCheckSteps, shortest);
+  d += pass(r, prerequisites, lines, dt, steps, "rc_oblique_10dt");
+  d += pass(r, prerequisites, lines, dt / 10.0, 10 * steps, "rc_oblique_dt");
+  d += "\n# the oblique check lines\n";
+  for (std::size_t i = 0; i < r.angles_deg.size(); ++i) {
+    const double et = r.impacts[i].result.tangential_restitution;
+    d += fmt::format("variable rc_oblique_code{0} equal (10*v_rc_oblique_dt{0}-v_rc_oblique_10dt{0})/9\n", i);
+    d += fmt::format("variable rc_oblique_diff{0} equal v_rc_oblique_code{0}-({1})\n", i, et);
+    d += fmt::format(
+        "print \"{1} code=lammps contact={2} angle={3} et_10dt=${{rc_oblique_10dt{0}}} "
+        "et_dt=${{rc_oblique_dt{0}}} et_code=${{rc_oblique_code{0}}} et_restitution={4} "
+        "diff=${{rc_oblique_diff{0}}}\"\n",
+        i, kObliqueCheckTag, contact, r.angles_deg[i], et);
+  }
+  return d;
+}
+
+}  // namespace restitution::cli

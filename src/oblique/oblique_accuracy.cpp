@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "oblique/oblique_accuracy.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "restitution/errors.hpp"
+
+namespace restitution::oblique {
+namespace {
+
+// The spin a slip of the impact speed gives a sphere of this radius: the floor of the spins' relative bound.
+double spin_scale(double spin_rad_s, double speed_m_s, double radius_m) {
+  return std::max(std::abs(spin_rad_s), speed_m_s / radius_m);
+}
+
+// The largest difference of the contract's outputs between a and b, each over its bound T·scale.
+double contract_ratio(const ObliqueResult& a, const ObliqueResult& b, const ObliqueGeometry& geometry,
+                      const ImpactVelocity& impact, double tolerance) {
+  const double speed = std::hypot(impact.normal_m_s, impact.tangential_m_s);
+  double ratio = std::abs(a.normal_restitution - b.normal_restitution);
+  // e_t is NaN for both without slip at impact: nothing to compare.
+  if (std::isfinite(a.tangential_restitution) || std::isfinite(b.tangential_restitution)) {
+    ratio = std::max(ratio, std::abs(a.tangential_restitution - b.tangential_restitution));
+  }
+  ratio = std::max(ratio, std::abs(a.rebound_angle_rad - b.rebound_angle_rad));
+  ratio = std::max(ratio, std::abs(a.spin_first_rad_s - b.spin_first_rad_s) /
+                              spin_scale(a.spin_first_rad_s, speed, geometry.first.radius_m));
+  if (geometry.second) {
+    ratio = std::max(ratio, std::abs(a.spin_second_rad_s - b.spin_second_rad_s) /
+                                spin_scale(a.spin_second_rad_s, speed, geometry.second->radius_m));
+  }
+  return std::isfinite(ratio) ? ratio / tolerance : HUGE_VAL;
+}
+
+std::string sequence_of(const ObliqueResult& r) {
+  std::string out;
+  for (const ModeSwitch& s : r.switches)
+    out += fmt::format("{}{}", out.empty() ? "" : ",", mode_name(s.mode));
+  return out;
+}
+
+}  // namespace
+
+void require_oblique_tolerance(double tolerance, const char* name) {
+  if (!(tolerance >= kSmallestObliqueTolerance && tolerance < kLargestObliqueTolerance)) {
+    throw InvalidInput(fmt::format(
+        "{} must be in [{:g}, {:g}) for the oblique outputs, got {:g}: below, the independent reference "
+        "cannot check them; from {:g} on, the short stick phases are not resolved",
+        name, kSmallestObliqueTolerance, kLargestObliqueTolerance, tolerance, kLargestObliqueTolerance));
+  }
+}
+
+ContractedOblique solve_oblique_within(const ObliqueGeometry& geometry, const NormalForce& normal,
+                                       const TangentialForce& tangential, const ImpactVelocity& impact,
+                                       double tolerance, const ObliqueOptions& options) {
+  require_oblique_tolerance(tolerance, "the oblique tolerance");
+  ContractedOblique out;
+  out.tolerance = tolerance;
+  out.relative_tolerance = tolerance * kObliqueRtolFactor;
+  ObliqueOptions fine = options;
+  fine.relative_tolerance = out.relative_tolerance;
+  ObliqueOptions check = options;
+  check.relative_tolerance = 10.0 * out.relative_tolerance;
+  out.result = solve_oblique(geometry, normal, tangential, impact, fine);
+  const ObliqueResult coarse = solve_oblique(geometry, normal, tangential, impact, check);
+  out.check_ratio = contract_ratio(out.result, coarse, geometry, impact, tolerance);
+  const std::string modes = sequence_of(out.result);
+  const std::string coarse_modes = sequence_of(coarse);
+  if (modes != coarse_modes) {
+    out.ill_conditioned = true;
+    out.conditioning = fmt::format(
+        "ill-conditioned: near the stick/slip boundary, the solves at rtol {:g} and {:g} find different "
+        "modes ({} against {})",
+        out.relative_tolerance, check.relative_tolerance, modes, coarse_modes);
+  } else if (out.result.closest_switch_approach < kNearSwitch) {
+    out.ill_conditioned = true;
+    out.conditioning = fmt::format(
+        "ill-conditioned: near the stick/slip boundary, a switch function came within {:.2g} of 0 (relative "
+        "to "
+        "its terms) without crossing it: a slightly different impact switches there",
+        out.result.closest_switch_approach);
+  } else if (out.check_ratio > 1.0) {
+    out.ill_conditioned = true;
+    out.conditioning = fmt::format(
+        "ill-conditioned: the outputs at rtol {:g} and {:g} differ by {:.3g} times the tolerance {:g}",
+        out.relative_tolerance, check.relative_tolerance, out.check_ratio, tolerance);
+  } else {
+    out.conditioning = "well-conditioned";
+  }
+  return out;
+}
+
+}  // namespace restitution::oblique
