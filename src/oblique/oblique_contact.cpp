@@ -109,7 +109,7 @@ NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& n
   // F_t = k_t ξ: in units of m* v/T per v T of displacement, κ = k_t T²/m*; mindlin's k_t sqrt(R* δ) adds
   // sqrt(R* v T) to κ_m.
   model.stiffness = tangential.stiffness * time_s * time_s / mass;
-  if (tangential.kind == TangentialKind::mindlin) {
+  if (tangential.kind == TangentialKind::mindlin || tangential.kind == TangentialKind::liggghts_history) {
     model.stiffness *= std::sqrt(effective_radius_m(geometry) * length_m);
   }
   const auto rotation = [&](const Body& body, std::size_t i) {
@@ -120,6 +120,10 @@ NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& n
   };
   rotation(geometry.first, 0);
   if (geometry.second) rotation(*geometry.second, 1);
+  if (geometry.contact_point_arm == TorqueArm::radius_minus_half_overlap) {
+    model.contact_arm_slope[0] = 0.5 * length_m / geometry.first.radius_m;
+    if (geometry.second) model.contact_arm_slope[1] = 0.5 * length_m / geometry.second->radius_m;
+  }
   model.cap_of_signed_force = end == CollisionEnd::delayed_recovery;
   if (geometry.second && !geometry.fixed_normal) {
     model.centre_distance = (geometry.first.radius_m + geometry.second->radius_m) / length_m;
@@ -157,7 +161,7 @@ void validate(const ObliqueGeometry& geometry, const NormalForce& normal, const 
 // both as τ -> 0 decide: a damped contact sticks where γ_t |s| <= μ, an undamped Hertz contact slides
 // whenever s != 0, its cap growing as τ^{3/2} against the spring's τ).
 void initial_mode(const NaturalModel& model, State& y, ContactMode& mode, double& sign) {
-  const double trial = model.trial_force(y);
+  const double trial = model.cap_test_force(y);
   mode = std::abs(trial) <= model.cap(y[detail::kOverlap], y[detail::kOverlapRate]) ? ContactMode::stick
                                                                                     : ContactMode::slip;
   sign = trial < 0.0 ? -1.0 : 1.0;
@@ -190,22 +194,26 @@ const char* tangential_name(TangentialKind kind) {
       return "linear_history";
     case TangentialKind::mindlin:
       return "mindlin";
+    case TangentialKind::liggghts_history:
+      return "liggghts_history";
   }
   return "?";
 }
 
 const std::vector<std::string>& tangential_names() {
-  static const std::vector<std::string> names{"linear_nohistory", "linear_history", "mindlin"};
+  static const std::vector<std::string> names{"linear_nohistory", "linear_history", "mindlin",
+                                              "liggghts_history"};
   return names;
 }
 
 TangentialKind tangential_from_name(const std::string& name) {
-  for (const TangentialKind kind :
-       {TangentialKind::linear_nohistory, TangentialKind::linear_history, TangentialKind::mindlin}) {
+  for (const TangentialKind kind : {TangentialKind::linear_nohistory, TangentialKind::linear_history,
+                                    TangentialKind::mindlin, TangentialKind::liggghts_history}) {
     if (name == tangential_name(kind)) return kind;
   }
   throw InvalidInput(fmt::format(
-      "unknown tangential model '{}' (choose linear_nohistory, linear_history or mindlin)", name));
+      "unknown tangential model '{}' (choose linear_nohistory, linear_history, mindlin or liggghts_history)",
+      name));
 }
 
 const char* mode_name(ContactMode mode) {
@@ -327,7 +335,7 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
     // A switch: into slip in the direction of the trial force, or into stick from the capped force.
     if (data.mode == ContactMode::stick) {
       data.mode = ContactMode::slip;
-      data.sign = model.trial_force(y) < 0.0 ? -1.0 : 1.0;
+      data.sign = model.cap_test_force(y) < 0.0 ? -1.0 : 1.0;
     } else {
       data.mode = ContactMode::stick;
       if (model.has_history()) y[detail::kDisplacement] = model.displacement_at_cap(y, data.sign);

@@ -74,10 +74,14 @@ Setup setup_of(const ObliqueCommandOptions& o) {
   if (!o.wall) s.geometry.second = solid_sphere(m.radius2_m, mass(m.radius2_m, m.mass2_kg));
   s.geometry.fixed_normal = o.fixed_normal;
   // "lammps": what LAMMPS does, R - δ/2 for a pair (pair_granular.cpp:663), R for a wall
-  // (fix_wall_gran.cpp:1512).
+  // (fix_wall_gran.cpp:1512); LIGGGHTS's model takes its own arm R - δ/2 for both, in the torque and the
+  // contact-point velocity (surface_model_default.h:174-188).
+  const bool liggghts = o.tangential == "liggghts_history";
   const bool half_overlap =
-      o.torque_arm == "radius-minus-half-overlap" || (o.torque_arm == "lammps" && !o.wall);
+      o.torque_arm == "radius-minus-half-overlap" || (o.torque_arm == "lammps" && (!o.wall || liggghts));
   s.geometry.torque_arm = half_overlap ? TorqueArm::radius_minus_half_overlap : TorqueArm::radius;
+  if (liggghts && o.torque_arm == "lammps")
+    s.geometry.contact_point_arm = TorqueArm::radius_minus_half_overlap;
   s.effective_modulus_pa = effective_modulus_pa(m.young_modulus_pa, m.poisson_ratio);
   // F = ρ δ^{3/2} + (3/2) A ρ sqrt(δ) δ', ρ = (4/3) E* sqrt(R*): a wall of the sphere's material has the same
   // E*.
@@ -88,7 +92,8 @@ Setup setup_of(const ObliqueCommandOptions& o) {
   s.tangential.friction = *o.friction;
   if (o.tangential_stiffness) {
     s.tangential.stiffness = *o.tangential_stiffness;
-  } else if (s.tangential.kind == TangentialKind::mindlin) {
+  } else if (s.tangential.kind == TangentialKind::mindlin ||
+             s.tangential.kind == TangentialKind::liggghts_history) {
     // LAMMPS's `mindlin NULL`: 8 G* with 1/G* = 2 · 2(2 - ν)(1 + ν)/E for two spheres of one material
     // (pair_granular.cpp:1021-1023, mix_stiffnessG at line 1790).
     const double nu = m.poisson_ratio;
@@ -171,10 +176,15 @@ void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
       "# oblique impact, {}: viscoelastic Hertz k = {:.10g} N/m^1.5, gamma = {:.10g} N s/m^1.5, {} end\n",
       o.wall ? "sphere on a wall" : "two spheres", s.normal.stiffness, s.normal.damping, o.end);
   fmt::print(
-      "# tangential {} (LAMMPS pair granular): k_t = {:.10g} {}, damping {:.6g}, friction {:.6g}; "
+      "# tangential {} ({}): k_t = {:.10g} {}, damping {:.6g}, friction {:.6g}; "
       "speed {:g} m/s, initial spin {:g} rad/s\n",
-      tangential_name(s.tangential.kind), s.tangential.stiffness,
-      s.tangential.kind == TangentialKind::mindlin ? "N/m^2 (times sqrt(R* delta))" : "N/m",
+      tangential_name(s.tangential.kind),
+      s.tangential.kind == TangentialKind::liggghts_history ? "LIGGGHTS tangential history"
+                                                            : "LAMMPS pair granular",
+      s.tangential.stiffness,
+      s.tangential.kind == TangentialKind::mindlin || s.tangential.kind == TangentialKind::liggghts_history
+          ? "N/m^2 (times sqrt(R* delta))"
+          : "N/m",
       s.tangential.damping_factor, s.tangential.friction, o.speed, o.spin);
   fmt::print("{:>9} {:>14} {:>14} {:>12} {:>14} {:>12} {:>12} {:>10} {:>10}  modes\n", "angle_deg", "eps_n",
              "e_t", "rebound_deg", "spin_rad_s", "impulse", "contact_s", "stick", "slip");
@@ -230,11 +240,12 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
       "two spheres: keep the normal of the impact (the textbook model) instead of letting the line of "
       "centres turn as in LAMMPS");
   cmd->add_option("--tangential", o->tangential,
-                  "tangential model: linear_nohistory, linear_history or mindlin")
+                  "tangential model: linear_nohistory, linear_history, mindlin (LAMMPS) or liggghts_history")
       ->check(CLI::IsMember(tangential_names()))
       ->capture_default_str();
-  cmd->add_option("--tangential-stiffness", o->tangential_stiffness,
-                  "k_t: N/m for linear_history, N/m^2 for mindlin (default there: LAMMPS's NULL, 8 G*)");
+  cmd->add_option(
+      "--tangential-stiffness", o->tangential_stiffness,
+      "k_t: N/m for linear_history, N/m^2 for mindlin and liggghts_history (default there: 8 G*)");
   cmd->add_option("--tangential-damping", o->tangential_damping,
                   "LAMMPS's tangential damping factor (times the normal damping coefficient)")
       ->capture_default_str();
@@ -249,8 +260,10 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
                   "end of the collision: naive (no clamp) or delayed-recovery (force clamped)")
       ->check(CLI::IsMember(end_names()))
       ->capture_default_str();
-  cmd->add_option("--torque-arm", o->torque_arm,
-                  "lammps (R - delta/2 for a pair, R for a wall), radius or radius-minus-half-overlap")
+  cmd->add_option(
+         "--torque-arm", o->torque_arm,
+         "lammps (R - delta/2 for a pair, R for a wall; liggghts_history: R - delta/2 in the torque and the "
+         "contact-point velocity), radius or radius-minus-half-overlap")
       ->check(CLI::IsMember({"lammps", "radius", "radius-minus-half-overlap"}))
       ->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance, "CVODE's relative tolerance, in [1e-14, 1e-2]")
