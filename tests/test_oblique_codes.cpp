@@ -3,7 +3,9 @@
 // models they reduce to: LIGGGHTS's `tangential history` (liggghts_history) slides throughout by the
 // gross-sliding closed form where it slides from the start; without tangential damping and with LAMMPS's
 // arms it is LAMMPS's mindlin; with damping its stick force may exceed the cap, so |J_t/J_n| > μ at grazing
-// (tangential_model_history.h:214-217); a frictionless contact keeps u and the spins.
+// (tangential_model_history.h:214-217); a frictionless contact keeps u and the spins. YADE's ViscElPhys
+// (yade_viscel) is the same rule with a constant ks over the linear dash-pot: the same closed forms, and
+// LAMMPS's linear_history where it has no shear damping.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -150,9 +152,66 @@ TEST(LiggghtsHistory, ContactPointArmMovesSpinningImpactsByOrderOverlapOverRadiu
   EXPECT_LT(difference, 1e-2 * std::abs(lammps_arms.spin_first_rad_s));
 }
 
+// YADE's ViscElPhys over the linear dash-pot: elastic (cn = 0), the cap μ k δ and the spring's force ks s τ
+// both grow as τ, so ks|s| > μ k slides from the start and, grazing, throughout.
+TEST(YadeViscel, GrossSlidingChangesSlipByTheClosedForm) {
+  const double mu = 0.2;
+  const NormalForce elastic{LawKind::linear_dashpot, 1e7, 0.0};
+  // rtol 1e-12 leaves the wall's slip change 1.3e-10 off here; 1e-13 keeps it within 1e-10.
+  ObliqueOptions options = tight(CollisionEnd::naive);
+  options.relative_tolerance = 1e-13;
+  for (const bool pair : {false, true}) {
+    const ObliqueGeometry g = pair ? fixed_pair() : wall();
+    ImpactVelocity v = at_angle(75.0, pair ? -200.0 : 100.0);
+    const ObliqueResult r =
+        solve_oblique(g, elastic, {TangentialKind::yade_viscel, 1e8, 0.0, mu}, v, options);
+    const std::string label = pair ? "pair" : "wall";
+    ASSERT_EQ(r.switches.size(), 1U) << label;
+    EXPECT_EQ(r.switches[0].mode, ContactMode::slip) << label;
+    const double expected = -mu * (1.0 + r.normal_restitution) * v.normal_m_s * rotation_factor(g);
+    EXPECT_NEAR(r.slip_velocity_m_s - initial_slip(v, g), expected, 1e-10 * std::abs(expected)) << label;
+  }
+}
+
+// Without cs and with LAMMPS's arms the ViscElPhys rule is LAMMPS's linear_history without damping.
+TEST(YadeViscel, WithoutShearDampingAndWithLammpsArmsIsLinearHistory) {
+  const NormalForce dashpot{LawKind::linear_dashpot, 1e7, 1.2};
+  for (const double angle : {1.0, 10.0, 30.0, 60.0, 85.0}) {
+    const auto solve = [&](TangentialKind kind) {
+      return solve_oblique(wall(), dashpot, {kind, 2e6, 0.0, 0.3}, at_angle(angle, 300.0),
+                           tight(CollisionEnd::delayed_recovery));
+    };
+    const ObliqueResult yade = solve(TangentialKind::yade_viscel);
+    const ObliqueResult lammps = solve(TangentialKind::linear_history);
+    EXPECT_NEAR(yade.tangential_restitution, lammps.tangential_restitution, 1e-12) << angle;
+    EXPECT_EQ(yade.switches.size(), lammps.switches.size()) << angle;
+  }
+}
+
+// YADE's wall arm R - δ (the centre projected onto the wall) against R - δ/2: a spinning impact moves by
+// O(δ/R), and a frictionless one not at all.
+TEST(YadeViscel, WallArmMovesSpinningImpactsAndLeavesFrictionlessOnesAlone) {
+  const NormalForce dashpot{LawKind::linear_dashpot, 1e7, 1.2};
+  ObliqueGeometry half = wall();
+  half.torque_arm = half.contact_point_arm = TorqueArm::radius_minus_half_overlap;
+  ObliqueGeometry whole = wall();
+  whole.torque_arm = whole.contact_point_arm = TorqueArm::radius_minus_overlap;
+  const ImpactVelocity v = at_angle(20.0, 300.0);
+  const TangentialForce t{TangentialKind::yade_viscel, 2e6, 0.5, 0.3};
+  const ObliqueResult a = solve_oblique(half, dashpot, t, v, tight(CollisionEnd::delayed_recovery));
+  const ObliqueResult b = solve_oblique(whole, dashpot, t, v, tight(CollisionEnd::delayed_recovery));
+  EXPECT_GT(std::abs(a.spin_first_rad_s - b.spin_first_rad_s), 1e-6 * std::abs(a.spin_first_rad_s));
+  EXPECT_LT(std::abs(a.spin_first_rad_s - b.spin_first_rad_s), 1e-2 * std::abs(a.spin_first_rad_s));
+  const ObliqueResult frictionless = solve_oblique(
+      whole, dashpot, {TangentialKind::yade_viscel, 2e6, 0.5, 0.0}, v, tight(CollisionEnd::delayed_recovery));
+  EXPECT_DOUBLE_EQ(frictionless.tangential_velocity_m_s, v.tangential_m_s);
+  EXPECT_DOUBLE_EQ(frictionless.spin_first_rad_s, v.spin_first_rad_s);
+}
+
 TEST(LiggghtsHistory, NamedAndParsed) {
   EXPECT_STREQ(tangential_name(TangentialKind::liggghts_history), "liggghts_history");
   EXPECT_EQ(tangential_from_name("liggghts_history"), TangentialKind::liggghts_history);
+  EXPECT_EQ(tangential_from_name("yade_viscel"), TangentialKind::yade_viscel);
 }
 
 }  // namespace

@@ -112,18 +112,19 @@ NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& n
   if (tangential.kind == TangentialKind::mindlin || tangential.kind == TangentialKind::liggghts_history) {
     model.stiffness *= std::sqrt(effective_radius_m(geometry) * length_m);
   }
+  // The arm R - f δ: f = 0, 1/2 or 1.
+  const auto overlap_fraction = [](TorqueArm arm) {
+    return arm == TorqueArm::radius ? 0.0 : arm == TorqueArm::radius_minus_half_overlap ? 0.5 : 1.0;
+  };
+  const double torque_fraction = overlap_fraction(geometry.torque_arm);
+  const double contact_fraction = overlap_fraction(geometry.contact_point_arm);
   const auto rotation = [&](const Body& body, std::size_t i) {
     model.rotation_base[i] = mass * body.radius_m * body.radius_m / body.inertia_kg_m2;
-    if (geometry.torque_arm == TorqueArm::radius_minus_half_overlap) {
-      model.rotation_slope[i] = mass * body.radius_m * 0.5 * length_m / body.inertia_kg_m2;
-    }
+    model.rotation_slope[i] = mass * body.radius_m * torque_fraction * length_m / body.inertia_kg_m2;
+    model.contact_arm_slope[i] = contact_fraction * length_m / body.radius_m;
   };
   rotation(geometry.first, 0);
   if (geometry.second) rotation(*geometry.second, 1);
-  if (geometry.contact_point_arm == TorqueArm::radius_minus_half_overlap) {
-    model.contact_arm_slope[0] = 0.5 * length_m / geometry.first.radius_m;
-    if (geometry.second) model.contact_arm_slope[1] = 0.5 * length_m / geometry.second->radius_m;
-  }
   model.cap_of_signed_force = end == CollisionEnd::delayed_recovery;
   if (geometry.second && !geometry.fixed_normal) {
     model.centre_distance = (geometry.first.radius_m + geometry.second->radius_m) / length_m;
@@ -196,23 +197,27 @@ const char* tangential_name(TangentialKind kind) {
       return "mindlin";
     case TangentialKind::liggghts_history:
       return "liggghts_history";
+    case TangentialKind::yade_viscel:
+      return "yade_viscel";
   }
   return "?";
 }
 
 const std::vector<std::string>& tangential_names() {
   static const std::vector<std::string> names{"linear_nohistory", "linear_history", "mindlin",
-                                              "liggghts_history"};
+                                              "liggghts_history", "yade_viscel"};
   return names;
 }
 
 TangentialKind tangential_from_name(const std::string& name) {
-  for (const TangentialKind kind : {TangentialKind::linear_nohistory, TangentialKind::linear_history,
-                                    TangentialKind::mindlin, TangentialKind::liggghts_history}) {
+  for (const TangentialKind kind :
+       {TangentialKind::linear_nohistory, TangentialKind::linear_history, TangentialKind::mindlin,
+        TangentialKind::liggghts_history, TangentialKind::yade_viscel}) {
     if (name == tangential_name(kind)) return kind;
   }
   throw InvalidInput(fmt::format(
-      "unknown tangential model '{}' (choose linear_nohistory, linear_history, mindlin or liggghts_history)",
+      "unknown tangential model '{}' (choose linear_nohistory, linear_history, mindlin, liggghts_history or "
+      "yade_viscel)",
       name));
 }
 

@@ -43,9 +43,19 @@ namespace restitution::oblique {
 //                    ξ rescaled to the cap (191-199); below it F_t = -kt ξ - γ_t η s (214-217), which may
 //                    exceed the cap. Torque arm and contact-point arm R - δ/2 for a pair and a wall
 //                    (surface_model_default.h:174-188).
-enum class TangentialKind { linear_nohistory, linear_history, mindlin, liggghts_history };
+//
+// YADE 2023.02a's ViscElPhys shear spring (pkg/dem/ViscoelasticPM.cpp, computeForceTorqueViscEl, under
+// Law2_ScGeom_ViscElPhys_Basic), whose normal force is the linear dash-pot kn δ + cn δ' clamped at 0:
+//  yade_viscel:      the elastic shear force grows by ks dt times the contact-point velocity (constant ks, so
+//                    it is -ks ξ with ξ' = s) and is rotated with the normal; it is tested and capped alone
+//                    against tan(frictionAngle)|F_n|, and below the cap the viscous cs s is added, so the
+//                    rule is LIGGGHTS's with a constant stiffness: cs = γ_t cn (γ_t the damping factor on
+//                    the normal coefficient, b = 0). The arms are the contact point's, R - δ/2 (ScGeom's
+//                    contactPoint halfway through the overlap), in the torque and the velocity.
+enum class TangentialKind { linear_nohistory, linear_history, mindlin, liggghts_history, yade_viscel };
 
-// "linear_nohistory" | "linear_history" | "mindlin" (LAMMPS's keywords) | "liggghts_history"
+// "linear_nohistory" | "linear_history" | "mindlin" (LAMMPS's keywords) | "liggghts_history" |
+// "yade_viscel"
 const char* tangential_name(TangentialKind kind);
 // The inverse; throws InvalidInput naming the value and the choices.
 TangentialKind tangential_from_name(const std::string& name);
@@ -61,8 +71,9 @@ Body solid_sphere(double radius_m, double mass_kg);
 
 // Where the torque acts: at the contact radius R (fix_wall_gran.cpp:1512, `radius*tor`), or at R - δ/2 as
 // LAMMPS's pair does (pair_granular.cpp:663, `dist_to_contact = radi-0.5*delta`). The slip velocity uses R in
-// both (pair_granular.cpp:407-409).
-enum class TorqueArm { radius, radius_minus_half_overlap };
+// both (pair_granular.cpp:407-409). YADE's wall takes R - δ in both, its contact point the centre projected
+// onto the wall (pkg/dem/Ig2_Facet_Sphere_ScGeom.cpp, Ig2_Wall_Sphere_ScGeom::go).
+enum class TorqueArm { radius, radius_minus_half_overlap, radius_minus_overlap };
 
 struct ObliqueGeometry {
   Body first;
@@ -87,8 +98,8 @@ struct NormalForce {
 
 struct TangentialForce {
   TangentialKind kind = TangentialKind::linear_history;
-  // k_t: N/m for linear_history; N/m² for mindlin and liggghts_history (their stiffness is k_t·sqrt(R* δ));
-  // unused by linear_nohistory.
+  // k_t: N/m for linear_history and yade_viscel (its ks); N/m² for mindlin and liggghts_history (their
+  // stiffness is k_t·sqrt(R* δ)); unused by linear_nohistory.
   double stiffness = 0.0;
   // γ_t (LAMMPS's `damping` of the tangential model, dimensionless): the tangential damping coefficient is
   // γ_t times the normal one, γ δ^b.

@@ -11,9 +11,9 @@
 //        h = C' + σ(κ s + (g s)') - (κ'/κ)(C + σ g s) < 0,
 //    so the contact sticks again where h crosses 0 upwards (for a constant cap without damping: where s = 0);
 //  * slip -> stick, linear_nohistory: where g|s| falls below C.
-// LIGGGHTS's `tangential history` (tangential_model_history.h:147-217) tests and caps the elastic force -κξ
-// alone, so its switches are these with g = 0 in the cap test, the rescale and h (its stick force is still
-// -κξ - g s).
+// LIGGGHTS's `tangential history` (tangential_model_history.h:147-217) and YADE's ViscElPhys
+// (computeForceTorqueViscEl) test and cap the elastic force -κξ alone, so its switches are these with g = 0
+// in the cap test, the rescale and h (its stick force is still -κξ - g s).
 #include <array>
 #include <cmath>
 
@@ -70,8 +70,10 @@ struct NaturalModel {
   }
 
   [[nodiscard]] bool has_history() const { return kind != TangentialKind::linear_nohistory; }
-  // LIGGGHTS: the cap tests and caps the elastic force alone.
-  [[nodiscard]] bool caps_elastic_force() const { return kind == TangentialKind::liggghts_history; }
+  // LIGGGHTS and YADE: the cap tests and caps the elastic force alone.
+  [[nodiscard]] bool caps_elastic_force() const {
+    return kind == TangentialKind::liggghts_history || kind == TangentialKind::yade_viscel;
+  }
   // κ = κ_m sqrt(x): LAMMPS's mindlin (k_t a) and LIGGGHTS's hertz/stiffness kt sqrt(R* δ).
   [[nodiscard]] bool stiffness_grows_with_overlap() const {
     return kind == TangentialKind::mindlin || kind == TangentialKind::liggghts_history;

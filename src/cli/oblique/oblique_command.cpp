@@ -88,6 +88,13 @@ Setup setup_of(const ObliqueCommandOptions& o) {
   const double rho = hertz_stiffness(s.effective_modulus_pa, effective_radius_m(s.geometry));
   s.normal = {LawKind::viscoelastic_hertz, rho, 1.5 * o.dissipative_constant * rho};
   s.tangential.kind = tangential_from_name(o.tangential);
+  if (s.tangential.kind == TangentialKind::yade_viscel) {
+    throw InvalidInput(
+        "--tangential yade_viscel: YADE's ViscElPhys pairs its shear spring with a linear normal force (kn "
+        "delta "
+        "+ cn delta'), and this command models viscoelastic Hertz; the model is in the library "
+        "(docs/oblique.md)");
+  }
   s.tangential.damping_factor = o.tangential_damping;
   s.tangential.friction = *o.friction;
   if (o.tangential_stiffness) {
