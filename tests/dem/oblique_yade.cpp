@@ -112,8 +112,9 @@ O.engines = [
     if (line.rfind("RESTITUTION_OBLIQUE ", 0) != 0) continue;
     std::istringstream row(line.substr(20));
     std::size_t i = 0;
-    double dvx = 0.0, dvz = 0.0, wy = 0.0, wy_rest = 0.0;
-    row >> i >> dvx >> dvz >> wy >> wy_rest;
+    std::array<double, 4> v{};  // Δvx, Δvz, ω_y of the moving sphere and of the one at rest
+    row >> i >> v[0] >> v[1] >> v[2] >> v[3];
+    const auto [dvx, dvz, wy, wy_rest] = v;
     const double s0 = impact_at(kAnglesDeg.at(i), spin).tangential_m_s + kRadius * spin;
     out.at(i) = {-(dvx - kRadius * wy - kRadius * wy_rest) / s0,
                  std::atan2(dvx, dvz) * 180.0 / std::numbers::pi, -wy, -wy_rest};
