@@ -13,6 +13,7 @@
 #include <string>
 
 #include "oblique/oblique_contact.hpp"
+#include "restitution/errors.hpp"
 
 namespace {
 
@@ -123,6 +124,30 @@ TEST(LiggghtsHistory, DampedStickForceMayExceedTheCap) {
   EXPECT_EQ(liggghts.switches.front().mode, ContactMode::stick);
   EXPECT_LT(liggghts.impulse_ratio, -mu * (1.0 + 1e-6));
   EXPECT_GE(mindlin.impulse_ratio, -mu * (1.0 + 1e-9));
+}
+
+// Where the damped sticking force points against the capped one, each mode can drive the contact into the
+// other (LIGGGHTS then alternates capped and uncapped steps): the solve says so instead of switching without
+// end. A 1 mm steel sphere, A = 1e-6 s (ε ≈ 0.52), k_t = 8 G*, γ_t = 1, μ = 0.3, 300 rad/s at 45.5°.
+TEST(LiggghtsHistory, ChatteringOnTheCapIsReportedNotLooped) {
+  const double e_star = 2e11 / (2.0 * (1.0 - 0.09));
+  const double k = 4.0 / 3.0 * e_star * std::sqrt(kRadius);
+  const double kt = 2.0 * 2e11 / (1.7 * 1.3);
+  const double mass = 4.0 / 3.0 * std::numbers::pi * kRadius * kRadius * kRadius * 7800.0;
+  ObliqueGeometry g = with_liggghts_arms({solid_sphere(kRadius, mass), std::nullopt, TorqueArm::radius});
+  const double angle = 45.5 * std::numbers::pi / 180.0;
+  try {
+    (void)solve_oblique(g, {LawKind::viscoelastic_hertz, k, 1.5e-6 * k},
+                        {TangentialKind::liggghts_history, kt, 1.0, 0.3},
+                        {std::cos(angle), std::sin(angle), 300.0, 0.0});
+    FAIL() << "expected the chattering to be reported";
+  } catch (const NumericalFailure& e) {
+    EXPECT_NE(std::string(e.what()).find("chatters between stick and slip"), std::string::npos) << e.what();
+  }
+  // Without the tangential damping the force is continuous at a switch and the same impact solves.
+  EXPECT_NO_THROW((void)solve_oblique(g, {LawKind::viscoelastic_hertz, k, 1.5e-6 * k},
+                                      {TangentialKind::liggghts_history, kt, 0.0, 0.3},
+                                      {std::cos(angle), std::sin(angle), 300.0, 0.0}));
 }
 
 TEST(LiggghtsHistory, FrictionlessKeepsTangentialVelocityAndSpin) {
