@@ -50,8 +50,9 @@ namespace restitution::oblique {
 //                    it is -ks ξ with ξ' = s) and is rotated with the normal; it is tested and capped alone
 //                    against tan(frictionAngle)|F_n|, and below the cap the viscous cs s is added, so the
 //                    rule is LIGGGHTS's with a constant stiffness: cs = γ_t cn (γ_t the damping factor on
-//                    the normal coefficient, b = 0). The arms are the contact point's, R - δ/2 (ScGeom's
-//                    contactPoint halfway through the overlap), in the torque and the velocity.
+//                    the normal coefficient, b = 0). The arms reach ScGeom's contactPoint, in the torque and
+//                    the velocity: R - δ/2 for two spheres (halfway through the overlap), R - δ for a wall
+//                    (the centre projected onto it); ObliqueGeometry chooses them.
 enum class TangentialKind { linear_nohistory, linear_history, mindlin, liggghts_history, yade_viscel };
 
 // "linear_nohistory" | "linear_history" | "mindlin" (LAMMPS's keywords) | "liggghts_history" |
