@@ -33,9 +33,30 @@ namespace restitution::oblique {
 // where η = γ δ^b is the normal damping coefficient at the current overlap (damp_normal_prefactor,
 // pair_granular.cpp:368-373; `damp_tangential = tangential_coeffs[1]*damp_normal_prefactor`, line 427) and
 // the cap uses |F_n| (`Fncrit = fabs(Fntot)`, line 419). fix_wall_gran.cpp repeats these at lines 1256-1280.
-enum class TangentialKind { linear_nohistory, linear_history, mindlin };
+//
+// LIGGGHTS 3.8.0 `tangential history` (Debian's liggghts 3.8.0+repack1, src/tangential_model_history.h) under
+// the normal model the project prints for it, `model hertz/stiffness` (src/normal_model_hertz_stiffness.h):
+//  liggghts_history: k_t = kt·sqrt(R* δ), γ_t-damping gammat·m*·sqrt(R* δ) (lines 118-122 there), so with
+//                    gammat = γ_t·gamman the damping is γ_t times the normal one, as for LAMMPS; ξ' = s; the
+//                    cap compares the elastic force alone, kt|ξ| > μ|F_n|
+//                    (tangential_model_history.h:174-178), and at the cap F_t = μ|F_n| ξ/|ξ| without damping,
+//                    ξ rescaled to the cap (191-199); below it F_t = -kt ξ - γ_t η s (214-217), which may
+//                    exceed the cap. Torque arm and contact-point arm R - δ/2 for a pair and a wall
+//                    (surface_model_default.h:174-188).
+//
+// YADE 2023.02a's ViscElPhys shear spring (pkg/dem/ViscoelasticPM.cpp, computeForceTorqueViscEl, under
+// Law2_ScGeom_ViscElPhys_Basic), whose normal force is the linear dash-pot kn δ + cn δ' clamped at 0:
+//  yade_viscel:      the elastic shear force grows by ks dt times the contact-point velocity (constant ks, so
+//                    it is -ks ξ with ξ' = s) and is rotated with the normal; it is tested and capped alone
+//                    against tan(frictionAngle)|F_n|, and below the cap the viscous cs s is added, so the
+//                    rule is LIGGGHTS's with a constant stiffness: cs = γ_t cn (γ_t the damping factor on
+//                    the normal coefficient, b = 0). The arms reach ScGeom's contactPoint, in the torque and
+//                    the velocity: R - δ/2 for two spheres (halfway through the overlap), R - δ for a wall
+//                    (the centre projected onto it); ObliqueGeometry chooses them.
+enum class TangentialKind { linear_nohistory, linear_history, mindlin, liggghts_history, yade_viscel };
 
-// "linear_nohistory" | "linear_history" | "mindlin" (LAMMPS's keywords)
+// "linear_nohistory" | "linear_history" | "mindlin" (LAMMPS's keywords) | "liggghts_history" |
+// "yade_viscel"
 const char* tangential_name(TangentialKind kind);
 // The inverse; throws InvalidInput naming the value and the choices.
 TangentialKind tangential_from_name(const std::string& name);
@@ -51,8 +72,9 @@ Body solid_sphere(double radius_m, double mass_kg);
 
 // Where the torque acts: at the contact radius R (fix_wall_gran.cpp:1512, `radius*tor`), or at R - δ/2 as
 // LAMMPS's pair does (pair_granular.cpp:663, `dist_to_contact = radi-0.5*delta`). The slip velocity uses R in
-// both (pair_granular.cpp:407-409).
-enum class TorqueArm { radius, radius_minus_half_overlap };
+// both (pair_granular.cpp:407-409). YADE's wall takes R - δ in both, its contact point the centre projected
+// onto the wall (pkg/dem/Ig2_Facet_Sphere_ScGeom.cpp, Ig2_Wall_Sphere_ScGeom::go).
+enum class TorqueArm { radius, radius_minus_half_overlap, radius_minus_overlap };
 
 struct ObliqueGeometry {
   Body first;
@@ -63,6 +85,9 @@ struct ObliqueGeometry {
   // pair_granular.cpp:450-471); true keeps the normal of the impact throughout (the textbook model, the
   // closed forms). A wall's normal is fixed either way.
   bool fixed_normal = false;
+  // The arm of the spins in the contact-point velocity: R (LAMMPS, pair_granular.cpp:407-409) or R - δ/2
+  // (LIGGGHTS, surface_model_default.h:176-186, also for a wall).
+  TorqueArm contact_point_arm = TorqueArm::radius;
 };
 
 // The normal force F_n = k δ^a + γ δ^b δ' of a member of the family (SI: k in N/m^a, γ in N s/m^{1+b}).
@@ -74,8 +99,8 @@ struct NormalForce {
 
 struct TangentialForce {
   TangentialKind kind = TangentialKind::linear_history;
-  // k_t: N/m for linear_history; N/m² for mindlin (its stiffness is k_t·sqrt(R* δ)); unused by
-  // linear_nohistory.
+  // k_t: N/m for linear_history and yade_viscel (its ks); N/m² for mindlin and liggghts_history (their
+  // stiffness is k_t·sqrt(R* δ)); unused by linear_nohistory.
   double stiffness = 0.0;
   // γ_t (LAMMPS's `damping` of the tangential model, dimensionless): the tangential damping coefficient is
   // γ_t times the normal one, γ δ^b.

@@ -11,6 +11,9 @@
 //        h = C' + σ(κ s + (g s)') - (κ'/κ)(C + σ g s) < 0,
 //    so the contact sticks again where h crosses 0 upwards (for a constant cap without damping: where s = 0);
 //  * slip -> stick, linear_nohistory: where g|s| falls below C.
+// LIGGGHTS's `tangential history` (tangential_model_history.h:147-217) and YADE's ViscElPhys
+// (computeForceTorqueViscEl) test and cap the elastic force -κξ alone, so its switches are these with g = 0
+// in the cap test, the rescale and h (its stick force is still -κξ - g s).
 #include <array>
 #include <cmath>
 
@@ -42,6 +45,9 @@ struct NaturalModel {
   // ρ_i(x) = rotation_base_i - rotation_slope_i x: d(R_i ω_i)/dτ = ρ_i f_t.
   std::array<double, 2> rotation_base{};
   std::array<double, 2> rotation_slope{};
+  // The contact-point velocity s = u + Σ (1 - contact_arm_slope_i x) R_i ω_i: 0 for LAMMPS's arm R, (δ/2)/R_i
+  // per natural length for LIGGGHTS's R_i - δ/2.
+  std::array<double, 2> contact_arm_slope{};
   // R1 + R2 in natural lengths for a pair whose line of centres turns (the distance is r = centre_distance -
   // x, and in polar form δ'' = -f_n - u²/r, u' = f_t + δ' u/r, θ' = u/r); 0 for a wall or a fixed normal.
   double centre_distance = 0.0;
@@ -54,13 +60,24 @@ struct NaturalModel {
     const double u = y[kTangential];
     return law_rhs::acceleration(law, y[kOverlap], y[kOverlapRate]) - u * u * inverse_distance(y[kOverlap]);
   }
-  // ds/dτ under the tangential force f: f (1 + ρ1 + ρ2) plus the turning frame's δ' u/r.
+  // ds/dτ under the tangential force f: f (1 + ρ1 + ρ2) plus the turning frame's δ' u/r, less the shrinking
+  // contact-point arm's δ' Σ λ_i R_i ω_i.
   [[nodiscard]] double slip_rate(const State& y, double force) const {
     const double x = y[kOverlap];
-    return force * mobility(x) + y[kOverlapRate] * y[kTangential] * inverse_distance(x);
+    const double v = y[kOverlapRate];
+    return force * mobility(x) + v * y[kTangential] * inverse_distance(x) -
+           v * (contact_arm_slope[0] * y[kSpinFirst] + contact_arm_slope[1] * y[kSpinSecond]);
   }
 
   [[nodiscard]] bool has_history() const { return kind != TangentialKind::linear_nohistory; }
+  // LIGGGHTS and YADE: the cap tests and caps the elastic force alone.
+  [[nodiscard]] bool caps_elastic_force() const {
+    return kind == TangentialKind::liggghts_history || kind == TangentialKind::yade_viscel;
+  }
+  // κ = κ_m sqrt(x): LAMMPS's mindlin (k_t a) and LIGGGHTS's hertz/stiffness kt sqrt(R* δ).
+  [[nodiscard]] bool stiffness_grows_with_overlap() const {
+    return kind == TangentialKind::mindlin || kind == TangentialKind::liggghts_history;
+  }
 
   [[nodiscard]] double normal_force(double x, double v) const { return -law_rhs::acceleration(law, x, v); }
   // d f_n/dτ along the motion.
@@ -84,28 +101,47 @@ struct NaturalModel {
   [[nodiscard]] double tangential_damping(double x) const {
     return damping_factor * law.damping() * law_rhs::shape(law, x);
   }
+  // The damping in the cap test, the rescale and h: none where LIGGGHTS caps the elastic force alone.
+  [[nodiscard]] double capped_damping(double x) const {
+    return caps_elastic_force() ? 0.0 : tangential_damping(x);
+  }
+  [[nodiscard]] double capped_damping_rate(double x, double v) const {
+    return caps_elastic_force() ? 0.0 : tangential_damping_rate(x, v);
+  }
   [[nodiscard]] double tangential_damping_rate(double x, double v) const {
     return damping_factor * law.damping() * law_rhs::shape_derivative(law, x) * v;
   }
   [[nodiscard]] double tangential_stiffness(double x) const {
-    return kind == TangentialKind::mindlin ? stiffness * std::sqrt(std::max(x, 0.0)) : stiffness;
+    return stiffness_grows_with_overlap() ? stiffness * std::sqrt(std::max(x, 0.0)) : stiffness;
   }
   // κ'/κ
   [[nodiscard]] double stiffness_log_rate(double x, double v) const {
-    return kind == TangentialKind::mindlin && x > 0.0 ? 0.5 * v / x : 0.0;
+    return stiffness_grows_with_overlap() && x > 0.0 ? 0.5 * v / x : 0.0;
   }
-  // d s/dτ per unit tangential force: 1 + ρ1 + ρ2.
+  // d s/dτ per unit tangential force: 1 + Σ (1 - λ_i x) ρ_i.
   [[nodiscard]] double mobility(double x) const {
-    return 1.0 + (rotation_base[0] - rotation_slope[0] * x) + (rotation_base[1] - rotation_slope[1] * x);
+    return 1.0 + (1.0 - contact_arm_slope[0] * x) * (rotation_base[0] - rotation_slope[0] * x) +
+           (1.0 - contact_arm_slope[1] * x) * (rotation_base[1] - rotation_slope[1] * x);
   }
+  // u + R1 ω1 + R2 ω2: the slip before and after the contact (δ = 0).
   [[nodiscard]] static double slip_velocity(const State& y) {
     return y[kTangential] + y[kSpinFirst] + y[kSpinSecond];
   }
+  // The contact-point velocity the code uses during the contact (LIGGGHTS's arm R_i - δ/2).
+  [[nodiscard]] double contact_slip(const State& y) const {
+    const double x = y[kOverlap];
+    return y[kTangential] + (1.0 - contact_arm_slope[0] * x) * y[kSpinFirst] +
+           (1.0 - contact_arm_slope[1] * x) * y[kSpinSecond];
+  }
   // The force below the cap: -κξ - g s (history) or -g s.
   [[nodiscard]] double trial_force(const State& y) const {
-    const double s = slip_velocity(y);
+    const double s = contact_slip(y);
     const double viscous = -tangential_damping(y[kOverlap]) * s;
     return has_history() ? viscous - tangential_stiffness(y[kOverlap]) * y[kDisplacement] : viscous;
+  }
+  // The force the cap is tested against, whose direction a slip takes: the trial force, or LIGGGHTS's -κξ.
+  [[nodiscard]] double cap_test_force(const State& y) const {
+    return caps_elastic_force() ? -tangential_stiffness(y[kOverlap]) * y[kDisplacement] : trial_force(y);
   }
   // The tangential force on the first body in a mode (sign: the direction of the capped force, ±1).
   [[nodiscard]] double tangential_force(const State& y, ContactMode mode, double sign) const {
@@ -119,7 +155,7 @@ struct NaturalModel {
     dy[kOverlap] = v;
     const double inverse_r = inverse_distance(x);
     dy[kOverlapRate] = overlap_acceleration(y);
-    dy[kDisplacement] = mode == ContactMode::stick && has_history() ? slip_velocity(y) : 0.0;
+    dy[kDisplacement] = mode == ContactMode::stick && has_history() ? contact_slip(y) : 0.0;
     dy[kTangential] = ft + v * y[kTangential] * inverse_r;
     dy[kSpinFirst] = (rotation_base[0] - rotation_slope[0] * x) * ft;
     dy[kSpinSecond] = (rotation_base[1] - rotation_slope[1] * x) * ft;
@@ -131,14 +167,14 @@ struct NaturalModel {
     const double x = y[kOverlap];
     const double v = y[kOverlapRate];
     const double c = cap(x, v);
-    if (mode == ContactMode::stick) return c - std::abs(trial_force(y));
-    const double s = slip_velocity(y);
-    const double g = tangential_damping(x);
+    if (mode == ContactMode::stick) return c - std::abs(cap_test_force(y));
+    const double s = contact_slip(y);
+    const double g = capped_damping(x);
     // -σ g s is g|s| while s keeps the sign it slid with, and negative once it crosses 0: a strong damping
     // that carries s through 0 within one step cannot hide the end of the slip.
     if (!has_history()) return -sign * g * s - c;
     const double ds = slip_rate(y, sign * c);
-    const double dgs = tangential_damping_rate(x, v) * s + g * ds;
+    const double dgs = capped_damping_rate(x, v) * s + g * ds;
     return cap_rate(y) + sign * (tangential_stiffness(x) * s + dgs) -
            stiffness_log_rate(x, v) * (c + sign * g * s);
   }
@@ -148,13 +184,13 @@ struct NaturalModel {
     const double x = y[kOverlap];
     const double v = y[kOverlapRate];
     const double c = cap(x, v);
-    if (mode == ContactMode::stick) return c + std::abs(trial_force(y));
-    const double s = slip_velocity(y);
-    const double g = tangential_damping(x);
+    if (mode == ContactMode::stick) return c + std::abs(cap_test_force(y));
+    const double s = contact_slip(y);
+    const double g = capped_damping(x);
     if (!has_history()) return g * std::abs(s) + c;
     const double ds = slip_rate(y, sign * c);
     return std::abs(cap_rate(y)) + tangential_stiffness(x) * std::abs(s) +
-           std::abs(tangential_damping_rate(x, v) * s) + std::abs(g * ds) +
+           std::abs(capped_damping_rate(x, v) * s) + std::abs(g * ds) +
            std::abs(stiffness_log_rate(x, v)) * (c + g * std::abs(s));
   }
   // Whether leaving `mode` where its switch function crossed 0 agrees with the rate of the force against the
@@ -167,22 +203,23 @@ struct NaturalModel {
     const double v = y[kOverlapRate];
     if (has_history()) {
       if (mode == ContactMode::slip) return true;
-      const double trial_sign = trial_force(y) < 0.0 ? -1.0 : 1.0;
+      const double trial_sign = cap_test_force(y) < 0.0 ? -1.0 : 1.0;
       return switch_function(y, ContactMode::slip, trial_sign) < 0.0;
     }
-    const double s = slip_velocity(y);
+    const double s = contact_slip(y);
     const double force = tangential_force(y, mode, sign);
     const double excess_rate = tangential_damping_rate(x, v) * std::abs(s) +
                                tangential_damping(x) * (s < 0.0 ? -1.0 : 1.0) * slip_rate(y, force) -
                                cap_rate(y);
     return mode == ContactMode::stick ? excess_rate > 0.0 : excess_rate < 0.0;
   }
-  // The displacement a history model carries from a slip into a stick: the capped force, -κξ - g s = σC.
+  // The displacement a history model carries from a slip into a stick: the capped force, -κξ - g s = σC
+  // (LIGGGHTS: -κξ = σC).
   [[nodiscard]] double displacement_at_cap(const State& y, double sign) const {
     const double x = y[kOverlap];
     const double k = tangential_stiffness(x);
     if (!(k > 0.0)) return 0.0;
-    return -(sign * cap(x, y[kOverlapRate]) + tangential_damping(x) * slip_velocity(y)) / k;
+    return -(sign * cap(x, y[kOverlapRate]) + capped_damping(x) * contact_slip(y)) / k;
   }
 };
 

@@ -77,10 +77,14 @@ ObliqueSetup oblique_setup(const ObliqueInputs& in, ArgumentStyle style) {
                                    name("torque_arm"), in.torque_arm));
   }
   // "lammps": what LAMMPS does, R - δ/2 for a pair (pair_granular.cpp:663), R for a wall
-  // (fix_wall_gran.cpp:1512).
+  // (fix_wall_gran.cpp:1512); LIGGGHTS's model takes its own arm R - δ/2 for both, in the torque and the
+  // contact-point velocity (surface_model_default.h:174-188).
+  const bool liggghts = in.tangential == "liggghts_history";
   const bool half_overlap =
-      in.torque_arm == "radius-minus-half-overlap" || (in.torque_arm == "lammps" && !in.wall);
+      in.torque_arm == "radius-minus-half-overlap" || (in.torque_arm == "lammps" && (!in.wall || liggghts));
   s.geometry.torque_arm = half_overlap ? TorqueArm::radius_minus_half_overlap : TorqueArm::radius;
+  if (liggghts && in.torque_arm == "lammps")
+    s.geometry.contact_point_arm = TorqueArm::radius_minus_half_overlap;
   s.effective_modulus_pa = effective_modulus_pa(m.young_modulus_pa, m.poisson_ratio);
   s.poisson_ratio = m.poisson_ratio;
   // F = ρ δ^{3/2} + (3/2) A ρ sqrt(δ) δ', ρ = (4/3) E* sqrt(R*): a wall of the sphere's material has the same
@@ -92,11 +96,18 @@ ObliqueSetup oblique_setup(const ObliqueInputs& in, ArgumentStyle style) {
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("{}: {}", name("tangential"), e.what()));
   }
+  if (s.tangential.kind == TangentialKind::yade_viscel) {
+    throw InvalidInput(fmt::format(
+        "{} yade_viscel: YADE's ViscElPhys pairs its shear spring with a linear normal force (kn delta + cn "
+        "delta'), and this models viscoelastic Hertz; the model is in the library (docs/oblique.md)",
+        name("tangential")));
+  }
   s.tangential.damping_factor = in.tangential_damping;
   s.tangential.friction = *in.friction;
   if (in.tangential_stiffness) {
     s.tangential.stiffness = *in.tangential_stiffness;
-  } else if (s.tangential.kind == TangentialKind::mindlin) {
+  } else if (s.tangential.kind == TangentialKind::mindlin ||
+             s.tangential.kind == TangentialKind::liggghts_history) {
     // LAMMPS's `mindlin NULL`: 8 G* with 1/G* = 2 · 2(2 - ν)(1 + ν)/E for two spheres of one material
     // (pair_granular.cpp:1021-1023, mix_stiffnessG at line 1790).
     const double nu = m.poisson_ratio;

@@ -145,10 +145,14 @@ void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
       "# oblique impact, {}: viscoelastic Hertz k = {:.10g} N/m^1.5, gamma = {:.10g} N s/m^1.5, {} end\n",
       o.wall ? "sphere on a wall" : "two spheres", s.normal.stiffness, s.normal.damping, o.end);
   fmt::print(
-      "# tangential {} (LAMMPS pair granular): k_t = {:.10g} {}, damping {:.6g}, friction {:.6g}; "
-      "speed {:g} m/s\n",
-      tangential_name(s.tangential.kind), s.tangential.stiffness,
-      s.tangential.kind == TangentialKind::mindlin ? "N/m^2 (times sqrt(R* delta))" : "N/m",
+      "# tangential {} ({}): k_t = {:.10g} {}, damping {:.6g}, friction {:.6g}; speed {:g} m/s\n",
+      tangential_name(s.tangential.kind),
+      s.tangential.kind == TangentialKind::liggghts_history ? "LIGGGHTS tangential history"
+                                                            : "LAMMPS pair granular",
+      s.tangential.stiffness,
+      s.tangential.kind == TangentialKind::mindlin || s.tangential.kind == TangentialKind::liggghts_history
+          ? "N/m^2 (times sqrt(R* delta))"
+          : "N/m",
       s.tangential.damping_factor, s.tangential.friction, o.speed);
   fmt::print("{:>9} {:>11} {:>14} {:>14} {:>12} {:>14} {:>12} {:>12} {:>10} {:>10}  modes\n", "angle_deg",
              "spin0_rad_s", "eps_n", "e_t", "rebound_deg", "spin_rad_s", "impulse", "contact_s", "stick",
@@ -235,11 +239,12 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
       "two spheres: keep the normal of the impact (the textbook model) instead of letting the line of "
       "centres turn as in LAMMPS");
   cmd->add_option("--tangential", o->tangential,
-                  "tangential model: linear_nohistory, linear_history or mindlin")
+                  "tangential model: linear_nohistory, linear_history, mindlin (LAMMPS) or liggghts_history")
       ->check(CLI::IsMember(tangential_names()))
       ->capture_default_str();
-  cmd->add_option("--tangential-stiffness", o->tangential_stiffness,
-                  "k_t: N/m for linear_history, N/m^2 for mindlin (default there: LAMMPS's NULL, 8 G*)");
+  cmd->add_option(
+      "--tangential-stiffness", o->tangential_stiffness,
+      "k_t: N/m for linear_history, N/m^2 for mindlin and liggghts_history (default there: 8 G*)");
   cmd->add_option("--tangential-damping", o->tangential_damping,
                   "LAMMPS's tangential damping factor (times the normal damping coefficient)")
       ->capture_default_str();
@@ -258,8 +263,10 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
                   "end of the collision: naive (no clamp) or delayed-recovery (force clamped)")
       ->check(CLI::IsMember(end_names()))
       ->capture_default_str();
-  cmd->add_option("--torque-arm", o->torque_arm,
-                  "lammps (R - delta/2 for a pair, R for a wall), radius or radius-minus-half-overlap")
+  cmd->add_option(
+         "--torque-arm", o->torque_arm,
+         "lammps (R - delta/2 for a pair, R for a wall; liggghts_history: R - delta/2 in the torque and the "
+         "contact-point velocity), radius or radius-minus-half-overlap")
       ->check(CLI::IsMember({"lammps", "radius", "radius-minus-half-overlap"}))
       ->capture_default_str();
   cmd->add_option(
