@@ -82,7 +82,9 @@ TEST(GasDeckLammps, CoolsAsTheTheorySaysSeriallyAndOnTwoRanks) {
   // The MPI run against the same theory, with the factor of the serial companion.
   std::vector<gd::CoolingCurve> mpi_and_companion{mpi_curves[0],
                                                   both[1].law == "constant-eps" ? both[1] : both[0]};
-  const auto& visco_mpi = run_of(gd::compare_with_theory(setup, mpi_and_companion), "viscoelastic");
+  // Kept by name: run_of returns a reference into the comparison, which must outlive it.
+  const gd::GasComparison mpi_comparison = gd::compare_with_theory(setup, mpi_and_companion);
+  const auto& visco_mpi = run_of(mpi_comparison, "viscoelastic");
 
   const double steps = std::stod(serial.output.substr(serial.output.rfind("step=") + 5));
   std::cout << "collision rate factor " << c.collision_rate_factor << "; duration " << visco.haff_times

@@ -53,5 +53,7 @@ inline const gas_deck::RunComparison& run_of(const gas_deck::GasComparison& c, c
     if (r.law == law) return r;
   throw std::runtime_error("no " + law + " run");
 }
+// Not of a temporary: the reference would outlive it (ASan found one such use after free).
+const gas_deck::RunComparison& run_of(gas_deck::GasComparison&& c, const std::string& law) = delete;
 
 }  // namespace restitution::test_support
