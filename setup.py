@@ -1,7 +1,10 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """`pip install --no-build-isolation .`: setuptools drives the project's CMake (the one build system) to build the
 extension target `_restitution` (python/CMakeLists.txt) in a build folder of its own, and packages it with
-python/restitution/*.py, *.pyi and py.typed. The version is the file VERSION, as for CMake's project().
+python/restitution/*.py, *.pyi and py.typed. The version is CMake's (cmake/version.cmake: git and the file VERSION,
+e.g. 0.4.0.dev252+gf916007b96cf); `python3 -m build --sdist` writes it into the sdist as SDIST_VERSION, so that
+a build from the sdist, which is no git checkout, names the same version and commit. MANIFEST.in lists what
+the sdist carries: everything the build reads.
 
 Only the module and the libraries it links are built: no tests, benchmarks or program. Extra CMake arguments
 come from the environment, e.g. CMAKE_ARGS="-DSUNDIALS_DIR=/opt/sundials/lib/cmake/sundials"; the parallel
@@ -18,9 +21,21 @@ import sys
 
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
+from setuptools.command.sdist import sdist
 
 ROOT = pathlib.Path(__file__).resolve().parent
-VERSION = (ROOT / "VERSION").read_text(encoding="ascii").strip()
+
+
+def computed_version():
+    """The version and commit cmake/version.cmake computes (the same CMake's configure computes)."""
+    lines = subprocess.run(["cmake", f"-DROOT={ROOT}", "-P", str(ROOT / "cmake" / "version.cmake")], check=True,
+                           capture_output=True, text=True).stdout.split()
+    if len(lines) != 2:
+        sys.exit(f"setup.py: cmake/version.cmake printed {lines}, expected a version and a commit")
+    return lines[0], lines[1]
+
+
+VERSION, COMMIT = computed_version()
 
 
 class CMakeExtension(Extension):
@@ -61,12 +76,22 @@ class CMakeBuild(build_ext):
         shutil.copyfile(built[0], destination)
 
 
+class SdistWithVersion(sdist):
+    """An sdist is no git checkout: it carries the version and commit it was made from (cmake/version.cmake)."""
+
+    def make_release_tree(self, base_dir, files):
+        super().make_release_tree(base_dir, files)
+        target = pathlib.Path(base_dir) / "SDIST_VERSION"
+        target.unlink(missing_ok=True)  # a hard link to the source's copy when an sdist is made from an sdist
+        target.write_text(f"{VERSION}\n{COMMIT}\n", encoding="ascii")
+
+
 setup(
     version=VERSION,
     packages=["restitution"],
     package_dir={"": "python"},
     package_data={"restitution": ["*.pyi", "py.typed"]},
     ext_modules=[CMakeExtension("restitution._restitution", target="_restitution")],
-    cmdclass={"build_ext": CMakeBuild},
+    cmdclass={"build_ext": CMakeBuild, "sdist": SdistWithVersion},
     zip_safe=False,
 )

@@ -1,12 +1,17 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # `cmake --install BUILD --prefix P` installs the library `restitution` as a CMake package:
-#   P/lib/librestitution.a, P/include/restitution/*.hpp (umbrella: restitution/restitution.hpp),
+#   P/lib/librestitution.a, P/lib/librestitution.so.X.Y (SONAME), P/include/restitution/*.hpp (umbrella:
+#   restitution/restitution.hpp),
 #   P/lib/cmake/restitution/{restitutionConfig,restitutionConfigVersion,restitutionTargets}.cmake.
-# A consumer needs find_package(restitution 0.3 REQUIRED) and target_link_libraries(app restitution::restitution).
+# A consumer needs find_package(restitution 0.4 REQUIRED) and target_link_libraries(app restitution::restitution)
+# (static) or restitution::restitution_shared.
 include(CMakePackageConfigHelpers)
 
 set(restitution_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/restitution)
 install(TARGETS restitution_lib EXPORT restitutionTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# Beside it the shared library (restitution::restitution_shared): librestitution.so.X.Y.Z, its SONAME link
+# librestitution.so.X.Y and the development link librestitution.so (docs/library.md, "ABI").
+install(TARGETS restitution_shared EXPORT restitutionTargets LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 # The CVODE the archive carries stays private to it: its symbols become local (cmake/hide_sundials.sh), so a
 # consumer that links its own SUNDIALS gets its own and restitution keeps the optimized copy.
 if(RESTITUTION_SUNDIALS_BUILD STREQUAL "optimized")
@@ -19,7 +24,7 @@ install(EXPORT restitutionTargets NAMESPACE restitution:: DESTINATION ${restitut
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/restitutionConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/restitutionConfig.cmake INSTALL_DESTINATION ${restitution_package_dir})
-# Before 1.0 a minor version may change the API, so 0.3 accepts 0.3.x only.
+# Before 1.0 a minor version may change the API, so 0.4 accepts 0.4.x only.
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/restitutionConfigVersion.cmake
                                  COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/restitutionConfig.cmake ${PROJECT_BINARY_DIR}/restitutionConfigVersion.cmake
@@ -36,5 +41,10 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenes DESTINATION ${restitution_share_d
 install(FILES ${PROJECT_SOURCE_DIR}/data/reference_solutions.csv DESTINATION ${restitution_share_dir}/data)
 # The shipped [[fit]] scenes read their CSV relative to themselves: ../examples/fit/.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples/fit DESTINATION ${restitution_share_dir}/examples FILES_MATCHING PATTERN "*.csv")
+# The documentation the man page's SEE ALSO names: docs/ with the README, the licence and the changelog, in
+# share/doc/restitution (CMAKE_INSTALL_DOCDIR).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/CHANGELOG.md
+        DESTINATION ${CMAKE_INSTALL_DOCDIR})
 include(${CMAKE_CURRENT_LIST_DIR}/pkgconfig.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/manpage.cmake)

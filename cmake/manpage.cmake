@@ -15,8 +15,11 @@ set(restitution_man_commands ${PROJECT_BINARY_DIR}/restitution.h2m)
 add_custom_command(
   OUTPUT ${restitution_man_page}
   COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:restitution> -DOUTPUT=${restitution_man_commands}
+          -DVERSION=${RESTITUTION_VERSION} -DCOMMIT=${RESTITUTION_COMMIT}
           -P ${PROJECT_SOURCE_DIR}/cmake/manpage_commands.cmake
-  COMMAND ${HELP2MAN} --no-info --no-discard-stderr --section 1 --source "restitution ${PROJECT_VERSION}"
+  # The footer holds the program's name only: a development version does not fit beside the date in 80 columns
+  # (the section VERSION names it in full).
+  COMMAND ${HELP2MAN} --no-info --no-discard-stderr --section 1 --source "restitution"
           --name "coefficient of restitution of colliding viscoelastic spheres"
           --include ${restitution_man_commands} --output ${restitution_man_page} $<TARGET_FILE:restitution>
   DEPENDS restitution ${PROJECT_SOURCE_DIR}/cmake/manpage_commands.cmake

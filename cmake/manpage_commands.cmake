@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
-# cmake -DPROGRAM=restitution -DOUTPUT=file.h2m -P manpage_commands.cmake: a help2man include file whose section
-# COMMANDS holds `PROGRAM CMD --help` for every subcommand (and their subcommands), verbatim.
+# cmake -DPROGRAM=restitution -DOUTPUT=file.h2m -DVERSION=V -DCOMMIT=C -P manpage_commands.cmake: a help2man
+# include file whose section COMMANDS holds `PROGRAM CMD --help` for every subcommand (and their subcommands),
+# verbatim but wrapped at 80 columns, then the sections VERSION and SEE ALSO.
 
 # Names listed under "Subcommands:" in a --help text.
 function(subcommands_of help out_var)
@@ -19,6 +20,81 @@ function(subcommands_of help out_var)
   set(${out_var} ${names} PARENT_SCOPE)
 endfunction()
 
+# The page renders --help verbatim (.nf) in a subsection, which man indents by 7 columns: lines longer than
+# 80 - 7 = 73 are broken at a space or after a comma, and the continuation is indented to the description
+# column of an option line ("  --name TYPE   description"), else to the line's own indentation (4 more for an
+# option line without a description). Lines are taken
+# with string(FIND), not as a CMake list: the help text has semicolons and brackets.
+set(wrap_width 73)
+
+function(wrap_line line out_var)
+  string(LENGTH "${line}" length)
+  if(length LESS_EQUAL wrap_width)
+    set(${out_var} "${line}\n" PARENT_SCOPE)
+    return()
+  endif()
+  string(REGEX REPLACE "^ +" "" body "${line}")
+  string(LENGTH "${body}" body_length)
+  math(EXPR indent "${length} - ${body_length}")
+  string(FIND "${body}" "  " gap)
+  set(column -1)
+  math(EXPR widest_column "${wrap_width} - 20")  # room for a description of 20 columns
+  if(gap GREATER 0)
+    string(SUBSTRING "${body}" ${gap} -1 after)
+    string(REGEX MATCH "^ +" spaces "${after}")
+    string(LENGTH "${spaces}" spaces_length)
+    math(EXPR column "${indent} + ${gap} + ${spaces_length}")
+  endif()
+  if(column GREATER 0 AND column LESS widest_column)
+    set(indent ${column})
+  elseif(body MATCHES "^-")  # an option whose name alone is too long: its continuation sets off from it
+    math(EXPR indent "${indent} + 4")
+  endif()
+  string(REPEAT " " ${indent} continuation)
+  set(wrapped "")
+  while(length GREATER wrap_width)
+    math(EXPR head_length "${wrap_width} + 1")
+    string(SUBSTRING "${line}" 0 ${head_length} head)
+    string(FIND "${head}" " " space REVERSE)
+    string(FIND "${head}" "," comma REVERSE)
+    math(EXPR after_comma "${comma} + 1")
+    set(cut ${space})
+    if(after_comma GREATER cut AND after_comma LESS_EQUAL wrap_width)
+      set(cut ${after_comma})
+    endif()
+    if(cut LESS_EQUAL indent)  # no place to break past the indentation: cut the word
+      set(cut ${wrap_width})
+    endif()
+    string(SUBSTRING "${line}" 0 ${cut} part)
+    string(SUBSTRING "${line}" ${cut} -1 rest)
+    string(REGEX REPLACE " +$" "" part "${part}")
+    string(REGEX REPLACE "^ +" "" rest "${rest}")
+    set(wrapped "${wrapped}${part}\n")
+    set(line "${continuation}${rest}")
+    string(LENGTH "${line}" length)
+  endwhile()
+  set(${out_var} "${wrapped}${line}\n" PARENT_SCOPE)
+endfunction()
+
+function(wrap_text text out_var)
+  set(result "")
+  while(NOT text STREQUAL "")
+    string(FIND "${text}" "\n" newline)
+    if(newline EQUAL -1)
+      set(line "${text}")
+      set(text "")
+    else()
+      string(SUBSTRING "${text}" 0 ${newline} line)
+      math(EXPR next "${newline} + 1")
+      string(SUBSTRING "${text}" ${next} -1 text)
+    endif()
+    wrap_line("${line}" wrapped)
+    set(result "${result}${wrapped}")
+  endwhile()
+  string(REGEX REPLACE "\n$" "" result "${result}")
+  set(${out_var} "${result}" PARENT_SCOPE)
+endfunction()
+
 # Appends `PROGRAM path... --help` as a roff subsection, then recurses into its subcommands.
 function(describe path)
   execute_process(COMMAND ${PROGRAM} ${path} --help OUTPUT_VARIABLE help RESULT_VARIABLE status)
@@ -28,6 +104,7 @@ function(describe path)
   subcommands_of("${help}" names)
   # The exit-status paragraph closes every --help; the page has it once, from the top-level --help.
   string(REGEX REPLACE "\nExit status:.*" "" help "${help}")
+  wrap_text("${help}" help)
   string(REPLACE "\\" "\\e" help "${help}")
   string(REGEX REPLACE "(^|\n)([.'])" "\\1\\\\&\\2" help "${help}")
   list(JOIN path " " title)
@@ -47,5 +124,10 @@ set(text "[COMMANDS]\nEvery subcommand takes \\fB--help\\fR; here is what each p
 foreach(command IN LISTS commands)
   describe("${command}")
 endforeach()
-set(text "${text}[SEE ALSO]\nThe documentation in docs/ of the source (docs/cli.md: the command line).\n")
+set(text "${text}[VERSION]\nThis page describes restitution ${VERSION}, built from commit ${COMMIT} (docs/release.md).\n")
+# The documentation is installed beside the program (cmake/install.cmake): share/doc/restitution under the prefix.
+set(text "${text}[SEE ALSO]\nThe documentation installed with the program, in share/doc/restitution/ under its prefix \
+(/usr/share/doc/restitution/ from the Debian package, /usr/local/share/doc/restitution/ from \\fBcmake --install\\fR): \
+\\fBcli.md\\fR (the command line), \\fBscenes.md\\fR, \\fBdem.md\\fR, \\fBlibrary.md\\fR, \\fBpython.md\\fR, \\fBrelease.md\\fR \
+(versions). Online: the same files in docs/ of the source.\n")
 file(WRITE ${OUTPUT} "${text}")

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # P/lib/pkgconfig/restitution.pc for builds without CMake: c++ app.cpp $(pkg-config --cflags --libs restitution).
-# librestitution.a is static, so what its objects call into (SUNDIALS, fmt) goes into Libs, not Libs.private
+# Libs names librestitution.a (the static library, not the shared one beside it), so what its objects call
+# into (SUNDIALS, fmt) goes into Libs, not Libs.private
 # (which only `pkg-config --static` reads): a plain `--libs` must link. The flags are read from the targets
 # restitution_lib links (src/CMakeLists.txt), so a SUNDIALS from elsewhere (SUNDIALS_DIR) shows up as it is.
 

@@ -13,10 +13,10 @@
 #include <string_view>
 #include <vector>
 
-#include "cli/common/output_files.hpp"
-#include "cli/sweep/sweep_partial.hpp"
-#include "cli/sweep/sweep_table.hpp"
 #include "restitution/errors.hpp"
+#include "sweep/number_text.hpp"
+#include "sweep/sweep_partial.hpp"
+#include "sweep/sweep_table.hpp"
 
 namespace {
 
@@ -46,7 +46,7 @@ bool is_number(const std::string& text) {
   if (text.empty()) return false;
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && cli::number17(value) == text;
+  return end == text.c_str() + text.size() && number17(value) == text;
 }
 
 bool is_count(const std::string& text) {
@@ -75,12 +75,12 @@ void check_row(std::string_view row, std::size_t index, const std::vector<double
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const std::vector<double> zetas = zeta_values({0.0, 2.0, 5, false});
-  static const std::string header = cli::sweep_header(EndSet{CollisionEnd::naive});
+  static const std::string header = sweep_header(EndSet{CollisionEnd::naive});
   const std::size_t columns = static_cast<std::size_t>(std::count(header.begin(), header.end(), ',')) + 1;
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    const cli::PartialSweep partial =
-        cli::parse_partial_sweep(text, "s.csv.partial", "# restitution sweep: fuzz", header, zetas);
+    const PartialSweep partial =
+        parse_partial_sweep(text, "s.csv.partial", "# restitution sweep: fuzz", header, zetas);
     check(partial.valid_bytes <= text.size());
     check(partial.valid_bytes == 0 || text[partial.valid_bytes - 1] == '\n');
     check(partial.row_offset.empty() ? partial.kept == 0 : partial.row_offset.size() == zetas.size());
@@ -88,7 +88,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::size_t failed = 0;
     for (std::size_t index = 0; index < partial.row_offset.size(); ++index) {
       const std::uint64_t offset = partial.row_offset[index];
-      if (offset == cli::PartialSweep::kNotDone) continue;
+      if (offset == PartialSweep::kNotDone) continue;
       ++kept;
       check(offset < partial.valid_bytes);
       const std::size_t end = text.find('\n', offset);
@@ -98,7 +98,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       check(line.rfind(prefix, 0) == 0 && line.size() > prefix.size() + 9);
       const std::string row = line.substr(prefix.size(), line.size() - prefix.size() - 9);
       std::string again;  // the writer's own line for this row: the same bytes, checksum included
-      cli::append_partial_line(again, index, row);
+      append_partial_line(again, index, row);
       check(again == line + "\n");
       bool row_failed = false;
       check_row(row, index, zetas, columns, row_failed);

@@ -5,40 +5,45 @@
 # errors: the public headers need no GNU extension), runs it and compares its ε at both ends with
 # data/reference_solutions.csv within the solver's accuracy contract |ε - ε_ref| <= tol · min(ε, 1 - ε).
 # The same app is then built without CMake, by `c++ app.cpp $(pkg-config --cflags --libs restitution)` alone,
-# and checked the same way. The installed program answers --version with the file VERSION, as does
+# and checked the same way, and once more against the shared library (-lrestitution: its SONAME, its exports).
+# The installed program answers --version with the version cmake/version.cmake computes, as does
 # pkg-config --modversion, its man page (help2man) renders with `man -l`, and it runs the default scene from the
 # installed share/restitution.
-# Usage: install_consumer.sh BUILD_DIR SOURCE_DIR
+# Usage: install_consumer.sh BUILD_DIR SOURCE_DIR   (RESTITUTION_INSTALLED_PREFIX=P: check P, install nothing)
 set -euo pipefail
 build=$1
 source=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-cmake --install "$build" --prefix "$work/prefix" >/dev/null
+# RESTITUTION_INSTALLED_PREFIX=/usr checks an installation made otherwise (tests/deb_package.sh: the .deb).
+prefix=${RESTITUTION_INSTALLED_PREFIX:-$work/prefix}
+if [ -z "${RESTITUTION_INSTALLED_PREFIX:-}" ]; then
+  cmake --install "$build" --prefix "$prefix" >/dev/null
+fi
 
-headers=$(cd "$work/prefix/include/restitution" && ls | tr '\n' ' ')
+headers=$(cd "$prefix/include/restitution" && ls | tr '\n' ' ')
 expected="calibration.hpp collision_solver.hpp contact_law.hpp errors.hpp fast.hpp fit.hpp material.hpp restitution.hpp series.hpp solve_types.hpp sweep.hpp units.hpp "
 if [ "$headers" != "$expected" ]; then
   echo "installed headers: $headers"
   echo "expected:          $expected"
   exit 1
 fi
-if grep -nE '__float128|quadmath|<Eigen|<toml|<boost|<fmt|<sundials|<cvode' "$work/prefix/include/restitution/"*.hpp; then
+if grep -nE '__float128|quadmath|<Eigen|<toml|<boost|<fmt|<sundials|<cvode' "$prefix/include/restitution/"*.hpp; then
   echo "a public header needs a private dependency (above)"
   exit 1
 fi
 for f in restitutionConfig.cmake restitutionConfigVersion.cmake restitutionTargets.cmake; do
-  test -f "$work/prefix/lib/cmake/restitution/$f" || { echo "missing lib/cmake/restitution/$f"; exit 1; }
+  test -f "$prefix/lib/cmake/restitution/$f" || { echo "missing lib/cmake/restitution/$f"; exit 1; }
 done
 
-version=$(tr -d '[:space:]' <"$source/VERSION")
-program_version=$("$work/prefix/bin/restitution" --version | head -1)  # the next line names the SUNDIALS build
+version=$(cmake -DROOT="$source" -P "$source/cmake/version.cmake" | sed -n 1p)  # docs/release.md
+program_version=$("$prefix/bin/restitution" --version | head -1)  # the next line names the SUNDIALS build
 if [ "$program_version" != "restitution $version" ]; then
   echo "installed bin/restitution --version: $program_version, VERSION: $version"
   exit 1
 fi
-export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig"
+export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
 if [ "$(pkg-config --modversion restitution)" != "$version" ]; then
   echo "pkg-config --modversion restitution: $(pkg-config --modversion restitution), VERSION: $version"
   exit 1
@@ -46,23 +51,38 @@ fi
 # No flag of our own: restitution.pc brings -std=c++20 (g++ 12 defaults to C++17) and every library.
 # shellcheck disable=SC2046  # pkg-config's output is a list of words
 c++ -o "$work/app_pkgconfig" "$source/examples/cpp/app.cpp" $(pkg-config --cflags --libs restitution)
-man_page="$work/prefix/share/man/man1/restitution.1"
+# The shared library beside the static one: SONAME librestitution.so.X.Y of the version, restitution's API its
+# only exports (no CVODE, N_Vector, SUNDIALS or fmt symbol), and a consumer linked with -lrestitution loads it.
+soname=$(readelf -d "$prefix/lib/librestitution.so" | sed -n 's/.*Library soname: \[\(.*\)\]/\1/p')
+expected_soname="librestitution.so.$(cut -d. -f1,2 <<<"$version")"
+[ "$soname" = "$expected_soname" ] || { echo "SONAME of lib/librestitution.so: '$soname', expected $expected_soname"; exit 1; }
+test -f "$prefix/lib/$soname" || { echo "lib/$soname (the SONAME's link) is not installed"; exit 1; }
+foreign=$(nm -D --defined-only -C "$prefix/lib/librestitution.so" | grep -vE ' (typeinfo( name)? for |vtable for |VTT for |guard variable for )?restitution::' || true)
+[ -z "$foreign" ] || { echo "lib/librestitution.so exports more than restitution's API:"; head <<<"$foreign"; exit 1; }
+c++ -std=c++20 -o "$work/app_shared" "$source/examples/cpp/app.cpp" -I"$prefix/include" -L"$prefix/lib" \
+  -lrestitution -Wl,-rpath,"$prefix/lib"
+readelf -d "$work/app_shared" | grep -qF "[$soname]" || { echo "app_shared does not load $soname:"; readelf -d "$work/app_shared" | grep NEEDED; exit 1; }
+man_page="$prefix/share/man/man1/restitution.1"
 test -f "$man_page" || { echo "missing share/man/man1/restitution.1"; exit 1; }
 rendered=$(LC_ALL=C MANWIDTH=80 man -l "$man_page" 2>&1 | tr -s " ")  # ASCII hyphens, unjustified
-for expected in "restitution - coefficient of restitution" "restitution eps" "--tolerance" "restitution $version"; do
+for expected in "restitution - coefficient of restitution" "restitution eps" "--tolerance" "restitution $version" "share/doc/restitution"; do
   grep -qF -- "$expected" <<<"$rendered" || { echo "man -l $man_page lacks '$expected':"; head -20 <<<"$rendered"; exit 1; }
+done
+
+for doc in cli.md library.md release.md README.md LICENSE CHANGELOG.md; do  # the docs SEE ALSO points to
+  test -f "$prefix/share/doc/restitution/$doc" || { echo "missing share/doc/restitution/$doc"; exit 1; }
 done
 
 # The installed program needs no checkout: a bare `run` (outside any checkout) takes the installed default scene
 # and plots with the installed scripts.
-run_log=$(cd "$work" && "$work/prefix/bin/restitution" run --quick --output "$work/run" 2>&1) ||
+run_log=$(cd "$work" && "$prefix/bin/restitution" run --quick --output "$work/run" 2>&1) ||
   { echo "installed restitution run failed: $run_log"; exit 1; }
-grep -qF "$work/prefix/share/restitution/scenes/default.toml" <<<"$run_log" ||
+grep -qF "$prefix/share/restitution/scenes/default.toml" <<<"$run_log" ||
   { echo "installed restitution run did not take the installed default scene: $run_log"; exit 1; }
 ls "$work"/run/*.png >/dev/null 2>&1 || { echo "installed restitution run made no plot: $run_log"; exit 1; }
 
 cmake -S "$source/examples/cpp" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_CXX_EXTENSIONS=OFF \
+  -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_CXX_EXTENSIONS=OFF \
   -DCMAKE_CXX_FLAGS="-Wall -Wextra -Wpedantic -Werror" >/dev/null
 cmake --build "$work/build" >/dev/null
 
@@ -77,7 +97,7 @@ fi
 # symbol, and a consumer that calls the system's CVODE itself (tests/install/sundials_beside.cpp) binds its calls
 # to libsundials_cvode.so while restitution's solves keep the library's own copy (local symbols in the program).
 if "$build/restitution" --version | grep -q "SUNDIALS .*(optimized"; then
-  exported=$(nm -g --defined-only "$work/prefix/lib/librestitution.a" | grep -E ' [A-Z] (CVode|N_V|SUN)' || true)
+  exported=$(nm -g --defined-only "$prefix/lib/librestitution.a" | grep -E ' [A-Z] (CVode|N_V|SUN)' || true)
   [ -z "$exported" ] || { echo "the installed librestitution.a exports SUNDIALS symbols:"; head <<<"$exported"; exit 1; }
   # shellcheck disable=SC2046  # pkg-config's output is a list of words
   c++ -o "$work/sundials_beside" "$source/tests/install/sundials_beside.cpp" $(pkg-config --cflags --libs restitution) \
@@ -97,7 +117,7 @@ fi
 
 # Default tolerance of SolveOptions: 1e-10. ζ spans the weakly and the strongly damped regime.
 status=0
-for app in "$work/build/app" "$work/app_pkgconfig"; do
+for app in "$work/build/app" "$work/app_pkgconfig" "$work/app_shared"; do
 for zeta in 0.001 1 100 10000; do
   output=$("$app" "$zeta")
   awk -F, -v zeta="$zeta" -v out="$output" -v tol=1e-10 '

@@ -5,7 +5,7 @@ never a header under a module folder (no study's private header, no library inte
 
 A module is a folder under src/; `#include "M/..."` in a file of module A is an edge A -> M. A public header
 include/restitution/H.hpp belongs to the module that implements it: the folder named H, else the folder of
-H.cpp, else the one folder whose sources include it first (restitution.hpp, the umbrella: sundials/build_info.cpp);
+H.cpp, else the one folder whose sources include it first (restitution.hpp, the umbrella: version/, which says what built the code: restitution's version and commit, the SUNDIALS build);
 a header no folder implements (errors.hpp: inline only) is no module. So `#include "restitution/H.hpp"` in module
 A is an edge A -> H's module, and a public header's own includes are edges of its module (the umbrella's are
 not: it includes everything for users and implements nothing of it). Each edge is printed with the number of

@@ -4,8 +4,10 @@
 # (`pip wheel --no-build-isolation --no-deps .`, setup.py driving CMake), installs it into a fresh venv that sees
 # Debian's numpy (--system-site-packages), and runs the pytest suite (python/tests) against the INSTALLED
 # package from a folder outside the checkout, with no PYTHONPATH (conftest.py checks where restitution comes
-# from). Also checks restitution.__version__ against the file VERSION, and that `pip install --no-build-isolation .`
-# straight from the checkout (the README's command) installs an importable package into another fresh venv.
+# from), and executes examples/notebooks/restitution_tour.ipynb with Debian's nbconvert in a kernel of that venv.
+# Also checks restitution.__version__ against cmake/version.cmake's, that `pip install --no-build-isolation .`
+# straight from the checkout (the README's command) installs an importable package into another fresh venv, and
+# that the sdist (`python3 -m build --sdist --no-isolation`) alone builds a wheel whose eps(1) is right.
 # Usage: tests/pip_install.sh [SOURCE_DIR]   (CMAKE_ARGS, RESTITUTION_CMAKE_BUILD_DIR etc. pass through to setup.py)
 set -euo pipefail
 source=$(cd "${1:-$(dirname "$0")/..}" && pwd)
@@ -22,7 +24,7 @@ echo "pip_install: built $(basename "$wheel") in $((SECONDS - start)) s"
 /usr/bin/python3 -m venv --system-site-packages "$work/venv"
 "$work/venv/bin/pip" install --no-index --no-deps --quiet "$wheel"
 
-version=$(tr -d '[:space:]' <"$source/VERSION")
+version=$(cmake -DROOT="$source" -P "$source/cmake/version.cmake" | sed -n 1p)  # docs/release.md
 cd "$work"
 "$work/venv/bin/python" - "$work/venv" "$version" <<'PY'
 import pathlib, sys
@@ -30,17 +32,60 @@ import restitution
 venv, version = pathlib.Path(sys.argv[1]).resolve(), sys.argv[2]
 where = pathlib.Path(restitution.__file__).resolve()
 assert where.is_relative_to(venv), f"imported {where}, not the venv's copy"
-assert restitution.__version__ == version, f"__version__ {restitution.__version__} != VERSION {version}"
+assert restitution.__version__ == version, f"__version__ {restitution.__version__} != cmake/version.cmake's {version}"
 eps = restitution.eps(1.0)
 assert 0 < eps < 1, eps
 print(f"pip_install: restitution {restitution.__version__} from {where.parent}, eps(1) = {eps}")
 PY
 RESTITUTION_INSTALLED_UNDER="$work/venv" RESTITUTION_SOURCE_DIR="$source" \
   "$work/venv/bin/python" -m pytest -q -p no:cacheprovider "$source/python/tests"
+# The notebook with Debian's nbconvert, in a kernel that runs the venv's python (Debian's kernel runs
+# /usr/bin/python3, which does not see the venv): it must import the wheel installed there.
+"$work/venv/bin/python" "$source/python/tests/run_notebook.py" "$source/examples/notebooks/restitution_tour.ipynb" \
+  "$work/venv/bin/python" "$work/venv"
 
 # The README's command: pip builds from the checkout itself (reusing setup.py's CMake build folder).
 /usr/bin/python3 -m venv --system-site-packages "$work/venv2"
 (cd "$source" && "$work/venv2/bin/pip" install --no-build-isolation --no-deps --quiet . >"$work/install.log" 2>&1) ||
   { tail -40 "$work/install.log"; echo "pip_install: pip install . failed"; exit 1; }
 "$work/venv2/bin/python" -c "import restitution, sys; assert restitution.__file__.startswith('$work/venv2'), restitution.__file__; print('pip_install: pip install . gives', restitution.__version__, restitution.eps(1.0))"
+
+# The sdist alone builds: it is unpacked into build/sdist-check (a fixed folder, so that ccache finds the objects of
+# the last run; no git checkout of its own, so the version comes from its SDIST_VERSION), a wheel is built from it
+# with CMake's own folder (not RESTITUTION_CMAKE_BUILD_DIR) and installed into a third fresh venv.
+(cd "$source" && /usr/bin/python3 -m build --sdist --no-isolation --outdir "$work/sdist" . >"$work/sdist.log" 2>&1) ||
+  { tail -40 "$work/sdist.log"; echo "pip_install: python3 -m build --sdist failed"; exit 1; }
+sdist=$(ls "$work"/sdist/restitution-*.tar.gz)
+listing=$(tar tzf "$sdist")
+for needed in VERSION SDIST_VERSION CMakeLists.txt cmake/version.cmake src/CMakeLists.txt include/restitution/restitution.hpp \
+  python/CMakeLists.txt data/reference_solutions.csv scripts/plots docs/cli.md; do
+  grep -q "^restitution-[^/]*/$needed" <<<"$listing" || { echo "pip_install: the sdist lacks $needed"; exit 1; }
+done
+unpacked="$source/build/sdist-check"
+rm -rf "$unpacked"
+mkdir -p "$unpacked"
+tar xzf "$sdist" -C "$unpacked" --strip-components=1
+# The optimized CVODE the checkout's set-up built (cmake/sundials.cmake reads it from build/sundials).
+if [ -d "$source/build/sundials" ]; then mkdir -p "$unpacked/build" && ln -s "$source/build/sundials" "$unpacked/build/sundials"; fi
+command -v ccache >/dev/null && export CMAKE_CXX_COMPILER_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER:-ccache}
+(cd "$unpacked" && env -u RESTITUTION_CMAKE_BUILD_DIR /usr/bin/python3 -m pip wheel --no-build-isolation --no-deps \
+  --wheel-dir "$work/sdist-dist" . >"$work/sdist-wheel.log" 2>&1) ||
+  { tail -40 "$work/sdist-wheel.log"; echo "pip_install: building a wheel from the sdist failed"; exit 1; }
+/usr/bin/python3 -m venv --system-site-packages "$work/venv3"
+"$work/venv3/bin/pip" install --no-index --no-deps --quiet "$work"/sdist-dist/restitution-*.whl
+"$work/venv3/bin/python" - "$version" "$source/data/reference_solutions.csv" <<'PY'
+import csv, sys
+import restitution
+version, table = sys.argv[1], sys.argv[2]
+assert restitution.__version__ == version, f"the sdist's wheel says {restitution.__version__}, the checkout {version}"
+rows = [r for r in csv.reader(line for line in open(table) if not line.startswith("#"))]
+header, rows = rows[0], rows[1:]
+row = next(r for r in rows if float(r[0]) == 1.0)
+ref = float(row[header.index("delayed_recovery_eps")])
+ref_one_minus = float(row[header.index("delayed_recovery_one_minus_eps")])
+eps = restitution.eps(1.0)
+assert abs(eps - ref) <= 1e-10 * min(ref, ref_one_minus), f"eps(1) = {eps}, reference {ref}"
+print(f"pip_install: the sdist's wheel {restitution.__version__}: eps(1) = {eps} (reference {ref})")
+PY
+rm -rf "$unpacked"
 echo "pip_install: done in $((SECONDS - start)) s"

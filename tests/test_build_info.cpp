@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,29 @@ TEST(BuildInfo, VersionFlagSaysWhichSundials) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find(std::string("SUNDIALS ") + restitution::sundials_build_description()),
             std::string::npos)
+      << r.out;
+}
+
+// cmake/version.cmake: "X.Y.Z" at a release, "X.Y.0.devN+g<12 hex>" between releases; the commit in full.
+TEST(BuildInfo, LibraryNamesItsVersionAndCommit) {
+  const restitution::LibraryVersion library = restitution::library_version();
+  EXPECT_TRUE(
+      std::regex_match(library.version, std::regex(R"([0-9]+\.[0-9]+\.[0-9]+(\.dev[0-9]+\+g[0-9a-f]{12})?)")))
+      << library.version;
+  const std::string commit = library.commit;
+  EXPECT_TRUE(std::regex_match(commit, std::regex("[0-9a-f]{40}|unknown"))) << commit;
+  const std::string version = library.version;
+  const auto hash = version.find("+g");
+  if (hash != std::string::npos) {  // the development version names the commit it was built from
+    EXPECT_EQ(commit.substr(0, 12), version.substr(hash + 2)) << version << " " << commit;
+  }
+}
+
+TEST(BuildInfo, VersionFlagSaysTheLibraryVersion) {
+  const auto r = run_cli("--version");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.substr(0, r.out.find('\n')),
+            std::string("restitution ") + restitution::library_version().version)
       << r.out;
 }
 

@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -93,10 +94,34 @@ TEST(Progress, TheLineIsDrawnOnlyWhenEnabledAndEndsWithItsTotal) {
   EXPECT_EQ(drawn(false, {{1, 3}, {2, 3}, {3, 3}}), "");
   const std::string text = drawn(true, {{1, 3}, {2, 3}, {3, 3}});
   EXPECT_EQ(text.rfind("\r  work: 1/3 (33%)", 0), 0U) << text;  // the first update is always drawn
-  EXPECT_NE(text.find("\r  work: 3/3 (100%)\n"), std::string::npos) << text;
+  // The last draw has the rate of the two items done after the first update, and the time they took.
+  EXPECT_NE(text.find("\r  work: 3/3 (100%), "), std::string::npos) << text;
+  EXPECT_NE(text.find("/s, took 0 s"), std::string::npos) << text;
   EXPECT_EQ(text.back(), '\n');
   // Interrupted before the total: the line is still ended, so the next message starts on its own line.
   EXPECT_EQ(drawn(true, {{1, 3}}), "\r  work: 1/3 (33%)\n");
+}
+
+TEST(Progress, DurationsReadAsAPersonSaysThem) {
+  EXPECT_EQ(cli::duration_text(0.0), "0 s");
+  EXPECT_EQ(cli::duration_text(42.4), "42 s");
+  EXPECT_EQ(cli::duration_text(59.6), "1 min 00 s");  // rounded to the second first
+  EXPECT_EQ(cli::duration_text(111.0), "1 min 51 s");
+  EXPECT_EQ(cli::duration_text(7500.0), "2 h 05 min");
+  EXPECT_EQ(cli::duration_text(-3.0), "0 s");  // a clock step backwards is no negative time
+}
+
+TEST(Progress, RateAndTimeLeftOnceTheRateIsKnown) {
+  // No rate yet (the first update): the count alone.
+  EXPECT_EQ(cli::progress_text("collisions", 0, 400, 0.0, 0.0), "collisions: 0/400 (0%)");
+  // 100 of 400 at 2.5 items/s: 300 left take 120 s.
+  EXPECT_EQ(cli::progress_text("collisions", 100, 400, 2.5, 40.0),
+            "collisions: 100/400 (25%), 2.5/s, 2 min 00 s left");
+  // Fast work: whole items per second; at the total the time it took instead of the time left.
+  EXPECT_EQ(cli::progress_text("zeta", 4000, 4000, 1234.4, 3.24), "zeta: 4000/4000 (100%), 1234/s, took 3 s");
+  EXPECT_EQ(cli::progress_text("slow", 1, 10, 0.0123, 81.3), "slow: 1/10 (10%), 0.0123/s, 12 min 12 s left");
+  // A rate that is no number (0/0) draws nothing rather than "nan".
+  EXPECT_EQ(cli::progress_text("x", 1, 2, std::nan(""), 0.0), "x: 1/2 (50%)");
 }
 
 TEST(Progress, NothingOnStderrWhenItIsNotATerminal) {

@@ -16,10 +16,10 @@
 #include <set>
 #include <thread>
 
-#include "cli/sweep/sweep_table.hpp"
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/sweep.hpp"
+#include "sweep/sweep_table.hpp"
 
 namespace restitution {
 namespace {
@@ -228,11 +228,11 @@ TEST(Sweep, TheCheckNamesTheFirstRefusedPointInGridOrderOnAnyThreadCount) {
 
 TEST(SweepTable, FailedRowsKeepTheColumnsAndQuoteTheMessage) {
   const EndSet both = EndSet::both();
-  const std::string header = cli::sweep_header(both);
+  const std::string header = sweep_header(both);
   SweepPoint failed;
   failed.zeta = 2.5;
   failed.error = "CVODE failed, \"badly\"\nat tau=3";
-  const std::string row = cli::sweep_row(failed, both);
+  const std::string row = sweep_row(failed, both);
   const auto count = [](const std::string& s) { return std::count(s.begin(), s.end(), ','); };
   // The message's own comma sits inside quotes: one more comma than the header.
   EXPECT_EQ(count(row), count(header) + 1);
@@ -273,7 +273,7 @@ TEST(CliSweep, WritesRowsInZetaOrderMatchingTheLibrary) {
   CollisionSolver solver;
   for (std::size_t i = 0; i < zetas.size(); ++i) {
     SweepPoint p{i, zetas[i], solver.solve(ContactLaw::hertz_natural(zetas[i]), options), ""};
-    EXPECT_EQ(lines[i + 1], cli::sweep_row(p, options.ends));
+    EXPECT_EQ(lines[i + 1], sweep_row(p, options.ends));
   }
 }
 

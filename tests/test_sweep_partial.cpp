@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "cli/common/line_reader.hpp"
-#include "cli/sweep/sweep_partial.hpp"
-#include "cli/sweep/sweep_table.hpp"
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/sweep.hpp"
+#include "sweep/line_reader.hpp"
+#include "sweep/sweep_partial.hpp"
+#include "sweep/sweep_table.hpp"
 
 namespace restitution {
 namespace {
@@ -36,7 +36,7 @@ const std::string kSettings =
 
 std::string line(std::size_t index, const std::string& row) {
   std::string text;
-  cli::append_partial_line(text, index, row);
+  append_partial_line(text, index, row);
   return text;
 }
 
@@ -69,7 +69,7 @@ class DamagedPartial : public ::testing::Test {
     table_ = slurp(dir_.path / "reference.csv");
     rows_ = lines_of(table_);
     ASSERT_EQ(rows_.size(), kPoints + 1);
-    preamble_ = kSettings + "\n" + cli::partial_header(rows_[0]) + "\n";
+    preamble_ = kSettings + "\n" + partial_header(rows_[0]) + "\n";
   }
   [[nodiscard]] const std::string& row(std::size_t index) const { return rows_.at(index + 1); }
 
@@ -102,14 +102,14 @@ TEST_F(DamagedPartial, DamagedRowsAreDroppedAndRecomputedAnExactRepeatAccepted) 
   std::ofstream(partial, std::ios::binary) << text;
 
   // The reader: 95 points kept (not 10 and 11, torn; nor 20, 30 and 40), 4 lines dropped, one repeat.
-  const cli::PartialSweep read =
-      cli::parse_partial_sweep(text, partial, kSettings, rows_[0], zeta_values({0.0, 10.0, kPoints, false}));
+  const PartialSweep read =
+      parse_partial_sweep(text, partial, kSettings, rows_[0], zeta_values({0.0, 10.0, kPoints, false}));
   EXPECT_EQ(read.kept, 95U);
   EXPECT_EQ(read.dropped, 4U);
   EXPECT_EQ(read.first_dropped_line, 13U);
   EXPECT_EQ(read.duplicates, 1U);
   for (const std::size_t lost : {10U, 11U, 20U, 30U, 40U, 150U})
-    EXPECT_EQ(read.row_offset.at(lost), cli::PartialSweep::kNotDone) << lost;
+    EXPECT_EQ(read.row_offset.at(lost), PartialSweep::kNotDone) << lost;
 
   const auto resumed = run_cli(kSweep + " --resume --out " + out.string());
   ASSERT_EQ(resumed.status, 0) << resumed.err;
@@ -166,56 +166,56 @@ TEST(PartialLine, RoundTripsAndRefusesAnyChangedByte) {
   EXPECT_EQ(text.substr(0, 3 + row.size()), "17," + row);
   ASSERT_EQ(text.back(), '\n');
   const std::string whole = text.substr(0, text.size() - 1);
-  ASSERT_TRUE(cli::partial_line_row(whole));
-  EXPECT_EQ(*cli::partial_line_row(whole), row);
+  ASSERT_TRUE(partial_line_row(whole));
+  EXPECT_EQ(*partial_line_row(whole), row);
   for (std::size_t i = 0; i < whole.size(); ++i) {
     std::string changed = whole;
     changed[i] = changed[i] == '1' ? '2' : '1';
-    EXPECT_FALSE(cli::partial_line_row(changed)) << changed;
+    EXPECT_FALSE(partial_line_row(changed)) << changed;
   }
-  EXPECT_FALSE(cli::partial_line_row(whole.substr(0, whole.size() - 1)));
-  EXPECT_FALSE(cli::partial_line_row(""));
+  EXPECT_FALSE(partial_line_row(whole.substr(0, whole.size() - 1)));
+  EXPECT_FALSE(partial_line_row(""));
 }
 
 // A failed point's row keeps its axis columns (ζ, speed, β) and a quoted message with commas and quotes.
 TEST(PartialLine, AFailedRowOfAVelocitySweepIsKeptAndCounted) {
   const std::vector<double> zetas{0.5, 1.0, 2.0};
-  cli::VelocityAxis axis;
+  SweepColumns axis;
   axis.velocity_m_s = {0.1, 0.2, 0.3};
   axis.beta = 0.7;
-  const std::string header = cli::sweep_header(EndSet::both(), &axis);
+  const std::string header = sweep_header(EndSet::both(), &axis);
   SweepPoint failed;
   failed.index = 1;
   failed.zeta = 1.0;
   failed.error = "CVODE failed, \"flag -1\", at tau=3";
-  std::string text = "# s\n" + cli::partial_header(header) + "\n";
-  cli::append_partial_line(text, 1, cli::sweep_row(failed, EndSet::both(), &axis));
-  const cli::PartialSweep read = cli::parse_partial_sweep(text, "p", "# s", header, zetas);
+  std::string text = "# s\n" + partial_header(header) + "\n";
+  append_partial_line(text, 1, sweep_row(failed, EndSet::both(), &axis));
+  const PartialSweep read = parse_partial_sweep(text, "p", "# s", header, zetas);
   EXPECT_EQ(read.kept, 1U);
   EXPECT_EQ(read.failed, 1U);
   EXPECT_EQ(read.dropped, 0U);
   // The same row with its speed emptied is not one the program writes.
-  std::string damaged = "# s\n" + cli::partial_header(header) + "\n";
-  std::string row = cli::sweep_row(failed, EndSet::both(), &axis);
+  std::string damaged = "# s\n" + partial_header(header) + "\n";
+  std::string row = sweep_row(failed, EndSet::both(), &axis);
   row.replace(row.find(",0.20000000000000001,"), 21, ",,");
-  cli::append_partial_line(damaged, 1, row);
-  EXPECT_EQ(cli::parse_partial_sweep(damaged, "p", "# s", header, zetas).dropped, 1U);
+  append_partial_line(damaged, 1, row);
+  EXPECT_EQ(parse_partial_sweep(damaged, "p", "# s", header, zetas).dropped, 1U);
 }
 
 // A block of zeros without a line break (what a crash can leave in a file) is skipped, never held whole.
 TEST(LineReader, AnOverlongLineIsHeldInPartAndSkippedWhole) {
   const std::size_t kLong = std::size_t{3} << 20;
   const std::string text = "a\n" + std::string(kLong, '\0') + "\nb\n" + std::string(kLong, '\0');
-  cli::LineReader lines = cli::LineReader::of_text(text);
+  LineReader lines = LineReader::of_text(text);
   EXPECT_EQ(lines.at(0).text, "a");
-  const cli::LineReader::Line zeros = lines.at(2);
+  const LineReader::Line zeros = lines.at(2);
   EXPECT_TRUE(zeros.complete);
   EXPECT_EQ(zeros.length, kLong);
   EXPECT_LE(zeros.text.size(), std::size_t{1} << 20);
-  const cli::LineReader::Line b = lines.at(2 + kLong + 1);
+  const LineReader::Line b = lines.at(2 + kLong + 1);
   EXPECT_EQ(b.text, "b");
   EXPECT_TRUE(b.complete);
-  const cli::LineReader::Line tail = lines.at(2 + kLong + 3);
+  const LineReader::Line tail = lines.at(2 + kLong + 3);
   EXPECT_FALSE(tail.complete);
   EXPECT_EQ(tail.length, kLong);
   EXPECT_FALSE(lines.at(text.size()).complete);

@@ -2,7 +2,7 @@
 #pragma once
 // The restitution library in one include: contact laws, the collision solver and its engines, units and
 // materials, calibration, the analytic series and the certified
-// fast ε(ζ) table; and which build of SUNDIALS it carries (below).
+// fast ε(ζ) table; and which build of SUNDIALS it carries and which code it is (below).
 #include "restitution/calibration.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/contact_law.hpp"
@@ -30,5 +30,16 @@ struct SundialsBuild {
 SundialsBuild sundials_build();
 // "6.4.1 (optimized, built from Debian's source package)" | "6.4.1 (Debian's libsundials, unoptimized)"
 const char* sundials_build_description();
+
+// Which code the library is (docs/release.md): every output that carries the SUNDIALS build names it too, so
+// that a number can be traced to the code that computed it.
+struct LibraryVersion {
+  // "0.3.0" at a release; "0.4.0.dev252+gf916007b96cf" between releases (252 commits after it, at that
+  // commit)
+  const char* version;
+  const char* commit;  // the 40 hex digits of the commit built, or "unknown" outside git and an sdist
+};
+
+LibraryVersion library_version();
 
 }  // namespace restitution

@@ -6,12 +6,14 @@
 // The library never prints and holds no global state: the caller passes a stop request (for signals)
 // and receives each finished point through a callback.
 #include <cstddef>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "restitution/collision_solver.hpp"
+#include "restitution/units.hpp"
 
 namespace restitution {
 
@@ -82,5 +84,62 @@ void check_sweep(const std::vector<double>& zetas, const SolveOptions& options,
 // on.
 SweepSummary run_sweep(const std::vector<double>& zetas, const SolveOptions& options,
                        const SweepControl& control, LawKind law = LawKind::viscoelastic_hertz);
+
+// A sweep into a CSV file that survives an interruption. While it runs, every finished row is appended to
+// PATH.partial (flushed every 100 ms, each line with its own checksum) and the table is written in ζ order
+// into PATH.tmp; PATH appears (renamed) only when every point is finished, and PATH.partial is then removed.
+// A stopped sweep (SweepControl::stop_requested) keeps PATH.partial; the same call with `resume` continues
+// from it, keeping every valid row, and writes the same bytes as an uninterrupted sweep. PATH.lock keeps a
+// second process from writing the same files meanwhile.
+
+// The columns of an ε(v) table after ζ: the impact speed of each point, β when given and, with natural
+// scales per speed, SI durations and the maximal compression's time and size.
+struct SweepColumns {
+  std::vector<double> velocity_m_s;   // m/s, parallel to the sweep's ζ values
+  std::optional<double> beta;         // s^{1/5} m^{-1/5}: a column after velocity_m_s, when given
+  std::vector<NaturalScales> scales;  // parallel to velocity_m_s, or empty: no SI columns
+};
+
+struct SweepFileOutcome;
+
+struct SweepFile {
+  std::filesystem::path path;  // the CSV file (a regular file, not a folder)
+  bool resume = false;         // continue from PATH.partial; without it an existing PATH.partial is refused
+  // Line 1 of PATH.partial, the sweep's identity: a resumed sweep must have the same (one line, no '\n').
+  std::string settings;
+  std::optional<SweepColumns> columns;  // an ε(v) table; empty: ζ only
+  // How messages name things, in the caller's words: the file as given (empty: PATH), the option or
+  // argument that gave it ("--out"; empty: none) and what asks to resume ("--resume", "resume=True").
+  std::string given;
+  std::string option;
+  std::string resume_option = "resume";
+  // Called once PATH.partial was read, before any point is computed (status is not yet final).
+  std::function<void(const SweepFileOutcome&)> resuming;
+};
+
+struct SweepFileOutcome {
+  enum class Status {
+    complete,          // PATH is written and PATH.partial removed
+    already_complete,  // resume asked, PATH exists and PATH.partial does not: nothing was computed
+    stopped            // stop_requested ended the sweep: PATH.partial keeps every finished point
+  };
+  Status status = Status::complete;
+  std::filesystem::path partial_path;  // PATH.partial
+  std::size_t points = 0;              // in the sweep
+  std::size_t finished = 0;            // points finished, those of PATH.partial included
+  std::size_t resumed = 0;             // valid rows found in PATH.partial (not computed again)
+  std::size_t damaged_lines = 0;       // lines of PATH.partial dropped as damaged (their points recomputed)
+  std::size_t first_damaged_line = 0;  // line number (1-based) of the first of them, 0: none
+  std::size_t failed = 0;  // points that failed numerically (their rows say why), resumed ones too
+};
+
+// check_sweep, then run_sweep into SweepFile::path as described above. `control` gives the threads, the stop
+// request and the progress callback; its point callbacks and already_done are the file's own. Throws
+// InvalidInput (a folder as PATH, columns not parallel to zetas, another process writing PATH, PATH.partial
+// without resume or written by another sweep) before any point is computed, IoError naming the file when a
+// write fails (PATH.partial then keeps what was finished).
+SweepFileOutcome sweep_to_file(const std::vector<double>& zetas, const SolveOptions& options,
+                               SweepControl control, const SweepFile& file,
+                               LawKind law = LawKind::viscoelastic_hertz);
 
 }  // namespace restitution

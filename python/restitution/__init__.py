@@ -4,10 +4,17 @@
 eps(zeta) solves the collision x'' + zeta sqrt(x) x' + x^(3/2) = 0, x(0) = 0, x'(0) = 1 (natural units,
 zeta = beta v^(1/5)) to a certified accuracy |eps - eps_exact| <= tolerance * min(eps, 1 - eps).
 
-    >>> import restitution
-    >>> restitution.eps(0.1)                                    # float in, float out
-    >>> restitution.eps(numpy.logspace(-3, 3, 7), end="naive")  # array in, array of the same shape out
-    >>> restitution.eps(material=steel, velocity=[0.1, 1.0])    # velocities in m/s
+Examples
+--------
+>>> import numpy, restitution
+>>> round(restitution.eps(0.1), 10)                                  # float in, float out
+0.8928588755
+>>> restitution.eps(numpy.logspace(-3, 3, 7), end="naive").shape      # array in, same shape out
+(7,)
+>>> steel = restitution.Material(young_modulus=2.0e11, poisson_ratio=0.3, radius=0.01, density=7800.0,
+...                              dissipative_constant=2e-6)          # Pa, m, kg/m^3, s
+>>> restitution.eps(material=steel, velocity=[0.1, 1.0]).round(6)     # velocities in m/s
+array([0.893312, 0.838058])
 
 Errors: ValueError for bad input (the message names the argument, the value and, for arrays, the index);
 TypeError for arguments of the wrong type or combination; restitution.NumericalFailure (an ArithmeticError)
@@ -16,6 +23,7 @@ KeyboardInterrupt on Ctrl-C. restitution.fast gives the same eps from the certif
 """
 
 import numbers as _numbers
+import warnings as _warnings
 
 import numpy as _np
 
@@ -25,8 +33,9 @@ from ._restitution import CollisionResult, EndResult, Calibration, Material, Max
 from ._restitution import NumericalFailure, SolverStats
 from ._restitution import __version__  # the file VERSION at the root of the checkout
 
-__all__ = ["__version__", "eps", "solve", "calibrate", "fit_data", "zeta_of", "Material", "NumericalFailure", "CollisionResult",
-           "EndResult", "MaxCompression", "SolverStats", "Calibration", "series", "fast"]
+__all__ = ["__version__", "eps", "solve", "calibrate", "fit_data", "zeta_of", "build_info", "Material",
+           "NumericalFailure", "CollisionResult", "EndResult", "MaxCompression", "SolverStats", "Calibration", "series",
+           "fast"]
 
 _SCALARS = (float, int)
 _TOLERANCE = _core.default_tolerance  # SolveOptions' default, the command line's too
@@ -55,11 +64,36 @@ def _text(name, value):
 def zeta_of(zeta=None, *, beta=None, velocity=None, material=None):
     """The damping parameter zeta (natural units) from exactly one of the three ways to give it.
 
-    zeta: float or array-like, >= 0.
-    beta [s^(1/5) m^(-1/5)] with velocity [m/s]: zeta = beta v^(1/5), arrays broadcast.
-    material (restitution.Material, with its dissipation) with velocity [m/s]: beta = material.beta.
-    Raises ValueError for a zeta outside the checked range 0 <= zeta <= 1e6 (or NaN), as eps() does.
-    Returns a float for scalar input, else a float64 array of the broadcast shape.
+    Parameters
+    ----------
+    zeta : float or array_like, optional
+        zeta itself, 0 <= zeta <= 1e6.
+    beta : float or array_like, optional
+        beta [s^(1/5) m^(-1/5)], with velocity: zeta = beta v^(1/5) (arrays broadcast).
+    velocity : float or array_like, optional
+        Impact speed [m/s], with beta or material.
+    material : Material, optional
+        With its dissipation, and velocity: beta = material.beta.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        A float for scalar input, else a float64 array of the broadcast shape.
+
+    Raises
+    ------
+    ValueError
+        zeta outside the checked range 0 <= zeta <= 1e6 (or NaN), as eps() does.
+    TypeError
+        Not exactly one of zeta, beta and material.
+
+    Examples
+    --------
+    >>> import restitution
+    >>> restitution.zeta_of(beta=0.1, velocity=1.0)
+    0.1
+    >>> restitution.zeta_of(beta=0.1, velocity=[1.0, 32.0]).round(12)
+    array([0.1, 0.2])
     """
     given = [zeta is not None, beta is not None, material is not None]
     if sum(given) != 1:
@@ -117,37 +151,109 @@ def _law(law, zeta=None, beta=None, material=None):
 
 
 def eps(zeta=None, end="delayed-recovery", tolerance=_TOLERANCE, method="auto", *, beta=None, velocity=None,
-        material=None, law="viscoelastic-hertz", threads=None):
+        material=None, law="viscoelastic-hertz", threads=None, progress=None):
     """Coefficient of restitution eps at one end of the collision.
 
-    zeta: float or array-like in the checked range 0 <= zeta <= 1e6 (natural units; above it ValueError, as
-        on the command line), or instead beta [s^(1/5) m^(-1/5)] with velocity [m/s]
-        (arrays broadcast), or a Material with velocity [m/s].
-    end: "delayed-recovery" (the force vanishes; the physical end) or "naive" (the overlap vanishes).
-    tolerance: |eps - eps_exact| <= tolerance * min(eps, 1 - eps), in [1e-11, 1e-2] for the CVODE methods,
+    Parameters
+    ----------
+    zeta : float or array_like, optional
+        In the checked range 0 <= zeta <= 1e6 (natural units; above it ValueError, as on the command line).
+        Or instead beta with velocity, or material with velocity.
+    end : {"delayed-recovery", "naive"}
+        "delayed-recovery" (the force vanishes; the physical end) or "naive" (the overlap vanishes).
+    tolerance : float
+        |eps - eps_exact| <= tolerance * min(eps, 1 - eps), in [1e-11, 1e-2] for the CVODE methods,
         [1e-13, 1e-2] for taylor.
-    method: "auto" (CVODE, BDF or Adams per regime), "bdf", "adams" or "taylor" (Taylor series; fastest;
-        the naive end for zeta <= 100 only).
-    law: the contact law (docs/contact_laws.md): "viscoelastic-hertz" (default), "tsuji-hertz",
+    method : {"auto", "bdf", "adams", "taylor"}
+        "auto" (CVODE, BDF or Adams per regime), "bdf", "adams" or "taylor" (Taylor series; fastest; the naive
+        end for zeta <= 100 only).
+    beta : float or array_like, optional
+        beta [s^(1/5) m^(-1/5)], with velocity; arrays broadcast.
+    velocity : float or array_like, optional
+        Impact speed [m/s], with beta or material.
+    material : Material, optional
+        Spheres with their dissipation, with velocity.
+    law : str
+        The contact law (docs/contact_laws.md): "viscoelastic-hertz" (default), "tsuji-hertz",
         "hertz-constant-damping" or "linear-dashpot"; zeta is that law's natural-form parameter in
         x'' + zeta x^b x' + x^a = 0 (the dash-pot: zeta = 2 r); beta and material are Hertz only.
-    threads: worker threads for an array, an int in [1, 1024]; None (default): all cores. As the command
-        line's sweep --threads. A scalar is solved on the calling thread.
-    Returns a float for scalar input, else a float64 array of the same (broadcast) shape, computed on all
-    cores (or `threads`) with the GIL released (Ctrl-C -> KeyboardInterrupt).
-    Raises ValueError (bad value, empty array; the message names the index), TypeError (wrong type),
-    NumericalFailure (accuracy not reached; names the index).
+    threads : int, optional
+        Worker threads for an array, in [1, 1024]; None (default): all cores, as the command line's sweep
+        --threads. A scalar is solved on the calling thread.
+    progress : callable or bool, optional
+        For arrays: a callable(done, total) called a few times a second from the calling thread (with the
+        GIL) and once at the end, or True for a tqdm progress bar (when tqdm is installed; Debian:
+        python3-tqdm). An exception the callable raises stops the array call. Scalars make no calls.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        A float for scalar input, else a float64 array of the same (broadcast) shape, computed on all cores
+        (or `threads`) with the GIL released (Ctrl-C -> KeyboardInterrupt). The same digits as solve()
+        gives for the same end, zeta, tolerance and method.
+
+    Raises
+    ------
+    ValueError
+        A bad value or an empty array; the message names the index.
+    TypeError
+        A wrong type or combination of arguments.
+    NumericalFailure
+        Accuracy not reached; the message names the index.
+
+    Examples
+    --------
+    >>> import restitution
+    >>> round(restitution.eps(1.0), 10)
+    0.3939306032
+    >>> restitution.eps(1.0) == restitution.solve(1.0).delayed_recovery.eps
+    True
+    >>> [f"{e:.6g}" for e in restitution.eps([0.01, 1.0, 100.0], end="naive")]
+    ['0.988545', '0.331165', '5.15838e-10']
+    >>> calls = []
+    >>> restitution.eps([0.1, 0.2, 0.3], progress=lambda done, total: calls.append((done, total))).shape
+    (3,)
+    >>> calls[-1]
+    (3, 3)
     """
     if (type(zeta) is float and beta is None and material is None and velocity is None and type(end) is str
             and type(method) is str and type(tolerance) is float and law == "viscoelastic-hertz"
-            and threads is None):
+            and threads is None and progress is None):
         return _core.eps_scalar(zeta, end, tolerance, method, law)  # fast path; pybind11 checks the types
     workers = _threads(threads)
     law = _law(law, zeta, beta, material)
+    _check_progress(progress)
     z = zeta_of(zeta, beta=beta, velocity=velocity, material=material)
     if isinstance(z, float):
         return _core.eps_scalar(z, _text("end", end), _tolerance(tolerance), _text("method", method), law)
-    return _core.eps_array(z, _text("end", end), _tolerance(tolerance), _text("method", method), law, workers)
+    end, tolerance, method = _text("end", end), _tolerance(tolerance), _text("method", method)
+    callback, bar = _progress_callback(progress, z.size)
+    try:
+        return _core.eps_array(z, end, tolerance, method, law, workers, callback)
+    finally:
+        if bar is not None:
+            bar.close()
+
+
+def _check_progress(progress):
+    if not (progress is None or isinstance(progress, bool) or callable(progress)):
+        raise TypeError(f"progress must be None, True, False or a callable(done, total), got {type(progress).__name__}")
+
+
+def _progress_callback(progress, total):
+    """(callable(done, total) or None, the tqdm bar to close or None) for eps_array's progress."""
+    if progress is None or progress is False:
+        return None, None
+    if progress is not True:
+        return progress, None
+    try:
+        from tqdm import tqdm
+    except ImportError:
+        _warnings.warn("progress=True shows a tqdm bar, but tqdm is not installed (pip install tqdm, or Debian's "
+                       "python3-tqdm); computing without one", stacklevel=3)
+        return None, None
+    bar = tqdm(total=total, unit="solve")
+    return (lambda done, _total: bar.update(done - bar.n)), bar
 
 
 _MAX_THREADS = _core.max_threads  # the library's bound, as the command line's --threads
@@ -172,15 +278,48 @@ def _tolerance(tolerance):
 
 def solve(zeta=None, end="both", tolerance=_TOLERANCE, method="auto", trajectory=False, *, beta=None,
           velocity=None, material=None, law="viscoelastic-hertz"):
-    """One collision in full: a CollisionResult with, in natural units,
+    """One collision in full.
 
-    .naive / .delayed_recovery: EndResult (eps, one_minus_eps, tau, x, velocity, dissipated_energy) or
-        None for the end not asked for; .max_compression (tau, x); .stats (steps, rhs_evaluations, ...);
-    .method (the one used), .zeta, .tolerance; with trajectory=True the numpy arrays .tau, .x, .velocity
-        (x') and .acceleration (x'') at every internal step and event.
-    zeta, beta/velocity or material/velocity as for eps() but scalar only; end "both" (default), "naive"
-    or "delayed-recovery"; law as for eps() (.law names it; .zeta is the damping ratio r for the dash-pot).
-    Raises ValueError, TypeError, NumericalFailure as eps() does.
+    Parameters
+    ----------
+    zeta : float, optional
+        As for eps(), scalar only; or beta with velocity, or material with velocity.
+    end : {"both", "naive", "delayed-recovery"}
+        The ends to compute. With "both" (the default) each end is solved as eps() solves it (two
+        integrations), so that solve(z).naive.eps == eps(z, end="naive") and
+        solve(z).delayed_recovery.eps == eps(z) to the last digit.
+    tolerance, method, law
+        As for eps().
+    trajectory : bool
+        Record (tau, x, x', x'') at every internal step and event.
+    beta, velocity, material
+        As for eps(), scalars only.
+
+    Returns
+    -------
+    CollisionResult
+        In natural units: .naive and .delayed_recovery (EndResult: eps, one_minus_eps, tau, x, velocity,
+        dissipated_energy; None for an end not asked for), .max_compression (tau, x), .stats (steps,
+        rhs_evaluations, ...; with end="both" the sum of both integrations), .method (the one used; with
+        end="both" that of the naive end's integration, which runs through the whole collision), .zeta,
+        .law (.zeta is the damping ratio r for the dash-pot), .tolerance; with trajectory=True the numpy
+        arrays .tau, .x, .velocity (x') and .acceleration (x'').
+
+    Raises
+    ------
+    ValueError, TypeError, NumericalFailure
+        As eps() does.
+
+    Examples
+    --------
+    >>> import restitution
+    >>> r = restitution.solve(1.0)
+    >>> round(r.naive.eps, 10), round(r.delayed_recovery.eps, 10)
+    (0.3311648105, 0.3939306032)
+    >>> round(r.max_compression.x, 8)
+    0.7674808
+    >>> restitution.solve(1.0, end="naive").delayed_recovery is None
+    True
     """
     law = _law(law, zeta, beta, material)
     if not isinstance(trajectory, bool):
@@ -195,11 +334,38 @@ def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=_T
               law="viscoelastic-hertz"):
     """The damping that gives a measured eps in (0, 1) at the impact speed velocity [m/s].
 
-    Returns a Calibration: .zeta (natural units), .beta [s^(1/5) m^(-1/5)], .characteristic_velocity
-    (the 1999 paper's g* [m/s]), .dissipative_constant (A [s] for the material's elastic data, else None),
-    .eps_at_zeta, .solves. end as for eps(). Raises ValueError for eps outside (0, 1) or below eps(zeta = 1e6) (the checked range).
-    law as for eps(): for another law than viscoelastic Hertz .zeta (and .parameter, the dash-pot's r) is
-    the result and .beta, .characteristic_velocity are 0 (no material).
+    Parameters
+    ----------
+    eps : float
+        The measured coefficient of restitution, in (0, 1).
+    velocity : float
+        The impact speed [m/s].
+    end : {"delayed-recovery", "naive"}
+        As for eps().
+    material : Material, optional
+        Its elastic data (its dissipation is not needed) give the dissipative constant A [s].
+    tolerance, method, law
+        As for eps().
+
+    Returns
+    -------
+    Calibration
+        .zeta (natural units), .beta [s^(1/5) m^(-1/5)], .characteristic_velocity (the 1999 paper's g*
+        [m/s]), .dissipative_constant (A [s] for the material's elastic data, else None), .eps_at_zeta,
+        .solves. For another law than viscoelastic Hertz .zeta (and .parameter, the dash-pot's r) is the
+        result and .beta, .characteristic_velocity are None (no material).
+
+    Raises
+    ------
+    ValueError
+        eps outside (0, 1) or below eps(zeta = 1e6) (the checked range).
+
+    Examples
+    --------
+    >>> import restitution
+    >>> c = restitution.calibrate(0.8, 1.0)            # eps = 0.8 at 1 m/s
+    >>> round(c.beta, 8), round(c.eps_at_zeta, 8)
+    (0.20113666, 0.8)
     """
     law = _law(law, material=material)
     if material is not None and not isinstance(material, Material):
@@ -225,15 +391,47 @@ def fit_data(v, eps, sigma=None, *, laws=None, speed_independent_end=_SPEED_INDE
     """Fit measured eps at impact speeds v [m/s] (optional standard deviations sigma) with every candidate law.
 
     Candidates: viscoelastic Hertz at the delayed-recovery and naive ends (parameter "beta"
-    [s^(1/5) m^(-1/5)]), Tsuji ("zeta") and the linear dash-pot ("damping-ratio") at speed_independent_end;
-    laws (names as restitution's law names) restricts them. Returns a dict with the keys of
-    `restitution fit-data --json` (docs/fit.md): "fits" (one dict per law: "value", "ci68", "ci95" as
-    [low, high] from the profile of chi2, a bound at the edge of the checked range being None, "chi2_per_dof",
-    "aic", "converged", "residual_tests", ...), "best" (index of the lowest AIC), "sigma_estimated" (True
-    without sigma: the scatter is estimated from the residuals and the intervals use t quantiles). With a
-    Material, the Hertz fits carry "dissipative_constant_s" (A [s]) with its intervals. Raises ValueError for
-    bad data (eps outside (0, 1), v <= 0, sigma outside [1e-100, 1e100], NaN, too few points, an array of more
-    than one dimension) and for a law that is not a candidate.
+    [s^(1/5) m^(-1/5)]), Tsuji ("zeta") and the linear dash-pot ("damping-ratio") at speed_independent_end.
+
+    Parameters
+    ----------
+    v : array_like
+        Impact speeds [m/s], one per measurement.
+    eps : array_like
+        Measured coefficients of restitution, in (0, 1).
+    sigma : array_like, optional
+        Their standard deviations; without them the scatter is estimated from the residuals.
+    laws : str or sequence of str, optional
+        Restricts the candidates (names as restitution's law names).
+    speed_independent_end : {"delayed-recovery", "naive"}
+        The end of the speed-independent candidates.
+    material : Material, optional
+        Its elastic data give the Hertz fits' dissipative constant A [s].
+    tolerance, method
+        As for eps().
+
+    Returns
+    -------
+    dict
+        The keys of `restitution fit-data --json` (docs/fit.md): "fits" (one dict per law: "value", "ci68",
+        "ci95" as [low, high] from the profile of chi2, a bound at the edge of the checked range being None,
+        "chi2_per_dof", "aic", "converged", "residual_tests", ...), "best" (index of the lowest AIC),
+        "sigma_estimated" (True without sigma: the intervals use t quantiles). With a Material, the Hertz
+        fits carry "dissipative_constant_s" (A [s]) with its intervals.
+
+    Raises
+    ------
+    ValueError
+        Bad data (eps outside (0, 1), v <= 0, sigma outside [1e-100, 1e100], NaN, too few points, an array of
+        more than one dimension) or a law that is not a candidate.
+
+    Examples
+    --------
+    >>> import restitution
+    >>> fit = restitution.fit_data([0.5, 1.0, 2.0, 4.0], [0.90, 0.88, 0.86, 0.83])
+    >>> best = fit["fits"][fit["best"]]
+    >>> best["law"], best["end"], round(best["value"], 3)
+    ('viscoelastic-hertz', 'naive', 0.116)
     """
     if material is not None and not isinstance(material, Material):
         raise TypeError(f"material must be a restitution.Material, got {type(material).__name__}")
@@ -244,3 +442,53 @@ def fit_data(v, eps, sigma=None, *, laws=None, speed_independent_end=_SPEED_INDE
         laws = [_text("laws", law) for law in ([laws] if isinstance(laws, str) else laws)]
     return _core.fit_data(v, eps, sigma, laws, _text("speed_independent_end", speed_independent_end), material,
                           _tolerance(tolerance), _text("method", method))
+
+
+def build_info():
+    """Which build of restitution and of SUNDIALS this module runs.
+
+    A CVODE solve costs 2-3x more on Debian's unoptimized SUNDIALS than on the optimized build the project
+    makes (scripts/sundials); the numbers are the same. pip hides the build log that warns of it, so ask here.
+
+    Returns
+    -------
+    dict
+        {"version": restitution's version, "sundials": {"version": str, "optimized": bool,
+        "description": str}}, as `restitution --version` and the command line's JSON outputs say it.
+
+    Examples
+    --------
+    >>> import restitution
+    >>> info = restitution.build_info()
+    >>> info["version"] == restitution.__version__, sorted(info["sundials"])
+    (True, ['description', 'optimized', 'version'])
+    """
+    return _core.build_info()
+import os as _os  # noqa: E402 (sweep_to_file's section, kept together)
+
+
+def sweep_to_file(zetas, path, *, resume=False, end="both", tolerance=_TOLERANCE, method="auto", threads=None,
+                  law="viscoelastic-hertz", stop=None):
+    """Solve at every zeta of a 1-d array and write the table into the CSV file `path`, as `restitution sweep`
+    writes it (the same bytes for the same grid and options), keeping every finished row in path.partial.
+
+    Ctrl-C (KeyboardInterrupt) or stop (a callable polled every ~20 ms, stopping the sweep when it returns
+    True) ends the sweep after the points in progress and keeps path.partial; the same call with resume=True
+    continues from it and writes the same bytes as an uninterrupted sweep. end "naive", "delayed-recovery" or
+    "both"; law, tolerance, method and threads as for eps(). Returns a dict: "status" ("complete",
+    "already_complete": resume=True found path complete and computed nothing, or "stopped"), "path",
+    "partial_path", "points", "finished", "resumed" (rows kept from path.partial), "damaged_lines",
+    "first_damaged_line" (1-based, 0: none) and "failed" (points whose rows say why they failed). Raises
+    ValueError for a bad zeta or option, for path.partial without resume=True, and for a path.partial written
+    by another sweep (naming the file); OSError when a file cannot be written.
+    """
+    z = _real_array("zetas", zetas)
+    if z.ndim != 1:
+        raise ValueError(f"zetas must be a 1-d array, got {z.ndim} dimensions")
+    if stop is not None and not callable(stop):
+        raise TypeError(f"stop must be callable or None, got {type(stop).__name__}")
+    return _core.sweep_to_file(z.tolist(), _os.fspath(path), bool(resume), _text("end", end), _tolerance(tolerance),
+                               _text("method", method), _threads(threads), _law(law), stop)
+
+
+__all__.append("sweep_to_file")

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Type stubs of the restitution package. Physical quantities in SI units (named in each docstring);
 # zeta, tau, x and the EndResult/CollisionResult fields in natural units (x'(0) = 1).
-from typing import Any, Dict, Literal, Optional, Sequence, Tuple, Union, overload
+from typing import Any, Callable, Dict, Generic, Literal, Optional, Sequence, Tuple, TypedDict, TypeVar, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -16,6 +16,12 @@ Method = Literal["auto", "bdf", "adams", "taylor"]
 Law = Literal["viscoelastic-hertz", "linear-dashpot", "tsuji-hertz", "hertz-constant-damping"]  # the family table's order
 ArrayLike = Union[npt.ArrayLike, Sequence[float]]
 FloatArray = npt.NDArray[np.float64]
+# Scalars and arrays kept apart, so that the overloads give float for a scalar and an array for an array (a
+# 0-d array, which the stubs count as an array, gives a float at run time).
+Real = Union[float, np.floating[Any], np.integer[Any]]
+Array = Union[npt.NDArray[Any], Sequence[float], Sequence[Sequence[float]]]
+# progress= of array calls: a callable(done, total), or True for a tqdm bar.
+Progress = Union[None, bool, Callable[[int, int], object]]
 
 class NumericalFailure(ArithmeticError):
     """The solver could not deliver the requested accuracy (message names value and index)."""
@@ -54,7 +60,12 @@ class SolverStats:
     @property
     def convergence_failures(self) -> int: ...
 
-class CollisionResult:
+_Naive = TypeVar("_Naive", bound=Optional[EndResult], covariant=True)
+_Delayed = TypeVar("_Delayed", bound=Optional[EndResult], covariant=True)
+
+# Generic in the stubs only, so that solve() can say which ends a result holds: CollisionResult[EndResult,
+# EndResult] for end="both". A bare CollisionResult annotation means either end may be None.
+class CollisionResult(Generic[_Naive, _Delayed]):
     @property
     def zeta(self) -> float: ...
     @property
@@ -66,9 +77,9 @@ class CollisionResult:
     @property
     def max_compression(self) -> MaxCompression: ...
     @property
-    def naive(self) -> Optional[EndResult]: ...
+    def naive(self) -> _Naive: ...
     @property
-    def delayed_recovery(self) -> Optional[EndResult]: ...
+    def delayed_recovery(self) -> _Delayed: ...
     @property
     def stats(self) -> SolverStats: ...
     @property
@@ -140,45 +151,94 @@ class Calibration:
     def solves(self) -> int: ...
 
 @overload
-def zeta_of(zeta: float, *, beta: None = ..., velocity: None = ..., material: None = ...) -> float: ...
+def zeta_of(zeta: Real, *, beta: None = ..., velocity: None = ..., material: None = ...) -> float: ...
 @overload
-def zeta_of(
-    zeta: Optional[ArrayLike] = ...,
-    *,
-    beta: Optional[ArrayLike] = ...,
-    velocity: Optional[ArrayLike] = ...,
-    material: Optional[Material] = ...,
-) -> Union[float, FloatArray]: ...
+def zeta_of(zeta: Array, *, beta: None = ..., velocity: None = ..., material: None = ...) -> FloatArray: ...
+@overload
+def zeta_of(zeta: None = ..., *, beta: Real, velocity: Real, material: None = ...) -> float: ...
+@overload
+def zeta_of(zeta: None = ..., *, beta: Array, velocity: Union[Real, Array], material: None = ...) -> FloatArray: ...
+@overload
+def zeta_of(zeta: None = ..., *, beta: Real, velocity: Array, material: None = ...) -> FloatArray: ...
+@overload
+def zeta_of(zeta: None = ..., *, beta: None = ..., velocity: Real, material: Material) -> float: ...
+@overload
+def zeta_of(zeta: None = ..., *, beta: None = ..., velocity: Array, material: Material) -> FloatArray: ...
+
+# eps: a float for a scalar zeta (or scalar beta and velocity, or a material and a scalar velocity), an array
+# of the broadcast shape for an array.
 @overload
 def eps(
-    zeta: float, end: End = ..., tolerance: float = ..., method: Method = ..., *, beta: None = ...,
-    velocity: None = ..., material: None = ..., law: Law = ..., threads: Optional[int] = ...
+    zeta: Real, end: End = ..., tolerance: float = ..., method: Method = ..., *, beta: None = ...,
+    velocity: None = ..., material: None = ..., law: Law = ..., threads: Optional[int] = ..., progress: Progress = ...
 ) -> float: ...
 @overload
 def eps(
-    zeta: Optional[ArrayLike] = ...,
-    end: End = ...,
-    tolerance: float = ...,
-    method: Method = ...,
-    *,
-    beta: Optional[ArrayLike] = ...,
-    velocity: Optional[ArrayLike] = ...,  # m/s
-    material: Optional[Material] = ...,
-    law: Law = ...,
-    threads: Optional[int] = ...,  # worker threads for an array; None: all cores
-) -> Union[float, FloatArray]: ...
+    zeta: Array, end: End = ..., tolerance: float = ..., method: Method = ..., *, beta: None = ...,
+    velocity: None = ..., material: None = ..., law: Law = ..., threads: Optional[int] = ..., progress: Progress = ...
+) -> FloatArray: ...
+@overload
+def eps(
+    zeta: None = ..., end: End = ..., tolerance: float = ..., method: Method = ..., *, beta: Real,
+    velocity: Real, material: None = ..., law: Law = ..., threads: Optional[int] = ..., progress: Progress = ...
+) -> float: ...
+@overload
+def eps(
+    zeta: None = ..., end: End = ..., tolerance: float = ..., method: Method = ..., *, beta: Array,
+    velocity: Union[Real, Array], material: None = ..., law: Law = ..., threads: Optional[int] = ...,
+    progress: Progress = ...
+) -> FloatArray: ...
+@overload
+def eps(
+    zeta: None = ..., end: End = ..., tolerance: float = ..., method: Method = ..., *, beta: Real,
+    velocity: Array, material: None = ..., law: Law = ..., threads: Optional[int] = ..., progress: Progress = ...
+) -> FloatArray: ...
+@overload
+def eps(
+    zeta: None = ..., end: End = ..., tolerance: float = ..., method: Method = ..., *, beta: None = ...,
+    velocity: Real, material: Material, law: Law = ..., threads: Optional[int] = ..., progress: Progress = ...
+) -> float: ...
+@overload
+def eps(
+    zeta: None = ..., end: End = ..., tolerance: float = ..., method: Method = ..., *, beta: None = ...,
+    velocity: Array, material: Material, law: Law = ..., threads: Optional[int] = ..., progress: Progress = ...
+) -> FloatArray: ...
+
+# solve: the ends requested are the ends that are not None (end="both", the default: both).
+@overload
 def solve(
-    zeta: Optional[float] = ...,
-    end: Literal["naive", "delayed-recovery", "both"] = ...,
-    tolerance: float = ...,
-    method: Method = ...,
-    trajectory: bool = ...,
-    *,
-    beta: Optional[float] = ...,
-    velocity: Optional[float] = ...,  # m/s
-    material: Optional[Material] = ...,
-    law: Law = ...,
-) -> CollisionResult: ...
+    zeta: Optional[Real] = ..., end: Literal["both"] = ..., tolerance: float = ..., method: Method = ...,
+    trajectory: bool = ..., *, beta: Optional[Real] = ..., velocity: Optional[Real] = ...,
+    material: Optional[Material] = ..., law: Law = ...
+) -> CollisionResult[EndResult, EndResult]: ...
+@overload
+def solve(
+    zeta: Optional[Real], end: Literal["naive"], tolerance: float = ..., method: Method = ..., trajectory: bool = ...,
+    *, beta: Optional[Real] = ..., velocity: Optional[Real] = ..., material: Optional[Material] = ..., law: Law = ...
+) -> CollisionResult[EndResult, None]: ...
+@overload
+def solve(
+    zeta: Optional[Real] = ..., *, end: Literal["naive"], tolerance: float = ..., method: Method = ...,
+    trajectory: bool = ..., beta: Optional[Real] = ..., velocity: Optional[Real] = ...,
+    material: Optional[Material] = ..., law: Law = ...
+) -> CollisionResult[EndResult, None]: ...
+@overload
+def solve(
+    zeta: Optional[Real], end: Literal["delayed-recovery"], tolerance: float = ..., method: Method = ...,
+    trajectory: bool = ..., *, beta: Optional[Real] = ..., velocity: Optional[Real] = ...,
+    material: Optional[Material] = ..., law: Law = ...
+) -> CollisionResult[None, EndResult]: ...
+@overload
+def solve(
+    zeta: Optional[Real] = ..., *, end: Literal["delayed-recovery"], tolerance: float = ..., method: Method = ...,
+    trajectory: bool = ..., beta: Optional[Real] = ..., velocity: Optional[Real] = ...,
+    material: Optional[Material] = ..., law: Law = ...
+) -> CollisionResult[None, EndResult]: ...
+@overload
+def solve(
+    zeta: Optional[Real] = ..., end: str = ..., tolerance: float = ..., method: Method = ..., trajectory: bool = ...,
+    *, beta: Optional[Real] = ..., velocity: Optional[Real] = ..., material: Optional[Material] = ..., law: Law = ...
+) -> CollisionResult[Optional[EndResult], Optional[EndResult]]: ...
 def calibrate(
     eps: float,
     velocity: float,  # m/s
@@ -201,3 +261,29 @@ def fit_data(
     tolerance: float = ...,
     method: Method = ...,
 ) -> Dict[str, Any]: ...
+
+class SundialsInfo(TypedDict):
+    version: str  # e.g. "6.4.1"
+    optimized: bool  # False: Debian's libsundials, CVODE solves 2-3x slower
+    description: str
+
+class BuildInfo(TypedDict):
+    version: str  # restitution's, as __version__
+    sundials: SundialsInfo
+
+def build_info() -> BuildInfo: ...
+from os import PathLike
+from typing import Callable
+
+def sweep_to_file(
+    zetas: ArrayLike,
+    path: Union[str, PathLike[str]],
+    *,
+    resume: bool = ...,
+    end: Union[End, Literal["both"]] = ...,
+    tolerance: float = ...,
+    method: Method = ...,
+    threads: Optional[int] = ...,
+    law: Law = ...,
+    stop: Optional[Callable[[], bool]] = ...,
+) -> Dict[str, Any]: ...  # "status", "path", "partial_path", "points", "finished", "resumed", "damaged_lines", ...

@@ -9,9 +9,15 @@ with ValueError; inside that domain it returns the same bits as the C++ function
 one_minus_eps and zeta_from_eps and the exported C header (which go on beyond it with the large-zeta laws).
 No ODE solve (the library's cost per value: docs/fast.md).
 
-    >>> restitution.fast.eps(0.1)                                # float in, float out
-    >>> restitution.fast.eps(numpy.logspace(-3, 3, 7), end="naive")  # array in, same shape out
-    >>> restitution.fast.zeta_from_eps(0.8)                      # the inverse
+Examples
+--------
+>>> import numpy, restitution
+>>> round(restitution.fast.eps(0.1), 12)                           # float in, float out
+0.892858875507
+>>> restitution.fast.eps(numpy.logspace(-3, 3, 7), end="naive").shape  # array in, same shape out
+(7,)
+>>> round(restitution.fast.zeta_from_eps(0.8), 10)                 # the inverse
+0.2011366613
 
 Errors: ValueError naming the value and, for arrays, the index (NaN, zeta < 0 or > 1e6, eps outside (0, 1] or
 below eps(1e6), an unknown end, an empty array); TypeError for non-real arguments. Array loops run with the GIL released.

@@ -13,5 +13,7 @@ void bind_calibration(pybind11::module_& m);  // calibration.cpp
 void bind_series(pybind11::module_& m);       // series.cpp
 void bind_fast(pybind11::module_& m);         // fast.cpp: the certified fast table
 void bind_fit(pybind11::module_& m);          // fit.cpp: fit_data, measured eps(v)
+void bind_build_info(pybind11::module_& m);   // build_info.cpp: version and SUNDIALS build
+void bind_sweep_file(pybind11::module_& m);   // sweep_file.cpp: sweep_to_file, resumable
 
 }  // namespace restitution::python

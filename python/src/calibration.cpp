@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "pickle_state.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
@@ -26,8 +27,35 @@ std::optional<double> hertz_only(const Calibration& c) {
   return c.*member;
 }
 
-std::string optional_text(const std::optional<double>& x) {
-  return x ? fmt::format("{:.17g}", *x) : std::string("None");
+std::string optional_text(const std::optional<double>& x, const char* unit) {
+  return x ? fmt::format("{} {}", *x, unit) : std::string("None");
+}
+
+std::string calibration_repr(const Calibration& c) {
+  return fmt::format(
+      "Calibration(law='{}', zeta={}, parameter={}, beta={}, eps_at_zeta={}, characteristic_velocity={}, "
+      "dissipative_constant={}, solves={})",
+      law_name(c.law), c.zeta, c.parameter,
+      optional_text(hertz_only<&Calibration::beta>(c), "s^(1/5) m^(-1/5)"), c.eps_at_zeta,
+      optional_text(hertz_only<&Calibration::characteristic_velocity_m_s>(c), "m/s"),
+      optional_text(c.dissipative_constant_s, "s"), c.solves);
+}
+
+py::tuple calibration_state(const Calibration& c) {
+  return py::make_tuple(law_name(c.law), c.zeta, c.parameter, c.beta, c.eps_at_zeta,
+                        c.characteristic_velocity_m_s, c.dissipative_constant_s, c.solves);
+}
+
+Calibration calibration_from_state(const py::tuple& t) {
+  check_state(t, 8, "Calibration");
+  return Calibration{law_from_name(t[0].cast<std::string>()),
+                     t[1].cast<double>(),
+                     t[2].cast<double>(),
+                     t[3].cast<double>(),
+                     t[4].cast<double>(),
+                     t[5].cast<double>(),
+                     t[6].cast<std::optional<double>>(),
+                     t[7].cast<int>()};
 }
 
 }  // namespace
@@ -50,14 +78,8 @@ void bind_calibration(py::module_& m) {
       .def_readonly("dissipative_constant", &Calibration::dissipative_constant_s,
                     "A [s] for the material, or None without one.")
       .def_readonly("solves", &Calibration::solves, "Collisions integrated by the root finder.")
-      .def("__repr__", [](const Calibration& c) {
-        return fmt::format(
-            "Calibration(law='{}', zeta={:.17g}, beta={}, characteristic_velocity={}, "
-            "dissipative_constant={})",
-            law_name(c.law), c.zeta, optional_text(hertz_only<&Calibration::beta>(c)),
-            optional_text(hertz_only<&Calibration::characteristic_velocity_m_s>(c)),
-            optional_text(c.dissipative_constant_s));
-      });
+      .def("__repr__", &calibration_repr)
+      .def(py::pickle(&calibration_state, &calibration_from_state));
   m.def(
       "calibrate",
       [](double eps, double velocity, const std::string& end, double tolerance, const std::string& method,

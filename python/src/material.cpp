@@ -11,6 +11,7 @@
 #include <type_traits>
 
 #include "bindings.hpp"
+#include "pickle_state.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 
@@ -112,14 +113,89 @@ py::object viscosities_of(const Material& m) {
   return py::make_tuple(m.viscosities->eta1_pa_s, m.viscosities->eta2_pa_s);
 }
 
+std::string optional_text(const std::optional<double>& x, const char* unit) {
+  return x ? fmt::format("{} {}", *x, unit) : std::string("None");
+}
+
+std::string pair_text(const py::object& pair, const char* unit) {
+  if (pair.is_none()) return "None";
+  const auto t = pair.cast<py::tuple>();
+  return fmt::format("({}, {}) {}", t[0].cast<double>(), t[1].cast<double>(), unit);
+}
+
+// Every field as given, with its SI unit (the repr is for reading, not for eval()).
+std::string material_repr(const Material& x) {
+  return fmt::format(
+      "Material(young_modulus={} Pa, poisson_ratio={}, radii=({}, {}) m, density={}, masses={}, "
+      "dissipative_constant={}, viscosities={})",
+      x.young_modulus_pa, x.poisson_ratio, x.radius1_m, x.radius2_m, optional_text(x.density_kg_m3, "kg/m^3"),
+      pair_text(masses_of(x), "kg"), optional_text(x.dissipative_constant_s, "s"),
+      pair_text(viscosities_of(x), "Pa s"));
+}
+
+// The pickled state: the fields as given, so that an unpickled Material reports the same ones.
+py::tuple material_state(const Material& x) {
+  return py::make_tuple(x.young_modulus_pa, x.poisson_ratio, x.radius1_m, x.radius2_m, x.density_kg_m3,
+                        masses_of(x), x.dissipative_constant_s, viscosities_of(x));
+}
+
+Material material_from_state(const py::tuple& t) {
+  check_state(t, 8, "Material");
+  Material x;
+  x.young_modulus_pa = t[0].cast<double>();
+  x.poisson_ratio = t[1].cast<double>();
+  x.radius1_m = t[2].cast<double>();
+  x.radius2_m = t[3].cast<double>();
+  x.density_kg_m3 = t[4].cast<std::optional<double>>();
+  if (const auto masses = t[5].cast<std::optional<Pair>>()) {
+    x.mass1_kg = (*masses)[0];
+    x.mass2_kg = (*masses)[1];
+  }
+  x.dissipative_constant_s = t[6].cast<std::optional<double>>();
+  if (const auto eta = t[7].cast<std::optional<Pair>>()) x.viscosities = Viscosities{(*eta)[0], (*eta)[1]};
+  check_material(x);  // a hand-made state is held to the constructor's rules
+  return x;
+}
+
 }  // namespace
 
 void bind_material(py::module_& m) {
-  py::class_<Material>(m, "Material",
-                       "Two spheres of one viscoelastic material, in SI units (the fields of a scene's "
-                       "[material] table). Give radius or radii, density or mass or masses, and "
-                       "dissipative_constant or viscosities (or neither, for calibrate()). Raises ValueError "
-                       "naming the field that is out of range.")
+  py::class_<Material>(
+      m, "Material",
+      R"(Two spheres of one viscoelastic material, in SI units (the fields of a scene's [material] table).
+
+Parameters
+----------
+young_modulus : float
+    Young's modulus Y [Pa], > 0.
+poisson_ratio : float
+    Poisson ratio nu, in (-1, 0.5).
+radius, radii : float or (float, float)
+    R [m] of both spheres, or (R1, R2) [m].
+density, mass, masses : float or (float, float)
+    Density [kg/m^3], or the mass [kg] of both, or (m1, m2) [kg].
+dissipative_constant, viscosities : float or (float, float), optional
+    A [s], or (eta1, eta2) [Pa s]; neither for calibrate(), which finds A.
+
+Raises
+------
+ValueError
+    A field out of range, named.
+TypeError
+    A missing, unknown or mistyped field, or a positional argument.
+
+Examples
+--------
+>>> import pickle, restitution
+>>> rubber = restitution.Material(young_modulus=1e7, poisson_ratio=0.45, radius=0.01, density=1100.0,
+...                               dissipative_constant=5.8e-5)
+>>> rubber
+Material(young_modulus=10000000 Pa, poisson_ratio=0.45, radii=(0.01, 0.01) m, density=1100 kg/m^3, masses=None, dissipative_constant=5.8e-05 s, viscosities=None)
+>>> round(rubber.beta, 6)   # s^(1/5) m^(-1/5)
+0.201004
+>>> pickle.loads(pickle.dumps(rubber)).dissipative_constant
+5.8e-05
+)")
       .def(py::init(&material_from_keywords),
            "Material(*, young_modulus, poisson_ratio, radius=None, radii=None, density=None, mass=None, "
            "masses=None, dissipative_constant=None, viscosities=None): "
@@ -151,10 +227,8 @@ void bind_material(py::module_& m) {
       .def_property_readonly(
           "beta", [](const Material& x) { return material_constants(x).hertz.beta; },
           "beta = (3/2) A k^(2/5) [s^(1/5) m^(-1/5)], so that zeta = beta v^(1/5).")
-      .def("__repr__", [](const Material& x) {
-        return fmt::format("Material(young_modulus={}, poisson_ratio={}, radii=({}, {}), ...)",
-                           x.young_modulus_pa, x.poisson_ratio, x.radius1_m, x.radius2_m);
-      });
+      .def("__repr__", &material_repr)
+      .def(py::pickle(&material_state, &material_from_state));
 }
 
 }  // namespace restitution::python

@@ -14,7 +14,7 @@ from conftest import SOURCE_DIR
 # What `fit-data --json` writes besides the fit itself: the input echoed back (source, data), the best fit's
 # names, with a material its k and the Hertz A a DEM code takes (docs/fit.md), and the SUNDIALS build. Everything else is the
 # fit result, whose keys and values restitution.fit_data must give alike.
-_CLI_ONLY_FIT_KEYS = {"source", "data", "best_law", "best_end", "k", "dissipative_constant_s", "sundials"}
+_CLI_ONLY_FIT_KEYS = {"source", "data", "best_law", "best_end", "k", "dissipative_constant_s", "sundials", "restitution"}
 _MATERIAL = {"young_modulus": 7e10, "poisson_ratio": 0.3, "radius": 0.01, "density": 2700.0}
 
 

@@ -3,23 +3,22 @@
 """The 2008 paper's Fig. 2 with the derived large-zeta laws, local slopes against zeta, and the numbers quoted
 in docs/asymptotics.md (fitted exponents per range, the measured first correction of the delayed end).
 
-Usage: asymptotics.py RESTITUTION_EXE OUT_DIR
-Writes OUT_DIR/asymptotics_fig2.png, OUT_DIR/asymptotics_slopes.png, OUT_DIR/asymptotics.json.
+Usage: asymptotics.py RESTITUTION_EXE OUT_DIR [--format png,pdf,svg]
+Writes OUT_DIR/asymptotics_fig2.png, OUT_DIR/asymptotics_slopes.png (and each other format), OUT_DIR/asymptotics.json.
 """
+import argparse
 import json
 import math
 import os
 import subprocess
-import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-import numpy as np
+import style  # first: it selects the Agg backend and sets the style
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 
 XM = 1.5 ** (2 / 3)  # (3/2)^{2/3}
 Q = 1.5 ** (1 / 3)  # sqrt(X_m)
+END_WORDS = {"naive": style.ENDS["naive"], "delayed-recovery": style.ENDS["delayed_recovery"]}
 LN_A = math.log(XM) + math.log(2) + 0.5 * math.log(3) - math.pi / (2 * math.sqrt(3))
 
 
@@ -40,7 +39,7 @@ def delayed_slope(z):
     return -5 / 3 + (5 / 3) * d * (LN_A - 2 * np.log(d) - 2.5) / Q - (10 / 3) * d / Q
 
 
-def main(exe, out_dir):
+def main(exe, out_dir, formats):
     os.makedirs(out_dir, exist_ok=True)
     naive = fit(exe, "naive", 0.1, 1e5, 37)
     delayed = fit(exe, "delayed-recovery", 0.1, 1e6, 43)
@@ -71,49 +70,52 @@ def main(exe, out_dir):
     with open(os.path.join(out_dir, "asymptotics.json"), "w") as f:
         json.dump(summary, f, indent=1)
 
-    fig, axes = plt.subplots(2, 1, figsize=(7, 9))
+    fig, axes = plt.subplots(2, 1, figsize=(6.4, 8.5))
     for ax, data, law, label in ((axes[0], naive, lambda zz: kappa * zz ** -5.0,
-                                  f"derived {kappa:.10f} zeta^-5"),
+                                  rf"derived ${kappa:.10f}\,\zeta^{{-5}}$"),
                                  (axes[1], delayed, lambda zz: delayed_law(zz, 1),
-                                  "derived (3/2)^(2/3) zeta^(-5/3)")):
+                                  r"derived $(3/2)^{2/3}\zeta^{-5/3}$")):
         zz = np.array([p["zeta"] for p in data["local_slopes"]])
         ee = np.array([p["eps"] for p in data["local_slopes"]])
-        ax.loglog(zz, ee, "o", ms=4, label=f"numerics ({data['end']})")
+        ax.loglog(zz, ee, "o", ms=4, label="numerics, " + END_WORDS[data["end"]])
         ax.loglog(zz, law(zz), "-", label=label)
         big = zz >= 10
         fz = fit(exe, data["end"], 10, zz[-1], 9)
         ax.loglog(zz[big], fz["prefactor"] * zz[big] ** fz["exponent_zeta"], "--",
-                  label=f"least squares zeta in [10, {zz[-1]:g}]: exponent {fz['exponent_zeta']:.4f}")
-        ax.set_ylabel("eps")
-        ax.grid(True, alpha=0.3)
-    axes[1].loglog(zs[zs >= 10], delayed_law(zs[zs >= 10], 2), ":", label="derived with first correction")
+                  label=rf"least squares over $\zeta \in [10, {zz[-1]:g}]$: exponent {fz['exponent_zeta']:.4f}")
+        ax.set_ylabel(style.EPS)
+        ax.grid(True)
+    axes[1].loglog(zs[zs >= 10], delayed_law(zs[zs >= 10], 2), ":", label="derived, with first correction")
     anchor = 100.0
     axes[1].loglog(zs[zs >= 1], delayed_law(anchor, 2) * (zs[zs >= 1] / anchor) ** -1.655, "-.", lw=0.8,
-                   label="paper: eps ~ v^-0.331 (zeta^-1.655), through zeta = 100")
-    axes[0].set_title("2008 paper Fig. 2: naive end (top), delayed recovery (bottom)")
-    axes[1].set_xlabel("zeta = beta v^(1/5)")
+                   label=r"paper: $\varepsilon \propto v^{-0.331}$ ($\zeta^{-1.655}$), through $\zeta = 100$")
+    style.set_title(axes[0], "2008 paper, Fig. 2: naive end (top), delayed recovery (bottom)")
+    axes[1].set_xlabel(style.ZETA)
     for ax in axes:
         ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, "asymptotics_fig2.png"), dpi=120)
+    style.save(fig, os.path.join(out_dir, "asymptotics_fig2.png"), formats)
 
-    fig, ax = plt.subplots(figsize=(7, 5))
+    fig, ax = plt.subplots(figsize=(6.4, 4.5))
     nz = np.array([p["zeta"] for p in naive["local_slopes"]])
     ax.loglog(nz, [max(abs(p["slope"] + 5), 1e-13) for p in naive["local_slopes"]], "o-", ms=3,
-              label="naive: |slope + 5|")
-    ax.loglog(zs, np.abs(ss + 5 / 3), "s-", ms=3, label="delayed: |slope + 5/3|")
+              label=r"naive end: $|s + 5|$")
+    ax.loglog(zs, np.abs(ss + 5 / 3), "s-", ms=3, label=r"delayed recovery: $|s + 5/3|$")
     big = zs >= 3
-    ax.loglog(zs[big], np.abs(delayed_slope(zs[big]) + 5 / 3), "--", label="delayed: derived first correction")
+    ax.loglog(zs[big], np.abs(delayed_slope(zs[big]) + 5 / 3), "--", label="delayed recovery: derived first correction")
     ax.loglog(zs, [p["error"] for p in delayed["local_slopes"]], ":", color="gray", label="error estimate")
-    ax.axhline(abs(-1.655 + 5 / 3), color="k", lw=0.8, label="paper's -0.331 (x5) against -5/3")
-    ax.set_xlabel("zeta")
-    ax.set_ylabel("distance of d ln eps / d ln zeta from its limit")
-    ax.grid(True, alpha=0.3)
+    ax.axhline(abs(-1.655 + 5 / 3), color="k", lw=0.8, label=r"paper's $-0.331 \times 5$ against $-5/3$")
+    ax.set_xlabel(style.ZETA)
+    ax.set_ylabel(r"local slope $s = d\ln\varepsilon / d\ln\zeta$, distance from its limit")
+    ax.grid(True)
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, "asymptotics_slopes.png"), dpi=120)
+    style.save(fig, os.path.join(out_dir, "asymptotics_slopes.png"), formats)
     print(json.dumps(summary, indent=1))
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    parser = argparse.ArgumentParser()
+    parser.add_argument("exe")
+    parser.add_argument("out_dir")
+    style.add_format_argument(parser)
+    args = parser.parse_args()
+    main(args.exe, args.out_dir, args.format)

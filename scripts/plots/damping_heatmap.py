@@ -3,7 +3,7 @@
 set-up speed over requested eps (a line per clamp); bottom, heat maps of the physical speed dependence
 eps(v)/eps(v_ref) - 1 over requested eps x impact speed, one per clamp.
 
-usage: damping_heatmap.py CSV PNG [--title T]
+usage: damping_heatmap.py CSV PNG [--title T] [--format png,pdf,svg]
 The CSV has requested_eps, velocity_m_s, recipe_error_at_calibration_speed_clamp_on|off,
 speed_dependence_clamp_on|off (one row per point; the recipe error repeats along the speeds).
 """
@@ -11,11 +11,13 @@ import argparse
 import csv
 import math
 
-import matplotlib
-
-matplotlib.use("Agg")
+import style  # first: it selects the Agg backend and sets the style
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.colors import TwoSlopeNorm  # noqa: E402
+
+# The clamp keeps the contact force >= 0: with it a collision ends at delayed recovery, without it at x = 0.
+CLAMP = {"on": "clamp on (force ≥ 0)", "off": "clamp off"}
+REQUESTED = r"requested $\varepsilon_\mathrm{req}$"
 
 
 def edges(values, log):
@@ -34,21 +36,22 @@ def main():
     p.add_argument("csv")
     p.add_argument("png")
     p.add_argument("--title", default="")
+    style.add_format_argument(p)
     a = p.parse_args()
     with open(a.csv, newline="") as f:
         rows = list(csv.DictReader(f))
     eps = sorted({float(r["requested_eps"]) for r in rows})
     speeds = sorted({float(r["velocity_m_s"]) for r in rows})
-    fig = plt.figure(figsize=(11, 8))
+    fig = plt.figure(figsize=(9, 7))
     top = fig.add_subplot(2, 1, 1)
-    for clamp, style in (("on", "-o"), ("off", "--s")):
+    for clamp, line in (("on", "-o"), ("off", "--s")):
         by_eps = {float(r["requested_eps"]): float(r["recipe_error_at_calibration_speed_clamp_" + clamp])
                   for r in rows}
-        top.plot(eps, [by_eps[e] for e in eps], style, label="clamp " + clamp)
+        top.plot(eps, [by_eps[e] for e in eps], line, label=CLAMP[clamp])
     top.axhline(0.0, color="grey", linewidth=0.8)
-    top.set_xlabel("requested eps")
-    top.set_ylabel("eps(v_ref) / requested - 1")
-    top.set_title("recipe error at the set-up speed")
+    top.set_xlabel(REQUESTED)
+    top.set_ylabel(r"$\varepsilon(v_\mathrm{ref}) / \varepsilon_\mathrm{req} - 1$")
+    style.set_title(top, "the recipe's own error at the set-up speed")
     top.legend()
     for index, clamp in enumerate(("on", "off")):
         ax = fig.add_subplot(2, 2, 3 + index)
@@ -61,14 +64,13 @@ def main():
         mesh = ax.pcolormesh(edges(eps, False), edges(speeds, True), grid, shading="flat", cmap="RdBu_r",
                              norm=TwoSlopeNorm(vcenter=0.0, vmin=-bound, vmax=bound))
         ax.set_yscale("log")
-        ax.set_xlabel("requested eps")
+        ax.set_xlabel(REQUESTED)
         if index == 0:
-            ax.set_ylabel("impact speed v [m/s]")
-        ax.set_title("speed dependence, clamp " + clamp)
-        fig.colorbar(mesh, ax=ax, label="eps(v) / eps(v_ref) - 1")
-    fig.suptitle(a.title)
-    fig.tight_layout()
-    fig.savefig(a.png, dpi=120)
+            ax.set_ylabel(style.axis_label("velocity_m_s"))
+        style.set_title(ax, "speed dependence, " + CLAMP[clamp])
+        fig.colorbar(mesh, ax=ax, label=r"$\varepsilon(v) / \varepsilon(v_\mathrm{ref}) - 1$")
+    style.suptitle(fig, a.title)
+    style.save(fig, a.png, a.format)
 
 
 if __name__ == "__main__":

@@ -17,9 +17,7 @@ import subprocess
 import sys
 import tempfile
 
-import matplotlib
-
-matplotlib.use("Agg")
+import style  # first: it selects the Agg backend and sets the style
 import matplotlib.pyplot as plt  # noqa: E402
 
 ZETA_MIN, ZETA_MAX = 1e-4, 1e4
@@ -31,6 +29,7 @@ APPROXIMATIONS = [
     ("naive-series:computed-40", "naive", "naive_series_40/dem", "naive series, 40 terms"),
     ("delayed-recovery-series:computed-60", "delayed", "delayed_recovery_series_60/dem", "delayed series, 60 terms"),
 ]
+END_WORDS = {"naive": "naive end", "delayed": "delayed recovery"}
 FAST = {"naive": "fast_eps/dem/naive", "delayed": "fast_eps/dem/delayed-recovery"}
 
 
@@ -112,19 +111,19 @@ def main(exe, bench_csv, reference_csv, png_path, md_path):
     for end, marker in (("naive", "o"), ("delayed", "s")):
         z, e = zip(*fast[end])
         left.plot(z, [max(v, 1e-17) for v in e], marker, color="k", mfc="none",
-                  label=f"fast table, {end} (vs __float128 reference)")
+                  label=f"fast table, {END_WORDS[end]} (against the __float128 reference)")
     left.axhline(1e-13, color="k", lw=0.8, ls=":")
     left.set_xscale("log")
     left.set_yscale("log")
     left.set_ylim(1e-17, 1e2)
     left.set_xlabel(r"$\zeta$ (solid: naive end, dashed: delayed recovery)")
     left.set_ylabel(r"relative error of $\varepsilon$ and of $1-\varepsilon$ (the larger)")
-    left.set_title("error against the fast table (certified 1e-13)")
+    style.set_title(left, r"error against the fast table (certified to $10^{-13}$)")
     left.legend(fontsize=7, loc="upper left")
 
     entries = [(label, costs.get(bench, float("nan")), max(e for _, e in curves[name]))
                for name, _, bench, label in APPROXIMATIONS]
-    entries += [(f"fast table, {end}", costs.get(FAST[end], float("nan")), max(e for _, e in fast[end]))
+    entries += [(f"fast table, {END_WORDS[end]}", costs.get(FAST[end], float("nan")), max(e for _, e in fast[end]))
                 for end in ("naive", "delayed")]
     for i, (label, ns, worst) in enumerate(entries):
         shown = min(max(worst, 1e-17), 1e3)  # the series diverge beyond their radius: drawn at the top
@@ -134,11 +133,10 @@ def main(exe, bench_csv, reference_csv, png_path, md_path):
                        textcoords="offset points", xytext=(4, 4 - 12 * (i % 2)))
     right.set_yscale("log")
     right.set_xscale("log")
-    right.set_xlabel("median CPU ns per call (random ζ in [1e-4, 1e4])")
+    right.set_xlabel(r"median CPU time per call (ns), random $\zeta \in [10^{-4}, 10^4]$")
     right.set_ylabel(r"worst error over $\zeta \in [10^{-4}, 10^4]$")
-    right.set_title("accuracy against cost")
-    fig.tight_layout()
-    fig.savefig(png_path, dpi=110)
+    style.set_title(right, "accuracy against cost")
+    style.save(fig, png_path)
 
     with open(md_path, "w") as f:
         f.write("| approximation | median CPU ns | worst relative error of ε, 1 − ε on [1e-4, 1e4] |\n|---|---|---|\n")

@@ -2,7 +2,7 @@
 """Plot a scene's [[fit]] (restitution run): the measured eps with error bars, each law's eps(v) with its 95 %
 band, and below the residuals of each law against the speed.
 
-usage: fit_data.py DATA_CSV PNG --curves CURVES_CSV [--title T]
+usage: fit_data.py DATA_CSV PNG --curves CURVES_CSV [--title T] [--format png,pdf,svg]
 DATA_CSV: v, eps, sigma (nan without), model_<law>, residual_<law>; CURVES_CSV: v, eps_<law>, low_<law>,
 high_<law> (the band's edges; nan where a bound lies beyond the checked range).
 """
@@ -10,9 +10,7 @@ import argparse
 import csv
 import math
 
-import matplotlib
-
-matplotlib.use("Agg")
+import style  # first: it selects the Agg backend and sets the style
 import matplotlib.pyplot as plt  # noqa: E402
 
 
@@ -28,20 +26,21 @@ def main():
     p.add_argument("png")
     p.add_argument("--curves", required=True)
     p.add_argument("--title", default="")
+    style.add_format_argument(p)
     a = p.parse_args()
     data = read(a.data)
     curves = read(a.curves)
     laws = [c[len("eps_"):] for c in curves if c.startswith("eps_")]
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 7), sharex=True, gridspec_kw={"height_ratios": [3, 2]})
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(6.4, 6.4), sharex=True, gridspec_kw={"height_ratios": [3, 2]})
     sigma = data["sigma"]
     has_sigma = all(math.isfinite(s) for s in sigma)
     top.errorbar(data["v"], data["eps"], yerr=sigma if has_sigma else None, fmt="o", color="black", ms=4,
-                 capsize=2, label="data" + ("" if has_sigma else " (no sigma)"), zorder=3)
+                 capsize=2, label="measured" + (r" $\pm\,\sigma$" if has_sigma else r" (no $\sigma$ given)"), zorder=3)
     for i, law in enumerate(laws):
         color = f"C{i}"
         # Line styles differ so that tied laws (Tsuji and the dash-pot fit the same constant) stay visible.
         top.plot(curves["v"], curves["eps_" + law], color=color, linestyle=["-", "--", "-.", ":"][i % 4],
-                 label=law.replace("_", ", "))
+                 label=style.law_label(law) + ", 95 % band")
         low, high = curves["low_" + law], curves["high_" + law]
         pairs = [(v, lo, hi) for v, lo, hi in zip(curves["v"], low, high) if math.isfinite(lo) and math.isfinite(hi)]
         if pairs:
@@ -51,13 +50,14 @@ def main():
             bottom.plot(data["v"], data["residual_" + law], "o", color=color, ms=3)
     bottom.axhline(0.0, color="gray", linewidth=0.8)
     top.set_xscale("log")
-    top.set_ylabel("eps")
-    top.set_title(a.title)
-    top.legend(fontsize=8)
-    bottom.set_xlabel("impact speed v [m/s]")
-    bottom.set_ylabel("eps - eps_law")
-    fig.tight_layout()
-    fig.savefig(a.png, dpi=120)
+    top.set_ylabel(style.EPS)
+    style.set_title(top, a.title)
+    top.legend()
+    bottom.set_xlabel(style.axis_label("v"))
+    bottom.set_ylabel(r"residual $\varepsilon - \varepsilon_\mathrm{law}$")
+    bottom.grid(True)
+    top.grid(True, which="both")
+    style.save(fig, a.png, a.format)
 
 
 if __name__ == "__main__":

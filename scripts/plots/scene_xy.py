@@ -2,16 +2,15 @@
 """Plot columns of a scene's CSV table against one column (restitution run).
 
 usage: scene_xy.py CSV PNG --x COL --y COL[,COL...] [--dashed COL,...] [--xscale log] [--yscale log]
-                   [--title T] [--xlabel L] [--ylabel L] [--error COL,...] [--error-label L]
---error adds a second, log-scaled panel with the absolute values of those columns.
+                   [--title T] [--xlabel L] [--ylabel L] [--error COL,...] [--error-label L] [--format png,pdf,svg]
+--error adds a second, log-scaled panel with the absolute values of those columns. Legends say what each column
+is (style.curve_label); the x axis is labelled from its column unless --xlabel is given.
 """
 import argparse
 import csv
 import math
 
-import matplotlib
-
-matplotlib.use("Agg")
+import style  # first: it selects the Agg backend and sets the style
 import matplotlib.pyplot as plt  # noqa: E402
 
 
@@ -46,34 +45,45 @@ def main():
     p.add_argument("--title", default="")
     p.add_argument("--xlabel", default=None)
     p.add_argument("--ylabel", default="")
+    style.add_format_argument(p)
     a = p.parse_args()
     data = read(a.csv)
     errors = split(a.error)
-    fig, axes = plt.subplots(2 if errors else 1, 1, figsize=(7, 7 if errors else 4.5), sharex=True, squeeze=False)
+    fig, axes = plt.subplots(2 if errors else 1, 1, figsize=(6.4, 6.4 if errors else 4.2), sharex=True,
+                             squeeze=False)
     top = axes[0][0]
     logx, logy = a.xscale == "log", a.yscale == "log"
-    for name in split(a.y) + split(a.dashed) + split(a.points):
-        style = "--" if name in split(a.dashed) else ("o" if name in split(a.points) else "-")
+    curves = split(a.y) + split(a.dashed) + split(a.points)
+    families = list(dict.fromkeys(style.curve_family(name) for name in curves))
+    for name in curves:
+        line = "--" if name in split(a.dashed) else ("o" if name in split(a.points) else "-")
         xs, ys = finite_pairs(data[a.x], data[name], logx, logy)
-        top.plot(list(xs), list(ys), style, label=name, markersize=3)
+        # Each family has its colour; points of their own (measurements, actual = requested) are black.
+        family = style.curve_family(name)
+        alone = line == "o" and all(style.curve_family(c) != family for c in curves if c != name)
+        color = "k" if alone else f"C{families.index(family) % 10}"
+        top.plot(list(xs), list(ys), line, label=style.curve_label(name), markersize=3, color=color)
     top.set_xscale(a.xscale)
     top.set_yscale(a.yscale)
     top.set_ylabel(a.ylabel)
-    top.set_title(a.title)
+    style.set_title(top, a.title)
     top.grid(True, which="both", alpha=0.3)
-    top.legend(fontsize=8)
+    style.legend(top)
     if errors:
         bottom = axes[1][0]
         for name in errors:
             xs, ys = finite_pairs(data[a.x], [abs(v) for v in data[name]], logx, True)
-            bottom.plot(list(xs), list(ys), "-", label=name)
+            family = style.curve_family(name)
+            if family not in families:
+                families.append(family)
+            bottom.plot(list(xs), list(ys), "-", label=style.curve_label(name),
+                        color=f"C{families.index(family) % 10}")
         bottom.set_yscale("log")
         bottom.set_ylabel(a.error_label)
         bottom.grid(True, which="both", alpha=0.3)
-        bottom.legend(fontsize=8)
-    axes[-1][0].set_xlabel(a.xlabel or a.x)
-    fig.tight_layout()
-    fig.savefig(a.png, dpi=120)
+        style.legend(bottom)
+    axes[-1][0].set_xlabel(a.xlabel or style.axis_label(a.x))
+    style.save(fig, a.png, a.format)
 
 
 if __name__ == "__main__":

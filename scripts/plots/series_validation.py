@@ -3,14 +3,12 @@
 """Plot of `restitution series validate`: the 2008 paper's Fig. 1 (eps against zeta, both ends, solver with
 the series) and the relative error of eps and of 1 - eps of every approximation (log scales).
 
-usage: series_validation.py series_validation.csv out.png
+usage: series_validation.py series_validation.csv out.png [--format png,pdf,svg]
 """
+import argparse
 import csv
-import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
+import style  # first: it selects the Agg backend and sets the style
 import matplotlib.pyplot as plt  # noqa: E402
 
 
@@ -26,40 +24,45 @@ def clipped(values, floor=1e-17):
     return [max(v, floor) if v == v else float("nan") for v in values]
 
 
-def main(csv_path, png_path):
-    col, names = read(csv_path)
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("csv")
+    p.add_argument("png")
+    style.add_format_argument(p)
+    a = p.parse_args()
+    col, names = read(a.csv)
     zeta = col["zeta"]
-    fig, (top, mid, bottom) = plt.subplots(3, 1, figsize=(8, 12), sharex=True)
+    fig, (top, mid, bottom) = plt.subplots(3, 1, figsize=(6.4, 9.6), sharex=True)
 
-    top.plot(zeta, col["naive_eps"], "k-", lw=2, label="solver, naive end")
-    top.plot(zeta, col["delayed_recovery_eps"], "b-", lw=2, label="solver, delayed recovery")
+    top.plot(zeta, col["naive_eps"], "k-", lw=2, label="numerics, " + style.ENDS["naive"])
+    top.plot(zeta, col["delayed_recovery_eps"], "b-", lw=2, label="numerics, " + style.ENDS["delayed_recovery"])
     series_styles = {"naive-series:published": ("k", "o"), "delayed-recovery-series:published": ("b", "s")}
     for name, (color, marker) in series_styles.items():
         if name + "_eps" in col:
             top.plot(zeta[::3], col[name + "_eps"][::3], color=color, marker=marker, ls="none", mfc="none",
-                     label=name + " (2008 series)")
+                     label=style.approximation_label(name))
     top.set_xscale("log")
     top.set_ylim(0.0, 1.05)
-    top.set_ylabel(r"$\varepsilon$")
-    top.set_title(r"$\varepsilon(\zeta)$, $\zeta = \beta v^{1/5}$ (2008 paper, Fig. 1)")
-    top.legend(loc="lower left", fontsize=8)
+    top.set_ylabel(style.EPS)
+    style.set_title(top, r"$\varepsilon(\zeta)$, $\zeta = \beta v^{1/5}$ (2008 paper, Fig. 1)")
+    top.legend(loc="lower left")
 
     cmap = plt.get_cmap("tab10")
     for i, name in enumerate(names):
-        style = "-" if name.startswith(("naive", "pade-1999", "simple")) else "--"
-        mid.plot(zeta, clipped(col[name + "_rel_err_eps"]), style, color=cmap(i % 10), label=name)
-        bottom.plot(zeta, clipped(col[name + "_rel_err_one_minus_eps"]), style, color=cmap(i % 10), label=name)
+        line = "-" if name.startswith(("naive", "pade-1999", "simple")) else "--"
+        label = style.approximation_label(name)
+        mid.plot(zeta, clipped(col[name + "_rel_err_eps"]), line, color=cmap(i % 10), label=label)
+        bottom.plot(zeta, clipped(col[name + "_rel_err_one_minus_eps"]), line, color=cmap(i % 10), label=label)
     for ax, what in ((mid, r"$\varepsilon$"), (bottom, r"$1-\varepsilon$")):
         ax.set_yscale("log")
         ax.set_ylim(1e-17, 1e2)
         for level in (1e-3, 1e-6, 1e-10):
             ax.axhline(level, color="grey", lw=0.5, ls=":")
         ax.set_ylabel("relative error of " + what)
-    mid.legend(fontsize=7, ncol=2, loc="upper left")
-    bottom.set_xlabel(r"$\zeta$ (solid: naive end, dashed: delayed recovery)")
-    fig.tight_layout()
-    fig.savefig(png_path, dpi=120)
+    mid.legend(fontsize=6.5, ncol=2, loc="upper left")
+    bottom.set_xlabel(style.ZETA + " (solid: naive end, dashed: delayed recovery)")
+    style.save(fig, a.png, a.format)
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    main()

@@ -1,20 +1,26 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-3-Clause
 """Work-precision plot: worst error over the zeta set against the mean run time per solve, one curve per
-engine (points: tolerances), one panel per end. Usage: work_precision.py SUMMARY_CSV OUT_PNG"""
+engine (points: tolerances), one panel per end. Usage: work_precision.py SUMMARY_CSV OUT_PNG [--format png,pdf,svg]"""
+import argparse
 import csv
-import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
+import style  # first: it selects the Agg backend and sets the style
 import matplotlib.pyplot as plt  # noqa: E402
 
+END_WORDS = {"naive": style.ENDS["naive"], "delayed-recovery": style.ENDS["delayed_recovery"]}
 
-def main(summary_path, png_path):
-    rows = list(csv.DictReader(open(summary_path)))
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("summary")
+    p.add_argument("png")
+    style.add_format_argument(p)
+    a = p.parse_args()
+    with open(a.summary, newline="") as f:
+        rows = list(csv.DictReader(f))
     ends = ["delayed-recovery", "naive"]
-    fig, axes = plt.subplots(1, 2, figsize=(12, 5), sharey=True)
+    fig, axes = plt.subplots(1, 2, figsize=(9, 4.2), sharey=True)
     for ax, end in zip(axes, ends):
         engines = sorted({r["engine"] for r in rows if r["end"] == end})
         for engine in engines:
@@ -22,16 +28,16 @@ def main(summary_path, png_path):
             pts.sort(key=lambda r: -float(r["tolerance"]))
             t = [float(r["mean_median_us"]) for r in pts]
             e = [max(float(r["max_error"]), 1e-17) for r in pts]
-            ax.loglog(t, e, "o-", label=engine)
-        ax.set_title(f"{end} end")
-        ax.set_xlabel("mean run time per solve over the zeta set [µs]")
-        ax.grid(True, which="both", alpha=0.3)
+            ax.loglog(t, e, "o-", label=style.ENGINES.get(engine, engine))
+        style.set_title(ax, END_WORDS.get(end, end))
+        ax.set_xlabel(r"mean run time per solve over the $\zeta$ set (µs)")
+        ax.grid(True, which="both")
         ax.legend()
-    axes[0].set_ylabel("worst error of eps / min(eps, 1-eps) over zeta in {1e-4 ... 1e4}")
-    fig.suptitle("restitution: error against run time (reference: data/reference_solutions.csv)")
-    fig.tight_layout()
-    fig.savefig(png_path, dpi=110)
+    axes[0].set_ylabel(r"worst error $|\Delta\varepsilon| / \min(\varepsilon, 1-\varepsilon)$")
+    style.suptitle(fig, r"error against run time, $\zeta \in [10^{-4}, 10^4]$ "
+                        "(reference: data/reference_solutions.csv)")
+    style.save(fig, a.png, a.format)
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    main()

@@ -20,7 +20,9 @@ int run(int argc, char** argv) {
   using namespace restitution;
   CLI::App app{"restitution: coefficient of normal restitution of colliding viscoelastic spheres",
                "restitution"};
-  app.set_version_flag("--version", std::string("restitution " RESTITUTION_VERSION "\nSUNDIALS ") +
+  // The version and commit of the library the program runs (docs/release.md), then its SUNDIALS build.
+  app.set_version_flag("--version", std::string("restitution ") + library_version().version + "\ncommit " +
+                                        library_version().commit + "\nSUNDIALS " +
                                         sundials_build_description());
   app.require_subcommand(1);
   app.footer(

@@ -214,7 +214,7 @@ class CollisionRun {
     // dτ/ds = u^{q-1}: s in units of τ per u^{q-1} at x = length_scale.
     const double ds_per_dtau =
         law_.smoothing_root() / law_.dcompression_du(law_.smooth_variable(law_.length_scale()));
-    PhaseSettings settings{Form::sundman, plan_.relative_tolerance, plan_.absolute_tolerance_sundman,
+    PhaseSettings settings{Form::sundman, plan_.relative_tolerance_sundman, plan_.absolute_tolerance_sundman,
                            kSundmanStopPerTau * plan_.time_limit * ds_per_dtau};
     settings.max_steps = plan_.max_steps;
     settings.every_step = options_.keep_trajectory;

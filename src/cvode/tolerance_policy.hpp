@@ -21,13 +21,14 @@ struct SolvePlan {
   bool single_phase = false;
   // The logarithm the end phase takes out of τ (the overdamped tail of the naive end); none by default.
   TauLog tail;
-  double relative_tolerance = 0.0;
-  State absolute_tolerance_time{};         // (x, x', I)
-  State absolute_tolerance_compression{};  // (τ, x', I)
-  State absolute_tolerance_sundman{};      // (u, x', I, τ)
-  double time_limit = 0.0;                 // law's own τ
-  double start_phase_x = 0.0;              // largest x of the compression form of the start
-  long max_steps = 0;                      // per phase
+  double relative_tolerance = 0.0;          // of the phases in τ and u
+  double relative_tolerance_sundman = 0.0;  // of the single Sundman phase
+  State absolute_tolerance_time{};          // (x, x', I)
+  State absolute_tolerance_compression{};   // (τ, x', I)
+  State absolute_tolerance_sundman{};       // (u, x', I, τ)
+  double time_limit = 0.0;                  // law's own τ
+  double start_phase_x = 0.0;               // largest x of the compression form of the start
+  long max_steps = 0;                       // per phase
 };
 
 // The plan of a request CvodeEngine::check has accepted (the request is checked once per solve, there).

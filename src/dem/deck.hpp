@@ -39,6 +39,10 @@ struct Deck {
   std::vector<Parameter> parameters;
   std::vector<std::string> lines;  // to paste into the code's input
   std::vector<std::string> notes;  // what the lines do and where they stop being exact
+  // Input lines the code needs before `lines` (units, atom style, ghost velocities), and the version the
+  // lines were run on (tests/dem/); empty for the codes that are libraries.
+  std::vector<std::string> prerequisites;
+  std::string checked_on;
   [[nodiscard]] double parameter(
       std::string_view name) const;  // throws std::out_of_range naming an unknown name
 };

@@ -31,12 +31,17 @@ void write_lammps(Deck& d, const Pair& p, double a, double /*vn*/, double mu) {
              fmt::format("pair_coeff * * hertz/material {} {} {} tangential {} damping viscoelastic{}",
                          num(p.young_modulus_pa), num(eta), num(p.poisson_ratio), tangential,
                          d.end == CollisionEnd::delayed_recovery ? " limit_damping" : "")};
-  d.notes = {mu > 0.0 ? "tangential mindlin NULL 1 mu: k_t = 8 G* a from Y and nu (Mindlin), x_gamma_t = 1 "
-                        "(tangential damping = normal damping)"
-                      : "tangential linear_nohistory 0 0: frictionless (x_gamma_t = 0, mu_s = 0)",
-             friction_note(mu), clamp_note(d.code, d.end),
-             "eta_n0 contains 1/m_eff: exact only for the pair it was made for (" + pair_note(p) +
-                 "); other pairs get A' = A m_eff' / m_eff"};
+  d.prerequisites = {"units si", "atom_style sphere", "comm_modify vel yes"};
+  d.checked_on = "LAMMPS 29 Sep 2021 - Update 2 (Debian 12's lammps 20220106.git7586adbb6a)";
+  d.notes = {
+      "the prerequisites matter: under other units than si the numbers model another material, and without "
+      "comm_modify vel yes LAMMPS stops (Pair granular requires ghost atoms store velocity)",
+      mu > 0.0 ? "tangential mindlin NULL 1 mu: k_t = 8 G* a from Y and nu (Mindlin), x_gamma_t = 1 "
+                 "(tangential damping = normal damping)"
+               : "tangential linear_nohistory 0 0: frictionless (x_gamma_t = 0, mu_s = 0)",
+      friction_note(mu), clamp_note(d.code, d.end),
+      "eta_n0 contains 1/m_eff: exact only for the pair it was made for (" + pair_note(p) +
+          "); other pairs get A' = A m_eff' / m_eff"};
 }
 
 Coefficients read_lammps(const Deck& d, const Pair& other) {

@@ -36,7 +36,10 @@ void write_liggghts(Deck& d, const Pair& p, double a, double /*vn*/, double mu) 
                          mu > 0.0 ? "history" : "no_history",
                          d.end == CollisionEnd::delayed_recovery ? "on" : "off"),
              "pair_coeff * *"};
-  d.notes = {mu > 0.0 ? "tangential history: kt = 8 G* (Mindlin), gammat = gamman"
+  d.prerequisites = {"units si", "atom_style granular", "newton off", "communicate single vel yes"};
+  d.checked_on = "LIGGGHTS 3.8.0 (Debian's liggghts 3.8.0+repack1)";
+  d.notes = {"the prerequisites matter: under other units than si the numbers model another material",
+             mu > 0.0 ? "tangential history: kt = 8 G* (Mindlin), gammat = gamman"
                       : "kt = gammat = coefficientFriction = 0: frictionless",
              friction_note(mu), clamp_note(d.code, d.end),
              "gamman contains 1/m_eff: exact only for the pair it was made for (" + pair_note(p) +

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "restitution/errors.hpp"
+#include "restitution/restitution.hpp"
 #include "taylor/taylor_collision.hpp"
 
 namespace restitution {
@@ -161,6 +162,9 @@ std::string reference_csv(const std::vector<ReferenceSolution>& solutions) {
       "# Reference solutions of x'' + zeta x' sqrt(x) + x^{3/2} = 0, x(0) = 0, x'(0) = 1 (natural units): "
       "Taylor method in __float128, two orders agreeing to 'agreement'. Regenerate: restitution reference "
       "--out data/reference_solutions.csv\n";
+  // The code that computed it (docs/release.md); CVODE takes no part in the reference.
+  out += fmt::format("# Computed by restitution {} (commit {}).\n", library_version().version,
+                     library_version().commit);
   out += kHeader;
   out += '\n';
   for (const ReferenceSolution& s : solutions) {

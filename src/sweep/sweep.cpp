@@ -10,6 +10,7 @@
 #include "parallel/parallel_for.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/sweep.hpp"
+#include "sweep/checked_sweep.hpp"
 
 namespace restitution {
 namespace {
@@ -108,6 +109,11 @@ void check_sweep(const std::vector<double>& zetas, const SolveOptions& options, 
 SweepSummary run_sweep(const std::vector<double>& zetas, const SolveOptions& options,
                        const SweepControl& control, LawKind law) {
   check_sweep(zetas, options, law, control.threads);
+  return run_checked_sweep(zetas, options, control, law);
+}
+
+SweepSummary run_checked_sweep(const std::vector<double>& zetas, const SolveOptions& options,
+                               const SweepControl& control, LawKind law) {
   if (!control.already_done.empty() && control.already_done.size() != zetas.size()) {
     throw InvalidInput("already_done must be empty or hold one flag per point of the sweep");
   }

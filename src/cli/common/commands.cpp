@@ -18,6 +18,8 @@ void add_all_commands(CLI::App& app, Action& chosen) {
   add_fast_table_command(app, chosen);
   add_export_command(app, chosen);
   add_damping_check_command(app, chosen);
+  add_gas_command(app, chosen);
+  add_oblique_command(app, chosen);
 }
 
 }  // namespace restitution::cli

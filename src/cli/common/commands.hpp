@@ -24,6 +24,8 @@ void add_dem_command(CLI::App& app, Action& chosen);
 void add_fast_table_command(CLI::App& app, Action& chosen);
 void add_export_command(CLI::App& app, Action& chosen);
 void add_damping_check_command(CLI::App& app, Action& chosen);
+void add_gas_command(CLI::App& app, Action& chosen);
+void add_oblique_command(CLI::App& app, Action& chosen);
 
 // Every subcommand of the program, in the order `--help` lists them: the one list main() and the
 // command-line fuzz target share.

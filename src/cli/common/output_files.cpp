@@ -11,7 +11,6 @@
 
 #include <cerrno>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -192,12 +191,6 @@ void write_file_atomically(const fs::path& path, const std::string& content) {
   }
   fs::rename(temporary, target.path, error);
   if (error) fail(fmt::format("cannot write '{}': {}", target.path.string(), error.message()));
-}
-
-std::string number17(double value) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  return fmt::format("{:.17g}", value);
 }
 
 std::string run_plot_script(const std::string& script, const fs::path& data, const fs::path& image,

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "sweep/number_text.hpp"
+
 namespace restitution::cli {
 
 // Checks, without creating anything, that files can be written into the folder: it exists and is
@@ -31,8 +33,8 @@ OutputTarget output_target(const std::filesystem::path& path);
 // IoError naming the file when the write fails.
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
 
-// A double with 17 significant digits ("nan"/"inf" for non-finite values), as in CSV tables.
-std::string number17(double value);
+// A double with 17 significant digits, as the sweep library writes its tables (sweep/number_text.hpp).
+using restitution::number17;
 
 // Runs scripts/plots/<script>.py with Debian's /usr/bin/python3 as `<script>.py DATA IMAGE ARGUMENTS...`.
 // The script writes a temporary NAME.tmp.png that becomes IMAGE only once the script succeeded, and it

@@ -2,6 +2,7 @@
 // `restitution dem`: the input lines for a DEM code (LAMMPS, LIGGGHTS, MercuryDPM, YADE, Chrono) that give a
 // material the viscoelastic Hertz law, with the ε they give at a few impact speeds (docs/dem.md).
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <memory>
 #include <optional>
@@ -16,6 +17,7 @@
 #include "cli/common/material_options.hpp"
 #include "cli/dem/dem_deck.hpp"
 #include "cli/dem/dem_polydisperse_output.hpp"
+#include "cli/dem/dem_production.hpp"
 #include "cli/dem/dem_type_options.hpp"
 #include "cli/dem/from_fit.hpp"
 #include "damping_check/yade_version_lines.hpp"
@@ -44,6 +46,7 @@ struct DemOptions {
 
   std::optional<std::string> deck;  // --deck FILE: the check deck (cli/dem/dem_deck.hpp)
   std::string deck_run;             // the command that runs it, once written
+  ProductionOptions production;     // --timestep, --max-eps-error, --constant-eps
 };
 
 // The YADE the lines are for: --yade-version, else `yade --version` of the one on PATH, else the newest
@@ -110,7 +113,8 @@ dem::LinesResult compute(DemOptions& o) {
   return r;
 }
 
-void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optional<FromFit>& from_fit) {
+void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optional<FromFit>& from_fit,
+                const Production& production) {
   JsonWriter json;
   json.begin_object();
   json.field("code", dem::code_name(r.deck.code)).field("end", end_name(r.deck.end));
@@ -122,6 +126,10 @@ void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optio
   json.key("meanings").begin_object();
   for (const auto& p : r.deck.parameters) json.field(p.name, p.meaning);
   json.end_object();
+  json.key("prerequisites").begin_array();
+  for (const auto& line : r.deck.prerequisites) json.value(line);
+  json.end_array();
+  if (!r.deck.checked_on.empty()) json.field("checked_on", r.deck.checked_on);
   json.key("lines").begin_array();
   for (const auto& line : r.deck.lines) json.value(line);
   json.end_array();
@@ -161,11 +169,13 @@ void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optio
   if (from_fit) {
     write_fit_carry_over(json, o.from_fit, from_fit->fit, from_fit->k, speeds_of(r), fit_eps_given_by(r));
   }
+  write_production_json(json, r, production, o.production);
   if (o.deck) json.key("deck").begin_object().field("file", *o.deck).field("run", o.deck_run).end_object();
   fmt::print("{}\n", finish_json_document(json));
 }
 
-void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optional<FromFit>& from_fit) {
+void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optional<FromFit>& from_fit,
+                const Production& production) {
   const char* c = dem::code_entry(r.deck.code).comment;
   fmt::print("{} restitution dem --code {}: viscoelastic Hertz law, A = {:.10g} s, {} end\n", c,
              dem::code_name(r.deck.code), r.dissipative_constant_s, end_name(r.deck.end));
@@ -177,6 +187,10 @@ void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optio
   }
   for (const auto& p : r.deck.parameters) fmt::print("{} {} = {}: {}\n", c, p.name, p.value, p.meaning);
   for (const auto& n : r.deck.notes) fmt::print("{} {}\n", c, n);
+  if (!r.deck.prerequisites.empty()) {
+    fmt::print("{} needs before these lines: {} (checked on {})\n", c, fmt::join(r.deck.prerequisites, "; "),
+               r.deck.checked_on);
+  }
   for (const auto& line : r.deck.lines) fmt::print("{}\n", line);
   fmt::print("{} eps these lines give this pair ({} end):\n", c, end_name(r.deck.end));
   for (const auto& e : r.eps) fmt::print("{}   v = {:<10.6g} m/s  eps = {:.10g}\n", c, e.velocity_m_s, e.eps);
@@ -206,15 +220,16 @@ void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optio
   if (from_fit)
     fmt::print("{}", fit_carry_over_text(o.from_fit, from_fit->fit, from_fit->k, speeds_of(r),
                                          fit_eps_given_by(r), c));
+  print_production_text(r, production, o.production);
   if (o.deck) fmt::print("{} check deck written to {}: run `{}`\n", c, *o.deck, o.deck_run);
 }
 
 // Several atom types (docs/dem.md, "Polydisperse sets"): lammps and liggghts only.
 int run_polydisperse(const DemOptions& o) {
-  if (!o.from_fit.empty() || !o.yade_version.empty()) {
+  if (!o.from_fit.empty() || !o.yade_version.empty() || any_production_option(o.production)) {
     throw InvalidInput(
-        "several atom types take --eps/--velocity or --dissipative-constant, not --from-fit "
-        "or --yade-version");
+        "several atom types take --eps/--velocity or --dissipative-constant, not --from-fit, "
+        "--yade-version, --timestep, --max-eps-error or --constant-eps");
   }
   dem::PolydisperseRequest request;
   request.code = dem::code_from_name(o.code);
@@ -282,6 +297,7 @@ void add_dem_command(CLI::App& app, Action& chosen) {
                   dem::kMaxDeckCollisionsLammps, dem::max_deck_types(dem::Code::lammps, 1),
                   dem::max_deck_types(dem::Code::lammps, 3), dem::kMaxDeckSphereSteps,
                   dem::kMaxDeckCollisionsYade));
+  add_production_options(*cmd, o->production);
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, cmd, &chosen] {
@@ -293,11 +309,12 @@ void add_dem_command(CLI::App& app, Action& chosen) {
       o->material = one_pair_material(o->types);
       const std::optional<FromFit> from_fit = apply_from_fit(*o);
       const dem::LinesResult r = compute(*o);
+      const Production p = production(r, material_from(o->material), o->production, o->tolerance);
       if (o->deck) o->deck_run = write_check_deck(*o->deck, r, material_from(o->material));
       if (o->json) {
-        print_json(r, *o, from_fit);
+        print_json(r, *o, from_fit, p);
       } else {
-        print_text(r, *o, from_fit);
+        print_text(r, *o, from_fit, p);
       }
       return 0;
     };

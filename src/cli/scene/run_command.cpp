@@ -12,7 +12,6 @@
 #include "cli/common/commands.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
-#include "cli/common/output_lock.hpp"
 #include "cli/common/progress.hpp"
 #include "cli/common/resource_root.hpp"
 #include "cli/common/stop_signals.hpp"
@@ -23,6 +22,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/scene_run.hpp"
+#include "sweep/output_lock.hpp"
 
 namespace restitution::cli {
 namespace {

@@ -10,7 +10,6 @@
 #include "cli/common/build_json.hpp"
 #include "cli/common/json_writer.hpp"
 #include "cli/common/output_files.hpp"
-#include "cli/common/physical_columns.hpp"
 #include "cli/common/result_json.hpp"
 #include "cli/common/stop_signals.hpp"
 #include "cli/fit/fit_data_report.hpp"
@@ -22,6 +21,7 @@
 #include "cli/solve/work_precision_files.hpp"
 #include "restitution/series.hpp"
 #include "restitution/units.hpp"
+#include "sweep/physical_columns.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -444,6 +444,8 @@ class SceneWriter {
             ? ""
             : " (the [[dem]] and [[damping_check]] sections solve their own collisions, not counted here)",
         scene_.description.empty() ? "" : "\n\n" + scene_.description + "\n");
+    // The code that computed the numbers, as summary.json names it (docs/release.md).
+    report_ += fmt::format("\nComputed by {}.\n", build_description());
     json_.field("collisions", static_cast<long>(results_.collisions));
     json_.field("distinct_collisions", static_cast<long>(results_.plan.jobs.size()));
     json_.field("seconds", seconds);

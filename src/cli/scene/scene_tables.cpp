@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "cli/common/output_files.hpp"
-#include "cli/common/physical_columns.hpp"
 #include "restitution/units.hpp"
+#include "sweep/physical_columns.hpp"
 
 namespace restitution::cli {
 namespace {

@@ -1,33 +1,22 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `restitution sweep`: ε over a grid of ζ, or of impact speeds with β or a material, in parallel, into one
-// CSV file. Nothing finished is lost: each
-// finished row is appended to FILE.partial (flushed every 100 ms, each line with its own checksum); the table
-// is written in ζ order into FILE.tmp as the rows come, and FILE appears (renamed) only when every point is
-// finished; SIGINT/SIGTERM stop the sweep after the points in progress; --resume continues from FILE.partial,
-// keeping every valid row. FILE.lock keeps a second process from writing the same files meanwhile.
+// CSV file through the library's sweep_to_file (restitution/sweep.hpp), which keeps every finished row in
+// FILE.partial for --resume. Here: the options, the grid, the settings line and the messages;
+// SIGINT/SIGTERM stop the sweep after the points in progress.
 #include <fmt/core.h>
 
-#include <cmath>
-#include <cstdint>
-#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
-#include <system_error>
-#include <thread>
-#include <vector>
+#include <utility>
 
 #include "cli/common/commands.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
-#include "cli/common/output_lock.hpp"
 #include "cli/common/progress.hpp"
 #include "cli/common/stop_signals.hpp"
-#include "cli/sweep/sweep_files.hpp"
 #include "cli/sweep/sweep_grid.hpp"
-#include "cli/sweep/sweep_partial.hpp"
-#include "cli/sweep/sweep_table.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 #include "restitution/sweep.hpp"
@@ -57,17 +46,13 @@ std::string settings_line(const SweepOptions& o, const SweepGrid& grid) {
                      number17(o.solver.tolerance));
 }
 
-// A row per worker, formatted on the worker and moved into the table: on its own cache line.
-struct alignas(64) WorkerRow {
-  std::string text;
-};
-
-std::string dropped_note(const PartialSweep& done, const fs::path& partial_path) {
-  if (done.dropped == 0) return "";
+std::string dropped_note(const SweepFileOutcome& done) {
+  if (done.damaged_lines == 0) return "";
   return fmt::format(
       " ({} damaged line{} of '{}' dropped, the first at line {}: their points are computed "
       "again)",
-      done.dropped, done.dropped == 1 ? "" : "s", partial_path.string(), done.first_dropped_line);
+      done.damaged_lines, done.damaged_lines == 1 ? "" : "s", done.partial_path.string(),
+      done.first_damaged_line);
 }
 
 int run_sweep_command(const SweepOptions& o) {
@@ -75,12 +60,11 @@ int run_sweep_command(const SweepOptions& o) {
     throw InvalidInput(fmt::format("--threads must lie in [1, {}] (default: all cores), got {}",
                                    kMaxSweepThreads, *o.threads));
   }
-  const SweepGrid grid = sweep_grid(o);
-  const std::vector<double>& zetas = grid.zetas;
-  const VelocityAxis* velocity = grid.velocity ? &*grid.velocity : nullptr;
+  SweepGrid grid = sweep_grid(o);
   const SolveOptions solve = solve_options(o.solver);
-  const unsigned threads = o.threads ? static_cast<unsigned>(*o.threads) : 0U;
-  check_sweep(zetas, solve, grid.law, threads);  // every point, before the first file is touched
+  SweepControl control;
+  control.threads = o.threads ? static_cast<unsigned>(*o.threads) : 0U;
+  check_sweep(grid.zetas, solve, grid.law, control.threads);  // every point, before the first file is touched
   if (fs::path(o.out).filename().empty() || fs::is_directory(o.out)) {
     throw InvalidInput(fmt::format("--out '{}' must name a file, not a folder", o.out));
   }
@@ -92,99 +76,51 @@ int run_sweep_command(const SweepOptions& o) {
                     "keeps FILE.partial beside its file for --resume; give a file name",
                     o.out));
   }
-  const fs::path& out = target.path;
   check_output_file(o.out);  // names the file when its folder refuses it
-  const fs::path partial_path = out.string() + ".partial";
-  const std::string settings = settings_line(o, grid);
-  const std::string header = sweep_header(solve.ends, velocity);
-
-  std::error_code no_folder;  // check_output_file said it can be made; the lock file names it if not
-  if (out.has_parent_path()) fs::create_directories(out.parent_path(), no_folder);
-  // Before the partial file is looked at: a sweep that runs now owns it (and "add --resume" would be wrong).
-  const OutputLock lock(sweep_lock_path(out), fmt::format("--out '{}'", o.out));
-  PartialSweep done;
-  if (o.resume && !fs::exists(partial_path) && fs::exists(out)) {
-    // The sweep finished (FILE.partial is removed only then): recomputing it all would not be a resume.
-    fmt::print(stderr,
-               "restitution: nothing to resume: '{}' is complete (no '{}'); delete it to compute the sweep "
-               "again\n",
-               o.out, partial_path.string());
-    return 0;
-  }
-  if (fs::exists(partial_path)) {
-    if (!o.resume) {
-      throw InvalidInput(
-          fmt::format("'{}' holds an interrupted sweep: add --resume to continue it, or delete it",
-                      partial_path.string()));
-    }
-    FileLines lines(partial_path);
-    done = read_partial_sweep(lines.lines(), partial_path, settings, header, zetas);
-    fmt::print(stderr, "restitution: resuming: {} of {} points already finished, computing {}{}\n", done.kept,
-               zetas.size(), zetas.size() - done.kept, dropped_note(done, partial_path));
-  }
-  // As many buffers as the sweep can have workers (SweepControl::threads, 0: one per core).
-  const unsigned writers = threads != 0 ? threads : std::thread::hardware_concurrency();
-  PartialFile partial(partial_path, done.valid_bytes, settings + "\n" + partial_header(header) + "\n",
-                      writers);
-
-  SweepControl control;
-  control.threads = threads;
-  if (done.kept > 0) {
-    control.already_done.assign(zetas.size(), false);
-    for (std::size_t i = 0; i < zetas.size(); ++i)
-      control.already_done[i] = done.row_offset[i] != PartialSweep::kNotDone;
-  }
-  OrderedTable table(out, header, zetas.size(),
-                     done.kept > 0 ? std::move(done.row_offset) : std::vector<std::uint64_t>{}, partial_path);
+  SweepFile file;
+  file.path = target.path;
+  file.resume = o.resume;
+  file.settings = settings_line(o, grid);
+  file.columns = std::move(grid.velocity);  // after settings_line, which reads its beta
+  file.given = o.out;
+  file.option = "--out";
+  file.resume_option = "--resume";
+  file.resuming = [](const SweepFileOutcome& done) {
+    fmt::print(stderr, "restitution: resuming: {} of {} points already finished, computing {}{}\n",
+               done.resumed, done.points, done.points - done.resumed, dropped_note(done));
+  };
   control.stop_requested = [] { return stop_signal_received() != 0; };
-  // Each worker formats its row into a string of its own and appends it to its own buffer of the partial
-  // file; only the table's in-order writing is serialized, and it overlaps the other workers' solves.
-  std::vector<WorkerRow> rows(std::max(1U, writers));
-  control.point_computed = [&](const SweepPoint& point) {
-    std::string& row = rows.at(point.worker).text;
-    row = sweep_row(point, solve.ends, velocity);
-    partial.append(point.worker, point.index, row);
-  };
-  control.point_finished = [&](const SweepPoint& point) {
-    table.add(point.index, std::move(rows[point.worker].text));
-  };
 
-  // A failed write stops the sweep; what FILE.partial holds is valid (nothing is written after the failure).
-  const auto keeping_partial = [&partial_path](const auto& step) {
-    try {
-      step();
-    } catch (const IoError& e) {
-      throw IoError(
-          fmt::format("{}; the finished points in '{}' are kept: run the same command with --resume "
-                      "once it can be written",
-                      e.what(), partial_path.string()));
-    }
-  };
-  SweepSummary summary;
-  keeping_partial([&] {
+  SweepFileOutcome outcome;
+  {
     const StopSignals signals;
     ProgressLine progress("sweep");  // ended before any message below
     control.progress = progress.callback();
-    summary = run_sweep(zetas, solve, control, grid.law);
-  });
-  const std::size_t finished = summary.computed + summary.skipped;
-  if (summary.stopped) {
-    const int signal_number = stop_signal_received();
-    fmt::print(
-        stderr,
-        "restitution: interrupted by signal {}: {} of {} points finished and kept in '{}'; run the same "
-        "command with --resume to continue\n",
-        signal_number, finished, zetas.size(), partial_path.string());
-    return 128 + signal_number;
+    outcome = sweep_to_file(grid.zetas, solve, control, file, grid.law);
   }
-
-  keeping_partial([&] { table.commit(); });
-  fs::remove(partial_path);
-  const std::size_t failed = summary.failed + done.failed;
-  fmt::print("wrote {}: {} points, {} failed\n", o.out, zetas.size(), failed);
-  if (failed > 0) {
+  switch (outcome.status) {
+    case SweepFileOutcome::Status::already_complete:
+      fmt::print(stderr,
+                 "restitution: nothing to resume: '{}' is complete (no '{}'); delete it to compute the sweep "
+                 "again\n",
+                 o.out, outcome.partial_path.string());
+      return 0;
+    case SweepFileOutcome::Status::stopped: {
+      const int signal_number = stop_signal_received();
+      fmt::print(
+          stderr,
+          "restitution: interrupted by signal {}: {} of {} points finished and kept in '{}'; run the same "
+          "command with --resume to continue\n",
+          signal_number, outcome.finished, outcome.points, outcome.partial_path.string());
+      return 128 + signal_number;
+    }
+    case SweepFileOutcome::Status::complete:
+      break;
+  }
+  fmt::print("wrote {}: {} points, {} failed\n", o.out, outcome.points, outcome.failed);
+  if (outcome.failed > 0) {
     fmt::print(stderr, "restitution: numerical failure: {} of {} points failed; their rows in '{}' say why\n",
-               failed, zetas.size(), o.out);
+               outcome.failed, outcome.points, o.out);
     return 1;
   }
   return 0;

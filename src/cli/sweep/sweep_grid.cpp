@@ -39,7 +39,7 @@ PhysicalCoefficients physical_coefficients(const SweepOptions& o) {
 }
 
 // β (and k for a material) of the ε(v) forms; throws InvalidInput naming what is missing or mixed.
-VelocityAxis velocity_subject(const SweepOptions& o, LawKind law, std::optional<double>& hertz_k) {
+SweepColumns velocity_subject(const SweepOptions& o, LawKind law, std::optional<double>& hertz_k) {
   if (o.zeta_min || o.zeta_max) {
     throw InvalidInput(
         "give --zeta-min/--zeta-max, or --velocity-min/--velocity-max with --beta or a material, not both");
@@ -49,7 +49,7 @@ VelocityAxis velocity_subject(const SweepOptions& o, LawKind law, std::optional<
         fmt::format("an impact-speed sweep needs --velocity-min and --velocity-max (m/s): --{} is required",
                     o.velocity_min ? "velocity-max" : "velocity-min"));
   }
-  VelocityAxis axis;
+  SweepColumns axis;
   if (physical_form(o)) return axis;
   const bool material = o.material.any() || o.dissipative_constant;
   if (!has_dissipative_constant(law)) {
@@ -120,7 +120,7 @@ SweepGrid sweep_grid(const SweepOptions& o) {
     return grid;
   }
   std::optional<double> hertz_k;
-  VelocityAxis axis = velocity_subject(o, grid.law, hertz_k);
+  SweepColumns axis = velocity_subject(o, grid.law, hertz_k);
   axis.velocity_m_s = zeta_values({*o.velocity_min, *o.velocity_max, points, o.log, "velocity"});
   if (physical_form(o)) {
     const PhysicalCoefficients c = physical_coefficients(o);

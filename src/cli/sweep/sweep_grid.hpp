@@ -8,7 +8,7 @@
 
 #include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
-#include "cli/sweep/sweep_table.hpp"
+#include "restitution/sweep.hpp"
 
 namespace restitution::cli {
 
@@ -32,7 +32,7 @@ struct SweepOptions {
 struct SweepGrid {
   LawKind law = LawKind::viscoelastic_hertz;
   std::vector<double> zetas;  // of the law's natural form
-  std::optional<VelocityAxis> velocity;
+  std::optional<SweepColumns> velocity;
 };
 
 // The grid of the form the options give (exactly one of zeta-min/max, beta with velocity-min/max, a material

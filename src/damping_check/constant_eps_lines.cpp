@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "damping_check/constant_eps_lines.hpp"
+
+#include <fmt/core.h>
+
+#include <stdexcept>
+
+#include "damping_check/inverse.hpp"
+#include "dem/deck_eps.hpp"
+#include "dem/deck_notes.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/units.hpp"
+
+namespace restitution::damping_check {
+namespace {
+
+// The tangential model of the law's pair_coeff line ("linear_nohistory 0 0" or "mindlin NULL 1 mu"), kept.
+std::string tangential_of(const std::string& line) {
+  const std::string from = " tangential ";
+  const std::string to = " damping ";
+  const auto begin = line.find(from);
+  const auto end = line.find(to);
+  if (begin == std::string::npos || end == std::string::npos || end < begin)
+    throw std::logic_error("LAMMPS line without tangential and damping: " + line);
+  return line.substr(begin + from.size(), end - begin - from.size());
+}
+
+}  // namespace
+
+ConstantEpsLines constant_eps_lines(const dem::LinesResult& r, const dem::Pair& pair, double tolerance,
+                                    CollisionSolver& solver) {
+  if (r.deck.code != dem::Code::lammps)
+    throw InvalidInput("--constant-eps: only --code lammps has its companion line here (damping tsuji)");
+  const double k =
+      hertz_stiffness(pair.effective_modulus_pa, pair.effective_radius_m) / pair.effective_mass_kg;
+  ConstantEpsLines c;
+  c.velocity_m_s = r.reference_velocity_m_s;
+  c.eps = dem::eps_for(hertz_constants(k, r.dissipative_constant_s).beta, c.velocity_m_s, r.deck.end,
+                       tolerance, solver);
+  InverseRequest request;
+  request.recipe = Recipe::lammps_tsuji;
+  request.target_eps = c.eps;
+  request.target_velocity_m_s = c.velocity_m_s;
+  request.clamp = r.deck.end == CollisionEnd::delayed_recovery ? Clamp::on : Clamp::off;
+  request.speeds_m_s = {c.velocity_m_s};
+  request.tolerance = tolerance;
+  c.eps_to_request = invert_recipe(request, solver).eps_to_request;
+  const bool limit = r.deck.end == CollisionEnd::delayed_recovery;
+  c.lines = {
+      "pair_style granular",
+      fmt::format("pair_coeff * * hertz/material {} {} {} tangential {} damping tsuji{}",
+                  dem::num(pair.young_modulus_pa), dem::num(c.eps_to_request), dem::num(pair.poisson_ratio),
+                  tangential_of(r.deck.lines.at(1)), limit ? " limit_damping" : "")};
+  return c;
+}
+
+}  // namespace restitution::damping_check

@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "gas_deck/lammps_gas_deck.hpp"
+
+#include <fmt/core.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <numbers>
+
+#include "damping_check/constant_eps_lines.hpp"
+#include "dem/integrator_eps.hpp"
+#include "gas_deck/cooling_scales.hpp"
+#include "gas_deck/placement.hpp"
+#include "restitution/errors.hpp"
+
+namespace restitution::gas_deck {
+namespace {
+
+// The time step is checked down to this fraction of the initial temperature (the fast speed falls 1000-fold).
+constexpr int kCheckedDecadesOfSpeed = 3;
+
+std::string data_file(const GasDeck& g, const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                      double density, std::uint64_t seed) {
+  fmt::memory_buffer out;
+  auto it = std::back_inserter(out);
+  fmt::format_to(it, "LAMMPS data file: freely cooling gas written by restitution gas --deck (seed {})\n\n",
+                 seed);
+  fmt::format_to(it, "{} atoms\n1 atom types\n\n", x.size());
+  for (const char* axis : {"x", "y", "z"}) fmt::format_to(it, "0 {} {}lo {}hi\n", g.box_m, axis, axis);
+  fmt::format_to(it, "\nAtoms # sphere\n\n");
+  for (std::size_t i = 0; i < x.size(); ++i)
+    fmt::format_to(it, "{} 1 {} {} {} {} {}\n", i + 1, g.diameter_m, density, x[i][0], x[i][1], x[i][2]);
+  fmt::format_to(it, "\nVelocities\n\n");
+  for (std::size_t i = 0; i < v.size(); ++i)
+    fmt::format_to(it, "{} {} {} {} 0 0 0\n", i + 1, v[i][0], v[i][1], v[i][2]);
+  return fmt::to_string(out);
+}
+
+std::string input(const GasDeck& g, std::string_view law, const std::vector<std::string>& header,
+                  const std::vector<std::string>& prerequisites, const std::vector<std::string>& lines,
+                  const std::string& data_file_name) {
+  std::string d;
+  for (const auto& h : header) d += "# " + h + "\n";
+  for (const auto& p : prerequisites) d += p + "\n";
+  d += "boundary p p p\n";
+  d += "read_data " + data_file_name + "\n";
+  for (const auto& l : lines) d += l + "\n";
+  // A skin of a fifth of a diameter, checked every step: no contact is missed whatever the speeds.
+  d += fmt::format("neighbor {} bin\nneigh_modify delay 0 every 1 check yes\n", 0.2 * g.diameter_m);
+  d += "fix integrate all nve/sphere\n";
+  d += "compute kinetic all ke\n";
+  d += "variable temperature equal 2*c_kinetic/(3*atoms)\n";
+  // thermo 0: output at the first and last step of each run only, which keeps c_kinetic current between runs.
+  d += "thermo_style custom step time dt c_kinetic\nthermo 0\n";
+  d += fmt::format("variable dt0 equal {}\nvariable T0 equal {}\n", g.time_step_s, g.initial_temperature_j);
+  const std::string print = fmt::format(
+      "print \"{} law={} time_s=$(time:%.10g) temperature_j=$(v_temperature:%.10g) "
+      "timestep_s=$(dt:%.6g) step=$(step)\"\n",
+      kGasTag, law);
+  d += "timestep ${dt0}\nrun 0\n" + print;
+  for (double t : g.print_times_s) {
+    // dt grows as the contact duration does, T^(-1/10); each block runs to the next scheduled time.
+    d += "timestep $(v_dt0*(v_T0/v_temperature)^0.1)\n";
+    d += fmt::format("run $(ceil(({}-time)/dt):%.0f)\n", t);
+    d += print;
+  }
+  return d;
+}
+
+}  // namespace
+
+GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_name) {
+  if (r.material.radius1_m != r.material.radius2_m)
+    throw InvalidInput("the gas deck is for equal spheres: give one --radius");
+  if (!(r.max_eps_error >= 1e-6 && r.max_eps_error <= 0.05))
+    throw InvalidInput(fmt::format("--max-eps-error must be in [1e-6, 0.05], got {}", r.max_eps_error));
+  if (r.points_per_decade < 1 || r.points_per_decade > 100)
+    throw InvalidInput(fmt::format("--points-per-decade must be in [1, 100], got {}", r.points_per_decade));
+  dem::LinesRequest lines_request;
+  lines_request.code = dem::Code::lammps;
+  lines_request.end = r.end;
+  lines_request.material = r.material;
+  lines_request.damping = r.damping;
+  lines_request.tolerance = r.tolerance;
+  const dem::LinesResult law = dem::check_lines(lines_request);
+  const dem::Pair pair = dem::pair_of(r.material);
+  CollisionSolver solver;
+  const damping_check::ConstantEpsLines companion =
+      damping_check::constant_eps_lines(law, pair, r.tolerance, solver);
+
+  GasDeck g;
+  g.dissipative_constant_s = law.dissipative_constant_s;
+  g.diameter_m = 2.0 * pair.radius1_m;
+  g.mass_kg = pair.mass1_kg;
+  g.initial_temperature_j = g.mass_kg * r.rms_speed_m_s * r.rms_speed_m_s;
+  g.constant_eps = companion.eps;
+  g.calibration_speed_m_s = companion.velocity_m_s;
+  const GasScales scales =
+      gas_scales(g.diameter_m, g.mass_kg, r.packing_fraction, g.initial_temperature_j, companion.eps);
+  g.box_m = std::cbrt(static_cast<double>(r.particles) * std::numbers::pi * std::pow(g.diameter_m, 3) /
+                      (6.0 * r.packing_fraction));
+  g.haff_time_s = scales.haff_time_s;
+  g.duration_s = r.duration_s > 0.0 ? r.duration_s : r.haff_times * g.haff_time_s;
+  if (!(g.duration_s > 0.0 && std::isfinite(g.duration_s)))
+    throw InvalidInput(fmt::format("--duration must be > 0 s, got {}", g.duration_s));
+
+  g.fast_speed_m_s = kFastSpeedFactor * std::sqrt(6.0) * r.rms_speed_m_s;
+  g.time_step_s = dem::largest_time_step_s(pair, g.dissipative_constant_s, r.end, g.fast_speed_m_s,
+                                           r.max_eps_error, r.tolerance, solver);
+  for (int k = 0; k <= kCheckedDecadesOfSpeed; ++k) {
+    const double slower = std::pow(10.0, k);
+    const auto e = dem::integrator_error(pair, g.dissipative_constant_s, r.end, g.fast_speed_m_s / slower,
+                                         g.time_step_s * std::pow(slower, 0.2), r.tolerance, solver);
+    g.eps_error_worst = std::max(g.eps_error_worst, std::abs(e.worst_error));
+  }
+
+  g.shear_critical_length_m = scales.shear_critical_length_m;
+  g.shear_mode_growth = shear_mode_growth(scales, g.box_m, g.duration_s);
+  // Clustering shows once the longest shear mode, of initial amplitude ~ 1/sqrt(N) of the thermal speed,
+  // reaches a tenth of it.
+  if (g.shear_mode_growth >= 0.1 * std::sqrt(static_cast<double>(r.particles))) {
+    g.warnings.push_back(fmt::format(
+        "the constant-eps gas will cluster: its box ({:.4g} diameters) exceeds the shear-instability length "
+        "L_c = {:.4g} diameters and its longest shear mode grows {:.3g}-fold in {:.4g} s ({:.3g} tau0), past "
+        "a tenth of the thermal speed; Haff's law holds only while the gas stays homogeneous (fewer "
+        "particles "
+        "or a shorter run keep it so)",
+        g.box_m / g.diameter_m, g.shear_critical_length_m / g.diameter_m, g.shear_mode_growth, g.duration_s,
+        g.duration_s / g.haff_time_s));
+  }
+
+  const double t_first = std::max(0.1 * g.haff_time_s, 50.0 * g.time_step_s);
+  for (int j = 0;; ++j) {
+    const double t = t_first * std::pow(10.0, static_cast<double>(j) / r.points_per_decade);
+    if (t >= g.duration_s * (1.0 - 1e-9)) break;
+    g.print_times_s.push_back(t);
+  }
+  g.print_times_s.push_back(g.duration_s);
+
+  const auto positions = random_positions(r.particles, g.diameter_m, g.box_m, r.seed);
+  const auto velocities = maxwellian_velocities(r.particles, r.rms_speed_m_s, r.seed);
+  g.data = data_file(g, positions, velocities,
+                     g.mass_kg / (std::numbers::pi / 6.0 * std::pow(g.diameter_m, 3)), r.seed);
+
+  std::vector<std::string> header{
+      fmt::format(
+          "freely cooling gas written by restitution gas --deck: {} spheres of diameter {} m, mass {} kg, "
+          "packing fraction {}, periodic box {} m ({:.4g} diameters), seed {}",
+          r.particles, g.diameter_m, g.mass_kg, r.packing_fraction, g.box_m, g.box_m / g.diameter_m, r.seed),
+      fmt::format("initial temperature T0 = m <v^2>/3 = {} J (rms speed {} m/s per direction), {} s = {:.4g} "
+                  "tau0 of the constant-eps gas (tau0 = {} s)",
+                  g.initial_temperature_j, r.rms_speed_m_s, g.duration_s, g.duration_s / g.haff_time_s,
+                  g.haff_time_s),
+      fmt::format(
+          "time step: dt0 = {:.6g} s keeps the worst |eps error| of the integrator <= {:.3g} at the fast "
+          "end of the impact speeds ({} x the rms relative speed = {:.4g} m/s); dt = dt0 (T0/T)^(1/10) "
+          "afterwards, as the contact duration grows (worst |eps error| {:.3g} down to T0/1e6)",
+          g.time_step_s, r.max_eps_error, kFastSpeedFactor, g.fast_speed_m_s, g.eps_error_worst),
+      fmt::format("each line starting {} is one scheduled time (log-spaced, {} per decade): law, time_s, "
+                  "temperature_j = m <v^2>/3, timestep_s, step",
+                  kGasTag, r.points_per_decade),
+      "run: lmp -in FILE, or on several cores mpirun -np 4 lmp -in FILE (as root add --allow-run-as-root; on "
+      "oversubscribed cores set OMPI_MCA_mpi_yield_when_idle=1), from the folder of the data file",
+      "checked on " + law.deck.checked_on};
+  header.insert(header.end(), g.warnings.begin(), g.warnings.end());
+
+  std::vector<std::string> law_header = header;
+  law_header.insert(law_header.begin(), fmt::format("viscoelastic Hertz law, A = {:.10g} s ({} end)",
+                                                    g.dissipative_constant_s, end_name(r.end)));
+  g.law_input = input(g, "viscoelastic", law_header, law.deck.prerequisites, law.deck.lines, data_file_name);
+  std::vector<std::string> companion_header = header;
+  companion_header.insert(
+      companion_header.begin(),
+      fmt::format(
+          "constant-eps companion: damping tsuji given {:.10g}, which makes eps = {:.10g} at every speed "
+          "(the law's eps at {} m/s)",
+          companion.eps_to_request, companion.eps, companion.velocity_m_s));
+  g.constant_eps_input =
+      input(g, "constant-eps", companion_header, law.deck.prerequisites, companion.lines, data_file_name);
+  return g;
+}
+
+std::string gas_deck_command(const std::string& path, int ranks) {
+  if (ranks <= 1) return "lmp -in " + path;
+  return fmt::format("mpirun -np {} lmp -in {}", ranks, path);
+}
+
+}  // namespace restitution::gas_deck

@@ -1,0 +1,363 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "oblique/oblique_contact.hpp"
+
+#include <cvode/cvode.h>
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "oblique/oblique_model.hpp"
+#include "restitution/errors.hpp"
+#include "sundials/fixed_point.hpp"
+#include "sundials/handles.hpp"
+#include "sundials/small_vector.hpp"
+
+namespace restitution::oblique {
+namespace {
+
+using detail::NaturalModel;
+using detail::State;
+
+// The integration starts at τ0 > 0 on the leading terms x = τ0, x' = 1 (their error, O(τ0^{b+2}), is far
+// below any tolerance): at x = 0 the switch function of a damped Hertz contact is infinite (w'(0) = ∞).
+constexpr double kStartTime = 1e-10;
+// Far beyond any end the family reaches (natural contact times are O(1); overdamped naive tails O(ζ)).
+constexpr double kStopTime = 1e8;
+constexpr long kMaxSteps = 1000000;
+
+void require_positive(double value, const char* name) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    throw InvalidInput(fmt::format("{} must be a positive finite number, got {}", name, value));
+  }
+}
+void require_nonnegative(double value, const char* name) {
+  if (!(value >= 0.0) || !std::isfinite(value)) {
+    throw InvalidInput(fmt::format("{} must be a non-negative finite number, got {}", name, value));
+  }
+}
+void require_finite(double value, const char* name) {
+  if (!std::isfinite(value)) throw InvalidInput(fmt::format("{} must be finite, got {}", name, value));
+}
+void require_body(const Body& body, const char* which) {
+  require_positive(body.radius_m, fmt::format("{} radius [m]", which).c_str());
+  require_positive(body.mass_kg, fmt::format("{} mass [kg]", which).c_str());
+  require_positive(body.inertia_kg_m2, fmt::format("{} moment of inertia [kg m^2]", which).c_str());
+}
+
+struct CallbackData {
+  const NaturalModel* model = nullptr;
+  ContactMode mode = ContactMode::stick;
+  double sign = 1.0;
+  CollisionEnd end = CollisionEnd::delayed_recovery;
+};
+
+// CVODE integrates the Sundman form of the engines (src/cvode/cvode_integrator.hpp): independent variable σ
+// with dτ = u^{q-1} dσ, u = x^{1/q} (ContactLaw::smoothing_root), state (u, x', ξ, u_t, R1ω1, R2ω2, τ). For
+// viscoelastic Hertz every right-hand side is then a polynomial in the state (w(x) = u, a = sqrt(R* δ) ∝ u),
+// where in τ the start and the naive end are sqrt singularities that cost CVODE its order.
+constexpr int kCvodeSize = detail::kStateSize + 1;
+constexpr int kTau = detail::kStateSize;
+
+// The state in τ form (index 0 the overlap x) from the integrated one (index 0 u).
+State read(const ContactLaw& law, N_Vector y) {
+  State s{};
+  const double* d = N_VGetArrayPointer(y);
+  std::copy(d, d + detail::kStateSize, s.begin());
+  s[detail::kOverlap] = law.compression_of(d[0]);
+  return s;
+}
+
+int right_hand_side(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_data) noexcept {
+  const auto& data = *static_cast<CallbackData*>(user_data);
+  const ContactLaw& law = data.model->law;
+  State rates{};
+  data.model->rates(read(law, y), data.mode, data.sign, rates);
+  const double u = N_VGetArrayPointer(y)[0];
+  const double dtau = law.dcompression_du(u) / law.smoothing_root();  // u^{q-1}
+  double* d = N_VGetArrayPointer(ydot);
+  d[0] = rates[detail::kOverlap] / law.smoothing_root();  // du/dσ = x'/q
+  for (int i = 1; i < detail::kStateSize; ++i) d[i] = rates[static_cast<std::size_t>(i)] * dtau;
+  d[kTau] = dtau;
+  return 0;
+}
+
+// g[0]: the end of the contact (the normal law's own end functions); g[1]: the switch out of the mode.
+int root_functions(sunrealtype /*t*/, N_Vector y, sunrealtype* g, void* user_data) noexcept {
+  const auto& data = *static_cast<CallbackData*>(user_data);
+  const State s = read(data.model->law, y);
+  // u changes sign at the naive end where x = u^q may not; without damping the force-zero end is the naive
+  // one, where the force factor x^{a-b} = u^{q(a-b)} only touches 0.
+  g[0] = data.end == CollisionEnd::naive || data.model->law.damping() == 0.0
+             ? N_VGetArrayPointer(y)[0]
+             : law_rhs::force_factor(data.model->law, s[detail::kOverlap], s[detail::kOverlapRate]);
+  // Without friction the force is 0 in every mode (LAMMPS caps it at 0): nothing to switch.
+  g[1] = data.model->friction == 0.0 ? 1.0 : data.model->switch_function(s, data.mode, data.sign);
+  return 0;
+}
+
+NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& normal,
+                           const TangentialForce& tangential, double impact_speed_m_s, CollisionEnd end) {
+  const double mass = effective_mass_kg(geometry);
+  const double time_s = physical_time_scale_s(normal.kind, normal.stiffness, mass, impact_speed_m_s);
+  const double length_m = impact_speed_m_s * time_s;
+  NaturalModel model;
+  model.law = ContactLaw::physical(normal.kind, normal.stiffness, normal.damping, mass, impact_speed_m_s);
+  model.kind = tangential.kind;
+  model.friction = tangential.friction;
+  model.damping_factor = tangential.damping_factor;
+  // F_t = k_t ξ: in units of m* v/T per v T of displacement, κ = k_t T²/m*; mindlin's k_t sqrt(R* δ) adds
+  // sqrt(R* v T) to κ_m.
+  model.stiffness = tangential.stiffness * time_s * time_s / mass;
+  if (tangential.kind == TangentialKind::mindlin) {
+    model.stiffness *= std::sqrt(effective_radius_m(geometry) * length_m);
+  }
+  const auto rotation = [&](const Body& body, std::size_t i) {
+    model.rotation_base[i] = mass * body.radius_m * body.radius_m / body.inertia_kg_m2;
+    if (geometry.torque_arm == TorqueArm::radius_minus_half_overlap) {
+      model.rotation_slope[i] = mass * body.radius_m * 0.5 * length_m / body.inertia_kg_m2;
+    }
+  };
+  rotation(geometry.first, 0);
+  if (geometry.second) rotation(*geometry.second, 1);
+  model.cap_of_signed_force = end == CollisionEnd::delayed_recovery;
+  if (geometry.second && !geometry.fixed_normal) {
+    model.centre_distance = (geometry.first.radius_m + geometry.second->radius_m) / length_m;
+  }
+  return model;
+}
+
+void validate(const ObliqueGeometry& geometry, const NormalForce& normal, const TangentialForce& tangential,
+              const ImpactVelocity& impact, const ObliqueOptions& options) {
+  require_body(geometry.first, "first sphere's");
+  if (geometry.second) require_body(*geometry.second, "second sphere's");
+  require_positive(normal.stiffness, "normal stiffness");
+  require_nonnegative(normal.damping, "normal damping coefficient");
+  require_nonnegative(tangential.friction, "friction coefficient");
+  require_nonnegative(tangential.damping_factor, "tangential damping factor");
+  if (tangential.kind != TangentialKind::linear_nohistory) {
+    require_positive(tangential.stiffness,
+                     fmt::format("{} tangential stiffness", tangential_name(tangential.kind)).c_str());
+  }
+  require_positive(impact.normal_m_s, "normal impact speed [m/s]");
+  require_finite(impact.tangential_m_s, "tangential impact velocity [m/s]");
+  require_finite(impact.spin_first_rad_s, "first sphere's spin [rad/s]");
+  require_finite(impact.spin_second_rad_s, "second sphere's spin [rad/s]");
+  if (!geometry.second && impact.spin_second_rad_s != 0.0) {
+    throw InvalidInput("a wall does not spin: the second spin must be 0 against a wall");
+  }
+  if (!(options.relative_tolerance >= 1e-14 && options.relative_tolerance <= 1e-2)) {
+    throw InvalidInput(
+        fmt::format("relative tolerance must be in [1e-14, 1e-2], got {}", options.relative_tolerance));
+  }
+  if (options.max_switches < 1) throw InvalidInput("max_switches must be at least 1");
+}
+
+// The mode at first contact: the trial force of a stick at τ0 against the cap there (the leading terms of
+// both as τ -> 0 decide: a damped contact sticks where γ_t |s| <= μ, an undamped Hertz contact slides
+// whenever s != 0, its cap growing as τ^{3/2} against the spring's τ).
+void initial_mode(const NaturalModel& model, State& y, ContactMode& mode, double& sign) {
+  const double trial = model.trial_force(y);
+  mode = std::abs(trial) <= model.cap(y[detail::kOverlap], y[detail::kOverlapRate]) ? ContactMode::stick
+                                                                                    : ContactMode::slip;
+  sign = trial < 0.0 ? -1.0 : 1.0;
+  if (mode == ContactMode::slip && model.has_history()) y[detail::kDisplacement] = 0.0;
+}
+
+SolverStats phase_stats(void* memory) {
+  SolverStats stats;
+  long value = 0;
+  CVodeGetNumSteps(memory, &value);
+  stats.steps = value;
+  CVodeGetNumRhsEvals(memory, &value);
+  stats.rhs_evaluations = value;
+  CVodeGetNumGEvals(memory, &value);
+  stats.root_evaluations = value;
+  CVodeGetNumErrTestFails(memory, &value);
+  stats.error_test_failures = value;
+  CVodeGetNumNonlinSolvConvFails(memory, &value);
+  stats.convergence_failures = value;
+  return stats;
+}
+
+}  // namespace
+
+const char* tangential_name(TangentialKind kind) {
+  switch (kind) {
+    case TangentialKind::linear_nohistory:
+      return "linear_nohistory";
+    case TangentialKind::linear_history:
+      return "linear_history";
+    case TangentialKind::mindlin:
+      return "mindlin";
+  }
+  return "?";
+}
+
+const std::vector<std::string>& tangential_names() {
+  static const std::vector<std::string> names{"linear_nohistory", "linear_history", "mindlin"};
+  return names;
+}
+
+TangentialKind tangential_from_name(const std::string& name) {
+  for (const TangentialKind kind :
+       {TangentialKind::linear_nohistory, TangentialKind::linear_history, TangentialKind::mindlin}) {
+    if (name == tangential_name(kind)) return kind;
+  }
+  throw InvalidInput(fmt::format(
+      "unknown tangential model '{}' (choose linear_nohistory, linear_history or mindlin)", name));
+}
+
+const char* mode_name(ContactMode mode) {
+  return mode == ContactMode::stick ? "stick" : "slip";
+}
+
+Body solid_sphere(double radius_m, double mass_kg) {
+  return {radius_m, mass_kg, 0.4 * mass_kg * radius_m * radius_m};
+}
+
+double effective_mass_kg(const ObliqueGeometry& geometry) {
+  if (!geometry.second) return geometry.first.mass_kg;
+  const double m1 = geometry.first.mass_kg;
+  const double m2 = geometry.second->mass_kg;
+  return m1 * m2 / (m1 + m2);
+}
+
+double effective_radius_m(const ObliqueGeometry& geometry) {
+  if (!geometry.second) return geometry.first.radius_m;
+  const double r1 = geometry.first.radius_m;
+  const double r2 = geometry.second->radius_m;
+  return r1 * r2 / (r1 + r2);
+}
+
+ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& normal,
+                            const TangentialForce& tangential, const ImpactVelocity& impact,
+                            const ObliqueOptions& options) {
+  validate(geometry, normal, tangential, impact, options);
+  const double speed = impact.normal_m_s;
+  const NaturalModel model = natural_model(geometry, normal, tangential, speed, options.end);
+  const double time_s =
+      physical_time_scale_s(normal.kind, normal.stiffness, effective_mass_kg(geometry), speed);
+
+  State y{};
+  y[detail::kOverlap] = kStartTime;
+  y[detail::kOverlapRate] = 1.0;
+  y[detail::kTangential] = impact.tangential_m_s / speed;
+  y[detail::kSpinFirst] = geometry.first.radius_m * impact.spin_first_rad_s / speed;
+  y[detail::kSpinSecond] =
+      geometry.second ? geometry.second->radius_m * impact.spin_second_rad_s / speed : 0.0;
+  const double slip0 = NaturalModel::slip_velocity(y);
+  y[detail::kDisplacement] = slip0 * kStartTime;
+  CallbackData data{&model, ContactMode::stick, 1.0, options.end};
+  initial_mode(model, y, data.mode, data.sign);
+
+  // Absolute tolerances on the natural scales: the overlap and its rate are O(1), the tangential state is
+  // O(max(1, |s|)).
+  const double tangential_scale = std::max({1.0, std::abs(slip0), std::abs(y[detail::kTangential])});
+  const double rtol = options.relative_tolerance;
+  sundials::Context context;
+  sundials::Vector state = sundials::make_small_vector(kCvodeSize, context);
+  sundials::Vector atol = sundials::make_small_vector(kCvodeSize, context);
+  double* a = N_VGetArrayPointer(atol.get());
+  a[detail::kOverlap] = a[detail::kOverlapRate] = a[kTau] = 1e-3 * rtol;
+  for (const int i : {detail::kDisplacement, detail::kTangential, detail::kSpinFirst, detail::kSpinSecond}) {
+    a[i] = 1e-3 * rtol * tangential_scale;
+  }
+  a[detail::kTurn] = 1e-3 * rtol;
+  sundials::NonlinearSolver corrector = sundials::make_small_fixed_point_solver(state, context);
+  sundials::CvodeMemory memory(CV_ADAMS, context);
+  void* mem = memory.get();
+
+  ObliqueResult result;
+  result.switches.push_back({0.0, data.mode});
+  double* raw = N_VGetArrayPointer(state.get());
+  double sigma = 0.0;  // CVODE's independent variable
+  double t = kStartTime;
+  double mode_start = 0.0;
+  bool initialized = false;
+  for (int switches = 0;; ++switches) {
+    if (switches > options.max_switches) {
+      throw NumericalFailure(fmt::format("the contact crossed the stick/slip boundary more than {} times",
+                                         options.max_switches));
+    }
+    // The τ-form state back into CVODE's (only ξ changes at a switch; u stays as integrated).
+    std::copy(y.begin() + 1, y.end(), raw + 1);
+    if (!initialized) {
+      raw[0] = model.law.smooth_variable(y[detail::kOverlap]);
+      raw[kTau] = t;
+      sundials::check_flag(CVodeInit(mem, right_hand_side, sigma, state.get()), "CVodeInit");
+      sundials::check_flag(CVodeSetUserData(mem, &data), "CVodeSetUserData");
+      sundials::check_flag(CVodeSetNonlinearSolver(mem, corrector.get()), "CVodeSetNonlinearSolver");
+      sundials::check_flag(CVodeSVtolerances(mem, rtol, atol.get()), "CVodeSVtolerances");
+      sundials::check_flag(CVodeSetMaxNumSteps(mem, kMaxSteps), "CVodeSetMaxNumSteps");
+      sundials::check_flag(CVodeSetStopTime(mem, kStopTime), "CVodeSetStopTime");
+      sundials::check_flag(CVodeRootInit(mem, 2, root_functions), "CVodeRootInit");
+      initialized = true;
+    } else {
+      sundials::check_flag(CVodeReInit(mem, sigma, state.get()), "CVodeReInit");
+    }
+    // The end is a downward crossing; a stick ends where its function falls through 0, a slip of a history
+    // model where h rises through 0, a slip of linear_nohistory where g|s| - C falls through 0.
+    std::array<int, 2> directions{-1, data.mode == ContactMode::slip && model.has_history() ? 1 : -1};
+    sundials::check_flag(CVodeSetRootDirection(mem, directions.data()), "CVodeSetRootDirection");
+
+    const int flag = CVode(mem, kStopTime, state.get(), &sigma, CV_NORMAL);
+    t = raw[kTau];
+    if (flag < 0) {
+      throw NumericalFailure(fmt::format("CVODE failed at tau={} with flag {} ({})", t, flag,
+                                         memory.last_error().empty() ? "no message" : memory.last_error()));
+    }
+    if (flag != CV_ROOT_RETURN) {
+      throw NumericalFailure(fmt::format("the contact did not end before sigma={}", kStopTime));
+    }
+    y = read(model.law, state.get());
+    std::array<int, 2> found{};
+    sundials::check_flag(CVodeGetRootInfo(mem, found.data()), "CVodeGetRootInfo");
+    if (found[0] == 0 && !model.leaving_is_consistent(y, data.mode, data.sign)) {
+      // Restarted in the same mode: the function, now just below 0, rises through it, which is no event.
+      result.stats += phase_stats(mem);
+      continue;
+    }
+    result.stats += phase_stats(mem);
+    const double elapsed_s = (t - mode_start) * time_s;
+    (data.mode == ContactMode::stick ? result.stick_time_s : result.slip_time_s) += elapsed_s;
+    mode_start = t;
+    if (found[0] != 0) break;
+
+    // A switch: into slip in the direction of the trial force, or into stick from the capped force.
+    if (data.mode == ContactMode::stick) {
+      data.mode = ContactMode::slip;
+      data.sign = model.trial_force(y) < 0.0 ? -1.0 : 1.0;
+    } else {
+      data.mode = ContactMode::stick;
+      if (model.has_history()) y[detail::kDisplacement] = model.displacement_at_cap(y, data.sign);
+    }
+    result.switches.push_back({t * time_s, data.mode});
+  }
+
+  // Back in the frame of the impact (normal n0, tangent t0): the line of centres has turned by θ, so the
+  // relative velocity -δ' n + u t has components -δ' cos θ - u sin θ along n0 and u cos θ - δ' sin θ along
+  // t0.
+  const double turn = y[detail::kTurn];
+  const double separation =
+      -y[detail::kOverlapRate] * std::cos(turn) - y[detail::kTangential] * std::sin(turn);
+  const double tangential_after =
+      y[detail::kTangential] * std::cos(turn) - y[detail::kOverlapRate] * std::sin(turn);
+  result.line_of_centres_turn_rad = turn;
+  result.normal_restitution = separation;
+  result.normal_velocity_m_s = separation * speed;
+  result.tangential_velocity_m_s = tangential_after * speed;
+  result.spin_first_rad_s = y[detail::kSpinFirst] * speed / geometry.first.radius_m;
+  result.spin_second_rad_s =
+      geometry.second ? y[detail::kSpinSecond] * speed / geometry.second->radius_m : 0.0;
+  const double slip = tangential_after + y[detail::kSpinFirst] + y[detail::kSpinSecond];
+  result.slip_velocity_m_s = slip * speed;
+  result.tangential_restitution = slip0 != 0.0 ? -slip / slip0 : std::nan("");
+  result.impact_angle_rad = std::atan2(impact.tangential_m_s, speed);
+  result.rebound_angle_rad = std::atan2(result.tangential_velocity_m_s, result.normal_velocity_m_s);
+  result.impulse_ratio = (tangential_after - impact.tangential_m_s / speed) / (1.0 + separation);
+  result.contact_time_s = t * time_s;
+  return result;
+}
+
+}  // namespace restitution::oblique

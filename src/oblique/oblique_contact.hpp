@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// The oblique contact of two spheres, or of a sphere and a flat wall, as an initial-value problem: the normal
+// law of the family (F_n = k δ^a + γ δ^b δ', include/restitution/contact_law.hpp) together with a tangential
+// force as Debian's LAMMPS 20220106 writes it in `pair granular` (src/GRANULAR/pair_granular.cpp) and `fix
+// wall/gran granular` (src/GRANULAR/fix_wall_gran.cpp), in the limit of a vanishing time step. The switches
+// between sticking (the tangential force below the Coulomb cap μ|F_n|) and sliding (at the cap) are located
+// as CVODE root-function events; the contact ends at the normal law's end event. docs/oblique.md derives the
+// model from the source, line by line.
+//
+// The impact is planar: n is the line of centres (fixed for a wall; for a pair it turns during the contact
+// unless ObliqueGeometry::fixed_normal), t the tangent in the impact plane, spins are about n × t. Results
+// are given in the frame of the impact (the normal at first contact). The contact-point slip velocity of the
+// first body relative to the second is
+//     s = u + R1 ω1 + R2 ω2
+// with u the tangential velocity of the first centre relative to the second; a positive spin adds to s.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "restitution/contact_law.hpp"
+#include "restitution/solve_types.hpp"
+
+namespace restitution::oblique {
+
+// The tangential models of LAMMPS `pair granular ... tangential MODEL`.
+//  linear_nohistory: F_t = -min(μ|F_n|, γ_t η |s|) s/|s|                 (pair_granular.cpp:534-541)
+//  linear_history:   F_t = -k_t ξ - γ_t η s, ξ' = s while |F_t| <= μ|F_n|; at the cap F_t = μ|F_n| F_t/|F_t|
+//                    and ξ is rescaled so that -k_t ξ - γ_t η s is the capped force
+//                    (pair_granular.cpp:495-533)
+//  mindlin:          linear_history with k_t multiplied by the contact radius a = sqrt(R* δ)
+//                    (pair_granular.cpp:431-433)
+// where η = γ δ^b is the normal damping coefficient at the current overlap (damp_normal_prefactor,
+// pair_granular.cpp:368-373; `damp_tangential = tangential_coeffs[1]*damp_normal_prefactor`, line 427) and
+// the cap uses |F_n| (`Fncrit = fabs(Fntot)`, line 419). fix_wall_gran.cpp repeats these at lines 1256-1280.
+enum class TangentialKind { linear_nohistory, linear_history, mindlin };
+
+// "linear_nohistory" | "linear_history" | "mindlin" (LAMMPS's keywords)
+const char* tangential_name(TangentialKind kind);
+// The inverse; throws InvalidInput naming the value and the choices.
+TangentialKind tangential_from_name(const std::string& name);
+const std::vector<std::string>& tangential_names();
+
+struct Body {
+  double radius_m = 0.0;
+  double mass_kg = 0.0;
+  double inertia_kg_m2 = 0.0;  // about a diameter
+};
+// A homogeneous solid sphere: I = 2/5 m R².
+Body solid_sphere(double radius_m, double mass_kg);
+
+// Where the torque acts: at the contact radius R (fix_wall_gran.cpp:1512, `radius*tor`), or at R - δ/2 as
+// LAMMPS's pair does (pair_granular.cpp:663, `dist_to_contact = radi-0.5*delta`). The slip velocity uses R in
+// both (pair_granular.cpp:407-409).
+enum class TorqueArm { radius, radius_minus_half_overlap };
+
+struct ObliqueGeometry {
+  Body first;
+  std::optional<Body> second;  // none: a flat immovable wall (effective radius R1, effective mass m1)
+  TorqueArm torque_arm = TorqueArm::radius;
+  // A pair's line of centres turns during the contact as the centres pass each other (LAMMPS's pair: n from
+  // the positions every step, the history projected onto the new tangent plane with its magnitude kept,
+  // pair_granular.cpp:450-471); true keeps the normal of the impact throughout (the textbook model, the
+  // closed forms). A wall's normal is fixed either way.
+  bool fixed_normal = false;
+};
+
+// The normal force F_n = k δ^a + γ δ^b δ' of a member of the family (SI: k in N/m^a, γ in N s/m^{1+b}).
+struct NormalForce {
+  LawKind kind = LawKind::viscoelastic_hertz;
+  double stiffness = 0.0;
+  double damping = 0.0;
+};
+
+struct TangentialForce {
+  TangentialKind kind = TangentialKind::linear_history;
+  // k_t: N/m for linear_history; N/m² for mindlin (its stiffness is k_t·sqrt(R* δ)); unused by
+  // linear_nohistory.
+  double stiffness = 0.0;
+  // γ_t (LAMMPS's `damping` of the tangential model, dimensionless): the tangential damping coefficient is
+  // γ_t times the normal one, γ δ^b.
+  double damping_factor = 0.0;
+  double friction = 0.0;  // μ
+};
+
+// The velocities just before contact. normal_m_s > 0 is the approach speed.
+struct ImpactVelocity {
+  double normal_m_s = 0.0;
+  double tangential_m_s = 0.0;    // u: of the first centre relative to the second, along t
+  double spin_first_rad_s = 0.0;  // ω1 (sign: R1 ω1 adds to the slip velocity)
+  double spin_second_rad_s = 0.0;
+};
+
+struct ObliqueOptions {
+  // naive: the contact ends where δ returns to 0 (LAMMPS without limit_damping; the Coulomb cap is then
+  // μ|F_n|, pair_granular.cpp:419); delayed_recovery: where F_n first reaches 0 (limit_damping).
+  CollisionEnd end = CollisionEnd::delayed_recovery;
+  double relative_tolerance = 1e-10;  // CVODE's, on the natural-unit state
+  int max_switches = 1000;            // more stick/slip switches in one contact is reported as a failure
+};
+
+enum class ContactMode { stick, slip };
+const char* mode_name(ContactMode mode);  // "stick" | "slip"
+
+// A switch of the contact's mode at time_s after first contact (the first entry, at 0, is the initial mode).
+struct ModeSwitch {
+  double time_s = 0.0;
+  ContactMode mode = ContactMode::stick;
+};
+
+struct ObliqueResult {
+  double normal_restitution = 0.0;        // ε = -v_n'/v_n
+  double tangential_restitution = 0.0;    // e_t = -s'/s (NaN when s = 0 at impact)
+  double slip_velocity_m_s = 0.0;         // s' after contact
+  double tangential_velocity_m_s = 0.0;   // u' after contact
+  double normal_velocity_m_s = 0.0;       // separation speed ε v_n
+  double spin_first_rad_s = 0.0;          // ω1' after contact
+  double spin_second_rad_s = 0.0;         // ω2' (0 for a wall)
+  double impact_angle_rad = 0.0;          // atan2(u, v_n) before contact
+  double rebound_angle_rad = 0.0;         // atan2(u', ε v_n) after contact
+  double impulse_ratio = 0.0;             // J_t/J_n, tangential over normal impulse on the first body
+  double line_of_centres_turn_rad = 0.0;  // θ: how far a pair's line of centres turned during the contact
+  double contact_time_s = 0.0;
+  double stick_time_s = 0.0;  // time below the Coulomb cap
+  double slip_time_s = 0.0;   // time at the cap
+  std::vector<ModeSwitch> switches;
+  SolverStats stats;
+};
+
+// Solves one oblique impact. Throws InvalidInput naming a bad argument (non-positive radius, mass, inertia,
+// normal speed or stiffness; negative damping or friction; a history model without stiffness),
+// NumericalFailure if CVODE fails or the mode switches more than max_switches times.
+ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& normal,
+                            const TangentialForce& tangential, const ImpactVelocity& impact,
+                            const ObliqueOptions& options = {});
+
+// m* = m1 m2/(m1 + m2), or m1 against a wall.
+double effective_mass_kg(const ObliqueGeometry& geometry);
+// R* = R1 R2/(R1 + R2), or R1 against a wall.
+double effective_radius_m(const ObliqueGeometry& geometry);
+
+}  // namespace restitution::oblique
