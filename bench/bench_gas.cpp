@@ -8,7 +8,7 @@
 
 #include <numbers>
 
-#include "gas/cooling.hpp"
+#include "restitution_gas/cooling.hpp"
 
 namespace {
 

@@ -11,7 +11,9 @@ set(restitution_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/restitution)
 install(TARGETS restitution_lib EXPORT restitutionTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 # Beside it the shared library (restitution::restitution_shared): librestitution.so.X.Y.Z, its SONAME link
 # librestitution.so.X.Y and the development link librestitution.so (docs/library.md, "ABI").
-install(TARGETS restitution_shared EXPORT restitutionTargets LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+if(TARGET restitution_shared)  # not in the instrumented builds (src/CMakeLists.txt)
+  install(TARGETS restitution_shared EXPORT restitutionTargets LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+endif()
 # The CVODE the archive carries stays private to it: its symbols become local (cmake/hide_sundials.sh), so a
 # consumer that links its own SUNDIALS gets its own and restitution keeps the optimized copy.
 if(RESTITUTION_SUNDIALS_BUILD STREQUAL "optimized")

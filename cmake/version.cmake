@@ -3,7 +3,8 @@
 #   1. git, when the source folder is the top of a git checkout: the file VERSION holds the last release X.Y.Z;
 #      N counts the commits since it (since the tag vX.Y.Z if HEAD descends from it, else since the commit that
 #      last changed VERSION: the release commit). N = 0 is the release itself, "X.Y.Z"; N > 0 is a development
-#      version of the next minor release, "X.(Y+1).0.devN+gHASH" (PEP 440; HASH: 12 hex digits of HEAD);
+#      version of the next minor release, "X.(Y+1).0.devN+gHASH" (PEP 440; HASH: 12 hex digits of HEAD); a
+#      shallow clone, which cannot count, is "X.(Y+1).0.dev0+gHASH";
 #   2. the file SDIST_VERSION that setup.py writes into an sdist (lines: version, commit);
 #   3. VERSION alone, commit "unknown".
 # Used by CMakeLists.txt (include, then restitution_compute_version) and by setup.py:
@@ -62,7 +63,13 @@ function(restitution_compute_version root prefix)
     if(NOT commit OR NOT count MATCHES "^[0-9]+$")
       message(FATAL_ERROR "git in ${root}: cannot read HEAD or count the commits since the release")
     endif()
-    if(NOT count EQUAL 0)
+    # A shallow clone lacks the history to count: it says dev0 and names the commit, never the release itself.
+    restitution_git(shallow rev-parse --is-shallow-repository)
+    if(shallow STREQUAL "true")
+      set(count 0)
+      set(version "${next_minor}.dev0+g${short}")
+      set(numeric ${next_minor})
+    elseif(NOT count EQUAL 0)
       set(version "${next_minor}.dev${count}+g${short}")
       set(numeric ${next_minor})
     endif()

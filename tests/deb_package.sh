@@ -15,7 +15,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 # What the package installs must be built (a no-op after scripts/test's full build).
-cmake --build "$build" --target restitution restitution_lib restitution_shared restitution_man_page >/dev/null
+targets=(restitution restitution_lib restitution_shared restitution_man_page)
+if cmake --build "$build" --target help | grep -q '^_restitution:'; then targets+=(_restitution); fi  # the Python module
+cmake --build "$build" --target "${targets[@]}" >/dev/null
 (cd "$build" && cpack -G DEB -B "$work" >"$work/cpack.log" 2>&1) || { tail -30 "$work/cpack.log"; echo "cpack failed"; exit 1; }
 deb=$(ls "$work"/restitution_*.deb)
 version=$(cmake -DROOT="$source" -P "$source/cmake/version.cmake" | sed -n 1p)
@@ -41,13 +43,15 @@ if [ "${RESTITUTION_DEB_INSTALL:-0}" != 1 ] || [ "$(id -u)" -ne 0 ]; then
   echo "deb_package: the unpacked package checks out (dpkg -i: RESTITUTION_DEB_INSTALL=1 as root, CI only)"
   exit 0
 fi
-if dpkg-query -W restitution >/dev/null 2>&1 || [ -e /usr/bin/restitution ]; then
+# Installed means dpkg's status "install ok installed": a package removed with its configuration left ("rc") is
+# not installed, and is purged like the one this check installs.
+if dpkg-query -W -f='${Status}' restitution 2>/dev/null | grep -q ' installed$' || [ -e /usr/bin/restitution ]; then
   echo "deb_package: restitution is installed on this machine already; not replacing it"
   exit 1
 fi
-trap 'dpkg -r restitution >/dev/null 2>&1 || true; rm -rf "$work"' EXIT
+trap 'dpkg --purge restitution >/dev/null 2>&1 || true; rm -rf "$work"' EXIT
 dpkg -i "$deb" >/dev/null
 [ "$(/usr/bin/restitution --version | sed -n 1p)" = "restitution $version" ] ||
   { echo "/usr/bin/restitution --version: $(/usr/bin/restitution --version | sed -n 1p), expected restitution $version"; exit 1; }
 RESTITUTION_INSTALLED_PREFIX=/usr bash "$source/tests/install_consumer.sh" "$build" "$source"
-echo "deb_package: dpkg -i, /usr/bin/restitution --version and the consumers check out; removed again"
+echo "deb_package: dpkg -i, /usr/bin/restitution --version and the consumers check out; purged again"

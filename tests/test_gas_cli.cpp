@@ -9,8 +9,8 @@
 #include <string>
 
 #include "cli_runner.hpp"
-#include "gas/cooling.hpp"
 #include "restitution/material.hpp"
+#include "restitution_gas/cooling.hpp"
 
 namespace restitution::gas {
 namespace {
@@ -100,6 +100,9 @@ TEST(GasCli, BadInputExitsTwoNamingTheOption) {
       {kGas + law + "--a2 much", "--a2"},
       {kGas + "--law tsuji-hertz --dissipative-constant 1e-5 --duration 1", "--dissipative-constant"},
       {kGas + law + "--radius2 0.004", "monodisperse"},
+      {kGas + law + "--points-per-decade 0", "--points-per-decade"},
+      {kGas + law + "--first-time -1", "--first-time"},
+      {kGas + law + "--collision-rate-factor 0", "--collision-rate-factor"},
   };
   for (const auto& [arguments, named] : cases) {
     const auto outcome = run_cli(arguments);

@@ -39,7 +39,12 @@ std::map<std::string, std::string> json_invocations(const fs::path& folder) {
       {"series eval", "series eval --kind naive-series --zeta 0.1 --json"},
       {"dem", "dem --code lammps --eps 0.6 --velocity 2 --json" + kMaterial},
       {"damping-check", "damping-check --recipe lammps-tsuji --eps 0.5 --json"},
-      {"oblique", "oblique --tangential mindlin --friction 0.3 --angle 30 --json" + kMaterial},
+      {"gas",
+       "gas --radius 0.005 --density 920 --packing-fraction 0.1 --rms-speed 1 --eps 0.8 --velocity 2 "
+       "--haff-times 100 --points-per-decade 4 --json"},
+      {"oblique",
+       "oblique --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 "
+       "--dissipative-constant 1e-7 --tangential mindlin --friction 0.3 --angle 30 --json"},
   };
 }
 

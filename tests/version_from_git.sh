@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # cmake/version.cmake in a scratch git repository (docs/release.md): the release commit is X.Y.Z, every later
-# commit X.(Y+1).0.devN+gHASH counted from the commit that changed VERSION or from the tag vX.Y.Z, a folder that
-# is no checkout of its own reads SDIST_VERSION, and without either the version is VERSION with commit "unknown".
+# commit X.(Y+1).0.devN+gHASH counted from the commit that changed VERSION or from the tag vX.Y.Z, a shallow
+# clone says dev0, a folder that is no checkout of its own reads SDIST_VERSION, and without either the version
+# is VERSION with commit "unknown".
 # Usage: version_from_git.sh SOURCE_DIR
 set -euo pipefail
 script=$1/cmake/version.cmake
@@ -38,6 +39,12 @@ git_ tag -d v0.3.0 >/dev/null
 echo 0.4.0 >"$work/repo/VERSION"
 git_ commit -qam "release 0.4.0"
 expect "the next release commit" "$work/repo" 0.4.0 "$(git_ rev-parse HEAD)"
+
+# A shallow clone cannot count the commits: dev0, with the hash that names the commit.
+echo 3 >"$work/repo/file"
+git_ commit -qam "change 3"
+git clone -q --depth 1 "file://$work/repo" "$work/shallow"
+expect "a shallow clone" "$work/shallow" "0.5.0.dev0+g$(git_ rev-parse --short=12 HEAD)" "$(git_ rev-parse HEAD)"
 
 # A folder inside the checkout that is no checkout itself (an unpacked sdist) reads its SDIST_VERSION.
 mkdir "$work/repo/unpacked"

@@ -2,7 +2,8 @@
 #pragma once
 // The restitution library in one include: contact laws, the collision solver and its engines, units and
 // materials, calibration, the analytic series and the certified
-// fast ε(ζ) table; and which build of SUNDIALS it carries and which code it is (below).
+// fast ε(ζ) table; which code it is (library_version(), below); and which build of SUNDIALS it carries
+// (below).
 #include "restitution/calibration.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/contact_law.hpp"
@@ -15,21 +16,7 @@
 #include "restitution/sweep.hpp"
 #include "restitution/units.hpp"
 
-// Which build of SUNDIALS the library's CVODE engine runs on: the program's --version and every JSON output
-// say it, because it doubles or halves the cost of a CVODE solve (docs/performance.md). The numbers do not
-// depend on it.
 namespace restitution {
-
-struct SundialsBuild {
-  const char* version;  // e.g. "6.4.1"
-  // true: CVODE compiled -O3 from Debian's source package (scripts/sundials) and carried inside the library;
-  // false: Debian's libsundials-dev, compiled without optimization.
-  bool optimized;
-};
-
-SundialsBuild sundials_build();
-// "6.4.1 (optimized, built from Debian's source package)" | "6.4.1 (Debian's libsundials, unoptimized)"
-const char* sundials_build_description();
 
 // Which code the library is (docs/release.md): every output that carries the SUNDIALS build names it too, so
 // that a number can be traced to the code that computed it.
@@ -41,5 +28,19 @@ struct LibraryVersion {
 };
 
 LibraryVersion library_version();
+
+// Which build of SUNDIALS the library's CVODE engine runs on: the program's --version and every JSON output
+// say it, because it doubles or halves the cost of a CVODE solve (docs/performance.md). The numbers do not
+// depend on it.
+struct SundialsBuild {
+  const char* version;  // e.g. "6.4.1"
+  // true: CVODE compiled -O3 from Debian's source package (scripts/sundials) and carried inside the library;
+  // false: Debian's libsundials-dev, compiled without optimization.
+  bool optimized;
+};
+
+SundialsBuild sundials_build();
+// "6.4.1 (optimized, built from Debian's source package)" | "6.4.1 (Debian's libsundials, unoptimized)"
+const char* sundials_build_description();
 
 }  // namespace restitution

@@ -492,3 +492,93 @@ def sweep_to_file(zetas, path, *, resume=False, end="both", tolerance=_TOLERANCE
 
 
 __all__.append("sweep_to_file")
+
+
+def _optional_real(name, value):
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, _numbers.Real):
+        raise TypeError(f"{name} must be a real number or None, got {type(value).__name__}")
+    return float(value)
+
+
+def gas(*, radius=None, density=None, mass=None, eps=None, velocity=None, dissipative_constant=None,
+        young_modulus=None, poisson_ratio=None, law="viscoelastic-hertz", end="delayed-recovery",
+        packing_fraction=None, rms_speed=None, temperature=None, duration=None, haff_times=None, first_time=0.0,
+        points_per_decade=20, a2=None, collision_rate_factor=1.0, tolerance=_TOLERANCE):
+    """The freely cooling granular gas of these spheres in its homogeneous cooling state (docs/gas.md), as
+    `restitution gas` computes it: T(t) from the kinetic theory with the law's exact eps(v), beside Haff's law.
+
+    Parameters
+    ----------
+    radius : float
+        Sphere radius R [m]; with density [kg/m^3] or mass [kg] (exactly one).
+    density, mass : float, optional
+    eps, velocity : float, optional
+        The law calibrated so that eps holds at the impact speed velocity [m/s]; or instead
+    dissipative_constant : float, optional
+        A [s] of viscoelastic Hertz, with the material's young_modulus [Pa] and poisson_ratio.
+    young_modulus, poisson_ratio : float, optional
+    law : str
+        Any member of the contact-law family (restitution's law names).
+    end : {"delayed-recovery", "naive"}
+    packing_fraction : float
+        phi in (0, 0.5).
+    rms_speed, temperature : float
+        Exactly one: the initial rms speed per direction [m/s] (T0 = m v^2), or T0 = m<v^2>/3 [J].
+    duration, haff_times : float
+        Exactly one: the span of time [s], or in Haff times tau0.
+    first_time : float
+        First time of the log-spaced grid [s]; 0: six decades below the end.
+    points_per_decade : int
+        Points of the time grid per decade, in [1, 1000].
+    a2 : float or "haff", optional
+        The first Sonine coefficient, held constant; "haff": van Noije & Ernst's of the Haff eps; None: Maxwellian.
+    collision_rate_factor : float
+        A factor on Enskog's collision rate.
+    tolerance : float
+        Accuracy of each eps solve of a law without a fast table.
+
+    Returns
+    -------
+    dict
+        The keys of `restitution gas --json`: "law" (a dict: "kind", "end", "zeta_at_reference",
+        "reference_speed_m_s"), "mass_kg", "diameter_m", "packing_fraction", "contact_correlation" (g2),
+        "number_density_m3", "initial_temperature_j", "tau0_s", "haff_eps", "a2", "collision_rate_factor",
+        "duration_s", and the curve as numpy arrays: "time_s", "temperature_j", "haff_temperature_j",
+        "local_exponent", "cooling_rate_hz", "collision_frequency_hz", "collisions_per_particle",
+        "effective_eps".
+
+    Raises
+    ------
+    ValueError
+        A missing, extra or bad argument, named (packing_fraction outside (0, 0.5), both duration and
+        haff_times, ...).
+
+    Examples
+    --------
+    >>> import restitution
+    >>> g = restitution.gas(radius=0.005, density=920.0, eps=0.8, velocity=2.0, packing_fraction=0.1,
+    ...                     rms_speed=1.0, haff_times=1000)
+    >>> round(g["tau0_s"], 6), round(g["haff_eps"], 4), g["time_s"].shape
+    (0.091387, 0.7924, (121,))
+    >>> round(g["local_exponent"][-1], 2)   # Haff's law: -2; viscoelastic spheres tend to -5/3
+    -1.69
+    """
+    numbers = {name: _optional_real(name, value) for name, value in (
+        ("radius", radius), ("density", density), ("mass", mass), ("young_modulus", young_modulus),
+        ("poisson_ratio", poisson_ratio), ("eps", eps), ("velocity", velocity),
+        ("dissipative_constant", dissipative_constant), ("packing_fraction", packing_fraction),
+        ("rms_speed", rms_speed), ("temperature", temperature), ("duration", duration), ("haff_times", haff_times),
+        ("first_time", first_time), ("collision_rate_factor", collision_rate_factor))}
+    if numbers["first_time"] is None or numbers["collision_rate_factor"] is None:
+        raise TypeError("first_time and collision_rate_factor must be real numbers")
+    if isinstance(points_per_decade, bool) or not isinstance(points_per_decade, _numbers.Integral):
+        raise TypeError(f"points_per_decade must be an int, got {type(points_per_decade).__name__}")
+    if not (a2 is None or isinstance(a2, str)):
+        a2 = _optional_real("a2", a2)
+    return _core.gas(**numbers, law=_text("law", law), end=_text("end", end),
+                     points_per_decade=int(points_per_decade), a2=a2, tolerance=_tolerance(tolerance))
+
+
+__all__.append("gas")

@@ -272,6 +272,29 @@ class BuildInfo(TypedDict):
     sundials: SundialsInfo
 
 def build_info() -> BuildInfo: ...
+def gas(
+    *,
+    radius: Optional[float] = ...,  # m
+    density: Optional[float] = ...,  # kg/m^3
+    mass: Optional[float] = ...,  # kg
+    eps: Optional[float] = ...,
+    velocity: Optional[float] = ...,  # m/s
+    dissipative_constant: Optional[float] = ...,  # s
+    young_modulus: Optional[float] = ...,  # Pa
+    poisson_ratio: Optional[float] = ...,
+    law: Law = ...,
+    end: End = ...,
+    packing_fraction: Optional[float] = ...,
+    rms_speed: Optional[float] = ...,  # m/s per direction
+    temperature: Optional[float] = ...,  # J
+    duration: Optional[float] = ...,  # s
+    haff_times: Optional[float] = ...,
+    first_time: float = ...,  # s
+    points_per_decade: int = ...,
+    a2: Union[None, float, Literal["haff"]] = ...,
+    collision_rate_factor: float = ...,
+    tolerance: float = ...,
+) -> Dict[str, Any]: ...  # the keys of `restitution gas --json`, the curve as float64 arrays
 from os import PathLike
 from typing import Callable
 

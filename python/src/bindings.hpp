@@ -15,5 +15,6 @@ void bind_fast(pybind11::module_& m);         // fast.cpp: the certified fast ta
 void bind_fit(pybind11::module_& m);          // fit.cpp: fit_data, measured eps(v)
 void bind_build_info(pybind11::module_& m);   // build_info.cpp: version and SUNDIALS build
 void bind_sweep_file(pybind11::module_& m);   // sweep_file.cpp: sweep_to_file, resumable
+void bind_gas(pybind11::module_& m);          // gas.cpp: the freely cooling gas
 
 }  // namespace restitution::python

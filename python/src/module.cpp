@@ -13,6 +13,7 @@ PYBIND11_MODULE(_restitution, m) {
   restitution::python::bind_fit(m);
   restitution::python::bind_build_info(m);
   restitution::python::bind_sweep_file(m);
+  restitution::python::bind_gas(m);
   auto series = m.def_submodule("series", "Analytic series and approximations of eps(zeta).");
   restitution::python::bind_series(series);
   auto fast = m.def_submodule("fast", "The certified fast table of eps(zeta) and its inverse.");

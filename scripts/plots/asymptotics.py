@@ -82,7 +82,8 @@ def main(exe, out_dir, formats):
         big = zz >= 10
         fz = fit(exe, data["end"], 10, zz[-1], 9)
         ax.loglog(zz[big], fz["prefactor"] * zz[big] ** fz["exponent_zeta"], "--",
-                  label=rf"least squares over $\zeta \in [10, {zz[-1]:g}]$: exponent {fz['exponent_zeta']:.4f}")
+                  label=rf"least squares over $\zeta \in [10, 10^{{{np.log10(zz[-1]):.0f}}}]$: "
+                        rf"exponent {fz['exponent_zeta']:.4f}")
         ax.set_ylabel(style.EPS)
         ax.grid(True)
     axes[1].loglog(zs[zs >= 10], delayed_law(zs[zs >= 10], 2), ":", label="derived, with first correction")

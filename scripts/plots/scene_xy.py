@@ -39,7 +39,7 @@ def main():
     p.add_argument("--dashed", default="")
     p.add_argument("--points", default="")
     p.add_argument("--error", default="")
-    p.add_argument("--error-label", default="|relative difference from the numerics|")
+    p.add_argument("--error-label", default=r"$|\varepsilon_\mathrm{approx} / \varepsilon - 1|$ against the numerics")
     p.add_argument("--xscale", default="linear")
     p.add_argument("--yscale", default="linear")
     p.add_argument("--title", default="")

@@ -48,7 +48,8 @@ def main():
             ok = [(zz, max(d, floor)) for zz, d in pairs if d is not None and d > 0]
             failed = [zz for zz, d in pairs if d is None]
             if ok:
-                error.loglog(*zip(*ok), marker=marker, ls="--", label=f"{end}: {style.ENGINES.get(engine, engine)} against production")
+                error.loglog(*zip(*ok), marker=marker, ls="--",
+                             label=f"{end}: {style.ENGINES.get(engine, engine)} against production")
             if failed:
                 error.loglog(failed, [tolerance] * len(failed), marker="x", ls="none", ms=10,
                              label=f"{end}: {style.ENGINES.get(engine, engine)} too much work (stiff)")

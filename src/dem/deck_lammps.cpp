@@ -63,3 +63,54 @@ std::vector<std::string> lammps_type_pair_lines(const std::vector<TypePairLines>
 }
 
 }  // namespace restitution::dem
+
+namespace restitution::dem {
+
+void write_lammps_wall(Deck& d, const Pair& contact, double shear_modulus_pa, double a, double mu) {
+  const double nu = contact.poisson_ratio;
+  // fix_wall_gran.cpp:160 makes hertz/material's E into (4/3) E/(2 (1 - nu)): E = 2 (1 - nu) E* gives the
+  // wall contact the law's (4/3) E*.
+  const double e = 2.0 * (1.0 - nu) * contact.effective_modulus_pa;
+  const double eta = damping_per_mass(a, contact.effective_modulus_pa, contact.effective_mass_kg);
+  const double kt = 8.0 * shear_modulus_pa;
+  d.parameters = {
+      {"E", e,
+       "the wall's hertz/material E [Pa] = 2 (1 - nu) E*: fix wall/gran makes it (4/3) E/(2 (1 - nu))"},
+      {"eta_n0", eta,
+       "damping eta_n0 = 2 A E* / m [1/(m s)], multiplied by m sqrt(R xi) (m the sphere's mass)"},
+      {"nu", nu, "Poisson ratio [1] (only fixes E's conversion)"},
+      {"mu_s", mu, "Coulomb friction coefficient [1]"},
+  };
+  // With friction a numeric k_t: the wall's `mindlin NULL` is not 8 G* (fix_wall_gran.cpp:248).
+  const std::string tangential =
+      mu > 0.0 ? fmt::format("mindlin {} 1 {}", num(kt), num(mu)) : "linear_nohistory 0 0";
+  d.lines = {
+      fmt::format("fix wall all wall/gran granular hertz/material {} {} {} tangential {} damping "
+                  "viscoelastic{} zplane 0 NULL",
+                  num(e), num(eta), num(nu), tangential,
+                  d.end == CollisionEnd::delayed_recovery ? " limit_damping" : "")};
+  d.prerequisites = {"units si", "atom_style sphere"};
+  d.checked_on = "LAMMPS 29 Sep 2021 - Update 2 (Debian 12's lammps 20220106.git7586adbb6a)";
+  const std::string convention =
+      "fix wall/gran granular: the wall's own convention, not pair granular's; the same pair_coeff string on "
+      "a "
+      "wall gives another eps (steel: 0.856 on a wall against 0.900 for a pair at 1 m/s)";
+  const std::string wallstyle =
+      "zplane 0 NULL is an example wall: any wallstyle (xplane, yplane, zcylinder, region) keeps the "
+      "numbers; "
+      "for a curved wall R* is no longer R";
+  d.notes = {convention,
+             wallstyle,
+             mu > 0.0
+                 ? fmt::format("tangential mindlin {} 1 mu: k_t = 8 G* a, G* of sphere and wall, given as a "
+                               "number (the wall's NULL gives E (2 - nu)(1 + nu)/4 instead)",
+                               num(kt))
+                 : "tangential linear_nohistory 0 0: frictionless (x_gamma_t = 0, mu_s = 0)",
+             friction_note(mu),
+             clamp_note(d.code, d.end),
+             "eta_n0 contains 1/m: exact only for the sphere it was made for (R = " +
+                 num(contact.effective_radius_m) + " m, m = " + num(contact.effective_mass_kg) +
+                 " kg); other spheres get A' = A m' / m"};
+}
+
+}  // namespace restitution::dem

@@ -13,6 +13,9 @@ namespace restitution::dem {
 
 // The lines and parameters giving `p` the law with A = `a` [s], YADE's vn [m/s], Coulomb mu [1].
 void write_lammps(Deck& d, const Pair& p, double a, double vn, double mu);
+// The `fix wall/gran granular` line giving a sphere on a wall (`contact`: E*, R* = R, m_eff = m; G* [Pa]) the
+// law with A = `a` [s], Coulomb mu, in the wall's own convention (fix_wall_gran.cpp, docs/dem.md "Walls").
+void write_lammps_wall(Deck& d, const Pair& contact, double shear_modulus_pa, double a, double mu);
 // What the deck's parameters give `other`, a pair of the deck's material, read as LAMMPS reads them.
 Coefficients read_lammps(const Deck& d, const Pair& other);
 // Several atom types: the lines from every type pair's own deck (pairs I <= J of `n` types, in the order

@@ -38,7 +38,13 @@ const std::vector<CodeEntry>& dem_codes() {
        .check_deck = &lammps_family_check_deck,
        .check_deck_run = "lmp -in ",
        .check_deck_steps = 2000,
-       .max_deck_collisions = kMaxDeckCollisionsLammps},
+       .max_deck_collisions = kMaxDeckCollisionsLammps,
+       .write_wall = &write_lammps_wall,
+       .wall = "fix wall/gran granular reads hertz/material E nu as the modulus factor (4/3) E/(2 (1 - nu)) "
+               "(fix_wall_gran.cpp:160), the pair as (4/3)/(2 (1 - nu^2)/E) (pair_granular.cpp:1008-1011, "
+               "1780), and mindlin NULL as E (2 - nu)(1 + nu)/4 (line 248) against the pair's 8 G*; damping "
+               "viscoelastic is eta_n0 m a on a wall (m the sphere's mass, a = sqrt(R delta)) as in a pair "
+               "(m_eff): the wall lines carry E = 2 (1 - nu) E* and a numeric k_t"},
       {.code = Code::liggghts,
        .name = "liggghts",
        .always_clamps = false,
@@ -57,7 +63,11 @@ const std::vector<CodeEntry>& dem_codes() {
        .check_deck = &lammps_family_check_deck,
        .check_deck_run = "liggghts -in ",
        .check_deck_steps = 2000,
-       .max_deck_collisions = kMaxDeckCollisionsLammps},
+       .max_deck_collisions = kMaxDeckCollisionsLammps,
+       .write_wall = nullptr,
+       .wall = "--wall does not support liggghts: its walls are meshes or primitives whose contact takes the "
+               "wall's atom type in the per-type-pair kn and gamman (hertz/stiffness), not yet checked by a "
+               "run here; use the type pair of the sphere's and the wall's types"},
       // MercuryDPM's BSHP species always clamps the normal force at zero.
       {.code = Code::mercurydpm,
        .name = "mercurydpm",
@@ -78,7 +88,10 @@ const std::vector<CodeEntry>& dem_codes() {
        .check_deck = nullptr,
        .check_deck_run = "",
        .check_deck_steps = 0,
-       .max_deck_collisions = 0},
+       .max_deck_collisions = 0,
+       .write_wall = nullptr,
+       .wall = "--wall does not support mercurydpm: a wall shares the particles' species, whose E* and A do "
+               "not depend on mass or radius; no wall convention of its own is checked here"},
       // YADE's Mindlin law always clamps; its Tsuji-type damping converges more slowly in dt (5000 coarse
       // steps per natural time).
       {.code = Code::yade,
@@ -101,7 +114,10 @@ const std::vector<CodeEntry>& dem_codes() {
        .check_deck = &yade_check_deck,
        .check_deck_run = "yade -n -x ",
        .check_deck_steps = 5000,
-       .max_deck_collisions = kMaxDeckCollisionsYade},
+       .max_deck_collisions = kMaxDeckCollisionsYade,
+       .write_wall = nullptr,
+       .wall = "--wall does not support yade: a wall is a body with its own material and the same Ip2 as two "
+               "spheres (no run checked here)"},
       // Chrono's SMC contact always clamps.
       {.code = Code::chrono,
        .name = "chrono",
@@ -122,7 +138,10 @@ const std::vector<CodeEntry>& dem_codes() {
        .check_deck = nullptr,
        .check_deck_run = "",
        .check_deck_steps = 0,
-       .max_deck_collisions = 0},
+       .max_deck_collisions = 0,
+       .write_wall = nullptr,
+       .wall = "--wall does not support chrono: a wall is a body whose material Chrono combines with the "
+               "sphere's (no run checked here)"},
   };
   return table;
 }

@@ -51,6 +51,12 @@ struct CodeEntry {
   const char* check_deck_run;       // the command before the deck's path
   int check_deck_steps;             // the default n
   std::size_t max_deck_collisions;  // type pairs x speeds in one deck
+  // A sphere on a wall (dem/wall_lines.hpp): the lines giving `contact` (E*, R* = R, m_eff = m; G* [Pa] of
+  // Mindlin's k_t = 8 G* a) the law with A [s] and Coulomb mu [1] in the code's wall convention; nullptr: not
+  // supported, for the reason `wall`.
+  void (*write_wall)(Deck& deck, const Pair& contact, double effective_shear_modulus_pa,
+                     double dissipative_constant_s, double friction);
+  const char* wall;  // the code's wall convention against its pair convention, in words
 };
 
 // Every code, in the order of the help texts.

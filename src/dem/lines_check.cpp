@@ -12,6 +12,13 @@ namespace restitution::dem {
 
 double dissipative_constant(const Material& material, const DampingSource& source, CollisionEnd end,
                             double tolerance, Method method, CollisionSolver& solver) {
+  // k only when calibrating: the source's own errors come first.
+  const double k = source.eps && !source.dissipative_constant_s ? elastic_constants(material).k : 0.0;
+  return dissipative_constant(k, source, end, tolerance, method, solver);
+}
+
+double dissipative_constant(double k, const DampingSource& source, CollisionEnd end, double tolerance,
+                            Method method, CollisionSolver& solver) {
   if (source.dissipative_constant_s.has_value() == source.eps.has_value()) {
     throw InvalidInput("give either --eps and --velocity (calibrate) or --dissipative-constant");
   }
@@ -23,7 +30,7 @@ double dissipative_constant(const Material& material, const DampingSource& sourc
   request.end = end;
   request.tolerance = tolerance;
   request.method = method;
-  request.k = elastic_constants(material).k;
+  request.k = k;
   return *calibrate(request, solver).dissipative_constant_s;
 }
 

@@ -25,6 +25,9 @@ struct DampingSource {
 };
 double dissipative_constant(const Material& material, const DampingSource& source, CollisionEnd end,
                             double tolerance, Method method, CollisionSolver& solver);
+// The same for a contact of k = ρ/m_eff [s^-2 m^-1/2] (a sphere on a wall).
+double dissipative_constant(double k, const DampingSource& source, CollisionEnd end, double tolerance,
+                            Method method, CollisionSolver& solver);
 
 struct LinesRequest {
   Code code = Code::lammps;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "gas/cooling.hpp"
+#include "restitution_gas/cooling.hpp"
+#include "gas/collision_integral.hpp"
 
 #include <fmt/core.h>
 
@@ -9,7 +10,6 @@
 #include <numbers>
 #include <string>
 
-#include "gas/collision_integral.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::gas {
@@ -95,7 +95,8 @@ struct Rule {
   }
   // The interpolant through (node, values) at ξ.
   [[nodiscard]] double interpolate(const std::array<double, kNodes>& values, double xi) const {
-    double num = 0.0, den = 0.0;
+    double num = 0.0;
+    double den = 0.0;
     for (std::size_t j = 0; j < kNodes; ++j) {
       const double d = xi - node[j];
       if (d == 0.0) return values[j];
@@ -137,7 +138,7 @@ class Gas {
   double cooling_rate(double temperature_j) {
     return rate_coefficient_ * std::sqrt(temperature_j) * integral_.mean_loss(temperature_j);
   }
-  double collision_frequency(double temperature_j) const {
+  [[nodiscard]] double collision_frequency(double temperature_j) const {
     return r_.collision_rate_factor * collision_frequency_hz(r_.particles.packing_fraction,
                                                              r_.particles.diameter_m, r_.particles.mass_kg,
                                                              temperature_j, integral_.a2());
@@ -165,7 +166,8 @@ Panel make_panel(Gas& gas, const Rule& rule, double x, double time_s, double col
 // ξ ∈ [-1, 1] in the panel where t(ξ) = target, by safeguarded Newton.
 double solve_in_panel(const Panel& p, const Rule& rule, double target) {
   const double half = 0.5 * kPanelWidth;
-  double lo = -1.0, hi = 1.0;
+  double lo = -1.0;
+  double hi = 1.0;
   double xi = 0.0;
   for (int iteration = 0; iteration < 60; ++iteration) {
     const double residual = p.time_s + half * rule.integral_to(p.time_rate, xi) - target;

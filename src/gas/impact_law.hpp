@@ -11,26 +11,9 @@
 #include <optional>
 
 #include "restitution/collision_solver.hpp"
-#include "restitution/contact_law.hpp"
+#include "restitution_gas/impact_law.hpp"
 
 namespace restitution::gas {
-
-struct ImpactLaw {
-  LawKind kind = LawKind::viscoelastic_hertz;
-  double zeta_at_reference = 0.0;    // ζ of the natural form at reference_speed_m_s
-  double reference_speed_m_s = 1.0;  // v_ref [m/s]
-  CollisionEnd end = CollisionEnd::delayed_recovery;
-  // Set: ε is this constant at every speed (Haff's gas); kind and ζ are then unused.
-  std::optional<double> constant_eps;
-};
-
-// Viscoelastic Hertz with ζ = β u^{1/5} (β in s^{1/5} m^{-1/5}, units.hpp).
-ImpactLaw hertz_impact_law(double beta, CollisionEnd end);
-// The member `kind` calibrated so that ε(velocity_m_s) = eps (InvalidInput naming eps or velocity).
-ImpactLaw impact_law_from_eps(LawKind kind, double eps, double velocity_m_s, CollisionEnd end,
-                              double tolerance = SolveOptions{}.tolerance);
-// ε = eps at every speed, eps in (0, 1].
-ImpactLaw constant_eps_law(double eps);
 
 // 1 − ε² of a law at any impact speed. Holds a solver and a cache: one per thread.
 class ImpactDissipation {
@@ -38,8 +21,8 @@ class ImpactDissipation {
   // tolerance: accuracy of each solve for the members without a fast table (SolveOptions::tolerance).
   explicit ImpactDissipation(const ImpactLaw& law, double tolerance = SolveOptions{}.tolerance);
   ~ImpactDissipation();
-  ImpactDissipation(ImpactDissipation&&) noexcept;
-  ImpactDissipation& operator=(ImpactDissipation&&) noexcept;
+  ImpactDissipation(ImpactDissipation&& other) noexcept;
+  ImpactDissipation& operator=(ImpactDissipation&& other) noexcept;
   ImpactDissipation(const ImpactDissipation&) = delete;
   ImpactDissipation& operator=(const ImpactDissipation&) = delete;
 

@@ -49,7 +49,7 @@ std::vector<CoolingCurve> read_gas_log(const std::string& text, const std::strin
     }
     auto it = std::find_if(curves.begin(), curves.end(), [&](const CoolingCurve& c) { return c.law == law; });
     if (it == curves.end()) {
-      curves.push_back({law, {}, {}});
+      curves.push_back({law, source, {}, {}});
       it = std::prev(curves.end());
     }
     it->time_s.push_back(t);

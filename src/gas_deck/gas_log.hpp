@@ -8,7 +8,8 @@
 namespace restitution::gas_deck {
 
 struct CoolingCurve {
-  std::string law;  // "viscoelastic" | "constant-eps"
+  std::string law;     // "viscoelastic" | "constant-eps"
+  std::string source;  // where it was read (a log file's name)
   std::vector<double> time_s, temperature_j;
 };
 

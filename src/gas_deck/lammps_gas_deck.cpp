@@ -161,8 +161,10 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
       fmt::format("each line starting {} is one scheduled time (log-spaced, {} per decade): law, time_s, "
                   "temperature_j = m <v^2>/3, timestep_s, step",
                   kGasTag, r.points_per_decade),
-      "run: lmp -in FILE, or on several cores mpirun -np 4 lmp -in FILE (as root add --allow-run-as-root; on "
-      "oversubscribed cores set OMPI_MCA_mpi_yield_when_idle=1), from the folder of the data file",
+      std::string(
+          "run: lmp -in FILE, or on several cores mpirun -np 4 lmp -in FILE (as root add "
+          "--allow-run-as-root; on oversubscribed cores set OMPI_MCA_mpi_yield_when_idle=1), from the "
+          "folder of the data file"),
       "checked on " + law.deck.checked_on};
   header.insert(header.end(), g.warnings.begin(), g.warnings.end());
 

@@ -142,6 +142,23 @@ struct DampingCheckTask {
   int line = 0;
 };
 
+// The freely cooling gas of a material's spheres from kinetic theory (docs/gas.md): T(t) and the local
+// exponent of the law's ε(v) beside Haff's law of a constant ε.
+struct GasTask {
+  std::string name;
+  std::string title;
+  std::string material;                // a [materials.X]: radius, density or mass (and A without eps)
+  std::optional<double> eps;           // with velocity: the law calibrated there; without: the material's A
+  std::optional<double> velocity_m_s;  // [m/s]
+  LawKind law = LawKind::viscoelastic_hertz;
+  CollisionEnd end = CollisionEnd::delayed_recovery;
+  double packing_fraction = 0.0;
+  std::optional<double> rms_speed_m_s, temperature_j;  // exactly one
+  std::optional<double> duration_s, haff_times;        // exactly one
+  int points_per_decade = 20;
+  int line = 0;
+};
+
 struct Scene {
   std::string file_name;
   std::string title;
@@ -149,6 +166,7 @@ struct Scene {
   std::filesystem::path output;  // as written in the file (relative paths: to the working directory)
   double tolerance = SolveOptions{}.tolerance;
   Method method = SolveOptions{}.method;
+  std::vector<std::string> figure_formats{"png"};  // `format`: each figure in each (figure_formats.hpp)
   std::map<std::string, Material> materials;
   std::vector<Sweep> sweeps;
   std::vector<Trajectory> trajectories;
@@ -157,7 +175,8 @@ struct Scene {
   std::vector<ExternalStudy> studies;
   std::vector<DemTask> dems;
   std::vector<DampingCheckTask> damping_checks;
-  std::vector<FitTask> fits;  // [[fit]]: measured eps(v) (scene_fit.hpp)
+  std::vector<FitTask> fits;   // [[fit]]: measured eps(v) (scene_fit.hpp)
+  std::vector<GasTask> gases;  // [[gas]]
 };
 
 // Parses and validates a scene. file_name is used in messages only. Throws InvalidInput.

@@ -16,6 +16,7 @@
 #include "reference/work_precision.hpp"
 #include "restitution/errors.hpp"
 #include "restitution_series_study/series_named.hpp"
+#include "scene/figure_formats.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_approximations.hpp"
 #include "scene/toml_ascii.hpp"
@@ -161,6 +162,13 @@ class Parser {
         root_.fail("method", e.what());
       }
     }
+    if (const auto formats = root_.words("format")) {
+      try {
+        scene_.figure_formats = figure_formats(*formats);
+      } catch (const InvalidInput& e) {
+        root_.fail("format", e.what());
+      }
+    }
     if (const toml::table* materials = root_.table("materials")) {
       for (const auto& [key, node] : *materials) {
         const std::string path = root_.child_path("materials") + "." + std::string(key.str());
@@ -177,6 +185,7 @@ class Parser {
     each("dashpot", [this](TomlReader& r) { scene_.dashpots.push_back(read_dashpot(r)); });
     each("dem", [this](TomlReader& r) { scene_.dems.push_back(read_dem(r)); });
     each("damping_check", [this](TomlReader& r) { scene_.damping_checks.push_back(read_damping_check(r)); });
+    each("gas", [this](TomlReader& r) { scene_.gases.push_back(read_gas(r)); });
     each("fit", [this](TomlReader& r) {
       scene_.fits.push_back(detail::read_fit_task(r, read_name(r, "fit"), scene_.materials));
     });
@@ -459,6 +468,56 @@ class Parser {
       r.fail("friction", e.what());
     }
     return d;
+  }
+
+  GasTask read_gas(TomlReader& r) {
+    GasTask g;
+    g.line = r.line();
+    g.name = read_name(r, "gas");
+    g.title = r.text("title").value_or(g.name);
+    const auto material = read_material_name(r);
+    if (!material) r.fail("material", "missing: the [materials.X] whose spheres make the gas");
+    g.material = *material;
+    g.law = read_law(r);
+    g.eps = r.number("eps");
+    g.velocity_m_s = r.number("velocity");
+    if (g.eps) check_eps(r, "eps", {*g.eps});
+    if (g.eps.has_value() != g.velocity_m_s.has_value()) {
+      r.fail(g.eps ? "eps" : "velocity", "eps and velocity go together (the impact speed eps holds at, m/s)");
+    }
+    if (!g.eps) {
+      require_dissipation(r, g.material, "a gas without eps");
+      if (!has_dissipative_constant(g.law)) r.fail("law", "without eps only viscoelastic-hertz takes A");
+    }
+    if (g.velocity_m_s) check_positive(r, "velocity", {*g.velocity_m_s});
+    g.end = read_end(r);
+    const auto phi = r.number("packing_fraction");
+    if (!phi) r.fail("packing_fraction", "missing: the packing fraction in (0, 0.5)");
+    r.check_each(
+        "packing_fraction", {*phi}, [](double v) { return v > 0.0 && v < 0.5; }, "a value in (0, 0.5)");
+    g.packing_fraction = *phi;
+    g.rms_speed_m_s = r.number("rms_speed");
+    g.temperature_j = r.number("temperature");
+    if (g.rms_speed_m_s.has_value() == g.temperature_j.has_value()) {
+      r.fail("rms_speed", "give exactly one of rms_speed (m/s per direction) and temperature (J)");
+    }
+    if (g.rms_speed_m_s) check_positive(r, "rms_speed", {*g.rms_speed_m_s});
+    if (g.temperature_j) check_positive(r, "temperature", {*g.temperature_j});
+    g.duration_s = r.number("duration");
+    g.haff_times = r.number("haff_times");
+    if (g.duration_s.has_value() == g.haff_times.has_value()) {
+      r.fail("duration", "give exactly one of duration (s) and haff_times");
+    }
+    if (g.duration_s) check_positive(r, "duration", {*g.duration_s});
+    if (g.haff_times) check_positive(r, "haff_times", {*g.haff_times});
+    if (const auto points = r.number("points_per_decade")) {
+      r.check_each(
+          "points_per_decade", {*points},
+          [](double v) { return v >= 1.0 && v <= 1000.0 && v == std::floor(v); },
+          "a whole number in [1, 1000]");
+      g.points_per_decade = static_cast<int>(*points);
+    }
+    return g;
   }
 
   DampingCheckTask read_damping_check(TomlReader& r) {

@@ -40,3 +40,5 @@ sundials_optimized: bool = restitution.build_info()["sundials"]["optimized"]
 fast_eps: float = restitution.fast.eps(0.3)
 fast_array: np.ndarray = restitution.fast.eps(speeds)
 series_array: np.ndarray = restitution.series.eval("naive", speeds)
+cooling: dict = restitution.gas(radius=0.005, density=920.0, eps=0.8, velocity=2.0, packing_fraction=0.1,
+                                rms_speed=1.0, haff_times=10, a2="haff")

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "restitution/collision_solver.hpp"
+#include "restitution/errors.hpp"
+#include "scene/figure_formats.hpp"
 
 namespace restitution::cli {
 
@@ -36,6 +38,24 @@ inline CLI::Validator non_empty_path() {
             return value.empty() ? std::string("an empty path: give a file or folder name") : std::string();
           },
           "PATH"};
+}
+
+// --format png,pdf,svg of the commands that draw figures: the list is checked here (an unknown format is a
+// usage error naming it) and read with scene::figure_formats_from_list.
+inline CLI::Option* add_figure_format_option(CLI::App* command, std::string& formats) {
+  const CLI::Validator known(
+      [](const std::string& value) {
+        try {
+          scene::figure_formats_from_list(value);
+          return std::string();
+        } catch (const InvalidInput& e) {
+          return std::string(e.what());
+        }
+      },
+      "png,pdf,svg");
+  return command->add_option("--format", formats, "figure formats, comma-separated: png (200 dpi), pdf, svg")
+      ->capture_default_str()
+      ->check(known);
 }
 
 // A count option: a whole number in [lo, hi], every bound documented; the value as typed in the message

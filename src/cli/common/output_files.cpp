@@ -193,8 +193,16 @@ void write_file_atomically(const fs::path& path, const std::string& content) {
   if (error) fail(fmt::format("cannot write '{}': {}", target.path.string(), error.message()));
 }
 
+std::vector<std::string> figure_file_names(const std::string& stem, const std::vector<std::string>& formats) {
+  std::vector<std::string> names;
+  names.reserve(formats.size());
+  for (const std::string& format : formats) names.push_back(fmt::format("{}.{}", stem, format));
+  return names;
+}
+
 std::string run_plot_script(const std::string& script, const fs::path& data, const fs::path& image,
-                            const std::vector<std::string>& arguments) {
+                            const std::vector<std::string>& arguments,
+                            const std::vector<std::string>& formats) {
   const fs::path path = scripts_folder() / "plots" / (script + ".py");
   if (!fs::exists(path)) return fmt::format("no plot: script {} not found", path.string());
   const std::string python = python_interpreter();
@@ -204,26 +212,40 @@ std::string run_plot_script(const std::string& script, const fs::path& data, con
     return fmt::format(
         "no plot: {} cannot import matplotlib (install python3-matplotlib: bash scripts/setup)", python);
   }
-  // matplotlib picks the format by the extension, so the temporary name keeps it: NAME.tmp.png.
-  const fs::path temporary =
-      image.parent_path() / (image.stem().string() + ".tmp" + image.extension().string());
-  std::vector<std::string> command = {python, path.string(), data.string(), temporary.string()};
+  // matplotlib picks the format by the extension, so the temporary names keep it: NAME.tmp.png, ...
+  const auto figure = [&](const std::string& format, bool temporary) {
+    return image.parent_path() /
+           fmt::format("{}{}{}", image.stem().string(), temporary ? ".tmp." : ".", format);
+  };
+  std::string format_list;
+  for (const std::string& format : formats) format_list += (format_list.empty() ? "" : ",") + format;
+  std::vector<std::string> command = {python, path.string(), data.string(),
+                                      figure(formats.front(), true).string()};
   command.insert(command.end(), arguments.begin(), arguments.end());
+  command.insert(command.end(), {"--format", format_list});
   const int status = run_quietly(command);
   std::error_code error;
+  const auto remove_temporaries = [&] {
+    for (const std::string& format : formats) fs::remove(figure(format, true), error);
+  };
   if (status != 0 || stop_signal_received() != 0) {
-    fs::remove(temporary, error);  // the image of a failed or stopped script is no plot
+    remove_temporaries();  // the figures of a failed or stopped script are no plot
     stop_if_signalled(status);
     return fmt::format("no plot: {} failed with status {}", path.filename().string(),
                        WIFEXITED(status) ? WEXITSTATUS(status) : -1);
   }
-  fs::rename(temporary, image, error);
-  if (error == std::errc::no_such_file_or_directory) {
-    return fmt::format("no plot: {} wrote no image", path.filename().string());
+  for (const std::string& format : formats) {
+    if (!fs::exists(figure(format, true))) {
+      remove_temporaries();
+      return fmt::format("no plot: {} wrote no {} figure", path.filename().string(), format);
+    }
   }
-  if (error) {
-    fs::remove(temporary, error);
-    throw IoError(fmt::format("cannot write '{}': {}", image.string(), error.message()));
+  for (const std::string& format : formats) {
+    fs::rename(figure(format, true), figure(format, false), error);
+    if (error) {
+      remove_temporaries();
+      throw IoError(fmt::format("cannot write '{}': {}", figure(format, false).string(), error.message()));
+    }
   }
   return {};
 }

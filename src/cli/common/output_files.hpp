@@ -36,15 +36,21 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 // A double with 17 significant digits, as the sweep library writes its tables (sweep/number_text.hpp).
 using restitution::number17;
 
-// Runs scripts/plots/<script>.py with Debian's /usr/bin/python3 as `<script>.py DATA IMAGE ARGUMENTS...`.
-// The script writes a temporary NAME.tmp.png that becomes IMAGE only once the script succeeded, and it
-// never outlives this process (SIGKILL when this process dies, SIGTERM when it is asked to stop): no image
+// The file names of figure STEM in each format: STEM.png, STEM.pdf, ...
+std::vector<std::string> figure_file_names(const std::string& stem, const std::vector<std::string>& formats);
+
+// Runs scripts/plots/<script>.py with Debian's /usr/bin/python3 as
+// `<script>.py DATA IMAGE ARGUMENTS... --format FORMATS`: one figure in each format (png, pdf, svg; see
+// scene/figure_formats.hpp), named IMAGE with its extension replaced by the format's. The script writes
+// temporary NAME.tmp.<format> files that become the figures only once the script succeeded, and it never
+// outlives this process (SIGKILL when this process dies, SIGTERM when it is asked to stop): no figure
 // appears after the command ended, none half-written under its name. Returns an empty string on success,
 // otherwise one line saying why no plot was made (matplotlib missing, script failed): callers warn on
 // stderr and keep the data they wrote. Throws Interrupted when the script (or this process) got SIGINT or
-// SIGTERM, IoError when the image cannot be renamed into place.
+// SIGTERM, IoError when a figure cannot be renamed into place.
 std::string run_plot_script(const std::string& script, const std::filesystem::path& data,
                             const std::filesystem::path& image,
-                            const std::vector<std::string>& arguments = {});
+                            const std::vector<std::string>& arguments = {},
+                            const std::vector<std::string>& formats = {"png"});
 
 }  // namespace restitution::cli

@@ -15,10 +15,12 @@
 #include "cli/common/commands.hpp"
 #include "cli/common/json_writer.hpp"
 #include "cli/common/material_options.hpp"
+#include "cli/dem/deck_json.hpp"
 #include "cli/dem/dem_deck.hpp"
 #include "cli/dem/dem_polydisperse_output.hpp"
 #include "cli/dem/dem_production.hpp"
 #include "cli/dem/dem_type_options.hpp"
+#include "cli/dem/dem_wall.hpp"
 #include "cli/dem/from_fit.hpp"
 #include "damping_check/yade_version_lines.hpp"
 #include "dem/lines_check.hpp"
@@ -47,6 +49,7 @@ struct DemOptions {
   std::optional<std::string> deck;  // --deck FILE: the check deck (cli/dem/dem_deck.hpp)
   std::string deck_run;             // the command that runs it, once written
   ProductionOptions production;     // --timestep, --max-eps-error, --constant-eps
+  WallOptions wall;                 // --wall: a sphere on a wall (cli/dem/dem_wall.hpp)
 };
 
 // The YADE the lines are for: --yade-version, else `yade --version` of the one on PATH, else the newest
@@ -120,26 +123,8 @@ void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optio
   json.field("code", dem::code_name(r.deck.code)).field("end", end_name(r.deck.end));
   json.field("dissipative_constant_s", r.dissipative_constant_s);
   json.field("reference_velocity_m_s", r.reference_velocity_m_s).field("friction", r.friction);
-  json.key("parameters").begin_object();
-  for (const auto& p : r.deck.parameters) json.field(p.name, p.value);
-  json.end_object();
-  json.key("meanings").begin_object();
-  for (const auto& p : r.deck.parameters) json.field(p.name, p.meaning);
-  json.end_object();
-  json.key("prerequisites").begin_array();
-  for (const auto& line : r.deck.prerequisites) json.value(line);
-  json.end_array();
-  if (!r.deck.checked_on.empty()) json.field("checked_on", r.deck.checked_on);
-  json.key("lines").begin_array();
-  for (const auto& line : r.deck.lines) json.value(line);
-  json.end_array();
-  json.key("notes").begin_array();
-  for (const auto& note : r.deck.notes) json.value(note);
-  json.end_array();
-  json.key("eps").begin_array();
-  for (const auto& e : r.eps)
-    json.begin_object().field("velocity_m_s", e.velocity_m_s).field("eps", e.eps).end_object();
-  json.end_array();
+  write_deck_json(json, r.deck);
+  write_speed_eps_json(json, r.eps);
   json.key("sizes").begin_array();
   for (const auto& s : r.sizes) {
     json.begin_object().field("radius_factor", s.radius_factor);
@@ -251,6 +236,30 @@ int run_polydisperse(const DemOptions& o) {
   return 0;
 }
 
+// --wall: one sphere on a wall; the options of pairs and type sets are refused by name.
+int run_wall(const DemOptions& o) {
+  if (several_types(o.types) || o.types.radius2 || o.types.mass2) {
+    throw InvalidInput("--wall takes one sphere: one --radius, no --radius2, --mass2 or --radius-range");
+  }
+  if (!o.from_fit.empty() || !o.yade_version.empty() || any_production_option(o.production)) {
+    throw InvalidInput(
+        "--wall takes --eps/--velocity or --dissipative-constant, not --from-fit, --yade-version, "
+        "--timestep, --max-eps-error or --constant-eps");
+  }
+  dem::WallRequest request;
+  request.code = dem::code_from_name(o.code);
+  request.end = end_from_name(o.end);
+  request.sphere = material_from(one_pair_material(o.types));
+  request.wall = wall_material(o.wall);
+  request.damping = {o.dissipative_constant, o.eps, o.velocity};
+  request.speeds_m_s = o.speeds;
+  request.tolerance = o.tolerance;
+  request.friction = o.friction;
+  const dem::WallResult r = dem::wall_lines(request);
+  print_wall(r, o.json, o.deck);
+  return 0;
+}
+
 }  // namespace
 
 void add_dem_command(CLI::App& app, Action& chosen) {
@@ -298,11 +307,16 @@ void add_dem_command(CLI::App& app, Action& chosen) {
                   dem::max_deck_types(dem::Code::lammps, 3), dem::kMaxDeckSphereSteps,
                   dem::kMaxDeckCollisionsYade));
   add_production_options(*cmd, o->production);
+  add_wall_options(*cmd, o->wall);
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, cmd, &chosen] {
     o->end_given = cmd->count("--end") > 0;
     chosen = [o] {
+      if (o->wall.wall || o->wall.young_modulus || o->wall.poisson_ratio) {
+        if (o->deck) check_deck_target(*o->deck, dem::code_from_name(o->code));
+        return run_wall(*o);
+      }
       if (o->deck) check_deck_target(*o->deck, dem::code_from_name(o->code));
       if (several_types(o->types)) return run_polydisperse(*o);
       if (o->deck) check_deck_size(dem::code_from_name(o->code), 1, o->speeds.size());

@@ -3,8 +3,12 @@
 // the kinetic theory with the law's exact ε(v) (src/gas/, docs/gas.md): T(t), Haff's τ₀, the local exponent,
 // the cooling rate, the collision frequency and ε_eff(T), as a table, JSON, CSV and a plot.
 #include <fmt/core.h>
+#include <fmt/format.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <system_error>
@@ -15,52 +19,22 @@
 #include "cli/common/json_writer.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
+#include "cli/gas/gas_deck_options.hpp"
 #include "cli/gas/gas_options.hpp"
+#include "cli/gas/gas_table.hpp"
+#include "restitution_gas/gas_inputs.hpp"
+#include "scene/figure_formats.hpp"
 
 namespace restitution::cli {
 namespace {
 
 struct GasCommandOptions {
   GasOptions gas;
+  GasDeckOptions deck;  // --deck, --compare (cli/gas/gas_deck_options.hpp)
   bool json = false;
   std::string out;   // CSV file
   std::string plot;  // PNG file
 };
-
-// The columns of the CSV and of the table, each with its values.
-struct Column {
-  const char* name;
-  const std::vector<double>* values;
-};
-std::vector<Column> columns(const gas::CoolingCurve& c) {
-  return {{"time_s", &c.time_s},
-          {"temperature_j", &c.temperature_j},
-          {"haff_temperature_j", &c.haff_temperature_j},
-          {"local_exponent", &c.local_exponent},
-          {"cooling_rate_hz", &c.cooling_rate_hz},
-          {"collision_frequency_hz", &c.collision_frequency_hz},
-          {"collisions_per_particle", &c.collisions_per_particle},
-          {"effective_eps", &c.effective_eps}};
-}
-
-std::string csv(const gas::CoolingCurve& c) {
-  const std::vector<Column> cols = columns(c);
-  std::string out;
-  for (std::size_t j = 0; j < cols.size(); ++j) out += fmt::format("{}{}", j ? "," : "", cols[j].name);
-  out += "\n";
-  for (std::size_t i = 0; i < c.time_s.size(); ++i) {
-    for (std::size_t j = 0; j < cols.size(); ++j)
-      out += fmt::format("{}{}", j ? "," : "", number17((*cols[j].values)[i]));
-    out += "\n";
-  }
-  return out;
-}
-
-std::string law_text(const gas::CoolingRequest& r) {
-  if (r.law.constant_eps) return fmt::format("constant eps = {:.10g}", *r.law.constant_eps);
-  return fmt::format("{}, zeta = {:.10g} at {:g} m/s, {} end", law_name(r.law.kind), r.law.zeta_at_reference,
-                     r.law.reference_speed_m_s, end_name(r.law.end));
-}
 
 std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const GasCommandOptions& o) {
   JsonWriter json;
@@ -75,7 +49,7 @@ std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, 
   json.field("initial_temperature_j", r.initial_temperature_j);
   json.field("tau0_s", c.tau0_s).field("haff_eps", c.haff_eps).field("a2", c.a2);
   json.field("collision_rate_factor", r.collision_rate_factor).field("duration_s", c.duration_s);
-  for (const Column& col : columns(c)) {
+  for (const gas::CurveColumn& col : gas::curve_columns(c)) {
     json.key(col.name).begin_array();
     for (const double v : *col.values) json.value(v);
     json.end_array();
@@ -85,35 +59,46 @@ std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, 
   return finish_json_document(json) + "\n";
 }
 
-void print_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c) {
-  fmt::print("# restitution gas: {}\n", law_text(r));
-  fmt::print(
+std::string text_table(const gas::CoolingRequest& r, const gas::CoolingCurve& c) {
+  std::string out;
+  auto line = std::back_inserter(out);
+  fmt::format_to(line, "# restitution gas: {}\n", gas_law_text(r));
+  fmt::format_to(
+      line,
       "# spheres m = {:.6g} kg, sigma = {:.6g} m, phi = {:g} (g2 = {:.6g}, n = {:.6g} 1/m^3); T0 = {:.6g} "
       "J\n",
       r.particles.mass_kg, r.particles.diameter_m, r.particles.packing_fraction, c.contact_correlation,
       c.number_density_m3, r.initial_temperature_j);
-  fmt::print("# Haff's law tangent at t = 0: tau0 = {:.10g} s, eps = {:.10g}; a2 = {:g}{}\n", c.tau0_s,
-             c.haff_eps, c.a2, c.a2 == 0.0 ? " (Maxwellian)" : " (first Sonine correction, constant)");
-  fmt::print("{:>13} {:>13} {:>10} {:>10} {:>9} {:>12} {:>12} {:>12} {:>10}\n", "time_s", "temperature_j",
-             "T/T0", "Haff T/T0", "exponent", "cooling_1/s", "collisions/s", "collisions", "eps_eff");
+  fmt::format_to(line, "# Haff's law tangent at t = 0: tau0 = {:.10g} s, eps = {:.10g}; a2 = {:g}{}\n",
+                 c.tau0_s, c.haff_eps, c.a2,
+                 c.a2 == 0.0 ? " (Maxwellian)" : " (first Sonine correction, constant)");
+  fmt::format_to(line, "{:>13} {:>13} {:>10} {:>10} {:>9} {:>12} {:>12} {:>12} {:>10}\n", "time_s",
+                 "temperature_j", "T/T0", "Haff T/T0", "exponent", "cooling_1/s", "collisions/s",
+                 "collisions", "eps_eff");
   for (std::size_t i = 0; i < c.time_s.size(); ++i) {
-    fmt::print("{:>13.6e} {:>13.6e} {:>10.4e} {:>10.4e} {:>9.5f} {:>12.5e} {:>12.5e} {:>12.5e} {:>10.7f}\n",
-               c.time_s[i], c.temperature_j[i], c.temperature_j[i] / r.initial_temperature_j,
-               c.haff_temperature_j[i] / r.initial_temperature_j, c.local_exponent[i], c.cooling_rate_hz[i],
-               c.collision_frequency_hz[i], c.collisions_per_particle[i], c.effective_eps[i]);
+    fmt::format_to(
+        line, "{:>13.6e} {:>13.6e} {:>10.4e} {:>10.4e} {:>9.5f} {:>12.5e} {:>12.5e} {:>12.5e} {:>10.7f}\n",
+        c.time_s[i], c.temperature_j[i], c.temperature_j[i] / r.initial_temperature_j,
+        c.haff_temperature_j[i] / r.initial_temperature_j, c.local_exponent[i], c.cooling_rate_hz[i],
+        c.collision_frequency_hz[i], c.collisions_per_particle[i], c.effective_eps[i]);
   }
+  return out;
 }
 
 void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const GasCommandOptions& o) {
-  const std::string table = csv(c);
+  const std::string table = gas_csv(c);
   if (!o.out.empty()) write_file_atomically(o.out, table);
   if (o.plot.empty()) return;
   // Without --out the plot reads a scratch copy of the table beside the image, removed afterwards.
   const std::filesystem::path data(o.out.empty() ? o.plot + ".data.csv" : o.out);
   if (o.out.empty()) write_file_atomically(data, table);
-  const std::string why = run_plot_script(
-      "gas_cooling", data, o.plot,
-      {number17(r.initial_temperature_j), number17(c.tau0_s), number17(c.haff_eps), law_text(r)});
+  // The format the file's name asks for (gas.pdf, gas.svg); PNG for any other name.
+  const std::string extension = std::filesystem::path(o.plot).extension().string();
+  const bool known =
+      extension.size() > 1 && std::find(scene::kFigureFormats.begin(), scene::kFigureFormats.end(),
+                                        extension.substr(1)) != scene::kFigureFormats.end();
+  const std::string why = run_plot_script("gas_cooling", data, o.plot, gas_plot_arguments(r, c),
+                                          {known ? extension.substr(1) : "png"});
   if (o.out.empty()) {
     std::error_code ignored;
     std::filesystem::remove(data, ignored);
@@ -122,16 +107,15 @@ void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const
 }
 
 int run_gas(const GasCommandOptions& o) {
+  if (gas_deck_requested(o.deck)) return run_gas_deck(o.deck, o.gas, o.json);
   if (!o.out.empty()) check_output_file(o.out);
   if (!o.plot.empty()) check_output_file(o.plot);
   const gas::CoolingRequest request = cooling_request(o.gas);
   const gas::CoolingCurve curve = gas::cooling_curve(request);
   write_files(request, curve, o);
-  if (o.json) {
-    fmt::print("{}", json_text(request, curve, o));
-  } else {
-    print_text(request, curve);
-  }
+  // One write: a stdout that cannot take it is reported once, as the I/O failure it is (main's flush).
+  const std::string text = o.json ? json_text(request, curve, o) : text_table(request, curve);
+  std::fputs(text.c_str(), stdout);
   return 0;
 }
 
@@ -144,6 +128,7 @@ void add_gas_command(CLI::App& app, Action& chosen) {
       "the freely cooling gas of these spheres from kinetic theory with the exact eps(v): T(t), Haff's "
       "tau0, the local exponent (docs/gas.md)");
   add_gas_options(*cmd, o->gas);
+  add_gas_deck_options(*cmd, o->deck);
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->add_option("--out", o->out, "write the curve to this CSV file")->check(non_empty_path());

@@ -4,84 +4,14 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
-#include <cmath>
+#include <exception>
+#include <string>
 
 #include "cli/common/options.hpp"
-#include "gas/collision_integral.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/material.hpp"
-#include "restitution/units.hpp"
+#include "restitution_gas/gas_inputs.hpp"
 
 namespace restitution::cli {
-namespace {
-
-// Exactly one of two options.
-template <class T>
-const T& one_of(const std::optional<T>& a, const char* a_name, const std::optional<T>& b,
-                const char* b_name) {
-  if (a.has_value() == b.has_value()) {
-    throw InvalidInput(fmt::format("give exactly one of {} and {}", a_name, b_name));
-  }
-  return a ? *a : *b;
-}
-
-void require_positive(const std::optional<double>& value, const char* option, const char* unit) {
-  if (value && !(std::isfinite(*value) && *value > 0.0)) {
-    throw InvalidInput(fmt::format("{} must be finite and > 0{}, got {}", option, unit, *value));
-  }
-}
-
-// Mass [kg] and diameter [m] of the gas's spheres: --radius with --mass or --density.
-gas::GasParticles particles_of(const GasOptions& o) {
-  if (o.material.radius2 || o.material.mass2) {
-    throw InvalidInput("--radius2 and --mass2: the gas is of one kind of sphere (monodisperse)");
-  }
-  if (!o.material.radius) throw InvalidInput("the gas needs --radius (and --density or --mass)");
-  require_positive(o.material.radius, "--radius", " m");
-  require_positive(o.material.density, "--density", " kg/m^3");
-  require_positive(o.material.mass, "--mass", " kg");
-  gas::GasParticles p;
-  p.diameter_m = 2.0 * *o.material.radius;
-  (void)one_of(o.material.mass, "--mass", o.material.density, "--density");
-  p.mass_kg = o.material.mass ? *o.material.mass : sphere_mass_kg(*o.material.radius, *o.material.density);
-  if (!o.packing_fraction) throw InvalidInput("the gas needs --packing-fraction");
-  if (!(*o.packing_fraction > 0.0 && *o.packing_fraction < 0.5)) {
-    throw InvalidInput(fmt::format("--packing-fraction must be in (0, 0.5) (a homogeneous fluid), got {}",
-                                   *o.packing_fraction));
-  }
-  p.packing_fraction = *o.packing_fraction;
-  return p;
-}
-
-gas::ImpactLaw law_of(const GasOptions& o) {
-  LawKind kind = LawKind::viscoelastic_hertz;
-  try {
-    kind = law_from_name(o.law);
-  } catch (const InvalidInput& e) {
-    throw InvalidInput(fmt::format("--law: {}", e.what()));
-  }
-  const CollisionEnd end = end_from_name(o.end);
-  if (o.dissipative_constant) {
-    if (o.eps || o.velocity) throw InvalidInput("--dissipative-constant excludes --eps and --velocity");
-    if (!has_dissipative_constant(kind)) {
-      throw InvalidInput(
-          fmt::format("--dissipative-constant belongs to --law viscoelastic-hertz; --law {} takes --eps and "
-                      "--velocity",
-                      o.law));
-    }
-    Material m = material_from(o.material);
-    m.dissipative_constant_s = *o.dissipative_constant;
-    return gas::hertz_impact_law(material_constants(m).hertz.beta, end);
-  }
-  if (!o.eps || !o.velocity) {
-    throw InvalidInput(
-        "the law needs --eps with --velocity (the impact speed in m/s it was measured at), or "
-        "--dissipative-constant with the material");
-  }
-  return gas::impact_law_from_eps(kind, *o.eps, *o.velocity, end, o.tolerance);
-}
-
-}  // namespace
 
 void add_gas_options(CLI::App& command, GasOptions& o) {
   add_material_options(command, o.material);
@@ -120,25 +50,31 @@ void add_gas_options(CLI::App& command, GasOptions& o) {
 }
 
 gas::CoolingRequest cooling_request(const GasOptions& o) {
-  gas::CoolingRequest r;
-  r.particles = particles_of(o);
-  r.law = law_of(o);
-  const double speed_or_temperature = one_of(o.rms_speed, "--rms-speed", o.temperature, "--temperature");
-  r.initial_temperature_j =
-      o.rms_speed ? r.particles.mass_kg * speed_or_temperature * speed_or_temperature : speed_or_temperature;
-  require_positive(o.rms_speed, "--rms-speed", " m/s");
-  require_positive(o.temperature, "--temperature", " J");
-  require_positive(o.duration, "--duration", " s");
-  require_positive(o.haff_times, "--haff-times", "");
-  r.duration = one_of(o.duration, "--duration", o.haff_times, "--haff-times");
-  r.duration_in_haff_times = o.haff_times.has_value();
-  r.first_time_s = o.first_time;
-  r.points_per_decade = o.points_per_decade;
-  r.collision_rate_factor = o.collision_rate_factor;
-  r.tolerance = o.tolerance;
-  if (o.a2 == "haff") {
-    r.a2 = gas::sonine_a2_constant_eps(gas::haff_reference(r).eps);  // the Maxwellian gas's Haff ε
-  } else if (!o.a2.empty()) {
+  if (o.material.radius2 || o.material.mass2) {
+    throw InvalidInput("--radius2 and --mass2: the gas is of one kind of sphere (monodisperse)");
+  }
+  gas::GasInputs in;
+  in.radius_m = o.material.radius;
+  in.density_kg_m3 = o.material.density;
+  in.mass_kg = o.material.mass;
+  in.young_modulus_pa = o.material.young_modulus;
+  in.poisson_ratio = o.material.poisson_ratio;
+  in.eps = o.eps;
+  in.velocity_m_s = o.velocity;
+  in.dissipative_constant_s = o.dissipative_constant;
+  in.law = o.law;
+  in.end = o.end;
+  in.packing_fraction = o.packing_fraction;
+  in.rms_speed_m_s = o.rms_speed;
+  in.temperature_j = o.temperature;
+  in.duration_s = o.duration;
+  in.haff_times = o.haff_times;
+  in.first_time_s = o.first_time;
+  in.points_per_decade = o.points_per_decade;
+  in.collision_rate_factor = o.collision_rate_factor;
+  in.tolerance = o.tolerance;
+  in.a2_of_haff_eps = o.a2 == "haff";
+  if (!o.a2.empty() && !in.a2_of_haff_eps) {
     std::size_t used = 0;
     double value = 0.0;
     try {
@@ -147,9 +83,9 @@ gas::CoolingRequest cooling_request(const GasOptions& o) {
       used = 0;
     }
     if (used != o.a2.size()) throw InvalidInput(fmt::format("--a2 must be a number or haff, got '{}'", o.a2));
-    r.a2 = value;
+    in.a2 = value;
   }
-  return r;
+  return gas::cooling_request(in, gas::ArgumentStyle::option);
 }
 
 }  // namespace restitution::cli

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "cli/common/material_options.hpp"
-#include "gas/cooling.hpp"
+#include "restitution_gas/cooling.hpp"
 
 namespace restitution::cli {
 

@@ -36,6 +36,7 @@ struct RunOptions {
   std::string output;
   bool quick = false;
   unsigned threads = 0;
+  std::string format;  // empty: the scene's `format`
 };
 
 // ./scenes/default.toml when run from the repository, else the installed or the source tree's one.
@@ -48,6 +49,7 @@ fs::path default_scene() {
 int run_scene_file(const RunOptions& o) {
   const fs::path path = o.scene.empty() ? default_scene() : fs::path(o.scene);
   scene::Scene s = scene::load_scene(path);
+  if (!o.format.empty()) s.figure_formats = scene::figure_formats_from_list(o.format);
   if (o.quick) s.tolerance = std::max(s.tolerance, 1e-8);
   if (o.quick) scene::make_quick(s, kQuickPoints);
   const fs::path folder = o.output.empty() ? s.output : fs::path(o.output);
@@ -99,6 +101,10 @@ void add_run_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--threads", o->threads,
                   fmt::format("worker threads, in [1, {}] (default: one per core)", kMaxSweepThreads))
       ->check(CLI::Range(1U, kMaxSweepThreads));
+  add_figure_format_option(cmd, o->format)
+      ->default_str("the scene's `format`, else png")
+      ->description(
+          "figure formats, comma-separated: png (200 dpi), pdf, svg (overrides the scene's `format`)");
   cmd->callback([o, &chosen] { chosen = [o] { return run_scene_file(*o); }; });
 }
 

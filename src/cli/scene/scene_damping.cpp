@@ -52,13 +52,13 @@ DampingSection damping_section(const scene::DampingCheckTask& task, const dampin
     std::string& list = c.ends_with("_on") ? on : off;
     list += (list.empty() ? "" : ",") + c;
   }
-  map.args = {"--x",      "requested_eps",
-              "--y",      on,
-              "--dashed", off,
-              "--points", "requested_eps",
-              "--title",  task.title,
-              "--xlabel", "requested eps",
-              "--ylabel", fmt::format("actual eps (speed-dependent recipes at {:g} m/s)", v_ref)};
+  map.args = {
+      "--x",      "requested_eps",
+      "--y",      on,
+      "--dashed", off,
+      "--points", "requested_eps",
+      "--title",  task.title,
+      "--ylabel", fmt::format(R"(actual $\varepsilon$ (speed-dependent recipes at {:g} m/s))", v_ref)};
   map.caption = fmt::format(
       "Actual against requested ε for {} recipes, clamp on (force clamped at zero: the delayed-recovery end) "
       "and off (the naive end, dashed); the points are actual = requested. A missing point without the clamp "

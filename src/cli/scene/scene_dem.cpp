@@ -83,11 +83,13 @@ DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task) {
     }
     s.csv += "\n";
   }
-  s.plot_args = {"--x",     "velocity_m_s", "--y",      "eps_restitution",      "--xscale", "log",
-                 "--title", task.title,     "--xlabel", "impact speed v [m/s]", "--ylabel", "eps"};
+  s.plot_args = {"--x", "velocity_m_s", "--y",      "eps_restitution", "--xscale",
+                 "log", "--title",      task.title, "--ylabel",        R"($\varepsilon$)"};
   if (ran) {
-    s.plot_args.insert(s.plot_args.end(), {"--points", measured_column, "--error", "rel_diff",
-                                           "--error-label", "|eps_code - eps| / min(eps, 1 - eps)"});
+    s.plot_args.insert(
+        s.plot_args.end(),
+        {"--points", measured_column, "--error", "rel_diff", "--error-label",
+         R"($|\varepsilon_\mathrm{code} - \varepsilon| / \min(\varepsilon, 1 - \varepsilon)$)"});
   }
 
   std::string& md = s.markdown;

@@ -16,11 +16,13 @@
 #include "cli/scene/scene_damping.hpp"
 #include "cli/scene/scene_dem.hpp"
 #include "cli/scene/scene_fit_section.hpp"
+#include "cli/scene/scene_gas.hpp"
 #include "cli/scene/scene_tables.hpp"
 #include "cli/scene/scene_text.hpp"
 #include "cli/solve/work_precision_files.hpp"
 #include "restitution/series.hpp"
 #include "restitution/units.hpp"
+#include "scene/figure_formats.hpp"
 #include "sweep/physical_columns.hpp"
 
 namespace restitution::cli {
@@ -87,6 +89,7 @@ class SceneWriter {
       order.emplace_back(scene_.damping_checks[i].line, 4, i);
     }
     for (std::size_t i = 0; i < scene_.fits.size(); ++i) order.emplace_back(scene_.fits[i].line, 5, i);
+    for (std::size_t i = 0; i < scene_.gases.size(); ++i) order.emplace_back(scene_.gases[i].line, 6, i);
     std::sort(order.begin(), order.end());
     for (const auto& [line, kind, i] : order) {
       if (kind == 0) sweep(i);
@@ -95,6 +98,7 @@ class SceneWriter {
       if (kind == 3) dem(i);
       if (kind == 4) damping_check(i);
       if (kind == 5) fit(i);
+      if (kind == 6) gas(i);
     }
     calibrations();
     studies();
@@ -114,14 +118,15 @@ class SceneWriter {
   // Runs a plot script; returns the markdown image link, or a note saying why there is no plot.
   std::string plot(const std::string& script, const std::string& name,
                    const std::vector<std::string>& arguments) {
-    const std::string png = name + ".png";
-    const std::string why = run_plot_script(script, folder_ / (name + ".csv"), folder_ / png, arguments);
+    const std::vector<std::string>& formats = scene_.figure_formats;
+    const std::string why =
+        run_plot_script(script, folder_ / (name + ".csv"), folder_ / (name + ".png"), arguments, formats);
     if (!why.empty()) {
       out_.warnings.push_back(fmt::format("{}: {}", name, why));
       return fmt::format("*({}; the data are in `{}.csv`)*\n\n", why, name);
     }
-    out_.files.push_back(png);
-    return fmt::format("![{}]({})\n\n", name, png);
+    for (const std::string& figure : figure_file_names(name, formats)) out_.files.push_back(figure);
+    return fmt::format("![{}]({}.{})\n\n", name, name, scene::linked_figure_format(formats));
   }
 
   void sweep(std::size_t i) {
@@ -144,11 +149,9 @@ class SceneWriter {
     if (s.empirical) dashed.emplace_back("empirical_eps");
     report_ += fmt::format("## {}\n\n", s.title);
     if (!eps_columns.empty()) {
-      std::vector<std::string> args = {"--x",      x,
-                                       "--y",      join(eps_columns),
-                                       "--title",  s.title,
-                                       "--ylabel", "eps",
-                                       "--xlabel", physical ? "impact speed v [m/s]" : "zeta = beta v^(1/5)"};
+      std::vector<std::string> args = {
+          "--x",     x,       "--y",      join(eps_columns),
+          "--title", s.title, "--ylabel", R"($\varepsilon$)"};  // x: scripts/plots/style.py names it
       if (!dashed.empty()) args.insert(args.end(), {"--dashed", join(dashed)});
       if (!differences.empty()) args.insert(args.end(), {"--error", join(differences)});
       if (s.axes != scene::Axes::linear) args.insert(args.end(), {"--xscale", "log"});
@@ -272,7 +275,7 @@ class SceneWriter {
     report_ += fmt::format("## {}\n\n", tr.title);
     report_ +=
         plot("scene_trajectory", tr.name,
-             {"--ends", join(marks), "--title", fmt::format("{} (zeta = {})", tr.title, g(p.parameter))});
+             {"--ends", join(marks), "--title", fmt::format("{} (ζ = {:.4g})", tr.title, p.parameter)});
     report_ += fmt::format(
         "Computed: the trajectory x, x', x'' of one {} collision at ζ = {} ({} points in `{}.csv`, natural "
         "units). "
@@ -312,8 +315,9 @@ class SceneWriter {
     }
     report_ += plot("scene_xy", d.name,
                     {"--x", "damping_ratio", "--points", join(numeric), "--y", join(exact), "--error",
-                     join(errors), "--error-label", "|eps - eps_exact| / min(eps, 1 - eps)", "--title",
-                     d.title, "--ylabel", "eps", "--xlabel", "damping ratio r", "--yscale", "log"});
+                     join(errors), "--error-label",
+                     R"($|\varepsilon - \varepsilon_\mathrm{exact}| / \min(\varepsilon, 1 - \varepsilon)$)",
+                     "--title", d.title, "--ylabel", R"($\varepsilon$)", "--yscale", "log"});
     report_ += fmt::format(
         "Computed: the linear dash-pot x'' + 2r x' + x = 0 at {} damping ratios against its closed forms "
         "(ε = exp(-r τ_c); naive ωτ_c = π for r < 1, delayed recovery tan ωτ_c = 2rω/(2r²-1)). The error is "
@@ -351,6 +355,21 @@ class SceneWriter {
       report_ += p.caption;
     }
     report_ += section.findings;
+  }
+
+  // [[gas]]: T(t)/T0 and the local exponent with Haff's law; Haff's tau0 and the curve's end in summary.json.
+  void gas(std::size_t i) {
+    const scene::GasTask& task = scene_.gases[i];
+    const GasSection section = gas_section(scene_, task);
+    write_file(task.name + ".csv", section.csv);
+    report_ += fmt::format("## {}\n\n", task.title);
+    report_ += plot("gas_cooling", task.name, section.plot_args);
+    report_ += section.markdown;
+    const gas::CoolingCurve& c = section.curve;
+    json_.key("gas_" + task.name).begin_object();
+    json_.field("tau0_s", c.tau0_s).field("haff_eps", c.haff_eps).field("duration_s", c.duration_s);
+    json_.field("final_temperature_j", c.temperature_j.back());
+    json_.field("final_local_exponent", c.local_exponent.back()).end_object();
   }
 
   // [[fit]]: the data with error bars, each law's curve with its 95 % band and the residuals (one plot), the
@@ -415,10 +434,12 @@ class SceneWriter {
       }
       if (study.work_precision.empty()) continue;
       const std::string& name = scene_.studies[i].name;
-      const WorkPrecisionFiles written = write_work_precision_files(study.work_precision, folder_, name);
+      const WorkPrecisionFiles written =
+          write_work_precision_files(study.work_precision, folder_, name, scene_.figure_formats);
       out_.files.insert(out_.files.end(), written.files.begin(), written.files.end());
       if (written.plot_warning.empty()) {
-        report_ += fmt::format("\n![{}]({}.png)\n", name, name);
+        report_ +=
+            fmt::format("\n![{}]({}.{})\n", name, name, scene::linked_figure_format(scene_.figure_formats));
       } else {
         out_.warnings.push_back(fmt::format("{}: {}", name, written.plot_warning));
         report_ += fmt::format("\n*({}; the data are in `{}.csv` and `{}_summary.csv`)*\n",

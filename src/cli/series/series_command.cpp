@@ -127,10 +127,13 @@ void add_eval(CLI::App& parent, Action& chosen) {
 }
 
 void add_validate(CLI::App& parent, Action& chosen) {
-  auto out = std::make_shared<std::string>("out/series");
+  auto o = std::make_shared<std::pair<std::string, std::string>>("out/series", "png");  // folder, formats
   CLI::App* cmd = parent.add_subcommand("validate", "every approximation against the solver: CSV, JSON, PNG");
-  cmd->add_option("--out", *out, "output folder")->capture_default_str()->check(non_empty_path());
-  cmd->callback([out, &chosen] { chosen = [out] { return run_series_validation(*out); }; });
+  cmd->add_option("--out", o->first, "output folder")->capture_default_str()->check(non_empty_path());
+  add_figure_format_option(cmd, o->second);
+  cmd->callback([o, &chosen] {
+    chosen = [o] { return run_series_validation(o->first, scene::figure_formats_from_list(o->second)); };
+  });
 }
 
 void add_certify(CLI::App& parent, Action& chosen) {

@@ -115,7 +115,7 @@ void print_validation_summary(const series::ValidationReport& r) {
 
 }  // namespace
 
-int run_series_validation(const std::string& folder_name) {
+int run_series_validation(const std::string& folder_name, const std::vector<std::string>& formats) {
   const std::filesystem::path folder(folder_name);
   check_output_folder(folder);
   const series::ValidationReport report = series::validate(series::ValidationOptions{});
@@ -125,10 +125,13 @@ int run_series_validation(const std::string& folder_name) {
   write_file_atomically(csv, validation_csv(report));
   write_file_atomically(json, validation_json(report));
   print_validation_summary(report);
-  const std::string why = run_plot_script("series_validation", csv, png);
+  const std::string why = run_plot_script("series_validation", csv, png, {}, formats);
   if (!why.empty()) std::fprintf(stderr, "restitution: warning: %s\n", why.c_str());
   fmt::print("wrote {}, {}", csv.string(), json.string());
-  if (why.empty()) fmt::print(", {}", png.string());
+  if (why.empty()) {
+    for (const std::string& figure : figure_file_names("series_validation", formats))
+      fmt::print(", {}", (folder / figure).string());
+  }
   fmt::print("\n");
   return 0;
 }

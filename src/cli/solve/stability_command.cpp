@@ -23,6 +23,7 @@ struct StabilityCliOptions {
   int points_per_decade = 1;
   bool json = false;
   std::string out;
+  std::string format = "png";
 };
 
 std::string flag_text(const StabilityFlag& f) {
@@ -138,8 +139,9 @@ int run_stability(const StabilityCliOptions& o) {
     const std::filesystem::path folder(o.out);
     write_file_atomically(folder / "stability.csv", csv(report));
     write_file_atomically(folder / "stability.json", json_text(report));
-    const std::string why = run_plot_script("stability", folder / "stability.csv", folder / "stability.png",
-                                            {fmt::format("{}", report.tolerance)});
+    const std::string why =
+        run_plot_script("stability", folder / "stability.csv", folder / "stability.png",
+                        {fmt::format("{}", report.tolerance)}, scene::figure_formats_from_list(o.format));
     if (!why.empty()) fmt::print(stderr, "restitution: warning: no stability plot: {}\n", why);
   }
   if (o.json)
@@ -164,6 +166,7 @@ void add_stability_command(CLI::App& app, Action& chosen) {
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->add_option("--out", o->out, "folder for stability.csv, stability.json and stability.png")
       ->check(non_empty_path());
+  add_figure_format_option(cmd, o->format);
   cmd->callback([o, &chosen] { chosen = [o] { return run_stability(*o); }; });
 }
 

@@ -24,6 +24,7 @@ struct WorkPrecisionOptions {
   std::string reference;
   int repeats = 7;
   std::vector<std::string> engines;
+  std::string format = "png";
 };
 
 int run_work_precision(const WorkPrecisionOptions& o) {
@@ -40,7 +41,8 @@ int run_work_precision(const WorkPrecisionOptions& o) {
     rows = measure_work_precision(read_reference_file(reference), o.repeats, o.engines,
                                   progress.stoppable_callback());
   }
-  const WorkPrecisionFiles written = write_work_precision_files(rows, folder, "work_precision");
+  const WorkPrecisionFiles written =
+      write_work_precision_files(rows, folder, "work_precision", scene::figure_formats_from_list(o.format));
   if (!written.plot_warning.empty())
     std::fprintf(stderr, "restitution: warning: %s\n", written.plot_warning.c_str());
   fmt::print("wrote {} points to {}\n", rows.size(), folder.string());
@@ -64,6 +66,7 @@ void add_work_precision_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--engine", o->engines,
                   "measure only these engines: taylor, bdf, adams, bdf-plain, adams-plain")
       ->delimiter(',');
+  add_figure_format_option(cmd, o->format);
   cmd->callback([o, &chosen] { chosen = [o] { return run_work_precision(*o); }; });
 }
 

@@ -36,7 +36,8 @@ std::filesystem::path default_reference_file() {
 }
 
 WorkPrecisionFiles write_work_precision_files(const std::vector<WorkPrecisionRow>& rows,
-                                              const std::filesystem::path& folder, const std::string& stem) {
+                                              const std::filesystem::path& folder, const std::string& stem,
+                                              const std::vector<std::string>& formats) {
   WorkPrecisionFiles out;
   const std::string points = stem + ".csv";
   const std::string summary = stem + "_summary.csv";
@@ -44,8 +45,10 @@ WorkPrecisionFiles write_work_precision_files(const std::vector<WorkPrecisionRow
   write_file_atomically(folder / points, points_csv(rows));
   write_file_atomically(folder / summary, summary_csv(rows));
   out.files = {points, summary};
-  out.plot_warning = run_plot_script("work_precision", folder / summary, folder / png);
-  if (out.plot_warning.empty()) out.files.push_back(png);
+  out.plot_warning = run_plot_script("work_precision", folder / summary, folder / png, {}, formats);
+  if (out.plot_warning.empty()) {
+    for (const std::string& figure : figure_file_names(stem, formats)) out.files.push_back(figure);
+  }
   return out;
 }
 

@@ -18,9 +18,10 @@ struct WorkPrecisionFiles {
   std::string plot_warning;        // why there is no plot ("" when there is one)
 };
 
-// Writes STEM.csv (every point), STEM_summary.csv (per engine, end and tolerance) and STEM.png
-// (scripts/plots/work_precision.py) into an existing folder.
+// Writes STEM.csv (every point), STEM_summary.csv (per engine, end and tolerance) and the figure STEM.png
+// (scripts/plots/work_precision.py; STEM.pdf, STEM.svg as `formats` asks) into an existing folder.
 WorkPrecisionFiles write_work_precision_files(const std::vector<WorkPrecisionRow>& rows,
-                                              const std::filesystem::path& folder, const std::string& stem);
+                                              const std::filesystem::path& folder, const std::string& stem,
+                                              const std::vector<std::string>& formats = {"png"});
 
 }  // namespace restitution::cli

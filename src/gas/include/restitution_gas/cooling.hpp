@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-#include "gas/impact_law.hpp"
+#include "restitution_gas/impact_law.hpp"
 
 namespace restitution::gas {
 

@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// restitution.gas: the freely cooling granular gas of the kinetic theory (src/gas/, docs/gas.md), from the
+// same arguments as `restitution gas` and with the keys of its --json.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bindings.hpp"
+#include "restitution/contact_law.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/solve_types.hpp"
+#include "restitution_gas/gas_inputs.hpp"
+#include "without_gil.hpp"
+
+namespace py = pybind11;
+
+namespace restitution::python {
+namespace {
+
+using Number = std::optional<double>;
+
+// a2: None (Maxwellian), a number, or "haff" (van Noije & Ernst's a2 of the Haff eps).
+void read_a2(const py::object& a2, gas::GasInputs& in) {
+  if (a2.is_none()) return;
+  if (py::isinstance<py::str>(a2)) {
+    if (a2.cast<std::string>() != "haff") {
+      throw InvalidInput("a2 must be a number or 'haff', got '" + a2.cast<std::string>() + "'");
+    }
+    in.a2_of_haff_eps = true;
+    return;
+  }
+  if (py::isinstance<py::bool_>(a2) || !(py::isinstance<py::float_>(a2) || py::isinstance<py::int_>(a2))) {
+    throw py::type_error("a2 must be None, a number or 'haff'");
+  }
+  in.a2 = a2.cast<double>();
+}
+
+py::dict cooling_dict(const gas::CoolingRequest& r, const gas::CoolingCurve& c) {
+  py::dict law;
+  law["kind"] = law_name(r.law.kind);
+  law["end"] = end_name(r.law.end);
+  law["zeta_at_reference"] = r.law.zeta_at_reference;
+  law["reference_speed_m_s"] = r.law.reference_speed_m_s;
+  py::dict out;
+  out["law"] = law;
+  out["mass_kg"] = r.particles.mass_kg;
+  out["diameter_m"] = r.particles.diameter_m;
+  out["packing_fraction"] = r.particles.packing_fraction;
+  out["contact_correlation"] = c.contact_correlation;
+  out["number_density_m3"] = c.number_density_m3;
+  out["initial_temperature_j"] = r.initial_temperature_j;
+  out["tau0_s"] = c.tau0_s;
+  out["haff_eps"] = c.haff_eps;
+  out["a2"] = c.a2;
+  out["collision_rate_factor"] = r.collision_rate_factor;
+  out["duration_s"] = c.duration_s;
+  for (const gas::CurveColumn& column : gas::curve_columns(c)) {
+    out[column.name] =
+        py::array_t<double>(static_cast<py::ssize_t>(column.values->size()), column.values->data());
+  }
+  return out;
+}
+
+py::dict cooling(Number radius, Number density, Number mass, Number young_modulus, Number poisson_ratio,
+                 Number eps, Number velocity, Number dissipative_constant, const std::string& law,
+                 const std::string& end, Number packing_fraction, Number rms_speed, Number temperature,
+                 Number duration, Number haff_times, double first_time, int points_per_decade,
+                 const py::object& a2, double collision_rate_factor, double tolerance) {
+  gas::GasInputs in;
+  in.radius_m = radius;
+  in.density_kg_m3 = density;
+  in.mass_kg = mass;
+  in.young_modulus_pa = young_modulus;
+  in.poisson_ratio = poisson_ratio;
+  in.eps = eps;
+  in.velocity_m_s = velocity;
+  in.dissipative_constant_s = dissipative_constant;
+  in.law = law;
+  in.end = end;
+  in.packing_fraction = packing_fraction;
+  in.rms_speed_m_s = rms_speed;
+  in.temperature_j = temperature;
+  in.duration_s = duration;
+  in.haff_times = haff_times;
+  in.first_time_s = first_time;
+  in.points_per_decade = points_per_decade;
+  in.collision_rate_factor = collision_rate_factor;
+  in.tolerance = tolerance;
+  read_a2(a2, in);
+  const auto [request, curve] = without_gil([&] {
+    gas::CoolingRequest r = gas::cooling_request(in, gas::ArgumentStyle::keyword);
+    gas::CoolingCurve c = gas::cooling_curve(r);
+    return std::pair{std::move(r), std::move(c)};
+  });
+  return cooling_dict(request, curve);
+}
+
+}  // namespace
+
+void bind_gas(py::module_& m) {
+  m.def("gas", &cooling, py::kw_only(), py::arg("radius") = py::none(), py::arg("density") = py::none(),
+        py::arg("mass") = py::none(), py::arg("young_modulus") = py::none(),
+        py::arg("poisson_ratio") = py::none(), py::arg("eps") = py::none(), py::arg("velocity") = py::none(),
+        py::arg("dissipative_constant") = py::none(), py::arg("law") = law_name(LawKind::viscoelastic_hertz),
+        py::arg("end") = end_name(CollisionEnd::delayed_recovery), py::arg("packing_fraction") = py::none(),
+        py::arg("rms_speed") = py::none(), py::arg("temperature") = py::none(),
+        py::arg("duration") = py::none(), py::arg("haff_times") = py::none(), py::arg("first_time") = 0.0,
+        py::arg("points_per_decade") = gas::CoolingRequest{}.points_per_decade, py::arg("a2") = py::none(),
+        py::arg("collision_rate_factor") = 1.0, py::arg("tolerance") = SolveOptions{}.tolerance,
+        "The cooling curve of the freely cooling gas (restitution.gas documents the arguments).");
+}
+
+}  // namespace restitution::python

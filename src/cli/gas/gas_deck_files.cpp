@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "cli/gas/gas_deck_files.hpp"
+
+#include <fmt/core.h>
+
+#include "cli/common/output_files.hpp"
+#include "restitution/errors.hpp"
+
+namespace restitution::cli {
+
+namespace fs = std::filesystem;
+
+GasDeckPaths gas_deck_paths(const std::string& file) {
+  if (file.empty()) throw InvalidInput("--deck needs a file name, got an empty one");
+  check_output_file(file);
+  const fs::path path(file);
+  const std::string stem = path.stem().string();
+  GasDeckPaths p;
+  p.law_input = path;
+  p.constant_eps_input = path.parent_path() / (stem + "_constant_eps" + path.extension().string());
+  p.data = path.parent_path() / (stem + ".data");
+  if (p.data == p.law_input) p.data = path.parent_path() / (stem + "_gas.data");  // FILE named *.data
+  return p;
+}
+
+gas_deck::GasDeck write_gas_deck(const GasDeckPaths& paths, const gas_deck::GasDeckRequest& request) {
+  gas_deck::GasDeck deck = gas_deck::lammps_gas_deck(request, paths.data.filename().string());
+  std::vector<fs::path> written;
+  try {
+    for (const auto& [path, text] :
+         {std::pair{paths.data, &deck.data}, std::pair{paths.constant_eps_input, &deck.constant_eps_input},
+          std::pair{paths.law_input, &deck.law_input}}) {
+      write_file_atomically(path, *text);
+      written.push_back(path);
+    }
+  } catch (...) {
+    std::error_code ignored;
+    for (const auto& path : written) fs::remove(path, ignored);  // a deck without its data runs nothing
+    throw;
+  }
+  return deck;
+}
+
+void print_gas_deck_text(const GasDeckPaths& paths, const gas_deck::GasDeck& d,
+                         const gas_deck::GasDeckRequest& request) {
+  fmt::print("# gas deck: {} spheres, packing fraction {}, box {:.6g} m ({:.4g} diameters), seed {}\n",
+             request.particles, request.packing_fraction, d.box_m, d.box_m / d.diameter_m, request.seed);
+  fmt::print("# viscoelastic gas: {}\n# constant-eps companion (eps = {:.10g}): {}\n# data file: {}\n",
+             paths.law_input.string(), d.constant_eps, paths.constant_eps_input.string(),
+             paths.data.string());
+  fmt::print(
+      "# tau0 = {:.6g} s (constant-eps gas at T0 = {:.6g} J); duration {:.6g} s = {:.4g} tau0; {} "
+      "temperature prints\n",
+      d.haff_time_s, d.initial_temperature_j, d.duration_s, d.duration_s / d.haff_time_s,
+      d.print_times_s.size() + 1);
+  fmt::print("# dt0 = {:.6g} s (worst |eps error| {:.3g} <= {} at {:.4g} m/s), growing as (T0/T)^(1/10)\n",
+             d.time_step_s, d.eps_error_worst, request.max_eps_error, d.fast_speed_m_s);
+  fmt::print("# shear instability: L_c = {:.4g} diameters; longest shear mode grows {:.3g}-fold\n",
+             d.shear_critical_length_m / d.diameter_m, d.shear_mode_growth);
+  for (const auto& w : d.warnings) fmt::print("# warning: {}\n", w);
+  fmt::print(
+      "# run from {}: {} and {} (or mpirun -np 4 lmp -in ...); then restitution gas --compare LOG...\n",
+      paths.data.parent_path().empty() ? fs::path(".").string() : paths.data.parent_path().string(),
+      gas_deck::gas_deck_command(paths.law_input.filename().string(), 1),
+      gas_deck::gas_deck_command(paths.constant_eps_input.filename().string(), 1));
+}
+
+void write_gas_deck_json(JsonWriter& json, const GasDeckPaths& paths, const gas_deck::GasDeck& d) {
+  json.key("deck").begin_object();
+  json.field("file", paths.law_input.string()).field("constant_eps_file", paths.constant_eps_input.string());
+  json.field("data_file", paths.data.string()).field("box_m", d.box_m).field("haff_time_s", d.haff_time_s);
+  json.field("duration_s", d.duration_s).field("time_step_s", d.time_step_s);
+  json.field("eps_error_worst", d.eps_error_worst).field("fast_speed_m_s", d.fast_speed_m_s);
+  json.field("constant_eps", d.constant_eps).field("shear_critical_length_m", d.shear_critical_length_m);
+  json.field("shear_mode_growth", d.shear_mode_growth);
+  json.key("warnings").begin_array();
+  for (const auto& w : d.warnings) json.value(w);
+  json.end_array().end_object();
+}
+
+}  // namespace restitution::cli

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "cli/gas/gas_deck_options.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "cli/common/build_json.hpp"
+#include "cli/common/json_writer.hpp"
+#include "cli/common/output_files.hpp"
+#include "cli/gas/gas_compare_report.hpp"
+#include "cli/gas/gas_deck_files.hpp"
+#include "restitution/errors.hpp"
+
+namespace restitution::cli {
+
+void add_gas_deck_options(CLI::App& cmd, GasDeckOptions& o) {
+  cmd.add_option(
+      "--deck", o.deck,
+      "write a LAMMPS input of this gas to FILE, its constant-eps companion to STEM_constant_eps.EXT "
+      "and their data file to STEM.data (docs/gas.md, The LAMMPS deck)");
+  cmd.add_option("--particles", o.particles, "spheres in the deck's periodic box (>= 2)")
+      ->capture_default_str();
+  cmd.add_option("--seed", o.seed, "seed of the deck's random positions and velocities")
+      ->capture_default_str();
+  cmd.add_option(
+         "--max-eps-error", o.max_eps_error,
+         "the deck's time step keeps the worst |eps error| of LAMMPS's integrator within this, at 3 x the "
+         "rms relative speed, in [1e-6, 0.05]")
+      ->capture_default_str();
+  cmd.add_option("--compare", o.compare,
+                 "LAMMPS logs (or screen output) of the deck's runs: compare them with the theory")
+      ->expected(1, -1);
+  cmd.add_option("--compare-output", o.compare_output,
+                 "with --compare: write FOLDER/gas_compare.csv and the plot FOLDER/gas_compare.png");
+}
+
+bool gas_deck_requested(const GasDeckOptions& o) {
+  return o.deck.has_value() || !o.compare.empty();
+}
+
+namespace {
+
+// The deck's request for the gas of `gas`: its spheres, law, T0 and duration (in Haff times of the theory's
+// τ0).
+gas_deck::GasDeckRequest deck_request(const GasDeckOptions& o, const GasOptions& gas) {
+  if (law_from_name(gas.law) != LawKind::viscoelastic_hertz)
+    throw InvalidInput("--deck and --compare: only --law viscoelastic-hertz (LAMMPS's damping viscoelastic)");
+  const gas::CoolingRequest theory = cooling_request(gas);
+  gas_deck::GasDeckRequest r;
+  r.material = material_from(gas.material);
+  r.damping = {gas.dissipative_constant, gas.eps, gas.velocity};
+  r.end = end_from_name(gas.end);
+  r.packing_fraction = theory.particles.packing_fraction;
+  r.rms_speed_m_s = std::sqrt(theory.initial_temperature_j / theory.particles.mass_kg);
+  r.duration_s =
+      theory.duration_in_haff_times ? theory.duration * gas::haff_reference(theory).tau0_s : theory.duration;
+  r.tolerance = gas.tolerance;
+  r.particles = o.particles;
+  r.seed = o.seed;
+  r.max_eps_error = o.max_eps_error;
+  return r;
+}
+
+}  // namespace
+
+int run_gas_deck(const GasDeckOptions& o, const GasOptions& gas, bool json) {
+  const gas_deck::GasDeckRequest request = deck_request(o, gas);
+  std::optional<GasDeckPaths> paths;
+  if (o.deck) paths = gas_deck_paths(*o.deck);
+  if (o.compare_output) check_output_folder(*o.compare_output);
+  std::optional<gas_deck::GasDeck> deck;
+  if (paths) deck = write_gas_deck(*paths, request);
+  std::optional<gas_deck::GasComparison> comparison;
+  std::string plot_warning;
+  if (!o.compare.empty()) {
+    comparison = compare_logs(o.compare, gas_deck::gas_setup(request));
+    if (o.compare_output) plot_warning = write_comparison_files(*o.compare_output, *comparison);
+  }
+  if (!plot_warning.empty()) fmt::print(stderr, "restitution: warning: {}\n", plot_warning);
+  if (json) {
+    JsonWriter w;
+    w.begin_object();
+    if (deck) write_gas_deck_json(w, *paths, *deck);
+    if (comparison) write_comparison_json(w, *comparison);
+    fmt::print("{}\n", finish_json_document(w));
+  } else {
+    if (deck) print_gas_deck_text(*paths, *deck, request);
+    if (comparison) print_comparison_text(*comparison);
+  }
+  return 0;
+}
+
+}  // namespace restitution::cli

@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "restitution_gas/gas_inputs.hpp"
+
+#include <fmt/core.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "gas/collision_integral.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/material.hpp"
+#include "restitution/units.hpp"
+
+namespace restitution::gas {
+namespace {
+
+// The argument as the caller spells it.
+std::string spelled(const char* keyword, ArgumentStyle style) {
+  if (style == ArgumentStyle::keyword) return keyword;
+  std::string option = std::string("--") + keyword;
+  std::replace(option.begin(), option.end(), '_', '-');
+  return option;
+}
+
+class Rules {
+ public:
+  explicit Rules(ArgumentStyle style) : style_(style) {}
+
+  [[nodiscard]] std::string operator()(const char* keyword) const { return spelled(keyword, style_); }
+
+  // Exactly one of two arguments.
+  template <class T>
+  const T& one_of(const std::optional<T>& a, const char* a_name, const std::optional<T>& b,
+                  const char* b_name) const {
+    if (a.has_value() == b.has_value()) {
+      throw InvalidInput(fmt::format("give exactly one of {} and {}", (*this)(a_name), (*this)(b_name)));
+    }
+    return a ? *a : *b;
+  }
+
+  void require_positive(const std::optional<double>& value, const char* keyword, const char* unit) const {
+    if (value && !(std::isfinite(*value) && *value > 0.0)) {
+      throw InvalidInput(fmt::format("{} must be finite and > 0{}, got {}", (*this)(keyword), unit, *value));
+    }
+  }
+
+ private:
+  ArgumentStyle style_;
+};
+
+// Mass [kg] and diameter [m] of the gas's spheres: radius with mass or density.
+GasParticles particles_of(const GasInputs& in, const Rules& name) {
+  if (!in.radius_m) {
+    throw InvalidInput(
+        fmt::format("the gas needs {} (and {} or {})", name("radius"), name("density"), name("mass")));
+  }
+  name.require_positive(in.radius_m, "radius", " m");
+  name.require_positive(in.density_kg_m3, "density", " kg/m^3");
+  name.require_positive(in.mass_kg, "mass", " kg");
+  GasParticles p;
+  p.diameter_m = 2.0 * *in.radius_m;
+  (void)name.one_of(in.mass_kg, "mass", in.density_kg_m3, "density");
+  p.mass_kg = in.mass_kg ? *in.mass_kg : sphere_mass_kg(*in.radius_m, *in.density_kg_m3);
+  if (!in.packing_fraction) throw InvalidInput(fmt::format("the gas needs {}", name("packing_fraction")));
+  if (!(*in.packing_fraction > 0.0 && *in.packing_fraction < 0.5)) {
+    throw InvalidInput(fmt::format("{} must be in (0, 0.5) (a homogeneous fluid), got {}",
+                                   name("packing_fraction"), *in.packing_fraction));
+  }
+  p.packing_fraction = *in.packing_fraction;
+  return p;
+}
+
+ImpactLaw law_of(const GasInputs& in, const Rules& name) {
+  LawKind kind = LawKind::viscoelastic_hertz;
+  CollisionEnd end = CollisionEnd::delayed_recovery;
+  try {
+    kind = law_from_name(in.law);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("{}: {}", name("law"), e.what()));
+  }
+  try {
+    end = end_from_name(in.end);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("{}: {}", name("end"), e.what()));
+  }
+  if (in.dissipative_constant_s) {
+    if (in.eps || in.velocity_m_s) {
+      throw InvalidInput(
+          fmt::format("{} excludes {} and {}", name("dissipative_constant"), name("eps"), name("velocity")));
+    }
+    if (!has_dissipative_constant(kind)) {
+      throw InvalidInput(fmt::format("{} belongs to {} viscoelastic-hertz; {} {} takes {} and {}",
+                                     name("dissipative_constant"), name("law"), name("law"), in.law,
+                                     name("eps"), name("velocity")));
+    }
+    if (!in.young_modulus_pa || !in.poisson_ratio) {
+      throw InvalidInput(fmt::format("{} needs the material's {} and {}", name("dissipative_constant"),
+                                     name("young_modulus"), name("poisson_ratio")));
+    }
+    MaterialFields f;
+    f.young_modulus_pa = in.young_modulus_pa;
+    f.poisson_ratio = in.poisson_ratio;
+    f.radius_m = in.radius_m;
+    f.density_kg_m3 = in.density_kg_m3;
+    f.mass_kg = in.mass_kg;
+    f.dissipative_constant_s = in.dissipative_constant_s;
+    return hertz_impact_law(material_constants(material_from_fields(f)).hertz.beta, end);
+  }
+  if (!in.eps || !in.velocity_m_s) {
+    throw InvalidInput(fmt::format(
+        "the law needs {} with {} (the impact speed in m/s it was measured at), or {} with the material",
+        name("eps"), name("velocity"), name("dissipative_constant")));
+  }
+  return impact_law_from_eps(kind, *in.eps, *in.velocity_m_s, end, in.tolerance);
+}
+
+}  // namespace
+
+CoolingRequest cooling_request(const GasInputs& in, ArgumentStyle style) {
+  const Rules name(style);
+  CoolingRequest r;
+  r.particles = particles_of(in, name);
+  r.law = law_of(in, name);
+  const double speed_or_temperature =
+      name.one_of(in.rms_speed_m_s, "rms_speed", in.temperature_j, "temperature");
+  r.initial_temperature_j = in.rms_speed_m_s
+                                ? r.particles.mass_kg * speed_or_temperature * speed_or_temperature
+                                : speed_or_temperature;
+  name.require_positive(in.rms_speed_m_s, "rms_speed", " m/s");
+  name.require_positive(in.temperature_j, "temperature", " J");
+  name.require_positive(in.duration_s, "duration", " s");
+  name.require_positive(in.haff_times, "haff_times", "");
+  r.duration = name.one_of(in.duration_s, "duration", in.haff_times, "haff_times");
+  r.duration_in_haff_times = in.haff_times.has_value();
+  if (!std::isfinite(in.first_time_s) || in.first_time_s < 0.0) {
+    throw InvalidInput(fmt::format("{} must be finite and >= 0 s (0: six decades), got {}",
+                                   name("first_time"), in.first_time_s));
+  }
+  if (in.points_per_decade < 1 || in.points_per_decade > 1000) {
+    throw InvalidInput(
+        fmt::format("{} must be in [1, 1000], got {}", name("points_per_decade"), in.points_per_decade));
+  }
+  name.require_positive(std::optional<double>(in.collision_rate_factor), "collision_rate_factor", "");
+  r.first_time_s = in.first_time_s;
+  r.points_per_decade = in.points_per_decade;
+  r.collision_rate_factor = in.collision_rate_factor;
+  r.tolerance = in.tolerance;
+  if (in.a2_of_haff_eps && in.a2) {
+    throw InvalidInput(fmt::format("{}: a number or haff, not both", name("a2")));
+  }
+  if (in.a2_of_haff_eps) {
+    r.a2 = sonine_a2_constant_eps(haff_reference(r).eps);  // the Maxwellian gas's Haff ε
+  } else {
+    r.a2 = in.a2;
+  }
+  return r;
+}
+
+std::vector<CurveColumn> curve_columns(const CoolingCurve& c) {
+  return {{"time_s", &c.time_s},
+          {"temperature_j", &c.temperature_j},
+          {"haff_temperature_j", &c.haff_temperature_j},
+          {"local_exponent", &c.local_exponent},
+          {"cooling_rate_hz", &c.cooling_rate_hz},
+          {"collision_frequency_hz", &c.collision_frequency_hz},
+          {"collisions_per_particle", &c.collisions_per_particle},
+          {"effective_eps", &c.effective_eps}};
+}
+
+}  // namespace restitution::gas

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The [[gas]] scene section (docs/scenes.md): its keys are read and checked (a misspelled one is refused by
+// name), and scenes/gas.toml writes both curves, their plots and the summary the command would compute.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_runner.hpp"
+#include "restitution/errors.hpp"
+#include "scene/scene.hpp"
+
+namespace restitution::scene {
+namespace {
+
+const std::string kHead = R"(output = "out/gas"
+[materials.pe]
+young_modulus = 1e8
+poisson_ratio = 0.4
+density = 920.0
+radius = 0.005
+dissipative_constant = 1e-5
+)";
+
+const std::string kGas = R"([[gas]]
+name = "g"
+material = "pe"
+packing_fraction = 0.1
+rms_speed = 1.0
+haff_times = 100.0
+)";
+
+std::string error_of(const std::string& text) {
+  try {
+    (void)parse_scene(text, "gas.toml");
+  } catch (const InvalidInput& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(GasScene, ReadsTheSection) {
+  const Scene s =
+      parse_scene(kHead + kGas + "eps = 0.8\nvelocity = 2.0\nlaw = \"tsuji-hertz\"\n", "gas.toml");
+  ASSERT_EQ(s.gases.size(), 1U);
+  const GasTask& g = s.gases[0];
+  EXPECT_EQ(g.material, "pe");
+  EXPECT_EQ(g.law, LawKind::tsuji_hertz);
+  EXPECT_EQ(*g.eps, 0.8);
+  EXPECT_EQ(*g.velocity_m_s, 2.0);
+  EXPECT_EQ(g.packing_fraction, 0.1);
+  EXPECT_EQ(*g.rms_speed_m_s, 1.0);
+  EXPECT_EQ(*g.haff_times, 100.0);
+  EXPECT_FALSE(g.duration_s);
+}
+
+TEST(GasScene, RefusesBadKeysByName) {
+  EXPECT_NE(error_of(kHead + kGas + "packing_fracton = 0.1\n").find("packing_fracton"), std::string::npos);
+  EXPECT_NE(error_of(kHead + kGas + "eps = 0.8\n").find("velocity"), std::string::npos);
+  EXPECT_NE(error_of(kHead + kGas + "duration = 1.0\n").find("duration"), std::string::npos);
+  EXPECT_NE(error_of(kHead + kGas + "temperature = 1e-3\n").find("rms_speed"), std::string::npos);
+  std::string far = kGas;
+  far.replace(far.find("0.1"), 3, "0.5");
+  EXPECT_NE(error_of(kHead + far).find("packing_fraction"), std::string::npos);
+  std::string unknown = kGas;
+  unknown.replace(unknown.find("\"pe\""), 4, "\"ice\"");
+  EXPECT_NE(error_of(kHead + unknown).find("material"), std::string::npos);
+}
+
+TEST(GasScene, SceneWritesBothCurves) {
+  const test_support::TempFolder folder;
+  const auto outcome = test_support::run_cli(std::string("run ") + RESTITUTION_SOURCE_DIR +
+                                             "/scenes/gas.toml --output " + folder.path.string());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  for (const char* file : {"viscoelastic_gas.csv", "constant_eps_gas.csv", "report.md", "summary.json"}) {
+    EXPECT_TRUE(std::filesystem::exists(folder.path / file)) << file;
+  }
+  const auto summary = nlohmann::json::parse(test_support::slurp((folder.path / "summary.json").string()));
+  // 1000 τ₀: the viscoelastic gas near −5/3 (−1.69), the constant ε at Haff's −2 t/(τ₀ + t).
+  const double viscoelastic = summary.at("gas_viscoelastic_gas").at("final_local_exponent").get<double>();
+  const double constant = summary.at("gas_constant_eps_gas").at("final_local_exponent").get<double>();
+  EXPECT_GT(viscoelastic, -1.75);
+  EXPECT_LT(viscoelastic, -5.0 / 3.0);
+  EXPECT_NEAR(constant, -2.0 * 1000.0 / 1001.0, 1e-10);
+}
+
+}  // namespace
+}  // namespace restitution::scene
