@@ -23,6 +23,7 @@ KeyboardInterrupt on Ctrl-C. restitution.fast gives the same eps from the certif
 """
 
 import numbers as _numbers
+import os as _os
 import warnings as _warnings
 
 import numpy as _np
@@ -34,7 +35,7 @@ from ._restitution import NumericalFailure, SolverStats
 from ._restitution import __version__  # the file VERSION at the root of the checkout
 
 __all__ = ["__version__", "eps", "solve", "calibrate", "fit_data", "zeta_of", "build_info", "Material",
-           "NumericalFailure", "CollisionResult", "EndResult", "MaxCompression", "SolverStats", "Calibration", "series",
+           "NumericalFailure", "SlowSundialsWarning", "CollisionResult", "EndResult", "MaxCompression", "SolverStats", "Calibration", "series",
            "fast"]
 
 _SCALARS = (float, int)
@@ -464,7 +465,25 @@ def build_info():
     (True, ['description', 'optimized', 'version'])
     """
     return _core.build_info()
-import os as _os  # noqa: E402 (sweep_to_file's section, kept together)
+
+
+class SlowSundialsWarning(RuntimeWarning):
+    """The module runs Debian's unoptimized SUNDIALS: every solve costs 2-3x more, the numbers are the same."""
+
+
+def _warn_if_slow_sundials(info, environ):
+    """Warn once, at import, when the module links the unoptimized SUNDIALS (pip shows no build log, so this is
+    where a user learns it); RESTITUTION_ACCEPT_SLOW_SUNDIALS=1 or a warnings filter silences it."""
+    if info["sundials"]["optimized"] or environ.get("RESTITUTION_ACCEPT_SLOW_SUNDIALS") == "1":
+        return False
+    _warnings.warn(f"restitution {info['version']} runs {info['sundials']['description']}: every CVODE solve takes "
+                   "2-3x longer than with the optimized build (bash scripts/sundials in the source tree, then "
+                   "reinstall). Set RESTITUTION_ACCEPT_SLOW_SUNDIALS=1 to accept it.", SlowSundialsWarning,
+                   stacklevel=3)
+    return True
+
+
+_warn_if_slow_sundials(_core.build_info(), _os.environ)
 
 
 def sweep_to_file(zetas, path, *, resume=False, end="both", tolerance=_TOLERANCE, method="auto", threads=None,

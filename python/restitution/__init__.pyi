@@ -273,6 +273,10 @@ class BuildInfo(TypedDict):
     sundials: SundialsInfo
 
 def build_info() -> BuildInfo: ...
+
+
+class SlowSundialsWarning(RuntimeWarning): ...
+
 def gas(
     *,
     radius: Optional[float] = ...,  # m
