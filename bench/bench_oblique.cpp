@@ -135,7 +135,7 @@ BENCHMARK_CAPTURE(oblique_solve, angle45_rtol11, 45.0, 1e-11)
 BENCHMARK_CAPTURE(oblique_solve, angle45_rtol10, 45.0, 1e-10)
     ->Name("oblique/linear_history/45deg/rtol=1e-10")
     ->Unit(benchmark::kMicrosecond);
-// 5° and 20° stick, slip, stick, slip; 45° and 60° slip, stick, slip; 80° slips throughout.
+// Switches at T = 1e-8: 5° one (stick, slip), 20° three, 45° four, 60° two (slip, stick, slip), 80° none.
 BENCHMARK_CAPTURE(contracted_solve, angle5, 5.0)
     ->Name("oblique_within/linear_history/5deg/T=1e-8")
     ->Unit(benchmark::kMicrosecond);
