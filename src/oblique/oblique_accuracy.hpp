@@ -5,9 +5,10 @@
 // spin within T times max(|ω'|, v/R) (v the impact speed, R that sphere's radius: the spin a slip of v
 // gives), against the exact solution of the model. It is met by CVODE's relative tolerance
 // T·kObliqueRtolFactor, and checked on every solve: the impact is solved again at 10× that rtol, and when the
-// two disagree by more than T in the contract's measure, or find different stick/slip sequences, the outcome
-// is reported as ill-conditioned (near the stick/slip boundary a switch function can touch 0 without
-// crossing it, and a perturbation of the size of the error changes which modes follow) instead of silently.
+// two find different stick/slip sequences, or disagree by more than T in the contract's measure while a third
+// solve at a tenth of the rtol does not agree with the first within T, the outcome is reported as
+// ill-conditioned (near the stick/slip boundary a switch function can touch 0 without crossing it, and a
+// perturbation of the size of the error changes which modes follow) instead of silently.
 #include <string>
 
 #include "oblique_contact.hpp"  // beside it: the Python module includes this through restitution_oblique/
