@@ -86,7 +86,7 @@ def main():
     ax.axhline(0.0, color="gray", lw=0.6)
     ax.set_xlabel(r"incoming $\psi_1 = \kappa\, s_1 / (\mu v_n)$, $\kappa = 2(1-\nu)/(2-\nu)$")
     ax.set_ylabel(r"outgoing $\psi_2 = \kappa\, s_2 / (\mu v_n)$")
-    style.set_title(ax, "Maw, Barber & Fawcett's diagram of oblique impacts (Wear 38, 101, 1976)")
+    style.set_title(ax, "Oblique impacts in Maw, Barber & Fawcett's variables (1976)")
     ax.grid(True)
     ax.legend(loc="upper left", fontsize=7)
     style.save(fig, a.png, a.format)
