@@ -88,7 +88,9 @@ TEST(DemTangential, BadChoicesExit2NamingTheOption) {
         {"--code lammps --tangential mindlin --tangential-stiffness 0", "--tangential-stiffness"},
         {"--code lammps --tangential foo", "--tangential"},
         {"--code liggghts --tangential linear_history --tangential-stiffness 1e6", "--tangential"}}) {
-    const auto outcome = run_cli("dem " + kSteel + " " + options);
+    std::string arguments = "dem " + kSteel;
+    arguments += " " + options;
+    const auto outcome = run_cli(arguments);
     EXPECT_EQ(outcome.status, 2) << options;
     EXPECT_NE(outcome.err.find(named), std::string::npos) << options << ": " << outcome.err;
   }
