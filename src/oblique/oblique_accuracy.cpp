@@ -77,7 +77,7 @@ ContractedOblique solve_oblique_within(const ObliqueGeometry& geometry, const No
         "not modelled: at t = {:.6g} s the contact slides on the Coulomb cap (the damping is added below the "
         "cap only, so the sticking force drives it straight back onto the cap; the code then alternates "
         "capped and uncapped steps), which the stick/slip solve does not follow: the outputs can be off the "
-        "code's by 1e-2",
+        "code's by 1e-2 or more",
         sliding.cap_sliding_time_s);
   } else if (modes != coarse_modes) {
     out.ill_conditioned = true;

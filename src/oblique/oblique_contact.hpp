@@ -156,8 +156,8 @@ struct ObliqueResult {
   // LIGGGHTS's and YADE's rule (the damping added below the cap only): a slip ended where the sticking force
   // drives the contact straight back onto the cap, first at cap_sliding_time_s. The codes then alternate
   // capped and uncapped steps, a sliding mode the stick and slip here do not model, and the outputs can be
-  // off the codes' by 1e-2 (docs/oblique.md): the slip goes on there instead, and the accuracy contract
-  // reports such an impact.
+  // off the codes' by 1e-2 or more (docs/oblique.md): the slip goes on there instead, and the accuracy
+  // contract reports such an impact.
   bool slides_on_cap = false;
   double cap_sliding_time_s = 0.0;
   SolverStats stats;
