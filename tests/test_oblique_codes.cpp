@@ -11,7 +11,10 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <tuple>
+#include <vector>
 
+#include "oblique/oblique_accuracy.hpp"
 #include "oblique/oblique_contact.hpp"
 #include "restitution/errors.hpp"
 
@@ -127,27 +130,107 @@ TEST(LiggghtsHistory, DampedStickForceMayExceedTheCap) {
 }
 
 // Where the damped sticking force points against the capped one, each mode can drive the contact into the
-// other (LIGGGHTS then alternates capped and uncapped steps): the solve says so instead of switching without
-// end. A 1 mm steel sphere, A = 1e-6 s (ε ≈ 0.52), k_t = 8 G*, γ_t = 1, μ = 0.3, 300 rad/s at 45.5°.
-TEST(LiggghtsHistory, ChatteringOnTheCapIsReportedNotLooped) {
+// other (LIGGGHTS then alternates capped and uncapped steps): the solve neither switches without end nor
+// stays silent, it keeps the slip and says where the sliding on the cap began. A 1 mm steel sphere, A = 1e-6
+// s (ε ≈ 0.52), k_t = 8 G*, γ_t = 1, μ = 0.3, 300 rad/s at 45.5° on a wall (it chattered past 50 switches).
+TEST(LiggghtsHistory, SlidingOnTheCapIsReportedNotLooped) {
   const double e_star = 2e11 / (2.0 * (1.0 - 0.09));
   const double k = 4.0 / 3.0 * e_star * std::sqrt(kRadius);
   const double kt = 2.0 * 2e11 / (1.7 * 1.3);
-  const double mass = 4.0 / 3.0 * std::numbers::pi * kRadius * kRadius * kRadius * 7800.0;
-  ObliqueGeometry g = with_liggghts_arms({solid_sphere(kRadius, mass), std::nullopt, TorqueArm::radius});
+  ObliqueGeometry g = with_liggghts_arms({solid_sphere(kRadius, kMass), std::nullopt, TorqueArm::radius});
   const double angle = 45.5 * std::numbers::pi / 180.0;
-  try {
-    (void)solve_oblique(g, {LawKind::viscoelastic_hertz, k, 1.5e-6 * k},
-                        {TangentialKind::liggghts_history, kt, 1.0, 0.3},
-                        {std::cos(angle), std::sin(angle), 300.0, 0.0});
-    FAIL() << "expected the chattering to be reported";
-  } catch (const NumericalFailure& e) {
-    EXPECT_NE(std::string(e.what()).find("chatters between stick and slip"), std::string::npos) << e.what();
+  const ObliqueResult r = solve_oblique(g, {LawKind::viscoelastic_hertz, k, 1.5e-6 * k},
+                                        {TangentialKind::liggghts_history, kt, 1.0, 0.3},
+                                        {std::cos(angle), std::sin(angle), 300.0, 0.0});
+  EXPECT_TRUE(r.slides_on_cap);
+  EXPECT_GT(r.cap_sliding_time_s, 0.0);
+  EXPECT_LT(r.cap_sliding_time_s, r.contact_time_s);
+  EXPECT_LT(r.switches.size(), 10U);
+  // Without the tangential damping the force is continuous at a switch: no sliding on the cap.
+  const ObliqueResult undamped = solve_oblique(g, {LawKind::viscoelastic_hertz, k, 1.5e-6 * k},
+                                               {TangentialKind::liggghts_history, kt, 0.0, 0.3},
+                                               {std::cos(angle), std::sin(angle), 300.0, 0.0});
+  EXPECT_FALSE(undamped.slides_on_cap);
+}
+
+// The printed LIGGGHTS lines of a 1 mm steel sphere (E = 2e11 Pa, ν = 0.3, k_t = 8G*, gammat = gamman, μ =
+// 0.3) at dissipative constant A [s], on a wall or an equal pair, `restitution oblique`'s arms.
+struct LiggghtsCase {
+  ObliqueGeometry geometry;
+  NormalForce normal;
+  TangentialForce tangential;
+};
+LiggghtsCase liggghts_steel(bool pair, double dissipative_constant_s) {
+  const double e_star = 2e11 / (2.0 * (1.0 - 0.09));
+  const double k = 4.0 / 3.0 * e_star * std::sqrt(pair ? 0.5 * kRadius : kRadius);
+  ObliqueGeometry g = with_liggghts_arms({solid_sphere(kRadius, kMass), std::nullopt, TorqueArm::radius});
+  if (pair) g.second = solid_sphere(kRadius, kMass);
+  return {g,
+          {LawKind::viscoelastic_hertz, k, 1.5 * dissipative_constant_s * k},
+          {TangentialKind::liggghts_history, 2.0 * 2e11 / (1.7 * 1.3), 1.0, 0.3}};
+}
+
+// An impact at 1 m/s, as `restitution oblique --angle` takes it.
+ImpactVelocity unit_speed_at(double degrees, double spin) {
+  const double a = degrees * std::numbers::pi / 180.0;
+  return {std::cos(a), std::sin(a), spin, 0.0};
+}
+
+// A = 1e-6 s (ε ≈ 0.52), 300 rad/s: Debian's LIGGGHTS differs from the two-mode solve by 1.6e-2 in e_t for
+// the pair at 45° and 1.9e-2 (pair) / 1.4e-2 (wall) at 46° (docs/oblique.md), where a slip ends and the
+// damped sticking force drives the contact straight back onto the cap. The contract says so, at every
+// tolerance; 40°, 44° and 48°, which agree with LIGGGHTS within 1e-4, are not flagged.
+TEST(LiggghtsHistory, SlidingOnTheCapIsReportedByTheContract) {
+  for (const auto& [pair, angle, slides] :
+       {std::tuple{true, 45.0, true}, std::tuple{true, 46.0, true}, std::tuple{false, 46.0, true},
+        std::tuple{true, 40.0, false}, std::tuple{true, 44.0, false}, std::tuple{false, 44.0, false},
+        std::tuple{false, 45.0, false}, std::tuple{false, 48.0, false}}) {
+    const LiggghtsCase c = liggghts_steel(pair, 1e-6);
+    const ImpactVelocity v = unit_speed_at(angle, 300.0);
+    const std::string label = (pair ? "pair at " : "wall at ") + std::to_string(angle);
+    const ObliqueResult r =
+        solve_oblique(c.geometry, c.normal, c.tangential, v, tight(CollisionEnd::delayed_recovery));
+    EXPECT_EQ(r.slides_on_cap, slides) << label;
+    for (const double tolerance : {1e-10, 1e-6, 1e-3}) {
+      const ContractedOblique contracted =
+          solve_oblique_within(c.geometry, c.normal, c.tangential, v, tolerance);
+      const bool named = contracted.conditioning.find("slides on the Coulomb cap") != std::string::npos;
+      EXPECT_EQ(named, slides) << label << ", T " << tolerance << ": " << contracted.conditioning;
+      if (slides) {
+        EXPECT_TRUE(contracted.ill_conditioned) << label;
+      }
+    }
   }
-  // Without the tangential damping the force is continuous at a switch and the same impact solves.
-  EXPECT_NO_THROW((void)solve_oblique(g, {LawKind::viscoelastic_hertz, k, 1.5e-6 * k},
-                                      {TangentialKind::liggghts_history, kt, 0.0, 0.3},
-                                      {std::cos(angle), std::sin(angle), 300.0, 0.0}));
+}
+
+// The cases checked against the codes (tests/dem/oblique_liggghts.cpp at A = 1e-7 s, tests/dem/
+// oblique_yade.cpp: kn = 1e7 N/m, cn = 1.2 N s/m, ks = 2e6 N/m, cs 0 and 0.6 N s/m, agreeing within 1.7e-6
+// and 1.8e-6 in e_t) never slide on the cap: the criterion does not refuse what the codes confirm.
+TEST(LiggghtsHistory, ImpactsTheCodesConfirmDoNotSlideOnTheCap) {
+  const std::vector<double> angles{1.0, 5.0, 10.0, 20.0, 30.0, 45.0, 60.0, 75.0, 85.0};
+  for (const bool pair : {false, true}) {
+    for (const double spin : {0.0, 300.0}) {
+      for (const double angle : angles) {
+        const std::string label =
+            (pair ? "pair at " : "wall at ") + std::to_string(angle) + ", spin " + std::to_string(spin);
+        const LiggghtsCase c = liggghts_steel(pair, 1e-7);
+        const ObliqueResult liggghts =
+            solve_oblique(c.geometry, c.normal, c.tangential, unit_speed_at(angle, spin),
+                          tight(CollisionEnd::delayed_recovery));
+        EXPECT_FALSE(liggghts.slides_on_cap) << "LIGGGHTS " << label;
+        const TorqueArm arm = pair ? TorqueArm::radius_minus_half_overlap : TorqueArm::radius_minus_overlap;
+        ObliqueGeometry g{solid_sphere(kRadius, kMass), std::nullopt, arm};
+        g.contact_point_arm = arm;
+        if (pair) g.second = solid_sphere(kRadius, kMass);
+        for (const double cs : {0.0, 0.6}) {
+          const ObliqueResult yade = solve_oblique(
+              g, {LawKind::linear_dashpot, 1e7, 1.2}, {TangentialKind::yade_viscel, 2e6, cs / 1.2, 0.3},
+              unit_speed_at(angle, spin), tight(CollisionEnd::delayed_recovery));
+          EXPECT_FALSE(yade.slides_on_cap) << "YADE cs " << cs << " " << label;
+        }
+      }
+    }
+  }
 }
 
 TEST(LiggghtsHistory, FrictionlessKeepsTangentialVelocityAndSpin) {

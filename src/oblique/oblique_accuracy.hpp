@@ -9,6 +9,8 @@
 // solve at a tenth of the rtol does not agree with the first within T, the outcome is reported as
 // ill-conditioned (near the stick/slip boundary a switch function can touch 0 without crossing it, and a
 // perturbation of the size of the error changes which modes follow) instead of silently.
+// An impact that slides on the Coulomb cap (ObliqueResult::slides_on_cap: LIGGGHTS's and YADE's rule) is
+// reported too, as not modelled, whatever the solves find.
 #include <string>
 
 #include "oblique_contact.hpp"  // beside it: the Python module includes this through restitution_oblique/

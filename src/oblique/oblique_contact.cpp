@@ -414,8 +414,17 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
       data.mode = ContactMode::slip;
       data.sign = model.cap_test_force(y) < 0.0 ? -1.0 : 1.0;
     } else {
+      State stuck = y;
+      if (model.has_history()) stuck[detail::kDisplacement] = model.displacement_at_cap(y, data.sign);
+      if (model.stick_falls_back_onto_cap(stuck, data.sign)) {
+        // A sliding mode on the cap: the slip goes on (at the capped force, a definite outcome where
+        // switching would chatter), and the result says that it is not the code's.
+        if (!result.slides_on_cap) result.cap_sliding_time_s = t * time_s;
+        result.slides_on_cap = true;
+        continue;
+      }
       data.mode = ContactMode::stick;
-      if (model.has_history()) y[detail::kDisplacement] = model.displacement_at_cap(y, data.sign);
+      y = stuck;
     }
     result.switches.push_back({t * time_s, data.mode});
   }

@@ -153,6 +153,13 @@ struct ObliqueResult {
   // over the contact (1: none): near 0 the contact nearly switched, and the outcome is ill-conditioned
   // (oblique_accuracy.hpp).
   double closest_switch_approach = 1.0;
+  // LIGGGHTS's and YADE's rule (the damping added below the cap only): a slip ended where the sticking force
+  // drives the contact straight back onto the cap, first at cap_sliding_time_s. The codes then alternate
+  // capped and uncapped steps, a sliding mode the stick and slip here do not model, and the outputs can be
+  // off the codes' by 1e-2 or more (docs/oblique.md): the slip goes on there instead, and the accuracy
+  // contract reports such an impact.
+  bool slides_on_cap = false;
+  double cap_sliding_time_s = 0.0;
   SolverStats stats;
 };
 

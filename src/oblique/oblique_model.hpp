@@ -14,6 +14,7 @@
 // LIGGGHTS's `tangential history` (tangential_model_history.h:147-217) and YADE's ViscElPhys
 // (computeForceTorqueViscEl) test and cap the elastic force -κξ alone, so its switches are these with g = 0
 // in the cap test, the rescale and h (its stick force is still -κξ - g s).
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -212,6 +213,26 @@ struct NaturalModel {
                                tangential_damping(x) * (s < 0.0 ? -1.0 : 1.0) * slip_rate(y, force) -
                                cap_rate(y);
     return mode == ContactMode::stick ? excess_rate > 0.0 : excess_rate < 0.0;
+  }
+  // Whether the stick a slip -> stick switch starts is driven straight back onto the cap, a sliding mode on
+  // it (LIGGGHTS's and YADE's rule). The slip ends where h (its switch function) rises through 0, and h is
+  // also the rate of the stick's margin C - |κξ|; the force jumps by -g s at the switch, so h's rate differs
+  // between the modes by κ·mobility·(-σ g s). Where h rises under the slip's force but falls under the
+  // stick's, each mode drives the contact into the other, and the code alternates capped and uncapped steps:
+  // an average force the two modes here do not give. h's rate under the stick: a central difference along
+  // the stick's rates (h is smooth there).
+  [[nodiscard]] bool stick_falls_back_onto_cap(const State& y, double sign) const {
+    if (!caps_elastic_force() || !has_history()) return false;
+    State rates{};
+    this->rates(y, ContactMode::stick, sign, rates);
+    const double step = 1e-6 * std::max(y[kOverlap], 1e-3);
+    State ahead = y;
+    State behind = y;
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      ahead[i] += step * rates[i];
+      behind[i] -= step * rates[i];
+    }
+    return switch_function(ahead, ContactMode::slip, sign) < switch_function(behind, ContactMode::slip, sign);
   }
   // The displacement a history model carries from a slip into a stick: the capped force, -κξ - g s = σC
   // (LIGGGHTS: -κξ = σC).

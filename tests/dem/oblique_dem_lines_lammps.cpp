@@ -5,6 +5,7 @@
 // (mindlin NULL) and with the line --target-et prints (a numeric k_t). At the printed timestep (the steps per
 // contact for e_t within 1e-4) LAMMPS's e_t is within 1e-4 of the printed one; at a tenth of it,
 // Richardson-extrapolated, within 1e-5, and so are the rebound angle (degrees, relative 1e-4) and the spin.
+// The same for the line `--tangential linear_history` prints and its --target-et line.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -144,6 +145,26 @@ TEST_P(ObliqueDemLines, LammpsGivesThePrintedObliqueOutputs) {
   lines.back() = out["oblique"]["inverse"]["lines"][0].get<std::string>();
   expect_lammps_agrees(out, wall, lines, out["oblique"]["inverse"]["impacts"],
                        std::string(wall ? "wall" : "pair") + ", the inverse's line");
+}
+
+// `--tangential linear_history --tangential-stiffness 4e6` (about mindlin's k_t a at half the peak overlap
+// here): the printed line carries that model, and LAMMPS run on it gives the printed oblique outputs, and so
+// does the line --target-et prints for it (linear_history's own k_t).
+TEST_P(ObliqueDemLines, LinearHistoryLineGivesItsPrintedObliqueOutputs) {
+  const bool wall = GetParam();
+  const auto r = run_cli(kSteel + (wall ? " --wall" : "") +
+                         " --tangential linear_history --tangential-stiffness 4e6 --target-et 0.25 "
+                         "--reference-angle 20");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto out = nlohmann::json::parse(r.out);
+  std::vector<std::string> lines = strings_of(out["lines"]);
+  ASSERT_NE(lines.back().find(" tangential linear_history 4000000 1 0.3 "), std::string::npos)
+      << lines.back();
+  expect_lammps_agrees(out, wall, lines, out["oblique"]["impacts"],
+                       std::string(wall ? "wall" : "pair") + ", linear_history as printed");
+  lines.back() = out["oblique"]["inverse"]["lines"][0].get<std::string>();
+  expect_lammps_agrees(out, wall, lines, out["oblique"]["inverse"]["impacts"],
+                       std::string(wall ? "wall" : "pair") + ", linear_history, the inverse's line");
 }
 
 // `--deck FILE` with friction: after the head-on collisions the deck collides the pair (or the sphere and

@@ -9,7 +9,8 @@
 // on the elastic force once per step while the damped stick force may exceed the cap, and at n = 2000 the
 // extrapolation is off by up to 2e-5 in e_t (1.5e-4 deg in the rebound angle). e_t, the rebound angle and
 // the spins agree within 1e-4 relative (1e-5 absolute where e_t is near 0); measured |Δe_t| <= 4.6e-9
-// without tangential damping, <= 1.7e-6 with it.
+// without tangential damping, <= 1.7e-6 with it. At A = 1e-6 s (ObliqueLiggghtsCap) the impacts that slide on
+// the cap are flagged and off LIGGGHTS; the others agree.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -61,7 +62,8 @@ nlohmann::json cli_json(const std::string& arguments) {
 // sphere (+z), so our spins are -ω_y, as in LAMMPS. A pair: atom 2k+2 moves onto atom 2k+1 at rest; a wall:
 // atom k+1 onto a primitive zplane at z = 0.
 std::vector<Outcome> run_liggghts(const std::string& program, const std::vector<std::string>& lines,
-                                  bool wall, double spin, double dt, double run_time) {
+                                  bool wall, double spin, double dt, double run_time,
+                                  const std::vector<double>& angles_deg = kAnglesDeg) {
   TempFolder folder;
   const auto steps = static_cast<long>(std::ceil(run_time / dt));
   const std::size_t per_angle = wall ? 1 : 2;
@@ -69,14 +71,14 @@ std::vector<Outcome> run_liggghts(const std::string& program, const std::vector<
   deck.precision(17);
   deck << "units si\natom_style granular\natom_modify map array\nnewton off\ncommunicate single vel yes\n"
        << "boundary f f f\nregion box block -0.05 0.05 -0.01 0.01 -0.01 0.01 units box\ncreate_box 1 box\n";
-  for (std::size_t i = 0; i < kAnglesDeg.size(); ++i) {
+  for (std::size_t i = 0; i < angles_deg.size(); ++i) {
     const double x = -0.04 + 0.01 * static_cast<double>(i);
     if (!wall) deck << "create_atoms 1 single " << x << " 0 0 units box\n";
     deck << "create_atoms 1 single " << x << " 0 " << (wall ? kRadius : 2.0 * kRadius) << " units box\n";
   }
   deck << "set type 1 diameter " << 2.0 * kRadius << "\nset type 1 density 7800\n";
-  for (std::size_t i = 0; i < kAnglesDeg.size(); ++i) {
-    const double a = kAnglesDeg[i] * std::numbers::pi / 180.0;
+  for (std::size_t i = 0; i < angles_deg.size(); ++i) {
+    const double a = angles_deg[i] * std::numbers::pi / 180.0;
     deck << "set atom " << per_angle * (i + 1) << " vx " << std::sin(a) << " vy 0 vz " << -std::cos(a)
          << " omegax 0 omegay " << -spin << " omegaz 0\n";
   }
@@ -102,7 +104,7 @@ std::vector<Outcome> run_liggghts(const std::string& program, const std::vector<
   std::istringstream dump(slurp((folder.path / "out.dump").string()));
   std::vector<std::string> rows;
   for (std::string line; std::getline(dump, line);) rows.push_back(line);
-  const std::size_t atoms = per_angle * kAnglesDeg.size();
+  const std::size_t atoms = per_angle * angles_deg.size();
   EXPECT_GE(rows.size(), atoms) << deck.str();
   std::vector<std::array<double, 3>> v(atoms);  // vx, vz, ω_y by id - 1
   for (std::size_t k = rows.size() - std::min(rows.size(), atoms); k < rows.size(); ++k) {
@@ -112,17 +114,29 @@ std::vector<Outcome> run_liggghts(const std::string& program, const std::vector<
     row >> id >> values[0] >> values[1] >> values[2];
     v.at(static_cast<std::size_t>(id - 1)) = values;
   }
-  std::vector<Outcome> out(kAnglesDeg.size());
-  for (std::size_t i = 0; i < kAnglesDeg.size(); ++i) {
+  std::vector<Outcome> out(angles_deg.size());
+  for (std::size_t i = 0; i < angles_deg.size(); ++i) {
     const auto& moving = v[per_angle * (i + 1) - 1];
     const std::array<double, 3> rest = wall ? std::array<double, 3>{} : v[per_angle * i];
-    const double s0 = std::sin(kAnglesDeg[i] * std::numbers::pi / 180.0) + kRadius * spin;
+    const double s0 = std::sin(angles_deg[i] * std::numbers::pi / 180.0) + kRadius * spin;
     const double dvx = moving[0] - rest[0];
     const double dvz = moving[1] - rest[1];
     out[i] = {-(dvx - kRadius * moving[2] - kRadius * rest[2]) / s0,
               std::atan2(dvx, dvz) * 180.0 / std::numbers::pi, -moving[2], -rest[2]};
   }
   return out;
+}
+
+// gamman and gammat carry 1/m_eff (the note of the lines): on a wall m_eff is the sphere's mass, twice the
+// pair's, so the wall's lines take half the numbers to model the same A.
+void halve_damping_for_the_wall(const nlohmann::json& dem, std::vector<std::string>& lines) {
+  for (const auto& [index, name] : {std::pair{2, "gamman"}, std::pair{3, "gammat"}}) {
+    std::ostringstream line;
+    line.precision(17);
+    line << "fix dem_" << name << " all property/global " << name << " peratomtypepair 1 "
+         << 0.5 * dem.at("parameters").at(name).get<double>();
+    lines[static_cast<std::size_t>(index)] = line.str();
+  }
 }
 
 // (wall, tangential damping on, initial spin [rad/s])
@@ -138,15 +152,7 @@ TEST_P(ObliqueLiggghts, ImpactsAgreeWithin1e4) {
   ASSERT_EQ(lines[5], "pair_style gran model hertz/stiffness tangential history limitForce on");
   // gamman and gammat carry 1/m_eff (the note of the lines): on a wall m_eff is the sphere's mass, twice the
   // pair's, so the wall's lines take half the numbers to model the same A.
-  if (wall) {
-    for (const auto& [index, name] : {std::pair{2, "gamman"}, std::pair{3, "gammat"}}) {
-      std::ostringstream line;
-      line.precision(17);
-      line << "fix dem_" << name << " all property/global " << name << " peratomtypepair 1 "
-           << 0.5 * dem.at("parameters").at(name).get<double>();
-      lines[static_cast<std::size_t>(index)] = line.str();
-    }
-  }
+  if (wall) halve_damping_for_the_wall(dem, lines);
   if (!damped) {
     lines[5] =
         "pair_style gran model hertz/stiffness tangential history tangential_damping off limitForce on";
@@ -199,5 +205,55 @@ TEST_P(ObliqueLiggghts, ImpactsAgreeWithin1e4) {
 INSTANTIATE_TEST_SUITE_P(Cases, ObliqueLiggghts,
                          ::testing::Combine(::testing::Bool(), ::testing::Bool(),
                                             ::testing::Values(0.0, 300.0)));
+
+// A = 1e-6 s (ε ≈ 0.52), 300 rad/s, damping as printed, near 45°: where the contact slides on the cap
+// (LIGGGHTS alternating capped and uncapped steps) the oblique outputs are flagged as not modelled, and
+// LIGGGHTS indeed differs there; every impact not flagged agrees with LIGGGHTS within 1e-4.
+TEST(ObliqueLiggghtsCap, ImpactsSlidingOnTheCapAreFlaggedAndTheOthersAgree) {
+  const std::string program = dem::dem_program(dem::Code::liggghts);
+  ASSERT_FALSE(program.empty()) << "liggghts not found on PATH: scripts/setup installs Debian's liggghts";
+  std::string material = kMaterial;
+  material.replace(material.find("--dissipative-constant 1e-7"), 27, "--dissipative-constant 1e-6");
+  const std::vector<double> angles{40.0, 44.0, 45.0, 46.0, 48.0};
+  std::string list;
+  for (const double a : angles) list += (list.empty() ? "" : ",") + std::to_string(a);
+  for (const bool wall : {false, true}) {
+    const nlohmann::json dem = cli_json("dem --code liggghts " + material);
+    std::vector<std::string> lines = dem.at("lines").get<std::vector<std::string>>();
+    if (wall) halve_damping_for_the_wall(dem, lines);
+    const auto outcome =
+        run_cli("oblique " + material + " --tangential liggghts_history --tangential-damping 1" +
+                (wall ? " --wall" : "") + " --angle " + list + " --spin 300 --json");
+    ASSERT_EQ(outcome.status, 0) << outcome.err;
+    const nlohmann::json predicted = nlohmann::json::parse(outcome.out);
+    const auto& impacts = predicted.at("impacts");
+    double shortest = 1.0;
+    double longest = 0.0;
+    for (const auto& impact : impacts) {
+      shortest = std::min(shortest, impact.at("contact_time_s").get<double>());
+      longest = std::max(longest, impact.at("contact_time_s").get<double>());
+    }
+    const double dt = shortest / kCoarseSteps;
+    const auto coarse = run_liggghts(program, lines, wall, 300.0, dt, 1.1 * longest, angles);
+    const auto fine = run_liggghts(program, lines, wall, 300.0, dt / 10.0, 1.1 * longest, angles);
+    std::size_t flagged = 0;
+    for (std::size_t i = 0; i < angles.size(); ++i) {
+      const double et = fine[i].et + (fine[i].et - coarse[i].et) / 9.0;
+      const double predicted = impacts[i].at("tangential_restitution").get<double>();
+      const std::string conditioning = impacts[i].at("conditioning").get<std::string>();
+      const std::string label = std::string(wall ? "wall" : "pair") + " at " + std::to_string(angles[i]) +
+                                " deg: LIGGGHTS e_t " + std::to_string(et) + ", printed " +
+                                std::to_string(predicted) + ", " + conditioning;
+      std::cout << label << "\n";
+      if (conditioning.find("slides on the Coulomb cap") != std::string::npos) {
+        ++flagged;
+        EXPECT_GT(std::abs(et - predicted), 1e-3) << label;  // the flag is needed there
+      } else {
+        EXPECT_NEAR(et, predicted, std::max(1e-4 * std::abs(predicted), 1e-5)) << label;
+      }
+    }
+    EXPECT_EQ(flagged, wall ? 1U : 2U);  // pair: 45° and 46°; wall: 46°
+  }
+}
 
 }  // namespace

@@ -263,7 +263,8 @@ int run_wall(const DemOptions& o) {
   request.tolerance = o.tolerance;
   request.friction = o.friction;
   const bool oblique = wants_oblique(o.oblique, request.code, o.friction);
-  const dem::WallResult r = dem::wall_lines(request);
+  dem::WallResult r = dem::wall_lines(request);
+  apply_tangential_choice(r.deck, o.oblique, o.friction);
   std::optional<DemOblique> impacts;
   if (oblique) impacts = wall_oblique(r.deck, r.contact, o.oblique, r.reference_velocity_m_s, o.tolerance);
   print_wall(r, o.json, o.deck, impacts);
@@ -329,12 +330,18 @@ void add_dem_command(CLI::App& app, Action& chosen) {
         return run_wall(*o);
       }
       if (o->deck) check_deck_target(*o->deck, dem::code_from_name(o->code));
-      if (several_types(o->types)) return run_polydisperse(*o);
+      if (several_types(o->types)) {
+        if (tangential_chosen(o->oblique)) {
+          throw InvalidInput("--tangential is for one pair of spheres or a wall, not several types");
+        }
+        return run_polydisperse(*o);
+      }
       if (o->deck) check_deck_size(dem::code_from_name(o->code), 1, o->speeds.size());
       o->material = one_pair_material(o->types);
       const bool oblique = wants_oblique(o->oblique, dem::code_from_name(o->code), o->friction);
       const std::optional<FromFit> from_fit = apply_from_fit(*o);
-      const dem::LinesResult r = compute(*o);
+      dem::LinesResult r = compute(*o);
+      apply_tangential_choice(r.deck, o->oblique, o->friction);
       const Production p = production(r, material_from(o->material), o->production, o->tolerance);
       std::optional<DemOblique> impacts;
       if (oblique) {

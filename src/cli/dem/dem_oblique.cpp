@@ -148,6 +148,18 @@ void print_impacts(const DemOblique& r, const std::vector<ContractedOblique>& im
 
 void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o) {
   command
+      .add_option("--tangential", o.tangential,
+                  "with --friction (lammps): LAMMPS's tangential model of the printed line, its oblique "
+                  "outputs and --target-et: linear_nohistory, linear_history or mindlin")
+      ->check(CLI::IsMember({"linear_nohistory", "linear_history", "mindlin"}))
+      ->capture_default_str();
+  command.add_option("--tangential-stiffness", o.tangential_stiffness,
+                     "k_t of --tangential in N/m (mindlin: N/m^2, its stiffness is k_t a; default NULL, 8 G* "
+                     "for a pair); required by linear_history");
+  command.add_option("--tangential-damping", o.tangential_damping,
+                     "x_gamma_t of --tangential: the tangential damping coefficient over the normal one "
+                     "(default 1)");
+  command
       .add_option("--angles", o.angles_deg,
                   "with --friction (lammps): the impact angles from the normal in degrees, in [0, 90), "
                   "at which to report what the lines give oblique impacts (default 5,15,30,45,60,80)")
@@ -157,29 +169,89 @@ void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o) {
                   "the accuracy of e_t LAMMPS's steps per contact are reported for, in (0, 0.1]")
       ->capture_default_str();
   command.add_option("--target-et", o.target_et,
-                     "with --reference-angle (lammps, --friction): find the tangential stiffness (mindlin's "
-                     "k_t) that gives this tangential restitution e_t at that angle, and print its line");
+                     "with --reference-angle (lammps, --friction): find --tangential's parameter (k_t, or "
+                     "linear_nohistory's x_gamma_t) that gives this tangential restitution e_t at that "
+                     "angle, and print its line");
   command.add_option("--reference-angle", o.reference_angle_deg,
                      "the impact angle in degrees from the normal at which --target-et holds, in (0, 90)");
 }
 
-double lammps_et_error_coefficient(TangentialKind kind) {
+double lammps_et_error_coefficient(TangentialKind /*kind: the same bound for each so far*/) {
   // Measured 2026-11-27 with Debian's LAMMPS 20220106: the largest N |e_t(N) - e_t| at dt = t_c/N, the error
   // falling tenfold with the step (first order). mindlin with x_gamma_t = 1, as dem prints it
   // (tests/dem/oblique_dem_lines_lammps.cpp, pair and wall, six angles 5°-80°, the printed line and the
   // --target-et line): 0.48 for steel (ε = 0.9, μ = 0.3), 0.60 for glass (E = 6e10 Pa, ν = 0.25, ε = 0.7,
   // μ = 0.5), 0.14 for steel at ε = 0.98, μ = 0.1; taken as 1. The linear models with x_gamma_t = 0.5
-  // (tests/dem/oblique_lammps.cpp, nine angles, spin 0 and 300 rad/s): 0.064 and 0.033, taken as 0.1.
-  return kind == TangentialKind::mindlin ? 1.0 : 0.1;
+  // (tests/dem/oblique_lammps.cpp, nine angles, spin 0 and 300 rad/s): 0.064 and 0.033; but linear_history
+  // with x_gamma_t = 1 as `--tangential` prints it (k_t = 4e6 N/m, steel above, pair and wall): 0.48, so 1
+  // for every model.
+  return 1.0;
+}
+
+bool tangential_chosen(const DemObliqueOptions& o) {
+  return o.tangential != "mindlin" || o.tangential_stiffness || o.tangential_damping;
+}
+
+void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double friction) {
+  if (!tangential_chosen(o)) return;
+  if (deck.code != dem::Code::lammps) {
+    throw InvalidInput("--tangential, --tangential-stiffness and --tangential-damping are for --code lammps");
+  }
+  if (!(friction > 0.0)) {
+    throw InvalidInput("--tangential needs --friction MU > 0: without friction the line is frictionless");
+  }
+  const TangentialKind kind = tangential_from_name(o.tangential);
+  if (kind == TangentialKind::linear_history && !o.tangential_stiffness) {
+    throw InvalidInput("--tangential linear_history needs --tangential-stiffness K_T in N/m");
+  }
+  if (kind == TangentialKind::linear_nohistory && o.tangential_stiffness) {
+    throw InvalidInput("--tangential linear_nohistory has no stiffness: drop --tangential-stiffness");
+  }
+  if (o.tangential_stiffness && !(*o.tangential_stiffness > 0.0 && std::isfinite(*o.tangential_stiffness))) {
+    throw InvalidInput(fmt::format("--tangential-stiffness must be a positive finite number, got {}",
+                                   *o.tangential_stiffness));
+  }
+  if (o.tangential_damping && !(*o.tangential_damping >= 0.0 && std::isfinite(*o.tangential_damping))) {
+    throw InvalidInput(fmt::format("--tangential-damping must be a non-negative finite number, got {}",
+                                   *o.tangential_damping));
+  }
+  const auto line = std::find_if(deck.lines.begin(), deck.lines.end(), [](const std::string& l) {
+    return l.find(" tangential ") != std::string::npos;
+  });
+  if (line == deck.lines.end()) throw std::logic_error("a LAMMPS deck without a tangential model");
+  std::vector<std::string> words = words_of(*line);
+  const TangentialWords printed = tangential_words(words);
+  const std::string damping = o.tangential_damping ? fmt::format("{}", *o.tangential_damping) : "1";
+  std::vector<std::string> chosen{o.tangential};
+  if (kind != TangentialKind::linear_nohistory) {
+    // mindlin without a stiffness keeps the printed one (NULL for a pair, the wall's numeric 8 G*).
+    chosen.push_back(o.tangential_stiffness ? fmt::format("{}", *o.tangential_stiffness) : printed.words[1]);
+  }
+  chosen.push_back(damping);
+  chosen.push_back(printed.words.back());  // μ
+  const auto first = words.begin() + static_cast<std::ptrdiff_t>(printed.position);
+  words.erase(first, first + static_cast<std::ptrdiff_t>(printed.words.size()));
+  words.insert(words.begin() + static_cast<std::ptrdiff_t>(printed.position), chosen.begin(), chosen.end());
+  *line = joined(words);
+  const std::string note = fmt::format(
+      "tangential {} (--tangential): x_gamma_t = {} (tangential damping = x_gamma_t times the normal "
+      "damping){}",
+      joined(chosen), damping,
+      kind == TangentialKind::linear_nohistory ? ", no history: F_t = -min(mu |F_n|, x_gamma_t eta |v_t|)"
+      : kind == TangentialKind::linear_history ? ", k_t in N/m"
+                                               : ", k_t in N/m^2 (times the contact radius a)");
+  for (std::string& n : deck.notes) {
+    if (n.rfind("tangential ", 0) == 0) n = note;
+  }
 }
 
 bool wants_oblique(const DemObliqueOptions& o, dem::Code code, double friction) {
-  const bool asked = !o.angles_deg.empty() || o.target_et || o.reference_angle_deg;
+  const bool asked = !o.angles_deg.empty() || o.target_et || o.reference_angle_deg || tangential_chosen(o);
   if (code != dem::Code::lammps) {
     if (asked) {
       throw InvalidInput(
-          "--angles, --target-et and --reference-angle are for --code lammps (the other codes' tangential "
-          "models are not modelled yet)");
+          "--angles, --target-et, --reference-angle and --tangential are for --code lammps (the other codes' "
+          "tangential models are not modelled yet)");
     }
     return false;
   }

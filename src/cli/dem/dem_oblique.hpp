@@ -23,6 +23,12 @@ struct DemObliqueOptions {
   double et_accuracy = 1e-4;        // --et-accuracy: the e_t accuracy LAMMPS's steps per contact are for
   std::optional<double> target_et;  // --target-et
   std::optional<double> reference_angle_deg;  // --reference-angle
+  // --tangential: LAMMPS's tangential model of the printed line (mindlin NULL 1 MU by default), with
+  // --tangential-stiffness k_t (N/m; N/m² for mindlin, whose stiffness is k_t a) and --tangential-damping
+  // x_gamma_t (default 1: the tangential dash-pot as strong as the normal one).
+  std::string tangential = "mindlin";
+  std::optional<double> tangential_stiffness;
+  std::optional<double> tangential_damping;
 };
 
 void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o);
@@ -54,6 +60,15 @@ struct DemOblique {
   std::vector<std::string> inverse_lines;
   std::vector<oblique::ContractedOblique> inverse_impacts;
 };
+
+// Whether --tangential, --tangential-stiffness or --tangential-damping change the printed tangential model.
+bool tangential_chosen(const DemObliqueOptions& o);
+// Puts --tangential's model into the deck's LAMMPS line (the pair's pair_coeff or the wall's fix wall/gran)
+// and its note, in place of the printed mindlin; nothing when none is chosen. mindlin without
+// --tangential-stiffness keeps the printed k_t (the pair's NULL, the wall's number). Throws
+// InvalidInput naming the option: not --code lammps, no --friction, linear_history without
+// --tangential-stiffness, linear_nohistory with it, a stiffness not positive or a damping negative.
+void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double friction);
 
 // Whether the options or the friction ask for oblique outputs; InvalidInput naming the options when the code
 // is not LAMMPS or they are out of range.
