@@ -158,7 +158,10 @@ ObliqueImpact solve_impact(const ObliqueSetup& setup, double angle_deg, double s
   const ImpactVelocity v = impact_at(setup, angle_deg, spin_rad_s);
   ContractedOblique solve =
       solve_oblique_within(setup.geometry, setup.normal, setup.tangential, v, setup.tolerance, setup.options);
-  ObliqueImpact impact{angle_deg, spin_rad_s, std::move(solve.result)};
+  ObliqueImpact impact;
+  impact.angle_deg = angle_deg;
+  impact.initial_spin_rad_s = spin_rad_s;
+  impact.result = std::move(solve.result);
   impact.relative_tolerance = solve.relative_tolerance;
   impact.ill_conditioned = solve.ill_conditioned;
   impact.conditioning = std::move(solve.conditioning);
