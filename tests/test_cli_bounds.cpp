@@ -81,7 +81,13 @@ TEST(CliBounds, CountsHaveUpperBounds) {
 // the program does.
 TEST(CliWords, NegativeZeroZetaAndHelpTexts) {
   EXPECT_EQ(run_cli("eps --zeta -0 --json").out.rfind("{\"zeta\":0.0,", 0), 0U);
-  EXPECT_EQ(run_cli("dem --help").out.find("default 1)"), std::string::npos);
+  // --velocity is required with --eps: its help line must not offer a default of 1 m/s.
+  const std::string dem_help = run_cli("dem --help").out;
+  const std::size_t velocity = dem_help.find("--velocity FLOAT");
+  ASSERT_NE(velocity, std::string::npos) << dem_help;
+  const std::string velocity_line = dem_help.substr(velocity, dem_help.find('\n', velocity) - velocity);
+  EXPECT_EQ(velocity_line.find("default 1)"), std::string::npos) << velocity_line;
+  EXPECT_NE(velocity_line.find("required with --eps"), std::string::npos) << velocity_line;
   for (const char* command : {"stability", "damping-check", "series eval"}) {
     const std::string help = run_cli(std::string(command) + " --help").out;
     EXPECT_EQ(help.find("17 significant"), std::string::npos) << command;
