@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "oblique/oblique_contact.hpp"
+#include "oblique_steel.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 
@@ -17,11 +18,7 @@ namespace {
 using namespace restitution;
 using namespace restitution::oblique;
 
-// A 1 mm steel sphere (7800 kg/m³) and a LAMMPS-like Hertz contact: k = (4/3) E* sqrt(R*), E* = 1.1e11 Pa.
-constexpr double kRadius = 1e-3;
-const double kMass = 4.0 / 3.0 * std::numbers::pi * kRadius * kRadius * kRadius * 7800.0;
-constexpr double kHertzStiffness = 4.63e9;  // N/m^{3/2}
-constexpr double kHertzDamping = 694.0;     // N s/m^{3/2}: ε ≈ 0.92 at 1 m/s
+using namespace restitution::test_support::oblique_steel;  // kRadius, kMass, kHertzStiffness, kHertzDamping
 
 ObliqueGeometry wall_geometry() {
   return {solid_sphere(kRadius, kMass), std::nullopt, TorqueArm::radius};

@@ -16,6 +16,7 @@
 
 #include "oblique/oblique_accuracy.hpp"
 #include "oblique_reference.hpp"
+#include "oblique_steel.hpp"
 #include "restitution/errors.hpp"
 
 namespace {
@@ -23,10 +24,7 @@ namespace {
 using namespace restitution;
 using namespace restitution::oblique;
 
-constexpr double kRadius = 1e-3;
-const double kMass = 4.0 / 3.0 * std::numbers::pi * kRadius * kRadius * kRadius * 7800.0;
-constexpr double kHertzStiffness = 4.63e9;  // N/m^{3/2}: 1 mm steel spheres
-constexpr double kHertzDamping = 694.0;     // N s/m^{3/2}: ε = 0.9248 at 1 m/s
+using namespace restitution::test_support::oblique_steel;  // kRadius, kMass, kHertzStiffness, kHertzDamping
 constexpr double kTangentialStiffness = 2.2e6;
 constexpr double kFriction = 0.3;
 constexpr double kDegree = std::numbers::pi / 180.0;
@@ -78,25 +76,7 @@ Outputs outputs_of(const oblique_reference::Outcome& o, const ObliqueGeometry& g
 }
 
 oblique_reference::Problem problem_of(const Case& c, const ObliqueGeometry& g, const ImpactVelocity& v) {
-  oblique_reference::Problem p;
-  p.radius1 = g.first.radius_m;
-  p.mass1 = g.first.mass_kg;
-  p.inertia1 = g.first.inertia_kg_m2;
-  p.wall = !g.second;
-  if (g.second) {
-    p.radius2 = g.second->radius_m;
-    p.mass2 = g.second->mass_kg;
-    p.inertia2 = g.second->inertia_kg_m2;
-  }
-  p.kn = kHertzStiffness;
-  p.gamma_n = kHertzDamping;
-  p.kt = kTangentialStiffness;
-  p.gamma_t = c.tangential_damping;
-  p.mu = kFriction;
-  p.vn = v.normal_m_s;
-  p.vt = v.tangential_m_s;
-  p.spin1 = v.spin_first_rad_s;
-  return p;
+  return reference_problem(g, kNormal, tangential_of(c), v);
 }
 
 // Each output's difference over its bound (spins: T·max(|ω'|, v/R)), the largest.

@@ -10,16 +10,14 @@
 
 #include "oblique/oblique_contact.hpp"
 #include "oblique_reference.hpp"
+#include "oblique_steel.hpp"
 
 namespace {
 
 using namespace restitution;
 using namespace restitution::oblique;
 
-constexpr double kRadius = 1e-3;
-const double kMass = 4.0 / 3.0 * std::numbers::pi * kRadius * kRadius * kRadius * 7800.0;
-constexpr double kHertzStiffness = 4.63e9;
-constexpr double kHertzDamping = 694.0;
+using namespace restitution::test_support::oblique_steel;  // kRadius, kMass, kHertzStiffness, kHertzDamping
 constexpr double kTangentialStiffness = 2.2e6;  // N/m, about 2/7 of the normal contact stiffness at 1 m/s
 constexpr double kTangentialDamping = 0.5;
 constexpr double kFriction = 0.3;
@@ -29,29 +27,6 @@ struct Case {
   bool pair;
   std::vector<ContactMode> modes;  // the expected sequence (a regression guard on the case's physics)
 };
-
-oblique_reference::Problem reference_problem(const ObliqueGeometry& g, const ImpactVelocity& v) {
-  oblique_reference::Problem p;
-  p.radius1 = g.first.radius_m;
-  p.mass1 = g.first.mass_kg;
-  p.inertia1 = g.first.inertia_kg_m2;
-  p.wall = !g.second;
-  if (g.second) {
-    p.radius2 = g.second->radius_m;
-    p.mass2 = g.second->mass_kg;
-    p.inertia2 = g.second->inertia_kg_m2;
-  }
-  p.kn = kHertzStiffness;
-  p.gamma_n = kHertzDamping;
-  p.kt = kTangentialStiffness;
-  p.gamma_t = kTangentialDamping;
-  p.mu = kFriction;
-  p.vn = v.normal_m_s;
-  p.vt = v.tangential_m_s;
-  p.spin1 = v.spin_first_rad_s;
-  p.spin2 = v.spin_second_rad_s;
-  return p;
-}
 
 class ObliqueEvents : public ::testing::TestWithParam<Case> {};
 
@@ -63,11 +38,12 @@ TEST_P(ObliqueEvents, SwitchTimesAndOutputsMatchTheReference) {
   const ImpactVelocity v{1.0, std::tan(c.angle_deg * std::numbers::pi / 180.0), 0.0, 0.0};
   ObliqueOptions options;
   options.relative_tolerance = 1e-12;
-  const ObliqueResult r = solve_oblique(
-      g, {LawKind::viscoelastic_hertz, kHertzStiffness, kHertzDamping},
-      {TangentialKind::linear_history, kTangentialStiffness, kTangentialDamping, kFriction}, v, options);
+  const NormalForce normal{LawKind::viscoelastic_hertz, kHertzStiffness, kHertzDamping};
+  const TangentialForce tangential{TangentialKind::linear_history, kTangentialStiffness, kTangentialDamping,
+                                   kFriction};
+  const ObliqueResult r = solve_oblique(g, normal, tangential, v, options);
 
-  oblique_reference::Integrator reference(reference_problem(g, v));
+  oblique_reference::Integrator reference(reference_problem(g, normal, tangential, v));
   const oblique_reference::Outcome fine = reference.run(r.contact_time_s / 2e4);
   const oblique_reference::Outcome coarse = reference.run(r.contact_time_s / 1e4);
   const auto tc = static_cast<double>(fine.contact_time);

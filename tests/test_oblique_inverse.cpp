@@ -11,6 +11,7 @@
 
 #include "oblique/oblique_inverse.hpp"
 #include "oblique_reference.hpp"
+#include "oblique_steel.hpp"
 #include "restitution/errors.hpp"
 
 namespace {
@@ -18,10 +19,7 @@ namespace {
 using namespace restitution;
 using namespace restitution::oblique;
 
-constexpr double kRadius = 1e-3;
-const double kMass = 4.0 / 3.0 * std::numbers::pi * kRadius * kRadius * kRadius * 7800.0;
-constexpr double kHertzStiffness = 4.63e9;  // N/m^{3/2}: 1 mm steel spheres
-constexpr double kHertzDamping = 694.0;     // N s/m^{3/2}: ε = 0.9248 at 1 m/s
+using namespace restitution::test_support::oblique_steel;  // kRadius, kMass, kHertzStiffness, kHertzDamping
 
 TangentialInverseRequest request_for(TangentialKind kind, bool pair, double angle_deg, double target) {
   TangentialInverseRequest r;
@@ -65,17 +63,8 @@ TEST_P(ObliqueInverse, ParameterFedBackGivesTheTarget) {
   EXPECT_NEAR(again.result.tangential_restitution, c.target, c.tolerance);
   if (c.kind == TangentialKind::linear_history && !c.pair) {
     // The independent reference with the k_t found (torque arm R, a wall: its own model).
-    oblique_reference::Problem p;
-    p.radius1 = kRadius;
-    p.mass1 = kMass;
-    p.inertia1 = request.geometry.first.inertia_kg_m2;
-    p.kn = kHertzStiffness;
-    p.gamma_n = kHertzDamping;
-    p.kt = found.parameter;
-    p.gamma_t = t.damping_factor;
-    p.mu = t.friction;
-    p.vn = request.impact.normal_m_s;
-    p.vt = request.impact.tangential_m_s;
+    const oblique_reference::Problem p =
+        reference_problem(request.geometry, request.normal, t, request.impact);
     oblique_reference::Integrator reference(p);
     const oblique_reference::Outcome o = reference.run(again.result.contact_time_s / 2e4);
     EXPECT_NEAR(static_cast<double>(-o.slip_final / o.slip_initial), c.target, c.tolerance);
