@@ -20,6 +20,7 @@
 
 #include "cli_runner.hpp"
 #include "dem/code_runner.hpp"
+#include "dem/oblique_runs.hpp"
 
 namespace {
 
@@ -32,9 +33,7 @@ const std::string kSteel =
     "dem --code lammps --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --eps 0.9 "
     "--velocity 1 --friction 0.3 --json";
 
-struct Outcome {
-  double et = 0.0, rebound_deg = 0.0, spin = 0.0;
-};
+using Outcome = restitution::test_support::ObliqueOutcome;  // spin2 unused
 
 // One collision per angle, 10 mm apart: a pair (atom 2k+2 onto 2k+1 at rest) or a sphere onto the wall at
 // z = 0. Our spin is -omega_y (LAMMPS's slip is vx - R omega_y per sphere, n = +z towards the mover).
@@ -107,7 +106,7 @@ void expect_lammps_agrees(const nlohmann::json& out, bool wall, const std::vecto
   for (const auto& i : impacts) longest = std::max(longest, i["contact_time_s"].get<double>());
   const auto coarse = run_lammps(out, wall, lines, dt, 1.1 * longest);
   const auto fine = run_lammps(out, wall, lines, dt / 10.0, 1.1 * longest);
-  const auto extrapolate = [](double c, double f) { return f + (f - c) / 9.0; };
+  const auto extrapolate = restitution::test_support::extrapolate_first_order;
   for (std::size_t i = 0; i < impacts.size(); ++i) {
     const auto& p = impacts[i];
     const double et = p["tangential_restitution"].get<double>();

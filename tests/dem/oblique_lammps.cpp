@@ -21,6 +21,7 @@
 
 #include "cli_runner.hpp"
 #include "dem/code_runner.hpp"
+#include "dem/oblique_runs.hpp"
 #include "oblique/oblique_contact.hpp"
 
 namespace {
@@ -43,17 +44,12 @@ double tangential_stiffness(TangentialKind kind) {
 }
 constexpr double kTangentialDamping = 0.5;
 constexpr double kFriction = 0.3;
-const std::vector<double> kAnglesDeg{1.0, 5.0, 10.0, 20.0, 30.0, 45.0, 60.0, 75.0, 85.0};
+const std::vector<double>& kAnglesDeg = restitution::test_support::kObliqueAnglesDeg;
 constexpr int kCoarseSteps = 2000;
 
-struct Outcome {
-  double et = 0.0, rebound_deg = 0.0, spin = 0.0, spin2 = 0.0;
-};
+using Outcome = restitution::test_support::ObliqueOutcome;
 
-ImpactVelocity impact_at(double angle_deg, double spin) {
-  const double a = angle_deg * std::numbers::pi / 180.0;
-  return {std::cos(a), std::sin(a), spin, 0.0};
-}
+using restitution::test_support::impact_at;
 
 // LAMMPS's slip is vtr = vt + n × (R_i ω_i + R_j ω_j) with n = +z towards the moving sphere: vx - R ω_y per
 // sphere, so our spins are -ω_y. A pair: atom 2k+2 moves onto atom 2k+1 at rest (pair granular, m* = m/2,
@@ -160,7 +156,7 @@ TEST_P(ObliqueLammps, ImpactsAgreeWithin1e4) {
   const double dt = shortest / kCoarseSteps;
   const auto coarse = run_lammps(program, kind, spin, dt, 1.1 * longest, rest_radius);
   const auto fine = run_lammps(program, kind, spin, dt / 10.0, 1.1 * longest, rest_radius);
-  const auto extrapolate = [](double c, double f) { return f + (f - c) / 9.0; };
+  const auto extrapolate = restitution::test_support::extrapolate_first_order;
   double largest = 0.0;  // |Δe_t|, reported (measured 2026-11-27: at most 5.3e-7)
   for (std::size_t i = 0; i < kAnglesDeg.size(); ++i) {
     const ObliqueResult& p = predicted[i];
@@ -183,9 +179,7 @@ TEST_P(ObliqueLammps, ImpactsAgreeWithin1e4) {
           << label;
     }
   }
-  std::ostringstream largest_text;
-  largest_text << std::scientific << largest;
-  testing::Test::RecordProperty("largest_et_difference", largest_text.str());
+  restitution::test_support::record_largest_et_difference(largest);
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, ObliqueLammps,

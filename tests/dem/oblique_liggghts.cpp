@@ -27,6 +27,7 @@
 
 #include "cli_runner.hpp"
 #include "dem/code_runner.hpp"
+#include "dem/oblique_runs.hpp"
 
 namespace {
 
@@ -39,12 +40,10 @@ constexpr double kRadius = 1e-3;
 const std::string kMaterial =
     "--young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --dissipative-constant 1e-7 "
     "--friction 0.3";
-const std::vector<double> kAnglesDeg{1.0, 5.0, 10.0, 20.0, 30.0, 45.0, 60.0, 75.0, 85.0};
+const std::vector<double>& kAnglesDeg = restitution::test_support::kObliqueAnglesDeg;
 constexpr int kCoarseSteps = 20000;
 
-struct Outcome {
-  double et = 0.0, rebound_deg = 0.0, spin = 0.0, spin2 = 0.0;
-};
+using Outcome = restitution::test_support::ObliqueOutcome;
 
 std::string angle_list() {
   std::string list;
@@ -172,7 +171,7 @@ TEST_P(ObliqueLiggghts, ImpactsAgreeWithin1e4) {
   const double dt = shortest / kCoarseSteps;
   const auto coarse = run_liggghts(program, lines, wall, spin, dt, 1.1 * longest);
   const auto fine = run_liggghts(program, lines, wall, spin, dt / 10.0, 1.1 * longest);
-  const auto extrapolate = [](double c, double f) { return f + (f - c) / 9.0; };
+  const auto extrapolate = restitution::test_support::extrapolate_first_order;
   double largest = 0.0;
   for (std::size_t i = 0; i < kAnglesDeg.size(); ++i) {
     const auto& p = impacts[i];
@@ -196,10 +195,7 @@ TEST_P(ObliqueLiggghts, ImpactsAgreeWithin1e4) {
           << label;
     }
   }
-  std::ostringstream largest_text;
-  largest_text << std::scientific << largest;
-  testing::Test::RecordProperty("largest_et_difference", largest_text.str());
-  std::cout << "largest |e_t difference|: " << largest_text.str() << "\n";
+  restitution::test_support::record_largest_et_difference(largest);
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, ObliqueLiggghts,

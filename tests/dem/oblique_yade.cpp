@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "dem/oblique_runs.hpp"
 #include "dem/yade_runner.hpp"
 #include "oblique/oblique_contact.hpp"
 
@@ -44,17 +45,12 @@ constexpr double kNormalStiffness = 1e7;  // N/m
 constexpr double kNormalDamping = 1.2;    // N s/m: ε ≈ 0.9
 constexpr double kShearStiffness = 2e6;   // N/m
 constexpr double kFriction = 0.3;
-const std::vector<double> kAnglesDeg{1.0, 5.0, 10.0, 20.0, 30.0, 45.0, 60.0, 75.0, 85.0};
+const std::vector<double>& kAnglesDeg = restitution::test_support::kObliqueAnglesDeg;
 constexpr int kCoarseSteps = 20000;
 
-struct Outcome {
-  double et = 0.0, rebound_deg = 0.0, spin = 0.0, spin2 = 0.0;
-};
+using Outcome = restitution::test_support::ObliqueOutcome;
 
-ImpactVelocity impact_at(double angle_deg, double spin) {
-  const double a = angle_deg * std::numbers::pi / 180.0;
-  return {std::cos(a), std::sin(a), spin, 0.0};
-}
+using restitution::test_support::impact_at;
 
 // YADE's contact-point velocity is v + ω × c with c from the centre to the contact point, below the moving
 // sphere: our spins are -ω_y, as for LAMMPS. A pair: body 2k+1 moves onto body 2k at rest; a wall: body k
@@ -155,7 +151,7 @@ TEST_P(ObliqueYade, ImpactsAgreeWithin1e4) {
   const double dt = shortest / kCoarseSteps;
   const auto coarse = run_yade(program, wall, shear_damping, spin, dt, 1.1 * longest);
   const auto fine = run_yade(program, wall, shear_damping, spin, dt / 10.0, 1.1 * longest);
-  const auto extrapolate = [](double c, double f) { return f + (f - c) / 9.0; };
+  const auto extrapolate = restitution::test_support::extrapolate_first_order;
   double largest = 0.0;
   for (std::size_t i = 0; i < kAnglesDeg.size(); ++i) {
     const ObliqueResult& p = predicted[i];
@@ -178,10 +174,7 @@ TEST_P(ObliqueYade, ImpactsAgreeWithin1e4) {
           << label;
     }
   }
-  std::ostringstream largest_text;
-  largest_text << std::scientific << largest;
-  testing::Test::RecordProperty("largest_et_difference", largest_text.str());
-  std::cout << "largest |e_t difference|: " << largest_text.str() << "\n";
+  restitution::test_support::record_largest_et_difference(largest);
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, ObliqueYade,
