@@ -270,19 +270,9 @@ CvodeIntegrator::Step CvodeIntegrator::advance() {
 
 SolverStats CvodeIntegrator::phase_stats() const {
   void* mem = memory_.get();
-  SolverStats stats;
-  long value = 0;
-  CVodeGetNumSteps(mem, &value);
-  stats.steps = value;
-  CVodeGetNumRhsEvals(mem, &value);
-  stats.rhs_evaluations = value;
-  CVodeGetNumGEvals(mem, &value);
-  stats.root_evaluations = value;
-  CVodeGetNumErrTestFails(mem, &value);
-  stats.error_test_failures = value;
-  CVodeGetNumNonlinSolvConvFails(mem, &value);
-  stats.convergence_failures = value;
+  SolverStats stats = sundials::cvode_phase_stats(mem);
   if (linear_solver_) {
+    long value = 0;
     CVodeGetNumJacEvals(mem, &value);
     stats.jacobian_evaluations = value;
   }

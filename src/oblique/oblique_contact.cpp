@@ -223,22 +223,6 @@ void initial_mode(const NaturalModel& model, State& y, ContactMode& mode, double
   }
 }
 
-SolverStats phase_stats(void* memory) {
-  SolverStats stats;
-  long value = 0;
-  CVodeGetNumSteps(memory, &value);
-  stats.steps = value;
-  CVodeGetNumRhsEvals(memory, &value);
-  stats.rhs_evaluations = value;
-  CVodeGetNumGEvals(memory, &value);
-  stats.root_evaluations = value;
-  CVodeGetNumErrTestFails(memory, &value);
-  stats.error_test_failures = value;
-  CVodeGetNumNonlinSolvConvFails(memory, &value);
-  stats.convergence_failures = value;
-  return stats;
-}
-
 }  // namespace
 
 const char* tangential_name(TangentialKind kind) {
@@ -399,10 +383,10 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
     sundials::check_flag(CVodeGetRootInfo(mem, found.data()), "CVodeGetRootInfo");
     if (found[0] == 0 && !model.leaving_is_consistent(y, data.mode, data.sign)) {
       // Restarted in the same mode: the function, now just below 0, rises through it, which is no event.
-      result.stats += phase_stats(mem);
+      result.stats += sundials::cvode_phase_stats(mem);
       continue;
     }
-    result.stats += phase_stats(mem);
+    result.stats += sundials::cvode_phase_stats(mem);
     const double elapsed_s = (t - mode_start) * time_s;
     instant_switches = t - mode_start < 1e-9 ? instant_switches + 1 : 0;
     (data.mode == ContactMode::stick ? result.stick_time_s : result.slip_time_s) += elapsed_s;

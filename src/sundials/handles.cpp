@@ -57,4 +57,20 @@ void CvodeMemory::record_error(int code, const char* module, const char* functio
   }
 }
 
+SolverStats cvode_phase_stats(void* cvode_memory) {
+  SolverStats stats;
+  long value = 0;
+  CVodeGetNumSteps(cvode_memory, &value);
+  stats.steps = value;
+  CVodeGetNumRhsEvals(cvode_memory, &value);
+  stats.rhs_evaluations = value;
+  CVodeGetNumGEvals(cvode_memory, &value);
+  stats.root_evaluations = value;
+  CVodeGetNumErrTestFails(cvode_memory, &value);
+  stats.error_test_failures = value;
+  CVodeGetNumNonlinSolvConvFails(cvode_memory, &value);
+  stats.convergence_failures = value;
+  return stats;
+}
+
 }  // namespace restitution::sundials

@@ -12,6 +12,8 @@
 #include <memory>
 #include <string>
 
+#include "restitution/solve_types.hpp"
+
 namespace restitution::sundials {
 
 // Throws NumericalFailure naming the SUNDIALS call when flag < 0.
@@ -72,5 +74,9 @@ class CvodeMemory {
   void* memory_ = nullptr;
   std::string last_error_;
 };
+
+// CVODE's counters since its last (re)initialisation: steps, right-hand sides, root functions, error-test and
+// nonlinear convergence failures (the linear solver's are the caller's to add).
+[[nodiscard]] SolverStats cvode_phase_stats(void* cvode_memory);
 
 }  // namespace restitution::sundials
