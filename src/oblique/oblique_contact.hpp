@@ -153,6 +153,10 @@ struct ObliqueResult {
   // over the contact (1: none): near 0 the contact nearly switched, and the outcome is ill-conditioned
   // (oblique_accuracy.hpp).
   double closest_switch_approach = 1.0;
+  // How far the mode sequence is from changing: the smallest of the switch function's interior minima of
+  // distance (seen at step ends, as above, without the near-miss criterion) and of the largest distance each
+  // phase that ended in a switch reached (a short phase nearly did not happen). Relative, 1 at most.
+  double switch_margin = 1.0;
   // LIGGGHTS's and YADE's rule (the damping added below the cap only): a slip ended where the sticking force
   // drives the contact straight back onto the cap, first at cap_sliding_time_s. The codes then alternate
   // capped and uncapped steps, a sliding mode the stick and slip here do not model, and the outputs can be

@@ -147,6 +147,8 @@ Vector make_small_vector(sunindextype length, const Context& context) {
     Loops<3>::install(v->ops);
   } else if (length == 4) {  // the Sundman form's state (src/cvode/cvode_integrator.hpp)
     Loops<4>::install(v->ops);
+  } else if (length == 8) {  // the oblique contact's (src/oblique/oblique_contact.cpp)
+    Loops<8>::install(v->ops);
   } else {
     Loops<0>::install(v->ops);
   }
