@@ -3,7 +3,8 @@
 // impacts it reports are `restitution oblique --tangential liggghts_history`'s for the same material and
 // damping (gammat = gamman: damping factor 1; kt = 8 G*, the oblique command's default); the kt --target-et
 // finds, fed back into `restitution oblique`, gives the target at the reference angle; --tangential, a
-// frictionless line and a LIGGGHTS wall exit with status 2 naming why; the check deck stays head-on.
+// frictionless line and a LIGGGHTS wall exit with status 2 naming why; an impact sliding on the cap is
+// reported; the check deck stays head-on.
 #include <fmt/core.h>
 #include <gtest/gtest.h>
 
@@ -96,6 +97,27 @@ TEST(DemObliqueLiggghts, RefusesWhatItCannotModel) {
     EXPECT_NE(r.err.find(named), std::string::npos) << arguments << "\n" << r.err;
     EXPECT_TRUE(r.out.empty()) << arguments;
   }
+}
+
+// A = 1e-6 s: at 55° the pair's contact slides on the cap (LIGGGHTS alternates capped and uncapped steps),
+// which the solve does not model; the impact is printed flagged and warned about, as LAMMPS's ill-conditioned
+// ones, and 50° is not.
+TEST(DemObliqueLiggghts, ImpactsSlidingOnTheCapAreReported) {
+  const std::string arguments =
+      "dem --code liggghts " + kSteel + " --dissipative-constant 1e-6 --friction 0.3 --angles 50,55";
+  const auto r = run_cli(arguments + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto impacts = nlohmann::json::parse(r.out)["oblique"]["impacts"];
+  ASSERT_EQ(impacts.size(), 2U);
+  EXPECT_EQ(impacts[0]["conditioning"], "well-conditioned");
+  const std::string flagged = impacts[1]["conditioning"].get<std::string>();
+  EXPECT_EQ(flagged.rfind("not modelled: ", 0), 0U) << flagged;
+  EXPECT_NE(flagged.find("slides on the Coulomb cap"), std::string::npos) << flagged;
+  EXPECT_NE(r.err.find("warning: oblique impact at 55 deg, not modelled"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("at 50 deg"), std::string::npos) << r.err;
+  const auto text = run_cli(arguments);
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("  (not modelled: "), std::string::npos) << text.out;
 }
 
 // The check deck's oblique section is LAMMPS's: LIGGGHTS's deck holds the head-on collisions alone.

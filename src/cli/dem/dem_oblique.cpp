@@ -199,18 +199,21 @@ void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o) {
                      "x_gamma_t of --tangential: the tangential damping coefficient over the normal one "
                      "(default 1)");
   command
-      .add_option("--angles", o.angles_deg,
-                  "with --friction (lammps): the impact angles from the normal in degrees, in [0, 90), "
-                  "at which to report what the lines give oblique impacts (default 5,15,30,45,60,80)")
+      .add_option(
+          "--angles", o.angles_deg,
+          "with --friction (lammps, liggghts): the impact angles from the normal in degrees, in [0, 90), "
+          "at which to report what the lines give oblique impacts (default 5,15,30,45,60,80)")
       ->delimiter(',');
   command
       .add_option("--et-accuracy", o.et_accuracy,
-                  "the accuracy of e_t LAMMPS's steps per contact are reported for, in (0, 0.1]")
+                  "the accuracy of e_t the code's (LAMMPS's, LIGGGHTS's) steps per contact are reported for, "
+                  "in (0, 0.1]")
       ->capture_default_str();
-  command.add_option("--target-et", o.target_et,
-                     "with --reference-angle (lammps, --friction): find --tangential's parameter (k_t, or "
-                     "linear_nohistory's x_gamma_t) that gives this tangential restitution e_t at that "
-                     "angle, and print its line");
+  command.add_option(
+      "--target-et", o.target_et,
+      "with --reference-angle (lammps, liggghts; --friction): find --tangential's parameter (k_t, "
+      "or linear_nohistory's x_gamma_t; liggghts: kt) that gives this tangential restitution "
+      "e_t at that angle, and print its line");
   command.add_option("--reference-angle", o.reference_angle_deg,
                      "the impact angle in degrees from the normal at which --target-et holds, in (0, 90)");
 }
