@@ -38,7 +38,15 @@ TEST(DemTangential, PrintsTheChosenModelsLineAndItsObliqueOutputs) {
                "linear_nohistory --tangential-damping 0.5"},
         Choice{"mindlin --tangential-stiffness 5e10 --tangential-damping 0.25",
                "tangential mindlin 50000000000 0.25 0.3 ",
-               "mindlin --tangential-stiffness 5e10 --tangential-damping 0.25"}}) {
+               "mindlin --tangential-stiffness 5e10 --tangential-damping 0.25"},
+        // LAMMPS's incremental variants; NULL kept (the pair's 8 G*, also `oblique`'s default).
+        Choice{"mindlin_rescale", "tangential mindlin_rescale NULL 1 0.3 ",
+               "mindlin_rescale --tangential-damping 1"},
+        Choice{"mindlin/force --tangential-stiffness 5e10", "tangential mindlin/force 50000000000 1 0.3 ",
+               "mindlin/force --tangential-stiffness 5e10 --tangential-damping 1"},
+        Choice{"mindlin_rescale/force --tangential-damping 0.25",
+               "tangential mindlin_rescale/force NULL 0.25 0.3 ",
+               "mindlin_rescale/force --tangential-damping 0.25"}}) {
     const nlohmann::json dem =
         json_of("dem --code lammps " + kSteel + " --angles 20,45,70 --tangential " + c.options);
     const std::string line = dem.at("lines").at(1).get<std::string>();

@@ -30,7 +30,7 @@ double natural_scale(const TangentialInverseRequest& r) {
   const double mass = effective_mass_kg(r.geometry);
   const double time_s = physical_time_scale_s(r.normal.kind, r.normal.stiffness, mass, r.impact.normal_m_s);
   double scale = mass / (time_s * time_s);
-  if (r.tangential.kind == TangentialKind::mindlin) {
+  if (is_lammps_mindlin(r.tangential.kind)) {
     scale /= std::sqrt(effective_radius_m(r.geometry) * r.impact.normal_m_s * time_s);
   }
   return scale;

@@ -150,8 +150,10 @@ void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o) {
   command
       .add_option("--tangential", o.tangential,
                   "with --friction (lammps): LAMMPS's tangential model of the printed line, its oblique "
-                  "outputs and --target-et: linear_nohistory, linear_history or mindlin")
-      ->check(CLI::IsMember({"linear_nohistory", "linear_history", "mindlin"}))
+                  "outputs and --target-et: linear_nohistory, linear_history, mindlin, mindlin_rescale, "
+                  "mindlin/force or mindlin_rescale/force")
+      ->check(CLI::IsMember({"linear_nohistory", "linear_history", "mindlin", "mindlin_rescale",
+                             "mindlin/force", "mindlin_rescale/force"}))
       ->capture_default_str();
   command.add_option("--tangential-stiffness", o.tangential_stiffness,
                      "k_t of --tangential in N/m (mindlin: N/m^2, its stiffness is k_t a; default NULL, 8 G* "
