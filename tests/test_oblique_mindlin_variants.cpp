@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // LAMMPS's incremental Mindlin variants (mindlin_rescale, mindlin/force, mindlin_rescale/force) against what
 // is exact about them (docs/oblique.md): while the contact loads (a grows) the _rescale variants do nothing,
-// so each is its base model until maximal compression; and the elastic contact slides throughout from where
-// the slip's h stays below 0 to the end, ψ₁ = 4χ − (2/3)c with c the factor on μ F_n' in h at δ → 0: 1 for
-// mindlin, 3/2 for mindlin/force (no κ'/κ term: Maw, Barber & Fawcett's incremental −1 and 4χ − 1), 1/2 for
-// mindlin_rescale (κ'/κ + a'/a) and 1 for mindlin_rescale/force (a'/a). The gross-slip closed form, the
-// frictionless contact and the accuracy contract cover them with the other models (tests/test_oblique.cpp,
-// tests/test_oblique_accuracy.cpp), `dem --tangential` tests/test_dem_tangential.cpp.
+// so each is its base model until maximal compression (mindlin/force is not mindlin there: mindlin's -κξ
+// grows with κ at a fixed ξ, the incremental H' = -κ s does not); and the elastic contact slides throughout
+// from where the slip's h stays below 0 to the end, ψ₁ = 4χ − (2/3)c with c the factor on μ F_n' in h at δ →
+// 0: 1 for mindlin, 3/2 for mindlin/force (no κ'/κ term: Maw, Barber & Fawcett's incremental −1 and 4χ − 1),
+// 1/2 for mindlin_rescale (κ'/κ + a'/a) and 1 for mindlin_rescale/force (a'/a). The gross-slip closed form,
+// the frictionless contact and the accuracy contract cover them with the other models
+// (tests/test_oblique.cpp, tests/test_oblique_accuracy.cpp), `dem --tangential`
+// tests/test_dem_tangential.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
