@@ -155,6 +155,8 @@ NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& n
   if (tangential.kind == TangentialKind::mindlin || tangential.kind == TangentialKind::liggghts_history) {
     model.stiffness *= std::sqrt(effective_radius_m(geometry) * length_m);
   }
+  // YADE's Mindlin: ks = kso sqrt(δ), and sqrt(v T) of δ's natural length goes into κ_m.
+  if (tangential.kind == TangentialKind::yade_mindlin) model.stiffness *= std::sqrt(length_m);
   // The arm R - f δ: f = 0, 1/2 or 1.
   const auto overlap_fraction = [](TorqueArm arm) {
     return arm == TorqueArm::radius ? 0.0 : arm == TorqueArm::radius_minus_half_overlap ? 0.5 : 1.0;
@@ -247,25 +249,27 @@ const char* tangential_name(TangentialKind kind) {
       return "liggghts_history";
     case TangentialKind::yade_viscel:
       return "yade_viscel";
+    case TangentialKind::yade_mindlin:
+      return "yade_mindlin";
   }
   return "?";
 }
 
 const std::vector<std::string>& tangential_names() {
   static const std::vector<std::string> names{"linear_nohistory", "linear_history", "mindlin",
-                                              "liggghts_history", "yade_viscel"};
+                                              "liggghts_history", "yade_viscel",    "yade_mindlin"};
   return names;
 }
 
 TangentialKind tangential_from_name(const std::string& name) {
   for (const TangentialKind kind :
        {TangentialKind::linear_nohistory, TangentialKind::linear_history, TangentialKind::mindlin,
-        TangentialKind::liggghts_history, TangentialKind::yade_viscel}) {
+        TangentialKind::liggghts_history, TangentialKind::yade_viscel, TangentialKind::yade_mindlin}) {
     if (name == tangential_name(kind)) return kind;
   }
   throw InvalidInput(fmt::format(
-      "unknown tangential model '{}' (choose linear_nohistory, linear_history, mindlin, liggghts_history or "
-      "yade_viscel)",
+      "unknown tangential model '{}' (choose linear_nohistory, linear_history, mindlin, liggghts_history, "
+      "yade_viscel or yade_mindlin)",
       name));
 }
 
@@ -309,6 +313,8 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
       geometry.second ? geometry.second->radius_m * impact.spin_second_rad_s / speed : 0.0;
   const double slip0 = NaturalModel::slip_velocity(y);
   y[detail::kDisplacement] = slip0 * kStartTime;
+  // An incremental spring's ∫ sqrt(x) s dτ (oblique_model.hpp, history_growth).
+  if (model.incremental_history()) y[detail::kDisplacement] = slip0 * 2.0 / 3.0 * std::pow(kStartTime, 1.5);
   CallbackData data{&model, ContactMode::stick, 1.0, options.end};
   initial_mode(model, y, data.mode, data.sign);
 
@@ -349,7 +355,7 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
           "cap "
           "only, each mode drives it into the other there (the code alternates capped and uncapped steps), "
           "a limit not modelled yet; less tangential damping avoids it",
-          t * time_s, tangential.kind == TangentialKind::yade_viscel ? "YADE" : "LIGGGHTS"));
+          t * time_s, tangential.kind == TangentialKind::liggghts_history ? "LIGGGHTS" : "YADE"));
     }
     if (switches > options.max_switches) {
       throw NumericalFailure(fmt::format("the contact crossed the stick/slip boundary more than {} times",

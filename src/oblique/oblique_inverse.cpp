@@ -33,6 +33,7 @@ double natural_scale(const TangentialInverseRequest& r) {
   if (r.tangential.kind == TangentialKind::mindlin) {
     scale /= std::sqrt(effective_radius_m(r.geometry) * r.impact.normal_m_s * time_s);
   }
+  if (r.tangential.kind == TangentialKind::yade_mindlin) scale /= std::sqrt(r.impact.normal_m_s * time_s);
   return scale;
 }
 

@@ -73,7 +73,16 @@ struct NaturalModel {
   [[nodiscard]] bool has_history() const { return kind != TangentialKind::linear_nohistory; }
   // LIGGGHTS and YADE: the cap tests and caps the elastic force alone.
   [[nodiscard]] bool caps_elastic_force() const {
-    return kind == TangentialKind::liggghts_history || kind == TangentialKind::yade_viscel;
+    return kind == TangentialKind::liggghts_history || kind == TangentialKind::yade_viscel ||
+           kind == TangentialKind::yade_mindlin;
+  }
+  // YADE's Mindlin spring is incremental, F_e' = -κ_m sqrt(x) s with the tangent stiffness κ_m sqrt(x): the
+  // history then holds z = ∫ sqrt(x) s dτ (F_e = -κ_m z, κ_m constant), which a rescale to the cap sets as
+  // it does ξ. Any other spring is -κ ξ with ξ' = s.
+  [[nodiscard]] bool incremental_history() const { return kind == TangentialKind::yade_mindlin; }
+  // dz/dτ per unit slip, and the tangent stiffness per κ: sqrt(x) (incremental) or 1.
+  [[nodiscard]] double history_growth(double x) const {
+    return incremental_history() ? std::sqrt(std::max(x, 0.0)) : 1.0;
   }
   // κ = κ_m sqrt(x): LAMMPS's mindlin (k_t a) and LIGGGHTS's hertz/stiffness kt sqrt(R* δ).
   [[nodiscard]] bool stiffness_grows_with_overlap() const {
@@ -156,7 +165,8 @@ struct NaturalModel {
     dy[kOverlap] = v;
     const double inverse_r = inverse_distance(x);
     dy[kOverlapRate] = overlap_acceleration(y);
-    dy[kDisplacement] = mode == ContactMode::stick && has_history() ? contact_slip(y) : 0.0;
+    dy[kDisplacement] =
+        mode == ContactMode::stick && has_history() ? contact_slip(y) * history_growth(x) : 0.0;
     dy[kTangential] = ft + v * y[kTangential] * inverse_r;
     dy[kSpinFirst] = (rotation_base[0] - rotation_slope[0] * x) * ft;
     dy[kSpinSecond] = (rotation_base[1] - rotation_slope[1] * x) * ft;
@@ -176,7 +186,7 @@ struct NaturalModel {
     if (!has_history()) return -sign * g * s - c;
     const double ds = slip_rate(y, sign * c);
     const double dgs = capped_damping_rate(x, v) * s + g * ds;
-    return cap_rate(y) + sign * (tangential_stiffness(x) * s + dgs) -
+    return cap_rate(y) + sign * (tangential_stiffness(x) * history_growth(x) * s + dgs) -
            stiffness_log_rate(x, v) * (c + sign * g * s);
   }
   // The size of the terms of the switch function out of `mode`, against which its distance from 0 is measured
@@ -190,7 +200,7 @@ struct NaturalModel {
     const double g = capped_damping(x);
     if (!has_history()) return g * std::abs(s) + c;
     const double ds = slip_rate(y, sign * c);
-    return std::abs(cap_rate(y)) + tangential_stiffness(x) * std::abs(s) +
+    return std::abs(cap_rate(y)) + tangential_stiffness(x) * history_growth(x) * std::abs(s) +
            std::abs(capped_damping_rate(x, v) * s) + std::abs(g * ds) +
            std::abs(stiffness_log_rate(x, v)) * (c + g * std::abs(s));
   }
