@@ -22,8 +22,9 @@ using namespace restitution::test_support::oblique_steel;  // kRadius, kMass, kH
 constexpr double kShearCoefficient = 1e10;  // kso [N/m^{3/2}]: ks = kso sqrt(δ)
 
 ObliqueGeometry wall() {
+  // YADE's arms: the torque to the contact point R - δ, the spins' velocity at R.
   return {solid_sphere(kRadius, kMass), std::nullopt, TorqueArm::radius_minus_overlap,
-          /*fixed_normal=*/false, TorqueArm::radius_minus_overlap};
+          /*fixed_normal=*/false, TorqueArm::radius};
 }
 
 ObliqueGeometry fixed_pair() {

@@ -156,7 +156,13 @@ NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& n
     model.stiffness *= std::sqrt(effective_radius_m(geometry) * length_m);
   }
   // YADE's Mindlin: ks = kso sqrt(δ), and sqrt(v T) of δ's natural length goes into κ_m.
-  if (tangential.kind == TangentialKind::yade_mindlin) model.stiffness *= std::sqrt(length_m);
+  if (tangential.kind == TangentialKind::yade_mindlin) {
+    model.stiffness *= std::sqrt(length_m);
+    // The wall's radius is the sphere's (Ig2_Wall_Sphere_ScGeom's refR1).
+    const double radii =
+        geometry.first.radius_m + (geometry.second ? geometry.second->radius_m : geometry.first.radius_m);
+    model.velocity_gain_distance = radii / length_m;
+  }
   // The arm R - f δ: f = 0, 1/2 or 1.
   const auto overlap_fraction = [](TorqueArm arm) {
     return arm == TorqueArm::radius ? 0.0 : arm == TorqueArm::radius_minus_half_overlap ? 0.5 : 1.0;

@@ -53,6 +53,14 @@ struct NaturalModel {
   // x, and in polar form δ'' = -f_n - u²/r, u' = f_t + δ' u/r, θ' = u/r); 0 for a wall or a fixed normal.
   double centre_distance = 0.0;
   bool cap_of_signed_force = false;  // true at the delayed-recovery end (see cap)
+  // YADE's Mindlin takes the centres' relative velocity times (R1 + R2)/(R1 + R2 - δ) into the contact-point
+  // velocity (ScGeom::getIncidentVel, avoiding granular ratcheting; a wall's radius counts as the sphere's):
+  // R1 + R2 in natural lengths, 0 for no such gain (the other models).
+  double velocity_gain_distance = 0.0;
+
+  [[nodiscard]] double translation_gain(double x) const {
+    return velocity_gain_distance > 0.0 ? velocity_gain_distance / (velocity_gain_distance - x) : 1.0;
+  }
 
   [[nodiscard]] double inverse_distance(double x) const {
     return centre_distance > 0.0 ? 1.0 / (centre_distance - x) : 0.0;
@@ -66,8 +74,13 @@ struct NaturalModel {
   [[nodiscard]] double slip_rate(const State& y, double force) const {
     const double x = y[kOverlap];
     const double v = y[kOverlapRate];
-    return force * mobility(x) + v * y[kTangential] * inverse_distance(x) -
-           v * (contact_arm_slope[0] * y[kSpinFirst] + contact_arm_slope[1] * y[kSpinSecond]);
+    const double rate = force * mobility(x) + v * y[kTangential] * inverse_distance(x) -
+                        v * (contact_arm_slope[0] * y[kSpinFirst] + contact_arm_slope[1] * y[kSpinSecond]);
+    if (!(velocity_gain_distance > 0.0)) return rate;
+    // d(α u)/dτ - u' = (α - 1) u' + α' u, α' = α δ'/(D - x).
+    const double gain = translation_gain(x);
+    return rate + (gain - 1.0) * (force + v * y[kTangential] * inverse_distance(x)) +
+           gain * v * y[kTangential] / (velocity_gain_distance - x);
   }
 
   [[nodiscard]] bool has_history() const { return kind != TangentialKind::linear_nohistory; }
@@ -140,7 +153,7 @@ struct NaturalModel {
   // The contact-point velocity the code uses during the contact (LIGGGHTS's arm R_i - δ/2).
   [[nodiscard]] double contact_slip(const State& y) const {
     const double x = y[kOverlap];
-    return y[kTangential] + (1.0 - contact_arm_slope[0] * x) * y[kSpinFirst] +
+    return y[kTangential] * translation_gain(x) + (1.0 - contact_arm_slope[0] * x) * y[kSpinFirst] +
            (1.0 - contact_arm_slope[1] * x) * y[kSpinSecond];
   }
   // The force below the cap: -κξ - g s (history) or -g s.
