@@ -13,6 +13,9 @@
 // two spheres, R - δ for the wall) and the contact-point velocity of getIncidentVel's ratcheting-free form:
 // the spins at the arm R, the centres' relative velocity times (R1 + R2)/(R1 + R2 - δ), a wall's radius
 // counting as the sphere's (without that gain e_t was up to 2.2e-3 off where the contact sticks).
+// ObliqueYadeMindlinDemLines runs the lines `dem --code yade --friction` prints (steel, glass, steel at ε =
+// 0.98) as printed, at the printed timestep and a tenth of it, against the printed outputs; it also measures
+// YADE's e_t error coefficient C (N |Δe_t| <= C, dem_oblique.cpp's yade_et_error_coefficient).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,6 +24,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -70,18 +75,32 @@ Mindlin mindlin_of(double effective_mass_kg) {
   return m;
 }
 
-std::vector<Outcome> run_yade(const std::string& program, bool wall, double spin, double dt,
+// The lines as `restitution dem --code yade` prints them: FrictMat, Ip2 and Law2.
+std::vector<std::string> printed_style_lines() {
+  std::ostringstream material;
+  material.precision(17);
+  material << "O.materials.append(FrictMat(young=" << kYoung << ", poisson=" << kPoisson
+           << ", density=" << kDensity << ", frictionAngle=" << std::atan(kFriction) << "))";
+  std::ostringstream ip2;
+  ip2.precision(17);
+  ip2 << "Ip2_FrictMat_FrictMat_MindlinPhys(betan=MatchMaker(algo='val', val=" << kBetan << "))";
+  return {material.str(), ip2.str(), "Law2_ScGeom_MindlinPhys_Mindlin()"};
+}
+
+// One collision per angle at 1 m/s, 10 mm apart: body 2k+1 onto body 2k at rest, or body k onto a
+// utils.wall at z = 0; the lines pasted as they are.
+std::vector<Outcome> run_yade(const std::string& program, const std::vector<std::string>& yade_lines,
+                              const std::vector<double>& angles_deg, bool wall, double spin, double dt,
                               double run_time) {
   TempFolder folder;
   const auto steps = static_cast<long>(std::ceil(run_time / dt));
   std::ostringstream script;
   script.precision(17);
   script << "import math\nR, SPIN = " << kRadius << ", " << spin << "\nANGLES = [";
-  for (const double a : kAnglesDeg) script << a << ", ";
+  for (const double a : angles_deg) script << a << ", ";
   script << "]\nWALL = " << (wall ? "True" : "False") << "\n"
-         << "mat = O.materials.append(FrictMat(young=" << kYoung << ", poisson=" << kPoisson
-         << ", density=" << kDensity << ", frictionAngle=math.atan(" << kFriction << ")))\n"
-         << "BETAN = " << kBetan << "\n"
+         << "mat = " << yade_lines.at(0) << "\nIP2 = " << yade_lines.at(1) << "\nLAW2 = " << yade_lines.at(2)
+         << "\n"
          << R"(moving = []
 for i, a in enumerate(ANGLES):
     x = -0.04 + 0.01 * i
@@ -97,8 +116,7 @@ O.engines = [
     ForceResetter(),
     InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),
     InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
-                    [Ip2_FrictMat_FrictMat_MindlinPhys(betan=MatchMaker(algo='val', val=BETAN))],
-                    [Law2_ScGeom_MindlinPhys_Mindlin()]),
+                    [IP2], [LAW2]),
     NewtonIntegrator(damping=0, gravity=(0, 0, 0)),
 ]
 )"
@@ -115,7 +133,7 @@ O.engines = [
   const std::string command =
       program + " -n -x " + (folder.path / "oblique.py").string() + " > " + output_path + " 2>&1";
   EXPECT_EQ(std::system(command.c_str()), 0) << command << "\n" << slurp(output_path);
-  std::vector<Outcome> out(kAnglesDeg.size());
+  std::vector<Outcome> out(angles_deg.size());
   std::size_t read = 0;
   std::istringstream lines(slurp(output_path));
   for (std::string line; std::getline(lines, line);) {
@@ -125,12 +143,12 @@ O.engines = [
     std::array<double, 4> v{};  // Δvx, Δvz, ω_y of the moving sphere and of the one at rest
     row >> i >> v[0] >> v[1] >> v[2] >> v[3];
     const auto [dvx, dvz, wy, wy_rest] = v;
-    const double s0 = impact_at(kAnglesDeg.at(i), spin).tangential_m_s + kRadius * spin;
+    const double s0 = impact_at(angles_deg.at(i), spin).tangential_m_s + kRadius * spin;
     out.at(i) = {-(dvx - kRadius * wy - kRadius * wy_rest) / s0,
                  std::atan2(dvx, dvz) * 180.0 / std::numbers::pi, -wy, -wy_rest};
     ++read;
   }
-  EXPECT_EQ(read, kAnglesDeg.size()) << script.str() << "\n" << slurp(output_path);
+  EXPECT_EQ(read, angles_deg.size()) << script.str() << "\n" << slurp(output_path);
   return out;
 }
 
@@ -159,8 +177,9 @@ TEST_P(ObliqueYadeMindlin, ImpactsAgreeWithin1e4) {
     longest = std::max(longest, predicted.back().contact_time_s);
   }
   const double dt = shortest / kCoarseSteps;
-  const auto coarse = run_yade(program, wall, spin, dt, 1.1 * longest);
-  const auto fine = run_yade(program, wall, spin, dt / 10.0, 1.1 * longest);
+  const auto coarse = run_yade(program, printed_style_lines(), kAnglesDeg, wall, spin, dt, 1.1 * longest);
+  const auto fine =
+      run_yade(program, printed_style_lines(), kAnglesDeg, wall, spin, dt / 10.0, 1.1 * longest);
   const auto extrapolate = restitution::test_support::extrapolate_first_order;
   double largest = 0.0;
   for (std::size_t i = 0; i < kAnglesDeg.size(); ++i) {
@@ -188,5 +207,69 @@ TEST_P(ObliqueYadeMindlin, ImpactsAgreeWithin1e4) {
 
 INSTANTIATE_TEST_SUITE_P(Cases, ObliqueYadeMindlin,
                          ::testing::Combine(::testing::Bool(), ::testing::Values(0.0, 300.0)));
+
+// `restitution dem --code yade --friction 0.3 --yade-version 2023.02a` (the betan lines; steel, A = 1e-7 s)
+// prints the oblique impacts of its lines at --angles: Debian's YADE, given the lines as printed, agrees.
+// At the printed timestep (the steps per contact for e_t within 1e-4) YADE's own e_t is within 1e-4; at a
+// tenth of it, extrapolated, within 1e-5, and the rebound angle and the spins within 1e-4 relative.
+class ObliqueYadeMindlinDemLines : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ObliqueYadeMindlinDemLines, YadeGivesThePrintedObliqueOutputs) {
+  const std::string program = dem::yade_program();
+  ASSERT_FALSE(program.empty()) << "yade not found on PATH: scripts/setup installs Debian's yade";
+  const auto r = restitution::test_support::run_cli(
+      std::string(
+          "dem --code yade --radius 1e-3 --yade-version 2023.02a --angles 1,5,15,30,45,60,75,85 --json ") +
+      GetParam());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto out = nlohmann::json::parse(r.out);
+  std::vector<std::string> yade_lines;
+  for (const auto& line : out["lines"]) yade_lines.push_back(line.get<std::string>());
+  const auto& impacts = out["oblique"]["impacts"];
+  ASSERT_EQ(out["oblique"]["speed_m_s"].get<double>(), 1.0);
+  std::vector<double> angles;
+  double longest = 0.0;
+  double shortest = HUGE_VAL;
+  for (const auto& i : impacts) {
+    angles.push_back(i["angle_deg"].get<double>());
+    longest = std::max(longest, i["contact_time_s"].get<double>());
+    shortest = std::min(shortest, i["contact_time_s"].get<double>());
+  }
+  const double dt = out["oblique"]["yade_steps"]["timestep_s"].get<double>();
+  const double accuracy = out["oblique"]["yade_steps"]["et_accuracy"].get<double>();
+  const auto coarse = run_yade(program, yade_lines, angles, false, 0.0, dt, 1.1 * longest);
+  const auto fine = run_yade(program, yade_lines, angles, false, 0.0, dt / 10.0, 1.1 * longest);
+  const auto extrapolate = restitution::test_support::extrapolate_first_order;
+  double largest_scaled_error = 0.0;  // N |Δe_t| at N = shortest contact / dt steps per contact
+  for (std::size_t i = 0; i < angles.size(); ++i) {
+    const auto& p = impacts[i];
+    const double et = p["tangential_restitution"].get<double>();
+    const std::string where = "at " + std::to_string(angles[i]) + " deg";
+    EXPECT_NEAR(coarse[i].et, et, accuracy) << where << ", at the printed timestep";
+    largest_scaled_error = std::max(largest_scaled_error, std::abs(coarse[i].et - et) * shortest / dt);
+    EXPECT_NEAR(extrapolate(coarse[i].et, fine[i].et), et, 1e-5) << where;
+    const double rebound = p["rebound_angle_deg"].get<double>();
+    EXPECT_NEAR(extrapolate(coarse[i].rebound_deg, fine[i].rebound_deg), rebound,
+                1e-4 * std::abs(rebound) + 1e-5)
+        << where;
+    const double spin = p["spin_rad_s"].get<double>();
+    EXPECT_NEAR(extrapolate(coarse[i].spin, fine[i].spin), spin, 1e-4 * std::abs(spin) + 1e-5 / kRadius)
+        << where;
+    const double spin2 = p["spin2_rad_s"].get<double>();
+    EXPECT_NEAR(extrapolate(coarse[i].spin2, fine[i].spin2), spin2, 1e-4 * std::abs(spin2) + 1e-5 / kRadius)
+        << where;
+  }
+  std::cout << "largest N |e_t(N) - e_t| at the printed timestep: " << largest_scaled_error << "\n";
+}
+
+// Steel at A = 1e-7 s (ε = 0.914), glass at ε = 0.7 and μ = 0.5, steel at ε = 0.98 and μ = 0.1.
+INSTANTIATE_TEST_SUITE_P(
+    Materials, ObliqueYadeMindlinDemLines,
+    ::testing::Values("--young-modulus 2e11 --poisson-ratio 0.3 --density 7800 --dissipative-constant 1e-7 "
+                      "--friction 0.3",
+                      "--young-modulus 6e10 --poisson-ratio 0.25 --density 2500 --eps 0.7 --velocity 1 "
+                      "--friction 0.5",
+                      "--young-modulus 2e11 --poisson-ratio 0.3 --density 7800 --eps 0.98 --velocity 1 "
+                      "--friction 0.1"));
 
 }  // namespace

@@ -161,12 +161,13 @@ void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o) {
                      "(default 1)");
   command
       .add_option("--angles", o.angles_deg,
-                  "with --friction (lammps): the impact angles from the normal in degrees, in [0, 90), "
+                  "with --friction (lammps; yade's 2023.02a lines): the impact angles from the normal in "
+                  "degrees, in [0, 90), "
                   "at which to report what the lines give oblique impacts (default 5,15,30,45,60,80)")
       ->delimiter(',');
   command
       .add_option("--et-accuracy", o.et_accuracy,
-                  "the accuracy of e_t LAMMPS's steps per contact are reported for, in (0, 0.1]")
+                  "the accuracy of e_t LAMMPS's (YADE's) steps per contact are reported for, in (0, 0.1]")
       ->capture_default_str();
   command.add_option("--target-et", o.target_et,
                      "with --reference-angle (lammps, --friction): find --tangential's parameter (k_t, or "
@@ -174,6 +175,14 @@ void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o) {
                      "angle, and print its line");
   command.add_option("--reference-angle", o.reference_angle_deg,
                      "the impact angle in degrees from the normal at which --target-et holds, in (0, 90)");
+}
+
+double yade_et_error_coefficient() {
+  // Measured 2026-11-27 with Debian's YADE 2023.02a on the betan lines dem prints (two 1 mm spheres, eight
+  // angles 1°-85°, tests/dem/oblique_yade_mindlin.cpp): the largest N |e_t(N) - e_t| at dt = t_c/N, t_c the
+  // shortest contact, first order in dt: 2.31 for steel (A = 1e-7 s, ε = 0.914, μ = 0.3), 2.61 for glass
+  // (E = 6e10 Pa, ν = 0.25, ε = 0.7, μ = 0.5), 1.41 for steel at ε = 0.98, μ = 0.1; taken as 3.
+  return 3.0;
 }
 
 double lammps_et_error_coefficient(TangentialKind /*kind: the same bound for each so far*/) {
@@ -247,7 +256,12 @@ void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double
 
 bool wants_oblique(const DemObliqueOptions& o, dem::Code code, double friction) {
   const bool asked = !o.angles_deg.empty() || o.target_et || o.reference_angle_deg || tangential_chosen(o);
-  if (code != dem::Code::lammps) {
+  // YADE's lines give their impacts at --angles; the inverse and the tangential choice are LAMMPS's.
+  const bool lammps_only = o.target_et || o.reference_angle_deg || tangential_chosen(o);
+  if (code == dem::Code::yade && lammps_only) {
+    throw InvalidInput("--target-et, --reference-angle and --tangential are for --code lammps");
+  }
+  if (code != dem::Code::lammps && code != dem::Code::yade) {
     if (asked) {
       throw InvalidInput(
           "--angles, --target-et, --reference-angle and --tangential are for --code lammps (the other codes' "
@@ -321,18 +335,63 @@ DemOblique wall_oblique(const dem::Deck& deck, const dem::Pair& contact, const D
   return complete(r, line, words, o);
 }
 
+bool yade_lines_modelled(const dem::Deck& deck) {
+  return std::any_of(deck.parameters.begin(), deck.parameters.end(),
+                     [](const dem::Parameter& p) { return p.name == "betan"; });
+}
+
+DemOblique yade_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
+                             double speed_m_s, double tolerance) {
+  if (!yade_lines_modelled(deck)) {
+    throw InvalidInput(
+        "--angles: the oblique impacts of YADE 2024.02a's (en, vn) lines are not modelled; --yade-version "
+        "2023.02a prints the betan lines whose impacts are");
+  }
+  DemOblique r;
+  r.code = dem::Code::yade;
+  r.tangential_words = "Law2_ScGeom_MindlinPhys_Mindlin, betas = betan";
+  // Ip2_FrictMat_FrictMat_MindlinPhys::go for one material: E* = Y/(2(1 - ν²)), G = Y/(2(1 + ν)), R* from
+  // the radii, kno = (4/3) E* sqrt(R*), kso = 2 sqrt(4 R*) G/(2 - ν); Law2: cn = 2 betan sqrt(m* kn), kn =
+  // (3/2) kno sqrt(δ), and cs = 2 betas sqrt(m* ks), ks = kso sqrt(δ), so cs/cn = sqrt(kso/(1.5 kno)).
+  const double young = deck.parameter("young");
+  const double nu = deck.parameter("poisson");
+  const double betan = deck.parameter("betan");
+  const double r_star = pair.radius1_m * pair.radius2_m / (pair.radius1_m + pair.radius2_m);
+  const double kno = 4.0 / 3.0 * young / (2.0 * (1.0 - nu * nu)) * std::sqrt(r_star);
+  const double kso = 2.0 * std::sqrt(4.0 * r_star) * young / (2.0 * (1.0 + nu)) / (2.0 - nu);
+  r.geometry.first = solid_sphere(pair.radius1_m, pair.mass1_kg);
+  r.geometry.second = solid_sphere(pair.radius2_m, pair.mass2_kg);
+  r.geometry.torque_arm = TorqueArm::radius_minus_half_overlap;  // to ScGeom's contactPoint
+  r.geometry.contact_point_arm = TorqueArm::radius;              // getIncidentVel: the spins at R
+  r.normal = {LawKind::tsuji_hertz, kno, 2.0 * betan * std::sqrt(1.5 * effective_mass_kg(r.geometry) * kno)};
+  r.tangential = {TangentialKind::yade_mindlin, kso, std::sqrt(kso / (1.5 * kno)),
+                  std::tan(deck.parameter("frictionAngle"))};
+  r.options.end = deck.end;
+  r.speed_m_s = speed_m_s;
+  r.tolerance = std::clamp(tolerance, kSmallestObliqueTolerance, kLoosestObliqueTolerance);
+  // No inverse (refused by wants_oblique), so the words of a LAMMPS line are not needed.
+  r = complete(r, "", TangentialWords{}, o);
+  r.error_coefficient = yade_et_error_coefficient();
+  r.steps_per_contact = std::ceil(r.error_coefficient / r.et_accuracy);
+  double shortest = HUGE_VAL;
+  for (const auto& i : r.impacts) shortest = std::min(shortest, i.result.contact_time_s);
+  r.timestep_s = shortest / r.steps_per_contact;
+  return r;
+}
+
 void print_oblique_text(const DemOblique& r, const char* c) {
   fmt::print(
       "{} oblique impacts these lines give at {:g} m/s (tangential {}; e_t = -s'/s at the contact point, "
       "eps and e_t within {:g}):\n",
       c, r.speed_m_s, r.tangential_words, r.tolerance);
   print_impacts(r, r.impacts, c);
+  const char* code = r.code == dem::Code::yade ? "YADE" : "LAMMPS";
   fmt::print(
-      "{} LAMMPS decides stick or slip once per step and is first order in dt: e_t within {:g} needs {:g} "
-      "steps per contact (|error| <= {:g}/N, a bound over Debian's LAMMPS measured; docs/dem.md), timestep "
+      "{} {} decides stick or slip once per step and is first order in dt: e_t within {:g} needs {:g} "
+      "steps per contact (|error| <= {:g}/N, a bound over Debian's {} measured; docs/dem.md), timestep "
       "<= "
       "{:.4g} s for the shortest contact here\n",
-      c, r.et_accuracy, r.steps_per_contact, r.error_coefficient, r.timestep_s);
+      c, code, r.et_accuracy, r.steps_per_contact, r.error_coefficient, code, r.timestep_s);
   if (!r.inverse) return;
   fmt::print(
       "{} for e_t = {:g} at {:g} deg: {} = {:.10g} (e_t there {:.10f}; reachable by this parameter: [{:.6g}, "
@@ -353,7 +412,7 @@ void write_oblique_json(JsonWriter& json, const DemOblique& r) {
   json.field("speed_m_s", r.speed_m_s).field("tolerance", r.tolerance);
   json.key("impacts");
   write_impacts(json, r, r.impacts);
-  json.key("lammps_steps").begin_object();
+  json.key(r.code == dem::Code::yade ? "yade_steps" : "lammps_steps").begin_object();
   json.field("et_accuracy", r.et_accuracy).field("error_coefficient", r.error_coefficient);
   json.field("steps_per_contact", r.steps_per_contact).field("timestep_s", r.timestep_s).end_object();
   if (r.inverse) {
