@@ -88,4 +88,13 @@ TEST(ObliqueYadeMindlinCli, WhatYadesLinesCannotModelExits2) {
   EXPECT_FALSE(nlohmann::json::parse(plain.out).contains("oblique"));
 }
 
+// `restitution oblique` models viscoelastic Hertz; YADE's Mindlin comes with the Tsuji force.
+TEST(ObliqueYadeMindlinCli, ObliqueCommandRefusesItNamingWhy) {
+  const auto r = run_cli(
+      "oblique --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --dissipative-constant "
+      "1e-7 --friction 0.3 --tangential yade_mindlin --angle 10");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("Tsuji"), std::string::npos) << r.err;
+}
+
 }  // namespace
