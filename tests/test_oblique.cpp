@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -19,6 +20,11 @@ using namespace restitution;
 using namespace restitution::oblique;
 
 using namespace restitution::test_support::oblique_steel;  // kRadius, kMass, kHertzStiffness, kHertzDamping
+
+// LAMMPS's tangential models (pair_granular.cpp:56-59).
+constexpr std::array kLammpsModels{TangentialKind::linear_nohistory, TangentialKind::linear_history,
+                                   TangentialKind::mindlin,          TangentialKind::mindlin_rescale,
+                                   TangentialKind::mindlin_force,    TangentialKind::mindlin_rescale_force};
 
 ObliqueGeometry wall_geometry() {
   return {solid_sphere(kRadius, kMass), std::nullopt, TorqueArm::radius};
@@ -74,12 +80,12 @@ void expect_gross_sliding(const ObliqueResult& r, const ImpactVelocity& v, const
 TEST(ObliqueGrossSliding, WallChangesSlipByTheClosedFormForEveryModelAndLaw) {
   const double mu = 0.1;
   for (const NormalCase& n : normal_cases()) {
-    for (const TangentialKind kind :
-         {TangentialKind::linear_nohistory, TangentialKind::linear_history, TangentialKind::mindlin}) {
+    for (const TangentialKind kind : kLammpsModels) {
       // Grazing and stiff enough that the slip starts at once and never stops (mindlin starts sliding where
-      // κ_m|s| > μ in natural units, Maw et al.'s ψ); linear_nohistory needs its viscous force beyond the
+      // κ_m|s| > μ in natural units, Maw et al.'s ψ; elastic, mindlin/force slides throughout only from
+      // ψ₁ = 4χ − 1, beyond what 1e10 N/m² gives here); linear_nohistory needs its viscous force beyond the
       // cap.
-      const double stiffness = kind == TangentialKind::mindlin ? 1e10 : 2e6;
+      const double stiffness = kind == TangentialKind::mindlin ? 1e10 : is_lammps_mindlin(kind) ? 1e11 : 2e6;
       const double damping_factor = kind == TangentialKind::linear_nohistory ? 1e4 : 0.5;
       const TangentialForce t{kind, stiffness, damping_factor, mu};
       const ImpactVelocity v = at_angle(80.0);
@@ -89,7 +95,7 @@ TEST(ObliqueGrossSliding, WallChangesSlipByTheClosedFormForEveryModelAndLaw) {
       if (kind == TangentialKind::linear_nohistory && n.normal.damping == 0.0) continue;  // no viscous force
       // mindlin on the dash-pot sticks first (its stiffness grows from 0 under a cap that does not: LAMMPS
       // sticks there too, tests/test_oblique_accuracy.cpp): no slide throughout.
-      if (kind == TangentialKind::mindlin && n.normal.kind == LawKind::linear_dashpot) continue;
+      if (is_lammps_mindlin(kind) && n.normal.kind == LawKind::linear_dashpot) continue;
       const ObliqueResult r = solve_oblique(wall_geometry(), n.normal, t, v, options);
       expect_gross_sliding(r, v, wall_geometry(), mu, std::string(n.name) + " / " + tangential_name(kind));
     }
@@ -156,8 +162,7 @@ TEST(ObliqueLinearSpring, StickingLimitIsTheDampedOscillatorOverTheDashpotContac
 }
 
 TEST(ObliqueFrictionless, LeavesTangentialVelocityAndSpinUnchanged) {
-  for (const TangentialKind kind :
-       {TangentialKind::linear_nohistory, TangentialKind::linear_history, TangentialKind::mindlin}) {
+  for (const TangentialKind kind : kLammpsModels) {
     ImpactVelocity v = at_angle(30.0);
     v.spin_first_rad_s = 123.0;
     const NormalForce n{LawKind::viscoelastic_hertz, kHertzStiffness, kHertzDamping};
@@ -247,10 +252,10 @@ TEST(ObliqueNames, RoundTripAndRefuseUnknown) {
   for (const std::string& name : tangential_names())
     EXPECT_EQ(tangential_name(tangential_from_name(name)), name);
   try {
-    tangential_from_name("mindlin_rescale");
+    tangential_from_name("mindlin/rescale");  // LAMMPS spells it mindlin_rescale
     FAIL() << "accepted an unsupported model";
   } catch (const InvalidInput& e) {
-    EXPECT_NE(std::string(e.what()).find("mindlin_rescale"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("mindlin/rescale"), std::string::npos);
   }
 }
 

@@ -207,7 +207,9 @@ TEST(ObliqueAccuracy, ACheckThatMissesTheToleranceIsDecidedByAFinerSolve) {
 }
 
 TEST(ObliqueAccuracy, OtherModelsWithinTheToleranceOfATightSolve) {
-  for (const TangentialKind kind : {TangentialKind::mindlin, TangentialKind::linear_nohistory}) {
+  for (const TangentialKind kind :
+       {TangentialKind::mindlin, TangentialKind::linear_nohistory, TangentialKind::mindlin_rescale,
+        TangentialKind::mindlin_force, TangentialKind::mindlin_rescale_force}) {
     for (const bool lammps_pair : {false, true}) {
       for (const double angle : {2.0, 20.0, 45.0, 80.0}) {
         Case c{angle, 300.0, lammps_pair, 0.5};
@@ -218,8 +220,8 @@ TEST(ObliqueAccuracy, OtherModelsWithinTheToleranceOfATightSolve) {
         }
         const ImpactVelocity v = impact_of(c);
         // mindlin: LAMMPS's NULL for steel, 8 G* = 8 E/(4 (2 - ν)(1 + ν)) at E = 2e11 Pa, ν = 0.3.
-        const TangentialForce t{kind, kind == TangentialKind::mindlin ? 2e11 / (2.0 - 0.3) / 1.3 * 2.0 : 0.0,
-                                0.5, kFriction};
+        const TangentialForce t{kind, is_lammps_mindlin(kind) ? 2e11 / (2.0 - 0.3) / 1.3 * 2.0 : 0.0, 0.5,
+                                kFriction};
         ObliqueOptions tight;
         tight.relative_tolerance = 1e-14;
         const ObliqueResult truth = solve_oblique(g, kNormal, t, v, tight);

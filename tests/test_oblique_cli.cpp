@@ -82,7 +82,7 @@ TEST(ObliqueCli, BadInputExitsWithStatus2NamingTheProblem) {
       {" --tangential mindlin --friction 0.3 --angle 90", "--angle"},
       {" --tangential mindlin --friction 0.3", "--angle"},
       {" --tangential mindlin --friction -0.3 --angle 10", "friction"},
-      {" --tangential mindlin_rescale --friction 0.3 --angle 10", "--tangential"},
+      {" --tangential mindlin/rescale --friction 0.3 --angle 10", "--tangential"},
       {" --tangential mindlin --friction 0.3 --angle 10 --wall --radius2 2e-3", "--wall"},
       {" --tangential mindlin --friction 0.3 --angle 10 --speed 0", "--speed"},
   };

@@ -94,9 +94,11 @@ def oblique(*, material, friction, angle, spin=0.0, speed=1.0, tangential="linea
         Spin of the (first) sphere before contact [rad/s], positive adding to the slip; broadcast with angle.
     speed : float
         Impact speed [m/s]: v cos(angle) normal, v sin(angle) tangential.
-    tangential : {"linear_history", "linear_nohistory", "mindlin"}
+    tangential : {"linear_history", "linear_nohistory", "mindlin", "mindlin_rescale", "mindlin/force",
+                  "mindlin_rescale/force"}
     tangential_stiffness : float, optional
-        k_t [N/m] of linear_history (required there), [N/m^2] of mindlin (default LAMMPS's NULL, 8 G*).
+        k_t [N/m] of linear_history (required there), [N/m^2] of the mindlin models (default LAMMPS's NULL,
+        8 G*).
     tangential_damping : float
         LAMMPS's tangential damping factor, times the normal damping coefficient.
     wall : bool

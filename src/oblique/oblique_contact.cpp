@@ -152,7 +152,7 @@ NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& n
   // F_t = k_t ξ: in units of m* v/T per v T of displacement, κ = k_t T²/m*; mindlin's k_t sqrt(R* δ) adds
   // sqrt(R* v T) to κ_m.
   model.stiffness = tangential.stiffness * time_s * time_s / mass;
-  if (tangential.kind == TangentialKind::mindlin || tangential.kind == TangentialKind::liggghts_history) {
+  if (is_lammps_mindlin(tangential.kind) || tangential.kind == TangentialKind::liggghts_history) {
     model.stiffness *= std::sqrt(effective_radius_m(geometry) * length_m);
   }
   // YADE's Mindlin: ks = kso sqrt(δ), and sqrt(v T) of δ's natural length goes into κ_m.
@@ -255,6 +255,12 @@ const char* tangential_name(TangentialKind kind) {
       return "liggghts_history";
     case TangentialKind::yade_viscel:
       return "yade_viscel";
+    case TangentialKind::mindlin_rescale:
+      return "mindlin_rescale";
+    case TangentialKind::mindlin_force:
+      return "mindlin/force";
+    case TangentialKind::mindlin_rescale_force:
+      return "mindlin_rescale/force";
     case TangentialKind::yade_mindlin:
       return "yade_mindlin";
   }
@@ -262,21 +268,28 @@ const char* tangential_name(TangentialKind kind) {
 }
 
 const std::vector<std::string>& tangential_names() {
-  static const std::vector<std::string> names{"linear_nohistory", "linear_history", "mindlin",
-                                              "liggghts_history", "yade_viscel",    "yade_mindlin"};
+  static const std::vector<std::string> names{"linear_nohistory", "linear_history",        "mindlin",
+                                              "liggghts_history", "yade_viscel",           "mindlin_rescale",
+                                              "mindlin/force",    "mindlin_rescale/force", "yade_mindlin"};
   return names;
 }
 
 TangentialKind tangential_from_name(const std::string& name) {
   for (const TangentialKind kind :
        {TangentialKind::linear_nohistory, TangentialKind::linear_history, TangentialKind::mindlin,
-        TangentialKind::liggghts_history, TangentialKind::yade_viscel, TangentialKind::yade_mindlin}) {
+        TangentialKind::liggghts_history, TangentialKind::yade_viscel, TangentialKind::mindlin_rescale,
+        TangentialKind::mindlin_force, TangentialKind::mindlin_rescale_force, TangentialKind::yade_mindlin}) {
     if (name == tangential_name(kind)) return kind;
   }
   throw InvalidInput(fmt::format(
-      "unknown tangential model '{}' (choose linear_nohistory, linear_history, mindlin, liggghts_history, "
-      "yade_viscel or yade_mindlin)",
+      "unknown tangential model '{}' (choose linear_nohistory, linear_history, mindlin, mindlin_rescale, "
+      "mindlin/force, mindlin_rescale/force, liggghts_history, yade_viscel or yade_mindlin)",
       name));
+}
+
+bool is_lammps_mindlin(TangentialKind kind) {
+  return kind == TangentialKind::mindlin || kind == TangentialKind::mindlin_rescale ||
+         kind == TangentialKind::mindlin_force || kind == TangentialKind::mindlin_rescale_force;
 }
 
 const char* mode_name(ContactMode mode) {
@@ -318,9 +331,7 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
   y[detail::kSpinSecond] =
       geometry.second ? geometry.second->radius_m * impact.spin_second_rad_s / speed : 0.0;
   const double slip0 = NaturalModel::slip_velocity(y);
-  y[detail::kDisplacement] = slip0 * kStartTime;
-  // An incremental spring's ∫ sqrt(x) s dτ (oblique_model.hpp, history_growth).
-  if (model.incremental_history()) y[detail::kDisplacement] = slip0 * 2.0 / 3.0 * std::pow(kStartTime, 1.5);
+  y[detail::kDisplacement] = model.initial_history(y, slip0);
   CallbackData data{&model, ContactMode::stick, 1.0, options.end};
   initial_mode(model, y, data.mode, data.sign);
 

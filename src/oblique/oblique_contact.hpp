@@ -30,6 +30,11 @@ namespace restitution::oblique {
 //                    (pair_granular.cpp:495-533)
 //  mindlin:          linear_history with k_t multiplied by the contact radius a = sqrt(R* δ)
 //                    (pair_granular.cpp:431-433)
+//  mindlin_rescale:  mindlin whose ξ is scaled by a/a_old whenever a shrinks (unloading, lines 434-445, a_old
+//                    the last step's a in history[3], line 489-492): ξ' = s + (a'/a) ξ while a' < 0
+//  mindlin/force:    the history is the elastic force H itself, H' = -k_t a s (incremental, lines 482-487),
+//                    F_t = H - γ_t η s; at the cap H = C F/|F| + γ_t η s (lines 524-527)
+//  mindlin_rescale/force: mindlin/force with H scaled by a/a_old while a shrinks: H' = -k_t a s + (a'/a) H
 // where η = γ δ^b is the normal damping coefficient at the current overlap (damp_normal_prefactor,
 // pair_granular.cpp:368-373; `damp_tangential = tangential_coeffs[1]*damp_normal_prefactor`, line 427) and
 // the cap uses |F_n| (`Fncrit = fabs(Fntot)`, line 419). fix_wall_gran.cpp repeats these at lines 1256-1280.
@@ -74,11 +79,18 @@ enum class TangentialKind {
   mindlin,
   liggghts_history,
   yade_viscel,
+  mindlin_rescale,
+  mindlin_force,
+  mindlin_rescale_force,
   yade_mindlin
 };
 
-// "linear_nohistory" | "linear_history" | "mindlin" (LAMMPS's keywords) | "liggghts_history" |
-// "yade_viscel" | "yade_mindlin"
+// LAMMPS's Mindlin family (mindlin, mindlin_rescale, mindlin/force, mindlin_rescale/force): stiffness k_t·a,
+// k_t in N/m², `NULL` for 8 G*.
+bool is_lammps_mindlin(TangentialKind kind);
+
+// "linear_nohistory" | "linear_history" | "mindlin" | "mindlin_rescale" | "mindlin/force" |
+// "mindlin_rescale/force" (LAMMPS's keywords) | "liggghts_history" | "yade_viscel" | "yade_mindlin"
 const char* tangential_name(TangentialKind kind);
 // The inverse; throws InvalidInput naming the value and the choices.
 TangentialKind tangential_from_name(const std::string& name);
@@ -121,8 +133,8 @@ struct NormalForce {
 
 struct TangentialForce {
   TangentialKind kind = TangentialKind::linear_history;
-  // k_t: N/m for linear_history and yade_viscel (its ks); N/m² for mindlin and liggghts_history (their
-  // stiffness is k_t·sqrt(R* δ)); N/m^{3/2} for yade_mindlin (its kso: ks = kso sqrt(δ)); unused by
+  // k_t: N/m for linear_history and yade_viscel (its ks); N/m² for the mindlin family and liggghts_history
+  // (their stiffness is k_t·sqrt(R* δ)); N/m^{3/2} for yade_mindlin (its kso: ks = kso sqrt(δ)); unused by
   // linear_nohistory.
   double stiffness = 0.0;
   // γ_t (LAMMPS's `damping` of the tangential model, dimensionless): the tangential damping coefficient is

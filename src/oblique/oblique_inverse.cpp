@@ -30,7 +30,8 @@ double natural_scale(const TangentialInverseRequest& r) {
   const double mass = effective_mass_kg(r.geometry);
   const double time_s = physical_time_scale_s(r.normal.kind, r.normal.stiffness, mass, r.impact.normal_m_s);
   double scale = mass / (time_s * time_s);
-  if (r.tangential.kind == TangentialKind::mindlin) {
+  // mindlin's k_t (and its variants') and LIGGGHTS's kt are per sqrt(R* δ).
+  if (is_lammps_mindlin(r.tangential.kind) || r.tangential.kind == TangentialKind::liggghts_history) {
     scale /= std::sqrt(effective_radius_m(r.geometry) * r.impact.normal_m_s * time_s);
   }
   if (r.tangential.kind == TangentialKind::yade_mindlin) scale /= std::sqrt(r.impact.normal_m_s * time_s);

@@ -11,6 +11,13 @@
 //        h = C' + σ(κ s + (g s)') - (κ'/κ)(C + σ g s) < 0,
 //    so the contact sticks again where h crosses 0 upwards (for a constant cap without damping: where s = 0);
 //  * slip -> stick, linear_nohistory: where g|s| falls below C.
+// LAMMPS's mindlin/force and mindlin_rescale/force keep the elastic force H in the history instead of ξ
+// (H' = -κ s, F = H - g s, reset at the cap to σC + g s: pair_granular.cpp:482-487, 503-505, 524-527), and
+// the _rescale variants scale the history by a/a_old each step the contact radius a shrinks (lines 434-445),
+// a rate (a'/a) H = (x'/2x) H while x' < 0. In every history model the trial force after a capped step
+// changes at F' = -κ s - (g s)' + λ(σC + g s), λ the history's own relative rate at the cap (κ'/κ for ξ,
+// whose force -κξ grows with κ; plus a'/a while a _rescale variant unloads), so
+//        h = C' + σ(κ s + (g s)') - λ (C + σ g s).
 // LIGGGHTS's `tangential history` (tangential_model_history.h:147-217) and YADE's ViscElPhys
 // (computeForceTorqueViscEl) test and cap the elastic force -κξ alone, so its switches are these with g = 0
 // in the cap test, the rescale and h (its stick force is still -κξ - g s).
@@ -25,8 +32,8 @@ namespace restitution::oblique::detail {
 
 inline constexpr int kStateSize = 7;
 using State = std::array<double, kStateSize>;
-// δ, δ', tangential displacement ξ (history), u, R1 ω1, R2 ω2, each in natural units, and the angle θ the
-// line of centres has turned through.
+// δ, δ', the history (the tangential displacement ξ; the elastic force H for LAMMPS's /force variants), u,
+// R1 ω1, R2 ω2, each in natural units, and the angle θ the line of centres has turned through.
 enum Index {
   kOverlap = 0,
   kOverlapRate = 1,
@@ -41,7 +48,7 @@ struct NaturalModel {
   ContactLaw law;
   TangentialKind kind = TangentialKind::linear_history;
   double friction = 0.0;        // μ
-  double stiffness = 0.0;       // κ (linear_history), or κ_m with κ = κ_m sqrt(x) (mindlin)
+  double stiffness = 0.0;       // κ (linear_history), or κ_m with κ = κ_m sqrt(x) (the mindlin family)
   double damping_factor = 0.0;  // γ_t: g(x) = γ_t c_d w(x)
   // ρ_i(x) = rotation_base_i - rotation_slope_i x: d(R_i ω_i)/dτ = ρ_i f_t.
   std::array<double, 2> rotation_base{};
@@ -89,17 +96,44 @@ struct NaturalModel {
     return kind == TangentialKind::liggghts_history || kind == TangentialKind::yade_viscel ||
            kind == TangentialKind::yade_mindlin;
   }
-  // YADE's Mindlin spring is incremental, F_e' = -κ_m sqrt(x) s with the tangent stiffness κ_m sqrt(x): the
-  // history then holds z = ∫ sqrt(x) s dτ (F_e = -κ_m z, κ_m constant), which a rescale to the cap sets as
-  // it does ξ. Any other spring is -κ ξ with ξ' = s.
-  [[nodiscard]] bool incremental_history() const { return kind == TangentialKind::yade_mindlin; }
-  // dz/dτ per unit slip, and the tangent stiffness per κ: sqrt(x) (incremental) or 1.
-  [[nodiscard]] double history_growth(double x) const {
-    return incremental_history() ? std::sqrt(std::max(x, 0.0)) : 1.0;
-  }
-  // κ = κ_m sqrt(x): LAMMPS's mindlin (k_t a) and LIGGGHTS's hertz/stiffness kt sqrt(R* δ).
+  // κ = κ_m sqrt(x): LAMMPS's mindlin family (k_t a), LIGGGHTS's hertz/stiffness kt sqrt(R* δ) and YADE's
+  // Mindlin kso sqrt(δ).
   [[nodiscard]] bool stiffness_grows_with_overlap() const {
-    return kind == TangentialKind::mindlin || kind == TangentialKind::liggghts_history;
+    return is_lammps_mindlin(kind) || kind == TangentialKind::liggghts_history ||
+           kind == TangentialKind::yade_mindlin;
+  }
+  // LAMMPS's /force variants and YADE's Mindlin (`shearElastic -= ks (v_s dt)`): the history is the elastic
+  // force H (pair_granular.cpp:482-487).
+  [[nodiscard]] bool history_is_force() const {
+    return kind == TangentialKind::mindlin_force || kind == TangentialKind::mindlin_rescale_force ||
+           kind == TangentialKind::yade_mindlin;
+  }
+  // LAMMPS's _rescale variants: the history scaled by a/a_old where a shrinks (pair_granular.cpp:434-445).
+  [[nodiscard]] bool rescales_on_unloading() const {
+    return kind == TangentialKind::mindlin_rescale || kind == TangentialKind::mindlin_rescale_force;
+  }
+  // The rescale as a rate, a'/a = x'/(2x) while the contact radius shrinks (x' < 0), else 0.
+  [[nodiscard]] double rescale_rate(double x, double v) const {
+    return rescales_on_unloading() && v < 0.0 && x > 0.0 ? 0.5 * v / x : 0.0;
+  }
+  // λ: the history's relative rate at the cap that h carries (the header): κ'/κ for a displacement, whose
+  // force -κξ grows with κ, none for a force; plus the _rescale variants' a'/a.
+  [[nodiscard]] double history_log_rate(double x, double v) const {
+    if (!rescales_on_unloading()) return history_is_force() ? 0.0 : stiffness_log_rate(x, v);
+    return (history_is_force() ? 0.0 : stiffness_log_rate(x, v)) + rescale_rate(x, v);
+  }
+  // The history at first contact τ0 = x (x' = 1 there): ξ = s τ0, or H = -∫κ s = -(2/3) κ(x) x s.
+  [[nodiscard]] double initial_history(const State& y, double slip) const {
+    const double x = y[kOverlap];
+    return history_is_force() ? -2.0 / 3.0 * tangential_stiffness(x) * x * slip : slip * x;
+  }
+  // The rate of the history while sticking: ξ' = s (+ (a'/a) ξ), or H' = -κ s (+ (a'/a) H).
+  [[nodiscard]] double history_rate(const State& y) const {
+    const double s = contact_slip(y);
+    if (!history_is_force() && !rescales_on_unloading()) return s;
+    const double x = y[kOverlap];
+    const double rescale = rescale_rate(x, y[kOverlapRate]) * y[kDisplacement];
+    return (history_is_force() ? -tangential_stiffness(x) * s : s) + rescale;
   }
 
   [[nodiscard]] double normal_force(double x, double v) const { return -law_rhs::acceleration(law, x, v); }
@@ -156,15 +190,18 @@ struct NaturalModel {
     return y[kTangential] * translation_gain(x) + (1.0 - contact_arm_slope[0] * x) * y[kSpinFirst] +
            (1.0 - contact_arm_slope[1] * x) * y[kSpinSecond];
   }
-  // The force below the cap: -κξ - g s (history) or -g s.
+  // The force below the cap: -κξ - g s or H - g s (history) or -g s (no history).
   [[nodiscard]] double trial_force(const State& y) const {
     const double s = contact_slip(y);
     const double viscous = -tangential_damping(y[kOverlap]) * s;
+    if (history_is_force()) return viscous + y[kDisplacement];
     return has_history() ? viscous - tangential_stiffness(y[kOverlap]) * y[kDisplacement] : viscous;
   }
-  // The force the cap is tested against, whose direction a slip takes: the trial force, or LIGGGHTS's -κξ.
+  // The force the cap is tested against, whose direction a slip takes: the trial force, or LIGGGHTS's -κξ
+  // (YADE's Mindlin: its elastic force H).
   [[nodiscard]] double cap_test_force(const State& y) const {
-    return caps_elastic_force() ? -tangential_stiffness(y[kOverlap]) * y[kDisplacement] : trial_force(y);
+    if (!caps_elastic_force()) return trial_force(y);
+    return history_is_force() ? y[kDisplacement] : -tangential_stiffness(y[kOverlap]) * y[kDisplacement];
   }
   // The tangential force on the first body in a mode (sign: the direction of the capped force, ±1).
   [[nodiscard]] double tangential_force(const State& y, ContactMode mode, double sign) const {
@@ -178,8 +215,7 @@ struct NaturalModel {
     dy[kOverlap] = v;
     const double inverse_r = inverse_distance(x);
     dy[kOverlapRate] = overlap_acceleration(y);
-    dy[kDisplacement] =
-        mode == ContactMode::stick && has_history() ? contact_slip(y) * history_growth(x) : 0.0;
+    dy[kDisplacement] = mode == ContactMode::stick && has_history() ? history_rate(y) : 0.0;
     dy[kTangential] = ft + v * y[kTangential] * inverse_r;
     dy[kSpinFirst] = (rotation_base[0] - rotation_slope[0] * x) * ft;
     dy[kSpinSecond] = (rotation_base[1] - rotation_slope[1] * x) * ft;
@@ -199,8 +235,8 @@ struct NaturalModel {
     if (!has_history()) return -sign * g * s - c;
     const double ds = slip_rate(y, sign * c);
     const double dgs = capped_damping_rate(x, v) * s + g * ds;
-    return cap_rate(y) + sign * (tangential_stiffness(x) * history_growth(x) * s + dgs) -
-           stiffness_log_rate(x, v) * (c + sign * g * s);
+    return cap_rate(y) + sign * (tangential_stiffness(x) * s + dgs) -
+           history_log_rate(x, v) * (c + sign * g * s);
   }
   // The size of the terms of the switch function out of `mode`, against which its distance from 0 is measured
   // (a near miss: ObliqueResult::closest_switch_approach).
@@ -213,9 +249,9 @@ struct NaturalModel {
     const double g = capped_damping(x);
     if (!has_history()) return g * std::abs(s) + c;
     const double ds = slip_rate(y, sign * c);
-    return std::abs(cap_rate(y)) + tangential_stiffness(x) * history_growth(x) * std::abs(s) +
+    return std::abs(cap_rate(y)) + tangential_stiffness(x) * std::abs(s) +
            std::abs(capped_damping_rate(x, v) * s) + std::abs(g * ds) +
-           std::abs(stiffness_log_rate(x, v)) * (c + g * std::abs(s));
+           std::abs(history_log_rate(x, v)) * (c + g * std::abs(s));
   }
   // Whether leaving `mode` where its switch function crossed 0 agrees with the rate of the force against the
   // cap. Just after a switch the new mode's function starts at 0 and is tangent to it, so the integration
@@ -257,10 +293,11 @@ struct NaturalModel {
     }
     return switch_function(ahead, ContactMode::slip, sign) < switch_function(behind, ContactMode::slip, sign);
   }
-  // The displacement a history model carries from a slip into a stick: the capped force, -κξ - g s = σC
-  // (LIGGGHTS: -κξ = σC).
+  // The history a history model carries from a slip into a stick: the capped force, -κξ - g s = σC
+  // (LIGGGHTS: -κξ = σC; the /force variants: H = σC + g s, pair_granular.cpp:524-527).
   [[nodiscard]] double displacement_at_cap(const State& y, double sign) const {
     const double x = y[kOverlap];
+    if (history_is_force()) return sign * cap(x, y[kOverlapRate]) + capped_damping(x) * contact_slip(y);
     const double k = tangential_stiffness(x);
     if (!(k > 0.0)) return 0.0;
     return -(sign * cap(x, y[kOverlapRate]) + capped_damping(x) * contact_slip(y)) / k;

@@ -114,8 +114,7 @@ ObliqueSetup oblique_setup(const ObliqueInputs& in, ArgumentStyle style) {
   s.tangential.friction = *in.friction;
   if (in.tangential_stiffness) {
     s.tangential.stiffness = *in.tangential_stiffness;
-  } else if (s.tangential.kind == TangentialKind::mindlin ||
-             s.tangential.kind == TangentialKind::liggghts_history) {
+  } else if (is_lammps_mindlin(s.tangential.kind) || s.tangential.kind == TangentialKind::liggghts_history) {
     // LAMMPS's `mindlin NULL`: 8 G* with 1/G* = 2 · 2(2 - ν)(1 + ν)/E for two spheres of one material
     // (pair_granular.cpp:1021-1023, mix_stiffnessG at line 1790).
     const double nu = m.poisson_ratio;

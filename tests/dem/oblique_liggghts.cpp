@@ -14,13 +14,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
-#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -33,10 +29,9 @@ namespace {
 
 using namespace restitution;
 using restitution::test_support::run_cli;
-using restitution::test_support::slurp;
-using restitution::test_support::TempFolder;
+using restitution::test_support::run_liggghts_oblique;
 
-constexpr double kRadius = 1e-3;
+constexpr double kRadius = restitution::test_support::kObliqueRunRadius;
 const std::string kMaterial =
     "--young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --dissipative-constant 1e-7 "
     "--friction 0.3";
@@ -55,75 +50,6 @@ nlohmann::json cli_json(const std::string& arguments) {
   const auto outcome = run_cli(arguments + " --json");
   EXPECT_EQ(outcome.status, 0) << arguments << "\n" << outcome.err;
   return nlohmann::json::parse(outcome.out);
-}
-
-// The deck: LIGGGHTS's slip is vtr = vt - d × (R - δ/2) ω / r with d from the other body to the moving
-// sphere (+z), so our spins are -ω_y, as in LAMMPS. A pair: atom 2k+2 moves onto atom 2k+1 at rest; a wall:
-// atom k+1 onto a primitive zplane at z = 0.
-std::vector<Outcome> run_liggghts(const std::string& program, const std::vector<std::string>& lines,
-                                  bool wall, double spin, double dt, double run_time,
-                                  const std::vector<double>& angles_deg = kAnglesDeg) {
-  TempFolder folder;
-  const auto steps = static_cast<long>(std::ceil(run_time / dt));
-  const std::size_t per_angle = wall ? 1 : 2;
-  std::ostringstream deck;
-  deck.precision(17);
-  deck << "units si\natom_style granular\natom_modify map array\nnewton off\ncommunicate single vel yes\n"
-       << "boundary f f f\nregion box block -0.05 0.05 -0.01 0.01 -0.01 0.01 units box\ncreate_box 1 box\n";
-  for (std::size_t i = 0; i < angles_deg.size(); ++i) {
-    const double x = -0.04 + 0.01 * static_cast<double>(i);
-    if (!wall) deck << "create_atoms 1 single " << x << " 0 0 units box\n";
-    deck << "create_atoms 1 single " << x << " 0 " << (wall ? kRadius : 2.0 * kRadius) << " units box\n";
-  }
-  deck << "set type 1 diameter " << 2.0 * kRadius << "\nset type 1 density 7800\n";
-  for (std::size_t i = 0; i < angles_deg.size(); ++i) {
-    const double a = angles_deg[i] * std::numbers::pi / 180.0;
-    deck << "set atom " << per_angle * (i + 1) << " vx " << std::sin(a) << " vy 0 vz " << -std::cos(a)
-         << " omegax 0 omegay " << -spin << " omegaz 0\n";
-  }
-  deck << "# the lines `restitution dem --code liggghts` printed:\n";
-  for (const std::string& line : lines) deck << line << "\n";
-  deck << "neighbor " << 0.1 * kRadius << " bin\nneigh_modify delay 0\n";
-  if (wall) {
-    // The wall takes the pair style's model words, then the primitive, then its settings
-    // (tangential_damping, limitForce), and the per-type-pair parameters of type 1.
-    const std::string models = "model hertz/stiffness tangential history";
-    const std::string& style = lines.at(5);
-    const std::size_t after_models = style.find(models) + models.size();
-    deck << "fix w all wall/gran " << models << " primitive type 1 zplane 0.0" << style.substr(after_models)
-         << "\n";
-  }
-  deck << "fix 1 all nve/sphere\ntimestep " << dt << "\nthermo " << steps << "\n"
-       << "dump d all custom " << steps << " " << (folder.path / "out.dump").string() << " id vx vz omegay\n"
-       << "dump_modify d sort id format \"%d %.17g %.17g %.17g\"\nrun " << steps << "\n";
-  std::ofstream(folder.path / "in.liggghts") << deck.str();
-  const std::string command = program + " -log none -in " + (folder.path / "in.liggghts").string() + " > " +
-                              (folder.path / "out.txt").string() + " 2>&1";
-  EXPECT_EQ(std::system(command.c_str()), 0) << command << "\n" << slurp((folder.path / "out.txt").string());
-  std::istringstream dump(slurp((folder.path / "out.dump").string()));
-  std::vector<std::string> rows;
-  for (std::string line; std::getline(dump, line);) rows.push_back(line);
-  const std::size_t atoms = per_angle * angles_deg.size();
-  EXPECT_GE(rows.size(), atoms) << deck.str();
-  std::vector<std::array<double, 3>> v(atoms);  // vx, vz, ω_y by id - 1
-  for (std::size_t k = rows.size() - std::min(rows.size(), atoms); k < rows.size(); ++k) {
-    std::istringstream row(rows.at(k));
-    long id = 0;
-    std::array<double, 3> values{};
-    row >> id >> values[0] >> values[1] >> values[2];
-    v.at(static_cast<std::size_t>(id - 1)) = values;
-  }
-  std::vector<Outcome> out(angles_deg.size());
-  for (std::size_t i = 0; i < angles_deg.size(); ++i) {
-    const auto& moving = v[per_angle * (i + 1) - 1];
-    const std::array<double, 3> rest = wall ? std::array<double, 3>{} : v[per_angle * i];
-    const double s0 = std::sin(angles_deg[i] * std::numbers::pi / 180.0) + kRadius * spin;
-    const double dvx = moving[0] - rest[0];
-    const double dvz = moving[1] - rest[1];
-    out[i] = {-(dvx - kRadius * moving[2] - kRadius * rest[2]) / s0,
-              std::atan2(dvx, dvz) * 180.0 / std::numbers::pi, -moving[2], -rest[2]};
-  }
-  return out;
 }
 
 // gamman and gammat carry 1/m_eff (the note of the lines): on a wall m_eff is the sphere's mass, twice the
@@ -169,8 +95,8 @@ TEST_P(ObliqueLiggghts, ImpactsAgreeWithin1e4) {
     longest = std::max(longest, impact.at("contact_time_s").get<double>());
   }
   const double dt = shortest / kCoarseSteps;
-  const auto coarse = run_liggghts(program, lines, wall, spin, dt, 1.1 * longest);
-  const auto fine = run_liggghts(program, lines, wall, spin, dt / 10.0, 1.1 * longest);
+  const auto coarse = run_liggghts_oblique(program, lines, wall, spin, dt, 1.1 * longest, kAnglesDeg);
+  const auto fine = run_liggghts_oblique(program, lines, wall, spin, dt / 10.0, 1.1 * longest, kAnglesDeg);
   const auto extrapolate = restitution::test_support::extrapolate_first_order;
   double largest = 0.0;
   for (std::size_t i = 0; i < kAnglesDeg.size(); ++i) {
@@ -230,8 +156,8 @@ TEST(ObliqueLiggghtsCap, ImpactsSlidingOnTheCapAreFlaggedAndTheOthersAgree) {
       longest = std::max(longest, impact.at("contact_time_s").get<double>());
     }
     const double dt = shortest / kCoarseSteps;
-    const auto coarse = run_liggghts(program, lines, wall, 300.0, dt, 1.1 * longest, angles);
-    const auto fine = run_liggghts(program, lines, wall, 300.0, dt / 10.0, 1.1 * longest, angles);
+    const auto coarse = run_liggghts_oblique(program, lines, wall, 300.0, dt, 1.1 * longest, angles);
+    const auto fine = run_liggghts_oblique(program, lines, wall, 300.0, dt / 10.0, 1.1 * longest, angles);
     std::size_t flagged = 0;
     for (std::size_t i = 0; i < angles.size(); ++i) {
       const double et = fine[i].et + (fine[i].et - coarse[i].et) / 9.0;

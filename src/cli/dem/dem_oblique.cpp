@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <sstream>
 
@@ -77,13 +78,16 @@ std::vector<ContractedOblique> impacts_at(const DemOblique& r, const TangentialF
   return out;
 }
 
-// Solves the impacts, the steps per contact and the inverse for a contact read from `line`.
-DemOblique complete(DemOblique r, const std::string& line, const TangentialWords& words,
-                    const DemObliqueOptions& o) {
+// Solves the impacts, the steps per contact and the inverse; `line_with` is the printed line that carries the
+// tangential parameter, with the value found in place of the printed one.
+DemOblique complete(DemOblique r, const DemObliqueOptions& o,
+                    const std::function<std::string(double parameter)>& line_with) {
   r.angles_deg = o.angles_deg.empty() ? kDefaultAngles : o.angles_deg;
   r.impacts = impacts_at(r, r.tangential);
   r.et_accuracy = o.et_accuracy;
-  r.error_coefficient = lammps_et_error_coefficient(r.tangential.kind);
+  r.error_coefficient = r.code == dem::Code::liggghts ? liggghts_et_error_coefficient()
+                        : r.code == dem::Code::yade   ? yade_et_error_coefficient()
+                                                      : lammps_et_error_coefficient(r.tangential.kind);
   r.steps_per_contact = std::ceil(r.error_coefficient / r.et_accuracy);
   double shortest = HUGE_VAL;
   for (const auto& i : r.impacts) shortest = std::min(shortest, i.result.contact_time_s);
@@ -101,17 +105,40 @@ DemOblique complete(DemOblique r, const std::string& line, const TangentialWords
     r.inverse = tangential_parameter_for(request);
     r.target_et = *o.target_et;
     r.reference_angle_deg = *o.reference_angle_deg;
-    // The line with the parameter found in place of the one printed (LAMMPS's own parameter of the model,
-    // the first after its name: k_t, or linear_nohistory's x_gamma_t).
-    std::vector<std::string> changed = words_of(line);
-    const bool nohistory = r.tangential.kind == TangentialKind::linear_nohistory;
-    changed[words.position + 1] = fmt::format("{}", r.inverse->parameter);
-    r.inverse_lines = {joined(changed)};
+    r.inverse_lines = {line_with(r.inverse->parameter)};
     TangentialForce found = r.tangential;
-    (nohistory ? found.damping_factor : found.stiffness) = r.inverse->parameter;
+    (r.tangential.kind == TangentialKind::linear_nohistory ? found.damping_factor : found.stiffness) =
+        r.inverse->parameter;
     r.inverse_impacts = impacts_at(r, found);
   }
   return r;
+}
+
+// LAMMPS's own parameter of the model, the first after its name (k_t, or linear_nohistory's x_gamma_t),
+// replaced in `line`.
+std::function<std::string(double)> lammps_line_with(const std::string& line, const TangentialWords& words) {
+  return [line, position = words.position](double parameter) {
+    std::vector<std::string> changed = words_of(line);
+    changed.at(position + 1) = fmt::format("{}", parameter);
+    return joined(changed);
+  };
+}
+
+// LIGGGHTS's per-type-pair property: `fix ID all property/global KEY peratomtypepair 1 VALUE`.
+constexpr std::size_t kLiggghtsKeyWord = 4;
+constexpr std::size_t kLiggghtsValueWord = 7;
+const std::string& liggghts_property_line(const dem::Deck& deck, const std::string& key) {
+  for (const std::string& line : deck.lines) {
+    const std::vector<std::string> words = words_of(line);
+    if (words.size() == kLiggghtsValueWord + 1 && words[3] == "property/global" &&
+        words[kLiggghtsKeyWord] == key && words[5] == "peratomtypepair" && words[6] == "1") {
+      return line;
+    }
+  }
+  throw std::logic_error("a LIGGGHTS deck without its one-type " + key + " line");
+}
+double liggghts_property(const dem::Deck& deck, const std::string& key) {
+  return std::stod(words_of(liggghts_property_line(deck, key)).at(kLiggghtsValueWord));
 }
 
 void write_impacts(JsonWriter& json, const DemOblique& r, const std::vector<ContractedOblique>& impacts) {
@@ -144,14 +171,34 @@ void print_impacts(const DemOblique& r, const std::vector<ContractedOblique>& im
   }
 }
 
+const char* code_title(dem::Code code) {
+  return code == dem::Code::liggghts ? "LIGGGHTS" : code == dem::Code::yade ? "YADE" : "LAMMPS";
+}
+
+// The Coulomb cap as each code applies it (docs/oblique.md, "LIGGGHTS and YADE").
+const char* cap_rule(dem::Code code) {
+  if (code == dem::Code::yade) {
+    return "the cap tests the elastic shear force alone (|F_e| > tan(frictionAngle) F_n, F_e' = -ks s "
+           "incremental) and the capped force carries no damping; below the cap the damped force may exceed "
+           "it";
+  }
+  return code == dem::Code::liggghts
+             ? "the cap tests the elastic force alone (kt |xi| > mu |F_n|) and the capped force carries no "
+               "damping; below the cap the damped force may exceed mu |F_n|"
+             : "the cap tests the whole trial force, elastic and damping (|F_t| > mu |F_n|), and the capped "
+               "force is mu |F_n| along it";
+}
+
 }  // namespace
 
 void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o) {
   command
       .add_option("--tangential", o.tangential,
                   "with --friction (lammps): LAMMPS's tangential model of the printed line, its oblique "
-                  "outputs and --target-et: linear_nohistory, linear_history or mindlin")
-      ->check(CLI::IsMember({"linear_nohistory", "linear_history", "mindlin"}))
+                  "outputs and --target-et: linear_nohistory, linear_history, mindlin, mindlin_rescale, "
+                  "mindlin/force or mindlin_rescale/force")
+      ->check(CLI::IsMember({"linear_nohistory", "linear_history", "mindlin", "mindlin_rescale",
+                             "mindlin/force", "mindlin_rescale/force"}))
       ->capture_default_str();
   command.add_option("--tangential-stiffness", o.tangential_stiffness,
                      "k_t of --tangential in N/m (mindlin: N/m^2, its stiffness is k_t a; default NULL, 8 G* "
@@ -160,19 +207,22 @@ void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o) {
                      "x_gamma_t of --tangential: the tangential damping coefficient over the normal one "
                      "(default 1)");
   command
-      .add_option("--angles", o.angles_deg,
-                  "with --friction (lammps; yade's 2023.02a lines): the impact angles from the normal in "
-                  "degrees, in [0, 90), "
-                  "at which to report what the lines give oblique impacts (default 5,15,30,45,60,80)")
+      .add_option(
+          "--angles", o.angles_deg,
+          "with --friction (lammps, liggghts; yade's 2023.02a lines): the impact angles from the normal in "
+          "degrees, in [0, 90), at which to report what the lines give oblique impacts (default "
+          "5,15,30,45,60,80)")
       ->delimiter(',');
   command
       .add_option("--et-accuracy", o.et_accuracy,
-                  "the accuracy of e_t LAMMPS's (YADE's) steps per contact are reported for, in (0, 0.1]")
+                  "the accuracy of e_t the code's (LAMMPS's, LIGGGHTS's, YADE's) steps per contact are "
+                  "reported for, in (0, 0.1]")
       ->capture_default_str();
-  command.add_option("--target-et", o.target_et,
-                     "with --reference-angle (lammps, --friction): find --tangential's parameter (k_t, or "
-                     "linear_nohistory's x_gamma_t) that gives this tangential restitution e_t at that "
-                     "angle, and print its line");
+  command.add_option(
+      "--target-et", o.target_et,
+      "with --reference-angle (lammps, liggghts; --friction): find --tangential's parameter (k_t, "
+      "or linear_nohistory's x_gamma_t; liggghts: kt) that gives this tangential restitution "
+      "e_t at that angle, and print its line");
   command.add_option("--reference-angle", o.reference_angle_deg,
                      "the impact angle in degrees from the normal at which --target-et holds, in (0, 90)");
 }
@@ -185,7 +235,7 @@ double yade_et_error_coefficient() {
   return 3.0;
 }
 
-double lammps_et_error_coefficient(TangentialKind /*kind: the same bound for each so far*/) {
+double lammps_et_error_coefficient(TangentialKind kind) {
   // Measured 2026-11-27 with Debian's LAMMPS 20220106: the largest N |e_t(N) - e_t| at dt = t_c/N, the error
   // falling tenfold with the step (first order). mindlin with x_gamma_t = 1, as dem prints it
   // (tests/dem/oblique_dem_lines_lammps.cpp, pair and wall, six angles 5°-80°, the printed line and the
@@ -193,7 +243,20 @@ double lammps_et_error_coefficient(TangentialKind /*kind: the same bound for eac
   // μ = 0.5), 0.14 for steel at ε = 0.98, μ = 0.1; taken as 1. The linear models with x_gamma_t = 0.5
   // (tests/dem/oblique_lammps.cpp, nine angles, spin 0 and 300 rad/s): 0.064 and 0.033; but linear_history
   // with x_gamma_t = 1 as `--tangential` prints it (k_t = 4e6 N/m, steel above, pair and wall): 0.48, so 1
-  // for every model.
+  // for every model. The force histories (mindlin/force, mindlin_rescale/force; tests/dem/oblique_lammps.cpp,
+  // x_gamma_t = 0.5, nine angles, spin 0 and 300 rad/s, wall and two pairs, at t_c/6000): 2.44 and 2.43 (and
+  // mindlin_rescale 0.59, mindlin 0.16 there), so 3 for them.
+  if (kind == TangentialKind::mindlin_force || kind == TangentialKind::mindlin_rescale_force) return 3.0;
+  return 1.0;
+}
+
+double liggghts_et_error_coefficient() {
+  // Measured 2026-11-27 with Debian's LIGGGHTS 3.8.0+repack1 on the pair lines dem prints (the runs of
+  // tests/dem/oblique_dem_lines_liggghts.cpp): the largest N |e_t(N) - e_t| at dt = t_c/N, N = 250, 500,
+  // 1000, 2000 and 4000, t_c the shortest contact, over the six default angles, the printed kt line and the
+  // --target-et 0.25 --reference-angle 20 one: 0.57 for steel (ε = 0.9, μ = 0.3), 0.78 for glass (E = 6e10
+  // Pa, ν = 0.25, ε = 0.7, μ = 0.5), 0.19 for steel at ε = 0.98, μ = 0.1; not falling with N (first order),
+  // so 1, as for LAMMPS.
   return 1.0;
 }
 
@@ -256,16 +319,20 @@ void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double
 
 bool wants_oblique(const DemObliqueOptions& o, dem::Code code, double friction) {
   const bool asked = !o.angles_deg.empty() || o.target_et || o.reference_angle_deg || tangential_chosen(o);
-  // YADE's lines give their impacts at --angles; the inverse and the tangential choice are LAMMPS's.
-  const bool lammps_only = o.target_et || o.reference_angle_deg || tangential_chosen(o);
-  if (code == dem::Code::yade && lammps_only) {
-    throw InvalidInput("--target-et, --reference-angle and --tangential are for --code lammps");
+  if (code == dem::Code::liggghts && tangential_chosen(o)) {
+    throw InvalidInput(
+        "--tangential, --tangential-stiffness and --tangential-damping are for --code lammps: the liggghts "
+        "lines carry one tangential model, `tangential history` with kt = 8 G* and gammat = gamman");
   }
-  if (code != dem::Code::lammps && code != dem::Code::yade) {
+  // YADE's lines give their impacts at --angles; YADE takes kso from Y and nu, so no --target-et.
+  if (code == dem::Code::yade && (o.target_et || o.reference_angle_deg || tangential_chosen(o))) {
+    throw InvalidInput("--target-et, --reference-angle and --tangential are for --code lammps (or liggghts)");
+  }
+  if (code != dem::Code::lammps && code != dem::Code::liggghts && code != dem::Code::yade) {
     if (asked) {
       throw InvalidInput(
-          "--angles, --target-et, --reference-angle and --tangential are for --code lammps (the other codes' "
-          "tangential models are not modelled yet)");
+          "--angles, --target-et and --reference-angle are for --code lammps or liggghts, --tangential for "
+          "lammps (the other codes' tangential models are not modelled yet)");
     }
     return false;
   }
@@ -291,8 +358,63 @@ bool wants_oblique(const DemObliqueOptions& o, dem::Code code, double friction) 
   return asked || friction > 0.0;
 }
 
+namespace {
+
+// LIGGGHTS's lines read as LIGGGHTS reads them: hertz/stiffness's kn sqrt(R* δ) and gamman m* sqrt(R* δ)
+// (normal_model_hertz_stiffness.h:118-122), `tangential history`'s kt sqrt(R* δ) and gammat m* sqrt(R* δ)
+// (so γ_t = gammat/gamman on the normal coefficient), the cap on the elastic force alone, torque and
+// contact-point arm R - δ/2 (TangentialKind::liggghts_history), limitForce on: the delayed-recovery end.
+DemOblique liggghts_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
+                                 double speed_m_s, double tolerance) {
+  const double mu = liggghts_property(deck, "coefficientFriction");
+  if (!(mu > 0.0)) {
+    throw InvalidInput(
+        "--angles, --target-et and --reference-angle with --code liggghts need --friction MU > 0: without "
+        "it the lines are frictionless (tangential no_history)");
+  }
+  DemOblique r;
+  r.code = dem::Code::liggghts;
+  const double kn = liggghts_property(deck, "kn");
+  const double gamman = liggghts_property(deck, "gamman");
+  const double kt = liggghts_property(deck, "kt");
+  const double gammat = liggghts_property(deck, "gammat");
+  const double sqrt_radius = std::sqrt(pair.effective_radius_m);
+  r.normal = {LawKind::viscoelastic_hertz, kn * sqrt_radius, gamman * pair.effective_mass_kg * sqrt_radius};
+  r.tangential.kind = TangentialKind::liggghts_history;
+  r.tangential.stiffness = kt;
+  // gammat = gamman = 0 (A = 0): no damping either way.
+  if (gamman == 0.0 && gammat != 0.0) throw std::logic_error("LIGGGHTS lines with gammat but no gamman");
+  r.tangential.damping_factor = gamman == 0.0 ? 0.0 : gammat / gamman;
+  r.tangential.friction = mu;
+  const std::vector<std::string> style = words_of(deck.lines.at(5));
+  r.tangential_words =
+      fmt::format("history, kt {}, gammat {}, coefficientFriction {}",
+                  words_of(liggghts_property_line(deck, "kt")).at(kLiggghtsValueWord),
+                  words_of(liggghts_property_line(deck, "gammat")).at(kLiggghtsValueWord),
+                  words_of(liggghts_property_line(deck, "coefficientFriction")).at(kLiggghtsValueWord));
+  r.geometry.first = solid_sphere(pair.radius1_m, pair.mass1_kg);
+  r.geometry.second = solid_sphere(pair.radius2_m, pair.mass2_kg);
+  r.geometry.torque_arm = TorqueArm::radius_minus_half_overlap;         // surface_model_default.h:176-188
+  r.geometry.contact_point_arm = TorqueArm::radius_minus_half_overlap;  // and tangential_model_history.h:254
+  const auto limit = std::find(style.begin(), style.end(), "limitForce");
+  r.options.end = limit != style.end() && limit + 1 != style.end() && *(limit + 1) == "on"
+                      ? CollisionEnd::delayed_recovery
+                      : CollisionEnd::naive;
+  r.speed_m_s = speed_m_s;
+  r.tolerance = std::clamp(tolerance, kSmallestObliqueTolerance, kLoosestObliqueTolerance);
+  const std::string kt_line = liggghts_property_line(deck, "kt");
+  return complete(r, o, [kt_line](double parameter) {
+    std::vector<std::string> changed = words_of(kt_line);
+    changed.at(kLiggghtsValueWord) = fmt::format("{}", parameter);
+    return joined(changed);
+  });
+}
+
+}  // namespace
+
 DemOblique pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
                         double speed_m_s, double tolerance) {
+  if (deck.code == dem::Code::liggghts) return liggghts_pair_oblique(deck, pair, o, speed_m_s, tolerance);
   DemOblique r;
   const std::string& line = deck.lines.at(1);
   const TangentialWords words = tangential_words(words_of(line));
@@ -310,7 +432,7 @@ DemOblique pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemO
   r.options.end = deck.end;
   r.speed_m_s = speed_m_s;
   r.tolerance = std::clamp(tolerance, kSmallestObliqueTolerance, kLoosestObliqueTolerance);
-  return complete(r, line, words, o);
+  return complete(r, o, lammps_line_with(line, words));
 }
 
 DemOblique wall_oblique(const dem::Deck& deck, const dem::Pair& contact, const DemObliqueOptions& o,
@@ -332,7 +454,7 @@ DemOblique wall_oblique(const dem::Deck& deck, const dem::Pair& contact, const D
   r.options.end = deck.end;
   r.speed_m_s = speed_m_s;
   r.tolerance = std::clamp(tolerance, kSmallestObliqueTolerance, kLoosestObliqueTolerance);
-  return complete(r, line, words, o);
+  return complete(r, o, lammps_line_with(line, words));
 }
 
 bool yade_lines_modelled(const dem::Deck& deck) {
@@ -369,14 +491,10 @@ DemOblique yade_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const
   r.options.end = deck.end;
   r.speed_m_s = speed_m_s;
   r.tolerance = std::clamp(tolerance, kSmallestObliqueTolerance, kLoosestObliqueTolerance);
-  // No inverse (refused by wants_oblique), so the words of a LAMMPS line are not needed.
-  r = complete(r, "", TangentialWords{}, o);
-  r.error_coefficient = yade_et_error_coefficient();
-  r.steps_per_contact = std::ceil(r.error_coefficient / r.et_accuracy);
-  double shortest = HUGE_VAL;
-  for (const auto& i : r.impacts) shortest = std::min(shortest, i.result.contact_time_s);
-  r.timestep_s = shortest / r.steps_per_contact;
-  return r;
+  // No inverse (refused by wants_oblique): no line carries a parameter found.
+  return complete(r, o, [](double /*parameter*/) -> std::string {
+    throw std::logic_error("no --target-et for YADE's lines");
+  });
 }
 
 void print_oblique_text(const DemOblique& r, const char* c) {
@@ -385,13 +503,14 @@ void print_oblique_text(const DemOblique& r, const char* c) {
       "eps and e_t within {:g}):\n",
       c, r.speed_m_s, r.tangential_words, r.tolerance);
   print_impacts(r, r.impacts, c);
-  const char* code = r.code == dem::Code::yade ? "YADE" : "LAMMPS";
+  fmt::print("{} {}'s rule: {}\n", c, code_title(r.code), cap_rule(r.code));
   fmt::print(
       "{} {} decides stick or slip once per step and is first order in dt: e_t within {:g} needs {:g} "
-      "steps per contact (|error| <= {:g}/N, a bound over Debian's {} measured; docs/dem.md), timestep "
-      "<= "
-      "{:.4g} s for the shortest contact here\n",
-      c, code, r.et_accuracy, r.steps_per_contact, r.error_coefficient, code, r.timestep_s);
+      "steps per contact (|error| <= {:g}/N, a bound over Debian's {} measured; docs/dem.md), timestep <= "
+      "{:.4g} s for the shortest "
+      "contact here\n",
+      c, code_title(r.code), r.et_accuracy, r.steps_per_contact, r.error_coefficient, code_title(r.code),
+      r.timestep_s);
   if (!r.inverse) return;
   fmt::print(
       "{} for e_t = {:g} at {:g} deg: {} = {:.10g} (e_t there {:.10f}; reachable by this parameter: [{:.6g}, "
@@ -410,9 +529,10 @@ void write_oblique_json(JsonWriter& json, const DemOblique& r) {
   json.field("tangential_stiffness", r.tangential.stiffness)
       .field("tangential_damping_factor", r.tangential.damping_factor);
   json.field("speed_m_s", r.speed_m_s).field("tolerance", r.tolerance);
+  json.field("code", dem::code_name(r.code)).field("cap_rule", cap_rule(r.code));
   json.key("impacts");
   write_impacts(json, r, r.impacts);
-  json.key(r.code == dem::Code::yade ? "yade_steps" : "lammps_steps").begin_object();
+  json.key(fmt::format("{}_steps", dem::code_name(r.code))).begin_object();
   json.field("et_accuracy", r.et_accuracy).field("error_coefficient", r.error_coefficient);
   json.field("steps_per_contact", r.steps_per_contact).field("timestep_s", r.timestep_s).end_object();
   if (r.inverse) {

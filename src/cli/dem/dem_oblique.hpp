@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// `restitution dem --code lammps --friction MU`: what the printed lines give oblique impacts (docs/dem.md,
-// "Oblique impacts"): the lines' own normal and tangential numbers read as LAMMPS reads them (pair granular,
-// or fix wall/gran granular with --wall), solved by src/oblique/ under the accuracy contract at the listed
-// impact angles; how many steps per contact LAMMPS needs for a requested accuracy of e_t; and with
-// --target-et E
-// --reference-angle DEG the mindlin stiffness that gives e_t = E there, with the line that carries it.
+// `restitution dem --code lammps|liggghts --friction MU`: what the printed lines give oblique impacts
+// (docs/dem.md, "Oblique impacts"): the lines' own normal and tangential numbers read as the code reads them
+// (LAMMPS's pair granular, or fix wall/gran granular with --wall; LIGGGHTS's hertz/stiffness with
+// `tangential history`, a pair), solved by src/oblique/ under the accuracy contract at the listed impact
+// angles; how many steps per contact the code needs for a requested accuracy of e_t; and with --target-et E
+// --reference-angle DEG the stiffness that gives e_t = E there, with the line that carries it.
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
@@ -36,12 +36,14 @@ void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o);
 // LAMMPS's integration error of e_t is first order in the step: |Δe_t| <= C/N at N steps per contact, C
 // measured with Debian's LAMMPS on the lines dem prints (dem_oblique.cpp says where and what).
 double lammps_et_error_coefficient(oblique::TangentialKind kind);
+// The same for LIGGGHTS's `tangential history` (dem_oblique.cpp says what it rests on).
+double liggghts_et_error_coefficient();
 // YADE's (2023.02a, Law2_ScGeom_MindlinPhys_Mindlin): |Δe_t| <= C/N likewise.
 double yade_et_error_coefficient();
 
 // The lines' oblique impacts at one speed (the reference speed of the lines).
 struct DemOblique {
-  dem::Code code = dem::Code::lammps;  // whose lines: lammps, or yade (yade_pair_oblique)
+  dem::Code code = dem::Code::lammps;  // whose lines: lammps, liggghts or yade
   std::string tangential_words;        // as the line has them, e.g. "mindlin NULL 1 0.3"
   oblique::ObliqueGeometry geometry;
   oblique::NormalForce normal;
@@ -74,11 +76,12 @@ bool tangential_chosen(const DemObliqueOptions& o);
 void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double friction);
 
 // Whether the options or the friction ask for oblique outputs; InvalidInput naming the options when the code
-// is not LAMMPS or they are out of range.
+// is neither LAMMPS nor LIGGGHTS (--tangential: not LAMMPS) or they are out of range.
 bool wants_oblique(const DemObliqueOptions& o, dem::Code code, double friction);
 
 // The pair's lines (pair granular: the pair's 8 G* for `mindlin NULL`, torque arm R - δ/2, the line of
-// centres turning) and the wall's (fix wall/gran granular: its E, its NULL, torque arm R).
+// centres turning; LIGGGHTS: kn, kt, gamman, gammat, coefficientFriction, arms R - δ/2) and the wall's
+// (LAMMPS's fix wall/gran granular: its E, its NULL, torque arm R).
 DemOblique pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
                         double speed_m_s, double tolerance);
 DemOblique wall_oblique(const dem::Deck& deck, const dem::Pair& contact, const DemObliqueOptions& o,

@@ -144,16 +144,15 @@ void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
   fmt::print(
       "# oblique impact, {}: viscoelastic Hertz k = {:.10g} N/m^1.5, gamma = {:.10g} N s/m^1.5, {} end\n",
       o.wall ? "sphere on a wall" : "two spheres", s.normal.stiffness, s.normal.damping, o.end);
-  fmt::print(
-      "# tangential {} ({}): k_t = {:.10g} {}, damping {:.6g}, friction {:.6g}; speed {:g} m/s\n",
-      tangential_name(s.tangential.kind),
-      s.tangential.kind == TangentialKind::liggghts_history ? "LIGGGHTS tangential history"
-                                                            : "LAMMPS pair granular",
-      s.tangential.stiffness,
-      s.tangential.kind == TangentialKind::mindlin || s.tangential.kind == TangentialKind::liggghts_history
-          ? "N/m^2 (times sqrt(R* delta))"
-          : "N/m",
-      s.tangential.damping_factor, s.tangential.friction, o.speed);
+  fmt::print("# tangential {} ({}): k_t = {:.10g} {}, damping {:.6g}, friction {:.6g}; speed {:g} m/s\n",
+             tangential_name(s.tangential.kind),
+             s.tangential.kind == TangentialKind::liggghts_history ? "LIGGGHTS tangential history"
+                                                                   : "LAMMPS pair granular",
+             s.tangential.stiffness,
+             is_lammps_mindlin(s.tangential.kind) || s.tangential.kind == TangentialKind::liggghts_history
+                 ? "N/m^2 (times sqrt(R* delta))"
+                 : "N/m",
+             s.tangential.damping_factor, s.tangential.friction, o.speed);
   fmt::print("{:>9} {:>11} {:>14} {:>14} {:>12} {:>14} {:>12} {:>12} {:>10} {:>10}  modes\n", "angle_deg",
              "spin0_rad_s", "eps_n", "e_t", "rebound_deg", "spin_rad_s", "impulse", "contact_s", "stick",
              "slip");
@@ -238,13 +237,15 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
       "--fixed-normal", o->fixed_normal,
       "two spheres: keep the normal of the impact (the textbook model) instead of letting the line of "
       "centres turn as in LAMMPS");
-  cmd->add_option("--tangential", o->tangential,
-                  "tangential model: linear_nohistory, linear_history, mindlin (LAMMPS) or liggghts_history")
+  cmd->add_option(
+         "--tangential", o->tangential,
+         "tangential model: linear_nohistory, linear_history, mindlin, mindlin_rescale, mindlin/force, "
+         "mindlin_rescale/force (LAMMPS) or liggghts_history")
       ->check(CLI::IsMember(tangential_names()))
       ->capture_default_str();
   cmd->add_option(
       "--tangential-stiffness", o->tangential_stiffness,
-      "k_t: N/m for linear_history, N/m^2 for mindlin and liggghts_history (default there: 8 G*)");
+      "k_t: N/m for linear_history, N/m^2 for the mindlin models and liggghts_history (default there: 8 G*)");
   cmd->add_option("--tangential-damping", o->tangential_damping,
                   "LAMMPS's tangential damping factor (times the normal damping coefficient)")
       ->capture_default_str();

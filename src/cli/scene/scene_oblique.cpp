@@ -28,7 +28,9 @@ ObliqueInputs inputs_of(const scene::Scene& scene, const scene::ObliqueTask& tas
   in.wall = task.wall;
   in.fixed_normal = task.fixed_normal;
   in.tangential = model;
-  in.tangential_stiffness = model == "mindlin" ? task.mindlin_stiffness : task.tangential_stiffness;
+  // The mindlin family's k_t is in N/m² (mindlin, mindlin_rescale, mindlin/force, mindlin_rescale/force).
+  in.tangential_stiffness =
+      model.rfind("mindlin", 0) == 0 ? task.mindlin_stiffness : task.tangential_stiffness;
   in.tangential_damping = task.tangential_damping;
   in.friction = task.friction;
   in.end = task.end;
