@@ -159,6 +159,14 @@ NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& n
   if (is_lammps_mindlin(tangential.kind) || tangential.kind == TangentialKind::liggghts_history) {
     model.stiffness *= std::sqrt(effective_radius_m(geometry) * length_m);
   }
+  // YADE's Mindlin: ks = kso sqrt(δ), and sqrt(v T) of δ's natural length goes into κ_m.
+  if (tangential.kind == TangentialKind::yade_mindlin) {
+    model.stiffness *= std::sqrt(length_m);
+    // The wall's radius is the sphere's (Ig2_Wall_Sphere_ScGeom's refR1).
+    const double radii =
+        geometry.first.radius_m + (geometry.second ? geometry.second->radius_m : geometry.first.radius_m);
+    model.velocity_gain_distance = radii / length_m;
+  }
   // The arm R - f δ: f = 0, 1/2 or 1.
   const auto overlap_fraction = [](TorqueArm arm) {
     return arm == TorqueArm::radius ? 0.0 : arm == TorqueArm::radius_minus_half_overlap ? 0.5 : 1.0;
@@ -257,14 +265,16 @@ const char* tangential_name(TangentialKind kind) {
       return "mindlin/force";
     case TangentialKind::mindlin_rescale_force:
       return "mindlin_rescale/force";
+    case TangentialKind::yade_mindlin:
+      return "yade_mindlin";
   }
   return "?";
 }
 
 const std::vector<std::string>& tangential_names() {
-  static const std::vector<std::string> names{"linear_nohistory", "linear_history",       "mindlin",
-                                              "liggghts_history", "yade_viscel",          "mindlin_rescale",
-                                              "mindlin/force",    "mindlin_rescale/force"};
+  static const std::vector<std::string> names{"linear_nohistory", "linear_history",        "mindlin",
+                                              "liggghts_history", "yade_viscel",           "mindlin_rescale",
+                                              "mindlin/force",    "mindlin_rescale/force", "yade_mindlin"};
   return names;
 }
 
@@ -272,12 +282,12 @@ TangentialKind tangential_from_name(const std::string& name) {
   for (const TangentialKind kind :
        {TangentialKind::linear_nohistory, TangentialKind::linear_history, TangentialKind::mindlin,
         TangentialKind::liggghts_history, TangentialKind::yade_viscel, TangentialKind::mindlin_rescale,
-        TangentialKind::mindlin_force, TangentialKind::mindlin_rescale_force}) {
+        TangentialKind::mindlin_force, TangentialKind::mindlin_rescale_force, TangentialKind::yade_mindlin}) {
     if (name == tangential_name(kind)) return kind;
   }
   throw InvalidInput(fmt::format(
       "unknown tangential model '{}' (choose linear_nohistory, linear_history, mindlin, mindlin_rescale, "
-      "mindlin/force, mindlin_rescale/force, liggghts_history or yade_viscel)",
+      "mindlin/force, mindlin_rescale/force, liggghts_history, yade_viscel or yade_mindlin)",
       name));
 }
 
@@ -367,7 +377,7 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
           "cap "
           "only, each mode drives it into the other there (the code alternates capped and uncapped steps), "
           "a limit not modelled yet; less tangential damping avoids it",
-          t * time_s, tangential.kind == TangentialKind::yade_viscel ? "YADE" : "LIGGGHTS"));
+          t * time_s, tangential.kind == TangentialKind::liggghts_history ? "LIGGGHTS" : "YADE"));
     }
     if (switches > options.max_switches) {
       throw NumericalFailure(fmt::format("the contact crossed the stick/slip boundary more than {} times",

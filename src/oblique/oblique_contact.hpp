@@ -58,6 +58,21 @@ namespace restitution::oblique {
 //                    the normal coefficient, b = 0). The arms reach ScGeom's contactPoint, in the torque and
 //                    the velocity: R - δ/2 for two spheres (halfway through the overlap), R - δ for a wall
 //                    (the centre projected onto it); ObliqueGeometry chooses them.
+//
+// YADE 2023.02a's Hertz-Mindlin (pkg/dem/HertzMindlin.cpp, Law2_ScGeom_MindlinPhys_Mindlin::go, under
+// Ip2_FrictMat_FrictMat_MindlinPhys with betan), whose normal force is kno δ^{3/2} + cn δ', cn = 2 betan
+// sqrt(m* kn), kn = (3/2) kno sqrt(δ): the Tsuji member (LawKind::tsuji_hertz, γ = 2 betan sqrt(1.5 m* kno)),
+// clamped at 0:
+//  yade_mindlin:     an INCREMENTAL shear spring, `shearElastic -= ks (v_s dt)` with the tangent stiffness
+//                    ks = kso sqrt(δ) (k_t = kso in N/m^{3/2}), so F_e' = -ks(δ) s (not -d(ks ξ)/dt); rotated
+//                    with the normal, tested and capped alone against tan(frictionAngle) F_n (the total,
+//                    clamped normal force), and below the cap the viscous cs s is added, cs = 2 betas
+//                    sqrt(m* ks): cs over cn is the constant γ_t = (betas/betan) sqrt(kso/(1.5 kno)). The
+//                    contact-point velocity is ScGeom::getIncidentVel's ratcheting-free form: the centres'
+//                    relative velocity times (R1 + R2)/(R1 + R2 - δ) (a wall's radius counts as the
+//                    sphere's) plus the spins at R (ObliqueGeometry::contact_point_arm = radius); the torque
+//                    reaches ScGeom's contact point (R - δ/2 for a pair, R - δ for a wall). Debian's YADE
+//                    agrees within 3.6e-6 in e_t (tests/dem/oblique_yade_mindlin.cpp).
 enum class TangentialKind {
   linear_nohistory,
   linear_history,
@@ -66,7 +81,8 @@ enum class TangentialKind {
   yade_viscel,
   mindlin_rescale,
   mindlin_force,
-  mindlin_rescale_force
+  mindlin_rescale_force,
+  yade_mindlin
 };
 
 // LAMMPS's Mindlin family (mindlin, mindlin_rescale, mindlin/force, mindlin_rescale/force): stiffness k_t·a,
@@ -74,7 +90,7 @@ enum class TangentialKind {
 bool is_lammps_mindlin(TangentialKind kind);
 
 // "linear_nohistory" | "linear_history" | "mindlin" | "mindlin_rescale" | "mindlin/force" |
-// "mindlin_rescale/force" (LAMMPS's keywords) | "liggghts_history" | "yade_viscel"
+// "mindlin_rescale/force" (LAMMPS's keywords) | "liggghts_history" | "yade_viscel" | "yade_mindlin"
 const char* tangential_name(TangentialKind kind);
 // The inverse; throws InvalidInput naming the value and the choices.
 TangentialKind tangential_from_name(const std::string& name);
@@ -118,7 +134,8 @@ struct NormalForce {
 struct TangentialForce {
   TangentialKind kind = TangentialKind::linear_history;
   // k_t: N/m for linear_history and yade_viscel (its ks); N/m² for the mindlin family and liggghts_history
-  // (their stiffness is k_t·sqrt(R* δ)); unused by linear_nohistory.
+  // (their stiffness is k_t·sqrt(R* δ)); N/m^{3/2} for yade_mindlin (its kso: ks = kso sqrt(δ)); unused by
+  // linear_nohistory.
   double stiffness = 0.0;
   // γ_t (LAMMPS's `damping` of the tangential model, dimensionless): the tangential damping coefficient is
   // γ_t times the normal one, γ δ^b.

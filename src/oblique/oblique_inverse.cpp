@@ -34,6 +34,7 @@ double natural_scale(const TangentialInverseRequest& r) {
   if (is_lammps_mindlin(r.tangential.kind) || r.tangential.kind == TangentialKind::liggghts_history) {
     scale /= std::sqrt(effective_radius_m(r.geometry) * r.impact.normal_m_s * time_s);
   }
+  if (r.tangential.kind == TangentialKind::yade_mindlin) scale /= std::sqrt(r.impact.normal_m_s * time_s);
   return scale;
 }
 

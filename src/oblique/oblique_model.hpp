@@ -60,6 +60,14 @@ struct NaturalModel {
   // x, and in polar form δ'' = -f_n - u²/r, u' = f_t + δ' u/r, θ' = u/r); 0 for a wall or a fixed normal.
   double centre_distance = 0.0;
   bool cap_of_signed_force = false;  // true at the delayed-recovery end (see cap)
+  // YADE's Mindlin takes the centres' relative velocity times (R1 + R2)/(R1 + R2 - δ) into the contact-point
+  // velocity (ScGeom::getIncidentVel, avoiding granular ratcheting; a wall's radius counts as the sphere's):
+  // R1 + R2 in natural lengths, 0 for no such gain (the other models).
+  double velocity_gain_distance = 0.0;
+
+  [[nodiscard]] double translation_gain(double x) const {
+    return velocity_gain_distance > 0.0 ? velocity_gain_distance / (velocity_gain_distance - x) : 1.0;
+  }
 
   [[nodiscard]] double inverse_distance(double x) const {
     return centre_distance > 0.0 ? 1.0 / (centre_distance - x) : 0.0;
@@ -73,22 +81,32 @@ struct NaturalModel {
   [[nodiscard]] double slip_rate(const State& y, double force) const {
     const double x = y[kOverlap];
     const double v = y[kOverlapRate];
-    return force * mobility(x) + v * y[kTangential] * inverse_distance(x) -
-           v * (contact_arm_slope[0] * y[kSpinFirst] + contact_arm_slope[1] * y[kSpinSecond]);
+    const double rate = force * mobility(x) + v * y[kTangential] * inverse_distance(x) -
+                        v * (contact_arm_slope[0] * y[kSpinFirst] + contact_arm_slope[1] * y[kSpinSecond]);
+    if (!(velocity_gain_distance > 0.0)) return rate;
+    // d(α u)/dτ - u' = (α - 1) u' + α' u, α' = α δ'/(D - x).
+    const double gain = translation_gain(x);
+    return rate + (gain - 1.0) * (force + v * y[kTangential] * inverse_distance(x)) +
+           gain * v * y[kTangential] / (velocity_gain_distance - x);
   }
 
   [[nodiscard]] bool has_history() const { return kind != TangentialKind::linear_nohistory; }
   // LIGGGHTS and YADE: the cap tests and caps the elastic force alone.
   [[nodiscard]] bool caps_elastic_force() const {
-    return kind == TangentialKind::liggghts_history || kind == TangentialKind::yade_viscel;
+    return kind == TangentialKind::liggghts_history || kind == TangentialKind::yade_viscel ||
+           kind == TangentialKind::yade_mindlin;
   }
-  // κ = κ_m sqrt(x): LAMMPS's mindlin family (k_t a) and LIGGGHTS's hertz/stiffness kt sqrt(R* δ).
+  // κ = κ_m sqrt(x): LAMMPS's mindlin family (k_t a), LIGGGHTS's hertz/stiffness kt sqrt(R* δ) and YADE's
+  // Mindlin kso sqrt(δ).
   [[nodiscard]] bool stiffness_grows_with_overlap() const {
-    return is_lammps_mindlin(kind) || kind == TangentialKind::liggghts_history;
+    return is_lammps_mindlin(kind) || kind == TangentialKind::liggghts_history ||
+           kind == TangentialKind::yade_mindlin;
   }
-  // LAMMPS's /force variants: the history is the elastic force H (pair_granular.cpp:482-487).
+  // LAMMPS's /force variants and YADE's Mindlin (`shearElastic -= ks (v_s dt)`): the history is the elastic
+  // force H (pair_granular.cpp:482-487).
   [[nodiscard]] bool history_is_force() const {
-    return kind == TangentialKind::mindlin_force || kind == TangentialKind::mindlin_rescale_force;
+    return kind == TangentialKind::mindlin_force || kind == TangentialKind::mindlin_rescale_force ||
+           kind == TangentialKind::yade_mindlin;
   }
   // LAMMPS's _rescale variants: the history scaled by a/a_old where a shrinks (pair_granular.cpp:434-445).
   [[nodiscard]] bool rescales_on_unloading() const {
@@ -169,7 +187,7 @@ struct NaturalModel {
   // The contact-point velocity the code uses during the contact (LIGGGHTS's arm R_i - δ/2).
   [[nodiscard]] double contact_slip(const State& y) const {
     const double x = y[kOverlap];
-    return y[kTangential] + (1.0 - contact_arm_slope[0] * x) * y[kSpinFirst] +
+    return y[kTangential] * translation_gain(x) + (1.0 - contact_arm_slope[0] * x) * y[kSpinFirst] +
            (1.0 - contact_arm_slope[1] * x) * y[kSpinSecond];
   }
   // The force below the cap: -κξ - g s or H - g s (history) or -g s (no history).
@@ -179,9 +197,11 @@ struct NaturalModel {
     if (history_is_force()) return viscous + y[kDisplacement];
     return has_history() ? viscous - tangential_stiffness(y[kOverlap]) * y[kDisplacement] : viscous;
   }
-  // The force the cap is tested against, whose direction a slip takes: the trial force, or LIGGGHTS's -κξ.
+  // The force the cap is tested against, whose direction a slip takes: the trial force, or LIGGGHTS's -κξ
+  // (YADE's Mindlin: its elastic force H).
   [[nodiscard]] double cap_test_force(const State& y) const {
-    return caps_elastic_force() ? -tangential_stiffness(y[kOverlap]) * y[kDisplacement] : trial_force(y);
+    if (!caps_elastic_force()) return trial_force(y);
+    return history_is_force() ? y[kDisplacement] : -tangential_stiffness(y[kOverlap]) * y[kDisplacement];
   }
   // The tangential force on the first body in a mode (sign: the direction of the capped force, ±1).
   [[nodiscard]] double tangential_force(const State& y, ContactMode mode, double sign) const {

@@ -102,6 +102,14 @@ ObliqueSetup oblique_setup(const ObliqueInputs& in, ArgumentStyle style) {
         "delta'), and this models viscoelastic Hertz; the model is in the library (docs/oblique.md)",
         name("tangential")));
   }
+  if (s.tangential.kind == TangentialKind::yade_mindlin) {
+    throw InvalidInput(fmt::format(
+        "{} yade_mindlin: YADE's MindlinPhys pairs its shear spring with the Tsuji normal force (kno "
+        "delta^1.5 "
+        "+ cn delta', cn = 2 betan sqrt(m* kn)), and this models viscoelastic Hertz; `restitution dem --code "
+        "yade --friction MU` prints its oblique impacts (docs/oblique.md)",
+        name("tangential")));
+  }
   s.tangential.damping_factor = in.tangential_damping;
   s.tangential.friction = *in.friction;
   if (in.tangential_stiffness) {

@@ -344,11 +344,21 @@ void add_dem_command(CLI::App& app, Action& chosen) {
       apply_tangential_choice(r.deck, o->oblique, o->friction);
       const Production p = production(r, material_from(o->material), o->production, o->tolerance);
       std::optional<DemOblique> impacts;
-      if (oblique) {
+      if (oblique && r.deck.code == dem::Code::yade) {
+        // YADE 2024.02a's (en, vn) lines: not modelled; said where --angles asks for them.
+        if (!o->oblique.angles_deg.empty() || yade_lines_modelled(r.deck)) {
+          impacts = yade_pair_oblique(r.deck, dem::pair_of(material_from(o->material)), o->oblique,
+                                      r.reference_velocity_m_s, o->tolerance);
+        }
+      } else if (oblique) {
         impacts = pair_oblique(r.deck, dem::pair_of(material_from(o->material)), o->oblique,
                                r.reference_velocity_m_s, o->tolerance);
       }
-      if (o->deck) o->deck_run = write_check_deck(*o->deck, r, material_from(o->material), impacts);
+      // The check deck's oblique section is LAMMPS's.
+      if (o->deck) {
+        o->deck_run = write_check_deck(*o->deck, r, material_from(o->material),
+                                       r.deck.code == dem::Code::yade ? std::nullopt : impacts);
+      }
       if (o->json) {
         print_json(r, *o, from_fit, p, impacts);
       } else {

@@ -86,6 +86,7 @@ DemOblique complete(DemOblique r, const DemObliqueOptions& o,
   r.impacts = impacts_at(r, r.tangential);
   r.et_accuracy = o.et_accuracy;
   r.error_coefficient = r.code == dem::Code::liggghts ? liggghts_et_error_coefficient()
+                        : r.code == dem::Code::yade   ? yade_et_error_coefficient()
                                                       : lammps_et_error_coefficient(r.tangential.kind);
   r.steps_per_contact = std::ceil(r.error_coefficient / r.et_accuracy);
   double shortest = HUGE_VAL;
@@ -171,11 +172,16 @@ void print_impacts(const DemOblique& r, const std::vector<ContractedOblique>& im
 }
 
 const char* code_title(dem::Code code) {
-  return code == dem::Code::liggghts ? "LIGGGHTS" : "LAMMPS";
+  return code == dem::Code::liggghts ? "LIGGGHTS" : code == dem::Code::yade ? "YADE" : "LAMMPS";
 }
 
 // The Coulomb cap as each code applies it (docs/oblique.md, "LIGGGHTS and YADE").
 const char* cap_rule(dem::Code code) {
+  if (code == dem::Code::yade) {
+    return "the cap tests the elastic shear force alone (|F_e| > tan(frictionAngle) F_n, F_e' = -ks s "
+           "incremental) and the capped force carries no damping; below the cap the damped force may exceed "
+           "it";
+  }
   return code == dem::Code::liggghts
              ? "the cap tests the elastic force alone (kt |xi| > mu |F_n|) and the capped force carries no "
                "damping; below the cap the damped force may exceed mu |F_n|"
@@ -203,13 +209,14 @@ void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o) {
   command
       .add_option(
           "--angles", o.angles_deg,
-          "with --friction (lammps, liggghts): the impact angles from the normal in degrees, in [0, 90), "
-          "at which to report what the lines give oblique impacts (default 5,15,30,45,60,80)")
+          "with --friction (lammps, liggghts; yade's 2023.02a lines): the impact angles from the normal in "
+          "degrees, in [0, 90), at which to report what the lines give oblique impacts (default "
+          "5,15,30,45,60,80)")
       ->delimiter(',');
   command
       .add_option("--et-accuracy", o.et_accuracy,
-                  "the accuracy of e_t the code's (LAMMPS's, LIGGGHTS's) steps per contact are reported for, "
-                  "in (0, 0.1]")
+                  "the accuracy of e_t the code's (LAMMPS's, LIGGGHTS's, YADE's) steps per contact are "
+                  "reported for, in (0, 0.1]")
       ->capture_default_str();
   command.add_option(
       "--target-et", o.target_et,
@@ -218,6 +225,14 @@ void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o) {
       "e_t at that angle, and print its line");
   command.add_option("--reference-angle", o.reference_angle_deg,
                      "the impact angle in degrees from the normal at which --target-et holds, in (0, 90)");
+}
+
+double yade_et_error_coefficient() {
+  // Measured 2026-11-27 with Debian's YADE 2023.02a on the betan lines dem prints (two 1 mm spheres, eight
+  // angles 1°-85°, tests/dem/oblique_yade_mindlin.cpp): the largest N |e_t(N) - e_t| at dt = t_c/N, t_c the
+  // shortest contact, first order in dt: 2.31 for steel (A = 1e-7 s, ε = 0.914, μ = 0.3), 2.61 for glass
+  // (E = 6e10 Pa, ν = 0.25, ε = 0.7, μ = 0.5), 1.41 for steel at ε = 0.98, μ = 0.1; taken as 3.
+  return 3.0;
 }
 
 double lammps_et_error_coefficient(TangentialKind kind) {
@@ -309,7 +324,11 @@ bool wants_oblique(const DemObliqueOptions& o, dem::Code code, double friction) 
         "--tangential, --tangential-stiffness and --tangential-damping are for --code lammps: the liggghts "
         "lines carry one tangential model, `tangential history` with kt = 8 G* and gammat = gamman");
   }
-  if (code != dem::Code::lammps && code != dem::Code::liggghts) {
+  // YADE's lines give their impacts at --angles; YADE takes kso from Y and nu, so no --target-et.
+  if (code == dem::Code::yade && (o.target_et || o.reference_angle_deg || tangential_chosen(o))) {
+    throw InvalidInput("--target-et, --reference-angle and --tangential are for --code lammps (or liggghts)");
+  }
+  if (code != dem::Code::lammps && code != dem::Code::liggghts && code != dem::Code::yade) {
     if (asked) {
       throw InvalidInput(
           "--angles, --target-et and --reference-angle are for --code lammps or liggghts, --tangential for "
@@ -436,6 +455,46 @@ DemOblique wall_oblique(const dem::Deck& deck, const dem::Pair& contact, const D
   r.speed_m_s = speed_m_s;
   r.tolerance = std::clamp(tolerance, kSmallestObliqueTolerance, kLoosestObliqueTolerance);
   return complete(r, o, lammps_line_with(line, words));
+}
+
+bool yade_lines_modelled(const dem::Deck& deck) {
+  return std::any_of(deck.parameters.begin(), deck.parameters.end(),
+                     [](const dem::Parameter& p) { return p.name == "betan"; });
+}
+
+DemOblique yade_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
+                             double speed_m_s, double tolerance) {
+  if (!yade_lines_modelled(deck)) {
+    throw InvalidInput(
+        "--angles: the oblique impacts of YADE 2024.02a's (en, vn) lines are not modelled; --yade-version "
+        "2023.02a prints the betan lines whose impacts are");
+  }
+  DemOblique r;
+  r.code = dem::Code::yade;
+  r.tangential_words = "Law2_ScGeom_MindlinPhys_Mindlin, betas = betan";
+  // Ip2_FrictMat_FrictMat_MindlinPhys::go for one material: E* = Y/(2(1 - ν²)), G = Y/(2(1 + ν)), R* from
+  // the radii, kno = (4/3) E* sqrt(R*), kso = 2 sqrt(4 R*) G/(2 - ν); Law2: cn = 2 betan sqrt(m* kn), kn =
+  // (3/2) kno sqrt(δ), and cs = 2 betas sqrt(m* ks), ks = kso sqrt(δ), so cs/cn = sqrt(kso/(1.5 kno)).
+  const double young = deck.parameter("young");
+  const double nu = deck.parameter("poisson");
+  const double betan = deck.parameter("betan");
+  const double r_star = pair.radius1_m * pair.radius2_m / (pair.radius1_m + pair.radius2_m);
+  const double kno = 4.0 / 3.0 * young / (2.0 * (1.0 - nu * nu)) * std::sqrt(r_star);
+  const double kso = 2.0 * std::sqrt(4.0 * r_star) * young / (2.0 * (1.0 + nu)) / (2.0 - nu);
+  r.geometry.first = solid_sphere(pair.radius1_m, pair.mass1_kg);
+  r.geometry.second = solid_sphere(pair.radius2_m, pair.mass2_kg);
+  r.geometry.torque_arm = TorqueArm::radius_minus_half_overlap;  // to ScGeom's contactPoint
+  r.geometry.contact_point_arm = TorqueArm::radius;              // getIncidentVel: the spins at R
+  r.normal = {LawKind::tsuji_hertz, kno, 2.0 * betan * std::sqrt(1.5 * effective_mass_kg(r.geometry) * kno)};
+  r.tangential = {TangentialKind::yade_mindlin, kso, std::sqrt(kso / (1.5 * kno)),
+                  std::tan(deck.parameter("frictionAngle"))};
+  r.options.end = deck.end;
+  r.speed_m_s = speed_m_s;
+  r.tolerance = std::clamp(tolerance, kSmallestObliqueTolerance, kLoosestObliqueTolerance);
+  // No inverse (refused by wants_oblique): no line carries a parameter found.
+  return complete(r, o, [](double /*parameter*/) -> std::string {
+    throw std::logic_error("no --target-et for YADE's lines");
+  });
 }
 
 void print_oblique_text(const DemOblique& r, const char* c) {

@@ -38,10 +38,12 @@ void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o);
 double lammps_et_error_coefficient(oblique::TangentialKind kind);
 // The same for LIGGGHTS's `tangential history` (dem_oblique.cpp says what it rests on).
 double liggghts_et_error_coefficient();
+// YADE's (2023.02a, Law2_ScGeom_MindlinPhys_Mindlin): |Δe_t| <= C/N likewise.
+double yade_et_error_coefficient();
 
 // The lines' oblique impacts at one speed (the reference speed of the lines).
 struct DemOblique {
-  dem::Code code = dem::Code::lammps;  // whose lines: lammps or liggghts
+  dem::Code code = dem::Code::lammps;  // whose lines: lammps, liggghts or yade
   std::string tangential_words;        // as the line has them, e.g. "mindlin NULL 1 0.3"
   oblique::ObliqueGeometry geometry;
   oblique::NormalForce normal;
@@ -84,6 +86,15 @@ DemOblique pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemO
                         double speed_m_s, double tolerance);
 DemOblique wall_oblique(const dem::Deck& deck, const dem::Pair& contact, const DemObliqueOptions& o,
                         double speed_m_s, double tolerance);
+
+// YADE 2023.02a's lines for `pair` (FrictMat, Ip2_FrictMat_FrictMat_MindlinPhys(betan),
+// Law2_ScGeom_MindlinPhys_Mindlin): yade_mindlin over the Tsuji normal force with Ip2's kno, kso and betas =
+// betan, the torque to ScGeom's contact point (R - δ/2) and getIncidentVel's contact-point velocity
+// (oblique_contact.hpp). Only lines with betan are modelled (yade_lines_modelled): YADE 2024.02a's (en, vn)
+// damp otherwise.
+bool yade_lines_modelled(const dem::Deck& deck);
+DemOblique yade_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
+                             double speed_m_s, double tolerance);
 
 void print_oblique_text(const DemOblique& r, const char* comment);
 // "oblique": {...}
