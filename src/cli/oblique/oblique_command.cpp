@@ -227,7 +227,7 @@ int run(const ObliqueCommandOptions& o) {
 void add_oblique_command(CLI::App& app, Action& chosen) {
   auto o = std::make_shared<ObliqueCommandOptions>();
   CLI::App* cmd = app.add_subcommand("oblique",
-                                     "oblique impacts with a LAMMPS tangential model: tangential "
+                                     "oblique impacts with a LAMMPS or LIGGGHTS tangential model: tangential "
                                      "restitution, rebound angle, spin, stick/slip");
   add_material_options(*cmd, o->material);
   cmd->add_option("--dissipative-constant", o->dissipative_constant, "the dissipative constant A in s")
