@@ -4,13 +4,14 @@
 // damping (gammat = gamman: damping factor 1; kt = 8 G*, the oblique command's default); the kt --target-et
 // finds, fed back into `restitution oblique`, gives the target at the reference angle; --tangential, a
 // frictionless line and a LIGGGHTS wall exit with status 2 naming why; an impact sliding on the cap is
-// reported; the check deck stays head-on.
+// reported; the check deck holds one oblique check line per angle.
 #include <fmt/core.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
 
@@ -120,15 +121,25 @@ TEST(DemObliqueLiggghts, ImpactsSlidingOnTheCapAreReported) {
   EXPECT_NE(text.out.find("  (not modelled: "), std::string::npos) << text.out;
 }
 
-// The check deck's oblique section is LAMMPS's: LIGGGHTS's deck holds the head-on collisions alone.
-TEST(DemObliqueLiggghts, CheckDeckStaysHeadOn) {
+// The check deck adds the oblique section (cli/dem/oblique_check_deck.hpp) after the head-on collisions: one
+// restitution-oblique-check line per listed angle, in order, at LIGGGHTS's dt = t_c/10000 and t_c/100000.
+TEST(DemObliqueLiggghts, CheckDeckHasOneObliqueLinePerAngle) {
   TempFolder folder;
   const auto deck = folder.path / "check.liggghts";
-  const auto r = run_cli(kLines + " --deck " + deck.string());
+  const auto r = run_cli(kLines + " --angles 10,35,70 --deck " + deck.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string text = slurp(deck.string());
   EXPECT_NE(text.find("restitution-check"), std::string::npos);
-  EXPECT_EQ(text.find("restitution-oblique-check"), std::string::npos);
+  const std::string head = "print \"restitution-oblique-check code=liggghts contact=pair angle=";
+  std::vector<std::string> angles;
+  for (std::size_t at = text.find(head); at != std::string::npos; at = text.find(head, at + 1)) {
+    const std::size_t from = at + head.size();
+    angles.push_back(text.substr(from, text.find(' ', from) - from));
+  }
+  EXPECT_EQ(angles, (std::vector<std::string>{"10", "35", "70"}));
+  EXPECT_LT(text.find("restitution-check"), text.find(head));  // after the head-on section
+  EXPECT_NE(text.find("dt = t_c/10000 and t_c/100000"), std::string::npos);
+  EXPECT_EQ(text.find("$("), std::string::npos);  // LIGGGHTS 3.8.0 has no immediate $(...) variables
 }
 
 }  // namespace

@@ -179,31 +179,11 @@ TEST_P(ObliqueDemLines, CheckDeckCoversTheObliqueImpacts) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto out = nlohmann::json::parse(r.out);
   const auto& impacts = out["oblique"]["impacts"];
-  const std::string command = restitution::dem::dem_program(restitution::dem::Code::lammps) +
-                              " -log none -in " + deck.string() + " > " + (folder.path / "out.txt").string() +
-                              " 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0) << slurp((folder.path / "out.txt").string());
-  std::istringstream text(slurp((folder.path / "out.txt").string()));
-  std::size_t head_on = 0;
-  std::size_t oblique = 0;
-  for (std::string line; std::getline(text, line);) {
-    if (line.rfind("restitution-check ", 0) == 0) ++head_on;
-    if (line.rfind("restitution-oblique-check ", 0) != 0) continue;
-    ASSERT_LT(oblique, impacts.size()) << line;
-    const auto field = [&](const std::string& key) {
-      const std::size_t at = line.find(" " + key + "=");
-      EXPECT_NE(at, std::string::npos) << key << " in " << line;
-      return std::stod(line.substr(at + key.size() + 2));
-    };
-    EXPECT_EQ(field("angle"), impacts[oblique]["angle_deg"].get<double>()) << line;
-    EXPECT_NEAR(field("et_restitution"), impacts[oblique]["tangential_restitution"].get<double>(), 1e-12)
-        << line;
-    EXPECT_NEAR(field("diff"), 0.0, 1e-6) << line;
-    EXPECT_NEAR(field("et_code"), impacts[oblique]["tangential_restitution"].get<double>(), 1e-6) << line;
-    ++oblique;
-  }
-  EXPECT_EQ(head_on, 3U);  // v/10, v, 10 v
-  EXPECT_EQ(oblique, impacts.size());
+  const auto run = restitution::test_support::run_oblique_check_deck(restitution::dem::Code::lammps, deck,
+                                                                     out["oblique"]["impacts"], 1e-6);
+  EXPECT_EQ(run.head_on, 3U);  // v/10, v, 10 v
+  EXPECT_EQ(run.oblique, out["oblique"]["impacts"].size());
+  restitution::test_support::record_largest_et_difference(run.largest_diff);
 }
 
 INSTANTIATE_TEST_SUITE_P(PairAndWall, ObliqueDemLines, ::testing::Values(false, true));

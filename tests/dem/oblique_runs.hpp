@@ -2,21 +2,25 @@
 #pragma once
 // What the oblique-impact checks against the DEM codes share (tests/dem/oblique_*.cpp): the impact angles, an
 // impact's outputs as a code reports them, the impact velocity of a unit speed, Richardson's extrapolation of
-// a first-order integrator, the record of the largest e_t difference and LIGGGHTS's run of printed lines.
+// a first-order integrator, the record of the largest e_t difference, LIGGGHTS's run of printed lines and the
+// run of a check deck's oblique section.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "dem/code_runner.hpp"
 #include "oblique/oblique_contact.hpp"
 
 namespace restitution::test_support {
@@ -121,6 +125,53 @@ inline std::vector<ObliqueOutcome> run_liggghts_oblique(const std::string& progr
               std::atan2(dvx, dvz) * 180.0 / std::numbers::pi, -moving[2], -rest[2]};
   }
   return out;
+}
+
+// The check lines of a deck `restitution dem --code CODE --friction MU --deck` wrote, run by CODE's program.
+struct CheckDeckRun {
+  std::size_t head_on = 0;    // restitution-check lines
+  std::size_t oblique = 0;    // restitution-oblique-check lines
+  double largest_diff = 0.0;  // the largest |diff| of those
+};
+
+// Runs `deck` with `code`'s program and checks each oblique line against `impacts` (the command's JSON
+// oblique.impacts, in order): its code, angle and et_restitution as printed, |diff| <= tolerance and et_code
+// within tolerance of the printed e_t.
+inline CheckDeckRun run_oblique_check_deck(dem::Code code, const std::filesystem::path& deck,
+                                           const nlohmann::json& impacts, double tolerance) {
+  CheckDeckRun run;
+  const std::string program = dem::dem_program(code);
+  EXPECT_FALSE(program.empty()) << dem::code_name(code) << " not found on PATH: scripts/setup installs it";
+  if (program.empty()) return run;
+  const auto out = deck.parent_path() / "out.txt";
+  const std::string command = program + " -log none -in " + deck.string() + " > " + out.string() + " 2>&1";
+  EXPECT_EQ(std::system(command.c_str()), 0) << command << "\n" << slurp(out.string());
+  std::istringstream text(slurp(out.string()));
+  const std::string code_field = std::string(" code=") + dem::code_name(code) + " ";
+  for (std::string line; std::getline(text, line);) {
+    if (line.rfind("restitution-check ", 0) == 0) ++run.head_on;
+    if (line.rfind("restitution-oblique-check ", 0) != 0) continue;
+    if (run.oblique >= impacts.size()) {
+      ADD_FAILURE() << "more oblique check lines than impacts: " << line;
+      break;
+    }
+    const auto field = [&](const std::string& key) {
+      const std::size_t at = line.find(" " + key + "=");
+      EXPECT_NE(at, std::string::npos) << key << " in " << line;
+      return at == std::string::npos ? NAN : std::stod(line.substr(at + key.size() + 2));
+    };
+    const auto& impact = impacts[run.oblique];
+    EXPECT_NE(line.find(code_field), std::string::npos) << line;
+    EXPECT_EQ(field("angle"), impact["angle_deg"].get<double>()) << line;
+    EXPECT_NEAR(field("et_restitution"), impact["tangential_restitution"].get<double>(), 1e-12) << line;
+    const double diff = field("diff");
+    EXPECT_NEAR(diff, 0.0, tolerance) << line;
+    EXPECT_NEAR(field("et_code"), impact["tangential_restitution"].get<double>(), tolerance) << line;
+    // NaN (an unparsed diff) must not pass as small.
+    run.largest_diff = std::isnan(diff) ? diff : std::max(run.largest_diff, std::abs(diff));
+    ++run.oblique;
+  }
+  return run;
 }
 
 }  // namespace restitution::test_support

@@ -14,7 +14,8 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 
 // One pass: a fresh system with one collision per angle at dt, e_t of each into variable `name`{i}. A pair:
 // atom 2i+1 at rest, 2i+2 above it moving down onto it; a wall: atom i+1 touching the plane z = 0. LAMMPS's
-// slip is vx - R omega_y per sphere with the normal +z towards the mover.
+// slip is vx - R omega_y per sphere with the normal +z towards the mover, and so is LIGGGHTS's
+// (tests/dem/oblique_runs.hpp).
 std::string pass(const DemOblique& r, const std::vector<std::string>& prerequisites,
                  const std::vector<std::string>& lines, double dt, long steps, const char* name) {
   const bool pair = r.geometry.second.has_value();
@@ -73,6 +74,10 @@ std::string pass(const DemOblique& r, const std::vector<std::string>& prerequisi
 
 }  // namespace
 
+int oblique_check_steps(dem::Code code) {
+  return code == dem::Code::liggghts ? 10000 : 2000;
+}
+
 std::string oblique_check_section(const DemOblique& r, const std::vector<std::string>& prerequisites,
                                   const std::vector<std::string>& lines) {
   double shortest = HUGE_VAL;
@@ -81,13 +86,14 @@ std::string oblique_check_section(const DemOblique& r, const std::vector<std::st
     shortest = std::min(shortest, i.result.contact_time_s);
     longest = std::max(longest, i.result.contact_time_s);
   }
-  const double dt = shortest / kObliqueCheckSteps;
+  const int n = oblique_check_steps(r.code);
+  const double dt = shortest / n;
   const auto steps = static_cast<long>(std::ceil(1.1 * longest / dt));
   const char* contact = r.geometry.second ? "pair" : "wall";
   std::string d = fmt::format(
       "\n# oblique impacts ({}): the lines again, at each angle restitution dem lists, at {} m/s; "
       "dt = t_c/{} and t_c/{}, t_c = {} s the shortest contact\n",
-      contact, r.speed_m_s, kObliqueCheckSteps, 10 * kObliqueCheckSteps, shortest);
+      contact, r.speed_m_s, n, 10 * n, shortest);
   d += pass(r, prerequisites, lines, dt, steps, "rc_oblique_10dt");
   d += pass(r, prerequisites, lines, dt / 10.0, 10 * steps, "rc_oblique_dt");
   d += "\n# the oblique check lines\n";
@@ -96,10 +102,10 @@ std::string oblique_check_section(const DemOblique& r, const std::vector<std::st
     d += fmt::format("variable rc_oblique_code{0} equal (10*v_rc_oblique_dt{0}-v_rc_oblique_10dt{0})/9\n", i);
     d += fmt::format("variable rc_oblique_diff{0} equal v_rc_oblique_code{0}-({1})\n", i, et);
     d += fmt::format(
-        "print \"{1} code=lammps contact={2} angle={3} et_10dt=${{rc_oblique_10dt{0}}} "
+        "print \"{1} code={5} contact={2} angle={3} et_10dt=${{rc_oblique_10dt{0}}} "
         "et_dt=${{rc_oblique_dt{0}}} et_code=${{rc_oblique_code{0}}} et_restitution={4} "
         "diff=${{rc_oblique_diff{0}}}\"\n",
-        i, kObliqueCheckTag, contact, r.angles_deg[i], et);
+        i, kObliqueCheckTag, contact, r.angles_deg[i], et, dem::code_name(r.code));
   }
   return d;
 }
