@@ -10,16 +10,11 @@
 #include "restitution/errors.hpp"
 
 namespace restitution::dem {
-namespace {
-
-// [a, b, c] with every number in the shortest form that reads back to the same double.
 std::string python_list(const std::vector<double>& values) {
   std::string s = "[";
   for (std::size_t i = 0; i < values.size(); ++i) s += fmt::format("{}{}", i > 0 ? ", " : "", values[i]);
   return s + "]";
 }
-
-}  // namespace
 
 std::string yade_collide_function(const std::vector<std::string>& lines) {
   if (lines.size() != 3) {

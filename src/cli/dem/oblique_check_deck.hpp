@@ -9,6 +9,7 @@
 //   et_restitution=... diff=...
 //
 // et_code = (10 et_dt - et_10dt)/9 (LAMMPS is first order in dt here), diff = et_code - et_restitution.
+// YADE's deck has the same section (oblique_check_deck_yade.hpp); the step choice and the line are shared.
 #include <string>
 #include <vector>
 
@@ -19,6 +20,26 @@ namespace restitution::cli {
 // The tag every oblique check line starts with.
 inline constexpr const char* kObliqueCheckTag = "restitution-oblique-check";
 inline constexpr int kObliqueCheckSteps = 2000;  // steps per shortest contact of the coarse pass
+
+// The step choice of both passes: dt = t_c/per_contact (t_c the shortest contact), `steps` of it lasting
+// 1.1 times the longest contact (the fine pass takes dt/10 and 10 times the steps).
+struct ObliqueCheckSteps {
+  int per_contact = kObliqueCheckSteps;
+  double shortest_contact_s = 0.0;
+  double dt_s = 0.0;
+  long steps = 0;
+};
+ObliqueCheckSteps oblique_check_steps(const DemOblique& r, int per_contact = kObliqueCheckSteps);
+
+// The section's heading comment (without the comment mark): contact, speed, dt choice.
+std::string oblique_check_heading(const DemOblique& r, const ObliqueCheckSteps& s);
+
+// The check line of the impact at angle i, the code's measured values as the deck spells them (a LAMMPS
+// ${variable}, a Python %-format).
+struct ObliqueCheckValues {
+  std::string et_10dt, et_dt, et_code, diff;
+};
+std::string oblique_check_line(const DemOblique& r, std::size_t i, const ObliqueCheckValues& values);
 
 // The deck's oblique section for `r` (pair_oblique or wall_oblique) and the lines it was read from.
 std::string oblique_check_section(const DemOblique& r, const std::vector<std::string>& prerequisites,
