@@ -122,6 +122,17 @@ TEST(ObliqueYadeMindlinCli, DeckHasOneObliqueCheckLinePerAngle) {
   EXPECT_EQ(slurp(frictionless).find("restitution-oblique-check"), std::string::npos);
 }
 
+// At 0 degrees e_t is nan (no slip to restitute): the deck must spell it as Python reads it, not `nan`.
+TEST(ObliqueYadeMindlinCli, DeckSpellsAHeadOnAnglesNanForPython) {
+  TempFolder folder;
+  const auto deck = (folder.path / "check.py").string();
+  ASSERT_EQ(run_cli(kSteel + " --yade-version 2023.02a --friction 0.3 --angles 0,30 --deck " + deck).status,
+            0);
+  const std::string text = slurp(deck);
+  EXPECT_NE(text.find("OBLIQUE_ET_RESTITUTION = [float('nan'), "), std::string::npos) << text;
+  EXPECT_NE(text.find("if s0 != 0 else float('nan')"), std::string::npos) << text;
+}
+
 // `restitution oblique` models viscoelastic Hertz; YADE's Mindlin comes with the Tsuji force.
 TEST(ObliqueYadeMindlinCli, ObliqueCommandRefusesItNamingWhy) {
   const auto r = run_cli(

@@ -43,7 +43,8 @@ def collide_oblique(dt, steps):
     for a, b in zip(OBLIQUE_ANGLES, movers):
         m, r = O.bodies[b].state, O.bodies[b - 1].state
         slip = m.vel[0] - OBLIQUE_R1 * m.angVel[1] - r.vel[0] - OBLIQUE_R2 * r.angVel[1]
-        et.append(-slip / (OBLIQUE_SPEED * math.sin(math.radians(a))))
+        s0 = OBLIQUE_SPEED * math.sin(math.radians(a))
+        et.append(-slip / s0 if s0 != 0 else float('nan'))  # head-on: no slip to restitute
     return et
 )",
                      lines[0], lines[1], lines[2]);
