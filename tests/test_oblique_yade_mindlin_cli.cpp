@@ -2,12 +2,14 @@
 // `restitution dem --code yade --friction MU` on YADE 2023.02a's betan lines: the oblique outputs are the
 // library's yade_mindlin solve with the lines' own numbers (kno, kso of Ip2_FrictMat_FrictMat_MindlinPhys,
 // the printed betan, betas = betan, tan(frictionAngle)) and YADE's arms; frictionless lines print none;
-// what YADE's lines cannot model (--target-et, the 2024.02a (en, vn) lines at --angles) exits 2 naming it.
+// what YADE's lines cannot model (--target-et, the 2024.02a (en, vn) lines at --angles) exits 2 naming it;
+// --deck adds one restitution-oblique-check line per angle (tests/dem/oblique_yade_mindlin.cpp runs it).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 #include "cli_runner.hpp"
@@ -18,6 +20,8 @@ namespace {
 using namespace restitution;
 using namespace restitution::oblique;
 using restitution::test_support::run_cli;
+using restitution::test_support::slurp;
+using restitution::test_support::TempFolder;
 
 constexpr double kYoung = 2e11;  // Pa
 constexpr double kPoisson = 0.3;
@@ -86,6 +90,47 @@ TEST(ObliqueYadeMindlinCli, WhatYadesLinesCannotModelExits2) {
   const auto plain = run_cli(kSteel + " --yade-version 2024.02a --friction 0.3 --json");
   ASSERT_EQ(plain.status, 0) << plain.err;
   EXPECT_FALSE(nlohmann::json::parse(plain.out).contains("oblique"));
+}
+
+// The deck's oblique section: one check line per listed angle, in order, each carrying the printed e_t;
+// frictionless lines give a head-on deck.
+TEST(ObliqueYadeMindlinCli, DeckHasOneObliqueCheckLinePerAngle) {
+  TempFolder folder;
+  const auto deck = (folder.path / "check.py").string();
+  const auto r =
+      run_cli(kSteel + " --yade-version 2023.02a --friction 0.3 --angles 5,20,45,70 --json --deck " + deck);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto out = nlohmann::json::parse(r.out);
+  const auto& impacts = out["oblique"]["impacts"];
+  std::istringstream text(slurp(deck));
+  std::size_t found = 0;
+  const std::string prefix = "    'restitution-oblique-check code=yade contact=pair angle=";
+  for (std::string line; std::getline(text, line);) {
+    if (line.rfind(prefix, 0) != 0) continue;
+    ASSERT_LT(found, impacts.size()) << line;
+    EXPECT_EQ(std::stod(line.substr(prefix.size())), impacts[found]["angle_deg"].get<double>()) << line;
+    const std::size_t et = line.find(" et_restitution=");
+    ASSERT_NE(et, std::string::npos) << line;
+    EXPECT_EQ(std::stod(line.substr(et + 16)), impacts[found]["tangential_restitution"].get<double>())
+        << line;
+    EXPECT_NE(line.find(" diff=%.15g"), std::string::npos) << line;
+    ++found;
+  }
+  EXPECT_EQ(found, 4U);
+  const auto frictionless = (folder.path / "frictionless.py").string();
+  ASSERT_EQ(run_cli(kSteel + " --yade-version 2023.02a --deck " + frictionless).status, 0);
+  EXPECT_EQ(slurp(frictionless).find("restitution-oblique-check"), std::string::npos);
+}
+
+// At 0 degrees e_t is nan (no slip to restitute): the deck must spell it as Python reads it, not `nan`.
+TEST(ObliqueYadeMindlinCli, DeckSpellsAHeadOnAnglesNanForPython) {
+  TempFolder folder;
+  const auto deck = (folder.path / "check.py").string();
+  ASSERT_EQ(run_cli(kSteel + " --yade-version 2023.02a --friction 0.3 --angles 0,30 --deck " + deck).status,
+            0);
+  const std::string text = slurp(deck);
+  EXPECT_NE(text.find("OBLIQUE_ET_RESTITUTION = [float('nan'), "), std::string::npos) << text;
+  EXPECT_NE(text.find("if s0 != 0 else float('nan')"), std::string::npos) << text;
 }
 
 // `restitution oblique` models viscoelastic Hertz; YADE's Mindlin comes with the Tsuji force.

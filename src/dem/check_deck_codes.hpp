@@ -42,6 +42,10 @@ std::string lammps_family_pass(const CheckDeckRequest& r, double dt, long steps)
 // The whole deck: both passes (dt = T/n, then T/(10 n)) and the check lines.
 std::string lammps_family_check_deck(const CheckDeckRequest& r, int n);
 
+// A Python list [a, b, c] of `values`, each in the shortest form that reads back to the same double (nan and
+// inf as float('nan'), float('inf')).
+std::string python_list(const std::vector<double>& values);
+
 // YADE: the Python function collide(r1, r2, v, dt, steps) -> (eps, gap [m]): a fresh scene with the three
 // lines (material, Ip2, Law2) in their places and two touching spheres closing at v, run for `steps` at `dt`.
 std::string yade_collide_function(const std::vector<std::string>& lines);

@@ -10,16 +10,15 @@
 #include "restitution/errors.hpp"
 
 namespace restitution::dem {
-namespace {
-
-// [a, b, c] with every number in the shortest form that reads back to the same double.
 std::string python_list(const std::vector<double>& values) {
   std::string s = "[";
-  for (std::size_t i = 0; i < values.size(); ++i) s += fmt::format("{}{}", i > 0 ? ", " : "", values[i]);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) s += ", ";
+    // Python has no nan or inf literal: e_t at 0 degrees is nan.
+    s += std::isfinite(values[i]) ? fmt::format("{}", values[i]) : fmt::format("float('{}')", values[i]);
+  }
   return s + "]";
 }
-
-}  // namespace
 
 std::string yade_collide_function(const std::vector<std::string>& lines) {
   if (lines.size() != 3) {

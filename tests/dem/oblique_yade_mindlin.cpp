@@ -15,7 +15,8 @@
 // counting as the sphere's (without that gain e_t was up to 2.2e-3 off where the contact sticks).
 // ObliqueYadeMindlinDemLines runs the lines `dem --code yade --friction` prints (steel, glass, steel at ε =
 // 0.98) as printed, at the printed timestep and a tenth of it, against the printed outputs; it also measures
-// YADE's e_t error coefficient C (N |Δe_t| <= C, dem_oblique.cpp's yade_et_error_coefficient).
+// YADE's e_t error coefficient C (N |Δe_t| <= C, dem_oblique.cpp's yade_et_error_coefficient), and runs
+// the check deck `--deck` writes for the same lines.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -260,6 +261,50 @@ TEST_P(ObliqueYadeMindlinDemLines, YadeGivesThePrintedObliqueOutputs) {
         << where;
   }
   std::cout << "largest N |e_t(N) - e_t| at the printed timestep: " << largest_scaled_error << "\n";
+}
+
+// `--deck FILE` with friction: the check deck, run as `yade -n -x FILE`, prints the head-on check lines and
+// one restitution-oblique-check line per listed angle, YADE's e_t extrapolated from t_c/20000 and t_c/200000
+// against the printed one: |diff| <= 1e-5 (measured: <= 8.3e-7 for steel at A = 1e-7 s).
+TEST_P(ObliqueYadeMindlinDemLines, CheckDeckCoversTheObliqueImpacts) {
+  const std::string program = dem::yade_program();
+  ASSERT_FALSE(program.empty()) << "yade not found on PATH: scripts/setup installs Debian's yade";
+  TempFolder folder;
+  const std::string deck = (folder.path / "check.py").string();
+  const auto r = restitution::test_support::run_cli(
+      std::string("dem --code yade --radius 1e-3 --yade-version 2023.02a --json --deck ") + deck + " " +
+      GetParam());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto out = nlohmann::json::parse(r.out);
+  const auto& impacts = out["oblique"]["impacts"];
+  const std::string output_path = (folder.path / "out.txt").string();
+  const std::string command = program + " -n -x " + deck + " > " + output_path + " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << slurp(output_path);
+  std::istringstream text(slurp(output_path));
+  std::size_t head_on = 0;
+  std::size_t oblique = 0;
+  double largest = 0.0;
+  for (std::string line; std::getline(text, line);) {
+    if (line.rfind("restitution-check ", 0) == 0) ++head_on;
+    if (line.rfind("restitution-oblique-check code=yade contact=pair ", 0) != 0) continue;
+    ASSERT_LT(oblique, impacts.size()) << line;
+    const auto field = [&](const std::string& key) {
+      const std::size_t at = line.find(" " + key + "=");
+      EXPECT_NE(at, std::string::npos) << key << " in " << line;
+      return std::stod(line.substr(at + key.size() + 2));
+    };
+    const double et = impacts[oblique]["tangential_restitution"].get<double>();
+    EXPECT_EQ(field("angle"), impacts[oblique]["angle_deg"].get<double>()) << line;
+    EXPECT_EQ(field("et_restitution"), et) << line;
+    EXPECT_NEAR(field("et_code"), (10.0 * field("et_dt") - field("et_10dt")) / 9.0, 1e-13) << line;
+    EXPECT_NEAR(field("diff"), field("et_code") - et, 1e-13) << line;
+    EXPECT_NEAR(field("diff"), 0.0, 1e-5) << line;
+    largest = std::max(largest, std::abs(field("diff")));
+    ++oblique;
+  }
+  EXPECT_EQ(head_on, 3U);  // v/10, v, 10 v
+  EXPECT_EQ(oblique, impacts.size());
+  restitution::test_support::record_largest_et_difference(largest);
 }
 
 // Steel at A = 1e-7 s (ε = 0.914), glass at ε = 0.7 and μ = 0.5, steel at ε = 0.98 and μ = 0.1.

@@ -354,11 +354,7 @@ void add_dem_command(CLI::App& app, Action& chosen) {
         impacts = pair_oblique(r.deck, dem::pair_of(material_from(o->material)), o->oblique,
                                r.reference_velocity_m_s, o->tolerance);
       }
-      // The check deck's oblique section is LAMMPS's.
-      if (o->deck) {
-        o->deck_run = write_check_deck(*o->deck, r, material_from(o->material),
-                                       r.deck.code == dem::Code::yade ? std::nullopt : impacts);
-      }
+      if (o->deck) o->deck_run = write_check_deck(*o->deck, r, material_from(o->material), impacts);
       if (o->json) {
         print_json(r, *o, from_fit, p, impacts);
       } else {

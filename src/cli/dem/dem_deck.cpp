@@ -5,6 +5,7 @@
 
 #include "cli/common/output_files.hpp"
 #include "cli/dem/oblique_check_deck.hpp"
+#include "cli/dem/oblique_check_deck_yade.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -50,10 +51,14 @@ std::string write_check_deck(const std::string& path, const dem::LinesResult& r,
         r.yade_exact_deck ? ": it cannot express the law; eps_restitution is the eps these lines give there"
                           : ""));
   }
-  // The oblique section is LAMMPS's and LIGGGHTS's (oblique_check_deck.hpp); YADE's check deck stays head-on.
-  if (!oblique || oblique->code == dem::Code::yade) return write_check_deck(path, request);
+  // The oblique section: LAMMPS's and LIGGGHTS's (oblique_check_deck.hpp), YADE's
+  // (oblique_check_deck_yade.hpp).
+  if (!oblique) return write_check_deck(path, request);
   write_file_atomically(
-      path, dem::check_deck(request) + oblique_check_section(*oblique, r.deck.prerequisites, r.deck.lines));
+      path,
+      dem::check_deck(request) + (oblique->code == dem::Code::yade
+                                      ? yade_oblique_check_section(*oblique, r.deck.lines)
+                                      : oblique_check_section(*oblique, r.deck.prerequisites, r.deck.lines)));
   return dem::check_deck_command(request.code, path);
 }
 

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "dem/dem_codes.hpp"
+
 namespace restitution::cli {
 namespace {
 
@@ -74,38 +76,55 @@ std::string pass(const DemOblique& r, const std::vector<std::string>& prerequisi
 
 }  // namespace
 
-int oblique_check_steps(dem::Code code) {
-  return code == dem::Code::liggghts ? 10000 : 2000;
+int oblique_check_steps_per_contact(dem::Code code) {
+  return code == dem::Code::yade ? 20000 : code == dem::Code::liggghts ? 10000 : 2000;
+}
+
+ObliqueCheckSteps oblique_check_steps(const DemOblique& r, int per_contact) {
+  ObliqueCheckSteps s;
+  s.per_contact = per_contact;
+  s.shortest_contact_s = HUGE_VAL;
+  double longest = 0.0;
+  for (const auto& i : r.impacts) {
+    s.shortest_contact_s = std::min(s.shortest_contact_s, i.result.contact_time_s);
+    longest = std::max(longest, i.result.contact_time_s);
+  }
+  s.dt_s = s.shortest_contact_s / per_contact;
+  s.steps = static_cast<long>(std::ceil(1.1 * longest / s.dt_s));
+  return s;
+}
+
+std::string oblique_check_heading(const DemOblique& r, const ObliqueCheckSteps& s) {
+  return fmt::format(
+      "oblique impacts ({}): the lines again, at each angle restitution dem lists, at {} m/s; dt = t_c/{} "
+      "and "
+      "t_c/{}, t_c = {} s the shortest contact",
+      r.geometry.second ? "pair" : "wall", r.speed_m_s, s.per_contact, 10 * s.per_contact,
+      s.shortest_contact_s);
+}
+
+std::string oblique_check_line(const DemOblique& r, std::size_t i, const ObliqueCheckValues& values) {
+  return fmt::format(
+      "{} code={} contact={} angle={} et_10dt={} et_dt={} et_code={} et_restitution={} diff={}",
+      kObliqueCheckTag, dem::code_name(r.code), r.geometry.second ? "pair" : "wall", r.angles_deg[i],
+      values.et_10dt, values.et_dt, values.et_code, r.impacts[i].result.tangential_restitution, values.diff);
 }
 
 std::string oblique_check_section(const DemOblique& r, const std::vector<std::string>& prerequisites,
                                   const std::vector<std::string>& lines) {
-  double shortest = HUGE_VAL;
-  double longest = 0.0;
-  for (const auto& i : r.impacts) {
-    shortest = std::min(shortest, i.result.contact_time_s);
-    longest = std::max(longest, i.result.contact_time_s);
-  }
-  const int n = oblique_check_steps(r.code);
-  const double dt = shortest / n;
-  const auto steps = static_cast<long>(std::ceil(1.1 * longest / dt));
-  const char* contact = r.geometry.second ? "pair" : "wall";
-  std::string d = fmt::format(
-      "\n# oblique impacts ({}): the lines again, at each angle restitution dem lists, at {} m/s; "
-      "dt = t_c/{} and t_c/{}, t_c = {} s the shortest contact\n",
-      contact, r.speed_m_s, n, 10 * n, shortest);
-  d += pass(r, prerequisites, lines, dt, steps, "rc_oblique_10dt");
-  d += pass(r, prerequisites, lines, dt / 10.0, 10 * steps, "rc_oblique_dt");
+  const ObliqueCheckSteps s = oblique_check_steps(r, oblique_check_steps_per_contact(r.code));
+  std::string d = "\n# " + oblique_check_heading(r, s) + "\n";
+  d += pass(r, prerequisites, lines, s.dt_s, s.steps, "rc_oblique_10dt");
+  d += pass(r, prerequisites, lines, s.dt_s / 10.0, 10 * s.steps, "rc_oblique_dt");
   d += "\n# the oblique check lines\n";
   for (std::size_t i = 0; i < r.angles_deg.size(); ++i) {
     const double et = r.impacts[i].result.tangential_restitution;
     d += fmt::format("variable rc_oblique_code{0} equal (10*v_rc_oblique_dt{0}-v_rc_oblique_10dt{0})/9\n", i);
     d += fmt::format("variable rc_oblique_diff{0} equal v_rc_oblique_code{0}-({1})\n", i, et);
-    d += fmt::format(
-        "print \"{1} code={5} contact={2} angle={3} et_10dt=${{rc_oblique_10dt{0}}} "
-        "et_dt=${{rc_oblique_dt{0}}} et_code=${{rc_oblique_code{0}}} et_restitution={4} "
-        "diff=${{rc_oblique_diff{0}}}\"\n",
-        i, kObliqueCheckTag, contact, r.angles_deg[i], et, dem::code_name(r.code));
+    const auto variable = [i](const char* name) { return fmt::format("${{rc_oblique_{}{}}}", name, i); };
+    d += "print \"" +
+         oblique_check_line(r, i, {variable("10dt"), variable("dt"), variable("code"), variable("diff")}) +
+         "\"\n";
   }
   return d;
 }

@@ -8,8 +8,9 @@
 //   restitution-oblique-check code=lammps contact=pair angle=30 et_10dt=... et_dt=... et_code=...
 //   et_restitution=... diff=...
 //
-// et_code = (10 et_dt - et_10dt)/9 (both codes are first order in dt here), diff = et_code - et_restitution.
-// LIGGGHTS 3.8.0 runs the same commands as LAMMPS (equal-style variables, ${...}, no $(...)).
+// et_code = (10 et_dt - et_10dt)/9 (the codes are first order in dt here), diff = et_code - et_restitution.
+// LIGGGHTS 3.8.0 runs the same commands as LAMMPS (equal-style variables, ${...}, no $(...)); YADE's deck has
+// the same section in Python (oblique_check_deck_yade.hpp); the step choice and the line are shared.
 #include <string>
 #include <vector>
 
@@ -24,8 +25,29 @@ inline constexpr const char* kObliqueCheckTag = "restitution-oblique-check";
 // Steps per shortest contact of the coarse pass. LAMMPS: 2000 (|diff| <= 2e-7 on 1 mm steel). LIGGGHTS
 // decides stick or slip once per step, so its e_t is less smoothly first order: on the 1 mm steel lines of
 // docs/dem.md (six angles) the largest |diff| was 8.0e-6 at 2000 and 1.8e-6 at 10000 (its printed steps for
-// e_t within 1e-4; glass 1.6e-6, steel at eps 0.98 4.2e-7), so 10000.
-int oblique_check_steps(dem::Code code);
+// e_t within 1e-4; glass 1.6e-6, steel at eps 0.98 4.2e-7), so 10000. YADE: 20000 (its first-order rest is
+// still 1.1e-5 at 2000, 1 mm steel at 60°; oblique_check_deck_yade.hpp).
+int oblique_check_steps_per_contact(dem::Code code);
+
+// The step choice of both passes: dt = t_c/per_contact (t_c the shortest contact), `steps` of it lasting
+// 1.1 times the longest contact (the fine pass takes dt/10 and 10 times the steps).
+struct ObliqueCheckSteps {
+  int per_contact = 0;
+  double shortest_contact_s = 0.0;
+  double dt_s = 0.0;
+  long steps = 0;
+};
+ObliqueCheckSteps oblique_check_steps(const DemOblique& r, int per_contact);
+
+// The section's heading comment (without the comment mark): contact, speed, dt choice.
+std::string oblique_check_heading(const DemOblique& r, const ObliqueCheckSteps& s);
+
+// The check line of the impact at angle i, the code's measured values as the deck spells them (a LAMMPS
+// ${variable}, a Python %-format).
+struct ObliqueCheckValues {
+  std::string et_10dt, et_dt, et_code, diff;
+};
+std::string oblique_check_line(const DemOblique& r, std::size_t i, const ObliqueCheckValues& values);
 
 // The deck's oblique section for `r` (pair_oblique or wall_oblique; r.code lammps or liggghts) and the lines
 // it was read from.
