@@ -142,4 +142,25 @@ TEST(DemObliqueLiggghts, CheckDeckHasOneObliqueLinePerAngle) {
   EXPECT_EQ(text.find("$("), std::string::npos);  // LIGGGHTS 3.8.0 has no immediate $(...) variables
 }
 
+// A head-on angle has no slip at impact (e_t undefined): it is left out of the deck with a comment saying so,
+// instead of a formula dividing by 0 that stopped LAMMPS; one angle left is read as fix ave/time's scalar (of
+// several, its vector). Both were found running such decks (`--angles 0,30`) in LAMMPS and LIGGGHTS.
+TEST(DemObliqueLiggghts, CheckDeckLeavesOutAHeadOnAngleAndReadsOneAngleAsAScalar) {
+  for (const std::string code : {"lammps", "liggghts"}) {
+    TempFolder folder;
+    const auto deck = folder.path / "check.in";
+    const auto r = run_cli("dem --code " + code + " " + kSteel +
+                           " --eps 0.9 --velocity 1 --friction 0.3 --angles 0,30 --deck " + deck.string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string text = slurp(deck.string());
+    EXPECT_NE(text.find("angle 0 deg has no slip at impact (e_t undefined): not checked"), std::string::npos)
+        << code;
+    EXPECT_EQ(text.find("angle=0 "), std::string::npos) << code;
+    EXPECT_NE(text.find("angle=30 "), std::string::npos) << code;
+    EXPECT_EQ(text.find("nan"), std::string::npos) << code;
+    EXPECT_NE(text.find("equal f_rc_oblique_hold\n"), std::string::npos) << code;
+    EXPECT_EQ(text.find("f_rc_oblique_hold["), std::string::npos) << code;
+  }
+}
+
 }  // namespace
