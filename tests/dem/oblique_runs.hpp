@@ -2,8 +2,8 @@
 #pragma once
 // What the oblique-impact checks against the DEM codes share (tests/dem/oblique_*.cpp): the impact angles, an
 // impact's outputs as a code reports them, the impact velocity of a unit speed, Richardson's extrapolation of
-// a first-order integrator, the record of the largest e_t difference, LIGGGHTS's run of printed lines and the
-// run of a check deck's oblique section.
+// a first-order integrator, the record of the largest e_t difference, LIGGGHTS's and YADE's runs of printed
+// lines and the run of a check deck's oblique section.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -124,6 +124,75 @@ inline std::vector<ObliqueOutcome> run_liggghts_oblique(const std::string& progr
     out[i] = {-(dvx - kObliqueRunRadius * moving[2] - kObliqueRunRadius * rest[2]) / s0,
               std::atan2(dvx, dvz) * 180.0 / std::numbers::pi, -moving[2], -rest[2]};
   }
+  return out;
+}
+
+// YADE (`program`) on `yade_lines` (the material's append, the Ip2 functor, the Law2 functor, as `restitution
+// dem --code yade` prints them) at 1 m/s, one collision per angle of two 1 mm spheres 10 mm apart (body 2k+1
+// onto body 2k at rest) or one on a utils.wall at z = 0 (body k), run_time s at dt s. YADE's contact-point
+// velocity is v + ω × c with c from the centre to the contact point, below the moving sphere: our spins are
+// -ω_y, as for LAMMPS.
+inline std::vector<ObliqueOutcome> run_yade_oblique(const std::string& program,
+                                                    const std::vector<std::string>& yade_lines,
+                                                    const std::vector<double>& angles_deg, bool wall,
+                                                    double spin, double dt, double run_time) {
+  TempFolder folder;
+  const auto steps = static_cast<long>(std::ceil(run_time / dt));
+  std::ostringstream script;
+  script.precision(17);
+  script << "import math\nR, SPIN = " << kObliqueRunRadius << ", " << spin << "\nANGLES = [";
+  for (const double a : angles_deg) script << a << ", ";
+  script << "]\nWALL = " << (wall ? "True" : "False") << "\n"
+         << "mat = " << yade_lines.at(0) << "\nIP2 = " << yade_lines.at(1) << "\nLAW2 = " << yade_lines.at(2)
+         << "\n"
+         << R"(moving = []
+for i, a in enumerate(ANGLES):
+    x = -0.04 + 0.01 * i
+    if not WALL:
+        O.bodies.append(sphere((x, 0, 0), R, material=mat))
+    b = O.bodies.append(sphere((x, 0, R if WALL else 2 * R), R, material=mat))
+    O.bodies[b].state.vel = Vector3(math.sin(math.radians(a)), 0, -math.cos(math.radians(a)))
+    O.bodies[b].state.angVel = Vector3(0, -SPIN, 0)
+    moving.append(b)
+if WALL:
+    O.bodies.append(utils.wall(0, axis=2, material=mat))
+O.engines = [
+    ForceResetter(),
+    InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),
+    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
+                    [IP2], [LAW2]),
+    NewtonIntegrator(damping=0, gravity=(0, 0, 0)),
+]
+)"
+         << "O.dt = " << dt << "\nO.run(" << steps << ", True)\n"
+         << R"(for i, b in enumerate(moving):
+    s = O.bodies[b].state
+    r = O.bodies[b - 1].state if not WALL else None
+    print('RESTITUTION_OBLIQUE %d %.17g %.17g %.17g %.17g' % (
+        i, s.vel[0] - (r.vel[0] if r else 0), s.vel[2] - (r.vel[2] if r else 0), s.angVel[1],
+        r.angVel[1] if r else 0))
+)";
+  std::ofstream(folder.path / "oblique.py") << script.str();
+  const std::string output_path = (folder.path / "out.txt").string();
+  const std::string command =
+      program + " -n -x " + (folder.path / "oblique.py").string() + " > " + output_path + " 2>&1";
+  EXPECT_EQ(std::system(command.c_str()), 0) << command << "\n" << slurp(output_path);
+  std::vector<ObliqueOutcome> out(angles_deg.size());
+  std::size_t read = 0;
+  std::istringstream lines(slurp(output_path));
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("RESTITUTION_OBLIQUE ", 0) != 0) continue;
+    std::istringstream row(line.substr(20));
+    std::size_t i = 0;
+    std::array<double, 4> v{};  // Δvx, Δvz, ω_y of the moving sphere and of the one at rest
+    row >> i >> v[0] >> v[1] >> v[2] >> v[3];
+    const auto [dvx, dvz, wy, wy_rest] = v;
+    const double s0 = impact_at(angles_deg.at(i), spin).tangential_m_s + kObliqueRunRadius * spin;
+    out.at(i) = {-(dvx - kObliqueRunRadius * wy - kObliqueRunRadius * wy_rest) / s0,
+                 std::atan2(dvx, dvz) * 180.0 / std::numbers::pi, -wy, -wy_rest};
+    ++read;
+  }
+  EXPECT_EQ(read, angles_deg.size()) << script.str() << "\n" << slurp(output_path);
   return out;
 }
 

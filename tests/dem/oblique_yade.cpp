@@ -12,12 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -32,8 +27,6 @@ namespace {
 
 using namespace restitution;
 using namespace restitution::oblique;
-using restitution::test_support::slurp;
-using restitution::test_support::TempFolder;
 
 constexpr double kRadius = 1e-3;
 constexpr double kDensity = 7800.0;
@@ -51,73 +44,16 @@ constexpr int kCoarseSteps = 20000;
 using Outcome = restitution::test_support::ObliqueOutcome;
 
 using restitution::test_support::impact_at;
+using restitution::test_support::run_yade_oblique;
 
-// YADE's contact-point velocity is v + ω × c with c from the centre to the contact point, below the moving
-// sphere: our spins are -ω_y, as for LAMMPS. A pair: body 2k+1 moves onto body 2k at rest; a wall: body k
-// onto utils.wall at z = 0.
-std::vector<Outcome> run_yade(const std::string& program, bool wall, double shear_damping, double spin,
-                              double dt, double run_time) {
-  TempFolder folder;
-  const auto steps = static_cast<long>(std::ceil(run_time / dt));
-  std::ostringstream script;
-  script.precision(17);
-  script << "import math\nR, SPIN = " << kRadius << ", " << spin << "\nANGLES = [";
-  for (const double a : kAnglesDeg) script << a << ", ";
-  script << "]\nWALL = " << (wall ? "True" : "False") << "\n"
-         << "mat = O.materials.append(ViscElMat(kn=" << 2.0 * kNormalStiffness
-         << ", cn=" << 2.0 * kNormalDamping << ", ks=" << 2.0 * kShearStiffness
-         << ", cs=" << 2.0 * shear_damping << ", frictionAngle=math.atan(" << kFriction
-         << "), density=" << kDensity << "))\n"
-         << R"(moving = []
-for i, a in enumerate(ANGLES):
-    x = -0.04 + 0.01 * i
-    if not WALL:
-        O.bodies.append(sphere((x, 0, 0), R, material=mat))
-    b = O.bodies.append(sphere((x, 0, R if WALL else 2 * R), R, material=mat))
-    O.bodies[b].state.vel = Vector3(math.sin(math.radians(a)), 0, -math.cos(math.radians(a)))
-    O.bodies[b].state.angVel = Vector3(0, -SPIN, 0)
-    moving.append(b)
-if WALL:
-    O.bodies.append(utils.wall(0, axis=2, material=mat))
-O.engines = [
-    ForceResetter(),
-    InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),
-    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
-                    [Ip2_ViscElMat_ViscElMat_ViscElPhys()],
-                    [Law2_ScGeom_ViscElPhys_Basic()]),
-    NewtonIntegrator(damping=0, gravity=(0, 0, 0)),
-]
-)"
-         << "O.dt = " << dt << "\nO.run(" << steps << ", True)\n"
-         << R"(for i, b in enumerate(moving):
-    s = O.bodies[b].state
-    r = O.bodies[b - 1].state if not WALL else None
-    print('RESTITUTION_OBLIQUE %d %.17g %.17g %.17g %.17g' % (
-        i, s.vel[0] - (r.vel[0] if r else 0), s.vel[2] - (r.vel[2] if r else 0), s.angVel[1],
-        r.angVel[1] if r else 0))
-)";
-  std::ofstream(folder.path / "oblique.py") << script.str();
-  const std::string command = program + " -n -x " + (folder.path / "oblique.py").string() + " > " +
-                              (folder.path / "out.txt").string() + " 2>&1";
-  const std::string output_path = (folder.path / "out.txt").string();
-  EXPECT_EQ(std::system(command.c_str()), 0) << command << "\n" << slurp(output_path);
-  std::vector<Outcome> out(kAnglesDeg.size());
-  std::size_t read = 0;
-  std::istringstream lines(slurp(output_path));
-  for (std::string line; std::getline(lines, line);) {
-    if (line.rfind("RESTITUTION_OBLIQUE ", 0) != 0) continue;
-    std::istringstream row(line.substr(20));
-    std::size_t i = 0;
-    std::array<double, 4> v{};  // Δvx, Δvz, ω_y of the moving sphere and of the one at rest
-    row >> i >> v[0] >> v[1] >> v[2] >> v[3];
-    const auto [dvx, dvz, wy, wy_rest] = v;
-    const double s0 = impact_at(kAnglesDeg.at(i), spin).tangential_m_s + kRadius * spin;
-    out.at(i) = {-(dvx - kRadius * wy - kRadius * wy_rest) / s0,
-                 std::atan2(dvx, dvz) * 180.0 / std::numbers::pi, -wy, -wy_rest};
-    ++read;
-  }
-  EXPECT_EQ(read, kAnglesDeg.size()) << script.str() << "\n" << slurp(output_path);
-  return out;
+// The ViscElMat lines of the contact (the material's append, Ip2, Law2) for run_yade_oblique.
+std::vector<std::string> viscel_lines(double shear_damping) {
+  std::ostringstream material;
+  material.precision(17);
+  material << "O.materials.append(ViscElMat(kn=" << 2.0 * kNormalStiffness << ", cn=" << 2.0 * kNormalDamping
+           << ", ks=" << 2.0 * kShearStiffness << ", cs=" << 2.0 * shear_damping
+           << ", frictionAngle=math.atan(" << kFriction << "), density=" << kDensity << "))";
+  return {material.str(), "Ip2_ViscElMat_ViscElMat_ViscElPhys()", "Law2_ScGeom_ViscElPhys_Basic()"};
 }
 
 // (wall, shear damping cs [N s/m], initial spin [rad/s])
@@ -149,8 +85,10 @@ TEST_P(ObliqueYade, ImpactsAgreeWithin1e4) {
     longest = std::max(longest, predicted.back().contact_time_s);
   }
   const double dt = shortest / kCoarseSteps;
-  const auto coarse = run_yade(program, wall, shear_damping, spin, dt, 1.1 * longest);
-  const auto fine = run_yade(program, wall, shear_damping, spin, dt / 10.0, 1.1 * longest);
+  const auto coarse =
+      run_yade_oblique(program, viscel_lines(shear_damping), kAnglesDeg, wall, spin, dt, 1.1 * longest);
+  const auto fine = run_yade_oblique(program, viscel_lines(shear_damping), kAnglesDeg, wall, spin, dt / 10.0,
+                                     1.1 * longest);
   const auto extrapolate = restitution::test_support::extrapolate_first_order;
   double largest = 0.0;
   for (std::size_t i = 0; i < kAnglesDeg.size(); ++i) {

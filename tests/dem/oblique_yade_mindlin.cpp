@@ -56,6 +56,7 @@ constexpr int kCoarseSteps = 20000;
 
 using Outcome = restitution::test_support::ObliqueOutcome;
 using restitution::test_support::impact_at;
+using restitution::test_support::run_yade_oblique;
 
 // Ip2_FrictMat_FrictMat_MindlinPhys::go for two bodies of one material: E* = Y/(2(1 - ν²)), G = Y/(2(1 + ν)),
 // R* from the geometry's radii (a wall's refR1 is not positive, so both are the sphere's: R* = R/2 there
@@ -88,71 +89,6 @@ std::vector<std::string> printed_style_lines() {
   return {material.str(), ip2.str(), "Law2_ScGeom_MindlinPhys_Mindlin()"};
 }
 
-// One collision per angle at 1 m/s, 10 mm apart: body 2k+1 onto body 2k at rest, or body k onto a
-// utils.wall at z = 0; the lines pasted as they are.
-std::vector<Outcome> run_yade(const std::string& program, const std::vector<std::string>& yade_lines,
-                              const std::vector<double>& angles_deg, bool wall, double spin, double dt,
-                              double run_time) {
-  TempFolder folder;
-  const auto steps = static_cast<long>(std::ceil(run_time / dt));
-  std::ostringstream script;
-  script.precision(17);
-  script << "import math\nR, SPIN = " << kRadius << ", " << spin << "\nANGLES = [";
-  for (const double a : angles_deg) script << a << ", ";
-  script << "]\nWALL = " << (wall ? "True" : "False") << "\n"
-         << "mat = " << yade_lines.at(0) << "\nIP2 = " << yade_lines.at(1) << "\nLAW2 = " << yade_lines.at(2)
-         << "\n"
-         << R"(moving = []
-for i, a in enumerate(ANGLES):
-    x = -0.04 + 0.01 * i
-    if not WALL:
-        O.bodies.append(sphere((x, 0, 0), R, material=mat))
-    b = O.bodies.append(sphere((x, 0, R if WALL else 2 * R), R, material=mat))
-    O.bodies[b].state.vel = Vector3(math.sin(math.radians(a)), 0, -math.cos(math.radians(a)))
-    O.bodies[b].state.angVel = Vector3(0, -SPIN, 0)
-    moving.append(b)
-if WALL:
-    O.bodies.append(utils.wall(0, axis=2, material=mat))
-O.engines = [
-    ForceResetter(),
-    InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),
-    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
-                    [IP2], [LAW2]),
-    NewtonIntegrator(damping=0, gravity=(0, 0, 0)),
-]
-)"
-         << "O.dt = " << dt << "\nO.run(" << steps << ", True)\n"
-         << R"(for i, b in enumerate(moving):
-    s = O.bodies[b].state
-    r = O.bodies[b - 1].state if not WALL else None
-    print('RESTITUTION_OBLIQUE %d %.17g %.17g %.17g %.17g' % (
-        i, s.vel[0] - (r.vel[0] if r else 0), s.vel[2] - (r.vel[2] if r else 0), s.angVel[1],
-        r.angVel[1] if r else 0))
-)";
-  std::ofstream(folder.path / "oblique.py") << script.str();
-  const std::string output_path = (folder.path / "out.txt").string();
-  const std::string command =
-      program + " -n -x " + (folder.path / "oblique.py").string() + " > " + output_path + " 2>&1";
-  EXPECT_EQ(std::system(command.c_str()), 0) << command << "\n" << slurp(output_path);
-  std::vector<Outcome> out(angles_deg.size());
-  std::size_t read = 0;
-  std::istringstream lines(slurp(output_path));
-  for (std::string line; std::getline(lines, line);) {
-    if (line.rfind("RESTITUTION_OBLIQUE ", 0) != 0) continue;
-    std::istringstream row(line.substr(20));
-    std::size_t i = 0;
-    std::array<double, 4> v{};  // Δvx, Δvz, ω_y of the moving sphere and of the one at rest
-    row >> i >> v[0] >> v[1] >> v[2] >> v[3];
-    const auto [dvx, dvz, wy, wy_rest] = v;
-    const double s0 = impact_at(angles_deg.at(i), spin).tangential_m_s + kRadius * spin;
-    out.at(i) = {-(dvx - kRadius * wy - kRadius * wy_rest) / s0,
-                 std::atan2(dvx, dvz) * 180.0 / std::numbers::pi, -wy, -wy_rest};
-    ++read;
-  }
-  EXPECT_EQ(read, angles_deg.size()) << script.str() << "\n" << slurp(output_path);
-  return out;
-}
-
 // (wall, initial spin [rad/s])
 class ObliqueYadeMindlin : public ::testing::TestWithParam<std::tuple<bool, double>> {};
 
@@ -178,9 +114,10 @@ TEST_P(ObliqueYadeMindlin, ImpactsAgreeWithin1e4) {
     longest = std::max(longest, predicted.back().contact_time_s);
   }
   const double dt = shortest / kCoarseSteps;
-  const auto coarse = run_yade(program, printed_style_lines(), kAnglesDeg, wall, spin, dt, 1.1 * longest);
+  const auto coarse =
+      run_yade_oblique(program, printed_style_lines(), kAnglesDeg, wall, spin, dt, 1.1 * longest);
   const auto fine =
-      run_yade(program, printed_style_lines(), kAnglesDeg, wall, spin, dt / 10.0, 1.1 * longest);
+      run_yade_oblique(program, printed_style_lines(), kAnglesDeg, wall, spin, dt / 10.0, 1.1 * longest);
   const auto extrapolate = restitution::test_support::extrapolate_first_order;
   double largest = 0.0;
   for (std::size_t i = 0; i < kAnglesDeg.size(); ++i) {
@@ -238,8 +175,8 @@ TEST_P(ObliqueYadeMindlinDemLines, YadeGivesThePrintedObliqueOutputs) {
   }
   const double dt = out["oblique"]["yade_steps"]["timestep_s"].get<double>();
   const double accuracy = out["oblique"]["yade_steps"]["et_accuracy"].get<double>();
-  const auto coarse = run_yade(program, yade_lines, angles, false, 0.0, dt, 1.1 * longest);
-  const auto fine = run_yade(program, yade_lines, angles, false, 0.0, dt / 10.0, 1.1 * longest);
+  const auto coarse = run_yade_oblique(program, yade_lines, angles, false, 0.0, dt, 1.1 * longest);
+  const auto fine = run_yade_oblique(program, yade_lines, angles, false, 0.0, dt / 10.0, 1.1 * longest);
   const auto extrapolate = restitution::test_support::extrapolate_first_order;
   double largest_scaled_error = 0.0;  // N |Δe_t| at N = shortest contact / dt steps per contact
   for (std::size_t i = 0; i < angles.size(); ++i) {
