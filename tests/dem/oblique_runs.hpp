@@ -44,6 +44,34 @@ inline double extrapolate_first_order(double coarse, double fine) {
   return fine + (fine - coarse) / 9.0;
 }
 
+// Checks a code's impact, extrapolated from runs at dt (coarse) and dt/10 (fine), against the library's
+// `predicted` one: e_t within 1e-4 relative (1e-5 absolute near 0), the rebound angle and the spins (the
+// second for a pair) within 1e-4 relative. Returns |Δe_t|.
+inline double expect_extrapolated_agreement(const ObliqueOutcome& coarse, const ObliqueOutcome& fine,
+                                            const oblique::ObliqueResult& predicted, bool pair,
+                                            double radius_m, const std::string& label) {
+  const auto extrapolate = extrapolate_first_order;
+  const double et = extrapolate(coarse.et, fine.et);
+  const std::string where =
+      label + ": coarse e_t " + std::to_string(coarse.et) + ", fine " + std::to_string(fine.et);
+  EXPECT_NEAR(et, predicted.tangential_restitution,
+              std::max(1e-4 * std::abs(predicted.tangential_restitution), 1e-5))
+      << where;
+  const double rebound_deg = predicted.rebound_angle_rad * 180.0 / std::numbers::pi;
+  EXPECT_NEAR(extrapolate(coarse.rebound_deg, fine.rebound_deg), rebound_deg,
+              1e-4 * std::abs(rebound_deg) + 1e-5)
+      << where;
+  EXPECT_NEAR(extrapolate(coarse.spin, fine.spin), predicted.spin_first_rad_s,
+              1e-4 * std::abs(predicted.spin_first_rad_s) + 1e-5 / radius_m)
+      << where;
+  if (pair) {
+    EXPECT_NEAR(extrapolate(coarse.spin2, fine.spin2), predicted.spin_second_rad_s,
+                1e-4 * std::abs(predicted.spin_second_rad_s) + 1e-5 / radius_m)
+        << where;
+  }
+  return std::abs(et - predicted.tangential_restitution);
+}
+
 // The largest |e_t difference| of a test, in its XML record and on stdout.
 inline void record_largest_et_difference(double largest) {
   std::ostringstream text;

@@ -89,28 +89,12 @@ TEST_P(ObliqueYade, ImpactsAgreeWithin1e4) {
       run_yade_oblique(program, viscel_lines(shear_damping), kAnglesDeg, wall, spin, dt, 1.1 * longest);
   const auto fine = run_yade_oblique(program, viscel_lines(shear_damping), kAnglesDeg, wall, spin, dt / 10.0,
                                      1.1 * longest);
-  const auto extrapolate = restitution::test_support::extrapolate_first_order;
   double largest = 0.0;
   for (std::size_t i = 0; i < kAnglesDeg.size(); ++i) {
-    const ObliqueResult& p = predicted[i];
-    const double et = extrapolate(coarse[i].et, fine[i].et);
-    const double rebound = extrapolate(coarse[i].rebound_deg, fine[i].rebound_deg);
-    const double omega = extrapolate(coarse[i].spin, fine[i].spin);
     const std::string label = std::string(wall ? "wall" : "pair") + ", cs " + std::to_string(shear_damping) +
-                              " at " + std::to_string(kAnglesDeg[i]) + " deg, spin " + std::to_string(spin) +
-                              ": coarse e_t " + std::to_string(coarse[i].et) + ", fine " +
-                              std::to_string(fine[i].et);
-    EXPECT_NEAR(et, p.tangential_restitution, std::max(1e-4 * std::abs(p.tangential_restitution), 1e-5))
-        << label;
-    largest = std::max(largest, std::abs(et - p.tangential_restitution));
-    const double rebound_deg = p.rebound_angle_rad * 180.0 / std::numbers::pi;
-    EXPECT_NEAR(rebound, rebound_deg, 1e-4 * std::abs(rebound_deg) + 1e-5) << label;
-    EXPECT_NEAR(omega, p.spin_first_rad_s, 1e-4 * std::abs(p.spin_first_rad_s) + 1e-5 / kRadius) << label;
-    if (!wall) {
-      EXPECT_NEAR(extrapolate(coarse[i].spin2, fine[i].spin2), p.spin_second_rad_s,
-                  1e-4 * std::abs(p.spin_second_rad_s) + 1e-5 / kRadius)
-          << label;
-    }
+                              " at " + std::to_string(kAnglesDeg[i]) + " deg, spin " + std::to_string(spin);
+    largest = std::max(largest, restitution::test_support::expect_extrapolated_agreement(
+                                    coarse[i], fine[i], predicted[i], !wall, kRadius, label));
   }
   restitution::test_support::record_largest_et_difference(largest);
 }
