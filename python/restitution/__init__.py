@@ -542,7 +542,8 @@ def gas(*, radius=None, density=None, mass=None, eps=None, velocity=None, dissip
         Any member of the contact-law family (restitution's law names).
     end : {"delayed-recovery", "naive"}
     packing_fraction : float
-        phi in (0, 0.5).
+        phi in (0, 0.5), such that Haff's tau0 lies in [1e-300, 1e300] s (else a ValueError names the packing
+        fractions that work for the other arguments).
     rms_speed, temperature : float
         Exactly one: the initial rms speed per direction [m/s] (T0 = m v^2), or T0 = m<v^2>/3 [J].
     duration, haff_times : float
@@ -558,7 +559,8 @@ def gas(*, radius=None, density=None, mass=None, eps=None, velocity=None, dissip
     collision_rate_factor : float
         A factor on Enskog's collision rate.
     tolerance : float
-        Accuracy of each eps solve of a law without a fast table.
+        Accuracy of each eps solve of a law without a fast table, and of the calibration: in [1e-11, 1e-2] for
+        every law.
 
     Returns
     -------

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "gas/collision_integral.hpp"
+#include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 #include "restitution/units.hpp"
@@ -62,6 +63,10 @@ GasParticles particles_of(const GasInputs& in, const Rules& name) {
   p.diameter_m = 2.0 * *in.radius_m;
   (void)name.one_of(in.mass_kg, "mass", in.density_kg_m3, "density");
   p.mass_kg = in.mass_kg ? *in.mass_kg : sphere_mass_kg(*in.radius_m, *in.density_kg_m3);
+  if (!std::isnormal(p.mass_kg)) {
+    throw InvalidInput(fmt::format("{} and {} give a sphere mass of {} kg, beyond the doubles",
+                                   name("radius"), name("density"), p.mass_kg));
+  }
   if (!in.packing_fraction) throw InvalidInput(fmt::format("the gas needs {}", name("packing_fraction")));
   if (!(*in.packing_fraction > 0.0 && *in.packing_fraction < 0.5)) {
     throw InvalidInput(fmt::format("{} must be in (0, 0.5) (a homogeneous fluid), got {}",
@@ -69,6 +74,33 @@ GasParticles particles_of(const GasInputs& in, const Rules& name) {
   }
   p.packing_fraction = *in.packing_fraction;
   return p;
+}
+
+// τ₀ inside the range the theory computes in (restitution_gas/cooling.hpp), or a refusal naming the packing
+// fraction and the range of it that works for the other inputs: τ₀ ∝ 1/(φ g₂(φ)) with g₂ growing with φ, so
+// scaling φ by the factor τ₀ is off brings τ₀ inside (or further, by g₂).
+void check_haff_time(const CoolingRequest& r, const GasInputs& in, const Rules& name) {
+  const double log_tau0 = log_haff_time(r);
+  const double log_longest = std::log(kLongestHaffTimeS);
+  const double log_shortest = std::log(kShortestHaffTimeS);
+  if (log_tau0 >= log_shortest && log_tau0 <= log_longest) return;
+  const double phi = r.particles.packing_fraction;
+  const bool too_long = log_tau0 > log_longest;
+  const double bound = phi * std::exp(log_tau0 - (too_long ? log_longest : log_shortest));
+  const std::string why = fmt::format(
+      "{} = {:g} with these spheres, law and {} gives the Haff time tau0 = 1e{:.0f} s, outside "
+      "[{:g}, {:g}] s where the theory's times and rates are doubles",
+      name("packing_fraction"), phi, in.rms_speed_m_s ? name("rms_speed") : name("temperature"),
+      log_tau0 / std::log(10.0), kShortestHaffTimeS, kLongestHaffTimeS);
+  if (too_long && bound < 0.5) {
+    throw InvalidInput(
+        fmt::format("{}: {} must be in [{:.3g}, 0.5) here", why, name("packing_fraction"), bound));
+  }
+  if (!too_long) {
+    throw InvalidInput(
+        fmt::format("{}: {} must be in (0, {:.3g}] here", why, name("packing_fraction"), bound));
+  }
+  throw InvalidInput(fmt::format("{}: no packing fraction below 0.5 brings it inside", why));
 }
 
 ImpactLaw law_of(const GasInputs& in, const Rules& name) {
@@ -120,6 +152,13 @@ ImpactLaw law_of(const GasInputs& in, const Rules& name) {
 CoolingRequest cooling_request(const GasInputs& in, ArgumentStyle style) {
   const Rules name(style);
   CoolingRequest r;
+  // Checked for every law, also viscoelastic Hertz, whose ε comes from the fast table and whose calibration
+  // would otherwise take any number: the same range wherever the gas solves a collision (the default method).
+  const double smallest = min_tolerance(SolveOptions{}.method);
+  if (!(in.tolerance >= smallest && in.tolerance <= kMaxTolerance)) {
+    throw InvalidInput(fmt::format("{} must be in [{:g}, {:g}] (the accuracy of each eps solve), got {}",
+                                   name("tolerance"), smallest, kMaxTolerance, in.tolerance));
+  }
   r.particles = particles_of(in, name);
   r.law = law_of(in, name);
   const double speed_or_temperature =
@@ -129,6 +168,11 @@ CoolingRequest cooling_request(const GasInputs& in, ArgumentStyle style) {
                                 : speed_or_temperature;
   name.require_positive(in.rms_speed_m_s, "rms_speed", " m/s");
   name.require_positive(in.temperature_j, "temperature", " J");
+  if (!std::isnormal(r.initial_temperature_j)) {
+    throw InvalidInput(fmt::format("{} gives T0 = {} J, beyond the doubles",
+                                   in.rms_speed_m_s ? name("rms_speed") : name("temperature"),
+                                   r.initial_temperature_j));
+  }
   name.require_positive(in.duration_s, "duration", " s");
   name.require_positive(in.haff_times, "haff_times", "");
   r.duration = name.one_of(in.duration_s, "duration", in.haff_times, "haff_times");
@@ -150,6 +194,7 @@ CoolingRequest cooling_request(const GasInputs& in, ArgumentStyle style) {
     throw InvalidInput(fmt::format("{}: one of a number, haff and evolving", name("a2")));
   }
   r.a2_evolving = in.a2_evolving;
+  check_haff_time(r, in, name);
   if (in.a2_of_haff_eps) {
     r.a2 = sonine_a2_constant_eps(haff_reference(r).eps);  // the Maxwellian gas's Haff ε
   } else {

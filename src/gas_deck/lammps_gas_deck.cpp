@@ -24,6 +24,10 @@ namespace {
 
 // The time step is checked down to this fraction of the initial temperature (the fast speed falls 1000-fold).
 constexpr int kCheckedDecadesOfSpeed = 3;
+// The clustering warning: the longest shear mode grows at least this many times over the run ...
+constexpr double kClusteringGrowth = 2.0;
+// ... and reaches this fraction of the thermal speed.
+constexpr double kClusteringAmplitude = 0.1;
 
 // The companion of the code's law lines: LAMMPS `damping tsuji` (`dem --constant-eps`), LIGGGHTS `model
 // hertz` given the coefficientRestitution that its recipe (Tsuji-type damping, speed-independent ε) turns
@@ -144,6 +148,11 @@ std::string input(const GasDeck& g, dem::Code code, std::string_view law,
 }  // namespace
 
 GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_name) {
+  if (r.particles < 2 || r.particles > kMaxParticles) {
+    throw InvalidInput(
+        fmt::format("--particles must be in [2, {}] (a data file of about {} bytes per sphere), got {}",
+                    kMaxParticles, kDataBytesPerSphere, r.particles));
+  }
   if (r.material.radius1_m != r.material.radius2_m)
     throw InvalidInput("the gas deck is for equal spheres: give one --radius");
   if (!(r.max_eps_error >= 1e-6 && r.max_eps_error <= 0.05))
@@ -197,16 +206,18 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
   g.shear_critical_length_m = scales.shear_critical_length_m;
   g.shear_mode_growth = shear_mode_growth(scales, g.box_m, g.duration_s);
   // Clustering shows once the longest shear mode, of initial amplitude ~ 1/sqrt(N) of the thermal speed,
-  // reaches a tenth of it.
-  if (g.shear_mode_growth >= 0.1 * std::sqrt(static_cast<double>(r.particles))) {
+  // reaches a tenth of it by growing: only a box longer than L_c holds a growing mode, and a mode that does
+  // not at least double has not grown out of the thermal noise (with N <= 100 the noise alone is a tenth).
+  const double initial_amplitude = 1.0 / std::sqrt(static_cast<double>(r.particles));
+  if (g.box_m > g.shear_critical_length_m && g.shear_mode_growth >= kClusteringGrowth &&
+      g.shear_mode_growth * initial_amplitude >= kClusteringAmplitude) {
     g.warnings.push_back(fmt::format(
         "the constant-eps gas will cluster: its box ({:.4g} diameters) exceeds the shear-instability length "
-        "L_c = {:.4g} diameters and its longest shear mode grows {:.3g}-fold in {:.4g} s ({:.3g} tau0), past "
-        "a tenth of the thermal speed; Haff's law holds only while the gas stays homogeneous (fewer "
-        "particles "
-        "or a shorter run keep it so)",
+        "L_c = {:.4g} diameters and its longest shear mode grows {:.3g}-fold in {:.4g} s ({:.3g} tau0), from "
+        "about 1/sqrt(N) = {:.2g} to {:.2g} of the thermal speed; Haff's law holds only while the gas stays "
+        "homogeneous (fewer particles or a shorter run keep it so)",
         g.box_m / g.diameter_m, g.shear_critical_length_m / g.diameter_m, g.shear_mode_growth, g.duration_s,
-        g.duration_s / g.haff_time_s));
+        g.duration_s / g.haff_time_s, initial_amplitude, g.shear_mode_growth * initial_amplitude));
   }
 
   const double t_first = std::max(0.1 * g.haff_time_s, 50.0 * g.time_step_s);

@@ -45,9 +45,11 @@ void print_gas_deck_text(const GasDeckPaths& paths, const gas_deck::GasDeck& d,
                          const gas_deck::GasDeckRequest& request) {
   fmt::print("# gas deck: {} spheres, packing fraction {}, box {:.6g} m ({:.4g} diameters), seed {}\n",
              request.particles, request.packing_fraction, d.box_m, d.box_m / d.diameter_m, request.seed);
-  fmt::print("# viscoelastic gas: {}\n# constant-eps companion (eps = {:.10g}): {}\n# data file: {}\n",
-             paths.law_input.string(), d.constant_eps, paths.constant_eps_input.string(),
-             paths.data.string());
+  fmt::print(
+      "# viscoelastic gas: {}\n# constant-eps companion (eps = {:.10g}): {}\n"
+      "# data file: {} ({} bytes, {:.1f} per sphere)\n",
+      paths.law_input.string(), d.constant_eps, paths.constant_eps_input.string(), paths.data.string(),
+      d.data.size(), static_cast<double>(d.data.size()) / static_cast<double>(request.particles));
   fmt::print(
       "# tau0 = {:.6g} s (constant-eps gas at T0 = {:.6g} J); duration {:.6g} s = {:.4g} tau0; {} "
       "temperature prints\n",
@@ -55,8 +57,15 @@ void print_gas_deck_text(const GasDeckPaths& paths, const gas_deck::GasDeck& d,
       d.print_times_s.size() + 1);
   fmt::print("# dt0 = {:.6g} s (worst |eps error| {:.3g} <= {} at {:.4g} m/s), growing as (T0/T)^(1/10)\n",
              d.time_step_s, d.eps_error_worst, request.max_eps_error, d.fast_speed_m_s);
-  fmt::print("# shear instability: L_c = {:.4g} diameters; longest shear mode grows {:.3g}-fold\n",
-             d.shear_critical_length_m / d.diameter_m, d.shear_mode_growth);
+  if (d.box_m > d.shear_critical_length_m) {
+    fmt::print(
+        "# shear instability: L_c = {:.4g} diameters, below the box; its longest shear mode grows "
+        "{:.3g}-fold over the run\n",
+        d.shear_critical_length_m / d.diameter_m, d.shear_mode_growth);
+  } else {
+    fmt::print("# shear instability: L_c = {:.4g} diameters, above the box: every shear mode decays\n",
+               d.shear_critical_length_m / d.diameter_m);
+  }
   for (const auto& w : d.warnings) fmt::print("# warning: {}\n", w);
   fmt::print("# run from {}: {} and {} (or {}); then restitution gas --compare LOG...\n",
              paths.data.parent_path().empty() ? fs::path(".").string() : paths.data.parent_path().string(),
@@ -68,7 +77,10 @@ void print_gas_deck_text(const GasDeckPaths& paths, const gas_deck::GasDeck& d,
 void write_gas_deck_json(JsonWriter& json, const GasDeckPaths& paths, const gas_deck::GasDeck& d) {
   json.key("deck").begin_object();
   json.field("file", paths.law_input.string()).field("constant_eps_file", paths.constant_eps_input.string());
-  json.field("data_file", paths.data.string()).field("box_m", d.box_m).field("haff_time_s", d.haff_time_s);
+  json.field("data_file", paths.data.string())
+      .field("data_bytes", static_cast<long>(d.data.size()))
+      .field("box_m", d.box_m)
+      .field("haff_time_s", d.haff_time_s);
   json.field("duration_s", d.duration_s).field("time_step_s", d.time_step_s);
   json.field("eps_error_worst", d.eps_error_worst).field("fast_speed_m_s", d.fast_speed_m_s);
   json.field("constant_eps", d.constant_eps).field("shear_critical_length_m", d.shear_critical_length_m);

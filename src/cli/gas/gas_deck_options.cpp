@@ -4,9 +4,11 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <limits>
 
 #include "cli/common/build_json.hpp"
 #include "cli/common/json_writer.hpp"
+#include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
 #include "cli/gas/gas_compare_report.hpp"
 #include "cli/gas/gas_deck_files.hpp"
@@ -24,10 +26,15 @@ void add_gas_deck_options(CLI::App& cmd, GasDeckOptions& o) {
                  "with --deck: the DEM code, lammps or liggghts (LIGGGHTS 3.8.0: the same data "
                  "file, hertz/stiffness lines, a model hertz companion)")
       ->capture_default_str();
-  cmd.add_option("--particles", o.particles, "spheres in the deck's periodic box (>= 2)")
-      ->capture_default_str();
-  cmd.add_option("--seed", o.seed, "seed of the deck's random positions and velocities")
-      ->capture_default_str();
+  cmd.add_option("--particles", o.particles,
+                 fmt::format("spheres in the deck's periodic box, in [2, {}] (the data file takes about "
+                             "{} bytes per sphere)",
+                             gas_deck::kMaxParticles, gas_deck::kDataBytesPerSphere))
+      ->capture_default_str()
+      ->check(whole_number_in(2, static_cast<long long>(gas_deck::kMaxParticles)));
+  cmd.add_option("--seed", o.seed, "seed of the deck's random positions and velocities, an integer >= 0")
+      ->capture_default_str()
+      ->check(whole_number_in(0, std::numeric_limits<long long>::max()));
   cmd.add_option(
          "--max-eps-error", o.max_eps_error,
          "the deck's time step keeps the worst |eps error| of LAMMPS's integrator within this, at 3 x the "
@@ -45,6 +52,9 @@ bool gas_deck_requested(const GasDeckOptions& o) {
 }
 
 namespace {
+
+// A deck of more spheres takes seconds to write: the command says how big it will be before it starts.
+constexpr std::size_t kQuietDeckParticles = 1'000'000;
 
 // The deck's request for the gas of `gas`: its spheres, law, T0 and duration (in Haff times of the theory's
 // τ0).
@@ -80,6 +90,12 @@ int run_gas_deck(const GasDeckOptions& o, const GasOptions& gas, bool json) {
   if (o.deck) paths = gas_deck_paths(*o.deck);
   if (o.compare_output) check_output_folder(*o.compare_output);
   std::optional<gas_deck::GasDeck> deck;
+  if (paths && request.particles > kQuietDeckParticles) {
+    // Built in memory and written at the end: say up front what is coming (about 6 s per 1e6 spheres).
+    fmt::print(stderr, "restitution: writing a deck of {} spheres: a data file of about {:.2g} MB\n",
+               request.particles,
+               static_cast<double>(request.particles * gas_deck::kDataBytesPerSphere) / 1e6);
+  }
   if (paths) deck = write_gas_deck(*paths, request);
   std::optional<gas_deck::GasComparison> comparison;
   std::string plot_warning;

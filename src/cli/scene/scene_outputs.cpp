@@ -477,19 +477,22 @@ class SceneWriter {
 
   void footer(double seconds) {
     const SolverStats& s = results_.total;
-    report_ += fmt::format(
-        "## How this was computed\n\n"
-        "Scene `{}`; {} distinct collisions integrated once each (every output that needs a collision shares "
-        "its "
-        "solve) plus {} for calibrations, in {:.2f} s; tolerance {} on ε relative to min(ε, 1 - ε), method "
-        "{}; "
-        "{} steps, {} right-hand-side evaluations in total{}. {}\n",
-        scene_.file_name, results_.plan.jobs.size(), results_.collisions - results_.plan.jobs.size(), seconds,
-        g(scene_.tolerance), method_name(scene_.method), s.steps, s.rhs_evaluations,
-        scene_.dems.empty() && scene_.damping_checks.empty()
-            ? ""
-            : " (the [[dem]] and [[damping_check]] sections solve their own collisions, not counted here)",
-        scene_.description.empty() ? "" : "\n\n" + scene_.description + "\n");
+    const std::size_t distinct = results_.plan.jobs.size();
+    const std::string elsewhere = own_collisions_text(scene_);
+    // A scene of [[gas]] or [[oblique]] sections alone integrates nothing of the shared plan: the report says
+    // so rather than "0 distinct collisions integrated".
+    const std::string work =
+        results_.collisions == 0 && !elsewhere.empty()
+            ? fmt::format("no collision of the shared plan integrated ({}), in {:.2f} s", elsewhere, seconds)
+            : fmt::format(
+                  "{} distinct collisions integrated once each (every output that needs a collision shares "
+                  "its solve) plus {} for calibrations, in {:.2f} s; tolerance {} on ε relative to "
+                  "min(ε, 1 - ε), method {}; {} steps, {} right-hand-side evaluations in total{}",
+                  distinct, results_.collisions - distinct, seconds, g(scene_.tolerance),
+                  method_name(scene_.method), s.steps, s.rhs_evaluations,
+                  elsewhere.empty() ? "" : " (" + elsewhere + ")");
+    report_ += fmt::format("## How this was computed\n\nScene `{}`; {}. {}\n", scene_.file_name, work,
+                           scene_.description.empty() ? "" : "\n\n" + scene_.description + "\n");
     // The code that computed the numbers, as summary.json names it (docs/release.md).
     report_ += fmt::format("\nComputed by {}.\n", build_description());
     json_.field("collisions", static_cast<long>(results_.collisions));

@@ -2,6 +2,7 @@
 #include "cli/scene/scene_text.hpp"
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 namespace restitution::cli {
 namespace {
@@ -85,6 +86,17 @@ std::vector<std::string> study_lines(const scene::ExternalStudy& study, const sc
   }
   if (outcome.stability) return {stability_line(study, *outcome.stability)};
   return work_precision_lines(study, outcome);
+}
+
+std::string own_collisions_text(const scene::Scene& scene) {
+  std::vector<std::string> parts;
+  if (!scene.dems.empty() || !scene.damping_checks.empty())
+    parts.emplace_back("the [[dem]] and [[damping_check]] sections solve their own collisions");
+  if (!scene.gases.empty())
+    parts.emplace_back("the [[gas]] sections take eps(v) from the fast table or from their own solves");
+  if (!scene.obliques.empty()) parts.emplace_back("the [[oblique]] sections integrate their own impacts");
+  if (parts.empty()) return "";
+  return fmt::format("not counted here: {}", fmt::join(parts, "; "));
 }
 
 }  // namespace restitution::cli

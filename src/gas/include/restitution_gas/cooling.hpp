@@ -78,4 +78,13 @@ struct HaffReference {
 };
 HaffReference haff_reference(const CoolingRequest& request);
 
+// The Haff times the theory computes with [s]: its times are carried in units of the gas's own time scale, so
+// that τ₀ anywhere in this range gives the curve to rounding (φ = 1e-300 makes τ₀ ≈ 1e292 s); beyond it τ₀
+// or 1/τ₀ would leave the doubles, and cooling_curve and haff_reference refuse the request.
+inline constexpr double kShortestHaffTimeS = 1e-300;
+inline constexpr double kLongestHaffTimeS = 1e300;
+// ln(τ₀/s), computed in logarithms: it exists for every request with valid inputs, also where τ₀ is no double
+// (callers say which input to change, and by how much).
+double log_haff_time(const CoolingRequest& request);
+
 }  // namespace restitution::gas
