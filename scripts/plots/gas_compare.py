@@ -5,22 +5,14 @@
 run is shown, its -5/3. Usage: gas_compare.py CSV OUT_PNG [--format png,pdf,svg], the CSV of
 `restitution gas --compare --output` (columns run, law, time_s, temperature_j, theory_temperature_j, local_exponent,
 theory_local_exponent; the exponents empty at t = 0)."""
-import argparse
-import csv
-
 import style  # first: it selects the Agg backend and sets the style
 
 LAW_WORDS = {"viscoelastic": "viscoelastic Hertz", "constant-eps": r"constant $\varepsilon$"}
 
 
 def main():
-    p = argparse.ArgumentParser()
-    p.add_argument("csv")
-    p.add_argument("png")
-    style.add_format_argument(p)
-    a = p.parse_args()
-    with open(a.csv, newline="") as f:
-        rows = list(csv.DictReader(f))
+    a = style.table_figure_parser().parse_args()
+    rows = style.read_rows(a.csv)
     fig, (top, bottom) = style.figure(2, 1, width=style.DOUBLE_COLUMN_IN, height=4.8, sharex=True)
     laws = list(dict.fromkeys(r["law"] for r in rows))
     exponents = [-2.0]

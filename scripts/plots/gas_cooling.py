@@ -9,8 +9,6 @@ cooling rate; for viscoelastic Hertz also a t^(-5/3) line through the last point
 -2 (Haff's asymptote) and, for viscoelastic Hertz, -5/3 (its asymptote as the dissipation vanishes). The time axis
 is t/tau0 (Haff's time): it starts at the decade in which T/T0 has fallen by 1 %, where the cooling shows.
 """
-import argparse
-import csv
 import math
 
 import style  # first: it selects the Agg backend and sets the style
@@ -34,9 +32,7 @@ def first_shown(x, ratio):
 
 
 def main():
-    p = argparse.ArgumentParser()
-    p.add_argument("csv")
-    p.add_argument("png")
+    p = style.table_figure_parser()
     p.add_argument("t0", type=float)
     p.add_argument("tau0", type=float)
     p.add_argument("haff_eps", type=float)
@@ -45,12 +41,10 @@ def main():
     p.add_argument("--end")
     p.add_argument("--zeta", type=float)
     p.add_argument("--reference-speed", type=float)
-    style.add_format_argument(p)
     a = p.parse_args()
     if a.constant_eps is None and None in (a.law, a.end, a.zeta, a.reference_speed):
         p.error("give --constant-eps, or --law, --end, --zeta and --reference-speed")
-    with open(a.csv, newline="") as f:
-        rows = [r for r in csv.DictReader(f) if float(r["time_s"]) > 0]  # t = 0 has no place on a log axis
+    rows = [r for r in style.read_rows(a.csv) if float(r["time_s"]) > 0]  # t = 0 has no place on a log axis
     t0, tau0 = a.t0, a.tau0
     x = [float(r["time_s"]) / tau0 for r in rows]
     ratio = [float(r["temperature_j"]) / t0 for r in rows]

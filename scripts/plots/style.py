@@ -7,6 +7,7 @@ Figures carry no title: the report's heading and caption (or the paper's) say wh
 text in PDF (TrueType, no Type 3 fonts) and SVG (editable, searchable), as journals ask.
 """
 import argparse
+import csv
 import os
 import re
 
@@ -228,6 +229,21 @@ def parse_formats(text):
 def add_format_argument(parser):
     parser.add_argument("--format", type=parse_formats, default=["png"],
                         help="figure formats, comma-separated: png (%d dpi), pdf, svg" % DPI)
+
+
+def table_figure_parser():
+    """The arguments every script that draws one table takes: the CSV, the figure's path, --format."""
+    parser = argparse.ArgumentParser()
+    parser.add_argument("csv")
+    parser.add_argument("png")
+    add_format_argument(parser)
+    return parser
+
+
+def read_rows(path):
+    """A CSV table's rows as dicts of text."""
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
 
 
 def save(fig, path, formats=("png",)):
