@@ -49,8 +49,9 @@ def main():
     errors = split(a.error)
     logx, logy = a.xscale == "log", a.yscale == "log"
     curves = split(a.y) + split(a.dashed) + split(a.points)
-    # A few curves fit a single column; more, with their legend, take the double column.
-    wide = len(curves) + len(errors) > 4
+    # A few curves with short names fit a single column; more, or long names, take the double column (a legend
+    # wider than its panel would hide the curves).
+    wide = len(curves) + len(errors) > 4 or max(len(style.curve_label(c)) for c in curves) > 30
     fig, axes = style.figure(2 if errors else 1, 1, width=style.DOUBLE_COLUMN_IN if wide else style.SINGLE_COLUMN_IN,
                              height=(5.0 if errors else 2.8) if wide else (4.6 if errors else 2.6), sharex=True,
                              squeeze=False)

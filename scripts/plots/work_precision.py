@@ -28,11 +28,9 @@ def main():
             t = [float(r["mean_median_us"]) for r in pts]
             e = [max(float(r["max_error"]), 1e-17) for r in pts]
             ax.loglog(t, e, "o-", label=style.ENGINES.get(engine, engine))
-        # Each panel says which end it is inside the axes (no titles: the caption says what the figure is).
-        ax.text(0.97, 0.97, END_WORDS.get(end, end), transform=ax.transAxes, ha="right", va="top")
         ax.set_xlabel(r"mean time per solve (µs)")
         ax.grid(True, which="both")
-        ax.legend()
+        ax.legend(title=END_WORDS.get(end, end))  # which end the panel is (no titles: the caption says the rest)
     axes[0].set_ylabel(r"worst error $|\Delta\varepsilon| / \min(\varepsilon, 1-\varepsilon)$")
     style.save(fig, a.png, a.format)
 
