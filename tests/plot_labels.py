@@ -1,13 +1,18 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: BSD-3-Clause
-"""The report figures are fit for a paper (issue 36): every figure of every shipped scene and of the commands
-that draw one (`series validate`, `stability`, `gas --plot`, `oblique --plot`) is drawn by the program itself, and each figure's texts are
-judged as matplotlib holds them (tests/plot_hook/sitecustomize.py records them):
+"""The report figures are fit for a paper (issues 36 and 47): every figure of every shipped scene and of the
+commands that draw one (`series validate`, `stability`, `gas --plot`, `oblique --plot`, `fit-data --plot`) is drawn
+by the program itself, and each figure is judged as matplotlib holds it (tests/plot_hook/sitecustomize.py records
+it):
 
 * axis labels carry a mathtext symbol or a unit, and a physical quantity always its unit (or "scaled");
 * no text is a table's column name (snake_case) or an ASCII spelling of a symbol (eps, zeta, tau, beta)
   outside mathtext;
-* titles fit inside the figure; PNG at >= 200 dpi;
+* no title inside the figure (the report's heading and caption carry it);
+* a journal's column: 3.5 in or 7 in wide, no wider as saved, every text >= 8 pt at that size;
+* colour-blind-safe curves: Okabe & Ito's palette, black or grey;
+* every log axis has at least 2 labelled ticks; legend numbers have at most 4 significant digits;
+* PNG at >= 300 dpi;
 * --format png,pdf,svg and a scene's `format` key write each format; an unknown format is refused (exit 2).
 
 Usage: plot_labels.py RESTITUTION_EXE SOURCE_DIR
@@ -25,6 +30,21 @@ ASCII_SYMBOL = re.compile(r"\b(?:eps|zeta|tau|beta)\b")
 # A unit in parentheses, or a quantity's value with its unit ("at 1 m/s"), or a scaled (dimensionless) quantity.
 UNIT = re.compile(r"\((?:m/s|s|ms|µs|ns|m|kg|Pa|J|count|scaled)\)|\d\s*(?:m/s|s|µs|ns)\b|\bscaled\b")
 PHYSICAL = re.compile(r"\b(?:speed|velocity|time|duration|compression|run time)\b")
+# Okabe & Ito, Color Universal Design (2008): told apart with every common colour-vision deficiency.
+OKABE_ITO = {"#0072b2", "#d55e00", "#009e73", "#e69f00", "#cc79a7", "#56b4e9", "#f0e442", "#000000"}
+COLUMN_WIDTHS_IN = (3.5, 7.0)
+SMALLEST_FONT_PT = 8
+NUMBER = re.compile(r"\d+(?:\.\d+)?")
+
+
+def significant_digits(number):
+    """How many significant digits a number as written shows (trailing zeros of an integer do not count)."""
+    digits = number.replace(".", "").lstrip("0")
+    return len(digits if "." in number else digits.rstrip("0"))
+
+
+def achromatic(colour):
+    return colour[1:3] == colour[3:5] == colour[5:7]
 
 
 def plain(text):
@@ -47,10 +67,28 @@ def problems_of(figure):
                 match = pattern.search(rest)
                 if match:
                     found.append(f"{where}: {kind[:-1]} {text!r} has {what}: {match.group(0)!r}")
-    for text in figure["titles_outside"]:
-        found.append(f"{where}: title {text!r} runs off the figure")
-    if figure["format"] == "png" and float(figure["dpi"]) < 200:
-        found.append(f"{where}: PNG at {figure['dpi']} dpi, fewer than 200")
+    for text in figure["titles"]:
+        found.append(f"{where}: title {text!r} inside the figure (the caption carries it)")
+    if figure["width_in"] not in COLUMN_WIDTHS_IN:
+        found.append(f"{where}: {figure['width_in']} in wide, not a column's {COLUMN_WIDTHS_IN}")
+    if figure["saved_width_in"] > max(COLUMN_WIDTHS_IN) + 0.05:
+        found.append(f"{where}: {figure['saved_width_in']:.2f} in wide as saved: shrunk into a page, its text "
+                     f"falls below {SMALLEST_FONT_PT} pt")
+    if figure["smallest_font_pt"] is not None and figure["smallest_font_pt"] < SMALLEST_FONT_PT:
+        found.append(f"{where}: text at {figure['smallest_font_pt']} pt, below {SMALLEST_FONT_PT}")
+    for colour in figure["colours"]:
+        if colour not in OKABE_ITO and not achromatic(colour):
+            found.append(f"{where}: a curve in {colour}, neither Okabe & Ito's palette nor grey")
+    for axis in figure["log_axes"]:
+        if len(axis["labelled_ticks"]) < 2:
+            found.append(f"{where}: log {axis['axis']} axis of panel {axis['axes']} has "
+                         f"{len(axis['labelled_ticks'])} labelled tick(s) {axis['labelled_ticks']}, fewer than 2")
+    for text in figure["legends"]:
+        for number in NUMBER.findall(text):
+            if significant_digits(number) > 4:
+                found.append(f"{where}: legend {text!r} shows {number} (more than 4 significant digits)")
+    if figure["format"] == "png" and float(figure["dpi"]) < 300:
+        found.append(f"{where}: PNG at {figure['dpi']} dpi, fewer than 300")
     return found
 
 
@@ -84,15 +122,26 @@ def main(exe, source):
         run(exe, ["oblique", "--young-modulus", "2e11", "--poisson-ratio", "0.3", "--radius", "1e-3", "--density",
                   "7800", "--wall", "--tangential", "mindlin", "--friction", "0.3", "--angle-range", "1:80:6",
                   "--spin", "0,300", "--plot", os.path.join(folder, "oblique_maw.png")], env, source)
-        pngs += 4
+        run(exe, ["gas", "--radius", "0.005", "--density", "920", "--eps", "0.8", "--velocity", "2", "--law",
+                  "linear-dashpot", "--packing-fraction", "0.1", "--rms-speed", "1", "--haff-times", "100",
+                  "--plot", os.path.join(folder, "gas_constant.png")], env, source)
+        run(exe, ["fit-data", os.path.join(source, "examples", "fit", "rubber_drop.csv"), "--plot",
+                  os.path.join(folder, "fit.png")], env, source)
+        pngs += 6
         with open(log) as f:
             figures = [json.loads(line) for line in f]
         # Each PNG written was recorded (the hook ran in every plot script), and none of them has a problem.
         recorded = sum(1 for fig in figures if fig["format"] == "png")
-        if recorded != pngs or pngs < 16:
-            failures.append(f"{recorded} figures recorded, {pngs} PNG files written (expected >= 16)")
+        if recorded != pngs or pngs < 18:
+            failures.append(f"{recorded} figures recorded, {pngs} PNG files written (expected >= 18)")
         for figure in figures:
             failures += problems_of(figure)
+        # A constant eps cools by Haff's law: no viscoelastic guide (-5/3, t^-5/3) in its figure.
+        constant = [f for f in figures if os.path.basename(f["path"]).startswith(("gas_constant", "constant_eps_gas"))]
+        for figure in constant:
+            guides = [t for t in figure["legends"] if "5/3" in t]
+            if guides:
+                failures.append(f"gas --law linear-dashpot --plot draws viscoelastic guides: {guides}")
 
         # Formats: the command line's list, a scene's key, and what is refused.
         series = os.path.join(folder, "formats")

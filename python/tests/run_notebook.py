@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-3-Clause
-"""Executes a notebook with Debian's jupyter-nbconvert in a kernel that runs the given interpreter, and checks that
-the package it imported is the one under test.
+"""Executes a copy of a notebook in a temporary folder with Debian's jupyter-nbconvert, in a kernel that runs the given
+interpreter, and checks that the package it imported is the one under test. The copy has nothing beside it: a
+notebook that reads a file relative to where it is shipped fails here, as it would for a user who copied it.
 
 Usage: run_notebook.py NOTEBOOK PYTHON PACKAGE_PREFIX
 Debian's kernel runs /usr/bin/python3; a kernelspec for PYTHON (a venv's python, say) is installed into a
@@ -12,6 +13,7 @@ temporary folder on JUPYTER_PATH, as docs/python.md tells a user to do. The note
 import json
 import os
 import pathlib
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -31,11 +33,15 @@ def main(notebook, python, prefix):
         env = dict(os.environ, JUPYTER_PATH=str(work / "share" / "jupyter"), PYDEVD_DISABLE_FILE_VALIDATION="1")
         env.pop("MPLBACKEND", None)  # the kernel's inline backend draws the figures into the notebook
         started = time.monotonic()
-        # Run in the notebook's folder (nbconvert's default), where its relative data paths point.
+        # nbconvert runs a notebook in its own folder: the copy's, alone in a folder of its own.
+        alone = work / "copy"
+        alone.mkdir()
+        copy = alone / notebook.name
+        shutil.copyfile(notebook, copy)
         try:
             done = subprocess.run(["jupyter-nbconvert", "--to", "notebook", "--execute",
                                    f"--ExecutePreprocessor.kernel_name={KERNEL}", "--ExecutePreprocessor.timeout=600",
-                                   "--output-dir", str(work), str(notebook)], env=env, capture_output=True, text=True)
+                                   "--output-dir", str(work), str(copy)], env=env, capture_output=True, text=True)
         except FileNotFoundError:
             sys.exit("run_notebook: jupyter-nbconvert is missing (Debian: jupyter-nbconvert python3-ipykernel; "
                      "scripts/setup installs them)")

@@ -13,7 +13,6 @@ import os
 import subprocess
 
 import style  # first: it selects the Agg backend and sets the style
-import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 XM = 1.5 ** (2 / 3)  # (3/2)^{2/3}
@@ -70,9 +69,9 @@ def main(exe, out_dir, formats):
     with open(os.path.join(out_dir, "asymptotics.json"), "w") as f:
         json.dump(summary, f, indent=1)
 
-    fig, axes = plt.subplots(2, 1, figsize=(6.4, 8.5))
+    fig, axes = style.figure(1, 2, width=style.DOUBLE_COLUMN_IN, height=4.4)
     for ax, data, law, label in ((axes[0], naive, lambda zz: kappa * zz ** -5.0,
-                                  rf"derived ${kappa:.10f}\,\zeta^{{-5}}$"),
+                                  rf"derived ${style.number(kappa)}\,\zeta^{{-5}}$"),
                                  (axes[1], delayed, lambda zz: delayed_law(zz, 1),
                                   r"derived $(3/2)^{2/3}\zeta^{-5/3}$")):
         zz = np.array([p["zeta"] for p in data["local_slopes"]])
@@ -83,20 +82,19 @@ def main(exe, out_dir, formats):
         fz = fit(exe, data["end"], 10, zz[-1], 9)
         ax.loglog(zz[big], fz["prefactor"] * zz[big] ** fz["exponent_zeta"], "--",
                   label=rf"least squares over $\zeta \in [10, 10^{{{np.log10(zz[-1]):.0f}}}]$: "
-                        rf"exponent {fz['exponent_zeta']:.4f}")
+                        rf"exponent {style.number(fz['exponent_zeta'])}")
         ax.set_ylabel(style.EPS)
         ax.grid(True)
     axes[1].loglog(zs[zs >= 10], delayed_law(zs[zs >= 10], 2), ":", label="derived, with first correction")
     anchor = 100.0
     axes[1].loglog(zs[zs >= 1], delayed_law(anchor, 2) * (zs[zs >= 1] / anchor) ** -1.655, "-.", lw=0.8,
                    label=r"paper: $\varepsilon \propto v^{-0.331}$ ($\zeta^{-1.655}$), through $\zeta = 100$")
-    style.set_title(axes[0], "2008 paper, Fig. 2: naive end (top), delayed recovery (bottom)")
-    axes[1].set_xlabel(style.ZETA)
     for ax in axes:
-        ax.legend(fontsize=7)
+        ax.set_xlabel(style.ZETA)
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16))  # below: inside it would hide the points
     style.save(fig, os.path.join(out_dir, "asymptotics_fig2.png"), formats)
 
-    fig, ax = plt.subplots(figsize=(6.4, 4.5))
+    fig, ax = style.figure(width=style.DOUBLE_COLUMN_IN, height=3.2)
     nz = np.array([p["zeta"] for p in naive["local_slopes"]])
     ax.loglog(nz, [max(abs(p["slope"] + 5), 1e-13) for p in naive["local_slopes"]], "o-", ms=3,
               label=r"naive end: $|s + 5|$")
@@ -106,9 +104,9 @@ def main(exe, out_dir, formats):
     ax.loglog(zs, [p["error"] for p in delayed["local_slopes"]], ":", color="gray", label="error estimate")
     ax.axhline(abs(-1.655 + 5 / 3), color="k", lw=0.8, label=r"paper's $-0.331 \times 5$ against $-5/3$")
     ax.set_xlabel(style.ZETA)
-    ax.set_ylabel(r"local slope $s = d\ln\varepsilon / d\ln\zeta$, distance from its limit")
+    ax.set_ylabel(r"$|s - s_\infty|$, $s = d\ln\varepsilon / d\ln\zeta$")
     ax.grid(True)
-    ax.legend(fontsize=7)
+    ax.legend(loc="center left", bbox_to_anchor=(1.02, 0.5))
     style.save(fig, os.path.join(out_dir, "asymptotics_slopes.png"), formats)
     print(json.dumps(summary, indent=1))
 

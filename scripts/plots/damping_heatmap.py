@@ -3,7 +3,7 @@
 set-up speed over requested eps (a line per clamp); bottom, heat maps of the physical speed dependence
 eps(v)/eps(v_ref) - 1 over requested eps x impact speed, one per clamp.
 
-usage: damping_heatmap.py CSV PNG [--title T] [--format png,pdf,svg]
+usage: damping_heatmap.py CSV PNG [--format png,pdf,svg]
 The CSV has requested_eps, velocity_m_s, recipe_error_at_calibration_speed_clamp_on|off,
 speed_dependence_clamp_on|off (one row per point; the recipe error repeats along the speeds).
 """
@@ -35,14 +35,13 @@ def main():
     p = argparse.ArgumentParser()
     p.add_argument("csv")
     p.add_argument("png")
-    p.add_argument("--title", default="")
     style.add_format_argument(p)
     a = p.parse_args()
     with open(a.csv, newline="") as f:
         rows = list(csv.DictReader(f))
     eps = sorted({float(r["requested_eps"]) for r in rows})
     speeds = sorted({float(r["velocity_m_s"]) for r in rows})
-    fig = plt.figure(figsize=(9, 7))
+    fig = plt.figure(figsize=(style.DOUBLE_COLUMN_IN, 5.6))
     top = fig.add_subplot(2, 1, 1)
     for clamp, line in (("on", "-o"), ("off", "--s")):
         by_eps = {float(r["requested_eps"]): float(r["recipe_error_at_calibration_speed_clamp_" + clamp])
@@ -51,7 +50,6 @@ def main():
     top.axhline(0.0, color="grey", linewidth=0.8)
     top.set_xlabel(REQUESTED)
     top.set_ylabel(r"$\varepsilon(v_\mathrm{ref}) / \varepsilon_\mathrm{req} - 1$")
-    style.set_title(top, "the recipe's own error at the set-up speed")
     top.legend()
     for index, clamp in enumerate(("on", "off")):
         ax = fig.add_subplot(2, 2, 3 + index)
@@ -67,9 +65,10 @@ def main():
         ax.set_xlabel(REQUESTED)
         if index == 0:
             ax.set_ylabel(style.axis_label("velocity_m_s"))
-        style.set_title(ax, "speed dependence, " + CLAMP[clamp])
+        # Which clamp a map is, inside its axes (no titles: the caption says what the figure is).
+        ax.text(0.03, 0.97, CLAMP[clamp], transform=ax.transAxes, ha="left", va="top",
+                bbox={"facecolor": "white", "alpha": 0.8, "linewidth": 0})
         fig.colorbar(mesh, ax=ax, label=r"$\varepsilon(v) / \varepsilon(v_\mathrm{ref}) - 1$")
-    style.suptitle(fig, a.title)
     style.save(fig, a.png, a.format)
 
 

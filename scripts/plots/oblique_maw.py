@@ -14,7 +14,6 @@ import argparse
 import csv
 
 import style  # first: it selects the Agg backend and sets the style
-import matplotlib.pyplot as plt  # noqa: E402
 
 MODELS = {
     "linear_nohistory": "LAMMPS linear (no history)",
@@ -44,7 +43,7 @@ def main():
     style.add_format_argument(p)
     a = p.parse_args()
     data = read(a.csv, a.model[0][0])
-    fig, ax = plt.subplots(figsize=(6.4, 4.8))
+    fig, ax = style.figure(width=style.DOUBLE_COLUMN_IN, height=3.8)
     markers = "osd^v<>"
     spins = sorted({spin for curves in data.values() for spin in curves})
     psi = [p[0] for curves in data.values() for points in curves.values() for p in points]
@@ -55,7 +54,7 @@ def main():
     left = max(min([0.0] + psi), -12.0 * a.chi)
     for index, (model, e_stick) in enumerate(a.model):
         e_stick = float(e_stick)
-        color = f"C{index}"
+        color = style.color(index)
         name = MODELS.get(model, model.replace("_", " "))
         for spin, points in sorted(data.get(model, {}).items()):
             points.sort()
@@ -65,14 +64,14 @@ def main():
         if e_stick == e_stick:  # not NaN
             reach = [0.0, min(right, 1.5)]  # the limit's slope at psi_1 -> 0
             ax.plot(reach, [-e_stick * v for v in reach], ls=":", color=color, lw=2,
-                    label=rf"sticking limit, $e_t(\mu\to\infty)$ = {e_stick:.4g}")
+                    label=rf"sticking limit, $e_t(\mu\to\infty)$ = {style.number(e_stick)}")
     if len(spins) > 1:
         for spin in spins:
             ax.plot([], [], ls="none", color="gray", marker=markers[spins.index(spin) % len(markers)],
                     label=rf"initial spin $\omega_0$ = {spin:g} rad/s")
     shift = 2.0 * (1.0 + a.eps) * a.chi
     ax.plot([0.0, right], [-shift, right - shift], ls="--", color="k", lw=1,
-            label=rf"gross slip $\psi_2 = \psi_1 - 2(1+\varepsilon)\chi$, $\chi$ = {a.chi:.4g}")
+            label=rf"gross slip $\psi_2 = \psi_1 - 2(1+\varepsilon)\chi$, $\chi$ = {style.number(a.chi)}")
     mirrored = left < -shift  # the data reach the mirrored gross-slip line
     if mirrored:
         ax.plot([left, 0.0], [left + shift, shift], ls="--", color="k", lw=1)
@@ -82,13 +81,12 @@ def main():
     ax.set_ylim(bottom - 0.5, top + 0.5)
     if hi > right or min([0.0] + psi) < left:
         ax.text(0.98, 0.02, rf"$|\psi_1|$ up to {max(hi, -min(psi)):.3g} continue on the gross-slip line",
-                transform=ax.transAxes, ha="right", va="bottom", fontsize=8)
+                transform=ax.transAxes, ha="right", va="bottom")
     ax.axhline(0.0, color="gray", lw=0.6)
     ax.set_xlabel(r"incoming $\psi_1 = \kappa\, s_1 / (\mu v_n)$, $\kappa = 2(1-\nu)/(2-\nu)$")
     ax.set_ylabel(r"outgoing $\psi_2 = \kappa\, s_2 / (\mu v_n)$")
-    style.set_title(ax, "Oblique impacts in Maw, Barber & Fawcett's variables (1976)")
     ax.grid(True)
-    ax.legend(loc="upper left", fontsize=7)
+    ax.legend(loc="center left", bbox_to_anchor=(1.02, 0.5))
     style.save(fig, a.png, a.format)
 
 

@@ -2,7 +2,7 @@
 """Plot columns of a scene's CSV table against one column (restitution run).
 
 usage: scene_xy.py CSV PNG --x COL --y COL[,COL...] [--dashed COL,...] [--xscale log] [--yscale log]
-                   [--title T] [--xlabel L] [--ylabel L] [--error COL,...] [--error-label L] [--format png,pdf,svg]
+                   [--xlabel L] [--ylabel L] [--error COL,...] [--error-label L] [--format png,pdf,svg]
 --error adds a second, log-scaled panel with the absolute values of those columns. Legends say what each column
 is (style.curve_label); the x axis is labelled from its column unless --xlabel is given.
 """
@@ -11,7 +11,6 @@ import csv
 import math
 
 import style  # first: it selects the Agg backend and sets the style
-import matplotlib.pyplot as plt  # noqa: E402
 
 
 def read(path):
@@ -42,18 +41,21 @@ def main():
     p.add_argument("--error-label", default=r"$|\varepsilon_\mathrm{approx} / \varepsilon - 1|$ against the numerics")
     p.add_argument("--xscale", default="linear")
     p.add_argument("--yscale", default="linear")
-    p.add_argument("--title", default="")
     p.add_argument("--xlabel", default=None)
     p.add_argument("--ylabel", default="")
     style.add_format_argument(p)
     a = p.parse_args()
     data = read(a.csv)
     errors = split(a.error)
-    fig, axes = plt.subplots(2 if errors else 1, 1, figsize=(6.4, 6.4 if errors else 4.2), sharex=True,
-                             squeeze=False)
-    top = axes[0][0]
     logx, logy = a.xscale == "log", a.yscale == "log"
     curves = split(a.y) + split(a.dashed) + split(a.points)
+    # A few curves with short names fit a single column; more, or long names, take the double column (a legend
+    # wider than its panel would hide the curves).
+    wide = len(curves) + len(errors) > 4 or max(len(style.curve_label(c)) for c in curves) > 30
+    fig, axes = style.figure(2 if errors else 1, 1, width=style.DOUBLE_COLUMN_IN if wide else style.SINGLE_COLUMN_IN,
+                             height=(5.0 if errors else 2.8) if wide else (4.6 if errors else 2.6), sharex=True,
+                             squeeze=False)
+    top = axes[0][0]
     families = list(dict.fromkeys(style.curve_family(name) for name in curves))
     for name in curves:
         line = "--" if name in split(a.dashed) else ("o" if name in split(a.points) else "-")
@@ -61,12 +63,11 @@ def main():
         # Each family has its colour; points of their own (measurements, actual = requested) are black.
         family = style.curve_family(name)
         alone = line == "o" and all(style.curve_family(c) != family for c in curves if c != name)
-        color = "k" if alone else f"C{families.index(family) % 10}"
+        color = "k" if alone else style.color(families.index(family))
         top.plot(list(xs), list(ys), line, label=style.curve_label(name), markersize=3, color=color)
     top.set_xscale(a.xscale)
     top.set_yscale(a.yscale)
     top.set_ylabel(a.ylabel)
-    style.set_title(top, a.title)
     top.grid(True, which="both", alpha=0.3)
     style.legend(top)
     if errors:
@@ -77,7 +78,7 @@ def main():
             if family not in families:
                 families.append(family)
             bottom.plot(list(xs), list(ys), "-", label=style.curve_label(name),
-                        color=f"C{families.index(family) % 10}")
+                        color=style.color(families.index(family)))
         bottom.set_yscale("log")
         bottom.set_ylabel(a.error_label)
         bottom.grid(True, which="both", alpha=0.3)

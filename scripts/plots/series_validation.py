@@ -9,7 +9,6 @@ import argparse
 import csv
 
 import style  # first: it selects the Agg backend and sets the style
-import matplotlib.pyplot as plt  # noqa: E402
 
 
 def read(path):
@@ -32,11 +31,12 @@ def main():
     a = p.parse_args()
     col, names = read(a.csv)
     zeta = col["zeta"]
-    fig, (top, mid, bottom) = plt.subplots(3, 1, figsize=(6.4, 9.6), sharex=True)
+    fig, (top, mid, bottom) = style.figure(3, 1, width=style.DOUBLE_COLUMN_IN, height=8.0, sharex=True)
 
-    top.plot(zeta, col["naive_eps"], "k-", lw=2, label="numerics, " + style.ENDS["naive"])
-    top.plot(zeta, col["delayed_recovery_eps"], "b-", lw=2, label="numerics, " + style.ENDS["delayed_recovery"])
-    series_styles = {"naive-series:published": ("k", "o"), "delayed-recovery-series:published": ("b", "s")}
+    top.plot(zeta, col["naive_eps"], "-", color="k", lw=2, label="numerics, " + style.ENDS["naive"])
+    top.plot(zeta, col["delayed_recovery_eps"], "-", color=style.color(0), lw=2,
+             label="numerics, " + style.ENDS["delayed_recovery"])
+    series_styles = {"naive-series:published": ("k", "o"), "delayed-recovery-series:published": (style.color(0), "s")}
     for name, (color, marker) in series_styles.items():
         if name + "_eps" in col:
             top.plot(zeta[::3], col[name + "_eps"][::3], color=color, marker=marker, ls="none", mfc="none",
@@ -44,22 +44,21 @@ def main():
     top.set_xscale("log")
     top.set_ylim(0.0, 1.05)
     top.set_ylabel(style.EPS)
-    style.set_title(top, r"$\varepsilon(\zeta)$, $\zeta = \beta v^{1/5}$ (2008 paper, Fig. 1)")
     top.legend(loc="lower left")
 
-    cmap = plt.get_cmap("tab10")
     for i, name in enumerate(names):
         line = "-" if name.startswith(("naive", "pade-1999", "simple")) else "--"
         label = style.approximation_label(name)
-        mid.plot(zeta, clipped(col[name + "_rel_err_eps"]), line, color=cmap(i % 10), label=label)
-        bottom.plot(zeta, clipped(col[name + "_rel_err_one_minus_eps"]), line, color=cmap(i % 10), label=label)
+        mid.plot(zeta, clipped(col[name + "_rel_err_eps"]), line, color=style.color(i), label=label)
+        bottom.plot(zeta, clipped(col[name + "_rel_err_one_minus_eps"]), line, color=style.color(i), label=label)
     for ax, what in ((mid, r"$\varepsilon$"), (bottom, r"$1-\varepsilon$")):
         ax.set_yscale("log")
         ax.set_ylim(1e-17, 1e2)
         for level in (1e-3, 1e-6, 1e-10):
             ax.axhline(level, color="grey", lw=0.5, ls=":")
         ax.set_ylabel("relative error of " + what)
-    mid.legend(fontsize=6.5, ncol=2, loc="upper left")
+    # One legend for both error panels, below them: inside it would hide the curves.
+    bottom.legend(*mid.get_legend_handles_labels(), ncol=2, loc="upper center", bbox_to_anchor=(0.5, -0.25))
     bottom.set_xlabel(style.ZETA + " (solid: naive end, dashed: delayed recovery)")
     style.save(fig, a.png, a.format)
 

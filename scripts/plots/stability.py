@@ -9,7 +9,6 @@ import argparse
 import csv
 
 import style  # first: it selects the Agg backend and sets the style
-import matplotlib.pyplot as plt  # noqa: E402
 
 END_WORDS = {"naive": "naive", "delayed-recovery": "delayed recovery"}
 
@@ -32,7 +31,7 @@ def main():
     with open(a.csv, newline="") as f:
         rows = [r for r in csv.DictReader(f) if float(r["zeta"]) > 0]
     engines = [k[: -len("_difference")] for k in rows[0] if k.endswith("_difference")]
-    fig, (cost, error) = plt.subplots(2, 1, figsize=(6.4, 7.5), sharex=True)
+    fig, (cost, error) = style.figure(1, 2, width=style.DOUBLE_COLUMN_IN, height=5.0, sharex=True)
     for key, marker in (("naive", "o"), ("delayed-recovery", "s")):
         end = END_WORDS[key]
         part = [r for r in rows if r["end"] == key]
@@ -55,12 +54,12 @@ def main():
                              label=f"{end}: {style.ENGINES.get(engine, engine)} too much work (stiff)")
     error.axhline(tolerance, color="k", lw=0.8, label="tolerance $T$")
     cost.set_ylabel("work per solve (count)")
-    style.set_title(cost, f"stability report (tolerance $T$ = {tolerance:g}, method auto)")
-    error.set_ylabel(r"relative difference of $\min(\varepsilon, 1-\varepsilon)$")
-    error.set_xlabel(style.ZETA)
+    error.set_ylabel("relative difference\n" r"of $\min(\varepsilon, 1-\varepsilon)$")
     for ax in (cost, error):
+        ax.set_xlabel(style.ZETA)
         ax.grid(True, which="major")
-        ax.legend(fontsize=6.5)
+        # Below the panel: inside it would hide the points, beside it narrow the panels.
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16))
     style.save(fig, a.png, a.format)
 
 

@@ -1,10 +1,13 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""The one style of every report figure (scripts/plots/*.py import it): font sizes, line widths, resolution, the
-words for the tables' columns, titles that fit, and save() writing each requested format.
+"""The one style of every report figure (scripts/plots/*.py import it): a journal's column widths with text of at
+least 8 pt at that size, a colour-blind-safe palette, line widths, resolution, the words for the tables' columns,
+log axes with enough labelled ticks, and save() writing each requested format.
 
-Text stays text in PDF (TrueType, no Type 3 fonts) and SVG (editable, searchable), as journals ask.
+Figures carry no title: the report's heading and caption (or the paper's) say what a figure shows. Text stays
+text in PDF (TrueType, no Type 3 fonts) and SVG (editable, searchable), as journals ask.
 """
 import argparse
+import csv
 import os
 import re
 
@@ -12,23 +15,36 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib import ticker  # noqa: E402
 
 FORMATS = ("png", "pdf", "svg")
-DPI = 200  # PNG resolution; PDF and SVG are vector
+DPI = 300  # PNG resolution; PDF and SVG are vector
+
+# A journal's single and double column [inch]: every figure is drawn at one of them, so that its text is printed at
+# the size set here (no figure is shrunk into a column).
+SINGLE_COLUMN_IN = 3.5
+DOUBLE_COLUMN_IN = 7.0
+SMALLEST_FONT_PT = 8
+
+# Okabe & Ito's palette (Color Universal Design, 2008), told apart with every common colour-vision deficiency; the
+# order puts the most distinct first. Black and greys stay free for references (theory lines, limits).
+OKABE_ITO = ("#0072B2", "#D55E00", "#009E73", "#E69F00", "#CC79A7", "#56B4E9", "#F0E442", "#000000")
 
 matplotlib.rcParams.update({
-    "font.size": 9,
-    "axes.titlesize": 10,
-    "axes.labelsize": 10,
-    "legend.fontsize": 8,
-    "xtick.labelsize": 9,
-    "ytick.labelsize": 9,
-    "lines.linewidth": 1.5,
-    "lines.markersize": 4,
+    "font.size": SMALLEST_FONT_PT,
+    "axes.labelsize": 9,
+    "legend.fontsize": SMALLEST_FONT_PT,
+    "xtick.labelsize": SMALLEST_FONT_PT,
+    "ytick.labelsize": SMALLEST_FONT_PT,
+    "axes.prop_cycle": matplotlib.cycler(color=OKABE_ITO),
+    "image.cmap": "viridis",
+    "lines.linewidth": 1.2,
+    "lines.markersize": 3.5,
     "axes.linewidth": 0.8,
     "grid.alpha": 0.3,
     "grid.linewidth": 0.6,
     "legend.framealpha": 0.85,
+    "legend.handlelength": 1.8,
     "mathtext.fontset": "dejavusans",
     "savefig.dpi": DPI,
     "pdf.fonttype": 42,
@@ -134,11 +150,30 @@ def curve_family(column):
     return re.sub(r"_(clamp_on|clamp_off)$", "", re.sub(r"_(rel_diff|eps_exact|relative_error)$", "_eps", column))
 
 
+def color(index):
+    """The palette's colour number index (cycling), for curves coloured by their place in a list."""
+    return OKABE_ITO[index % len(OKABE_ITO)]
+
+
+def figure(rows=1, columns=1, width=SINGLE_COLUMN_IN, height=None, **options):
+    """plt.subplots at a journal's column width (SINGLE_COLUMN_IN or DOUBLE_COLUMN_IN), height by default 3/4 of
+    the single column per row of panels."""
+    if width not in (SINGLE_COLUMN_IN, DOUBLE_COLUMN_IN):
+        raise ValueError(f"a figure is {SINGLE_COLUMN_IN} or {DOUBLE_COLUMN_IN} in wide, not {width}")
+    return plt.subplots(rows, columns, figsize=(width, height or 0.75 * SINGLE_COLUMN_IN * rows), **options)
+
+
 def legend(ax, **options):
-    """A legend inside the axes, or beside them when it has too many entries to leave the curves visible."""
-    if len(ax.get_legend_handles_labels()[1]) > 6:
-        options = {"loc": "center left", "bbox_to_anchor": (1.02, 0.5), **options}
+    """A legend inside the axes, or below them when it has too many entries to leave the curves visible (beside
+    them it would widen the figure beyond its column)."""
+    if len(ax.get_legend_handles_labels()[1]) > 5:
+        options = {"loc": "upper center", "bbox_to_anchor": (0.5, -0.2), "ncol": 1, **options}
     return ax.legend(**options)
+
+
+def number(value, digits=4):
+    """A number for a legend or a note: at most `digits` significant digits (a figure shows, the tables carry all)."""
+    return f"{value:.{digits}g}"
 
 
 def axis_label(column):
@@ -146,34 +181,37 @@ def axis_label(column):
     return AXES.get(column, column.replace("_", " "))
 
 
-def _fitted(text_artist, width_pixels):
-    """Breaks a title's text into lines no wider than width_pixels, measured as drawn; a $...$ formula is never
-    split."""
-    words = re.findall(r"(?:\$[^$]*\$|[^\s$])+", text_artist.get_text())
-    renderer = text_artist.figure.canvas.get_renderer()
-    lines = []
-    for word in words:
-        candidate = (lines[-1] + " " + word) if lines else word
-        text_artist.set_text(candidate)
-        if lines and text_artist.get_window_extent(renderer).width > width_pixels:
-            lines.append(word)
-        elif lines:
-            lines[-1] = candidate
-        else:
-            lines.append(word)
-    text_artist.set_text("\n".join(lines))
+def _labelled_ticks(axis):
+    """The major tick labels of an axis that are drawn: inside the view and with text."""
+    low, high = sorted(axis.get_view_interval())
+    return [t for t in axis.get_major_ticks()
+            if t.label1.get_visible() and t.label1.get_text() and low <= t.get_loc() <= high]
 
 
-def set_title(ax, text):
-    """A title broken into lines that fit the width of its axes, so that it never runs off the figure."""
-    if text:
-        _fitted(ax.set_title(text), ax.get_position().width * ax.figure.bbox.width)
+def _plain_number(value, _position=None):
+    return f"{value:g}"
 
 
-def suptitle(fig, text):
-    """A figure title broken into lines that fit the figure's width."""
-    if text:
-        _fitted(fig.suptitle(text, fontsize=matplotlib.rcParams["axes.titlesize"] + 1), 0.95 * fig.bbox.width)
+def shows_tick_labels(axis):
+    """False for an axis whose labels are hidden (the inner panel of a shared axis): another panel shows them."""
+    return any(t.label1.get_visible() for t in axis.get_major_ticks())
+
+
+def enough_log_ticks(fig):
+    """Every log axis spanning less than a few decades gets ticks at 1, 2, 5 (then every digit) of each decade, so
+    that at least two of them carry a number: matplotlib's default labels only powers of ten."""
+    fig.canvas.draw()
+    for ax in fig.axes:
+        for axis in (ax.xaxis, ax.yaxis):
+            if axis.get_scale() != "log" or not shows_tick_labels(axis) or len(_labelled_ticks(axis)) >= 2:
+                continue
+            for subs in ((1.0, 2.0, 5.0), tuple(float(d) for d in range(1, 10))):
+                axis.set_major_locator(ticker.LogLocator(subs=subs))
+                axis.set_major_formatter(ticker.FuncFormatter(_plain_number))
+                axis.set_minor_formatter(ticker.NullFormatter())
+                fig.canvas.draw()
+                if len(_labelled_ticks(axis)) >= 2:
+                    break
 
 
 def parse_formats(text):
@@ -193,12 +231,28 @@ def add_format_argument(parser):
                         help="figure formats, comma-separated: png (%d dpi), pdf, svg" % DPI)
 
 
+def table_figure_parser():
+    """The arguments every script that draws one table takes: the CSV, the figure's path, --format."""
+    parser = argparse.ArgumentParser()
+    parser.add_argument("csv")
+    parser.add_argument("png")
+    add_format_argument(parser)
+    return parser
+
+
+def read_rows(path):
+    """A CSV table's rows as dicts of text."""
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
 def save(fig, path, formats=("png",)):
     """Writes the figure once per format: PATH with its extension replaced by each format's. Returns the paths.
 
     No date is stamped into PDF or SVG, so that the same data give the same file."""
     stem = os.path.splitext(path)[0]
     fig.tight_layout()
+    enough_log_ticks(fig)
     written = []
     for name in formats:
         out = f"{stem}.{name}"

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 
 #include "restitution/errors.hpp"
 
@@ -33,6 +34,27 @@ std::vector<std::string> figure_formats_from_list(std::string_view list) {
     start = comma + 1;
   }
   return figure_formats(list.empty() ? std::vector<std::string>{} : names);
+}
+
+std::string figure_format_of(std::string_view file) {
+  const std::string extension = std::filesystem::path(file).extension().string();
+  const std::string_view format =
+      extension.empty() ? std::string_view() : std::string_view(extension).substr(1);
+  if (std::find(kFigureFormats.begin(), kFigureFormats.end(), format) == kFigureFormats.end()) {
+    throw InvalidInput(fmt::format("'{}' names no figure format: end the file name in .{}", file,
+                                   fmt::join(kFigureFormats, ", .")));
+  }
+  return std::string(format);
+}
+
+std::vector<std::string> plot_figure_formats(std::string_view file, std::string_view also) {
+  std::vector<std::string> formats = {figure_format_of(file)};
+  if (also.empty()) return formats;
+  for (std::string& format : figure_formats_from_list(also)) {
+    if (std::find(formats.begin(), formats.end(), format) == formats.end())
+      formats.push_back(std::move(format));
+  }
+  return formats;
 }
 
 const std::string& linked_figure_format(const std::vector<std::string>& formats) {

@@ -18,6 +18,15 @@ std::vector<std::string> figure_formats(const std::vector<std::string>& names);
 // figure_formats() of a comma-separated list ("png,pdf").
 std::vector<std::string> figure_formats_from_list(std::string_view list);
 
+// The format a figure file named on the command line (--plot FILE) is written in: its extension, png, pdf or
+// svg, never another name. Throws InvalidInput naming the file and the formats that work for any other
+// extension or none.
+std::string figure_format_of(std::string_view file);
+
+// The formats of --plot FILE [--format LIST]: FILE's own first, then those of the list not yet in it (an
+// empty list adds none).
+std::vector<std::string> plot_figure_formats(std::string_view file, std::string_view also);
+
 // The format a report links to: PNG when written (every viewer shows it), else the first.
 const std::string& linked_figure_format(const std::vector<std::string>& formats);
 

@@ -17,6 +17,10 @@ FitTask read_fit_task(TomlReader& r, std::string name, const std::map<std::strin
   t.name = std::move(name);
   t.title = r.text("title").value_or(t.name);
   t.note = r.text("note").value_or("");
+  if (const auto label = r.text("data_label")) {
+    if (label->empty()) r.fail("data_label", "empty: say what the data points are (default \"measured\")");
+    t.data_label = *label;
+  }
   const auto file = r.text("data");
   auto v = r.numbers("v");
   auto eps = r.numbers("eps");

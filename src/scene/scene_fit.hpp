@@ -16,7 +16,10 @@ namespace restitution::scene {
 struct FitTask {
   std::string name;
   std::string title;
-  std::string note;    // free text for the report
+  std::string note;  // free text for the report
+  // What the data points are, in the figure's legend: "measured" unless the scene says otherwise (a published
+  // formula sampled at some speeds is no measurement).
+  std::string data_label = "measured";
   std::string source;  // the data file as written in the scene, or "inline"
   FitData data;
   std::vector<FitCandidate> candidates;

@@ -40,21 +40,37 @@ inline CLI::Validator non_empty_path() {
           "PATH"};
 }
 
+// A CLI11 check from a function that throws InvalidInput for a bad value: its message is the usage error.
+template <typename Check>
+CLI::Validator throwing_check(Check check, const std::string& description) {
+  return {[check](const std::string& value) {
+            try {
+              check(value);
+              return std::string();
+            } catch (const InvalidInput& e) {
+              return std::string(e.what());
+            }
+          },
+          description};
+}
+
 // --format png,pdf,svg of the commands that draw figures: the list is checked here (an unknown format is a
 // usage error naming it) and read with scene::figure_formats_from_list.
 inline CLI::Option* add_figure_format_option(CLI::App* command, std::string& formats) {
-  const CLI::Validator known(
-      [](const std::string& value) {
-        try {
-          scene::figure_formats_from_list(value);
-          return std::string();
-        } catch (const InvalidInput& e) {
-          return std::string(e.what());
-        }
-      },
-      "png,pdf,svg");
-  return command->add_option("--format", formats, "figure formats, comma-separated: png (200 dpi), pdf, svg")
+  const CLI::Validator known =
+      throwing_check([](const std::string& value) { scene::figure_formats_from_list(value); }, "png,pdf,svg");
+  return command->add_option("--format", formats, "figure formats, comma-separated: png (300 dpi), pdf, svg")
       ->capture_default_str()
+      ->check(known);
+}
+
+// --plot FILE of the commands that draw one figure: FILE's extension is its format (png, pdf, svg; see
+// scene::figure_format_of), the same rule for every command; any other name is a usage error naming the
+// formats that work, never a figure written under another name.
+inline CLI::Option* add_plot_option(CLI::App* command, std::string& file, const std::string& what) {
+  const CLI::Validator known =
+      throwing_check([](const std::string& value) { scene::figure_format_of(value); }, "FILE.png|pdf|svg");
+  return command->add_option("--plot", file, what + " (png, pdf or svg, by the file's extension)")
       ->check(known);
 }
 

@@ -3,9 +3,12 @@
 // the law the data prefer (docs/fit.md).
 #include <fmt/core.h>
 
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
+#include <system_error>
+#include <utility>
 #include <vector>
 
 #include "cli/common/commands.hpp"
@@ -14,9 +17,11 @@
 #include "cli/common/output_files.hpp"
 #include "cli/common/output_guards.hpp"
 #include "cli/fit/fit_data_report.hpp"
+#include "cli/fit/fit_plot_tables.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/fit.hpp"
 #include "restitution/material.hpp"
+#include "scene/figure_formats.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -30,7 +35,38 @@ struct FitDataOptions {
   MaterialOptions material;
   bool json = false;
   std::string output;
+  std::string plot;    // figure file (png, pdf, svg by its extension)
+  std::string format;  // figure formats besides the one --plot's extension names
 };
+
+// The tables the figure script reads, beside the image while it draws; removed however the drawing ends.
+struct PlotTables {
+  std::filesystem::path points;
+  std::filesystem::path curves;
+  PlotTables(std::filesystem::path points_csv, std::filesystem::path curves_csv)
+      : points(std::move(points_csv)), curves(std::move(curves_csv)) {}
+  PlotTables(const PlotTables&) = delete;
+  PlotTables& operator=(const PlotTables&) = delete;
+  ~PlotTables() {
+    std::error_code ignored;
+    std::filesystem::remove(points, ignored);
+    std::filesystem::remove(curves, ignored);
+  }
+};
+
+// The data with error bars, each law's ε(v) with its 95 % band and the residuals (scripts/plots/fit_data.py,
+// the figure of a scene's [[fit]]). A plot that cannot be made is a warning: the fit is printed regardless.
+// Returns whether the figure was drawn.
+bool draw(const FitDataOptions& o, const FitData& data, const FitResult& result, const FitOptions& options) {
+  const PlotTables tables{o.plot + ".data.csv", o.plot + ".curves.csv"};
+  write_file_atomically(tables.points, fit_data_table(data, result));
+  write_file_atomically(tables.curves, fit_curves_table(data, result, options));
+  const std::string why =
+      run_plot_script("fit_data", tables.points, o.plot, {"--curves", tables.curves.string()},
+                      scene::plot_figure_formats(o.plot, o.format));
+  if (!why.empty()) fmt::print(stderr, "restitution: warning: no fit-data plot: {}\n", why);
+  return why.empty();
+}
 
 // A refusal of the data as a whole (too few points) names the file, as the row errors of the CSV do.
 void check_data_of_file(const FitData& data, const std::string& file) {
@@ -48,6 +84,10 @@ int run_fit_data(const FitDataOptions& o) {
     check_no_folder_through_link(o.output);
     check_output_file(o.output);
   }
+  if (!o.plot.empty()) {
+    check_output_is_not_input(o.plot, {o.file});
+    check_output_file(o.plot);
+  }
   FitOptions options;
   options.candidates = fit_candidates(o.laws, o.speed_independent_end);
   options.tolerance = o.tolerance;
@@ -60,8 +100,10 @@ int run_fit_data(const FitDataOptions& o) {
   // The JSON holds every point: made only when asked for (a million rows make ~100 MB of it).
   const std::string json = o.json || !o.output.empty() ? fit_json(report) : std::string();
   if (!o.output.empty()) write_file_atomically(o.output, json + "\n");
+  const bool drawn = !o.plot.empty() && draw(o, data, result, options);
   fmt::print("{}", o.json ? json + "\n" : fit_table(report));
   if (!o.output.empty() && !o.json) fmt::print("wrote {}\n", o.output);
+  if (drawn && !o.json) fmt::print("wrote {}\n", o.plot);
   return 0;
 }
 
@@ -102,6 +144,9 @@ void add_fit_data_command(CLI::App& app, Action& chosen) {
          "also write the JSON object to this file (for calibrate --from-fit and dem --from-fit); never "
          "the input file")
       ->check(non_empty_path());
+  CLI::Option* plot =
+      add_plot_option(cmd, o->plot, "draw the data, each law's eps(v) with its 95 % band and the residuals");
+  add_figure_format_option(cmd, o->format)->needs(plot);
   cmd->callback([o, &chosen] { chosen = [o] { return run_fit_data(*o); }; });
 }
 

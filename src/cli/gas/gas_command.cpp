@@ -5,7 +5,6 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
@@ -32,8 +31,9 @@ struct GasCommandOptions {
   GasOptions gas;
   GasDeckOptions deck;  // --deck, --compare (cli/gas/gas_deck_options.hpp)
   bool json = false;
-  std::string out;   // CSV file
-  std::string plot;  // PNG file
+  std::string out;     // CSV file
+  std::string plot;    // figure file (png, pdf, svg by its extension)
+  std::string format;  // figure formats besides the one --plot's extension names
 };
 
 std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const GasCommandOptions& o) {
@@ -96,13 +96,8 @@ void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const
   // Without --out the plot reads a scratch copy of the table beside the image, removed afterwards.
   const std::filesystem::path data(o.out.empty() ? o.plot + ".data.csv" : o.out);
   if (o.out.empty()) write_file_atomically(data, table);
-  // The format the file's name asks for (gas.pdf, gas.svg); PNG for any other name.
-  const std::string extension = std::filesystem::path(o.plot).extension().string();
-  const bool known =
-      extension.size() > 1 && std::find(scene::kFigureFormats.begin(), scene::kFigureFormats.end(),
-                                        extension.substr(1)) != scene::kFigureFormats.end();
   const std::string why = run_plot_script("gas_cooling", data, o.plot, gas_plot_arguments(r, c),
-                                          {known ? extension.substr(1) : "png"});
+                                          scene::plot_figure_formats(o.plot, o.format));
   if (o.out.empty()) {
     std::error_code ignored;
     std::filesystem::remove(data, ignored);
@@ -136,8 +131,8 @@ void add_gas_command(CLI::App& app, Action& chosen) {
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->add_option("--out", o->out, "write the curve to this CSV file")->check(non_empty_path());
-  cmd->add_option("--plot", o->plot, "plot T(t)/T0 and the local exponent to this PNG file")
-      ->check(non_empty_path());
+  CLI::Option* plot = add_plot_option(cmd, o->plot, "plot T(t)/T0 and the local exponent to this file");
+  add_figure_format_option(cmd, o->format)->needs(plot);
   cmd->callback([o, &chosen] { chosen = [o] { return run_gas(*o); }; });
 }
 

@@ -30,7 +30,19 @@ std::string gas_law_text(const gas::CoolingRequest& r) {
 }
 
 std::vector<std::string> gas_plot_arguments(const gas::CoolingRequest& r, const gas::CoolingCurve& c) {
-  return {number17(r.initial_temperature_j), number17(c.tau0_s), number17(c.haff_eps), gas_law_text(r)};
+  std::vector<std::string> arguments = {number17(r.initial_temperature_j), number17(c.tau0_s),
+                                        number17(c.haff_eps)};
+  // The law as numbers, not as text: the figure rounds them for its legend and draws the viscoelastic
+  // guides (t^-5/3) only for viscoelastic Hertz.
+  if (r.law.constant_eps) {
+    arguments.insert(arguments.end(), {"--constant-eps", number17(*r.law.constant_eps)});
+  } else {
+    arguments.insert(
+        arguments.end(),
+        {"--law", std::string(law_name(r.law.kind)), "--end", std::string(end_name(r.law.end)), "--zeta",
+         number17(r.law.zeta_at_reference), "--reference-speed", number17(r.law.reference_speed_m_s)});
+  }
+  return arguments;
 }
 
 }  // namespace restitution::cli

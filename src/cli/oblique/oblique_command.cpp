@@ -51,8 +51,8 @@ struct ObliqueCommandOptions {
   double tolerance = 1e-10;
   bool json = false;
   std::string out;
-  std::string plot;  // Maw's diagram
-  std::string format = "png";
+  std::string plot;    // Maw's diagram
+  std::string format;  // figure formats besides the one --plot's extension names
 };
 
 using Setup = ObliqueSetup;
@@ -191,7 +191,7 @@ void draw(const ObliqueCommandOptions& o, const Setup& s, const std::vector<Obli
     std::filesystem::create_directories(folder);
   }
   const std::string why = plot_maw(s, impacts.front().result.normal_restitution, data, o.plot,
-                                   scene::figure_formats_from_list(o.format));
+                                   scene::plot_figure_formats(o.plot, o.format));
   if (o.out.empty()) {
     std::error_code ignored;
     std::filesystem::remove(data, ignored);
@@ -277,11 +277,10 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
       ->capture_default_str();
   cmd->add_flag("--json", o->json, "print JSON instead of the table");
   cmd->add_option("--out", o->out, "also write the table as CSV to this file");
-  cmd->add_option(
-         "--plot", o->plot,
-         "draw Maw, Barber & Fawcett's diagram (psi_2 against psi_1) to this file (needs friction > 0)")
-      ->check(non_empty_path());
-  add_figure_format_option(cmd, o->format);
+  CLI::Option* plot = add_plot_option(
+      cmd, o->plot,
+      "draw Maw, Barber & Fawcett's diagram (psi_2 against psi_1) to this file (needs friction > 0)");
+  add_figure_format_option(cmd, o->format)->needs(plot);
   cmd->callback([o, &chosen] { chosen = [o] { return run(*o); }; });
 }
 

@@ -104,7 +104,7 @@ void add_run_command(CLI::App& app, Action& chosen) {
   add_figure_format_option(cmd, o->format)
       ->default_str("the scene's `format`, else png")
       ->description(
-          "figure formats, comma-separated: png (200 dpi), pdf, svg (overrides the scene's `format`)");
+          "figure formats, comma-separated: png (300 dpi), pdf, svg (overrides the scene's `format`)");
   cmd->callback([o, &chosen] { chosen = [o] { return run_scene_file(*o); }; });
 }
 

@@ -57,7 +57,6 @@ DampingSection damping_section(const scene::DampingCheckTask& task, const dampin
       "--y",      on,
       "--dashed", off,
       "--points", "requested_eps",
-      "--title",  task.title,
       "--ylabel", fmt::format(R"(actual $\varepsilon$ (speed-dependent recipes at {:g} m/s))", v_ref)};
   map.caption = fmt::format(
       "Actual against requested ε for {} recipes, clamp on (force clamped at zero: the delayed-recovery end) "
@@ -87,7 +86,6 @@ DampingSection damping_section(const scene::DampingCheckTask& task, const dampin
                                   task.speeds[i], cal.on.front(), cal.off.front(), dep.on[i], dep.off[i]);
       }
     }
-    errors.args = {"--title", fmt::format("{}, set up at {:g} m/s", name, v_ref)};
     errors.caption = fmt::format(
         "`{}`: top, its own error at the set-up speed {:g} m/s, ε(v_ref)/ε_req − 1 (a property of the "
         "recipe's formula); bottom, the physical speed dependence ε(v)/ε(v_ref) − 1 of the law it sets, "

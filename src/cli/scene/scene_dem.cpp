@@ -83,8 +83,8 @@ DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task) {
     }
     s.csv += "\n";
   }
-  s.plot_args = {"--x", "velocity_m_s", "--y",      "eps_restitution", "--xscale",
-                 "log", "--title",      task.title, "--ylabel",        R"($\varepsilon$)"};
+  s.plot_args = {"--x",      "velocity_m_s", "--y",      "eps_restitution",
+                 "--xscale", "log",          "--ylabel", R"($\varepsilon$)"};
   if (ran) {
     s.plot_args.insert(
         s.plot_args.end(),

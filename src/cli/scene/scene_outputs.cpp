@@ -153,9 +153,8 @@ class SceneWriter {
     if (s.empirical) dashed.emplace_back("empirical_eps");
     report_ += fmt::format("## {}\n\n", s.title);
     if (!eps_columns.empty()) {
-      std::vector<std::string> args = {
-          "--x",     x,       "--y",      join(eps_columns),
-          "--title", s.title, "--ylabel", R"($\varepsilon$)"};  // x: scripts/plots/style.py names it
+      // No title in the figure: the section's heading carries it. x: scripts/plots/style.py names it.
+      std::vector<std::string> args = {"--x", x, "--y", join(eps_columns), "--ylabel", R"($\varepsilon$)"};
       if (!dashed.empty()) args.insert(args.end(), {"--dashed", join(dashed)});
       if (!differences.empty()) args.insert(args.end(), {"--error", join(differences)});
       if (s.axes != scene::Axes::linear) args.insert(args.end(), {"--xscale", "log"});
@@ -277,9 +276,7 @@ class SceneWriter {
       marks.push_back(fmt::format("{}:{:.17g}", end_name(e), end->tau));
     }
     report_ += fmt::format("## {}\n\n", tr.title);
-    report_ +=
-        plot("scene_trajectory", tr.name,
-             {"--ends", join(marks), "--title", fmt::format("{} (ζ = {:.4g})", tr.title, p.parameter)});
+    report_ += plot("scene_trajectory", tr.name, {"--ends", join(marks)});
     report_ += fmt::format(
         "Computed: the trajectory x, x', x'' of one {} collision at ζ = {} ({} points in `{}.csv`, natural "
         "units). "
@@ -321,7 +318,7 @@ class SceneWriter {
                     {"--x", "damping_ratio", "--points", join(numeric), "--y", join(exact), "--error",
                      join(errors), "--error-label",
                      R"($|\varepsilon - \varepsilon_\mathrm{exact}| / \min(\varepsilon, 1 - \varepsilon)$)",
-                     "--title", d.title, "--ylabel", R"($\varepsilon$)", "--yscale", "log"});
+                     "--ylabel", R"($\varepsilon$)", "--yscale", "log"});
     report_ += fmt::format(
         "Computed: the linear dash-pot x'' + 2r x' + x = 0 at {} damping ratios against its closed forms "
         "(ε = exp(-r τ_c); naive ωτ_c = π for r < 1, delayed recovery tan ωτ_c = 2rω/(2r²-1)). The error is "
@@ -405,8 +402,9 @@ class SceneWriter {
     write_file(task.name + ".csv", section.data_csv);
     write_file(task.name + "_curves.csv", section.curves_csv);
     report_ += fmt::format("## {}\n\n", task.title);
-    report_ += plot("fit_data", task.name,
-                    {"--curves", (folder_ / (task.name + "_curves.csv")).string(), "--title", task.title});
+    report_ +=
+        plot("fit_data", task.name,
+             {"--curves", (folder_ / (task.name + "_curves.csv")).string(), "--data-label", task.data_label});
     report_ += section.markdown;
     json_.key("fit_" + task.name).begin_object();
     write_fit_json(json_, FitReportInput{task.source, &task.data, &section.result, section.k});
