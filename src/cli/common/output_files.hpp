@@ -19,6 +19,11 @@ void check_output_folder(const std::filesystem::path& folder);
 // output_target; a stream is always writable here). Throws InvalidInput when the path is a folder.
 void check_output_file(const std::filesystem::path& path);
 
+// check_output_file for a figure named with `option` (--plot). A figure is made beside its name as a new file
+// and renamed onto it, so a device, FIFO, socket or open stream (/dev/full, /dev/stdout) cannot take one:
+// InvalidInput naming the option, rather than a sibling /dev/full.png.
+void check_figure_file(const std::filesystem::path& path, const std::string& option);
+
 // Where a file named on the command line is written. A symlink is followed to its target, which is then
 // replaced (the link stays); a device, FIFO or socket, and a link into /proc such as /dev/stdout, name an
 // open stream rather than a place and are written in place, never replaced. Throws InvalidInput for a folder.
@@ -28,10 +33,15 @@ struct OutputTarget {
 };
 OutputTarget output_target(const std::filesystem::path& path);
 
-// Writes the whole content to target.tmp, flushes, then renames it onto the target: a reader never sees a
+// Writes the whole content to a temporary beside the target (TARGET.<random>.tmp, created exclusively, never
+// through a link: sweep/temporary_file.hpp), then renames it onto the target: a reader never sees a
 // half-written file under the final name (streams are written in place; see output_target). Throws
 // IoError naming the file when the write fails.
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
+
+// Writes the whole content straight into a device, pipe or stream (an OutputTarget with in_place). Throws
+// IoError naming it when it takes less (/dev/full: "No space left on device").
+void write_in_place(const std::filesystem::path& path, const std::string& content);
 
 // A double with 17 significant digits, as the sweep library writes its tables (sweep/number_text.hpp).
 using restitution::number17;
