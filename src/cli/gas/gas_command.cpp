@@ -96,7 +96,8 @@ void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const
   if (!o.out.empty()) write_file_atomically(o.out, table);
   if (o.plot.empty()) return;
   // Without --out the plot reads a scratch copy of the table beside the image, removed afterwards; under a
-  // random name, as a temporary (sweep/temporary_file.hpp): a link planted under a fixed one is never followed.
+  // random name, as a temporary (sweep/temporary_file.hpp): a link planted under a fixed one is never
+  // followed.
   const std::filesystem::path data(o.out.empty() ? fmt::format("{}.{}.data.csv", o.plot, random_name_part())
                                                  : o.out);
   if (o.out.empty()) write_file_atomically(data, table);
