@@ -220,26 +220,18 @@ std::string run_plot_script(const std::string& script, const fs::path& data, con
         "no plot: {} cannot import matplotlib (install python3-matplotlib: bash scripts/setup)", python);
   }
   // matplotlib picks the format by the extension, so the temporary names keep it: NAME.<random>.tmp.png, ...
-  // (random: another run's figures, or a link planted under a fixed name, are never written through).
+  // (random: another run's figures, or a link planted under a fixed name, are never written through). The
+  // script creates them: a file made here in advance would outlive a SIGKILL of this process.
   const std::string token = random_name_part();
   const auto figure = [&](const std::string& format, bool temporary) {
-    return image.parent_path() /
-           fmt::format("{}{}{}", image.stem().string(), temporary ? "." + token + ".tmp." : ".", format);
+    const std::string stem = image.stem().string();
+    return image.parent_path() / (temporary ? fmt::format("{}.{}.tmp.{}", stem, token, format)
+                                            : fmt::format("{}.{}", stem, format));
   };
   std::error_code error;
   const auto remove_temporaries = [&] {
     for (const std::string& format : formats) fs::remove(figure(format, true), error);
   };
-  for (const std::string& format : formats) {
-    const int fd = create_exclusively(figure(format, true));  // the script then writes into a file of ours
-    if (fd < 0) {
-      const int reason = errno;
-      remove_temporaries();
-      throw IoError(
-          fmt::format("cannot write '{}': {}", figure(format, false).string(), std::strerror(reason)));
-    }
-    ::close(fd);
-  }
   std::string format_list;
   for (const std::string& format : formats) format_list += (format_list.empty() ? "" : ",") + format;
   std::vector<std::string> command = {python, path.string(), data.string(),

@@ -52,8 +52,8 @@ std::vector<std::string> figure_file_names(const std::string& stem, const std::v
 // Runs scripts/plots/<script>.py with Debian's /usr/bin/python3 as
 // `<script>.py DATA IMAGE ARGUMENTS... --format FORMATS`: one figure in each format (png, pdf, svg; see
 // scene/figure_formats.hpp), named IMAGE with its extension replaced by the format's. The script writes
-// temporary NAME.tmp.<format> files that become the figures only once the script succeeded, and it never
-// outlives this process (SIGKILL when this process dies, SIGTERM when it is asked to stop): no figure
+// temporary NAME.<random>.tmp.<format> files that become the figures only once the script succeeded, and it
+// never outlives this process (SIGKILL when this process dies, SIGTERM when it is asked to stop): no figure
 // appears after the command ended, none half-written under its name. Returns an empty string on success,
 // otherwise one line saying why no plot was made (matplotlib missing, script failed): callers warn on
 // stderr and keep the data they wrote. Throws Interrupted when the script (or this process) got SIGINT or
