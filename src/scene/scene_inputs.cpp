@@ -30,7 +30,7 @@ fs::path contained_input(TomlReader& r, const std::string& key, const std::strin
   }
   fs::path folder = fs::path(std::string(r.file_name())).parent_path();
   if (folder.empty()) folder = ".";
-  const fs::path path = resolved_path(folder / name);
+  fs::path path = resolved_path(folder / name);
   if (!resolves_within(path, folder)) {
     r.fail(key, fmt::format("\"{}\" is a link that leads outside the scene's folder: a scene reads files in "
                             "its own folder only",
