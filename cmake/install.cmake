@@ -39,9 +39,11 @@ install(TARGETS restitution RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 set(restitution_share_dir ${CMAKE_INSTALL_DATADIR}/restitution)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/scripts/plots DESTINATION ${restitution_share_dir}/scripts
         FILES_MATCHING PATTERN "*.py" PATTERN "__pycache__" EXCLUDE)
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenes DESTINATION ${restitution_share_dir} FILES_MATCHING PATTERN "*.toml")
+# The shipped [[fit]] scenes read their CSV from within their folder (scenes/data/): a scene reads nothing outside it.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenes DESTINATION ${restitution_share_dir} FILES_MATCHING PATTERN "*.toml"
+        PATTERN "*.csv")
 install(FILES ${PROJECT_SOURCE_DIR}/data/reference_solutions.csv DESTINATION ${restitution_share_dir}/data)
-# The shipped [[fit]] scenes read their CSV relative to themselves: ../examples/fit/.
+# The fit examples of docs/fit.md.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples/fit DESTINATION ${restitution_share_dir}/examples FILES_MATCHING PATTERN "*.csv")
 # The documentation the man page's SEE ALSO names: docs/ with the README, the licence and the changelog, in
 # share/doc/restitution (CMAKE_INSTALL_DOCDIR).

@@ -105,17 +105,71 @@ TEST(FitDataInput, SceneDataIsARegularFileRelativeToTheScene) {
     EXPECT_EQ(err.find("root:"), std::string::npos) << err;
   }
   ASSERT_EQ(mkfifo((t.path / "pipe.csv").c_str(), 0600), 0);
+  const std::string err = refusal("run " + scene_with_data(t.path, "pipe.csv"));
+  EXPECT_NE(err.find("not a regular file"), std::string::npos) << err;
+  // A device or /proc through a link leads outside the scene's folder (SceneDataStaysInTheScenesFolder).
   fs::create_symlink("/dev/zero", t.path / "zero.csv");
   fs::create_symlink("/proc/self/environ", t.path / "environ.csv");
-  for (const char* data : {"pipe.csv", "zero.csv", "environ.csv"}) {
-    const std::string err = refusal("run " + scene_with_data(t.path, data));
-    EXPECT_NE(err.find("not a regular file"), std::string::npos) << data << ": " << err;
+  for (const char* data : {"zero.csv", "environ.csv"}) {
+    const std::string outside = refusal("run " + scene_with_data(t.path, data));
+    EXPECT_NE(outside.find("leads outside the scene's folder"), std::string::npos) << data << ": " << outside;
   }
   EXPECT_FALSE(fs::exists(t.path / "out"));
-  // The shipped scene reaches ../examples/fit/ relative to itself from any working directory.
+  // The shipped scene reads data/ below itself from any working directory.
   const auto r = run_cli("run " + std::string(RESTITUTION_SOURCE_DIR) + "/scenes/ice_fit.toml --output " +
                          (t.path / "ice").string());
   EXPECT_EQ(r.status, 0) << r.err;
+}
+
+// Issue 45, item 7: a scene's data is read from within the scene's folder only, after symlinks; `..` is
+// refused; nothing of a refused file is opened, so nothing of it is echoed.
+TEST(FitDataInput, SceneDataStaysInTheScenesFolder) {
+  const TempFolder t;
+  fs::create_directories(t.path / "a" / "b");
+  const std::string climbing =
+      refusal("run " + scene_with_data(t.path / "a" / "b", "../../../../etc/shadow"));
+  EXPECT_NE(climbing.find("climbs out with '..'"), std::string::npos) << climbing;
+  fs::create_symlink("/etc/passwd", t.path / "passwd.csv");
+  fs::create_symlink("/etc", t.path / "etc");  // a linked folder, then a file in it
+  for (const char* data : {"passwd.csv", "etc/passwd"}) {
+    const std::string err = refusal("run " + scene_with_data(t.path, data));
+    EXPECT_NE(err.find("leads outside the scene's folder"), std::string::npos) << data << ": " << err;
+    EXPECT_EQ(err.find("root:"), std::string::npos) << err;
+  }
+  // Below the scene's folder, through a link that stays inside, it is read.
+  fs::create_directories(t.path / "measured");
+  write(t.path / "measured" / "drops.csv", "v,eps\n0.5,0.8\n1,0.78\n2,0.75\n4,0.71\n");
+  fs::create_directory_symlink(t.path / "measured", t.path / "latest");
+  for (const char* data : {"measured/drops.csv", "latest/drops.csv"}) {
+    const auto r = run_cli("run " + scene_with_data(t.path, data) + " --output " + (t.path / "out").string());
+    EXPECT_EQ(r.status, 0) << data << ": " << r.err;
+  }
+}
+
+// `restitution run SCENE --quick` from the folder `work`; its exit status, stdout and stderr.
+test_support::CliOutcome run_scene_from(const fs::path& work, const std::string& scene) {
+  return run_cli("--version >/dev/null && cd '" + work.string() + "' && " + RESTITUTION_EXE + " run " +
+                 scene + " --quick");
+}
+
+// Issue 45, item 7: a scene's own `output` stays under the working folder after symlinks; a name holding an
+// escape character is printed escaped.
+TEST(FitDataInput, SceneOutputStaysUnderTheWorkingFolder) {
+  const TempFolder t;
+  const TempFolder elsewhere;
+  fs::create_directory_symlink(elsewhere.path, t.path / "out");
+  write(t.path / "scene.toml",
+        "title = \"t\"\noutput = \"out/x\"\n[[trajectory]]\nname = \"tr\"\nzeta = 1\n");
+  const auto r = run_scene_from(t.path, "scene.toml");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("leads outside the working folder"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_empty(elsewhere.path)) << "written through the link";
+  write(t.path / "escape.toml",
+        "title = \"t\"\noutput = \"o\\u001b[2Jx\"\n[[trajectory]]\nname = \"tr\"\nzeta = 1\n");
+  const auto escaped = run_scene_from(t.path, "escape.toml");
+  EXPECT_EQ(escaped.status, 0) << escaped.err;
+  EXPECT_EQ(escaped.out.find('\x1b'), std::string::npos) << "printed raw";
+  EXPECT_NE(escaped.out.find("wrote o\\x1b[2Jx/"), std::string::npos) << escaped.out;
 }
 
 // Item 5: an error names file, line and column and echoes at most 40 characters, escaped.

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli_runner.hpp"
+#include "haff_log.hpp"
 
 namespace {
 
@@ -17,9 +18,7 @@ using restitution::test_support::run_cli;
 using restitution::test_support::slurp;
 using restitution::test_support::TempFolder;
 
-const std::string kGas =
-    "gas --young-modulus 1e8 --poisson-ratio 0.4 --density 920 --radius 0.005 --eps 0.8 --velocity 2 "
-    "--packing-fraction 0.1 --rms-speed 1 --haff-times 30 ";
+const std::string& kGas = restitution::test_support::kHaffGas;
 
 TEST(GasDeckCli, WritesTheDeckItsCompanionAndTheData) {
   TempFolder folder;
@@ -41,24 +40,7 @@ TEST(GasDeckCli, WritesTheDeckItsCompanionAndTheData) {
 
 TEST(GasDeckCli, ComparesALogWithTheTheory) {
   TempFolder folder;
-  // T0 = m rms^2 with rms 1 m/s; Haff's law at 0.9 of Enskog's rate, tau0 from `gas --json` of a constant
-  // eps.
-  const auto theory = run_cli(
-      "gas --radius 0.005 --density 920 --law tsuji-hertz --eps 0.8 --velocity 2 --packing-fraction 0.1 "
-      "--rms-speed 1 --haff-times 30 --json");
-  ASSERT_EQ(theory.status, 0) << theory.err;
-  const double tau0 = nlohmann::json::parse(theory.out).at("tau0_s").get<double>();
-  const double t0 = 920.0 * 4.0 / 3.0 * M_PI * std::pow(0.005, 3);
-  std::ofstream log(folder.path / "c.log");
-  log.precision(15);
-  log << "LAMMPS (29 Sep 2021 - Update 2)\n";
-  for (int i = 0; i <= 30; ++i) {
-    const double t = i == 0 ? 0.0 : 0.1 * tau0 * std::pow(10.0, (i - 1) / 10.0);
-    log << "restitution-gas law=constant-eps time_s=" << t
-        << " temperature_j=" << t0 / std::pow(1.0 + 0.9 * t / tau0, 2) << " timestep_s=5e-06 step=" << i
-        << "\n";
-  }
-  log.close();
+  ASSERT_TRUE(restitution::test_support::write_haff_log(folder.path / "c.log"));
   const auto r = run_cli(kGas + "--json --compare " + (folder.path / "c.log").string() +
                          " --compare-output " + (folder.path / "out").string());
   ASSERT_EQ(r.status, 0) << r.err;

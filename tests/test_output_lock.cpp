@@ -200,5 +200,24 @@ TEST(CliLock, ASecondRunIntoTheSameFolderIsRefusedAtOnce) {
   EXPECT_FALSE(fs::exists(folder.string() + ".lock"));
 }
 
+TEST(CliLock, TwoRunsThroughASymlinkedFolderAreSerialised) {
+  const TempFolder dir;
+  const fs::path folder = dir.path / "same2";
+  fs::create_directories(folder);
+  fs::create_directory_symlink(folder, dir.path / "link-to-same2");
+  const std::string scene = std::string(RESTITUTION_SOURCE_DIR) + "/scenes/trajectory.toml";
+  const pid_t first =
+      spawn_cli({"run", scene, "--quick", "--output", folder.string()}, dir.path / "first.err");
+  ASSERT_TRUE(wait_for_lock(folder.string() + ".lock", first));
+  const std::string other = std::string(RESTITUTION_SOURCE_DIR) + "/scenes/dashpot.toml";
+  const auto second = run_cli("run " + other + " --quick --output " + (dir.path / "link-to-same2").string());
+  EXPECT_EQ(second.status, 2) << second.err;
+  EXPECT_NE(second.err.find(fmt::format("is being written by another restitution run (process {}", first)),
+            std::string::npos)
+      << second.err;
+  EXPECT_EQ(wait_cli(first), 0) << slurp(dir.path / "first.err");
+  EXPECT_FALSE(fs::exists(dir.path / "link-to-same2.lock"));
+}
+
 }  // namespace
 }  // namespace restitution

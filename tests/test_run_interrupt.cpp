@@ -60,12 +60,15 @@ Outcome interrupted_run(const fs::path& scene, const fs::path& python, const fs:
 }
 
 // A python that says it has matplotlib (or, with hang_on_probe, hangs there) and hangs in every plot script.
-fs::path fake_python(const fs::path& dir, bool hang_on_probe) {
+// With survives_sigint it ignores Ctrl-C in the plot script, as matplotlib's python may (it turns SIGINT into
+// an exception it can catch and outlive) and ends only by the SIGTERM the program forwards.
+fs::path fake_python(const fs::path& dir, bool hang_on_probe, bool survives_sigint = false) {
   const fs::path path = dir / "python";
   std::ofstream(path) << "#!/bin/sh\n"
                       << "if [ \"$1\" = -c ] && [ " << (hang_on_probe ? "1" : "0")
                       << " = 0 ]; then exit 0; fi\n"
-                      << "touch '" << (dir / "ready").string() << "'\nexec sleep 60\n";
+                      << (survives_sigint ? "trap '' INT\n" : "") << "touch '" << (dir / "ready").string()
+                      << "'\nexec sleep 60\n";
   fs::permissions(path, fs::perms::owner_all);
   return path;
 }
@@ -106,6 +109,29 @@ TEST(RunInterrupt, AnEarlierReportDoesNotSurviveAStoppedRun) {
                                     std::chrono::milliseconds(0), dir.path / "err");
   EXPECT_TRUE(WIFEXITED(o.raw) && WEXITSTATUS(o.raw) == 130) << o.raw << " " << o.err;
   EXPECT_FALSE(fs::exists(dir.path / "out" / "report.md"));
+}
+
+TEST(RunInterrupt, CtrlCWhilePlottingExits130EvenWhenThePlotEndsByTheForwardedTerm) {
+  const TempFolder dir;
+  const fs::path scene = write_scene(dir.path, "[[sweep]]\nname = \"s\"\nzeta = [0.1, 0.2]\n");
+  const Outcome o = interrupted_run(scene, fake_python(dir.path, false, true), dir.path / "ready",
+                                    std::chrono::milliseconds(0), dir.path / "err");
+  EXPECT_TRUE(WIFEXITED(o.raw) && WEXITSTATUS(o.raw) == 130) << o.raw << " " << o.err;
+  EXPECT_NE(o.err.find("interrupted by signal 2"), std::string::npos) << o.err;
+  expect_stopped_by_sigint(o, dir.path / "out");
+}
+
+TEST(RunInterrupt, AnEarlierSummaryDoesNotSurviveAStoppedRun) {
+  const TempFolder dir;
+  fs::create_directories(dir.path / "out");
+  std::ofstream(dir.path / "out" / "summary.json") << "{\"scene\": \"an earlier run\"}\n";
+  const fs::path scene = write_scene(dir.path, "[[sweep]]\nname = \"s\"\nzeta = [0.1, 0.2]\n");
+  const Outcome o = interrupted_run(scene, fake_python(dir.path, false), dir.path / "ready",
+                                    std::chrono::milliseconds(0), dir.path / "err");
+  EXPECT_TRUE(WIFEXITED(o.raw) && WEXITSTATUS(o.raw) == 130) << o.raw << " " << o.err;
+  EXPECT_TRUE(fs::exists(dir.path / "out" / "s.csv")) << "the stop came after this run's first table";
+  EXPECT_FALSE(fs::exists(dir.path / "out" / "summary.json"))
+      << "beside this run's table, read as this run's";
 }
 
 TEST(RunInterrupt, CtrlCWhileComputingStopsAtOnce) {

@@ -28,7 +28,7 @@ def _measurements(path):
 @pytest.mark.parametrize("with_material", [False, True])
 @pytest.mark.parametrize("name", ["rubber_drop.csv", "ice_bridges.csv"])
 def test_fit_data_gives_the_keys_and_values_of_the_command_line(name, with_material, cli):
-    path = SOURCE_DIR / "examples" / "fit" / name
+    path = SOURCE_DIR / ("scenes/data" if name == "ice_bridges.csv" else "examples/fit") / name
     material_options = [f"--{key.replace('_', '-')}={value!r}" for key, value in _MATERIAL.items()]
     written = json.loads(cli("fit-data", "--json", str(path), *(material_options if with_material else [])))
     v, eps, sigma = _measurements(path)

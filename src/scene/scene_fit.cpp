@@ -7,6 +7,7 @@
 
 #include "restitution/errors.hpp"
 #include "restitution/fit.hpp"
+#include "scene/scene_inputs.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace restitution::scene::detail {
@@ -27,17 +28,10 @@ FitTask read_fit_task(TomlReader& r, std::string name, const std::map<std::strin
   auto sigma = r.numbers("sigma");
   if (file) {
     if (v || eps || sigma) r.fail("data", "give either a data file or inline v, eps (and sigma), not both");
-    // Relative to the scene file, so a scene and its data move together (the shipped scenes reach
-    // examples/fit/ with '..', installed alike). A scene may come from someone else: it names no absolute
-    // path, and reads a regular file only, never a device, a FIFO or the machine's /proc.
-    const std::filesystem::path written(*file);
-    if (file->empty()) r.fail("data", "empty: give the CSV file, relative to the scene file");
-    if (written.is_absolute() || written.has_root_name() || written.has_root_directory()) {
-      r.fail("data", fmt::format("\"{}\" is absolute: a scene's data is a file relative to the scene file",
-                                 quoted_excerpt(*file)));
-    }
-    const std::filesystem::path path =
-        std::filesystem::path(std::string(r.file_name())).parent_path() / written;
+    // Relative to the scene file, so a scene and its data move together; within the scene's folder, since
+    // a scene may come from someone else (scene_inputs.hpp). A regular file only, never a device, a FIFO or
+    // the machine's /proc.
+    const std::filesystem::path path = contained_input(r, "data", *file);
     t.source = *file;
     t.data = read_fit_csv(path, FitCsvSource::regular_file);
   } else {

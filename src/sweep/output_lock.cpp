@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "restitution/errors.hpp"
+#include "sweep/resolved_path.hpp"
 
 namespace restitution {
 namespace {
@@ -113,15 +114,17 @@ FolderLock::~FolderLock() {
   if (!created_.empty()) remove_empty_folders(parent_, created_);
 }
 
+// Both beside the place the name resolves to: two names of one folder or file (a symlink to it, a link to a
+// folder above it) take one lock.
 fs::path folder_lock_path(const fs::path& folder) {
-  fs::path path = fs::absolute(folder).lexically_normal();
+  fs::path path = resolved_path(folder);
   if (!path.has_filename()) path = path.parent_path();  // "out/" and "out/." name "out"
   if (path == path.root_path()) return path / ".restitution.lock";
   return path.string() + ".lock";
 }
 
 fs::path sweep_lock_path(const fs::path& file) {
-  return file.string() + ".lock";
+  return resolved_path(file).string() + ".lock";
 }
 
 }  // namespace restitution

@@ -40,10 +40,11 @@ class FolderLock {
   std::optional<OutputLock> lock_;
 };
 
-// The lock file of an output folder: FOLDER.lock beside it (inside it for a file system's root).
+// The lock file of an output folder: FOLDER.lock beside it (inside it for a file system's root), FOLDER being
+// where the name resolves to after symbolic links (sweep/resolved_path.hpp).
 std::filesystem::path folder_lock_path(const std::filesystem::path& folder);
 
-// The lock file of a sweep's output FILE: FILE.lock beside it.
+// The lock file of a sweep's output FILE: FILE.lock beside where FILE resolves to.
 std::filesystem::path sweep_lock_path(const std::filesystem::path& file);
 
 }  // namespace restitution

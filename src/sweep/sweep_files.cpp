@@ -15,6 +15,7 @@
 
 #include "restitution/errors.hpp"
 #include "sweep/sweep_partial.hpp"
+#include "sweep/temporary_file.hpp"
 
 namespace restitution {
 namespace {
@@ -32,21 +33,6 @@ long long steady_ns() {
       .count();
 }
 
-// Writes all the bytes, continuing after a short write; returns 0, or the errno of the write(2) that failed
-// (ENOSPC when the file takes no byte more). Raw write(2) rather than stdio: stdio writes what its buffer
-// holds again when the file is closed, after a failure too.
-int write_all(int fd, const char* data, std::size_t size) {
-  while (size > 0) {
-    const ssize_t written = ::write(fd, data, size);
-    if (written < 0 && errno == EINTR) continue;
-    if (written < 0) return errno;
-    if (written == 0) return ENOSPC;
-    data += written;
-    size -= static_cast<std::size_t>(written);
-  }
-  return 0;
-}
-
 int open_for_writing(const fs::path& path, int flags) {
   return ::open(path.c_str(),
                 O_WRONLY | O_CREAT | O_CLOEXEC | flags,  // NOLINT(cppcoreguidelines-pro-type-vararg)
@@ -58,12 +44,18 @@ int open_for_writing(const fs::path& path, int flags) {
 PartialFile::PartialFile(const fs::path& path, std::uint64_t keep_bytes, const std::string& preamble,
                          unsigned writers, const std::string& option)
     : path_(path), failure_prefix_(option.empty() ? "" : option + ": "), buffers_(std::max(1U, writers)) {
-  if (keep_bytes > 0) fs::resize_file(path, keep_bytes);  // drop a half-written last line
   std::error_code error;
   if (path.has_parent_path()) fs::create_directories(path.parent_path(), error);
-  // O_APPEND: each write(2) of a writer's whole lines lands at the end, never inside another's.
-  fd_ = open_for_writing(path, O_APPEND | (keep_bytes > 0 ? 0 : O_TRUNC));
+  // O_APPEND: each write(2) of a writer's whole lines lands at the end, never inside another's. O_NOFOLLOW: a
+  // link planted under the name is refused (ELOOP), never truncated or appended to through.
+  fd_ = open_for_writing(path, O_APPEND | O_NOFOLLOW | (keep_bytes > 0 ? 0 : O_TRUNC));
   if (fd_ < 0) fail(errno);
+  // Drop a half-written last line.
+  if (keep_bytes > 0 && ::ftruncate(fd_, static_cast<off_t>(keep_bytes)) != 0) {
+    const int reason = errno;
+    ::close(fd_);  // no destructor runs for a constructor that throws
+    fail(reason);
+  }
   const long long now = steady_ns();
   for (Buffer& buffer : buffers_) buffer.last_write_ns = now;
   if (keep_bytes == 0) {
@@ -114,12 +106,11 @@ void PartialFile::fail(int error) const {
 
 OrderedTable::OrderedTable(fs::path target, const std::string& header, std::size_t rows,
                            std::vector<std::uint64_t> done_offsets, const fs::path& partial)
-    : target_(std::move(target)),
-      temporary_(target_.string() + ".tmp"),
-      rows_(rows),
-      done_offsets_(std::move(done_offsets)) {
-  fd_ = open_for_writing(temporary_, O_TRUNC);
-  if (fd_ < 0) fail(errno);
+    : target_(std::move(target)), rows_(rows), done_offsets_(std::move(done_offsets)) {
+  // Created exclusively under a random name: never a planted link, never another run's temporary.
+  TemporaryFile temporary = create_temporary_beside(target_);
+  temporary_ = std::move(temporary.path);
+  fd_ = temporary.fd;
   buffer_.reserve(kBufferBytes + kBufferBytes / 4);
   put(header);
   if (!done_offsets_.empty()) partial_ = std::make_unique<FileLines>(partial);

@@ -2,10 +2,10 @@
 #pragma once
 // The two files a running sweep_to_file (`restitution sweep`) writes: FILE.partial (every finished row, in
 // completion order per worker, for --resume; format in sweep_partial.hpp) and the final table, written in
-// grid order into FILE.tmp while the workers compute and renamed onto FILE when the last row is in. Writing
-// the table as rows arrive, rather than building and writing it once every point is solved, keeps that work
-// off the one thread that runs after the solves: on two threads it was the serial part that capped the
-// speed-up (docs/performance.md).
+// grid order into FILE.<random>.tmp (sweep/temporary_file.hpp) while the workers compute and renamed onto
+// FILE when the last row is in. Writing the table as rows arrive, rather than building and writing it once
+// every point is solved, keeps that work off the one thread that runs after the solves: on two threads it was
+// the serial part that capped the speed-up (docs/performance.md).
 //
 // A failed write is the last write to its file: the lines a buffer held when its write(2) failed (short or
 // refused) are dropped, and nothing is appended after them later, not even by a destructor once space was

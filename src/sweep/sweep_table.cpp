@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 
+#include "sweep/csv_field.hpp"
 #include "sweep/number_text.hpp"
 #include "sweep/physical_columns.hpp"
 
@@ -11,19 +12,6 @@ namespace {
 
 constexpr std::size_t kNumbersPerEnd = 4;
 constexpr std::size_t kTrailingNumbers = 3;  // max_compression tau and x, steps
-
-// A CSV field: quoted, inner quotes doubled, line breaks flattened so that one row stays one line.
-std::string quoted_field(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"') {
-      out += "\"\"";
-    } else {
-      out += (c == '\n' || c == '\r') ? ' ' : c;
-    }
-  }
-  return out + "\"";
-}
 
 // Columns after the maximal compression's for a material: its SI durations and maximal compression.
 std::vector<std::string> si_columns(EndSet ends, const SweepColumns* velocity) {

@@ -14,7 +14,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <system_error>
 #include <thread>
 
@@ -22,6 +21,8 @@
 #include "cli/common/resource_root.hpp"
 #include "cli/common/stop_signals.hpp"
 #include "restitution/errors.hpp"
+#include "sweep/printable_name.hpp"
+#include "sweep/temporary_file.hpp"
 
 namespace restitution::cli {
 namespace fs = std::filesystem;
@@ -77,11 +78,13 @@ int run_quietly(const std::vector<std::string>& command) {
 
 // A child killed by SIGINT or SIGTERM was stopped by the user (Ctrl-C reaches the whole process group), as
 // was this process when its own handler saw the signal: stop the command rather than carry on without it.
+// This process's own signal comes first: when it got SIGINT, the SIGTERM its child died of is only the one
+// run_quietly forwarded, and the command exits 130 for the user's Ctrl-C, not 143.
 void stop_if_signalled(int status) {
+  throw_if_interrupted();
   if (status > 0 && WIFSIGNALED(status) && (WTERMSIG(status) == SIGINT || WTERMSIG(status) == SIGTERM)) {
     throw Interrupted(WTERMSIG(status));
   }
-  throw_if_interrupted();
 }
 
 }  // namespace
@@ -136,6 +139,16 @@ void check_output_file(const fs::path& path) {
   if (!target.in_place) check_writable_folder(target.path.parent_path(), path);
 }
 
+void check_figure_file(const fs::path& path, const std::string& option) {
+  if (output_target(path).in_place) {
+    throw InvalidInput(
+        fmt::format("{} '{}' is a device, a pipe or a stream, not a file: a figure is written as a "
+                    "new file and renamed into place; name a file",
+                    option, printable_name(path.string())));
+  }
+  check_output_file(path);
+}
+
 OutputTarget output_target(const fs::path& path) {
   std::error_code error;
   const fs::file_status followed = fs::status(path, error);
@@ -155,42 +168,35 @@ OutputTarget output_target(const fs::path& path) {
   return {at.lexically_normal(), false};
 }
 
+void write_in_place(const fs::path& path, const std::string& content) {
+  const int fd =
+      ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);  // NOLINT(cppcoreguidelines-pro-type-vararg)
+  const int written = fd < 0 ? errno : write_all(fd, content.data(), content.size());
+  const int closed = fd < 0 || ::close(fd) == 0 ? 0 : errno;
+  if (written != 0 || closed != 0) {
+    throw IoError(fmt::format("cannot write '{}': {}", printable_name(path.string()),
+                              std::strerror(written != 0 ? written : closed)));
+  }
+}
+
 void write_file_atomically(const fs::path& path, const std::string& content) {
   const OutputTarget target = output_target(path);
   if (target.in_place) {
-    std::ofstream out(target.path, std::ios::binary);
-    out << content;
-    out.flush();
-    if (!out) throw IoError(fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno)));
+    write_in_place(path, content);
     return;
   }
-  const fs::path temporary = target.path.string() + ".tmp";
   std::error_code error;
   if (target.path.has_parent_path()) fs::create_directories(target.path.parent_path(), error);
   if (error) {
     throw IoError(fmt::format("cannot create the folder of '{}': {}", target.path.string(), error.message()));
   }
-  // Every failure removes the temporary: a half-written FILE.tmp must not outlive the command.
-  const auto fail = [&temporary](const std::string& what) {
+  const fs::path temporary = write_temporary_beside(target.path, content);
+  fs::rename(temporary, target.path, error);
+  if (error) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
-    throw IoError(what);
-  };
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (out) {
-      out << content;
-      out.flush();
-    }
-    const bool written = out.good();
-    const int reason = errno;  // before close and remove change it
-    out.close();
-    if (!written || !out) {
-      fail(fmt::format("cannot write '{}': {}", temporary.string(), std::strerror(written ? errno : reason)));
-    }
+    throw IoError(fmt::format("cannot write '{}': {}", target.path.string(), error.message()));
   }
-  fs::rename(temporary, target.path, error);
-  if (error) fail(fmt::format("cannot write '{}': {}", target.path.string(), error.message()));
 }
 
 std::vector<std::string> figure_file_names(const std::string& stem, const std::vector<std::string>& formats) {
@@ -203,6 +209,7 @@ std::vector<std::string> figure_file_names(const std::string& stem, const std::v
 std::string run_plot_script(const std::string& script, const fs::path& data, const fs::path& image,
                             const std::vector<std::string>& arguments,
                             const std::vector<std::string>& formats) {
+  check_figure_file(image, "the figure");  // the commands check first; a scene's figures are files
   const fs::path path = scripts_folder() / "plots" / (script + ".py");
   if (!fs::exists(path)) return fmt::format("no plot: script {} not found", path.string());
   const std::string python = python_interpreter();
@@ -212,10 +219,18 @@ std::string run_plot_script(const std::string& script, const fs::path& data, con
     return fmt::format(
         "no plot: {} cannot import matplotlib (install python3-matplotlib: bash scripts/setup)", python);
   }
-  // matplotlib picks the format by the extension, so the temporary names keep it: NAME.tmp.png, ...
+  // matplotlib picks the format by the extension, so the temporary names keep it: NAME.<random>.tmp.png, ...
+  // (random: another run's figures, or a link planted under a fixed name, are never written through). The
+  // script creates them: a file made here in advance would outlive a SIGKILL of this process.
+  const std::string token = random_name_part();
   const auto figure = [&](const std::string& format, bool temporary) {
-    return image.parent_path() /
-           fmt::format("{}{}{}", image.stem().string(), temporary ? ".tmp." : ".", format);
+    const std::string stem = image.stem().string();
+    return image.parent_path() / (temporary ? fmt::format("{}.{}.tmp.{}", stem, token, format)
+                                            : fmt::format("{}.{}", stem, format));
+  };
+  std::error_code error;
+  const auto remove_temporaries = [&] {
+    for (const std::string& format : formats) fs::remove(figure(format, true), error);
   };
   std::string format_list;
   for (const std::string& format : formats) format_list += (format_list.empty() ? "" : ",") + format;
@@ -224,10 +239,6 @@ std::string run_plot_script(const std::string& script, const fs::path& data, con
   command.insert(command.end(), arguments.begin(), arguments.end());
   command.insert(command.end(), {"--format", format_list});
   const int status = run_quietly(command);
-  std::error_code error;
-  const auto remove_temporaries = [&] {
-    for (const std::string& format : formats) fs::remove(figure(format, true), error);
-  };
   if (status != 0 || stop_signal_received() != 0) {
     remove_temporaries();  // the figures of a failed or stopped script are no plot
     stop_if_signalled(status);
@@ -235,7 +246,7 @@ std::string run_plot_script(const std::string& script, const fs::path& data, con
                        WIFEXITED(status) ? WEXITSTATUS(status) : -1);
   }
   for (const std::string& format : formats) {
-    if (!fs::exists(figure(format, true))) {
+    if (fs::file_size(figure(format, true), error) == 0 || error) {
       remove_temporaries();
       return fmt::format("no plot: {} wrote no {} figure", path.filename().string(), format);
     }

@@ -19,6 +19,11 @@ void check_output_folder(const std::filesystem::path& folder);
 // output_target; a stream is always writable here). Throws InvalidInput when the path is a folder.
 void check_output_file(const std::filesystem::path& path);
 
+// check_output_file for a figure named with `option` (--plot). A figure is made beside its name as a new file
+// and renamed onto it, so a device, FIFO, socket or open stream (/dev/full, /dev/stdout) cannot take one:
+// InvalidInput naming the option, rather than a sibling /dev/full.png.
+void check_figure_file(const std::filesystem::path& path, const std::string& option);
+
 // Where a file named on the command line is written. A symlink is followed to its target, which is then
 // replaced (the link stays); a device, FIFO or socket, and a link into /proc such as /dev/stdout, name an
 // open stream rather than a place and are written in place, never replaced. Throws InvalidInput for a folder.
@@ -28,10 +33,15 @@ struct OutputTarget {
 };
 OutputTarget output_target(const std::filesystem::path& path);
 
-// Writes the whole content to target.tmp, flushes, then renames it onto the target: a reader never sees a
+// Writes the whole content to a temporary beside the target (TARGET.<random>.tmp, created exclusively, never
+// through a link: sweep/temporary_file.hpp), then renames it onto the target: a reader never sees a
 // half-written file under the final name (streams are written in place; see output_target). Throws
 // IoError naming the file when the write fails.
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
+
+// Writes the whole content straight into a device, pipe or stream (an OutputTarget with in_place). Throws
+// IoError naming it when it takes less (/dev/full: "No space left on device").
+void write_in_place(const std::filesystem::path& path, const std::string& content);
 
 // A double with 17 significant digits, as the sweep library writes its tables (sweep/number_text.hpp).
 using restitution::number17;
@@ -42,8 +52,8 @@ std::vector<std::string> figure_file_names(const std::string& stem, const std::v
 // Runs scripts/plots/<script>.py with Debian's /usr/bin/python3 as
 // `<script>.py DATA IMAGE ARGUMENTS... --format FORMATS`: one figure in each format (png, pdf, svg; see
 // scene/figure_formats.hpp), named IMAGE with its extension replaced by the format's. The script writes
-// temporary NAME.tmp.<format> files that become the figures only once the script succeeded, and it never
-// outlives this process (SIGKILL when this process dies, SIGTERM when it is asked to stop): no figure
+// temporary NAME.<random>.tmp.<format> files that become the figures only once the script succeeded, and it
+// never outlives this process (SIGKILL when this process dies, SIGTERM when it is asked to stop): no figure
 // appears after the command ended, none half-written under its name. Returns an empty string on success,
 // otherwise one line saying why no plot was made (matplotlib missing, script failed): callers warn on
 // stderr and keep the data they wrote. Throws Interrupted when the script (or this process) got SIGINT or

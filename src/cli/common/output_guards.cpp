@@ -5,21 +5,52 @@
 
 #include "cli/common/output_files.hpp"
 #include "restitution/errors.hpp"
+#include "sweep/printable_name.hpp"
+#include "sweep/resolved_path.hpp"
 
 namespace restitution::cli {
 namespace fs = std::filesystem;
 
-void check_output_is_not_input(const fs::path& output, const std::vector<fs::path>& inputs) {
+namespace {
+
+std::string labelled(const NamedPath& p) {
+  return p.option.empty() ? fmt::format("'{}'", printable_name(p.path.string()))
+                          : fmt::format("{} '{}'", p.option, printable_name(p.path.string()));
+}
+
+}  // namespace
+
+bool same_file_place(const fs::path& output, const fs::path& other) {
   std::error_code error;
-  if (!fs::exists(output, error)) return;  // a file that does not exist yet is no input
-  for (const fs::path& input : inputs) {
-    if (fs::equivalent(output, input, error)) {
-      throw InvalidInput(
-          fmt::format("--output '{}' is the input '{}': writing it would replace the input; "
-                      "name another file",
-                      output.string(), input.string()));
+  if (fs::exists(output, error) && fs::exists(other, error) && fs::equivalent(output, other, error))
+    return true;
+  return resolved_path(output) == resolved_path(other);
+}
+
+void check_outputs_apart(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    for (const NamedPath& input : inputs) {
+      if (same_file_place(outputs[i].path, input.path)) {
+        throw InvalidInput(
+            fmt::format("{} is the input {}: writing it would replace the input; name another file",
+                        labelled(outputs[i]), labelled(input)));
+      }
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (same_file_place(outputs[i].path, outputs[j].path)) {
+        throw InvalidInput(
+            fmt::format("{} and {} are the same file: one would replace the other; name two files",
+                        labelled(outputs[j]), labelled(outputs[i])));
+      }
     }
   }
+}
+
+void check_output_is_not_input(const fs::path& output, const std::vector<fs::path>& inputs) {
+  std::vector<NamedPath> named;
+  named.reserve(inputs.size());
+  for (const fs::path& input : inputs) named.push_back({"", input});
+  check_outputs_apart({{"--output", output}}, named);
 }
 
 void check_no_folder_through_link(const fs::path& output) {

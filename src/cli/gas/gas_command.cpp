@@ -18,11 +18,13 @@
 #include "cli/common/json_writer.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
+#include "cli/common/output_guards.hpp"
 #include "cli/gas/gas_deck_options.hpp"
 #include "cli/gas/gas_options.hpp"
 #include "cli/gas/gas_table.hpp"
 #include "restitution_gas/gas_inputs.hpp"
 #include "scene/figure_formats.hpp"
+#include "sweep/temporary_file.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -93,8 +95,11 @@ void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const
   const std::string table = gas_csv(c);
   if (!o.out.empty()) write_file_atomically(o.out, table);
   if (o.plot.empty()) return;
-  // Without --out the plot reads a scratch copy of the table beside the image, removed afterwards.
-  const std::filesystem::path data(o.out.empty() ? o.plot + ".data.csv" : o.out);
+  // Without --out the plot reads a scratch copy of the table beside the image, removed afterwards; under a
+  // random name, as a temporary (sweep/temporary_file.hpp): a link planted under a fixed one is never
+  // followed.
+  const std::filesystem::path data(o.out.empty() ? fmt::format("{}.{}.data.csv", o.plot, random_name_part())
+                                                 : o.out);
   if (o.out.empty()) write_file_atomically(data, table);
   const std::string why = run_plot_script("gas_cooling", data, o.plot, gas_plot_arguments(r, c),
                                           scene::plot_figure_formats(o.plot, o.format));
@@ -108,7 +113,8 @@ void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const
 int run_gas(const GasCommandOptions& o) {
   if (gas_deck_requested(o.deck)) return run_gas_deck(o.deck, o.gas, o.json);
   if (!o.out.empty()) check_output_file(o.out);
-  if (!o.plot.empty()) check_output_file(o.plot);
+  if (!o.plot.empty()) check_figure_file(o.plot, "--plot");
+  if (!o.out.empty() && !o.plot.empty()) check_outputs_apart({{"--out", o.out}, {"--plot", o.plot}}, {});
   const gas::CoolingRequest request = cooling_request(o.gas);
   const gas::CoolingCurve curve = gas::cooling_curve(request);
   write_files(request, curve, o);

@@ -9,6 +9,8 @@
 
 #include "cli/common/output_files.hpp"
 #include "restitution/errors.hpp"
+#include "sweep/csv_field.hpp"
+#include "sweep/printable_name.hpp"
 
 namespace restitution::cli {
 
@@ -35,8 +37,8 @@ void print_comparison_text(const gas_deck::GasComparison& c) {
   fmt::print("{:<40} {:>14} {:>10} {:>13} {:>15}\n", "run", "max_rel_dev", "tau0", "late_exponent",
              "theory_late");
   for (const auto& r : c.runs) {
-    fmt::print("{:<40} {:>14.4e} {:>10.4g} {:>13.4f} {:>15.4f}\n", r.run, r.max_relative_deviation,
-               r.haff_times, r.late_exponent, r.theory_late_exponent);
+    fmt::print("{:<40} {:>14.4e} {:>10.4g} {:>13.4f} {:>15.4f}\n", printable_name(r.run),
+               r.max_relative_deviation, r.haff_times, r.late_exponent, r.theory_late_exponent);
   }
 }
 
@@ -65,9 +67,10 @@ std::string write_comparison_files(const std::filesystem::path& folder, const ga
     for (std::size_t i = 0; i < r.time_s.size(); ++i) {
       // The local exponents are between consecutive times after t = 0: the one ending at time_s[i] is i - 1.
       const bool has = i >= 1 && i - 1 < r.exponent.exponent.size();
-      csv += fmt::format("\"{}\",{},{},{},{},{},{}\n", r.run, r.law, number17(r.time_s[i]),
-                         number17(r.temperature_j[i]), number17(r.theory_temperature_j[i]),
-                         has ? number17(r.exponent.exponent[i - 1]) : "",
+      // The run is named by its log file, whose name may hold anything: quoted, escaped, one field.
+      csv += fmt::format("{},{},{},{},{},{},{}\n", quoted_field(printable_name(r.run)), r.law,
+                         number17(r.time_s[i]), number17(r.temperature_j[i]),
+                         number17(r.theory_temperature_j[i]), has ? number17(r.exponent.exponent[i - 1]) : "",
                          has ? number17(r.theory_exponent.exponent[i - 1]) : "");
     }
   }

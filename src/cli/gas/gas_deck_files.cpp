@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 
+#include "cli/common/file_set.hpp"
 #include "cli/common/output_files.hpp"
 #include "restitution/errors.hpp"
 
@@ -25,20 +26,18 @@ GasDeckPaths gas_deck_paths(const std::string& file) {
 
 gas_deck::GasDeck write_gas_deck(const GasDeckPaths& paths, const gas_deck::GasDeckRequest& request) {
   gas_deck::GasDeck deck = gas_deck::lammps_gas_deck(request, paths.data.filename().string());
-  std::vector<fs::path> written;
-  try {
-    for (const auto& [path, text] :
-         {std::pair{paths.data, &deck.data}, std::pair{paths.constant_eps_input, &deck.constant_eps_input},
-          std::pair{paths.law_input, &deck.law_input}}) {
-      write_file_atomically(path, *text);
-      written.push_back(path);
-    }
-  } catch (...) {
-    std::error_code ignored;
-    for (const auto& path : written) fs::remove(path, ignored);  // a deck without its data runs nothing
-    throw;
-  }
+  // One set: the inputs read the data file, so the law's input, the one the printed command starts, comes
+  // last.
+  write_file_set({{paths.data, &deck.data},
+                  {paths.constant_eps_input, &deck.constant_eps_input},
+                  {paths.law_input, &deck.law_input}});
   return deck;
+}
+
+std::vector<NamedPath> gas_deck_outputs(const GasDeckPaths& paths) {
+  return {{"--deck", paths.law_input},
+          {"--deck (its constant-eps companion)", paths.constant_eps_input},
+          {"--deck (its data file)", paths.data}};
 }
 
 void print_gas_deck_text(const GasDeckPaths& paths, const gas_deck::GasDeck& d,

@@ -2,11 +2,14 @@
 #pragma once
 // `restitution gas --deck FILE` (docs/gas.md, "The LAMMPS deck"): the LAMMPS input of the cooling gas written
 // to FILE, its constant-ε companion to STEM_constant_eps.EXT and the data file both read to STEM.data, next
-// to FILE; each complete or not at all, and none left behind when one cannot be written.
+// to FILE; written as one set: the previous set stays whole when one cannot be written, and no mixture of two
+// sets is ever left, whenever the program is stopped.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "cli/common/json_writer.hpp"
+#include "cli/common/output_guards.hpp"
 #include "gas_deck/lammps_gas_deck.hpp"
 
 namespace restitution::cli {
@@ -18,8 +21,11 @@ struct GasDeckPaths {
 // cannot be written.
 GasDeckPaths gas_deck_paths(const std::string& file);
 
-// Writes the three files; returns the deck written.
+// Writes the three files as one set (cli/common/file_set.hpp); returns the deck written.
 gas_deck::GasDeck write_gas_deck(const GasDeckPaths& paths, const gas_deck::GasDeckRequest& request);
+
+// The three files with the option that names them, for check_outputs_apart.
+std::vector<NamedPath> gas_deck_outputs(const GasDeckPaths& paths);
 
 void print_gas_deck_text(const GasDeckPaths& paths, const gas_deck::GasDeck& deck,
                          const gas_deck::GasDeckRequest& request);

@@ -10,6 +10,8 @@
 #include "cli/common/json_writer.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
+#include "cli/common/output_guards.hpp"
+#include "cli/common/stop_signals.hpp"
 #include "cli/gas/gas_compare_report.hpp"
 #include "cli/gas/gas_deck_files.hpp"
 #include "restitution/errors.hpp"
@@ -82,6 +84,25 @@ gas_deck::GasDeckRequest deck_request(const GasDeckOptions& o, const GasOptions&
   return r;
 }
 
+// Every file the command writes, with the option that names it.
+std::vector<NamedPath> gas_deck_command_outputs(const GasDeckOptions& o,
+                                                const std::optional<GasDeckPaths>& paths) {
+  std::vector<NamedPath> outputs;
+  if (paths) outputs = gas_deck_outputs(*paths);
+  if (o.compare_output) {
+    for (const char* name : {"gas_compare.csv", "gas_compare.png"})
+      outputs.push_back({"--compare-output", std::filesystem::path(*o.compare_output) / name});
+  }
+  return outputs;
+}
+
+std::vector<NamedPath> compare_inputs(const GasDeckOptions& o) {
+  std::vector<NamedPath> inputs;
+  inputs.reserve(o.compare.size());
+  for (const std::string& log : o.compare) inputs.push_back({"--compare", log});
+  return inputs;
+}
+
 }  // namespace
 
 int run_gas_deck(const GasDeckOptions& o, const GasOptions& gas, bool json) {
@@ -89,6 +110,7 @@ int run_gas_deck(const GasDeckOptions& o, const GasOptions& gas, bool json) {
   std::optional<GasDeckPaths> paths;
   if (o.deck) paths = gas_deck_paths(*o.deck);
   if (o.compare_output) check_output_folder(*o.compare_output);
+  check_outputs_apart(gas_deck_command_outputs(o, paths), compare_inputs(o));  // before anything is written
   std::optional<gas_deck::GasDeck> deck;
   if (paths && request.particles > kQuietDeckParticles) {
     // Built in memory and written at the end: say up front what is coming (about 6 s per 1e6 spheres).
@@ -96,7 +118,12 @@ int run_gas_deck(const GasDeckOptions& o, const GasOptions& gas, bool json) {
                request.particles,
                static_cast<double>(request.particles * gas_deck::kDataBytesPerSphere) / 1e6);
   }
-  if (paths) deck = write_gas_deck(*paths, request);
+  if (paths) {
+    // Ctrl-C while the set is written removes its temporaries and exits 130, like run and sweep.
+    const StopSignals signals;
+    deck = write_gas_deck(*paths, request);
+    throw_if_interrupted();
+  }
   std::optional<gas_deck::GasComparison> comparison;
   std::string plot_warning;
   if (!o.compare.empty()) {

@@ -23,6 +23,8 @@
 #include "scene/scene_plan.hpp"
 #include "scene/scene_run.hpp"
 #include "sweep/output_lock.hpp"
+#include "sweep/printable_name.hpp"
+#include "sweep/resolved_path.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -53,11 +55,21 @@ int run_scene_file(const RunOptions& o) {
   if (o.quick) s.tolerance = std::max(s.tolerance, 1e-8);
   if (o.quick) scene::make_quick(s, kQuickPoints);
   const fs::path folder = o.output.empty() ? s.output : fs::path(o.output);
+  const std::string shown = printable_name(folder.string());  // a name may hold escape sequences
+  // The scene's own `output` stays under the working folder after symlinks too (the parser refuses '..'
+  // and absolute names); --output names any folder, the user's own choice.
+  if (o.output.empty() && !resolves_within(folder, fs::current_path())) {
+    throw InvalidInput(
+        fmt::format("the scene's output '{}' leads outside the working folder through a "
+                    "symbolic link: a scene writes under the folder it is run from "
+                    "(or name the folder: restitution run FILE --output DIR)",
+                    shown));
+  }
   scene::Plan plan =
       scene::plan_scene(s);     // refuses points outside the solver's range before a folder exists
   check_output_folder(folder);  // fail before the work, not after
   // Before the work too: a second run into the folder is refused at once, not after its own solves.
-  const FolderLock lock(folder, fmt::format("--output '{}'", folder.string()));
+  const FolderLock lock(folder, fmt::format("--output '{}'", shown));
 
   scene::RunSettings settings;
   settings.threads = o.threads;
@@ -74,10 +86,11 @@ int run_scene_file(const RunOptions& o) {
   for (const auto& w : written.warnings) std::fprintf(stderr, "restitution: warning: %s\n", w.c_str());
   // [[dem]] and [[damping_check]] sections solve their collisions while their outputs are written.
   const bool own_solves = !s.dems.empty() || !s.damping_checks.empty();
-  fmt::print("scene {}: {} planned collisions in {:.2f} s{}{}\n", path.string(), results.collisions, seconds,
+  fmt::print("scene {}: {} planned collisions in {:.2f} s{}{}\n", printable_name(path.string()),
+             results.collisions, seconds,
              own_solves ? " (dem and damping_check sections solve their own, not counted)" : "",
              o.quick ? " (quick settings)" : "");
-  fmt::print("wrote {}/: ", folder.string());
+  fmt::print("wrote {}/: ", shown);
   for (std::size_t i = 0; i < written.files.size(); ++i)
     fmt::print("{}{}", i != 0 ? ", " : "", written.files[i]);
   fmt::print("\n");

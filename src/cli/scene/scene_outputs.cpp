@@ -517,10 +517,13 @@ WrittenOutputs write_scene_outputs(const scene::Scene& scene, const scene::Scene
   check_output_folder(folder);
   // A write that fails half-way must not leave a folder that looks like a result (item 11 of issue 12).
   const bool existed = fs::exists(folder);
-  // The report of an earlier run would describe files this run replaces: gone until the new one is written,
-  // so that a run that stops half-way leaves no folder that looks complete.
+  // The report and summary of an earlier run would describe files this run replaces: gone until the new ones
+  // are written (the summary's numbers beside the new tables would read as this run's), so that a run that
+  // stops half-way leaves no folder that looks complete.
   std::error_code ignored;
-  if (existed) fs::remove(folder / "report.md", ignored);
+  if (existed) {
+    for (const char* name : {"report.md", "summary.json"}) fs::remove(folder / name, ignored);
+  }
   try {
     return SceneWriter(scene, results, folder).write(seconds);
   } catch (...) {
