@@ -71,7 +71,8 @@ TEST(ObliqueAccuracyCli, SaysWhereTheOutcomeIsIllConditioned) {
   EXPECT_EQ(j["impacts"][2]["conditioning"], "well-conditioned");
   const std::string flagged = j["impacts"][1]["conditioning"];
   EXPECT_EQ(flagged.rfind("ill-conditioned", 0), 0U) << flagged;
-  EXPECT_NE(r.err.find(fmt::format("warning: at {:g} deg, spin 0 rad/s, ill-conditioned", *angle)),
+  // The angle as given, in its shortest exact form.
+  EXPECT_NE(r.err.find(fmt::format("warning: at {} deg, spin 0 rad/s, ill-conditioned", *angle)),
             std::string::npos)
       << r.err;
   EXPECT_DOUBLE_EQ(j["impacts"][1]["relative_tolerance"].get<double>(), 1e-13);
