@@ -152,13 +152,15 @@ def test_damping_is_required_or_calibrated_and_the_wall_is_rigid():
 
 def test_an_ill_conditioned_impact_warns_as_the_command_line_does(cli, steel_damped):
     # Near the stick/slip boundary (a second stick phase appears near 17.95 deg for this wall impact) the contract
-    # cannot be shown: the command line says so on stderr and in the JSON, Python with a RuntimeWarning.
+    # cannot be shown: the command line says so on stderr and in the JSON, Python with a RuntimeWarning. A steel
+    # wall (the boundary's angle is that of a wall of the sphere's material).
     arguments = dict(friction=0.3, tangential="linear_history", tangential_stiffness=2.2e6, tangential_damping=0.5,
-                     wall=True)
+                     wall=True, wall_young_modulus=2e11, wall_poisson_ratio=0.3)
     angles = np.linspace(17.94, 17.96, 21)
     out = json.loads(cli("oblique", *STEEL_CLI, "--dissipative-constant", "1e-7", "--tangential", "linear_history",
                          "--tangential-stiffness", "2.2e6", "--tangential-damping", "0.5", "--friction", "0.3",
-                         "--wall", "--angle", ",".join(repr(a) for a in angles), "--json"))
+                         "--wall", "--wall-young-modulus", "2e11", "--wall-poisson-ratio", "0.3",
+                         "--angle", ",".join(repr(a) for a in angles), "--json"))
     flagged = [impact["angle_deg"] for impact in out["impacts"] if impact["conditioning"] != "well-conditioned"]
     assert flagged, "no flagged impact: the case no longer crosses the boundary"
     with pytest.warns(RuntimeWarning, match="ill-conditioned") as caught:
