@@ -22,7 +22,8 @@ using namespace restitution::oblique;
 
 const std::string kSteel =
     "oblique --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --dissipative-constant "
-    "1e-7 --wall --tangential linear_history --tangential-stiffness 2.2e6 --tangential-damping 0.5 "
+    "1e-7 --wall --wall-young-modulus 2e11 --wall-poisson-ratio 0.3 --tangential linear_history "
+    "--tangential-stiffness 2.2e6 --tangential-damping 0.5 "
     "--friction 0.3";
 
 // An angle where the wall impact of kSteel at T = 1e-10 is flagged by the library, with the command's
@@ -70,7 +71,8 @@ TEST(ObliqueAccuracyCli, SaysWhereTheOutcomeIsIllConditioned) {
   EXPECT_EQ(j["impacts"][2]["conditioning"], "well-conditioned");
   const std::string flagged = j["impacts"][1]["conditioning"];
   EXPECT_EQ(flagged.rfind("ill-conditioned", 0), 0U) << flagged;
-  EXPECT_NE(r.err.find(fmt::format("warning: at {:g} deg, spin 0 rad/s, ill-conditioned", *angle)),
+  // The angle as given, in its shortest exact form.
+  EXPECT_NE(r.err.find(fmt::format("warning: at {} deg, spin 0 rad/s, ill-conditioned", *angle)),
             std::string::npos)
       << r.err;
   EXPECT_DOUBLE_EQ(j["impacts"][1]["relative_tolerance"].get<double>(), 1e-13);

@@ -28,9 +28,11 @@ const std::string kSteel =
     "1e-7";
 
 TEST(ObliqueCodesCli, LiggghtsHistoryOnAWallIsTheLibrarysWithLiggghtsArms) {
-  const auto r = run_cli(kSteel +
-                         " --wall --tangential liggghts_history --tangential-damping 1 --friction 0.3 "
-                         "--angle 5,20,60 --spin 300 --tolerance 1e-10 --json");
+  const auto r =
+      run_cli(kSteel +
+              " --wall --wall-young-modulus 2e11 --wall-poisson-ratio 0.3 --tangential liggghts_history "
+              "--tangential-damping 1 --friction 0.3 "
+              "--angle 5,20,60 --spin 300 --tolerance 1e-10 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["tangential_model"], "liggghts_history");

@@ -72,7 +72,7 @@ TEST(DemOblique, TargetStiffnessFedBackGivesTheTarget) {
     const std::string line = inverse["lines"][0];
     EXPECT_NE(line.find(fmt::format("tangential mindlin {} 1 0.3", k)), std::string::npos) << line;
     // The same stiffness through `restitution oblique`, which knows nothing of the inverse.
-    const auto again = oblique_of(lines, wall ? "--wall" : "", k, "20");
+    const auto again = oblique_of(lines, wall ? own_wall : "", k, "20");
     EXPECT_NEAR(again["impacts"][0]["tangential_restitution"].get<double>(), 0.25, 1e-10)
         << (wall ? "wall" : "pair");
   }

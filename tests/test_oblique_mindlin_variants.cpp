@@ -42,6 +42,7 @@ TEST_P(MindlinGrossSlipOnset, IsWhereTheEndOfContactKeepsSliding) {
   in.material.poisson_ratio = 0.3;
   in.material.radius1_m = in.material.radius2_m = 1e-3;
   in.material.density_kg_m3 = 7800.0;
+  in.dissipative_constant_s = 0.0;  // elastic
   in.wall = true;
   in.tangential = onset_case.model;
   in.friction = 0.3;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -23,6 +24,7 @@ young_modulus = 2e11
 poisson_ratio = 0.3
 density = 7800.0
 radius = 1e-3
+dissipative_constant = 1e-7
 )";
 
 const std::string kOblique = R"([[oblique]]
@@ -60,7 +62,7 @@ TEST(ObliqueScene, ReadsTheSection) {
   EXPECT_FALSE(t.plot);
   EXPECT_EQ(t.tolerance, 1e-10);
   const Scene defaults = parse_scene(kHead + kOblique, "oblique.toml");
-  EXPECT_EQ(defaults.obliques[0].models, std::vector<std::string>{"linear_history"});
+  EXPECT_EQ(defaults.obliques[0].models, std::vector<std::string>{"mindlin"});  // as dem's
   EXPECT_EQ(defaults.obliques[0].spins_rad_s, std::vector<double>{0.0});
 }
 
@@ -76,6 +78,8 @@ TEST(ObliqueScene, RefusesBadKeysByName) {
   refused("speed = 0.0\n", "speed");
   refused("tolerance = 1.0\n", "tolerance");
   refused("mindlin_stiffness = -1.0\n", "mindlin_stiffness");
+  refused("model = \"yade_mindlin\"\n", "model");  // not run here: one list with the command
+  refused("wall = true\nwall_young_modulus = 2e11\n", "wall_poisson_ratio");
   std::string steep = kOblique;
   steep.replace(steep.find("40.0"), 4, "90.0");
   EXPECT_NE(error_of(kHead + steep).find("angles"), std::string::npos);
@@ -109,11 +113,13 @@ TEST(ObliqueScene, ShippedSceneWritesTheCommandsNumbers) {
   const std::string command =
       "oblique --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --dissipative-constant "
       "1e-9 "
-      "--wall --friction 0.3 --speed 1 --json";
+      "--wall --wall-young-modulus 2e11 --wall-poisson-ratio 0.3 --friction 0.3 --speed 1 --json";
   for (const std::size_t row : {std::size_t{12}, std::size_t{58 + 31}}) {
     const std::vector<std::string> f = fields_of(lines[row]);
-    ASSERT_EQ(f.size(), 14U);
-    const std::string model = f[0] == "mindlin" ? " --tangential mindlin" : " --tangential-stiffness 2.2e6";
+    ASSERT_EQ(f.size(), 16U);
+    EXPECT_EQ(f[15], "solved");
+    const std::string model = f[0] == "mindlin" ? " --tangential mindlin"
+                                                : " --tangential linear_history --tangential-stiffness 2.2e6";
     const auto one = test_support::run_cli(command + model + " --angle " + f[1] + " --spin " + f[11]);
     ASSERT_EQ(one.status, 0) << one.err;
     const auto impact = nlohmann::json::parse(one.out)["impacts"][0];
@@ -129,6 +135,42 @@ TEST(ObliqueScene, ShippedSceneWritesTheCommandsNumbers) {
   const std::string report = test_support::slurp((folder.path / "report.md").string());
   EXPECT_NE(report.find("* mindlin: e_t from"), std::string::npos);
   EXPECT_NE(report.find("* linear_history: e_t from"), std::string::npos);
+  EXPECT_NE(report.find("a sphere on a wall of Y = 2e+11 Pa"), std::string::npos);
+  EXPECT_NE(report.find("sticking limit e_t(μ → ∞) = "), std::string::npos);
+}
+
+// Issue 44 item 8: the README's steel (A = 1e-7 s) with a plot ran the sticking-limit solve at μ = 1e12,
+// which failed and took the section with it; now the plot has its limit, and `plot = false` skips the
+// limit's solve altogether (null in summary.json, none in the report). A material without dissipation is
+// refused, naming it (no silent elastic default).
+TEST(ObliqueScene, ReadmeSteelPlotsAndPlotFalseSkipsTheStickingLimit) {
+  for (const bool plot : {true, false}) {
+    const test_support::TempFolder folder;
+    const std::string scene = (folder.path / "s.toml").string();
+    {
+      std::ofstream out(scene);
+      out << kHead << kOblique
+          << "wall = true\nmodel = [\"mindlin\", \"linear_nohistory\", \"mindlin/force\"]\n"
+          << "tangential_damping = 0.5\nplot = " << (plot ? "true" : "false") << "\n";
+    }
+    const auto outcome =
+        test_support::run_cli("run " + scene + " --output " + (folder.path / "out").string());
+    ASSERT_EQ(outcome.status, 0) << outcome.err;
+    const auto summary =
+        nlohmann::json::parse(test_support::slurp((folder.path / "out" / "summary.json").string()));
+    const auto& limits = summary["oblique_o"]["sticking_restitution"];
+    const std::string report = test_support::slurp((folder.path / "out" / "report.md").string());
+    for (const char* model : {"mindlin", "linear_nohistory", "mindlin/force"}) {
+      EXPECT_EQ(limits[model].is_number(), plot) << model << ": " << limits.dump();
+    }
+    EXPECT_EQ(report.find("sticking limit") != std::string::npos, plot) << report;
+    EXPECT_NE(report.find("a sphere on a rigid wall"), std::string::npos) << report;
+    EXPECT_EQ(std::filesystem::exists(folder.path / "out" / "o.png"), plot);
+  }
+  std::string elastic = kHead;
+  elastic.erase(elastic.find("dissipative_constant = 1e-7\n"));
+  EXPECT_NE(error_of(elastic + kOblique).find("dissipation"), std::string::npos)
+      << error_of(elastic + kOblique);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "restitution/errors.hpp"
 #include "restitution_oblique/oblique_study.hpp"
 
 namespace {
@@ -29,7 +30,8 @@ ObliqueInputs steel_on_wall(double friction) {
   in.material.poisson_ratio = 0.3;
   in.material.radius1_m = in.material.radius2_m = 1e-3;
   in.material.density_kg_m3 = 7800.0;
-  in.wall = true;
+  in.dissipative_constant_s = 0.0;  // elastic
+  in.wall = true;                   // rigid: Maw's κ = 2(1 − ν)/(2 − ν) as for a pair of one material
   in.tangential = "mindlin";
   in.friction = friction;
   in.angles_deg = {10.0};
@@ -125,10 +127,46 @@ TEST(ObliqueSweep, GrossSlipBeginsWhereTheEndOfContactKeepsSliding) {
   EXPECT_NEAR(impacts[1].psi_out, -2.0 / 3.0 + 0.02, 1e-6);
 }
 
+// The sticking limit (issue 44 item 8): the stick mode without a cap, which cannot fail near a cap of 1e12
+// F_n as the μ = 1e12 solve did (README steel, A = 1e-8 … 1e-6 s, mindlin, linear_nohistory, mindlin/force).
+// It is the e_t of a finite μ whose cap the contact reaches only as the normal force vanishes at the end, and
+// the 1e12 solve it replaces failed there.
+TEST(ObliqueSweep, StickingLimitIsTheUncappedStickAndDoesNotFail) {
+  for (const double a : {1e-8, 1e-7, 1e-6}) {
+    for (const char* model : {"mindlin", "linear_nohistory", "mindlin/force"}) {
+      ObliqueInputs in = steel_on_wall(0.3);
+      in.dissipative_constant_s = a;
+      in.tangential = model;
+      in.tangential_damping = 0.5;
+      const ObliqueSetup setup = oblique_setup(in, ArgumentStyle::keyword);
+      const StickingLimit limit = sticking_limit_restitution(setup);
+      ASSERT_TRUE(limit.failure.empty()) << model << " A = " << a << ": " << limit.failure;
+      // A finite μ the contact at 1° never reaches: 1e3 against a slip of tan 1° of the normal speed.
+      TangentialForce capped = setup.tangential;
+      capped.friction = 1e3;
+      const ImpactVelocity v = impact_at(setup, 1.0, 0.0);
+      const ObliqueResult finite = solve_oblique(setup.geometry, setup.normal, capped, v, setup.options);
+      // It sticks but for the last instants, where the normal force, and with it any cap, vanishes.
+      ASSERT_EQ(finite.switches[0].mode, ContactMode::stick) << model;
+      EXPECT_GT(finite.stick_time_s, 0.999 * finite.contact_time_s) << model;
+      // The finite cap's last instants of slip move e_t by up to 3e-5 (mindlin/force, whose history is the
+      // force the slip resets).
+      EXPECT_NEAR(limit.tangential_restitution, finite.tangential_restitution, 1e-4) << model << " A = " << a;
+      if (a == 1e-7) {  // the README's steel: the capped solve at μ = 1e12 fails
+        capped.friction = 1e12;
+        EXPECT_THROW((void)solve_oblique(setup.geometry, setup.normal, capped, v, setup.options),
+                     restitution::NumericalFailure)
+            << model;
+      }
+    }
+  }
+}
+
 TEST(ObliqueSweep, CliGivesEveryAnglesWithEverySpinInOrder) {
   const std::string steel =
-      "oblique --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --wall --tangential "
-      "mindlin --friction 0.3 --json";
+      "oblique --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --dissipative-constant "
+      "0 "
+      "--wall --tangential mindlin --friction 0.3 --json";
   const auto sweep = run_cli(steel + " --angle-range 10:50:3 --spin 0,-150.5");
   ASSERT_EQ(sweep.status, 0) << sweep.err;
   const auto impacts = nlohmann::json::parse(sweep.out)["impacts"];
@@ -156,7 +194,9 @@ TEST(ObliqueSweep, CliGivesEveryAnglesWithEverySpinInOrder) {
 
 TEST(ObliqueSweep, BadRangesAndSpinsExitWithStatus2) {
   const std::string steel =
-      "oblique --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --tangential mindlin";
+      "oblique --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --dissipative-constant "
+      "0 "
+      "--tangential mindlin";
   const struct {
     std::string arguments, message;
   } cases[] = {

@@ -75,17 +75,24 @@ def _same(a, b):
     return a == b
 
 
-def oblique(*, material, friction, angle, spin=0.0, speed=1.0, tangential="linear_history",
+def oblique(*, material, friction, angle, spin=0.0, speed=1.0, tangential="mindlin",
             tangential_stiffness=None, tangential_damping=0.0, wall=False, fixed_normal=False,
-            end="delayed-recovery", torque_arm="lammps", tolerance=1e-10):
-    """Oblique impacts of two spheres of one material, or of a sphere on a wall of it, with a tangential model
+            end="delayed-recovery", torque_arm="lammps", tolerance=1e-10, eps=None, velocity=None,
+            wall_young_modulus=None, wall_poisson_ratio=None, law="viscoelastic-hertz"):
+    """Oblique impacts of two spheres of one material, or of a sphere on a wall, with a tangential model
     as Debian's LAMMPS writes it in `pair granular` (docs/oblique.md), as `restitution oblique` computes them.
 
     Parameters
     ----------
     material : Material
-        Young's modulus, Poisson's ratio, radius (or radii), density or masses; its dissipation (A, or the
-        viscosities) gives viscoelastic Hertz, without one the contact is elastic.
+        Young's modulus, Poisson's ratio, radius (or radii), density or masses, and its dissipation (A, 0 for
+        an elastic contact, or the viscosities), unless eps and velocity are given: one of the two is required.
+    eps, velocity : float, optional
+        Instead of the material's dissipation: eps measured head-on at velocity [m/s] on this contact (sphere
+        and sphere, or sphere and wall); A is calibrated from them.
+    law : {"viscoelastic-hertz", "tsuji-hertz", "hertz-constant-damping"}
+        The normal law, with the material's Hertz stiffness; the last two are damped by eps and velocity (or
+        elastic with the material's A = 0). Not with tangential="liggghts_history".
     friction : float
         Coulomb's mu >= 0.
     angle : float or array_like
@@ -94,15 +101,16 @@ def oblique(*, material, friction, angle, spin=0.0, speed=1.0, tangential="linea
         Spin of the (first) sphere before contact [rad/s], positive adding to the slip; broadcast with angle.
     speed : float
         Impact speed [m/s]: v cos(angle) normal, v sin(angle) tangential.
-    tangential : {"linear_history", "linear_nohistory", "mindlin", "mindlin_rescale", "mindlin/force",
-                  "mindlin_rescale/force"}
+    tangential : {"mindlin", "linear_history", "linear_nohistory", "mindlin_rescale", "mindlin/force",
+                  "mindlin_rescale/force", "liggghts_history"}
     tangential_stiffness : float, optional
-        k_t [N/m] of linear_history (required there), [N/m^2] of the mindlin models (default LAMMPS's NULL,
-        8 G*).
+        k_t [N/m] of linear_history (required there when friction > 0), [N/m^2] of the mindlin models
+        (default LAMMPS's NULL, 8 G*).
     tangential_damping : float
         LAMMPS's tangential damping factor, times the normal damping coefficient.
     wall : bool
-        A sphere on a flat wall of its material instead of two spheres.
+        A sphere on a flat wall instead of two spheres: rigid, as `restitution dem --wall`, unless
+        wall_young_modulus [Pa] and wall_poisson_ratio give its material (both or neither).
     fixed_normal : bool
         Two spheres: keep the impact's normal instead of letting the line of centres turn as LAMMPS's pair does.
     end : {"delayed-recovery", "naive"}
@@ -117,7 +125,8 @@ def oblique(*, material, friction, angle, spin=0.0, speed=1.0, tangential="linea
     ObliqueResult
         Floats for scalar angle and spin, float64 arrays of their broadcast shape otherwise: e_t, eps, the
         rebound angle in rad and deg, the spins in rad/s, the impulse ratio, contact, stick and slip times in s,
-        the switch times and modes, Maw's psi.
+        the switch times and modes, Maw's psi. An impact whose solve failed has NaN outputs, its reason in
+        failure (a RuntimeWarning says it); the others are kept.
 
     Raises
     ------
@@ -127,7 +136,8 @@ def oblique(*, material, friction, angle, spin=0.0, speed=1.0, tangential="linea
     Examples
     --------
     >>> import restitution
-    >>> steel = restitution.Material(young_modulus=2e11, poisson_ratio=0.3, radius=1e-3, density=7800.0)
+    >>> steel = restitution.Material(young_modulus=2e11, poisson_ratio=0.3, radius=1e-3, density=7800.0,
+    ...                              dissipative_constant=0.0)  # elastic
     >>> r = restitution.oblique(material=steel, friction=0.3, angle=80.0, wall=True, tangential="mindlin")
     >>> r.modes, round(r.impulse_ratio, 12)            # grazing: slides throughout, J_t/J_n = -mu
     (('slip',), -0.3)
@@ -155,16 +165,24 @@ def oblique(*, material, friction, angle, spin=0.0, speed=1.0, tangential="linea
         tangential_stiffness=_optional_real("tangential_stiffness", tangential_stiffness),
         tangential_damping=numbers["tangential_damping"], speed=numbers["speed"], wall=wall,
         fixed_normal=fixed_normal, end=_text("end", end), torque_arm=_text("torque_arm", torque_arm),
-        tolerance=numbers["tolerance"])
+        tolerance=numbers["tolerance"], eps=_optional_real("eps", eps), velocity=_optional_real("velocity", velocity),
+        wall_young_modulus=_optional_real("wall_young_modulus", wall_young_modulus),
+        wall_poisson_ratio=_optional_real("wall_poisson_ratio", wall_poisson_ratio), law=_text("law", law))
+    for angle_deg, spin_rad_s, why in zip(angles.ravel(), spins.ravel(), columns["failure"]):
+        if why:  # never silently: this impact was not solved, its outputs are NaN
+            _warnings.warn(f"oblique impact at {angle_deg:g} deg, spin {spin_rad_s:g} rad/s not solved: {why}",
+                           RuntimeWarning, stacklevel=2)
     for angle_deg, spin_rad_s, why in zip(angles.ravel(), spins.ravel(), columns["ill_conditioned"]):
         if why:  # never silently: the outputs of this impact are not shown to be within the tolerance
             _warnings.warn(f"oblique impact at {angle_deg:g} deg, spin {spin_rad_s:g} rad/s: {why}", RuntimeWarning,
                            stacklevel=2)
     shape = angles.shape
-    values = {"tangential_model": columns["tangential_model"], "maw_chi": columns["maw_chi"]}
+    values = {"tangential_model": columns["tangential_model"], "maw_chi": columns["maw_chi"],
+              "rigid_wall": columns["rigid_wall"], "dissipative_constant": columns["dissipative_constant"]}
     columns["rebound_angle_deg"] = _np.degrees(columns["rebound_angle"])
     for name, _, _ in _FIELDS:
         values[name] = float(columns[name][0]) if shape == () else columns[name].reshape(shape)
+    values["failure"] = columns["failure"][0] if shape == () else _np.array(columns["failure"], dtype=object).reshape(shape)
     if shape == ():
         values["switch_times"] = columns["switch_times"][0]
         values["modes"] = columns["modes"][0]

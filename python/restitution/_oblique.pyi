@@ -10,12 +10,16 @@ from . import Material
 _Real = Union[float, np.floating[Any], np.integer[Any]]
 _Array = Union[npt.NDArray[Any], Sequence[float], Sequence[Sequence[float]]]
 _Value = TypeVar("_Value", float, npt.NDArray[np.float64], covariant=True)
-Tangential = Literal["linear_history", "linear_nohistory", "mindlin"]
+Tangential = Literal["mindlin", "linear_history", "linear_nohistory", "mindlin_rescale", "mindlin/force",
+                     "mindlin_rescale/force", "liggghts_history"]
 TorqueArm = Literal["lammps", "radius", "radius-minus-half-overlap"]
 
 class ObliqueResult(Generic[_Value]):
     tangential_model: Tangential
     maw_chi: float
+    rigid_wall: bool
+    dissipative_constant: float  # s, given or calibrated
+    failure: Any  # why an impact was not solved ("" where it was); an object array for several
     angle_deg: _Value  # deg
     initial_spin: _Value  # rad/s
     normal_restitution: _Value
@@ -55,6 +59,11 @@ def oblique(
     end: Literal["naive", "delayed-recovery"] = ...,
     torque_arm: TorqueArm = ...,
     tolerance: float = ...,
+    eps: Optional[float] = ...,
+    velocity: Optional[float] = ...,  # m/s
+    wall_young_modulus: Optional[float] = ...,  # Pa
+    wall_poisson_ratio: Optional[float] = ...,
+    law: Literal["viscoelastic-hertz", "tsuji-hertz", "hertz-constant-damping"] = ...,
 ) -> ObliqueResult[float]: ...
 @overload
 def oblique(
@@ -72,4 +81,9 @@ def oblique(
     end: Literal["naive", "delayed-recovery"] = ...,
     torque_arm: TorqueArm = ...,
     tolerance: float = ...,
+    eps: Optional[float] = ...,
+    velocity: Optional[float] = ...,  # m/s
+    wall_young_modulus: Optional[float] = ...,  # Pa
+    wall_poisson_ratio: Optional[float] = ...,
+    law: Literal["viscoelastic-hertz", "tsuji-hertz", "hertz-constant-damping"] = ...,
 ) -> ObliqueResult[npt.NDArray[np.float64]]: ...

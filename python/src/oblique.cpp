@@ -73,6 +73,11 @@ py::dict columns_of(const ObliqueSetup& setup, const std::vector<ObliqueImpact>&
   out["ill_conditioned"] = ill_conditioned;
   out["switch_times"] = switch_times;
   out["modes"] = modes;
+  py::list failures;  // why an impact was not solved ("" where it was): its outputs are NaN
+  for (const ObliqueImpact& i : impacts) failures.append(i.failure);
+  out["failure"] = failures;
+  out["rigid_wall"] = setup.rigid_wall;
+  out["dissipative_constant"] = setup.dissipative_constant_s;
   out["tangential_model"] = tangential_name(setup.tangential.kind);
   out["maw_chi"] = maw_chi(setup);
   return out;
@@ -83,14 +88,23 @@ py::dict oblique_impacts(const Material& material, const std::vector<double>& an
                          const std::vector<double>& spins, std::optional<double> friction,
                          const std::string& tangential, std::optional<double> tangential_stiffness,
                          double tangential_damping, double speed, bool wall, bool fixed_normal,
-                         const std::string& end, const std::string& torque_arm, double tolerance) {
+                         const std::string& end, const std::string& torque_arm, double tolerance,
+                         std::optional<double> eps, std::optional<double> velocity,
+                         std::optional<double> wall_young_modulus, std::optional<double> wall_poisson_ratio,
+                         const std::string& law) {
   if (angles.size() != spins.size()) throw InvalidInput("angle and spin must broadcast to one shape");
   ObliqueInputs in;
   in.material = material;
-  // The material's dissipation when it has one (A, or the viscosities' A); elastic otherwise, as in scenes.
+  // The material's dissipation when it has one (A, or the viscosities' A), or eps at velocity: one of the
+  // two, never a silent elastic default.
   if (material.dissipative_constant_s || material.viscosities) {
     in.dissipative_constant_s = material_constants(material).dissipative_constant_s;
   }
+  in.eps = eps;
+  in.eps_velocity_m_s = velocity;
+  in.wall_young_modulus_pa = wall_young_modulus;
+  in.wall_poisson_ratio = wall_poisson_ratio;
+  in.law = law;
   in.friction = friction;
   in.tangential = tangential;
   in.tangential_stiffness = tangential_stiffness;
@@ -119,11 +133,13 @@ py::dict oblique_impacts(const Material& material, const std::vector<double>& an
 void bind_oblique(py::module_& m) {
   m.def(
       "oblique_impacts", &oblique_impacts, py::arg("material"), py::arg("angles"), py::arg("spins"),
-      py::kw_only(), py::arg("friction") = py::none(), py::arg("tangential") = "linear_history",
+      py::kw_only(), py::arg("friction") = py::none(), py::arg("tangential") = ObliqueInputs{}.tangential,
       py::arg("tangential_stiffness") = py::none(), py::arg("tangential_damping") = 0.0,
       py::arg("speed") = 1.0, py::arg("wall") = false, py::arg("fixed_normal") = false,
       py::arg("end") = "delayed-recovery", py::arg("torque_arm") = "lammps",
-      py::arg("tolerance") = ObliqueInputs{}.tolerance,
+      py::arg("tolerance") = ObliqueInputs{}.tolerance, py::arg("eps") = py::none(),
+      py::arg("velocity") = py::none(), py::arg("wall_young_modulus") = py::none(),
+      py::arg("wall_poisson_ratio") = py::none(), py::arg("law") = ObliqueInputs{}.law,
       "One oblique impact per (angle, spin) pair as columns (restitution.oblique documents the arguments).");
 }
 

@@ -16,6 +16,7 @@ import restitution
 import restitution._oblique
 
 STEEL = dict(young_modulus=2e11, poisson_ratio=0.3, radius=1e-3, density=7800.0)
+ELASTIC = dict(STEEL, dissipative_constant=0.0)  # the damping is required: 0 says elastic
 STEEL_CLI = ["--young-modulus", "2e11", "--poisson-ratio", "0.3", "--radius", "1e-3", "--density", "7800"]
 
 
@@ -72,14 +73,14 @@ def test_gross_sliding_closed_form(steel_damped):
 
 def test_frictionless_keeps_the_tangential_motion():
     # On a wall (a pair's line of centres turns, which moves u even without friction).
-    r = restitution.oblique(material=restitution.Material(**STEEL), friction=0.0, angle=30.0, spin=50.0,
+    r = restitution.oblique(material=restitution.Material(**ELASTIC), friction=0.0, angle=30.0, spin=50.0,
                             tangential="mindlin", wall=True)
     assert r.spin == 50.0 and r.tangential_restitution == -1.0
     assert math.isnan(r.psi_in) and math.isnan(r.psi_out)
 
 
 def test_scalars_give_floats_and_arrays_broadcast():
-    steel = restitution.Material(**STEEL)
+    steel = restitution.Material(**ELASTIC)
     one = restitution.oblique(material=steel, friction=0.3, angle=20, tangential="mindlin", wall=True)
     assert isinstance(one.tangential_restitution, float) and isinstance(one.modes, tuple)
     assert one.switch_times.dtype == np.float64 and one.switch_times[0] == 0.0
@@ -91,12 +92,12 @@ def test_scalars_give_floats_and_arrays_broadcast():
 
 
 def test_repr_shows_units_and_results_pickle():
-    r = restitution.oblique(material=restitution.Material(**STEEL), friction=0.3, angle=[10.0, 80.0],
+    r = restitution.oblique(material=restitution.Material(**ELASTIC), friction=0.3, angle=[10.0, 80.0],
                             tangential="mindlin", wall=True)
     text = repr(r)
     for piece in ("tangential_model='mindlin'", "rad/s", " deg", " s,", "rebound_angle=", "tangential_restitution="):
         assert piece in text
-    one = restitution.oblique(material=restitution.Material(**STEEL), friction=0.3, angle=10.0, tangential="mindlin")
+    one = restitution.oblique(material=restitution.Material(**ELASTIC), friction=0.3, angle=10.0, tangential="mindlin")
     assert "modes=stick from 0 s" in repr(one)
     for result in (r, one):
         back = pickle.loads(pickle.dumps(result))
@@ -124,22 +125,42 @@ def test_docstring_example_runs():
      ValueError, "wall takes one sphere"),
 ])
 def test_bad_arguments_are_named(arguments, error, words):
-    keywords = dict(material=restitution.Material(**STEEL), friction=0.3, tangential="mindlin")
+    keywords = dict(material=restitution.Material(**ELASTIC), friction=0.3, tangential="mindlin")
     keywords.update(arguments)  # a material of its own replaces the default
     with pytest.raises(error, match=None) as caught:
         restitution.oblique(**keywords)
     assert words in str(caught.value)
 
 
+def test_damping_is_required_or_calibrated_and_the_wall_is_rigid():
+    # Issue 44 item 11: a Material without A was silently elastic; item 12: the wall of `dem --wall`.
+    with pytest.raises(ValueError) as caught:
+        restitution.oblique(material=restitution.Material(**STEEL), friction=0.3, angle=10.0)
+    assert "dissipative_constant" in str(caught.value) and "eps" in str(caught.value)
+    r = restitution.oblique(material=restitution.Material(**STEEL), eps=0.85, velocity=2.0, speed=2.0,
+                            friction=0.3, angle=0.0, wall=True)
+    assert r.normal_restitution == pytest.approx(0.85, abs=1e-9)
+    assert r.rigid_wall and r.tangential_model == "mindlin" and r.dissipative_constant > 0.0
+    own = restitution.oblique(material=restitution.Material(**STEEL), eps=0.85, velocity=2.0, speed=2.0,
+                              friction=0.3, angle=0.0, wall=True, wall_young_modulus=2e11, wall_poisson_ratio=0.3)
+    assert not own.rigid_wall and own.normal_restitution == pytest.approx(0.85, abs=1e-9)
+    assert own.dissipative_constant != r.dissipative_constant  # calibrated on each contact
+    with pytest.raises(ValueError, match="wall_poisson_ratio"):
+        restitution.oblique(material=restitution.Material(**ELASTIC), friction=0.3, angle=10.0, wall=True,
+                            wall_young_modulus=2e11)
+
+
 def test_an_ill_conditioned_impact_warns_as_the_command_line_does(cli, steel_damped):
     # Near the stick/slip boundary (a second stick phase appears near 17.95 deg for this wall impact) the contract
-    # cannot be shown: the command line says so on stderr and in the JSON, Python with a RuntimeWarning.
+    # cannot be shown: the command line says so on stderr and in the JSON, Python with a RuntimeWarning. A steel
+    # wall (the boundary's angle is that of a wall of the sphere's material).
     arguments = dict(friction=0.3, tangential="linear_history", tangential_stiffness=2.2e6, tangential_damping=0.5,
-                     wall=True)
+                     wall=True, wall_young_modulus=2e11, wall_poisson_ratio=0.3)
     angles = np.linspace(17.94, 17.96, 21)
     out = json.loads(cli("oblique", *STEEL_CLI, "--dissipative-constant", "1e-7", "--tangential", "linear_history",
                          "--tangential-stiffness", "2.2e6", "--tangential-damping", "0.5", "--friction", "0.3",
-                         "--wall", "--angle", ",".join(repr(a) for a in angles), "--json"))
+                         "--wall", "--wall-young-modulus", "2e11", "--wall-poisson-ratio", "0.3",
+                         "--angle", ",".join(repr(a) for a in angles), "--json"))
     flagged = [impact["angle_deg"] for impact in out["impacts"] if impact["conditioning"] != "well-conditioned"]
     assert flagged, "no flagged impact: the case no longer crosses the boundary"
     with pytest.warns(RuntimeWarning, match="ill-conditioned") as caught:

@@ -8,6 +8,7 @@
 #include "dem/deck_eps.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
+#include "units/contact_compliance.hpp"
 
 namespace restitution::dem {
 namespace {
@@ -20,15 +21,6 @@ void check_wall(const WallMaterial& w) {
   if (!std::isfinite(w.poisson_ratio) || w.poisson_ratio <= -1.0 || w.poisson_ratio >= 0.5) {
     throw InvalidInput(fmt::format("--wall-poisson-ratio must lie in (-1, 0.5), got {}", w.poisson_ratio));
   }
-}
-
-// 1/E* = (1 - ν²)/Y + (1 - ν_w²)/Y_w and 1/G* = (2 - ν)/G + (2 - ν_w)/G_w (G = Y/(2 (1 + ν))), the wall's
-// terms 0 when it is rigid.
-double compliance(double young_modulus_pa, double poisson_ratio) {
-  return (1.0 - poisson_ratio * poisson_ratio) / young_modulus_pa;
-}
-double shear_compliance(double young_modulus_pa, double poisson_ratio) {
-  return 2.0 * (2.0 - poisson_ratio) * (1.0 + poisson_ratio) / young_modulus_pa;
 }
 
 }  // namespace
@@ -52,11 +44,13 @@ WallResult wall_lines(const WallRequest& request) {
   c.poisson_ratio = one.poisson_ratio;
   c.radius1_m = one.radius1_m;
   c.mass1_kg = one.mass1_kg;
-  double e_compliance = compliance(one.young_modulus_pa, one.poisson_ratio);
-  double g_compliance = shear_compliance(one.young_modulus_pa, one.poisson_ratio);
+  // 1/E* = (1 - ν²)/Y + (1 - ν_w²)/Y_w and 1/G* = (2 - ν)/G + (2 - ν_w)/G_w, the wall's terms 0 when it is
+  // rigid.
+  double e_compliance = normal_compliance_per_pa(one.young_modulus_pa, one.poisson_ratio);
+  double g_compliance = shear_compliance_per_pa(one.young_modulus_pa, one.poisson_ratio);
   if (request.wall) {
-    e_compliance += compliance(request.wall->young_modulus_pa, request.wall->poisson_ratio);
-    g_compliance += shear_compliance(request.wall->young_modulus_pa, request.wall->poisson_ratio);
+    e_compliance += normal_compliance_per_pa(request.wall->young_modulus_pa, request.wall->poisson_ratio);
+    g_compliance += shear_compliance_per_pa(request.wall->young_modulus_pa, request.wall->poisson_ratio);
   }
   c.effective_modulus_pa = 1.0 / e_compliance;
   c.effective_radius_m = one.radius1_m;

@@ -136,15 +136,18 @@ int root_functions(sunrealtype sigma, N_Vector y, sunrealtype* g, void* user_dat
   g[0] = data.end == CollisionEnd::naive || data.model->law.damping() == 0.0
              ? N_VGetArrayPointer(y)[0]
              : law_rhs::force_factor(data.model->law, s[detail::kOverlap], s[detail::kOverlapRate]);
-  // Without friction the force is 0 in every mode (LAMMPS caps it at 0): nothing to switch.
-  g[1] = data.model->friction == 0.0 ? 1.0 : data.model->switch_function(s, data.mode, data.sign);
-  if (data.model->friction != 0.0) track_switch_distance(data, sigma, s, g[1]);
+  // Without friction the force is 0 in every mode (LAMMPS caps it at 0), and without a cap the contact
+  // sticks throughout: nothing to switch.
+  const bool switches = data.model->friction != 0.0 && !data.model->uncapped;
+  g[1] = switches ? data.model->switch_function(s, data.mode, data.sign) : 1.0;
+  if (switches) track_switch_distance(data, sigma, s, g[1]);
   if (data.model->rescales_on_unloading()) g[2] = s[detail::kOverlapRate];  // registered only then
   return 0;
 }
 
 NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& normal,
-                           const TangentialForce& tangential, double impact_speed_m_s, CollisionEnd end) {
+                           const TangentialForce& tangential, double impact_speed_m_s, CollisionEnd end,
+                           bool uncapped) {
   const double mass = effective_mass_kg(geometry);
   const double time_s = physical_time_scale_s(normal.kind, normal.stiffness, mass, impact_speed_m_s);
   const double length_m = impact_speed_m_s * time_s;
@@ -152,6 +155,7 @@ NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& n
   model.law = ContactLaw::physical(normal.kind, normal.stiffness, normal.damping, mass, impact_speed_m_s);
   model.kind = tangential.kind;
   model.friction = tangential.friction;
+  model.uncapped = uncapped;
   model.damping_factor = tangential.damping_factor;
   // F_t = k_t ξ: in units of m* v/T per v T of displacement, κ = k_t T²/m*; mindlin's k_t sqrt(R* δ) adds
   // sqrt(R* v T) to κ_m.
@@ -187,15 +191,25 @@ NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& n
   return model;
 }
 
+// The largest elastic overlap in natural units, (a+1)/2 to the 1/(a+1) (the energy 1/2 all stored): no
+// damped contact compresses further.
+double largest_overlap(LawKind kind) {
+  const double a = law_exponents(kind).elastic;
+  return std::pow(0.5 * (a + 1.0), 1.0 / (a + 1.0));
+}
+
 void validate(const ObliqueGeometry& geometry, const NormalForce& normal, const TangentialForce& tangential,
               const ImpactVelocity& impact, const ObliqueOptions& options) {
   require_body(geometry.first, "first sphere's");
   if (geometry.second) require_body(*geometry.second, "second sphere's");
   require_positive(normal.stiffness, "normal stiffness");
   require_nonnegative(normal.damping, "normal damping coefficient");
-  require_nonnegative(tangential.friction, "friction coefficient");
+  if (!options.sticking_limit) require_nonnegative(tangential.friction, "friction coefficient");
   require_nonnegative(tangential.damping_factor, "tangential damping factor");
-  if (tangential.kind != TangentialKind::linear_nohistory) {
+  // Without friction the tangential force is 0 whatever the stiffness (the cap is 0), except in the sticking
+  // limit, which has no cap.
+  if (tangential.kind != TangentialKind::linear_nohistory &&
+      (tangential.friction != 0.0 || options.sticking_limit)) {
     require_positive(tangential.stiffness,
                      fmt::format("{} tangential stiffness", tangential_name(tangential.kind)).c_str());
   }
@@ -211,6 +225,23 @@ void validate(const ObliqueGeometry& geometry, const NormalForce& normal, const 
         fmt::format("relative tolerance must be in [1e-14, 1e-2], got {}", options.relative_tolerance));
   }
   if (options.max_switches < 1) throw InvalidInput("max_switches must be at least 1");
+  // Without friction (and a cap) the tangential force is 0: nothing to resolve.
+  if (tangential.friction == 0.0 && !options.sticking_limit) return;
+  const TangentialLimits limits = tangential_limits(geometry, normal, tangential.kind, impact.normal_m_s);
+  if (tangential.stiffness > limits.stiffness) {
+    throw InvalidInput(fmt::format(
+        "{} tangential stiffness {} exceeds {:.3g}, the stiffest spring the solve resolves at this impact "
+        "(its "
+        "sticking period would be shorter than 2 pi/{:g} of the normal law's natural time)",
+        tangential_name(tangential.kind), tangential.stiffness, limits.stiffness, kFastestTangentialRate));
+  }
+  if (tangential.damping_factor > limits.damping_factor) {
+    throw InvalidInput(
+        fmt::format("tangential damping factor {} exceeds {:.3g}, the strongest damping the solve resolves "
+                    "at this impact "
+                    "(its decay time would be shorter than 1/{:g} of the normal law's natural time)",
+                    tangential.damping_factor, limits.damping_factor, kFastestTangentialRate));
+  }
 }
 
 // The mode at first contact: the trial force of a stick at τ0 against the cap there (the leading terms of
@@ -218,6 +249,10 @@ void validate(const ObliqueGeometry& geometry, const NormalForce& normal, const 
 // whenever s != 0, its cap growing as τ^{3/2} against the spring's τ).
 void initial_mode(const NaturalModel& model, State& y, ContactMode& mode, double& sign) {
   const double trial = model.cap_test_force(y);
+  if (model.uncapped) {
+    mode = ContactMode::stick;
+    return;
+  }
   mode = std::abs(trial) <= model.cap(y[detail::kOverlap], y[detail::kOverlapRate]) ? ContactMode::stick
                                                                                     : ContactMode::slip;
   sign = trial < 0.0 ? -1.0 : 1.0;
@@ -246,6 +281,24 @@ void initial_mode(const NaturalModel& model, State& y, ContactMode& mode, double
 }
 
 }  // namespace
+
+TangentialLimits tangential_limits(const ObliqueGeometry& geometry, const NormalForce& normal,
+                                   TangentialKind kind, double normal_speed_m_s) {
+  // The model of a unit k_t and γ_t: its κ and g are then the natural values per unit of each.
+  const NaturalModel unit =
+      natural_model(geometry, normal, {kind, 1.0, 1.0, 0.0}, normal_speed_m_s, CollisionEnd::naive, false);
+  const double x = largest_overlap(normal.kind);
+  const double mobility = unit.mobility(0.0);
+  const double rate2 = kFastestTangentialRate * kFastestTangentialRate;
+  TangentialLimits limits{HUGE_VAL, HUGE_VAL};
+  if (kind != TangentialKind::linear_nohistory) {
+    // λ² = mobility κ for a spring force −κξ (the force histories: H' = −κ s, the same rate).
+    limits.stiffness = rate2 / (mobility * unit.tangential_stiffness(x));
+  }
+  if (const double g = unit.tangential_damping(x); g > 0.0)
+    limits.damping_factor = kFastestTangentialRate / (mobility * g);
+  return limits;
+}
 
 const char* tangential_name(TangentialKind kind) {
   switch (kind) {
@@ -323,7 +376,8 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
                             const ObliqueOptions& options) {
   validate(geometry, normal, tangential, impact, options);
   const double speed = impact.normal_m_s;
-  const NaturalModel model = natural_model(geometry, normal, tangential, speed, options.end);
+  const NaturalModel model =
+      natural_model(geometry, normal, tangential, speed, options.end, options.sticking_limit);
   const double time_s =
       physical_time_scale_s(normal.kind, normal.stiffness, effective_mass_kg(geometry), speed);
 

@@ -157,6 +157,10 @@ struct ObliqueOptions {
   CollisionEnd end = CollisionEnd::delayed_recovery;
   double relative_tolerance = 1e-10;  // CVODE's, on the natural-unit state
   int max_switches = 1000;            // more stick/slip switches in one contact is reported as a failure
+  // The sticking limit μ → ∞: the Coulomb cap removed, the contact sticks from first contact to the end and
+  // the friction is not read. No switch function is integrated, so nothing near a huge cap can fail (a finite
+  // μ = 1e12 drove CVODE into error-test failures).
+  bool sticking_limit = false;
 };
 
 enum class ContactMode { stick, slip };
@@ -202,8 +206,23 @@ struct ObliqueResult {
   SolverStats stats;
 };
 
+// The stiffest tangential spring and the strongest tangential damping the solve resolves at one impact:
+// CVODE's Adams method (non-stiff) needs steps of about 1/λ for a sticking contact whose tangential motion
+// has the rate λ (sqrt(mobility κ) for the spring, mobility g for the damper, in the normal law's natural
+// time, taken at the largest elastic overlap and the largest mobility, that of first contact).
+// kFastestTangentialRate bounds λ; the limits are k_t and γ_t at that bound, in the units of TangentialForce
+// (infinite where the model has no such term, or the normal law no damping).
+inline constexpr double kFastestTangentialRate = 1e3;
+struct TangentialLimits {
+  double stiffness = 0.0;       // largest k_t [N/m, N/m², N/m^{3/2} as TangentialForce::stiffness]
+  double damping_factor = 0.0;  // largest γ_t
+};
+TangentialLimits tangential_limits(const ObliqueGeometry& geometry, const NormalForce& normal,
+                                   TangentialKind kind, double normal_speed_m_s);
+
 // Solves one oblique impact. Throws InvalidInput naming a bad argument (non-positive radius, mass, inertia,
-// normal speed or stiffness; negative damping or friction; a history model without stiffness),
+// normal speed or stiffness; negative damping or friction; a history model without stiffness; a stiffness
+// or damping beyond tangential_limits),
 // NumericalFailure if CVODE fails or the mode switches more than max_switches times.
 ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& normal,
                             const TangentialForce& tangential, const ImpactVelocity& impact,

@@ -47,8 +47,9 @@ enum Index {
 struct NaturalModel {
   ContactLaw law;
   TangentialKind kind = TangentialKind::linear_history;
-  double friction = 0.0;        // μ
-  double stiffness = 0.0;       // κ (linear_history), or κ_m with κ = κ_m sqrt(x) (the mindlin family)
+  double friction = 0.0;   // μ
+  bool uncapped = false;   // the sticking limit μ → ∞ (ObliqueOptions::sticking_limit): stick throughout
+  double stiffness = 0.0;  // κ (linear_history), or κ_m with κ = κ_m sqrt(x) (the mindlin family)
   double damping_factor = 0.0;  // γ_t: g(x) = γ_t c_d w(x)
   // ρ_i(x) = rotation_base_i - rotation_slope_i x: d(R_i ω_i)/dτ = ρ_i f_t.
   std::array<double, 2> rotation_base{};

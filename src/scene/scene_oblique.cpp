@@ -2,7 +2,9 @@
 #include "scene/scene_oblique.hpp"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -23,13 +25,12 @@ ObliqueTask read_oblique_task(TomlReader& r, std::string name,
   if (!materials.contains(*material))
     r.fail("material", fmt::format("no [materials.{}] in this scene", *material));
   t.material = *material;
-  t.models = r.words("model").value_or(std::vector<std::string>{"linear_history"});
-  if (t.models.empty()) r.fail("model", "empty: leave the key out for linear_history");
+  t.models = r.words("model").value_or(std::vector<std::string>{oblique::ObliqueInputs{}.tangential});
+  if (t.models.empty()) r.fail("model", "empty: leave the key out for mindlin");
+  const std::vector<std::string>& runs = oblique::oblique_tangential_names();
   for (const std::string& model : t.models) {
-    try {
-      (void)oblique::tangential_from_name(model);
-    } catch (const InvalidInput& e) {
-      r.fail("model", e.what());
+    if (std::find(runs.begin(), runs.end(), model) == runs.end()) {
+      r.fail("model", fmt::format("unknown or not run here: '{}' (choose {})", model, fmt::join(runs, ", ")));
     }
   }
   const auto friction = r.number("friction");
@@ -65,6 +66,13 @@ ObliqueTask read_oblique_task(TomlReader& r, std::string name,
   r.check_each(
       "speed", {t.speed_m_s}, [](double v) { return v > 0.0 && std::isfinite(v); }, "a speed > 0 (m/s)");
   t.wall = r.flag("wall").value_or(false);
+  t.wall_young_modulus_pa = r.number("wall_young_modulus");
+  t.wall_poisson_ratio = r.number("wall_poisson_ratio");
+  if (t.wall_young_modulus_pa.has_value() != t.wall_poisson_ratio.has_value()) {
+    r.fail(t.wall_young_modulus_pa ? "wall_poisson_ratio" : "wall_young_modulus",
+           "give wall_young_modulus and wall_poisson_ratio together, or neither (a rigid wall)");
+  }
+  if (t.wall_young_modulus_pa && !t.wall) r.fail("wall_young_modulus", "needs wall = true");
   t.fixed_normal = r.flag("fixed_normal").value_or(false);
   t.end = r.text("end").value_or(t.end);
   t.torque_arm = r.text("torque_arm").value_or(t.torque_arm);
@@ -78,6 +86,12 @@ ObliqueTask read_oblique_task(TomlReader& r, std::string name,
                   oblique::kSmallestObliqueTolerance, oblique::kLargestObliqueTolerance));
   t.plot = r.flag("plot").value_or(true);
   const Material& m = materials.at(t.material);
+  if (!m.dissipative_constant_s && !m.viscosities) {
+    r.fail("material",
+           fmt::format("[materials.{}] has no dissipation: give it dissipative_constant (0 for an "
+                       "elastic contact) or the viscosities",
+                       t.material));
+  }
   if (t.wall && (m.radius1_m != m.radius2_m || m.mass1_kg != m.mass2_kg)) {
     r.fail("wall", fmt::format("a wall takes one sphere: [materials.{}] has two", t.material));
   }

@@ -16,7 +16,7 @@ struct ObliqueTask {
   std::string name;
   std::string title;
   std::string material;             // a [materials.X]: radius (radius2), density or mass, and A if given
-  std::vector<std::string> models;  // tangential models, LAMMPS's keywords; default linear_history
+  std::vector<std::string> models;  // tangential models, LAMMPS's keywords; default mindlin (as `dem`)
   double friction = 0.0;            // μ
   // One section may sweep several models, whose stiffnesses differ in unit: k_t of linear_history (N/m) and
   // of mindlin (N/m², its default LAMMPS's NULL, 8 G*).
@@ -26,7 +26,9 @@ struct ObliqueTask {
   std::vector<double> angles_deg;
   std::vector<double> spins_rad_s = {0.0};
   double speed_m_s = 1.0;
-  bool wall = false;
+  bool wall = false;  // rigid, unless wall_young_modulus and wall_poisson_ratio give its material
+  std::optional<double> wall_young_modulus_pa;
+  std::optional<double> wall_poisson_ratio;
   bool fixed_normal = false;
   std::string end = "delayed-recovery";
   std::string torque_arm = "lammps";
@@ -39,7 +41,7 @@ namespace detail {
 class TomlReader;
 // Reads the keys of one [[oblique]] (name already read): material, model, friction, angles, spins, wall,
 // speed, tangential_stiffness, mindlin_stiffness, tangential_damping, end, torque_arm, fixed_normal,
-// tolerance, plot, title. Throws InvalidInput naming the key.
+// wall_young_modulus, wall_poisson_ratio, tolerance, plot, title. Throws InvalidInput naming the key.
 ObliqueTask read_oblique_task(TomlReader& r, std::string name,
                               const std::map<std::string, Material>& materials);
 }  // namespace detail

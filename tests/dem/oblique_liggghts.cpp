@@ -36,6 +36,8 @@ const std::string kMaterial =
     "--young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --dissipative-constant 1e-7 "
     "--friction 0.3";
 const std::vector<double>& kAnglesDeg = restitution::test_support::kObliqueAnglesDeg;
+// The LIGGGHTS wall carries the pair's kn: a wall of the sphere's own material (`oblique --wall` alone is rigid).
+const std::string kOwnWall = " --wall --wall-young-modulus 2e11 --wall-poisson-ratio 0.3";
 constexpr int kCoarseSteps = 20000;
 
 using Outcome = restitution::test_support::ObliqueOutcome;
@@ -84,7 +86,7 @@ TEST_P(ObliqueLiggghts, ImpactsAgreeWithin1e4) {
   }
   const nlohmann::json predicted =
       cli_json("oblique " + kMaterial + " --tangential liggghts_history --tangential-damping " +
-               (damped ? "1" : "0") + (wall ? " --wall" : "") + " --angle " + angle_list() + " --spin " +
+               (damped ? "1" : "0") + (wall ? kOwnWall : "") + " --angle " + angle_list() + " --spin " +
                std::to_string(spin) + " --tolerance 1e-10");
   const auto& impacts = predicted.at("impacts");
   ASSERT_EQ(impacts.size(), kAnglesDeg.size());
@@ -145,7 +147,7 @@ TEST(ObliqueLiggghtsCap, ImpactsSlidingOnTheCapAreFlaggedAndTheOthersAgree) {
     if (wall) halve_damping_for_the_wall(dem, lines);
     const auto outcome =
         run_cli("oblique " + material + " --tangential liggghts_history --tangential-damping 1" +
-                (wall ? " --wall" : "") + " --angle " + list + " --spin 300 --json");
+                (wall ? kOwnWall : "") + " --angle " + list + " --spin 300 --json");
     ASSERT_EQ(outcome.status, 0) << outcome.err;
     const nlohmann::json predicted = nlohmann::json::parse(outcome.out);
     const auto& impacts = predicted.at("impacts");

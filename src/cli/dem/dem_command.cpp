@@ -318,7 +318,10 @@ void add_dem_command(CLI::App& app, Action& chosen) {
                   dem::max_deck_types(dem::Code::lammps, 3), dem::kMaxDeckSphereSteps,
                   dem::kMaxDeckCollisionsYade));
   add_production_options(*cmd, o->production);
-  add_wall_options(*cmd, o->wall);
+  add_wall_options(
+      *cmd, o->wall,
+      "a sphere (--radius, --density or --mass) hitting a flat wall: the code's wall lines, in its "
+      "wall convention (lammps: fix wall/gran granular)");
   add_dem_oblique_options(*cmd, o->oblique);
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");

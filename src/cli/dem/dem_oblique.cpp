@@ -71,7 +71,7 @@ std::vector<ContractedOblique> impacts_at(const DemOblique& r, const TangentialF
     out.push_back(solve_oblique_within(r.geometry, r.normal, tangential, v, r.tolerance, r.options));
     // Never silently: an outcome the tolerance cannot be shown for is said on stderr as well.
     if (out.back().ill_conditioned) {
-      fmt::print(stderr, "restitution dem: warning: oblique impact at {:g} deg, {}\n", angle,
+      fmt::print(stderr, "restitution dem: warning: oblique impact at {} deg, {}\n", angle,
                  out.back().conditioning);
     }
   }
@@ -161,13 +161,17 @@ void write_impacts(JsonWriter& json, const DemOblique& r, const std::vector<Cont
 }
 
 void print_impacts(const DemOblique& r, const std::vector<ContractedOblique>& impacts, const char* c) {
-  fmt::print("{}   {:>9} {:>14} {:>14} {:>12} {:>14}\n", c, "angle_deg", "eps_n", "e_t", "rebound_deg",
-             "spin_rad_s");
+  const bool pair = r.geometry.second.has_value();  // the second sphere spins too
+  fmt::print("{}   {:>9} {:>14} {:>14} {:>12} {:>14}{}\n", c, "angle_deg", "eps_n", "e_t", "rebound_deg",
+             "spin_rad_s", pair ? fmt::format(" {:>14}", "spin2_rad_s") : "");
   for (std::size_t i = 0; i < impacts.size(); ++i) {
     const ObliqueResult& x = impacts[i].result;
-    fmt::print("{}   {:9.4g} {:14.10f} {:14.10f} {:12.6f} {:14.8g}{}\n", c, r.angles_deg[i],
-               x.normal_restitution, x.tangential_restitution, x.rebound_angle_rad / kDegree,
-               x.spin_first_rad_s, impacts[i].ill_conditioned ? "  (" + impacts[i].conditioning + ")" : "");
+    // The angle as given, in its shortest exact form (89.999 is not 90).
+    fmt::print("{}   {:>9} {:14.10f} {:14.10f} {:12.6f} {:14.8g}{}{}\n", c,
+               fmt::format("{}", r.angles_deg[i]), x.normal_restitution, x.tangential_restitution,
+               x.rebound_angle_rad / kDegree, x.spin_first_rad_s,
+               pair ? fmt::format(" {:14.8g}", x.spin_second_rad_s) : "",
+               impacts[i].ill_conditioned ? "  (" + impacts[i].conditioning + ")" : "");
   }
 }
 
@@ -503,6 +507,12 @@ void print_oblique_text(const DemOblique& r, const char* c) {
       "eps and e_t within {:g}):\n",
       c, r.speed_m_s, r.tangential_words, r.tolerance);
   print_impacts(r, r.impacts, c);
+  if (r.tangential.friction == 0.0) {
+    // No cap and no tangential force: neither the cap rule nor the steps e_t needs mean anything.
+    fmt::print(
+        "{} frictionless lines: no tangential force, e_t = -1 and the spins unchanged at every angle\n", c);
+    return;
+  }
   fmt::print("{} {}'s rule: {}\n", c, code_title(r.code), cap_rule(r.code));
   fmt::print(
       "{} {} decides stick or slip once per step and is first order in dt: e_t within {:g} needs {:g} "
@@ -529,12 +539,16 @@ void write_oblique_json(JsonWriter& json, const DemOblique& r) {
   json.field("tangential_stiffness", r.tangential.stiffness)
       .field("tangential_damping_factor", r.tangential.damping_factor);
   json.field("speed_m_s", r.speed_m_s).field("tolerance", r.tolerance);
-  json.field("code", dem::code_name(r.code)).field("cap_rule", cap_rule(r.code));
+  json.field("code", dem::code_name(r.code));
+  const bool frictionless = r.tangential.friction == 0.0;  // no cap rule, no steps for e_t
+  if (!frictionless) json.field("cap_rule", cap_rule(r.code));
   json.key("impacts");
   write_impacts(json, r, r.impacts);
-  json.key(fmt::format("{}_steps", dem::code_name(r.code))).begin_object();
-  json.field("et_accuracy", r.et_accuracy).field("error_coefficient", r.error_coefficient);
-  json.field("steps_per_contact", r.steps_per_contact).field("timestep_s", r.timestep_s).end_object();
+  if (!frictionless) {
+    json.key(fmt::format("{}_steps", dem::code_name(r.code))).begin_object();
+    json.field("et_accuracy", r.et_accuracy).field("error_coefficient", r.error_coefficient);
+    json.field("steps_per_contact", r.steps_per_contact).field("timestep_s", r.timestep_s).end_object();
+  }
   if (r.inverse) {
     json.key("inverse").begin_object();
     json.field("target_et", r.target_et).field("reference_angle_deg", r.reference_angle_deg);

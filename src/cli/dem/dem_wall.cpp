@@ -62,11 +62,8 @@ void print_text(const dem::WallResult& r, const std::optional<std::string>& deck
 
 }  // namespace
 
-void add_wall_options(CLI::App& command, WallOptions& o) {
-  command.add_flag(
-      "--wall", o.wall,
-      "a sphere (--radius, --density or --mass) hitting a flat wall: the code's wall lines, in its "
-      "wall convention (lammps: fix wall/gran granular)");
+void add_wall_options(CLI::App& command, WallOptions& o, const std::string& wall_help) {
+  command.add_flag("--wall", o.wall, wall_help);
   command.add_option("--wall-young-modulus", o.young_modulus,
                      "with --wall: the wall's Young's modulus in Pa (default: a rigid wall)");
   command.add_option("--wall-poisson-ratio", o.poisson_ratio,

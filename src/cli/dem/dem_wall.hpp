@@ -17,7 +17,9 @@ struct WallOptions {
   std::optional<double> young_modulus, poisson_ratio;  // the wall's material; none: rigid
 };
 
-void add_wall_options(CLI::App& command, WallOptions& o);
+// --wall (described by wall_help, the command's meaning of it), --wall-young-modulus, --wall-poisson-ratio:
+// one wall in every command, rigid unless given a material.
+void add_wall_options(CLI::App& command, WallOptions& o, const std::string& wall_help);
 
 // The wall's material from --wall-young-modulus and --wall-poisson-ratio (both or neither: InvalidInput).
 std::optional<dem::WallMaterial> wall_material(const WallOptions& o);

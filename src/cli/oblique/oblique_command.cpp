@@ -3,6 +3,7 @@
 // LAMMPS `pair granular` tangential model: the tangential restitution, rebound angle, spin, impulse ratio and
 // the stick/slip history per impact angle (src/oblique/, docs/oblique.md).
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <filesystem>
@@ -20,7 +21,10 @@
 #include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
+#include "cli/common/parse_errors.hpp"
+#include "cli/dem/dem_wall.hpp"
 #include "cli/oblique/oblique_sweep.hpp"
+#include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 #include "restitution/solve_types.hpp"
@@ -35,10 +39,13 @@ using namespace restitution::oblique;
 
 struct ObliqueCommandOptions {
   MaterialOptions material;
-  double dissipative_constant = 0.0;
-  bool wall = false;
+  std::optional<double> dissipative_constant;
+  std::optional<double> eps;       // with velocity: A calibrated on this contact
+  std::optional<double> velocity;  // m/s, the speed eps was measured at
+  std::string law = ObliqueInputs{}.law;
+  WallOptions wall;
   bool fixed_normal = false;
-  std::string tangential = "linear_history";
+  std::string tangential = ObliqueInputs{}.tangential;
   std::optional<double> tangential_stiffness;
   double tangential_damping = 0.0;
   std::optional<double> friction;
@@ -61,7 +68,7 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 
 // The options as the study's inputs; its rules (src/oblique/oblique_study.cpp) check them.
 Setup setup_of(const ObliqueCommandOptions& o) {
-  if (o.wall && (o.material.radius2 || o.material.mass2)) {
+  if (o.wall.wall && (o.material.radius2 || o.material.mass2)) {
     throw InvalidInput("--wall takes one sphere: drop --radius2 and --mass2");
   }
   if (!o.angle_range.empty() && !o.angles_deg.empty()) {
@@ -70,7 +77,12 @@ Setup setup_of(const ObliqueCommandOptions& o) {
   ObliqueInputs in;
   in.material = material_from(o.material);
   in.dissipative_constant_s = o.dissipative_constant;
-  in.wall = o.wall;
+  in.eps = o.eps;
+  in.eps_velocity_m_s = o.velocity;
+  in.law = o.law;
+  in.wall = o.wall.wall;
+  in.wall_young_modulus_pa = o.wall.young_modulus;
+  in.wall_poisson_ratio = o.wall.poisson_ratio;
   in.fixed_normal = o.fixed_normal;
   in.tangential = o.tangential;
   in.tangential_stiffness = o.tangential_stiffness;
@@ -88,8 +100,19 @@ Setup setup_of(const ObliqueCommandOptions& o) {
 void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueImpact>& impacts) {
   JsonWriter json;
   json.begin_object().field("tangential_model", tangential_name(s.tangential.kind));
-  json.field("contact", o.wall ? "sphere-wall" : "sphere-sphere").field("end", o.end);
-  json.field("torque_arm", o.torque_arm).field("fixed_normal", o.wall || o.fixed_normal);
+  json.field("contact", o.wall.wall ? "sphere-wall" : "sphere-sphere").field("end", o.end);
+  if (o.wall.wall) {
+    json.field("rigid_wall", s.rigid_wall);
+    if (!s.rigid_wall) {
+      json.field("wall_young_modulus_pa", *o.wall.young_modulus)
+          .field("wall_poisson_ratio", *o.wall.poisson_ratio);
+    }
+  }
+  json.field("effective_modulus_pa", s.effective_modulus_pa)
+      .field("effective_shear_modulus_pa", s.effective_shear_modulus_pa);
+  json.field("law", law_name(s.normal.kind)).field("dissipative_constant_s", s.dissipative_constant_s);
+  if (o.eps) json.field("calibrated_eps", *o.eps).field("calibration_velocity_m_s", *o.velocity);
+  json.field("torque_arm", o.torque_arm).field("fixed_normal", o.wall.wall || o.fixed_normal);
   json.field("normal_stiffness_N_m1_5", s.normal.stiffness)
       .field("normal_damping_N_s_m1_5", s.normal.damping);
   json.field("tangential_stiffness", s.tangential.stiffness);
@@ -104,6 +127,8 @@ void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
     const ObliqueResult& r = impact.result;
     json.begin_object().field("angle_deg", impact.angle_deg);
     json.field("initial_spin_rad_s", impact.initial_spin_rad_s);
+    json.field("status", impact.solved() ? "solved" : "failed");
+    if (!impact.solved()) json.field("failure", impact.failure);
     json.field("normal_restitution", r.normal_restitution);
     json.key("tangential_restitution");
     if (std::isfinite(r.tangential_restitution)) {
@@ -113,9 +138,9 @@ void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
     }
     json.field("rebound_angle_deg", r.rebound_angle_rad / kDegree);
     json.field("spin_rad_s", r.spin_first_rad_s);
-    if (!o.wall) json.field("spin2_rad_s", r.spin_second_rad_s);
+    if (!o.wall.wall) json.field("spin2_rad_s", r.spin_second_rad_s);
     json.field("impulse_ratio", r.impulse_ratio).field("contact_time_s", r.contact_time_s);
-    if (!o.wall) json.field("line_of_centres_turn_deg", r.line_of_centres_turn_rad / kDegree);
+    if (!o.wall.wall) json.field("line_of_centres_turn_deg", r.line_of_centres_turn_rad / kDegree);
     json.field("stick_time_s", r.stick_time_s).field("slip_time_s", r.slip_time_s);
     json.key("modes").begin_array();
     for (const ModeSwitch& m : r.switches) {
@@ -140,31 +165,68 @@ void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
   fmt::print("{}\n", finish_json_document(json));
 }
 
+// Which contact, in words: the wall is rigid unless it has a material (as `dem --wall`).
+std::string contact_words(const ObliqueCommandOptions& o, const Setup& s) {
+  if (!o.wall.wall) return "two spheres of one material";
+  if (s.rigid_wall) return "a sphere on a rigid wall";
+  return fmt::format("a sphere on a wall of Y = {:g} Pa, nu = {:g}", *o.wall.young_modulus,
+                     *o.wall.poisson_ratio);
+}
+
+std::string damping_words(const ObliqueCommandOptions& o, const Setup& s) {
+  if (o.eps) {
+    const std::string what = s.normal.kind == LawKind::viscoelastic_hertz
+                                 ? fmt::format("A = {:.10g} s", s.dissipative_constant_s)
+                                 : std::string("gamma");
+    return fmt::format("{} calibrated: eps = {:g} head-on at {:g} m/s", what, *o.eps, *o.velocity);
+  }
+  return fmt::format("A = {:.10g} s{}", s.dissipative_constant_s,
+                     s.dissipative_constant_s == 0.0 ? " (elastic)" : "");
+}
+
+std::string tangential_words(const Setup& s) {
+  if (s.tangential.friction == 0.0) {
+    return fmt::format("frictionless (friction 0): no tangential force, u and the spins unchanged");
+  }
+  const TangentialKind kind = s.tangential.kind;
+  const bool liggghts = kind == TangentialKind::liggghts_history;
+  std::string stiffness;
+  if (kind != TangentialKind::linear_nohistory) {
+    stiffness = fmt::format("k_t = {:.10g} {}, ", s.tangential.stiffness,
+                            is_lammps_mindlin(kind) || liggghts ? "N/m^2 (times sqrt(R* delta))" : "N/m");
+  }
+  return fmt::format("{} ({}): {}damping {:.6g}, friction {:.6g}", tangential_name(kind),
+                     liggghts ? "LIGGGHTS tangential history" : "LAMMPS pair granular", stiffness,
+                     s.tangential.damping_factor, s.tangential.friction);
+}
+
 void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueImpact>& impacts) {
+  const bool pair = !o.wall.wall;
   fmt::print(
-      "# oblique impact, {}: viscoelastic Hertz k = {:.10g} N/m^1.5, gamma = {:.10g} N s/m^1.5, {} end\n",
-      o.wall ? "sphere on a wall" : "two spheres", s.normal.stiffness, s.normal.damping, o.end);
-  fmt::print("# tangential {} ({}): k_t = {:.10g} {}, damping {:.6g}, friction {:.6g}; speed {:g} m/s\n",
-             tangential_name(s.tangential.kind),
-             s.tangential.kind == TangentialKind::liggghts_history ? "LIGGGHTS tangential history"
-                                                                   : "LAMMPS pair granular",
-             s.tangential.stiffness,
-             is_lammps_mindlin(s.tangential.kind) || s.tangential.kind == TangentialKind::liggghts_history
-                 ? "N/m^2 (times sqrt(R* delta))"
-                 : "N/m",
-             s.tangential.damping_factor, s.tangential.friction, o.speed);
-  fmt::print("{:>9} {:>11} {:>14} {:>14} {:>12} {:>14} {:>12} {:>12} {:>10} {:>10}  modes\n", "angle_deg",
-             "spin0_rad_s", "eps_n", "e_t", "rebound_deg", "spin_rad_s", "impulse", "contact_s", "stick",
-             "slip");
+      "# oblique impact, {}: E* = {:.10g} Pa; {} k = {:.10g} N/m^1.5, gamma = {:.10g} N s/m^(1+b), {}; "
+      "eps_n at the {} end\n",
+      contact_words(o, s), s.effective_modulus_pa, law_name(s.normal.kind), s.normal.stiffness,
+      s.normal.damping, damping_words(o, s), o.end);
+  fmt::print("# tangential {}; speed {:g} m/s\n", tangential_words(s), o.speed);
+  fmt::print("{:>9} {:>11} {:>14} {:>14} {:>12} {:>14} {}{:>12} {:>12} {:>10} {:>10}  modes\n", "angle_deg",
+             "spin0_rad_s", "eps_n", "e_t", "rebound_deg", "spin_rad_s",
+             pair ? fmt::format("{:>14} ", "spin2_rad_s") : "", "impulse", "contact_s", "stick", "slip");
   for (const ObliqueImpact& impact : impacts) {
     const ObliqueResult& r = impact.result;
+    // The angle as given (89.999 stays 89.999), its shortest exact form.
+    const std::string angle = fmt::format("{}", impact.angle_deg);
+    if (!impact.solved()) {
+      fmt::print("{:>9} {:11.5g}  failed: {}\n", angle, impact.initial_spin_rad_s, one_line(impact.failure));
+      continue;
+    }
     std::string modes;
     for (const ModeSwitch& m : r.switches)
       modes += fmt::format("{}{}", modes.empty() ? "" : ",", mode_name(m.mode));
     fmt::print(
-        "{:9.4g} {:11.5g} {:14.10f} {:14.10f} {:12.6f} {:14.8g} {:12.8f} {:12.6g} {:10.4g} {:10.4g}  {}\n",
-        impact.angle_deg, impact.initial_spin_rad_s, r.normal_restitution, r.tangential_restitution,
-        r.rebound_angle_rad / kDegree, r.spin_first_rad_s, r.impulse_ratio, r.contact_time_s,
+        "{:>9} {:11.5g} {:14.10f} {:14.10f} {:12.6f} {:14.8g} {}{:12.8f} {:12.6g} {:10.4g} {:10.4g}  {}\n",
+        angle, impact.initial_spin_rad_s, r.normal_restitution, r.tangential_restitution,
+        r.rebound_angle_rad / kDegree, r.spin_first_rad_s,
+        pair ? fmt::format("{:14.8g} ", r.spin_second_rad_s) : "", r.impulse_ratio, r.contact_time_s,
         r.stick_time_s / r.contact_time_s, r.slip_time_s / r.contact_time_s, modes);
   }
   fmt::print(
@@ -175,39 +237,61 @@ void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
       o.tolerance, o.tolerance, o.tolerance);
   for (const ObliqueImpact& impact : impacts) {
     if (impact.ill_conditioned) {
-      fmt::print("# at {:g} deg, spin {:g} rad/s: {}\n", impact.angle_deg, impact.initial_spin_rad_s,
+      fmt::print("# at {} deg, spin {:g} rad/s: {}\n", impact.angle_deg, impact.initial_spin_rad_s,
                  impact.conditioning);
     }
   }
 }
 
+// Removes a scratch file however the scope is left (a plot script that throws leaves no x.png.data.csv).
+struct ScratchFile {
+  std::filesystem::path path;  // empty: none
+  explicit ScratchFile(std::filesystem::path scratch) : path(std::move(scratch)) {}
+  ScratchFile(const ScratchFile&) = delete;
+  ScratchFile& operator=(const ScratchFile&) = delete;
+  ~ScratchFile() {
+    if (path.empty()) return;
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+  }
+};
+
 // Maw's diagram of the sweep; without --out the script reads a scratch copy of the CSV beside the image.
 void draw(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueImpact>& impacts,
           const std::string& csv) {
   const std::filesystem::path data(o.out.empty() ? o.plot + ".data.csv" : o.out);
+  const ScratchFile scratch(o.out.empty() ? data : std::filesystem::path());
   if (o.out.empty()) {
     write_file_atomically(data, csv);  // also makes the image's folder
   } else if (const auto folder = std::filesystem::path(o.plot).parent_path(); !folder.empty()) {
     std::filesystem::create_directories(folder);
   }
-  const std::string why = plot_maw(s, impacts.front().result.normal_restitution, data, o.plot,
-                                   scene::plot_figure_formats(o.plot, o.format));
-  if (o.out.empty()) {
-    std::error_code ignored;
-    std::filesystem::remove(data, ignored);
+  const MawModel model = s.tangential.friction > 0.0 ? maw_model(s) : MawModel{};
+  if (!model.sticking_failure.empty()) {
+    fmt::print(stderr, "restitution oblique: warning: the sticking limit is left out of the plot: {}\n",
+               model.sticking_failure);
   }
+  const std::string why = plot_maw(s, model, first_solved_restitution(impacts), data, o.plot,
+                                   scene::plot_figure_formats(o.plot, o.format));
   if (!why.empty()) fmt::print(stderr, "restitution: warning: no oblique plot: {}\n", why);
 }
 
 int run(const ObliqueCommandOptions& o) {
   const Setup s = setup_of(o);
+  if (s.rigid_wall) {
+    // One release of notice for a changed meaning: the same words as `dem --wall` now give the same wall.
+    fmt::print(stderr,
+               "restitution oblique: note: --wall is a rigid wall, as in `dem --wall` (before, oblique's "
+               "--wall was a wall of the sphere's own material: give --wall-young-modulus and "
+               "--wall-poisson-ratio for that)\n");
+  }
   if (!o.out.empty()) check_output_file(o.out);
   if (!o.plot.empty()) check_output_file(o.plot);
   const std::vector<ObliqueImpact> impacts = oblique_sweep(s);
   for (const ObliqueImpact& impact : impacts) {
     // Never silently: an outcome the tolerance cannot be shown for is said on stderr as well.
     if (impact.ill_conditioned) {
-      fmt::print(stderr, "restitution oblique: warning: at {:g} deg, spin {:g} rad/s, {}\n", impact.angle_deg,
+      fmt::print(stderr, "restitution oblique: warning: at {} deg, spin {:g} rad/s, {}\n", impact.angle_deg,
                  impact.initial_spin_rad_s, impact.conditioning);
     }
   }
@@ -219,7 +303,21 @@ int run(const ObliqueCommandOptions& o) {
   } else {
     print_text(o, s, impacts);
   }
-  return 0;
+  // A failed impact loses none of the others: they are printed and written, it is marked, and the exit
+  // status says that not every impact was solved (docs/cli.md).
+  const std::size_t failed = failed_count(impacts);
+  if (failed == 0) return 0;
+  for (const ObliqueImpact& impact : impacts) {
+    if (!impact.solved()) {
+      fmt::print(stderr, "restitution oblique: numerical failure at {} deg, spin {:g} rad/s: {}\n",
+                 impact.angle_deg, impact.initial_spin_rad_s, one_line(impact.failure));
+    }
+  }
+  fmt::print(stderr,
+             "restitution oblique: {} of {} impacts failed (marked failed); the {} solved are in the {}{}\n",
+             failed, impacts.size(), impacts.size() - failed, o.json ? "JSON" : "table",
+             o.out.empty() ? "" : " and " + o.out);
+  return 1;
 }
 
 }  // namespace
@@ -230,22 +328,30 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
                                      "oblique impacts with a LAMMPS or LIGGGHTS tangential model: tangential "
                                      "restitution, rebound angle, spin, stick/slip");
   add_material_options(*cmd, o->material);
-  cmd->add_option("--dissipative-constant", o->dissipative_constant, "the dissipative constant A in s")
+  cmd->add_option("--dissipative-constant", o->dissipative_constant,
+                  "the dissipative constant A in s (0: elastic); or --eps and --velocity");
+  cmd->add_option("--eps", o->eps,
+                  "measured coefficient of restitution in (0, 1): A calibrated on this contact (sphere and "
+                  "sphere, or sphere and wall), head-on at --velocity");
+  cmd->add_option("--velocity", o->velocity, "impact speed in m/s at which --eps was measured");
+  cmd->add_option("--law", o->law,
+                  "normal law: viscoelastic-hertz, tsuji-hertz or hertz-constant-damping (the material's "
+                  "Hertz stiffness; the last two damped by --eps/--velocity; LAMMPS's tangential models)")
       ->capture_default_str();
-  cmd->add_flag("--wall", o->wall, "a sphere on a flat wall of the same material instead of two spheres");
+  add_wall_options(*cmd, o->wall,
+                   "a sphere on a flat wall instead of two spheres: rigid, as in `dem --wall`, unless "
+                   "--wall-young-modulus and --wall-poisson-ratio give its material");
   cmd->add_flag(
       "--fixed-normal", o->fixed_normal,
       "two spheres: keep the normal of the impact (the textbook model) instead of letting the line of "
       "centres turn as in LAMMPS");
   cmd->add_option(
          "--tangential", o->tangential,
-         "tangential model: linear_nohistory, linear_history, mindlin, mindlin_rescale, mindlin/force, "
-         "mindlin_rescale/force (LAMMPS) or liggghts_history")
-      ->check(CLI::IsMember(tangential_names()))
+         fmt::format("tangential model: {} (docs/oblique.md)", fmt::join(oblique_tangential_names(), ", ")))
       ->capture_default_str();
-  cmd->add_option(
-      "--tangential-stiffness", o->tangential_stiffness,
-      "k_t: N/m for linear_history, N/m^2 for the mindlin models and liggghts_history (default there: 8 G*)");
+  cmd->add_option("--tangential-stiffness", o->tangential_stiffness,
+                  "k_t: N/m for linear_history (required there when friction > 0), N/m^2 for the mindlin "
+                  "models and liggghts_history (default there: 8 G*)");
   cmd->add_option("--tangential-damping", o->tangential_damping,
                   "LAMMPS's tangential damping factor (times the normal damping coefficient)")
       ->capture_default_str();

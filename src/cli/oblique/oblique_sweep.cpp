@@ -3,8 +3,10 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <utility>
 
 #include "cli/common/output_files.hpp"
 #include "restitution/errors.hpp"
@@ -44,9 +46,11 @@ std::vector<double> angle_range(const std::string& text) {
 }
 
 const char* oblique_csv_header() {
-  // The first ten columns as before sweeps over spin; the initial spin and Maw's ψ were added at the end.
+  // The first ten columns as before sweeps over spin; the initial spin and Maw's ψ were added at the end,
+  // then the second sphere's spin (0 on a wall) and whether the impact was solved.
   return "angle_deg,normal_restitution,tangential_restitution,rebound_angle_deg,spin_rad_s,impulse_ratio,"
-         "contact_time_s,stick_time_s,slip_time_s,switches,initial_spin_rad_s,psi_in,psi_out";
+         "contact_time_s,stick_time_s,slip_time_s,switches,initial_spin_rad_s,psi_in,psi_out,spin2_rad_s,"
+         "status";
 }
 
 std::string oblique_csv_header_with_model() {
@@ -59,12 +63,13 @@ std::string oblique_csv_rows(const std::vector<ObliqueImpact>& impacts, const ch
   for (const ObliqueImpact& i : impacts) {
     const ObliqueResult& r = i.result;
     if (model != nullptr) csv += std::string(model) + ",";
-    csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{}\n", number17(i.angle_deg),
+    const std::string switches = i.solved() ? fmt::format("{}", r.switches.size() - 1) : "nan";
+    csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", number17(i.angle_deg),
                        number17(r.normal_restitution), number17(r.tangential_restitution),
                        number17(r.rebound_angle_rad / kDegree), number17(r.spin_first_rad_s),
                        number17(r.impulse_ratio), number17(r.contact_time_s), number17(r.stick_time_s),
-                       number17(r.slip_time_s), r.switches.size() - 1, number17(i.initial_spin_rad_s),
-                       number17(i.psi_in), number17(i.psi_out));
+                       number17(r.slip_time_s), switches, number17(i.initial_spin_rad_s), number17(i.psi_in),
+                       number17(i.psi_out), number17(r.spin_second_rad_s), i.solved() ? "solved" : "failed");
   }
   return csv;
 }
@@ -74,7 +79,8 @@ std::string oblique_csv(const std::vector<ObliqueImpact>& impacts) {
 }
 
 MawModel maw_model(const ObliqueSetup& setup) {
-  return {setup.tangential.kind, sticking_limit_restitution(setup)};
+  StickingLimit limit = sticking_limit_restitution(setup);
+  return {setup.tangential.kind, limit.tangential_restitution, std::move(limit.failure)};
 }
 
 std::vector<std::string> maw_plot_arguments(const ObliqueSetup& setup, double normal_restitution,
@@ -87,11 +93,19 @@ std::vector<std::string> maw_plot_arguments(const ObliqueSetup& setup, double no
   return arguments;
 }
 
-std::string plot_maw(const ObliqueSetup& setup, double normal_restitution, const std::filesystem::path& csv,
-                     const std::filesystem::path& image, const std::vector<std::string>& formats) {
-  if (!(setup.tangential.friction > 0.0)) return "no plot: Maw's diagram needs friction > 0";
-  return run_plot_script("oblique_maw", csv, image,
-                         maw_plot_arguments(setup, normal_restitution, {maw_model(setup)}), formats);
+double first_solved_restitution(const std::vector<ObliqueImpact>& impacts) {
+  const auto solved =
+      std::find_if(impacts.begin(), impacts.end(), [](const ObliqueImpact& i) { return i.solved(); });
+  return solved == impacts.end() ? std::nan("") : solved->result.normal_restitution;
+}
+
+std::string plot_maw(const ObliqueSetup& setup, const MawModel& model, double normal_restitution,
+                     const std::filesystem::path& csv, const std::filesystem::path& image,
+                     const std::vector<std::string>& formats) {
+  if (!(setup.tangential.friction > 0.0)) return "Maw's diagram needs friction > 0";
+  if (std::isnan(normal_restitution)) return "no impact was solved";
+  return run_plot_script("oblique_maw", csv, image, maw_plot_arguments(setup, normal_restitution, {model}),
+                         formats);
 }
 
 }  // namespace restitution::cli

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 
+#include "cli/common/parse_errors.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 
@@ -21,11 +22,11 @@ ObliqueInputs inputs_of(const scene::Scene& scene, const scene::ObliqueTask& tas
   const Material& m = scene.materials.at(task.material);
   ObliqueInputs in;
   in.material = m;
-  // The material's dissipation when it has one (A, or the viscosities' A); elastic otherwise.
-  if (m.dissipative_constant_s || m.viscosities) {
-    in.dissipative_constant_s = material_constants(m).dissipative_constant_s;
-  }
+  // The material's dissipation (A, or the viscosities' A; the section's reader requires one).
+  in.dissipative_constant_s = material_constants(m).dissipative_constant_s;
   in.wall = task.wall;
+  in.wall_young_modulus_pa = task.wall_young_modulus_pa;
+  in.wall_poisson_ratio = task.wall_poisson_ratio;
   in.fixed_normal = task.fixed_normal;
   in.tangential = model;
   // The mindlin family's k_t is in N/m² (mindlin, mindlin_rescale, mindlin/force, mindlin_rescale/force).
@@ -42,8 +43,9 @@ ObliqueInputs inputs_of(const scene::Scene& scene, const scene::ObliqueTask& tas
   return in;
 }
 
-// One sentence per model: e_t's range, how many impacts slide, the sticking limit.
-std::string model_summary(const ObliqueModelRun& run) {
+// One sentence per model: e_t's range, how many impacts slide, the sticking limit where it was computed (the
+// plot's reference: not with plot = false), the impacts that failed.
+std::string model_summary(const ObliqueModelRun& run, bool sticking_limit) {
   double lowest = std::numeric_limits<double>::infinity();
   double highest = -std::numeric_limits<double>::infinity();
   std::size_t sliding = 0;
@@ -55,14 +57,25 @@ std::string model_summary(const ObliqueModelRun& run) {
     }
     // With damping the contact sticks for its first instants (the damping's part of the cap): "sliding" is
     // sliding for 99 % of the contact.
-    if (i.result.slip_time_s >= 0.99 * i.result.contact_time_s) ++sliding;
+    if (i.solved() && i.result.slip_time_s >= 0.99 * i.result.contact_time_s) ++sliding;
+  }
+  std::string limit;
+  if (sticking_limit) {
+    limit = run.maw.sticking_failure.empty()
+                ? fmt::format("; sticking limit e_t(μ → ∞) = {:.6g}", run.maw.sticking_restitution)
+                : fmt::format("; sticking limit not computed ({})", one_line(run.maw.sticking_failure));
+  }
+  std::string failures;
+  for (const ObliqueImpact& i : run.impacts) {
+    if (!i.solved()) {
+      failures += fmt::format(" Not solved (status failed in the CSV) at {:g}°, spin {:g} rad/s: {}.",
+                              i.angle_deg, i.initial_spin_rad_s, one_line(i.failure));
+    }
   }
   return fmt::format(
-      "* {}: e_t from {:.6g} to {:.6g}; {} of {} impacts slide for at least 99 % of the contact; sticking "
-      "limit e_t(μ → ∞) = "
-      "{:.6g}.\n",
-      tangential_name(run.setup.tangential.kind), lowest, highest, sliding, run.impacts.size(),
-      run.maw.sticking_restitution);
+      "* {}: e_t from {:.6g} to {:.6g}; {} of {} impacts slide for at least 99 % of the contact{}.{}\n",
+      tangential_name(run.setup.tangential.kind), lowest, highest, sliding, run.impacts.size(), limit,
+      failures);
 }
 
 }  // namespace
@@ -70,12 +83,14 @@ std::string model_summary(const ObliqueModelRun& run) {
 ObliqueSection oblique_section(const scene::Scene& scene, const scene::ObliqueTask& task) {
   ObliqueSection s;
   s.csv = oblique_csv_header_with_model() + "\n";
+  const bool plotted = task.plot && task.friction > 0.0;
   try {
     for (const std::string& model : task.models) {
       ObliqueModelRun run;
       run.setup = oblique_setup(inputs_of(scene, task, model), ArgumentStyle::keyword);
       run.impacts = oblique_sweep(run.setup);
-      run.maw = maw_model(run.setup);
+      // The sticking limit is the plot's reference: computed only where there is a plot.
+      run.maw = plotted ? maw_model(run.setup) : MawModel{run.setup.tangential.kind, std::nan(""), ""};
       s.csv += oblique_csv_rows(run.impacts, tangential_name(run.setup.tangential.kind));
       s.runs.push_back(std::move(run));
     }
@@ -83,21 +98,36 @@ ObliqueSection oblique_section(const scene::Scene& scene, const scene::ObliqueTa
     throw InvalidInput(fmt::format("{}: oblique \"{}\": {}", scene.file_name, task.name, e.what()));
   }
   const ObliqueModelRun& first = s.runs.front();
-  const double eps = first.impacts.front().result.normal_restitution;
-  if (task.plot && task.friction > 0.0) {
+  const double eps = first_solved_restitution(first.impacts);
+  if (plotted && !std::isnan(eps)) {
     std::vector<MawModel> models;
     for (const ObliqueModelRun& run : s.runs) models.push_back(run.maw);
     s.plot_args = maw_plot_arguments(first.setup, eps, models);
   }
+  // ε depends on the normal speed v cos θ: its range over the angles, at the section's end; the plot's
+  // gross-slip line takes the first solved impact's.
+  double eps_low = HUGE_VAL;
+  double eps_high = -HUGE_VAL;
+  for (const ObliqueImpact& i : first.impacts) {
+    if (!i.solved()) continue;
+    eps_low = std::min(eps_low, i.result.normal_restitution);
+    eps_high = std::max(eps_high, i.result.normal_restitution);
+  }
+  const std::string wall = !task.wall ? "two spheres"
+                           : first.setup.rigid_wall
+                               ? "a sphere on a rigid wall"
+                               : fmt::format("a sphere on a wall of Y = {:g} Pa, ν = {:g}",
+                                             *task.wall_young_modulus_pa, *task.wall_poisson_ratio);
   s.markdown = fmt::format(
       "Oblique impacts (docs/oblique.md) of {} of [materials.{}] at {:g} m/s, μ = {:g}, {} angle(s) from "
-      "{:g}° to "
-      "{:g}°, {} initial spin(s); ε = {:.10g}, Maw's χ = {:.6g} (gross slip: ψ₂ = ψ₁ − 2(1 + ε)χ).\n\n",
-      task.wall ? "a sphere on a wall" : "two spheres", task.material, task.speed_m_s, task.friction,
-      task.angles_deg.size(), *std::min_element(task.angles_deg.begin(), task.angles_deg.end()),
-      *std::max_element(task.angles_deg.begin(), task.angles_deg.end()), task.spins_rad_s.size(), eps,
-      maw_chi(first.setup));
-  for (const ObliqueModelRun& run : s.runs) s.markdown += model_summary(run);
+      "{}° to {}°, {} initial spin(s); normal restitution ε (head-on at the normal speed v cos θ, {} end) "
+      "from {:.10g} to {:.10g}; Maw's χ = {:.6g} (gross slip: ψ₂ = ψ₁ − 2(1 + ε)χ, drawn with ε = {:.10g} of "
+      "the first impact).\n\n",
+      wall, task.material, task.speed_m_s, task.friction, task.angles_deg.size(),
+      *std::min_element(task.angles_deg.begin(), task.angles_deg.end()),
+      *std::max_element(task.angles_deg.begin(), task.angles_deg.end()), task.spins_rad_s.size(), task.end,
+      eps_low, eps_high, maw_chi(first.setup), eps);
+  for (const ObliqueModelRun& run : s.runs) s.markdown += model_summary(run, plotted);
   s.markdown += fmt::format("\nEvery impact is a row of `{}.csv`.\n\n", task.name);
   return s;
 }

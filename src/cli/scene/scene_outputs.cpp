@@ -379,6 +379,15 @@ class SceneWriter {
     const scene::ObliqueTask& task = scene_.obliques[i];
     const ObliqueSection section = oblique_section(scene_, task);
     write_file(task.name + ".csv", section.csv);
+    for (const ObliqueModelRun& run : section.runs) {
+      if (const std::size_t failed = oblique::failed_count(run.impacts); failed > 0) {
+        out_.warnings.push_back(
+            fmt::format("{}: {} of {} impacts of {} failed (status failed in {}.csv; the "
+                        "report says why)",
+                        task.name, failed, run.impacts.size(),
+                        oblique::tangential_name(run.setup.tangential.kind), task.name));
+      }
+    }
     report_ += fmt::format("## {}\n\n", task.title);
     if (!section.plot_args.empty()) report_ += plot("oblique_maw", task.name, section.plot_args);
     report_ += section.markdown;
