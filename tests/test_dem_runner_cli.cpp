@@ -22,6 +22,7 @@ using restitution::test_support::slurp;
 using restitution::test_support::TempFolder;
 
 const char* const kScene = R"(title = "fake lmp"
+output = "out"
 [materials.steel]
 young_modulus = 2.1e11
 poisson_ratio = 0.3

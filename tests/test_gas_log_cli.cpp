@@ -194,8 +194,10 @@ TEST(GasLogCli, OnlyARegularFileIsRead) {
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   // Bounded: a reader that opens the FIFO waits for a writer forever.
   const pid_t pid =
-      spawn_cli({"gas", "--radius", "0.005", "--density", "920", "--young-modulus", "1e8", "--poisson-ratio",
-                 "0.4", "--eps", "0.8", "--velocity", "2", "--compare", fifo.string()},
+      spawn_cli({"gas", "--radius",           "0.005",      "--density",   "920", "--young-modulus",
+                 "1e8", "--poisson-ratio",    "0.4",        "--eps",       "0.8", "--velocity",
+                 "2",   "--packing-fraction", "0.1",        "--rms-speed", "1",   "--haff-times",
+                 "30",  "--compare",          fifo.string()},
                 folder.path / "err");
   int raw = 0;
   for (int i = 0; i < 600 && waitpid(pid, &raw, WNOHANG) == 0; ++i)
