@@ -173,17 +173,28 @@ TEST(GasDeck, WarnsWhereTheConstantEpsGasClusters) {
 }
 
 TEST(GasLog, ReadsTheTaggedLinesOnly) {
+  const std::string setup =
+      " end=delayed-recovery diameter_m=0.01 mass_kg=0.0004817108736 young_modulus_pa=100000000 "
+      "poisson_ratio=0.4 dissipative_constant_s=1e-05 packing_fraction=0.1 "
+      "initial_temperature_j=0.0004817108736\n";
   const std::string log =
       "print \"restitution-gas law=viscoelastic time_s=$(time) ...\"\n"
+      "restitution-gas-setup law=viscoelastic" +
+      setup +
       "restitution-gas law=viscoelastic time_s=0 temperature_j=2 timestep_s=1e-6 step=0\n"
+      "restitution-gas-setup law=constant-eps" +
+      setup +
       "restitution-gas law=constant-eps time_s=0 temperature_j=2 timestep_s=1e-6 step=0\n"
       "restitution-gas law=viscoelastic time_s=1 temperature_j=0.5 timestep_s=1e-6 step=10\n"
       "restitution-gas law=viscoelastic time_s=10 temperature_j=0.005 timestep_s=1e-6 step=100\n";
-  const auto curves = gd::read_gas_log(log, "log");
-  ASSERT_EQ(curves.size(), 2U);
-  EXPECT_EQ(curves[0].law, "viscoelastic");
-  EXPECT_EQ(curves[0].time_s, (std::vector<double>{0, 1, 10}));
-  const auto e = gd::local_exponent(curves[0].time_s, curves[0].temperature_j);
+  const auto read = gd::read_gas_log(log, "log");
+  ASSERT_EQ(read.curves.size(), 2U);
+  EXPECT_TRUE(read.notes.empty());
+  EXPECT_EQ(read.curves[0].law, "viscoelastic");
+  EXPECT_EQ(read.curves[0].time_s, (std::vector<double>{0, 1, 10}));
+  EXPECT_EQ(read.curves[0].line, (std::vector<std::size_t>{3, 6, 7}));
+  EXPECT_EQ(read.curves[1].setup.packing_fraction, 0.1);
+  const auto e = gd::local_exponent(read.curves[0].time_s, read.curves[0].temperature_j);
   ASSERT_EQ(e.exponent.size(), 1U);
   EXPECT_DOUBLE_EQ(e.exponent[0], -2.0);
   EXPECT_THROW(gd::read_gas_log("restitution-gas law=x time_s=1 temperature_j=-1\n", "log"),

@@ -53,7 +53,7 @@ TEST(GasDeckCli, ComparesALogWithTheTheory) {
 
 TEST(GasDeckCli, BadRequestsExitWithTheirCode) {
   TempFolder folder;
-  EXPECT_EQ(run_cli(kGas + "--compare " + (folder.path / "missing.log").string()).status, 3);
+  EXPECT_EQ(run_cli(kGas + "--compare " + (folder.path / "missing.log").string()).status, 2);
   std::ofstream(folder.path / "empty.log") << "nothing here\n";
   EXPECT_EQ(run_cli(kGas + "--compare " + (folder.path / "empty.log").string()).status, 2);
   EXPECT_EQ(run_cli(kGas + "--particles 1 --deck " + (folder.path / "d.in").string()).status, 2);

@@ -2,11 +2,13 @@
 #include "dem/code_runner.hpp"
 
 #include <fmt/core.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "dem/check_deck_codes.hpp"
 #include "dem/process_output.hpp"
@@ -43,12 +45,18 @@ std::string deck_text(const CheckDeckRequest& r, const PassOptions& options) {
   return d + options.after_run;
 }
 
-DemRun run_deck(const std::string& program, const std::string& deck, std::size_t rows) {
-  DemRun run;
-  run.output = output_with_input_file(deck, "", [&](const std::string& path) {
-    return fmt::format("{} -in {} -log none -echo none 2>&1", program, path);
+DemRun run_deck(const std::string& program, const std::vector<std::string>& launcher, const std::string& deck,
+                std::size_t rows) {
+  ChildRun ran = output_with_input_file(deck, "", [&](const std::string& path) {
+    std::vector<std::string> command = launcher;
+    command.insert(command.end(), {program, "-in", path, "-log", "none", "-echo", "none"});
+    return command;
   });
-  TaggedEps read = tagged_eps(run.output, "EPS", rows);
+  TaggedEps read = tagged_eps(ran.output, "EPS", rows);
+  DemRun run;
+  run.failure = code_run_failure(ran, program, read);
+  run.exited_ok = child_succeeded(ran.status);
+  run.output = std::move(ran.output);
   run.eps = std::move(read.eps);
   run.gap_m = std::move(read.gap_m);
   return run;
@@ -70,12 +78,13 @@ DemRun run_dem_code(const std::string& program, const Deck& deck, const Pair& pa
   r.lines = deck.lines;
   r.speeds_m_s = speeds;
   r.pairs = {{1, 1, pair, {}}};
-  return run_type_pairs(program, r, {steps_per_time, "", ""});
+  return run_type_pairs(program, r, {steps_per_time, "", "", {}});
 }
 
 DemRun run_type_pairs(const std::string& program, const CheckDeckRequest& request,
                       const PassOptions& options) {
-  return run_deck(program, deck_text(request, options), request.pairs.size() * request.speeds_m_s.size());
+  return run_deck(program, options.launcher, deck_text(request, options),
+                  request.pairs.size() * request.speeds_m_s.size());
 }
 
 DemMeasurement measure_type_pairs(const std::string& program, const CheckDeckRequest& request,
@@ -97,6 +106,8 @@ DemMeasurement richardson(const DemRun& coarse, const DemRun& fine) {
   m.fine = fine.eps;
   m.gap_m = fine.gap_m;
   m.output = fine.output;
+  m.failure = !coarse.failure.empty() ? coarse.failure : fine.failure;
+  m.exited_ok = coarse.exited_ok && fine.exited_ok;
   for (std::size_t i = 0; i < fine.eps.size(); ++i)
     m.extrapolated.push_back((10.0 * fine.eps[i] - coarse.eps[i]) / 9.0);
   return m;

@@ -20,6 +20,8 @@ struct DemRun {
   std::vector<double> eps;    // per speed; NaN where the code printed none
   std::vector<double> gap_m;  // distance between the surfaces at the end (> 0: the collision is over)
   std::string output;         // the program's output, for diagnostics
+  std::string failure;        // "" when the code exited 0 and printed every ε; else what went wrong
+  bool exited_ok = false;     // the code exited with status 0 (it may still have missed some ε)
 };
 
 // One deck with a pair of touching spheres per speed [m/s] (20 radii apart), closing along x, time step
@@ -30,13 +32,15 @@ DemRun run_dem_code(const std::string& program, const Deck& deck, const Pair& pa
 
 // Several atom types: the first pass of the check deck of `request` (every type pair at every speed, a row
 // each, pair by pair and speed by speed; dem/check_deck_codes.hpp) at n = steps_per_time, printing "EPS row
-// eps gap" per row. `program` may be an MPI launcher with the code ("mpirun -np 2 lmp"); `processors` is
-// LAMMPS' processor grid set before the box ("2 1 1": the first sphere of every row, at x < 0, on rank 0, the
-// second on rank 1), "" for none; `after_run` is appended to the deck (e.g. a write_dump).
+// eps gap" per row. `program` is the code's executable (one argument, run without a shell); `launcher` goes
+// before it (an MPI launcher: {"mpirun", "-np", "2"}); `processors` is LAMMPS' processor grid set before the
+// box ("2 1 1": the first sphere of every row, at x < 0, on rank 0, the second on rank 1), "" for none;
+// `after_run` is appended to the deck (e.g. a write_dump).
 struct PassOptions {
   int steps_per_time = 2000;
   std::string processors;
   std::string after_run;
+  std::vector<std::string> launcher;
 };
 DemRun run_type_pairs(const std::string& program, const CheckDeckRequest& request,
                       const PassOptions& options);
@@ -47,6 +51,8 @@ struct DemMeasurement {
   std::vector<double> coarse, fine, extrapolated;
   std::vector<double> gap_m;  // of the fine run
   std::string output;         // of the fine run
+  std::string failure;        // "" when both runs succeeded (DemRun::failure), else the first failure
+  bool exited_ok = false;     // both runs exited with status 0
 };
 // The extrapolation of a coarse and a fine run (dt ten times smaller), for any code run this way.
 DemMeasurement richardson(const DemRun& coarse, const DemRun& fine);

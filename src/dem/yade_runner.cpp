@@ -14,12 +14,16 @@ namespace {
 
 DemRun run_yade(const std::string& program, const Deck& deck, const Pair& pair,
                 const std::vector<double>& speeds, int steps_per_time) {
-  DemRun run;
-  run.output = output_with_input_file(
-      yade_script(deck, pair, speeds, steps_per_time), ".py",
-      [&](const std::string& path) { return fmt::format("{} -n -x {} 2>&1", program, path); });
+  ChildRun ran = output_with_input_file(yade_script(deck, pair, speeds, steps_per_time), ".py",
+                                        [&](const std::string& path) {
+                                          return std::vector<std::string>{program, "-n", "-x", path};
+                                        });
   // yade prints banners and warnings: only the script's own lines count.
-  TaggedEps read = tagged_eps(run.output, "RESTITUTION_EPS", speeds.size());
+  TaggedEps read = tagged_eps(ran.output, "RESTITUTION_EPS", speeds.size());
+  DemRun run;
+  run.failure = code_run_failure(ran, program, read);
+  run.exited_ok = child_succeeded(ran.status);
+  run.output = std::move(ran.output);
   run.eps = std::move(read.eps);
   run.gap_m = std::move(read.gap_m);
   return run;

@@ -62,6 +62,7 @@ GasSetup gas_setup(const GasDeckRequest& request) {
   // The companion's ε: the law's at the calibration speed (1 m/s when A is given), as the deck's.
   const double v = request.damping.velocity_m_s.value_or(1.0);
   s.constant_eps = dem::eps_for(hertz_constants(k, a).beta, v, request.end, request.tolerance, solver);
+  s.log = gas_log_setup(request, a, "");
   return s;
 }
 
@@ -106,6 +107,7 @@ GasComparison compare_with_theory(const GasSetup& setup, const std::vector<Cooli
       xx += x * x;
     }
     g.collision_rate_factor = xy / xx;
+    g.collision_rate_factor_measured = true;
   }
   for (const auto& c : curves) {
     const Split s = split(c);

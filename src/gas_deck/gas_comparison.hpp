@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gas_deck/gas_log.hpp"
+#include "gas_deck/gas_log_setup.hpp"
 #include "gas_deck/lammps_gas_deck.hpp"
 #include "restitution_gas/cooling.hpp"
 
@@ -21,6 +22,7 @@ struct GasSetup {
   gas::GasParticles particles;
   gas::ImpactLaw law;         // the viscoelastic law of the deck
   double constant_eps = 0.0;  // the companion's ε
+  GasLogSetup log;            // what the deck's setup line says of this gas (its `law` left empty)
 };
 
 struct RunComparison {
@@ -36,7 +38,8 @@ struct RunComparison {
 };
 
 struct GasComparison {
-  double collision_rate_factor = 1.0;  // measured on the constant-ε run (1 without one)
+  double collision_rate_factor = 1.0;           // measured on the constant-ε run (1 without one)
+  bool collision_rate_factor_measured = false;  // a constant-ε run was given
   std::vector<RunComparison> runs;
 };
 

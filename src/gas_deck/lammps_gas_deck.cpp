@@ -15,6 +15,7 @@
 #include "dem/deck_notes.hpp"
 #include "dem/integrator_eps.hpp"
 #include "gas_deck/cooling_scales.hpp"
+#include "gas_deck/gas_log_setup.hpp"
 #include "gas_deck/placement.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
@@ -115,7 +116,8 @@ std::string data_file(const GasDeck& g, const std::vector<Vec3>& x, const std::v
 
 std::string input(const GasDeck& g, dem::Code code, std::string_view law,
                   const std::vector<std::string>& header, const std::vector<std::string>& prerequisites,
-                  const std::vector<std::string>& lines, const std::string& data_file_name) {
+                  const std::vector<std::string>& lines, const std::string& data_file_name,
+                  const std::string& setup_line) {
   std::string d;
   for (const auto& h : header) d += "# " + h + "\n";
   for (const auto& p : prerequisites) d += p + "\n";
@@ -135,6 +137,8 @@ std::string input(const GasDeck& g, dem::Code code, std::string_view law,
   const std::string print =
       fmt::format("print \"{} law={} time_s={} temperature_j={} timestep_s={} step={}\"\n", kGasTag, law,
                   idioms.time, idioms.temperature, idioms.timestep, idioms.step);
+  // The gas of this run, before its first print: --compare checks a log against the command's gas.
+  d += "print \"" + setup_line + "\"\n";
   d += "timestep ${dt0}\nrun 0\n" + print;
   for (double t : g.print_times_s) {
     // dt grows as the contact duration does, T^(-1/10); each block runs to the next scheduled time.
@@ -260,7 +264,8 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
   law_header.insert(law_header.begin(), fmt::format("viscoelastic Hertz law, A = {:.10g} s ({} end)",
                                                     g.dissipative_constant_s, end_name(r.end)));
   g.law_input =
-      input(g, r.code, "viscoelastic", law_header, law.deck.prerequisites, law.deck.lines, data_file_name);
+      input(g, r.code, "viscoelastic", law_header, law.deck.prerequisites, law.deck.lines, data_file_name,
+            gas_log_setup_line(gas_log_setup(r, g.dissipative_constant_s, "viscoelastic")));
   std::vector<std::string> companion_header = header;
   companion_header.insert(
       companion_header.begin(),
@@ -268,8 +273,9 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
                   "law's eps at {} m/s)",
                   r.code == dem::Code::lammps ? "damping tsuji" : "model hertz coefficientRestitution",
                   companion.eps_to_request, companion.eps, companion.velocity_m_s));
-  g.constant_eps_input = input(g, r.code, "constant-eps", companion_header, law.deck.prerequisites,
-                               companion.lines, data_file_name);
+  g.constant_eps_input =
+      input(g, r.code, "constant-eps", companion_header, law.deck.prerequisites, companion.lines,
+            data_file_name, gas_log_setup_line(gas_log_setup(r, g.dissipative_constant_s, "constant-eps")));
   return g;
 }
 

@@ -70,13 +70,13 @@ TEST(GasDeckLammps, CoolsAsTheTheorySaysSeriallyAndOnTwoRanks) {
       timed_run(in + "mpirun --allow-run-as-root --oversubscribe -np 2 lmp -log none -in gas.in");
 
   const gd::GasSetup setup = gd::gas_setup(request);
-  const auto both = gd::read_gas_log(serial.output + constant.output, "serial runs");
+  const auto both = gd::read_gas_log(serial.output + constant.output, "serial runs").curves;
   ASSERT_EQ(both.size(), 2U) << serial.output.substr(serial.output.size() > 2000 ? serial.output.size() - 2000
                                                                                  : 0);
   const gd::GasComparison c = gd::compare_with_theory(setup, both);
   const auto& visco = run_of(c, "viscoelastic");
   const auto& haff = run_of(c, "constant-eps");
-  const auto mpi_curves = gd::read_gas_log(mpi.output, "mpirun -np 2");
+  const auto mpi_curves = gd::read_gas_log(mpi.output, "mpirun -np 2").curves;
   ASSERT_EQ(mpi_curves.size(), 1U) << mpi.output.substr(mpi.output.size() > 2000 ? mpi.output.size() - 2000
                                                                                  : 0);
   // The MPI run against the same theory, with the factor of the serial companion.

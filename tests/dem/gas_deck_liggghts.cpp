@@ -54,7 +54,7 @@ TEST(GasDeckLiggghts, CoolsAsTheTheorySays) {
   const TimedRun constant_run = companion.get();
   const double cpu_s = children_cpu_s() - cpu_before;
 
-  const auto curves = gd::read_gas_log(visco_run.output + constant_run.output, "liggghts runs");
+  const auto curves = gd::read_gas_log(visco_run.output + constant_run.output, "liggghts runs").curves;
   ASSERT_EQ(curves.size(), 2U) << visco_run.output.substr(
       visco_run.output.size() > 2000 ? visco_run.output.size() - 2000 : 0);
   const gd::GasComparison c = gd::compare_with_theory(gd::gas_setup(request), curves);

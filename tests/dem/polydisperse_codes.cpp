@@ -109,7 +109,7 @@ TEST_P(Polydisperse, EveryTypePairReproducesRestitutionsEps) {
   ASSERT_EQ(out.at("pairs").size(), 6U);
   Deck d = deck_of(out, code);
   ASSERT_EQ(d.predicted.size(), 18U);
-  const dem::DemMeasurement m = dem::measure_type_pairs(program, d.request, {2000, "", ""});
+  const dem::DemMeasurement m = dem::measure_type_pairs(program, d.request, {2000, "", "", {}});
   double worst = 0.0;
   for (std::size_t i = 0; i < d.predicted.size(); ++i) {
     ASSERT_TRUE(std::isfinite(m.coarse[i]) && std::isfinite(m.fine[i]))
@@ -176,11 +176,13 @@ TEST(PolydisperseMpi, TwoRanksGiveTheSerialEps) {
       std::filesystem::temp_directory_path() / ("restitution-mpi-" + std::to_string(::getpid()));
   std::filesystem::create_directories(folder);
   const auto owners = folder / "owners.txt";
-  const dem::DemRun serial = dem::run_type_pairs(lmp, d.request, {2000, "", ""});
+  const dem::DemRun serial = dem::run_type_pairs(lmp, d.request, {2000, "", "", {}});
   // Split at x = 0: rank 0 owns every collision's first sphere, rank 1 its second.
-  const dem::PassOptions two_ranks{2000, "2 1 1", "write_dump all custom " + owners.string() + " id proc\n"};
-  const dem::DemRun parallel =
-      dem::run_type_pairs("mpirun --allow-run-as-root --oversubscribe -np 2 " + lmp, d.request, two_ranks);
+  const dem::PassOptions two_ranks{2000,
+                                   "2 1 1",
+                                   "write_dump all custom " + owners.string() + " id proc\n",
+                                   {"mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2"}};
+  const dem::DemRun parallel = dem::run_type_pairs(lmp, d.request, two_ranks);
   EXPECT_EQ(owner_ranks(owners), (std::set<int>{0, 1})) << parallel.output;
   EXPECT_NE(parallel.output.find("2 by 1 by 1 MPI processor grid"), std::string::npos) << parallel.output;
   double worst = 0.0;

@@ -78,8 +78,10 @@ TEST(TimestepLammps, ReportedEpsErrorIsTheOneLammpsMakes) {
   const double mean_reported = reported.at("mean_eps_error").get<double>();
   const double worst_reported = reported.at("worst_eps_error").get<double>();
 
-  const std::string out = restitution::dem::output_with_input_file(
-      phase_deck(dem), ".in", [&](const std::string& path) { return program + " -log none -in " + path; });
+  const std::string out =
+      restitution::dem::output_with_input_file(phase_deck(dem), ".in", [&](const std::string& path) {
+        return std::vector<std::string>{program, "-log", "none", "-in", path};
+      }).output;
   const auto measured = restitution::dem::tagged_eps(out, "PHASE", kPhases);
   double mean = 0.0;
   double worst = 0.0;

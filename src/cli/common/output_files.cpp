@@ -1,22 +1,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "cli/common/output_files.hpp"
 
-#include <fcntl.h>
 #include <fmt/core.h>
-#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <csignal>
 
 #include <cerrno>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <system_error>
-#include <thread>
 
+#include "child_process/child_process.hpp"
 #include "cli/common/io_error.hpp"
 #include "cli/common/resource_root.hpp"
 #include "cli/common/stop_signals.hpp"
@@ -41,39 +38,12 @@ fs::path scripts_folder() {
   return chosen != nullptr ? fs::path(chosen) : resource_root() / "scripts";
 }
 
-// Runs the program (no shell: nothing to quote) with stdout and stderr into /dev/null and waits for it.
-// The child never outlives this process: the kernel sends it SIGKILL when this process dies, SIGKILL
-// included (PR_SET_PDEATHSIG), and it gets SIGTERM when this process is asked to stop (SIGINT or SIGTERM to
-// this process alone; Ctrl-C reaches the whole process group anyway). Returns its wait status, -1 when it
-// could not be started.
+// Runs the program (no shell: nothing to quote) with its output discarded and waits for it; it gets SIGTERM
+// when this process is asked to stop (SIGINT or SIGTERM to this process alone; Ctrl-C reaches the whole
+// process group anyway) and never outlives it (child_process/child_process.hpp). Returns its wait status, -1
+// when it could not be started.
 int run_quietly(const std::vector<std::string>& command) {
-  std::vector<char*> argv;
-  for (const std::string& a : command) argv.push_back(const_cast<char*>(a.c_str()));  // NOLINT: POSIX API
-  argv.push_back(nullptr);
-  const pid_t parent = getpid();
-  const pid_t child = fork();
-  if (child < 0) return -1;
-  if (child == 0) {
-    // Only async-signal-safe calls from here to exec: other threads of this process may hold locks.
-    // getppid() closes the race of a parent that died before prctl: no signal would ever come.
-    if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent) _exit(127);
-    const int null = open("/dev/null", O_WRONLY);
-    if (null < 0 || dup2(null, STDOUT_FILENO) < 0 || dup2(null, STDERR_FILENO) < 0) _exit(127);
-    execvp(argv[0], argv.data());
-    _exit(127);
-  }
-  int status = 0;
-  for (bool stopping = false;;) {
-    const pid_t done = waitpid(child, &status, stopping ? 0 : WNOHANG);
-    if (done == child) return status;
-    if (done < 0 && errno != EINTR) return -1;
-    if (!stopping && stop_signal_received() != 0) {
-      kill(child, SIGTERM);
-      stopping = true;
-    } else if (!stopping) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));  // the signal flag is polled
-    }
-  }
+  return run_child(command, ChildOutput::discard, [] { return stop_signal_received() != 0; }).status;
 }
 
 // A child killed by SIGINT or SIGTERM was stopped by the user (Ctrl-C reaches the whole process group), as

@@ -4,8 +4,7 @@
 #include <fmt/core.h>
 #include <fmt/ranges.h>
 
-#include <fstream>
-#include <sstream>
+#include <cstdio>
 
 #include "cli/common/output_files.hpp"
 #include "restitution/errors.hpp"
@@ -17,12 +16,10 @@ namespace restitution::cli {
 gas_deck::GasComparison compare_logs(const std::vector<std::string>& logs, const gas_deck::GasSetup& setup) {
   std::vector<gas_deck::CoolingCurve> curves;
   for (const auto& log : logs) {
-    std::ifstream in(log);
-    if (!in) throw IoError(fmt::format("--compare: cannot read {}", log));
-    std::stringstream text;
-    text << in.rdbuf();
-    auto read = gas_deck::read_gas_log(text.str(), log);
-    curves.insert(curves.end(), read.begin(), read.end());
+    gas_deck::GasLog read = gas_deck::read_gas_log_file(log);
+    for (const auto& note : read.notes) fmt::print(stderr, "restitution: note: {}\n", note);
+    for (const auto& curve : read.curves) gas_deck::check_gas_log_setup(curve.setup, setup.log, log);
+    curves.insert(curves.end(), read.curves.begin(), read.curves.end());
   }
   if (curves.empty()) {
     throw InvalidInput(fmt::format("--compare: no {} lines in {} (the output of a deck of gas --deck)",
@@ -32,8 +29,13 @@ gas_deck::GasComparison compare_logs(const std::vector<std::string>& logs, const
 }
 
 void print_comparison_text(const gas_deck::GasComparison& c) {
-  fmt::print("# collision-rate factor measured on the constant-eps run (Haff fit): {:.6g}\n",
-             c.collision_rate_factor);
+  if (c.collision_rate_factor_measured) {
+    fmt::print("# collision-rate factor measured on the constant-eps run (Haff fit): {:.6g}\n",
+               c.collision_rate_factor);
+  } else {
+    fmt::print("# collision-rate factor {:.6g}: Enskog's rate (no constant-eps run given to measure it)\n",
+               c.collision_rate_factor);
+  }
   fmt::print("{:<40} {:>14} {:>10} {:>13} {:>15}\n", "run", "max_rel_dev", "tau0", "late_exponent",
              "theory_late");
   for (const auto& r : c.runs) {
@@ -44,6 +46,7 @@ void print_comparison_text(const gas_deck::GasComparison& c) {
 
 void write_comparison_json(JsonWriter& json, const gas_deck::GasComparison& c) {
   json.field("collision_rate_factor", c.collision_rate_factor);
+  json.field("collision_rate_factor_measured", c.collision_rate_factor_measured);
   json.key("runs").begin_array();
   for (const auto& r : c.runs) {
     json.begin_object().field("run", r.run).field("law", r.law);

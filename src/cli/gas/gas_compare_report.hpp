@@ -13,7 +13,9 @@
 
 namespace restitution::cli {
 
-// Reads every log (IoError naming one that cannot be read; InvalidInput when none holds a deck's lines).
+// Reads every log, streamed (gas_deck::read_gas_log_file), printing its notes on stderr, and checks that each
+// run belongs to `setup`: InvalidInput for a missing log, one that is not a regular file, a garbled one, one
+// of another gas (naming the field) or when none holds a deck's lines; IoError for one that cannot be read.
 gas_deck::GasComparison compare_logs(const std::vector<std::string>& logs, const gas_deck::GasSetup& setup);
 
 void print_comparison_text(const gas_deck::GasComparison& c);

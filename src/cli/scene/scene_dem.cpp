@@ -3,6 +3,8 @@
 
 #include <fmt/core.h>
 
+#include <cmath>
+
 #include <string_view>
 
 #include "damping_check/yade_version_lines.hpp"
@@ -74,12 +76,28 @@ DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task) {
   const std::vector<double>& predicted = c.predicted_eps;
   const bool ran = c.measured.has_value();
   const std::string measured_column = fmt::format("eps_{}", dem::code_name(code));
-  s.csv = ran ? fmt::format("velocity_m_s,eps_restitution,{},rel_diff\n", measured_column)
+  s.code_run = ran                                 ? (c.measured->failure.empty() ? "ok" : "failed")
+               : task.run_code && entry.scene_runs ? "not installed"
+                                                   : "not asked";
+  if (ran && !c.measured->failure.empty()) {
+    s.code_failure = c.measured->failure;
+    s.warnings.push_back(
+        fmt::format("the {} run failed: {}; the rows marked failed in {}_run have no eps of "
+                    "the code",
+                    entry.name, s.code_failure, dem::code_name(code)));
+  }
+  // A row the code measured: it exited 0 and printed this row's ε.
+  const auto row_ok = [&](std::size_t i) {
+    return c.measured->exited_ok && std::isfinite(c.measured->extrapolated[i]);
+  };
+  s.csv = ran ? fmt::format("velocity_m_s,eps_restitution,{},rel_diff,{}_run\n", measured_column,
+                            dem::code_name(code))
               : "velocity_m_s,eps_restitution\n";
   for (std::size_t i = 0; i < task.speeds.size(); ++i) {
     s.csv += fmt::format("{:.17g},{:.17g}", task.speeds[i], predicted[i]);
     if (ran) {
-      s.csv += fmt::format(",{:.17g},{:.17g}", c.measured->extrapolated[i], c.relative_difference[i]);
+      s.csv += fmt::format(",{:.17g},{:.17g},{}", c.measured->extrapolated[i], c.relative_difference[i],
+                           row_ok(i) ? "ok" : "failed");
     }
     s.csv += "\n";
   }
@@ -113,6 +131,8 @@ DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task) {
     md += "\n";
   }
   md += "\n";
+  if (!s.code_failure.empty())
+    md += fmt::format("**The {} run failed**: {}.\n\n", entry.name, s.code_failure);
   if (ran) {
     md += fmt::format(
         "{} ran the lines above at dt = T/2000 and T/20000 (T the natural time of the fastest collision); "

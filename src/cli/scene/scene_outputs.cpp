@@ -344,6 +344,10 @@ class SceneWriter {
     report_ += plot("scene_xy", task.name, section.plot_args);
     report_ += section.markdown;
     for (auto& w : section.warnings) out_.warnings.push_back(fmt::format("{}: {}", task.name, w));
+    json_.key("dem_" + task.name).begin_object();
+    json_.field("code", dem::code_name(task.code)).field("code_run", section.code_run);
+    if (!section.code_failure.empty()) json_.field("code_failure", section.code_failure);
+    json_.end_object();
   }
 
   void damping_check(std::size_t i) {
