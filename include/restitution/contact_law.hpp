@@ -116,7 +116,9 @@ class EndSet {
     out.bits_ = bits_ | other.bits_;
     return out;
   }
-  constexpr bool operator==(const EndSet& other) const = default;
+  // Written out, not defaulted: the public headers are C++17 (docs/library.md, "C++ standard").
+  [[nodiscard]] constexpr bool operator==(const EndSet& other) const { return bits_ == other.bits_; }
+  [[nodiscard]] constexpr bool operator!=(const EndSet& other) const { return !(*this == other); }
   // The members in the order of kCollisionEnds (for loops over the requested ends).
   [[nodiscard]] std::vector<CollisionEnd> members() const {
     std::vector<CollisionEnd> out;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Closed-form approximations: the 1999 paper's Padé [1/4] and simple theory, the 2011 Padé approximants.
+#include <array>
 #include <cmath>
+#include <span>
 #include <string>
 
 #include "restitution/errors.hpp"

@@ -2,6 +2,7 @@
 // Evaluators of the truncated series, closed forms of the undamped collision, approximation names.
 #include <cmath>
 #include <numbers>
+#include <span>
 
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"
@@ -11,6 +12,10 @@ namespace restitution::series {
 namespace {
 
 using detail::check_zeta;
+
+std::span<const double> as_span(Coefficients coefficients) {
+  return {coefficients.data(), coefficients.size()};
+}
 
 // Σ_{k>=1} coef[k-1] x^k by Horner, no constant term.
 double horner_without_constant(double x, std::span<const double> coef) {
@@ -34,23 +39,25 @@ double undamped_max_compression() {
   return std::pow(1.25, 0.4);
 }
 
-Value naive_series(double zeta, std::span<const double> c) {
+Value naive_series(double zeta, Coefficients c) {
   check_zeta(zeta);
-  const double correction = horner_without_constant(zeta, c);  // ε - 1
+  const double correction = horner_without_constant(zeta, as_span(c));  // ε - 1
   return {1.0 + correction, -correction};
 }
 
-Value delayed_recovery_series(double zeta, std::span<const double> h) {
+Value delayed_recovery_series(double zeta, Coefficients coefficients) {
   check_zeta(zeta);
+  const std::span<const double> h = as_span(coefficients);
   if (h.empty()) throw InvalidInput("the delayed-recovery series needs h_0");
   const double correction = horner_without_constant(std::sqrt(zeta), h.subspan(1));
   return {h[0] + correction, (1.0 - h[0]) - correction};
 }
 
-double power_series(double zeta, std::span<const double> coefficients) {
+double power_series(double zeta, Coefficients coefficients) {
   check_zeta(zeta);
-  if (coefficients.empty()) return 0.0;
-  return coefficients[0] + horner_without_constant(zeta, coefficients.subspan(1));
+  const std::span<const double> coef = as_span(coefficients);
+  if (coef.empty()) return 0.0;
+  return coef[0] + horner_without_constant(zeta, coef.subspan(1));
 }
 
 double implied_large_zeta_exponent(Approximation a) {
