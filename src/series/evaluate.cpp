@@ -45,12 +45,12 @@ Value naive_series(double zeta, Coefficients c) {
   return {1.0 + correction, -correction};
 }
 
-Value delayed_recovery_series(double zeta, Coefficients coefficients) {
+Value delayed_recovery_series(double zeta, Coefficients h) {
   check_zeta(zeta);
-  const std::span<const double> h = as_span(coefficients);
-  if (h.empty()) throw InvalidInput("the delayed-recovery series needs h_0");
-  const double correction = horner_without_constant(std::sqrt(zeta), h.subspan(1));
-  return {h[0] + correction, (1.0 - h[0]) - correction};
+  const std::span<const double> terms = as_span(h);
+  if (terms.empty()) throw InvalidInput("the delayed-recovery series needs h_0");
+  const double correction = horner_without_constant(std::sqrt(zeta), terms.subspan(1));
+  return {terms[0] + correction, (1.0 - terms[0]) - correction};
 }
 
 double power_series(double zeta, Coefficients coefficients) {
