@@ -48,7 +48,7 @@ if [ "$(pkg-config --modversion restitution)" != "$version" ]; then
   echo "pkg-config --modversion restitution: $(pkg-config --modversion restitution), VERSION: $version"
   exit 1
 fi
-# No flag of our own: restitution.pc brings -std=c++20 (g++ 12 defaults to C++17) and every library.
+# No flag of our own: restitution.pc brings every library and no -std, so this is C++17, g++ 12's default.
 # shellcheck disable=SC2046  # pkg-config's output is a list of words
 c++ -o "$work/app_pkgconfig" "$source/examples/cpp/app.cpp" $(pkg-config --cflags --libs restitution)
 # The shared library beside the static one: SONAME librestitution.so.X.Y of the version, restitution's API its
@@ -59,7 +59,7 @@ expected_soname="librestitution.so.$(cut -d. -f1,2 <<<"$version")"
 test -f "$prefix/lib/$soname" || { echo "lib/$soname (the SONAME's link) is not installed"; exit 1; }
 foreign=$(nm -D --defined-only -C "$prefix/lib/librestitution.so" | grep -vE ' (typeinfo( name)? for |vtable for |VTT for |guard variable for )?restitution::' || true)
 [ -z "$foreign" ] || { echo "lib/librestitution.so exports more than restitution's API:"; head <<<"$foreign"; exit 1; }
-c++ -std=c++20 -o "$work/app_shared" "$source/examples/cpp/app.cpp" -I"$prefix/include" -L"$prefix/lib" \
+c++ -std=c++17 -o "$work/app_shared" "$source/examples/cpp/app.cpp" -I"$prefix/include" -L"$prefix/lib" \
   -lrestitution -Wl,-rpath,"$prefix/lib"
 readelf -d "$work/app_shared" | grep -qF "[$soname]" || { echo "app_shared does not load $soname:"; readelf -d "$work/app_shared" | grep NEEDED; exit 1; }
 man_page="$prefix/share/man/man1/restitution.1"

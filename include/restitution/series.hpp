@@ -30,14 +30,14 @@ inline constexpr double kDelayedRecoverySeriesRadius = 1.10;
 // std::vector, a std::array, a C++20 std::span or a pointer and a count. It stands in for std::span<const
 // double> because the public headers are C++17 (docs/library.md, "C++ standard"); the container must outlive
 // the call.
-class Coefficients {
+class CoefficientSpan {
  public:
-  constexpr Coefficients(const double* data, std::size_t size) noexcept : data_(data), size_(size) {}
+  constexpr CoefficientSpan(const double* data, std::size_t size) noexcept : data_(data), size_(size) {}
   template <class Contiguous, class = std::enable_if_t<std::is_convertible_v<
                                   decltype(std::data(std::declval<const Contiguous&>())), const double*>>>
   // NOLINTNEXTLINE(google-explicit-constructor,hicpp-explicit-conversions): stands in for std::span's
   // conversion
-  constexpr Coefficients(const Contiguous& coefficients) noexcept
+  constexpr CoefficientSpan(const Contiguous& coefficients) noexcept
       : data_(std::data(coefficients)), size_(std::size(coefficients)) {}
   [[nodiscard]] constexpr const double* data() const noexcept { return data_; }
   [[nodiscard]] constexpr std::size_t size() const noexcept { return size_; }
@@ -48,11 +48,11 @@ class Coefficients {
 };
 
 // Naive series ε = 1 + Σ_{k=1}^{N} c_k ζ^k; c holds c_1 ... c_N.
-Value naive_series(double zeta, Coefficients c);
+Value naive_series(double zeta, CoefficientSpan c);
 // Delayed-recovery series ε = Σ_{k=0}^{N} h_k ζ^{k/2}; h holds h_0 = 1, h_1 ... h_N.
-Value delayed_recovery_series(double zeta, Coefficients h);
+Value delayed_recovery_series(double zeta, CoefficientSpan h);
 // Power series Σ_{k=0}^{N} coef_k ζ^k (maximal compression x_max with b_k; τ_max - τ_max0 with a_k, a_0 = 0).
-double power_series(double zeta, Coefficients coefficients);
+double power_series(double zeta, CoefficientSpan coefficients);
 
 // The 1999 paper's Padé [1/4] (Eq. 35) in w = C1 ζ: ε = (1 + d1 w)/(1 + d2 w + d3 w² + d4 w³ + d5 w⁴).
 struct Pade1999 {

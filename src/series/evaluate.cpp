@@ -13,7 +13,7 @@ namespace {
 
 using detail::check_zeta;
 
-std::span<const double> as_span(Coefficients coefficients) {
+std::span<const double> as_span(CoefficientSpan coefficients) {
   return {coefficients.data(), coefficients.size()};
 }
 
@@ -39,13 +39,13 @@ double undamped_max_compression() {
   return std::pow(1.25, 0.4);
 }
 
-Value naive_series(double zeta, Coefficients c) {
+Value naive_series(double zeta, CoefficientSpan c) {
   check_zeta(zeta);
   const double correction = horner_without_constant(zeta, as_span(c));  // ε - 1
   return {1.0 + correction, -correction};
 }
 
-Value delayed_recovery_series(double zeta, Coefficients h) {
+Value delayed_recovery_series(double zeta, CoefficientSpan h) {
   check_zeta(zeta);
   const std::span<const double> terms = as_span(h);
   if (terms.empty()) throw InvalidInput("the delayed-recovery series needs h_0");
@@ -53,7 +53,7 @@ Value delayed_recovery_series(double zeta, Coefficients h) {
   return {terms[0] + correction, (1.0 - terms[0]) - correction};
 }
 
-double power_series(double zeta, Coefficients coefficients) {
+double power_series(double zeta, CoefficientSpan coefficients) {
   check_zeta(zeta);
   const std::span<const double> coef = as_span(coefficients);
   if (coef.empty()) return 0.0;
