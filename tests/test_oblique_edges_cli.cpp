@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
@@ -43,11 +44,30 @@ TEST(ObliqueEdges, ReadmeSteelPlotsAndLeavesNoScratchFile) {
                            image.string());
     ASSERT_EQ(r.status, 0) << model << ": " << r.err;
     EXPECT_NE(r.out.find("   30 "), std::string::npos) << r.out;
-    EXPECT_FALSE(std::filesystem::exists(folder.path / "x.png.data.csv")) << model;
+    // The scratch table the plot read (under a random name) is gone: the image is the folder's one file.
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder.path),
+                            std::filesystem::directory_iterator()),
+              1)
+        << model;
     EXPECT_EQ(r.err.find("no oblique plot"), std::string::npos) << model << ": " << r.err;
     EXPECT_TRUE(std::filesystem::exists(image)) << model;
     std::filesystem::remove(image);
   }
+}
+
+// 45.5: one command's two outputs on one path, and a figure on a device, are refused before any solve (the
+// gas command's rule, tests/test_output_policy.cpp).
+TEST(ObliqueEdges, OutAndPlotOnOnePathOrAFigureOnADeviceAreRefused) {
+  TempFolder folder;
+  const auto x = folder.path / "x.png";
+  const auto r =
+      run_cli(kSteel + " --wall --friction 0.3 --angle 30 --out " + x.string() + " --plot " + x.string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("are the same file"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(x)) << "nothing written";
+  const auto device = run_cli(kSteel + " --wall --friction 0.3 --angle 30 --plot /dev/full");
+  EXPECT_EQ(device.status, 2) << device.err;
+  EXPECT_NE(device.err.find("is a device"), std::string::npos) << device.err;
 }
 
 // 44.8: an impact CVODE cannot solve (μ = 1e12 at 1° on a wall: the switch function of a cap 1e12 times the

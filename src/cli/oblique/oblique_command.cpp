@@ -21,6 +21,7 @@
 #include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
+#include "cli/common/output_guards.hpp"
 #include "cli/common/parse_errors.hpp"
 #include "cli/dem/dem_wall.hpp"
 #include "cli/oblique/oblique_sweep.hpp"
@@ -31,6 +32,7 @@
 #include "restitution/units.hpp"
 #include "restitution_oblique/oblique_study.hpp"
 #include "scene/figure_formats.hpp"
+#include "sweep/temporary_file.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -259,7 +261,10 @@ struct ScratchFile {
 // Maw's diagram of the sweep; without --out the script reads a scratch copy of the CSV beside the image.
 void draw(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueImpact>& impacts,
           const std::string& csv) {
-  const std::filesystem::path data(o.out.empty() ? o.plot + ".data.csv" : o.out);
+  // Under a random name, as a temporary (sweep/temporary_file.hpp): a link planted under a fixed one is never
+  // followed.
+  const std::filesystem::path data(o.out.empty() ? fmt::format("{}.{}.data.csv", o.plot, random_name_part())
+                                                 : o.out);
   const ScratchFile scratch(o.out.empty() ? data : std::filesystem::path());
   if (o.out.empty()) {
     write_file_atomically(data, csv);  // also makes the image's folder
@@ -286,7 +291,8 @@ int run(const ObliqueCommandOptions& o) {
                "--wall-poisson-ratio for that)\n");
   }
   if (!o.out.empty()) check_output_file(o.out);
-  if (!o.plot.empty()) check_output_file(o.plot);
+  if (!o.plot.empty()) check_figure_file(o.plot, "--plot");
+  if (!o.out.empty() && !o.plot.empty()) check_outputs_apart({{"--out", o.out}, {"--plot", o.plot}}, {});
   const std::vector<ObliqueImpact> impacts = oblique_sweep(s);
   for (const ObliqueImpact& impact : impacts) {
     // Never silently: an outcome the tolerance cannot be shown for is said on stderr as well.
