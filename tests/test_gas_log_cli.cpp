@@ -269,3 +269,13 @@ TEST(GasLogCli, TheFactorIsSaidMeasuredOnlyWhenAConstantEpsRunWasGiven) {
 }
 
 }  // namespace
+
+// 45.11: plotting 10,000 compared logs took over five minutes with no bound; the count is refused before any
+// file is read.
+TEST(GasLogCli, MoreLogsThanAFigureCanShowAreRefused) {
+  std::string logs;
+  for (int i = 0; i < 65; ++i) logs += " missing.log";
+  const auto r = restitution::test_support::run_cli(kGas + "--compare" + logs);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("--compare takes at most 64 logs"), std::string::npos) << r.err;
+}

@@ -57,6 +57,9 @@ namespace {
 
 // A deck of more spheres takes seconds to write: the command says how big it will be before it starts.
 constexpr std::size_t kQuietDeckParticles = 1'000'000;
+// A deck is two runs; more logs than this would draw an unreadable figure for minutes (10,000 logs took over
+// five).
+constexpr std::size_t kMaxComparedLogs = 64;
 
 // The deck's request for the gas of `gas`: its spheres, law, T0 and duration (in Haff times of the theory's
 // τ0).
@@ -106,6 +109,9 @@ std::vector<NamedPath> compare_inputs(const GasDeckOptions& o) {
 }  // namespace
 
 int run_gas_deck(const GasDeckOptions& o, const GasOptions& gas, bool json) {
+  if (o.compare.size() > kMaxComparedLogs)
+    throw InvalidInput(fmt::format("--compare takes at most {} logs (a deck's two runs are two), got {}",
+                                   kMaxComparedLogs, o.compare.size()));
   const gas_deck::GasDeckRequest request = deck_request(o, gas);
   std::optional<GasDeckPaths> paths;
   if (o.deck) paths = gas_deck_paths(*o.deck);
