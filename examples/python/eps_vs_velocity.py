@@ -41,7 +41,7 @@ def main():
     plt.rcParams.update({"font.size": 8, "axes.labelsize": 9})
     beta = beta_of(ICE_CHARACTERISTIC_VELOCITY)
     velocity = np.logspace(-4, -1, 200)  # m/s: 0.01 ... 10 cm/s
-    figure, axes = plt.subplots(figsize=(3.5, 2.6))
+    figure, axes = plt.subplots(figsize=(3.5, 3.2))
     for end, colour, line, words in (("delayed-recovery", BLUE, "-", "delayed recovery (force vanishes)"),
                                      ("naive", VERMILLION, "--", "naive end (overlap vanishes)")):
         axes.semilogx(velocity, restitution.eps(beta=beta, velocity=velocity, end=end), line, color=colour,
@@ -52,7 +52,8 @@ def main():
     axes.set_ylabel(r"coefficient of restitution $\varepsilon$")
     axes.set_ylim(0.0, 1.0)
     axes.grid(True, which="both", alpha=0.3)
-    axes.legend(loc="lower left")
+    # Below the axes: inside, it would hide a curve at any place.
+    axes.legend(loc="upper center", bbox_to_anchor=(0.5, -0.22), frameon=False)
     figure.tight_layout()
     figure.savefig(out, dpi=300, bbox_inches="tight")
     print(out)
