@@ -240,7 +240,7 @@ void validate(const ObliqueGeometry& geometry, const NormalForce& normal, const 
         fmt::format("tangential damping factor {} exceeds {:.3g}, the strongest damping the solve resolves "
                     "at this impact "
                     "(its decay time would be shorter than 1/{:g} of the normal law's natural time)",
-                    tangential.damping_factor, limits.damping_factor, kFastestTangentialRate));
+                    tangential.damping_factor, limits.damping_factor, kFastestTangentialDampingRate));
   }
 }
 
@@ -296,7 +296,7 @@ TangentialLimits tangential_limits(const ObliqueGeometry& geometry, const Normal
     limits.stiffness = rate2 / (mobility * unit.tangential_stiffness(x));
   }
   if (const double g = unit.tangential_damping(x); g > 0.0)
-    limits.damping_factor = kFastestTangentialRate / (mobility * g);
+    limits.damping_factor = kFastestTangentialDampingRate / (mobility * g);
   return limits;
 }
 

@@ -215,7 +215,7 @@ void check_tangential_limits(const ObliqueSetup& s, ArgumentStyle style) {
         "{} must be at most {:.3g} for these impacts, got {:g}: a stronger damper relaxes the slip more than "
         "{:g} times per unit of the contact's natural time, beyond what the solve resolves",
         spelled("tangential_damping", style), limits.damping_factor, s.tangential.damping_factor,
-        kFastestTangentialRate));
+        kFastestTangentialDampingRate));
   }
 }
 
