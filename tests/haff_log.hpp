@@ -26,14 +26,13 @@ inline bool write_haff_log(const std::filesystem::path& path) {
   const double tau0 = nlohmann::json::parse(theory.out).at("tau0_s").get<double>();
   const double t0 = 920.0 * 4.0 / 3.0 * M_PI * std::pow(0.005, 3);
   // The run begins with the setup line its deck prints (the gas, which --compare checks against its own):
-  // taken from a deck of this gas written beside the log.
-  const std::filesystem::path deck_folder = path.string() + ".deck";
-  std::filesystem::create_directories(deck_folder);
+  // taken from a deck of this gas written in a folder of its own (the log's name may hold characters a shell
+  // would read).
+  const TempFolder deck_folder;
   const bool deck_written =
-      run_cli(kHaffGas + "--particles 20 --deck " + (deck_folder / "g.in").string()).status == 0;
+      run_cli(kHaffGas + "--particles 20 --deck " + (deck_folder.path / "g.in").string()).status == 0;
   const std::string input =
-      deck_written ? slurp((deck_folder / "g_constant_eps.in").string()) : std::string();
-  std::filesystem::remove_all(deck_folder);
+      deck_written ? slurp((deck_folder.path / "g_constant_eps.in").string()) : std::string();
   const auto setup = input.find("restitution-gas-setup ");
   if (setup == std::string::npos) return false;
   std::ofstream log(path);

@@ -67,7 +67,8 @@ TEST(ObliqueEdges, OutAndPlotOnOnePathOrAFigureOnADeviceAreRefused) {
   EXPECT_FALSE(std::filesystem::exists(x)) << "nothing written";
   const auto device = run_cli(kSteel + " --wall --friction 0.3 --angle 30 --plot /dev/full");
   EXPECT_EQ(device.status, 2) << device.err;
-  EXPECT_NE(device.err.find("is a device"), std::string::npos) << device.err;
+  EXPECT_NE(device.err.find("'/dev/full'"), std::string::npos) << device.err;
+  EXPECT_FALSE(std::filesystem::exists("/dev/full.png"));
 }
 
 // 44.8: an impact CVODE cannot solve (μ = 1e12 at 1° on a wall: the switch function of a cap 1e12 times the

@@ -24,7 +24,9 @@ const std::string kGas =
     "gas --radius 0.005 --density 920 --eps 0.8 --velocity 2 --packing-fraction 0.1 --rms-speed 1 "
     "--haff-times 10 --points-per-decade 2";
 const std::string kOblique =
-    "oblique --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --wall --tangential "
+    "oblique --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --dissipative-constant "
+    "1e-7 "
+    "--wall --tangential "
     "mindlin "
     "--friction 0.3 --angle-range 5:45:20";
 const std::string kFitData =
