@@ -213,9 +213,10 @@ struct ObliqueResult {
 // kFastestTangentialRate bounds the spring's λ, kFastestTangentialDampingRate the damper's; the limits are
 // k_t and γ_t at those bounds, in the units of TangentialForce (infinite where the model has no such term, or
 // the normal law no damping). Measured on 1 mm steel at 10°: springs solved up to λ ≈ 1100 (mindlin) and 2400
-// (linear_history), chattering between stick and slip above about 3500; the damper still solved at 2.7e4.
+// (linear_history), chattering between stick and slip above about 3500; the damper solved at 2.7e4, its
+// bound.
 inline constexpr double kFastestTangentialRate = 1e3;
-inline constexpr double kFastestTangentialDampingRate = 1e4;
+inline constexpr double kFastestTangentialDampingRate = 2.7e4;
 struct TangentialLimits {
   double stiffness = 0.0;       // largest k_t [N/m, N/m², N/m^{3/2} as TangentialForce::stiffness]
   double damping_factor = 0.0;  // largest γ_t
