@@ -36,7 +36,8 @@ const std::string kMaterial =
     "--young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --dissipative-constant 1e-7 "
     "--friction 0.3";
 const std::vector<double>& kAnglesDeg = restitution::test_support::kObliqueAnglesDeg;
-// The LIGGGHTS wall carries the pair's kn: a wall of the sphere's own material (`oblique --wall` alone is rigid).
+// The LIGGGHTS wall carries the pair's kn: a wall of the sphere's own material (`oblique --wall` alone is
+// rigid).
 const std::string kOwnWall = " --wall --wall-young-modulus 2e11 --wall-poisson-ratio 0.3";
 constexpr int kCoarseSteps = 20000;
 
