@@ -120,7 +120,8 @@ def main(exe, source):
                   "--packing-fraction", "0.1", "--rms-speed", "1", "--haff-times", "100", "--points-per-decade", "4",
                   "--plot", os.path.join(folder, "gas.png")], env, source)
         run(exe, ["oblique", "--young-modulus", "2e11", "--poisson-ratio", "0.3", "--radius", "1e-3", "--density",
-                  "7800", "--wall", "--tangential", "mindlin", "--friction", "0.3", "--angle-range", "1:80:6",
+                  "7800", "--dissipative-constant", "1e-7", "--wall", "--tangential", "mindlin", "--friction", "0.3",
+                  "--angle-range", "1:80:6",
                   "--spin", "0,300", "--plot", os.path.join(folder, "oblique_maw.png")], env, source)
         run(exe, ["gas", "--radius", "0.005", "--density", "920", "--eps", "0.8", "--velocity", "2", "--law",
                   "linear-dashpot", "--packing-fraction", "0.1", "--rms-speed", "1", "--haff-times", "100",
