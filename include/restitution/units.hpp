@@ -16,6 +16,10 @@
 
 namespace restitution {
 
+// One degree in radians: the angles of the oblique impacts are given and printed in degrees. (π spelled out:
+// the installed headers compile as C++17, which has no std::numbers.)
+inline constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+
 // The Hertz constants of a pair of spheres, in SI units.
 struct HertzConstants {
   double k = 0.0;      // ρ / m_eff [s^-2 m^-1/2]

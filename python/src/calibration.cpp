@@ -8,6 +8,7 @@
 
 #include "bindings.hpp"
 #include "pickle_state.hpp"
+#include "repr_text.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
@@ -25,10 +26,6 @@ template <double Calibration::*member>
 std::optional<double> hertz_only(const Calibration& c) {
   if (!has_dissipative_constant(c.law)) return std::nullopt;
   return c.*member;
-}
-
-std::string optional_text(const std::optional<double>& x, const char* unit) {
-  return x ? fmt::format("{} {}", *x, unit) : std::string("None");
 }
 
 std::string calibration_repr(const Calibration& c) {

@@ -12,6 +12,7 @@
 
 #include "bindings.hpp"
 #include "pickle_state.hpp"
+#include "repr_text.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 
@@ -111,10 +112,6 @@ py::object masses_of(const Material& m) {
 py::object viscosities_of(const Material& m) {
   if (!m.viscosities) return py::none();
   return py::make_tuple(m.viscosities->eta1_pa_s, m.viscosities->eta2_pa_s);
-}
-
-std::string optional_text(const std::optional<double>& x, const char* unit) {
-  return x ? fmt::format("{} {}", *x, unit) : std::string("None");
 }
 
 std::string pair_text(const py::object& pair, const char* unit) {

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <utility>
 
 #include "oblique/oblique_accuracy.hpp"
@@ -18,8 +17,6 @@
 
 namespace restitution::oblique {
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 // The outputs of an impact that was not solved: NaN, no switches.
 ObliqueResult failed_result() {
@@ -197,8 +194,8 @@ void check_tangential_limits(const ObliqueSetup& s, ArgumentStyle style) {
   const auto [lowest, highest] = std::minmax_element(s.angles_deg.begin(), s.angles_deg.end());
   TangentialLimits limits{HUGE_VAL, HUGE_VAL};
   for (const double angle : {*lowest, *highest}) {
-    const TangentialLimits at =
-        tangential_limits(s.geometry, s.normal, s.tangential.kind, s.speed_m_s * std::cos(angle * kDegree));
+    const TangentialLimits at = tangential_limits(s.geometry, s.normal, s.tangential.kind,
+                                                  s.speed_m_s * std::cos(angle * kRadiansPerDegree));
     limits.stiffness = std::min(limits.stiffness, at.stiffness);
     limits.damping_factor = std::min(limits.damping_factor, at.damping_factor);
   }
@@ -333,8 +330,8 @@ ObliqueSetup oblique_setup(const ObliqueInputs& in, ArgumentStyle style) {
 }
 
 ImpactVelocity impact_at(const ObliqueSetup& setup, double angle_deg, double spin_rad_s) {
-  return {setup.speed_m_s * std::cos(angle_deg * kDegree), setup.speed_m_s * std::sin(angle_deg * kDegree),
-          spin_rad_s, 0.0};
+  return {setup.speed_m_s * std::cos(angle_deg * kRadiansPerDegree),
+          setup.speed_m_s * std::sin(angle_deg * kRadiansPerDegree), spin_rad_s, 0.0};
 }
 
 namespace {

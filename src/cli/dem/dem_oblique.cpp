@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <numbers>
 #include <sstream>
 
 #include "restitution/errors.hpp"
@@ -17,7 +16,6 @@ namespace {
 
 using namespace restitution::oblique;
 
-constexpr double kDegree = std::numbers::pi / 180.0;
 const std::vector<double> kDefaultAngles{5.0, 15.0, 30.0, 45.0, 60.0, 80.0};
 // The oblique contract's range (oblique_accuracy.hpp); dem's --tolerance goes down to 1e-11 and up to 1e-2.
 constexpr double kLoosestObliqueTolerance = 1e-3;
@@ -66,8 +64,8 @@ std::string joined(const std::vector<std::string>& words) {
 std::vector<ContractedOblique> impacts_at(const DemOblique& r, const TangentialForce& tangential) {
   std::vector<ContractedOblique> out;
   for (const double angle : r.angles_deg) {
-    const ImpactVelocity v{r.speed_m_s * std::cos(angle * kDegree), r.speed_m_s * std::sin(angle * kDegree),
-                           0.0, 0.0};
+    const ImpactVelocity v{r.speed_m_s * std::cos(angle * kRadiansPerDegree),
+                           r.speed_m_s * std::sin(angle * kRadiansPerDegree), 0.0, 0.0};
     out.push_back(solve_oblique_within(r.geometry, r.normal, tangential, v, r.tolerance, r.options));
     // Never silently: an outcome the tolerance cannot be shown for is said on stderr as well.
     if (out.back().ill_conditioned) {
@@ -97,7 +95,7 @@ DemOblique complete(DemOblique r, const DemObliqueOptions& o,
     request.geometry = r.geometry;
     request.normal = r.normal;
     request.tangential = r.tangential;
-    const double angle = *o.reference_angle_deg * kDegree;
+    const double angle = *o.reference_angle_deg * kRadiansPerDegree;
     request.impact = {r.speed_m_s * std::cos(angle), r.speed_m_s * std::sin(angle), 0.0, 0.0};
     request.target_et = *o.target_et;
     request.tolerance = r.tolerance;
@@ -152,7 +150,8 @@ void write_impacts(JsonWriter& json, const DemOblique& r, const std::vector<Cont
     } else {
       json.null();  // no slip at impact: e_t is undefined
     }
-    json.field("rebound_angle_deg", x.rebound_angle_rad / kDegree).field("spin_rad_s", x.spin_first_rad_s);
+    json.field("rebound_angle_deg", x.rebound_angle_rad / kRadiansPerDegree)
+        .field("spin_rad_s", x.spin_first_rad_s);
     if (r.geometry.second) json.field("spin2_rad_s", x.spin_second_rad_s);
     json.field("contact_time_s", x.contact_time_s).field("conditioning", impacts[i].conditioning);
     json.end_object();
@@ -169,7 +168,7 @@ void print_impacts(const DemOblique& r, const std::vector<ContractedOblique>& im
     // The angle as given, in its shortest exact form (89.999 is not 90).
     fmt::print("{}   {:>9} {:14.10f} {:14.10f} {:12.6f} {:14.8g}{}{}\n", c,
                fmt::format("{}", r.angles_deg[i]), x.normal_restitution, x.tangential_restitution,
-               x.rebound_angle_rad / kDegree, x.spin_first_rad_s,
+               x.rebound_angle_rad / kRadiansPerDegree, x.spin_first_rad_s,
                pair ? fmt::format(" {:14.8g}", x.spin_second_rad_s) : "",
                impacts[i].ill_conditioned ? "  (" + impacts[i].conditioning + ")" : "");
   }

@@ -5,14 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "dem/dem_codes.hpp"
+#include "restitution/units.hpp"
 
 namespace restitution::cli {
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 // One pass: a fresh system with one collision per angle at dt, e_t of each into variable `name`{i}. A pair:
 // atom 2i+1 at rest, 2i+2 above it moving down onto it; a wall: atom i+1 touching the plane z = 0. LAMMPS's
@@ -45,7 +43,7 @@ std::string pass(const DemOblique& r, const std::vector<std::string>& prerequisi
     }
     d += fmt::format("set atom {} diameter {}\nset atom {} mass {}\n", mover, 2.0 * r1, mover,
                      r.geometry.first.mass_kg);
-    const double a = r.angles_deg[i] * kDegree;
+    const double a = r.angles_deg[i] * kRadiansPerDegree;
     d += fmt::format("set atom {} vx {} vz {}\n", mover, r.speed_m_s * std::sin(a),
                      -r.speed_m_s * std::cos(a));
   }
@@ -57,7 +55,7 @@ std::string pass(const DemOblique& r, const std::vector<std::string>& prerequisi
   std::string values;
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t mover = per_angle * (i + 1);
-    const double slip0 = r.speed_m_s * std::sin(r.angles_deg[i] * kDegree);
+    const double slip0 = r.speed_m_s * std::sin(r.angles_deg[i] * kRadiansPerDegree);
     const std::string rest =
         pair ? fmt::format("-vx[{}]-{}*c_rc_oblique_omega[{}]", mover - 1, r2, mover - 1) : "";
     d += fmt::format("variable rc_oblique_et{0} equal -(vx[{1}]-{2}*c_rc_oblique_omega[{1}]{3})/{4}\n", i,

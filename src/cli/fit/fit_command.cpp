@@ -17,7 +17,7 @@
 namespace restitution::cli {
 namespace {
 
-struct FitOptions {
+struct PowerLawFitOptions {
   std::string end;
   double zeta_min = 0.0;
   double zeta_max = 0.0;
@@ -38,7 +38,7 @@ DerivedLaw derived_law(CollisionEnd end) {
 // A power law over a range gains nothing from more points than this; each point is two solves.
 constexpr long long kMaxFitPoints = 100000;
 
-int run_fit(const FitOptions& o) {
+int run_fit(const PowerLawFitOptions& o) {
   const CollisionEnd end = end_from_name(o.end);
   if (o.points > kMaxFitPoints) {
     throw InvalidInput(fmt::format("--points must be at most {}, got {}", kMaxFitPoints, o.points));
@@ -103,7 +103,7 @@ int run_fit(const FitOptions& o) {
 }  // namespace
 
 void add_fit_command(CLI::App& app, Action& chosen) {
-  auto o = std::make_shared<FitOptions>();
+  auto o = std::make_shared<PowerLawFitOptions>();
   CLI::App* cmd = app.add_subcommand("fit", "least-squares power law of eps against zeta at one end");
   cmd->add_option("--end", o->end, "end of the collision: naive or delayed-recovery")
       ->required()

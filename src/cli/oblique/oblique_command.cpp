@@ -8,7 +8,6 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <system_error>
@@ -65,8 +64,6 @@ struct ObliqueCommandOptions {
 };
 
 using Setup = ObliqueSetup;
-
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 // The options as the study's inputs; its rules (src/oblique/oblique_study.cpp) check them.
 Setup setup_of(const ObliqueCommandOptions& o) {
@@ -138,11 +135,11 @@ void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
     } else {
       json.null();  // no slip at impact: e_t is undefined
     }
-    json.field("rebound_angle_deg", r.rebound_angle_rad / kDegree);
+    json.field("rebound_angle_deg", r.rebound_angle_rad / kRadiansPerDegree);
     json.field("spin_rad_s", r.spin_first_rad_s);
     if (!o.wall.wall) json.field("spin2_rad_s", r.spin_second_rad_s);
     json.field("impulse_ratio", r.impulse_ratio).field("contact_time_s", r.contact_time_s);
-    if (!o.wall.wall) json.field("line_of_centres_turn_deg", r.line_of_centres_turn_rad / kDegree);
+    if (!o.wall.wall) json.field("line_of_centres_turn_deg", r.line_of_centres_turn_rad / kRadiansPerDegree);
     json.field("stick_time_s", r.stick_time_s).field("slip_time_s", r.slip_time_s);
     json.key("modes").begin_array();
     for (const ModeSwitch& m : r.switches) {
@@ -227,7 +224,7 @@ void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
     fmt::print(
         "{:>9} {:11.5g} {:14.10f} {:14.10f} {:12.6f} {:14.8g} {}{:12.8f} {:12.6g} {:10.4g} {:10.4g}  {}\n",
         angle, impact.initial_spin_rad_s, r.normal_restitution, r.tangential_restitution,
-        r.rebound_angle_rad / kDegree, r.spin_first_rad_s,
+        r.rebound_angle_rad / kRadiansPerDegree, r.spin_first_rad_s,
         pair ? fmt::format("{:14.8g} ", r.spin_second_rad_s) : "", r.impulse_ratio, r.contact_time_s,
         r.stick_time_s / r.contact_time_s, r.slip_time_s / r.contact_time_s, modes);
   }
