@@ -5,9 +5,11 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "cli/common/commands.hpp"
+#include "cli/common/help_format.hpp"
 #include "cli/common/io_error.hpp"
 #include "cli/common/parse_errors.hpp"
 #include "cli/common/stop_signals.hpp"
@@ -25,6 +27,7 @@ int run(int argc, char** argv) {
                                         library_version().commit + "\nSUNDIALS " +
                                         sundials_build_description());
   app.require_subcommand(1);
+  app.formatter(std::make_shared<cli::WrappingHelpFormatter>());  // before the subcommands: they inherit it
   app.footer(
       "Exit status: 0 done, 1 numerical failure, 2 bad usage or input, 3 I/O failure (an output file or\n"
       "folder that cannot be created or written).");
