@@ -64,7 +64,10 @@ TEST(FitCsv, QuotedFieldsMayHoldCommasAndLineEnds) {
 TEST(FitCsv, ExcerptIsShortAndEscaped) {
   EXPECT_EQ(quoted_excerpt("abc"), "abc");
   EXPECT_EQ(quoted_excerpt(std::string("a\0b\n\x7f\xff", 6)), "a\\x00b\\x0a\\x7f\\xff");
-  EXPECT_EQ(quoted_excerpt(std::string(41, 'x')), std::string(40, 'x') + "...");
+  // Compared in two parts: GCC 12 at -O1 warns falsely (-Wstringop-overflow) on a string + literal here.
+  const std::string long_excerpt = quoted_excerpt(std::string(41, 'x'));
+  EXPECT_EQ(long_excerpt.substr(0, 40), std::string(40, 'x'));
+  EXPECT_EQ(long_excerpt.substr(40), "...");
 }
 
 }  // namespace
