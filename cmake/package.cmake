@@ -56,6 +56,8 @@ endif()
 # ${out_var}: the synopsis, then the text in lines of at most 79 characters (CPack leaves lines as they are, and
 # Debian's tools want an extended description in lines of at most 80).
 function(restitution_deb_description out_var synopsis text)
+  string(ASCII 31 unit_separator)  # a ";" of the text stays a character, not a list separator
+  string(REPLACE ";" "${unit_separator}" text "${text}")
   string(REGEX REPLACE "[ \n]+" ";" words "${text}")
   set(result "${synopsis}")
   set(line "")
@@ -70,7 +72,8 @@ function(restitution_deb_description out_var synopsis text)
       set(line "${word}")
     endif()
   endforeach()
-  set(${out_var} "${result}\n${line}" PARENT_SCOPE)
+  string(REPLACE "${unit_separator}" ";" result "${result}\n${line}")
+  set(${out_var} "${result}" PARENT_SCOPE)
 endfunction()
 set(restitution_deb_about "The coefficient of normal restitution of colliding viscoelastic spheres, certified to a requested accuracy.")
 set(CPACK_DEBIAN_RESTITUTION_PROGRAM_PACKAGE_NAME restitution)
