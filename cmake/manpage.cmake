@@ -25,5 +25,13 @@ add_custom_command(
   DEPENDS restitution ${PROJECT_SOURCE_DIR}/cmake/manpage_commands.cmake
   COMMENT "help2man: restitution.1"
   VERBATIM)
-add_custom_target(restitution_man_page ALL DEPENDS ${restitution_man_page})
-install(FILES ${restitution_man_page} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+# Debian's packages carry the page compressed (gzip -9n: no name or time stamp, so the same page gives the same
+# bytes); that copy is installed only into the package's component (cmake/package.cmake), a plain install keeps
+# the page as it is.
+add_custom_command(OUTPUT ${restitution_man_page}.gz
+                   COMMAND gzip -9nkf ${restitution_man_page}
+                   DEPENDS ${restitution_man_page} VERBATIM)
+add_custom_target(restitution_man_page ALL DEPENDS ${restitution_man_page} ${restitution_man_page}.gz)
+install(FILES ${restitution_man_page} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1 COMPONENT restitution_man)
+install(FILES ${restitution_man_page}.gz DESTINATION ${CMAKE_INSTALL_MANDIR}/man1 COMPONENT restitution_program
+        EXCLUDE_FROM_ALL)

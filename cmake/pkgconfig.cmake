@@ -79,4 +79,5 @@ file(RELATIVE_PATH restitution_pc_to_prefix /prefix/${CMAKE_INSTALL_LIBDIR}/pkgc
 string(REGEX REPLACE "/$" "" restitution_pc_to_prefix "${restitution_pc_to_prefix}")  # ../..
 configure_file(${PROJECT_SOURCE_DIR}/cmake/restitution.pc.in ${PROJECT_BINARY_DIR}/restitution.pc.configured @ONLY)
 file(GENERATE OUTPUT ${PROJECT_BINARY_DIR}/restitution.pc INPUT ${PROJECT_BINARY_DIR}/restitution.pc.configured)
-install(FILES ${PROJECT_BINARY_DIR}/restitution.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+install(FILES ${PROJECT_BINARY_DIR}/restitution.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
+        COMPONENT restitution_dev)

@@ -21,6 +21,8 @@ prefix=${RESTITUTION_INSTALLED_PREFIX:-$work/prefix}
 if [ -z "${RESTITUTION_INSTALLED_PREFIX:-}" ]; then
   cmake --install "$build" --prefix "$prefix" >/dev/null
 fi
+# The libraries' folder the build was configured with: lib, or lib/<multiarch triplet> for the prefix /usr.
+libdir="$prefix/$(sed -n 's/^CMAKE_INSTALL_LIBDIR:[A-Z]*=//p' "$build/CMakeCache.txt")"
 
 headers=$(cd "$prefix/include/restitution" && ls | tr '\n' ' ')
 expected="calibration.hpp collision_solver.hpp contact_law.hpp errors.hpp fast.hpp fit.hpp material.hpp restitution.hpp series.hpp solve_types.hpp sweep.hpp units.hpp "
@@ -34,7 +36,7 @@ if grep -nE '__float128|quadmath|<Eigen|<toml|<boost|<fmt|<sundials|<cvode' "$pr
   exit 1
 fi
 for f in restitutionConfig.cmake restitutionConfigVersion.cmake restitutionTargets.cmake; do
-  test -f "$prefix/lib/cmake/restitution/$f" || { echo "missing lib/cmake/restitution/$f"; exit 1; }
+  test -f "$libdir/cmake/restitution/$f" || { echo "missing $libdir/cmake/restitution/$f"; exit 1; }
 done
 
 version=$(cmake -DROOT="$source" -P "$source/cmake/version.cmake" | sed -n 1p)  # docs/release.md
@@ -43,7 +45,7 @@ if [ "$program_version" != "restitution $version" ]; then
   echo "installed bin/restitution --version: $program_version, VERSION: $version"
   exit 1
 fi
-export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+export PKG_CONFIG_PATH="$libdir/pkgconfig"
 if [ "$(pkg-config --modversion restitution)" != "$version" ]; then
   echo "pkg-config --modversion restitution: $(pkg-config --modversion restitution), VERSION: $version"
   exit 1
@@ -53,16 +55,17 @@ fi
 c++ -o "$work/app_pkgconfig" "$source/examples/cpp/app.cpp" $(pkg-config --cflags --libs restitution)
 # The shared library beside the static one: SONAME librestitution.so.X.Y of the version, restitution's API its
 # only exports (no CVODE, N_Vector, SUNDIALS or fmt symbol), and a consumer linked with -lrestitution loads it.
-soname=$(readelf -d "$prefix/lib/librestitution.so" | sed -n 's/.*Library soname: \[\(.*\)\]/\1/p')
+soname=$(readelf -d "$libdir/librestitution.so" | sed -n 's/.*Library soname: \[\(.*\)\]/\1/p')
 expected_soname="librestitution.so.$(cut -d. -f1,2 <<<"$version")"
-[ "$soname" = "$expected_soname" ] || { echo "SONAME of lib/librestitution.so: '$soname', expected $expected_soname"; exit 1; }
-test -f "$prefix/lib/$soname" || { echo "lib/$soname (the SONAME's link) is not installed"; exit 1; }
-foreign=$(nm -D --defined-only -C "$prefix/lib/librestitution.so" | grep -vE ' (typeinfo( name)? for |vtable for |VTT for |guard variable for )?restitution::' || true)
+[ "$soname" = "$expected_soname" ] || { echo "SONAME of $libdir/librestitution.so: '$soname', expected $expected_soname"; exit 1; }
+test -f "$libdir/$soname" || { echo "$libdir/$soname (the SONAME's link) is not installed"; exit 1; }
+foreign=$(nm -D --defined-only -C "$libdir/librestitution.so" | grep -vE ' (typeinfo( name)? for |vtable for |VTT for |guard variable for )?restitution::' || true)
 [ -z "$foreign" ] || { echo "lib/librestitution.so exports more than restitution's API:"; head <<<"$foreign"; exit 1; }
-c++ -std=c++17 -o "$work/app_shared" "$source/examples/cpp/app.cpp" -I"$prefix/include" -L"$prefix/lib" \
-  -lrestitution -Wl,-rpath,"$prefix/lib"
-readelf -d "$work/app_shared" | grep -qF "[$soname]" || { echo "app_shared does not load $soname:"; readelf -d "$work/app_shared" | grep NEEDED; exit 1; }
+c++ -std=c++17 -o "$work/app_shared" "$source/examples/cpp/app.cpp" -I"$prefix/include" -L"$libdir" \
+  -lrestitution -Wl,-rpath,"$libdir"
+grep -qF "[$soname]" <<<"$(readelf -d "$work/app_shared")" || { echo "app_shared does not load $soname:"; readelf -d "$work/app_shared" | grep NEEDED; exit 1; }
 man_page="$prefix/share/man/man1/restitution.1"
+[ -f "$man_page" ] || man_page+=.gz  # the Debian package's page is compressed
 test -f "$man_page" || { echo "missing share/man/man1/restitution.1"; exit 1; }
 rendered=$(LC_ALL=C MANWIDTH=80 man -l "$man_page" 2>&1 | tr -s " ")  # ASCII hyphens, unjustified
 for expected in "restitution - coefficient of restitution" "restitution eps" "--tolerance" "restitution $version" "share/doc/restitution"; do
@@ -87,7 +90,10 @@ cmake -S "$source/examples/cpp" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Rel
 cmake --build "$work/build" >/dev/null
 
 # A library carrying its optimized CVODE (cmake/sundials.cmake) needs no SUNDIALS in the consumer's link.
-if "$build/restitution" --version | grep -q "SUNDIALS .*(optimized" && ldd "$work/build/app" | grep -q sundials; then
+# Here-strings, not `| grep -q`: grep -q leaves at the first match, and under pipefail the writer's SIGPIPE
+# would count as a failure.
+optimized=$(grep -c "SUNDIALS .*(optimized" <<<"$("$build/restitution" --version)" || true)
+if [ "$optimized" -gt 0 ] && grep -q sundials <<<"$(ldd "$work/build/app")"; then
   echo "the consumer links a SUNDIALS library although librestitution.a carries its own CVODE:"
   ldd "$work/build/app" | grep sundials
   exit 1
@@ -96,8 +102,8 @@ fi
 # The CVODE the library carries is private to it: the installed archive exports no CVODE, N_Vector or SUNDIALS
 # symbol, and a consumer that calls the system's CVODE itself (tests/install/sundials_beside.cpp) binds its calls
 # to libsundials_cvode.so while restitution's solves keep the library's own copy (local symbols in the program).
-if "$build/restitution" --version | grep -q "SUNDIALS .*(optimized"; then
-  exported=$(nm -g --defined-only "$prefix/lib/librestitution.a" | grep -E ' [A-Z] (CVode|N_V|SUN)' || true)
+if [ "$optimized" -gt 0 ]; then
+  exported=$(nm -g --defined-only "$libdir/librestitution.a" | grep -E ' [A-Z] (CVode|N_V|SUN)' || true)
   [ -z "$exported" ] || { echo "the installed librestitution.a exports SUNDIALS symbols:"; head <<<"$exported"; exit 1; }
   # shellcheck disable=SC2046  # pkg-config's output is a list of words
   c++ -o "$work/sundials_beside" "$source/tests/install/sundials_beside.cpp" $(pkg-config --cflags --libs restitution) \
