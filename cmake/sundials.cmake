@@ -64,6 +64,7 @@ if(RESTITUTION_SUNDIALS_OPTIMIZED)
       restitution_use_sundials_cache(${cache})
       set(RESTITUTION_SUNDIALS_SOURCE "Debian's source package sundials ${bundled_version}, bundled in the sdist")
     else()
+      string(REGEX REPLACE ".*\n" "" bundle_error "${bundle_error}")  # the last line says why it stopped
       set(why " (building the sdist's CVODE failed: ${bundle_error})")
     endif()
   else()
