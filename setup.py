@@ -4,7 +4,8 @@ extension target `_restitution` (python/CMakeLists.txt) in a build folder of its
 python/restitution/*.py, *.pyi and py.typed. The version is CMake's (cmake/version.cmake: git and the file VERSION,
 e.g. 0.4.0.dev252+gf916007b96cf); `python3 -m build --sdist` writes it into the sdist as SDIST_VERSION, so that
 a build from the sdist, which is no git checkout, names the same version and commit. MANIFEST.in lists what
-the sdist carries: everything the build reads.
+the sdist carries: everything the build reads; setup.py adds third_party/sundials, the CVODE source of Debian's
+source package (BSD-3-Clause) that scripts/sundials pruned, which a build from the sdist compiles optimized.
 
 Only the module and the libraries it links are built: no tests, benchmarks or program. Extra CMake arguments
 come from the environment, e.g. CMAKE_ARGS="-DSUNDIALS_DIR=/opt/sundials/lib/cmake/sundials"; the parallel
@@ -76,14 +77,36 @@ class CMakeBuild(build_ext):
         shutil.copyfile(built[0], destination)
 
 
+def sundials_bundle():
+    """The CVODE source the sdist carries as third_party/sundials: the bundle scripts/sundials made from Debian's
+    source package of the installed libsundials-dev (build/sundials/<version>/bundle), or, for an sdist made from
+    an sdist, the one it carries. None if there is neither."""
+    carried = ROOT / "third_party" / "sundials"
+    if (carried / "DEBIAN_VERSION").exists():
+        return carried
+    version = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "libsundials-dev"], capture_output=True,
+                             text=True).stdout
+    made = ROOT / "build" / "sundials" / version / "bundle"
+    return made if version and (made / "DEBIAN_VERSION").exists() else None
+
+
 class SdistWithVersion(sdist):
-    """An sdist is no git checkout: it carries the version and commit it was made from (cmake/version.cmake)."""
+    """An sdist is no git checkout: it carries the version and commit it was made from (cmake/version.cmake), and
+    the CVODE source that a build from it compiles optimized (cmake/sundials.cmake)."""
 
     def make_release_tree(self, base_dir, files):
         super().make_release_tree(base_dir, files)
         target = pathlib.Path(base_dir) / "SDIST_VERSION"
         target.unlink(missing_ok=True)  # a hard link to the source's copy when an sdist is made from an sdist
         target.write_text(f"{VERSION}\n{COMMIT}\n", encoding="ascii")
+        bundle = sundials_bundle()
+        if bundle is None:  # pip would link Debian's unoptimized libsundials: no sdist rather than a slow one
+            sys.exit("setup.py: no CVODE source to put into the sdist: run bash scripts/sundials (it makes "
+                     "build/sundials/<version>/bundle from Debian's source package), then make the sdist again")
+        destination = pathlib.Path(base_dir) / "third_party" / "sundials"
+        if destination.exists():  # hard links to the source's copy when an sdist is made from an sdist
+            shutil.rmtree(destination)
+        shutil.copytree(bundle, destination)
 
 
 setup(

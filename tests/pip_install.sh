@@ -7,7 +7,8 @@
 # from), and executes examples/notebooks/restitution_tour.ipynb with Debian's nbconvert in a kernel of that venv.
 # Also checks restitution.__version__ against cmake/version.cmake's, that `pip install --no-build-isolation .`
 # straight from the checkout (the README's command) installs an importable package into another fresh venv, and
-# that the sdist (`python3 -m build --sdist --no-isolation`) alone builds a wheel whose eps(1) is right.
+# that the sdist (`python3 -m build --sdist --no-isolation`) alone builds a wheel whose eps(1) is right and which
+# links the optimized CVODE the sdist carries (third_party/sundials), without a word at import.
 # Usage: tests/pip_install.sh [SOURCE_DIR]   (CMAKE_ARGS, RESTITUTION_CMAKE_BUILD_DIR etc. pass through to setup.py)
 set -euo pipefail
 source=$(cd "${1:-$(dirname "$0")/..}" && pwd)
@@ -58,26 +59,41 @@ RESTITUTION_INSTALLED_UNDER="$work/venv" RESTITUTION_SOURCE_DIR="$source" \
 sdist=$(ls "$work"/sdist/restitution-*.tar.gz)
 listing=$(tar tzf "$sdist")
 for needed in VERSION SDIST_VERSION CMakeLists.txt cmake/version.cmake src/CMakeLists.txt include/restitution/restitution.hpp \
-  python/CMakeLists.txt data/reference_solutions.csv scripts/plots docs/cli.md; do
+  python/CMakeLists.txt data/reference_solutions.csv scripts/plots docs/cli.md scripts/sundials-build \
+  third_party/sundials/README.md third_party/sundials/DEBIAN_VERSION third_party/sundials/source/LICENSE \
+  third_party/sundials/source/src/cvode/cvode.c; do
   grep -q "^restitution-[^/]*/$needed" <<<"$listing" || { echo "pip_install: the sdist lacks $needed"; exit 1; }
 done
 unpacked="$source/build/sdist-check"
 rm -rf "$unpacked"
 mkdir -p "$unpacked"
 tar xzf "$sdist" -C "$unpacked" --strip-components=1
-# The optimized CVODE the checkout's set-up built (cmake/sundials.cmake reads it from build/sundials).
-if [ -d "$source/build/sundials" ]; then mkdir -p "$unpacked/build" && ln -s "$source/build/sundials" "$unpacked/build/sundials"; fi
-command -v ccache >/dev/null && export CMAKE_CXX_COMPILER_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER:-ccache}
+echo "pip_install: the sdist: $(du -k "$sdist" | cut -f1) KiB, $(grep -c . <<<"$listing") entries, of them" \
+  "$(grep -c '^restitution-[^/]*/third_party/sundials/.*[^/]$' <<<"$listing") files in third_party/sundials"
+# No build/sundials: the sdist's own CVODE source is built (cmake/sundials.cmake), as for a pip user. ccache
+# (CMake reads the launchers from the environment, SUNDIALS' C too) keeps this fast in CI; CCACHE_DISABLE=1
+# gives the cold time.
+if command -v ccache >/dev/null; then
+  export CMAKE_CXX_COMPILER_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER:-ccache}
+  export CMAKE_C_COMPILER_LAUNCHER=${CMAKE_C_COMPILER_LAUNCHER:-ccache}
+fi
+sdist_start=$SECONDS
 (cd "$unpacked" && env -u RESTITUTION_CMAKE_BUILD_DIR /usr/bin/python3 -m pip wheel --no-build-isolation --no-deps \
   --wheel-dir "$work/sdist-dist" . >"$work/sdist-wheel.log" 2>&1) ||
   { tail -40 "$work/sdist-wheel.log"; echo "pip_install: building a wheel from the sdist failed"; exit 1; }
+echo "pip_install: built a wheel from the sdist in $((SECONDS - sdist_start)) s"
 /usr/bin/python3 -m venv --system-site-packages "$work/venv3"
 "$work/venv3/bin/pip" install --no-index --no-deps --quiet "$work"/sdist-dist/restitution-*.whl
+import_output=$(cd "$work" && "$work/venv3/bin/python" -W error -c "import restitution" 2>&1)
+[ -z "$import_output" ] || { echo "$import_output"; echo "pip_install: importing the sdist's wheel printed the above"; exit 1; }
 "$work/venv3/bin/python" - "$version" "$source/data/reference_solutions.csv" <<'PY'
 import csv, sys
 import restitution
 version, table = sys.argv[1], sys.argv[2]
 assert restitution.__version__ == version, f"the sdist's wheel says {restitution.__version__}, the checkout {version}"
+sundials = restitution.build_info()["sundials"]
+assert sundials["optimized"] and "bundled in the sdist" in sundials["description"], sundials
+print(f"pip_install: the sdist's wheel runs SUNDIALS {sundials['description']}")
 rows = [r for r in csv.reader(line for line in open(table) if not line.startswith("#"))]
 header, rows = rows[0], rows[1:]
 row = next(r for r in rows if float(r[0]) == 1.0)

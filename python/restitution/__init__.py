@@ -35,7 +35,7 @@ from ._restitution import NumericalFailure, SolverStats
 from ._restitution import __version__  # the file VERSION at the root of the checkout
 
 __all__ = ["__version__", "eps", "solve", "calibrate", "fit_data", "zeta_of", "build_info", "Material",
-           "NumericalFailure", "SlowSundialsWarning", "CollisionResult", "EndResult", "MaxCompression", "SolverStats", "Calibration", "series",
+           "NumericalFailure", "CollisionResult", "EndResult", "MaxCompression", "SolverStats", "Calibration", "series",
            "fast"]
 
 _SCALARS = (float, int)
@@ -449,7 +449,8 @@ def build_info():
     """Which build of restitution and of SUNDIALS this module runs.
 
     A CVODE solve costs 2-3x more on Debian's unoptimized SUNDIALS than on the optimized build the project
-    makes (scripts/sundials); the numbers are the same. pip hides the build log that warns of it, so ask here.
+    makes (scripts/sundials in a checkout, the CVODE source bundled in the sdist for pip); the numbers are the
+    same. Configure says which one it links, in one line; this tells which one a module runs.
 
     Returns
     -------
@@ -465,25 +466,6 @@ def build_info():
     (True, ['description', 'optimized', 'version'])
     """
     return _core.build_info()
-
-
-class SlowSundialsWarning(RuntimeWarning):
-    """The module runs Debian's unoptimized SUNDIALS: every solve costs 2-3x more, the numbers are the same."""
-
-
-def _warn_if_slow_sundials(info, environ):
-    """Warn once, at import, when the module links the unoptimized SUNDIALS (pip shows no build log, so this is
-    where a user learns it); RESTITUTION_ACCEPT_SLOW_SUNDIALS=1 or a warnings filter silences it."""
-    if info["sundials"]["optimized"] or environ.get("RESTITUTION_ACCEPT_SLOW_SUNDIALS") == "1":
-        return False
-    _warnings.warn(f"restitution {info['version']} runs {info['sundials']['description']}: every CVODE solve takes "
-                   "2-3x longer than with the optimized build (bash scripts/sundials in the source tree, then "
-                   "reinstall). Set RESTITUTION_ACCEPT_SLOW_SUNDIALS=1 to accept it.", SlowSundialsWarning,
-                   stacklevel=3)
-    return True
-
-
-_warn_if_slow_sundials(_core.build_info(), _os.environ)
 
 
 def sweep_to_file(zetas, path, *, resume=False, end="both", tolerance=_TOLERANCE, method="auto", threads=None,

@@ -275,8 +275,6 @@ class BuildInfo(TypedDict):
 def build_info() -> BuildInfo: ...
 
 
-class SlowSundialsWarning(RuntimeWarning): ...
-
 def gas(
     *,
     radius: Optional[float] = ...,  # m
