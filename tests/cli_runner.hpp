@@ -36,6 +36,28 @@ inline std::vector<std::string> lines_of(const std::string& text) {
   return lines;
 }
 
+// A --help text with the wrapping to 80 columns undone (src/cli/common/help_format): each option, entry and
+// paragraph on one line again, so that a test finds a phrase wherever the wrap fell. A line indented four or
+// more spaces continues the one before; a list of choices broken after its comma joins without a space.
+inline std::string unwrapped_help(const std::string& text) {
+  std::string out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    const auto first = line.find_first_not_of(' ');
+    if (!out.empty() && first != std::string::npos && first >= 4) {
+      out.pop_back();  // the '\n' of the line continued
+      const auto open = out.rfind('\n') == std::string::npos ? 0 : out.rfind('\n');
+      const bool in_choices = out.back() == ',' && out.find('{', open) != std::string::npos &&
+                              out.find('}', out.find('{', open)) == std::string::npos;
+      out += (in_choices ? "" : " ") + line.substr(first);
+    } else {
+      out += line;
+    }
+    out += '\n';
+  }
+  return out;
+}
+
 // `arguments` is appended to the executable's path as given (shell syntax: quote what needs quoting).
 inline CliOutcome run_cli(const std::string& arguments) {
   char out_name[] = "/tmp/restitution-cli-out-XXXXXX";

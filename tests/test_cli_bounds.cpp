@@ -17,6 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using test_support::run_cli;
+using test_support::unwrapped_help;
 
 void expect_refused(const std::string& arguments, const std::string& words) {
   const auto r = run_cli(arguments);
@@ -74,7 +75,7 @@ TEST(CliBounds, CountsHaveUpperBounds) {
   expect_refused("fast-table --out /tmp/restitution-x.h --seed -1", "--seed");
   expect_refused("sweep --zeta-min 0 --zeta-max 1 --points 99999999999999999999 --out /tmp/restitution-x.csv",
                  "got '99999999999999999999'");
-  EXPECT_NE(run_cli("sweep --help").out.find("in [1, 10000000]"), std::string::npos);
+  EXPECT_NE(unwrapped_help(run_cli("sweep --help").out).find("in [1, 10000000]"), std::string::npos);
 }
 
 // Item 12/13: -0 prints as 0; dem prints small ε in significant digits, not %.10f; the help texts say what
@@ -82,14 +83,14 @@ TEST(CliBounds, CountsHaveUpperBounds) {
 TEST(CliWords, NegativeZeroZetaAndHelpTexts) {
   EXPECT_EQ(run_cli("eps --zeta -0 --json").out.rfind("{\"zeta\":0.0,", 0), 0U);
   // --velocity is required with --eps: its help line must not offer a default of 1 m/s.
-  const std::string dem_help = run_cli("dem --help").out;
+  const std::string dem_help = unwrapped_help(run_cli("dem --help").out);
   const std::size_t velocity = dem_help.find("--velocity FLOAT");
   ASSERT_NE(velocity, std::string::npos) << dem_help;
   const std::string velocity_line = dem_help.substr(velocity, dem_help.find('\n', velocity) - velocity);
   EXPECT_EQ(velocity_line.find("default 1)"), std::string::npos) << velocity_line;
   EXPECT_NE(velocity_line.find("required with --eps"), std::string::npos) << velocity_line;
   for (const char* command : {"stability", "damping-check", "series eval"}) {
-    const std::string help = run_cli(std::string(command) + " --help").out;
+    const std::string help = unwrapped_help(run_cli(std::string(command) + " --help").out);
     EXPECT_EQ(help.find("17 significant"), std::string::npos) << command;
     EXPECT_NE(help.find("shortest form"), std::string::npos) << command;
   }
