@@ -30,9 +30,7 @@ def main():
             ax.loglog(t, e, "o-", label=style.ENGINES.get(engine, engine))
         ax.set_xlabel(r"mean time per solve (µs)")
         ax.grid(True, which="both")
-        # Which end the panel is (no titles: the caption says the rest). Upper right: slow and inaccurate, where a
-        # work-precision diagram has no points ("best" hid the last Adams point of the delayed-recovery panel).
-        ax.legend(title=END_WORDS.get(end, end), loc="upper right")
+        ax.legend(title=END_WORDS.get(end, end))  # which end the panel is (no titles: the caption says the rest)
     axes[0].set_ylabel(r"worst error $|\Delta\varepsilon| / \min(\varepsilon, 1-\varepsilon)$")
     style.save(fig, a.png, a.format)
 
