@@ -37,6 +37,22 @@ inline std::vector<std::string> lines_of(const std::string& text) {
   return lines;
 }
 
+// The subcommands listed under "Subcommands:" in a --help text.
+inline std::vector<std::string> subcommands_in(const std::string& help) {
+  std::vector<std::string> names;
+  bool listing = false;
+  for (const std::string& line : lines_of(help)) {
+    if (line.rfind("Subcommands:", 0) == 0) {
+      listing = true;
+    } else if (listing && line.size() > 2 && line[0] == ' ' && line[2] != ' ') {
+      names.push_back(line.substr(2, line.find(' ', 2) - 2));
+    } else if (listing && (line.empty() || line[0] != ' ')) {
+      listing = false;
+    }
+  }
+  return names;
+}
+
 // A --help text with the wrapping to 80 columns undone (src/cli/common/help_format): each option, entry and
 // paragraph on one line again, so that a test finds a phrase wherever the wrap fell. A line indented four or
 // more spaces continues the one before; a list of choices broken after its comma joins without a space.

@@ -16,6 +16,7 @@ using restitution::cli::kHelpWidth;
 using restitution::cli::wrap_help_text;
 using restitution::test_support::lines_of;
 using restitution::test_support::run_cli;
+using restitution::test_support::subcommands_in;
 
 std::vector<std::string> words_of(const std::string& text) {
   std::istringstream in(text);
@@ -24,25 +25,8 @@ std::vector<std::string> words_of(const std::string& text) {
   return words;
 }
 
-// The subcommands the program lists under "Subcommands:" in its own --help.
-std::vector<std::string> subcommands() {
-  const auto help = run_cli("--help");
-  std::vector<std::string> names;
-  bool listed = false;
-  for (const auto& line : lines_of(help.out)) {
-    if (line.rfind("Subcommands:", 0) == 0) {
-      listed = true;
-    } else if (listed && line.rfind("  ", 0) == 0 && line.find_first_not_of(' ') == 2) {
-      names.push_back(words_of(line).front());
-    } else if (listed && line.empty() && !names.empty()) {
-      break;
-    }
-  }
-  return names;
-}
-
 TEST(HelpWidth, EveryCommandsHelpFitsEightyColumns) {
-  const auto names = subcommands();
+  const auto names = subcommands_in(run_cli("--help").out);
   ASSERT_GE(names.size(), 15u) << "the program's --help lists its subcommands";
   std::vector<std::string> commands{""};
   commands.insert(commands.end(), names.begin(), names.end());

@@ -22,6 +22,7 @@ namespace fs = std::filesystem;
 using restitution::test_support::lines_of;
 using restitution::test_support::run_cli;
 using restitution::test_support::slurp;
+using restitution::test_support::subcommands_in;
 using restitution::test_support::TempFolder;
 
 const std::string kMaterial = " --young-modulus 1e7 --poisson-ratio 0.45 --radius 0.01 --density 1100";
@@ -46,22 +47,6 @@ std::map<std::string, std::string> json_invocations(const fs::path& folder) {
        "oblique --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 "
        "--dissipative-constant 1e-7 --tangential mindlin --friction 0.3 --angle 30 --json"},
   };
-}
-
-// The subcommands listed under "Subcommands:" in a --help text.
-std::vector<std::string> subcommands_in(const std::string& help) {
-  std::vector<std::string> names;
-  bool listing = false;
-  for (const std::string& line : lines_of(help)) {
-    if (line.rfind("Subcommands:", 0) == 0) {
-      listing = true;
-    } else if (listing && line.size() > 2 && line[0] == ' ' && line[2] != ' ') {
-      names.push_back(line.substr(2, line.find(' ', 2) - 2));
-    } else if (listing && (line.empty() || line[0] != ' ')) {
-      listing = false;
-    }
-  }
-  return names;
 }
 
 // Every command path whose --help offers --json, found from the program itself.
