@@ -206,5 +206,15 @@ TEST(FitData, BadDataAreRefusedNamingThePoint) {
   refused({{1.0, 2.0}, {0.5}, {}}, "2 speeds but 1");
 }
 
+// Two degrees of freedom (three points): the χ² distribution's upper tail is exp(-χ²/2) in closed form; one
+// point leaves nothing to test.
+TEST(FitChi2, PValueIsTheUpperTailOfTheChi2Distribution) {
+  for (const double chi2 : {0.0, 0.5, 4.0, 9.21034037, 30.0}) {
+    EXPECT_NEAR(chi2_p_value(chi2, 3), std::exp(-chi2 / 2.0), 1e-14 * std::exp(-chi2 / 2.0) + 1e-300) << chi2;
+  }
+  EXPECT_NEAR(chi2_p_value(6.634896601021214, 2), kFitSignificance, 1e-12);
+  EXPECT_EQ(chi2_p_value(100.0, 1), 1.0);
+}
+
 }  // namespace
 }  // namespace restitution

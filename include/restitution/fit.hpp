@@ -80,6 +80,14 @@ struct FitInterval {
 // p-value from the t distribution, or the normal one with known σ) and a Wald-Wolfowitz runs test of the
 // residuals' signs ordered by speed (one-sided p-value for too few runs). Available with >= 3 points and
 // >= 2 distinct speeds; otherwise the verdict is "n/a" and `unavailable` says why.
+// The level of every verdict on a law (the residual tests' and the χ² test's): 1 %.
+inline constexpr double kFitSignificance = 0.01;
+
+// With σ given, χ² of a law that describes `points` measurements follows the χ² distribution of points − 1
+// degrees of freedom: the probability of a χ² at least this large (1 when points < 2). With σ estimated from
+// the residuals χ²/dof is that estimate and the test says nothing: do not call it then.
+double chi2_p_value(double chi2, std::size_t points);
+
 struct ResidualTests {
   bool available = false;
   double slope = 0.0;        // d(ε_measured - ε_law)/d ln v

@@ -4,6 +4,7 @@
 // (plasticity or fracture at high speed, adhesion at low speed; 1999 paper §V on ice), so the residuals
 // acquire a trend in ln v.
 #include <algorithm>
+#include <boost/math/distributions/chi_squared.hpp>
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/distributions/students_t.hpp>
 #include <cmath>
@@ -13,8 +14,6 @@
 
 namespace restitution::fit_detail {
 namespace {
-
-constexpr double kSignificance = 0.01;
 
 void slope_test(const Problem& problem, const std::vector<double>& residual, ResidualTests& out) {
   const FitData& d = *problem.data;
@@ -103,12 +102,22 @@ ResidualTests residual_tests(const Problem& problem, const std::vector<double>& 
   for (std::size_t i = 0; i < problem.size(); ++i) residual[i] = d.eps[i] - model_eps[i];
   slope_test(problem, residual, out);
   runs_test(problem, residual, out);
-  if (out.slope_p_value < kSignificance) {
+  if (out.slope_p_value < kFitSignificance) {
     out.verdict = out.slope < 0.0 ? "falls-with-speed" : "rises-with-speed";
-  } else if (out.runs_p_value < kSignificance) {
+  } else if (out.runs_p_value < kFitSignificance) {
     out.verdict = "runs";
   }
   return out;
 }
 
 }  // namespace restitution::fit_detail
+
+namespace restitution {
+
+double chi2_p_value(double chi2, std::size_t points) {
+  if (points < 2) return 1.0;
+  const auto dof = static_cast<double>(points - 1);
+  return boost::math::cdf(boost::math::complement(boost::math::chi_squared(dof), chi2));
+}
+
+}  // namespace restitution

@@ -5,13 +5,13 @@
 
 #include <algorithm>
 #include <array>
-#include <boost/math/distributions/chi_squared.hpp>
 #include <cmath>
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 
 #include "restitution/errors.hpp"
+#include "restitution/fit.hpp"
 #include "restitution/units.hpp"
 
 namespace restitution::cli {
@@ -19,9 +19,6 @@ namespace {
 
 using Json = nlohmann::json;
 
-// The level of fit-data's residual tests (docs/fit.md), used for the χ² test too: one level for every
-// verdict on a law.
-constexpr double kSignificance = 0.01;
 constexpr std::size_t kShownCharacters = 40;
 
 // A value from the file as a message shows it: the type for containers, at most 40 characters of a string
@@ -246,14 +243,13 @@ std::vector<std::string> rejections(const std::vector<Entry>& fits, std::size_t 
     out.push_back(fmt::format("the fit's best law is {} (AIC {:.4g} against {:.4g})", fit_words(fits[best]),
                               fits[best].aic, f.aic));
   }
-  // With σ given, χ² of a law that describes the data follows the χ² distribution of n − 1 degrees of
-  // freedom; with σ estimated from the residuals χ²/dof is that estimate and tests nothing.
+  // The χ² test means something with the data's own σ only (restitution/fit.hpp, chi2_p_value).
   if (!sigma_estimated && points > 1) {
     const auto dof = static_cast<double>(points - 1);
-    const double p = boost::math::cdf(boost::math::complement(boost::math::chi_squared(dof), f.chi2));
-    if (p < kSignificance) {
-      out.push_back(
-          fmt::format("chi2/dof = {:.4g} with the data's sigma (p = {:.2g} < 0.01)", f.chi2 / dof, p));
+    const double p = chi2_p_value(f.chi2, points);
+    if (p < kFitSignificance) {
+      out.push_back(fmt::format("chi2/dof = {:.4g} with the data's sigma (p = {:.2g} < {:g})", f.chi2 / dof,
+                                p, kFitSignificance));
     }
   }
   for (const char* trend : {"falls-with-speed", "rises-with-speed", "runs"}) {
