@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 #include "cli/common/build_json.hpp"
 #include "cli/common/json_writer.hpp"
@@ -77,33 +76,19 @@ class SceneWriter {
     json_.begin_object();
     json_.field("scene", scene_.file_name).field("title", scene_.title);
     json_.field("tolerance", scene_.tolerance).field("method", method_name(scene_.method));
-    // Sections in the order the scene file lists them.
-    std::vector<std::tuple<int, int, std::size_t>> order;  // line, kind, index
-    for (std::size_t i = 0; i < scene_.sweeps.size(); ++i) order.emplace_back(scene_.sweeps[i].line, 0, i);
-    for (std::size_t i = 0; i < scene_.trajectories.size(); ++i) {
-      order.emplace_back(scene_.trajectories[i].line, 1, i);
-    }
-    for (std::size_t i = 0; i < scene_.dashpots.size(); ++i)
-      order.emplace_back(scene_.dashpots[i].line, 2, i);
-    for (std::size_t i = 0; i < scene_.dems.size(); ++i) order.emplace_back(scene_.dems[i].line, 3, i);
-    for (std::size_t i = 0; i < scene_.damping_checks.size(); ++i) {
-      order.emplace_back(scene_.damping_checks[i].line, 4, i);
-    }
-    for (std::size_t i = 0; i < scene_.fits.size(); ++i) order.emplace_back(scene_.fits[i].line, 5, i);
-    for (std::size_t i = 0; i < scene_.gases.size(); ++i) order.emplace_back(scene_.gases[i].line, 6, i);
-    for (std::size_t i = 0; i < scene_.obliques.size(); ++i)
-      order.emplace_back(scene_.obliques[i].line, 7, i);
-    std::sort(order.begin(), order.end());
-    for (const auto& [line, kind, i] : order) {
-      if (kind == 0) sweep(i);
-      if (kind == 1) trajectory(i);
-      if (kind == 2) dashpot(i);
-      if (kind == 3) dem(i);
-      if (kind == 4) damping_check(i);
-      if (kind == 5) fit(i);
-      if (kind == 6) gas(i);
-      if (kind == 7) oblique(i);
-    }
+    // Sections in the order the scene file lists them, each written by its member function.
+    std::vector<SectionEntry> order;
+    collect(order, scene_.sweeps, &SceneWriter::sweep);
+    collect(order, scene_.trajectories, &SceneWriter::trajectory);
+    collect(order, scene_.dashpots, &SceneWriter::dashpot);
+    collect(order, scene_.dems, &SceneWriter::dem);
+    collect(order, scene_.damping_checks, &SceneWriter::damping_check);
+    collect(order, scene_.fits, &SceneWriter::fit);
+    collect(order, scene_.gases, &SceneWriter::gas);
+    collect(order, scene_.obliques, &SceneWriter::oblique);
+    std::stable_sort(order.begin(), order.end(),
+                     [](const SectionEntry& a, const SectionEntry& b) { return a.line < b.line; });
+    for (const SectionEntry& entry : order) (this->*entry.write)(entry.index);
     calibrations();
     studies();
     footer(seconds);
@@ -113,6 +98,18 @@ class SceneWriter {
   }
 
  private:
+  using SectionWriter = void (SceneWriter::*)(std::size_t);
+  struct SectionEntry {
+    int line = 0;  // of the section's header in the scene file
+    SectionWriter write = nullptr;
+    std::size_t index = 0;
+  };
+  template <class Section>
+  static void collect(std::vector<SectionEntry>& order, const std::vector<Section>& sections,
+                      SectionWriter write) {
+    for (std::size_t i = 0; i < sections.size(); ++i) order.push_back({sections[i].line, write, i});
+  }
+
   void write_file(const std::string& name, const std::string& content) {
     throw_if_interrupted();  // Ctrl-C stops the run here, between files, never inside one
     write_file_atomically(folder_ / name, content);
