@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "dem/lines_check.hpp"
+#include "restitution/solve_types.hpp"
 
 namespace restitution::gas_deck {
 
@@ -49,7 +50,7 @@ struct GasDeckRequest {
   double max_eps_error = 1e-3;  // bound on the worst-phase |Δε| at the fast end of the impact speeds
   int points_per_decade = 10;   // of the log-spaced temperature schedule
   std::uint64_t seed = 1;
-  double tolerance = 1e-10;
+  double tolerance = kDefaultTolerance;
 };
 
 struct GasDeck {
