@@ -38,7 +38,7 @@ inline constexpr std::size_t kMaxParticles = 10'000'000;
 inline constexpr std::size_t kDataBytesPerSphere = 160;
 
 struct GasDeckRequest {
-  dem::Code code = dem::Code::lammps;  // lammps or liggghts
+  dem::Code code = dem::kDefaultCode;  // lammps or liggghts
   Material material;                   // one radius (radius1 = radius2) and the density
   dem::DampingSource damping;  // A, or ε at a speed (also the constant-ε companion's calibration speed)
   CollisionEnd end = CollisionEnd::delayed_recovery;

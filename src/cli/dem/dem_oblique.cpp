@@ -76,6 +76,20 @@ std::vector<ContractedOblique> impacts_at(const DemOblique& r, const TangentialF
   return out;
 }
 
+// The bound on the code's e_t error per step of its reader (dem::CodeEntry::oblique).
+double et_error_coefficient(const DemOblique& r) {
+  switch (dem::code_entry(r.code).oblique) {
+    case dem::ObliqueReader::liggghts_history:
+      return liggghts_et_error_coefficient();
+    case dem::ObliqueReader::yade_mindlin:
+      return yade_et_error_coefficient();
+    case dem::ObliqueReader::lammps_granular:
+    case dem::ObliqueReader::none:
+      break;
+  }
+  return lammps_et_error_coefficient(r.tangential.kind);
+}
+
 // Solves the impacts, the steps per contact and the inverse; `line_with` is the printed line that carries the
 // tangential parameter, with the value found in place of the printed one.
 DemOblique complete(DemOblique r, const DemObliqueOptions& o,
@@ -83,9 +97,7 @@ DemOblique complete(DemOblique r, const DemObliqueOptions& o,
   r.angles_deg = o.angles_deg.empty() ? kDefaultAngles : o.angles_deg;
   r.impacts = impacts_at(r, r.tangential);
   r.et_accuracy = o.et_accuracy;
-  r.error_coefficient = r.code == dem::Code::liggghts ? liggghts_et_error_coefficient()
-                        : r.code == dem::Code::yade   ? yade_et_error_coefficient()
-                                                      : lammps_et_error_coefficient(r.tangential.kind);
+  r.error_coefficient = et_error_coefficient(r);
   r.steps_per_contact = std::ceil(r.error_coefficient / r.et_accuracy);
   double shortest = HUGE_VAL;
   for (const auto& i : r.impacts) shortest = std::min(shortest, i.result.contact_time_s);
@@ -175,21 +187,12 @@ void print_impacts(const DemOblique& r, const std::vector<ContractedOblique>& im
 }
 
 const char* code_title(dem::Code code) {
-  return code == dem::Code::liggghts ? "LIGGGHTS" : code == dem::Code::yade ? "YADE" : "LAMMPS";
+  return dem::code_entry(code).title;
 }
 
 // The Coulomb cap as each code applies it (docs/oblique.md, "LIGGGHTS and YADE").
 const char* cap_rule(dem::Code code) {
-  if (code == dem::Code::yade) {
-    return "the cap tests the elastic shear force alone (|F_e| > tan(frictionAngle) F_n, F_e' = -ks s "
-           "incremental) and the capped force carries no damping; below the cap the damped force may exceed "
-           "it";
-  }
-  return code == dem::Code::liggghts
-             ? "the cap tests the elastic force alone (kt |xi| > mu |F_n|) and the capped force carries no "
-               "damping; below the cap the damped force may exceed mu |F_n|"
-             : "the cap tests the whole trial force, elastic and damping (|F_t| > mu |F_n|), and the capped "
-               "force is mu |F_n| along it";
+  return dem::code_entry(code).cap_rule;
 }
 
 }  // namespace
@@ -269,7 +272,8 @@ bool tangential_chosen(const DemObliqueOptions& o) {
 
 void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double friction) {
   if (!tangential_chosen(o)) return;
-  if (deck.code != dem::Code::lammps) {
+  // The choice rewrites LAMMPS's granular line.
+  if (dem::code_entry(deck.code).oblique != dem::ObliqueReader::lammps_granular) {
     throw InvalidInput("--tangential, --tangential-stiffness and --tangential-damping are for --code lammps");
   }
   if (!(friction > 0.0)) {
@@ -322,16 +326,13 @@ void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double
 
 bool wants_oblique(const DemObliqueOptions& o, dem::Code code, double friction) {
   const bool asked = !o.angles_deg.empty() || o.target_et || o.reference_angle_deg || tangential_chosen(o);
-  if (code == dem::Code::liggghts && tangential_chosen(o)) {
-    throw InvalidInput(
-        "--tangential, --tangential-stiffness and --tangential-damping are for --code lammps: the liggghts "
-        "lines carry one tangential model, `tangential history` with kt = 8 G* and gammat = gamman");
+  const dem::CodeEntry& entry = dem::code_entry(code);
+  if (entry.tangential_refusal != nullptr && tangential_chosen(o))
+    throw InvalidInput(entry.tangential_refusal);
+  if (entry.inverse_refusal != nullptr && (o.target_et || o.reference_angle_deg)) {
+    throw InvalidInput(entry.inverse_refusal);
   }
-  // YADE's lines give their impacts at --angles; YADE takes kso from Y and nu, so no --target-et.
-  if (code == dem::Code::yade && (o.target_et || o.reference_angle_deg || tangential_chosen(o))) {
-    throw InvalidInput("--target-et, --reference-angle and --tangential are for --code lammps (or liggghts)");
-  }
-  if (code != dem::Code::lammps && code != dem::Code::liggghts && code != dem::Code::yade) {
+  if (entry.oblique == dem::ObliqueReader::none) {
     if (asked) {
       throw InvalidInput(
           "--angles, --target-et and --reference-angle are for --code lammps or liggghts, --tangential for "
@@ -376,7 +377,7 @@ DemOblique liggghts_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, c
         "it the lines are frictionless (tangential no_history)");
   }
   DemOblique r;
-  r.code = dem::Code::liggghts;
+  r.code = deck.code;
   const double kn = liggghts_property(deck, "kn");
   const double gamman = liggghts_property(deck, "gamman");
   const double kt = liggghts_property(deck, "kt");
@@ -413,18 +414,17 @@ DemOblique liggghts_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, c
   });
 }
 
-}  // namespace
-
-DemOblique pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
-                        double speed_m_s, double tolerance) {
-  if (deck.code == dem::Code::liggghts) return liggghts_pair_oblique(deck, pair, o, speed_m_s, tolerance);
+// LAMMPS's pair granular line read as LAMMPS reads it.
+DemOblique lammps_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
+                               double speed_m_s, double tolerance) {
   DemOblique r;
+  r.code = deck.code;
   const std::string& line = deck.lines.at(1);
   const TangentialWords words = tangential_words(words_of(line));
   r.tangential_words = joined(words.words);
   // pair granular: E* and η_n0 m* sqrt(R*) (dem/deck_lammps.cpp read_lammps); `mindlin NULL` is 8 G* with
   // 1/G* = 2 · 2(2 - ν)(1 + ν)/E for two types of one material (pair_granular.cpp:1021-1023, 1790).
-  const dem::Coefficients normal = dem::code_entry(dem::Code::lammps).read(deck, pair);
+  const dem::Coefficients normal = dem::code_entry(deck.code).read(deck, pair);
   r.normal = {LawKind::viscoelastic_hertz, normal.elastic, normal.damping};
   const double e = deck.parameter("E");
   const double nu = deck.parameter("nu");
@@ -438,9 +438,12 @@ DemOblique pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemO
   return complete(r, o, lammps_line_with(line, words));
 }
 
+}  // namespace
+
 DemOblique wall_oblique(const dem::Deck& deck, const dem::Pair& contact, const DemObliqueOptions& o,
                         double speed_m_s, double tolerance) {
   DemOblique r;
+  r.code = deck.code;
   const std::string& line = deck.lines.at(0);
   const TangentialWords words = tangential_words(words_of(line));
   r.tangential_words = joined(words.words);
@@ -473,7 +476,7 @@ DemOblique yade_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const
         "2023.02a prints the betan lines whose impacts are");
   }
   DemOblique r;
-  r.code = dem::Code::yade;
+  r.code = deck.code;
   r.tangential_words = "Law2_ScGeom_MindlinPhys_Mindlin, betas = betan";
   // Ip2_FrictMat_FrictMat_MindlinPhys::go for one material: E* = Y/(2(1 - ν²)), G = Y/(2(1 + ν)), R* from
   // the radii, kno = (4/3) E* sqrt(R*), kso = 2 sqrt(4 R*) G/(2 - ν); Law2: cn = 2 betan sqrt(m* kn), kn =
@@ -498,6 +501,23 @@ DemOblique yade_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const
   return complete(r, o, [](double /*parameter*/) -> std::string {
     throw std::logic_error("no --target-et for YADE's lines");
   });
+}
+
+std::optional<DemOblique> pair_oblique(const dem::Deck& deck, const dem::Pair& pair,
+                                       const DemObliqueOptions& o, double speed_m_s, double tolerance) {
+  switch (dem::code_entry(deck.code).oblique) {
+    case dem::ObliqueReader::lammps_granular:
+      return lammps_pair_oblique(deck, pair, o, speed_m_s, tolerance);
+    case dem::ObliqueReader::liggghts_history:
+      return liggghts_pair_oblique(deck, pair, o, speed_m_s, tolerance);
+    case dem::ObliqueReader::yade_mindlin:
+      // YADE 2024.02a's (en, vn) lines: not modelled; said where --angles asks for them.
+      if (o.angles_deg.empty() && !yade_lines_modelled(deck)) return std::nullopt;
+      return yade_pair_oblique(deck, pair, o, speed_m_s, tolerance);
+    case dem::ObliqueReader::none:
+      break;
+  }
+  return std::nullopt;
 }
 
 void print_oblique_text(const DemOblique& r, const char* c) {
