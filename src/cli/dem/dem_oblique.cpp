@@ -8,6 +8,9 @@
 #include <functional>
 #include <sstream>
 
+#include "dem/deck_liggghts.hpp"
+#include "dem/deck_notes.hpp"
+#include "dem/dem_codes.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
 
@@ -132,23 +135,6 @@ std::function<std::string(double)> lammps_line_with(const std::string& line, con
     changed.at(position + 1) = fmt::format("{}", parameter);
     return joined(changed);
   };
-}
-
-// LIGGGHTS's per-type-pair property: `fix ID all property/global KEY peratomtypepair 1 VALUE`.
-constexpr std::size_t kLiggghtsKeyWord = 4;
-constexpr std::size_t kLiggghtsValueWord = 7;
-const std::string& liggghts_property_line(const dem::Deck& deck, const std::string& key) {
-  for (const std::string& line : deck.lines) {
-    const std::vector<std::string> words = words_of(line);
-    if (words.size() == kLiggghtsValueWord + 1 && words[3] == "property/global" &&
-        words[kLiggghtsKeyWord] == key && words[5] == "peratomtypepair" && words[6] == "1") {
-      return line;
-    }
-  }
-  throw std::logic_error("a LIGGGHTS deck without its one-type " + key + " line");
-}
-double liggghts_property(const dem::Deck& deck, const std::string& key) {
-  return std::stod(words_of(liggghts_property_line(deck, key)).at(kLiggghtsValueWord));
 }
 
 void write_impacts(JsonWriter& json, const DemOblique& r, const std::vector<ContractedOblique>& impacts) {
@@ -367,10 +353,11 @@ namespace {
 // LIGGGHTS's lines read as LIGGGHTS reads them: hertz/stiffness's kn sqrt(R* δ) and gamman m* sqrt(R* δ)
 // (normal_model_hertz_stiffness.h:118-122), `tangential history`'s kt sqrt(R* δ) and gammat m* sqrt(R* δ)
 // (so γ_t = gammat/gamman on the normal coefficient), the cap on the elastic force alone, torque and
-// contact-point arm R - δ/2 (TangentialKind::liggghts_history), limitForce on: the delayed-recovery end.
+// contact-point arm R - δ/2 (TangentialKind::liggghts_history), limitForce on: the delayed-recovery end. The
+// numbers are the writer's parameters (dem/deck_liggghts.cpp), which its lines print.
 DemOblique liggghts_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
                                  double speed_m_s, double tolerance) {
-  const double mu = liggghts_property(deck, "coefficientFriction");
+  const double mu = deck.parameter("coefficientFriction");
   if (!(mu > 0.0)) {
     throw InvalidInput(
         "--angles, --target-et and --reference-angle with --code liggghts need --friction MU > 0: without "
@@ -378,10 +365,10 @@ DemOblique liggghts_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, c
   }
   DemOblique r;
   r.code = deck.code;
-  const double kn = liggghts_property(deck, "kn");
-  const double gamman = liggghts_property(deck, "gamman");
-  const double kt = liggghts_property(deck, "kt");
-  const double gammat = liggghts_property(deck, "gammat");
+  const double kn = deck.parameter("kn");
+  const double gamman = deck.parameter("gamman");
+  const double kt = deck.parameter("kt");
+  const double gammat = deck.parameter("gammat");
   const double sqrt_radius = std::sqrt(pair.effective_radius_m);
   r.normal = {LawKind::viscoelastic_hertz, kn * sqrt_radius, gamman * pair.effective_mass_kg * sqrt_radius};
   r.tangential.kind = TangentialKind::liggghts_history;
@@ -390,28 +377,16 @@ DemOblique liggghts_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, c
   if (gamman == 0.0 && gammat != 0.0) throw std::logic_error("LIGGGHTS lines with gammat but no gamman");
   r.tangential.damping_factor = gamman == 0.0 ? 0.0 : gammat / gamman;
   r.tangential.friction = mu;
-  const std::vector<std::string> style = words_of(deck.lines.at(5));
-  r.tangential_words =
-      fmt::format("history, kt {}, gammat {}, coefficientFriction {}",
-                  words_of(liggghts_property_line(deck, "kt")).at(kLiggghtsValueWord),
-                  words_of(liggghts_property_line(deck, "gammat")).at(kLiggghtsValueWord),
-                  words_of(liggghts_property_line(deck, "coefficientFriction")).at(kLiggghtsValueWord));
+  r.tangential_words = fmt::format("history, kt {}, gammat {}, coefficientFriction {}", dem::num(kt),
+                                   dem::num(gammat), dem::num(mu));
   r.geometry.first = solid_sphere(pair.radius1_m, pair.mass1_kg);
   r.geometry.second = solid_sphere(pair.radius2_m, pair.mass2_kg);
   r.geometry.torque_arm = TorqueArm::radius_minus_half_overlap;         // surface_model_default.h:176-188
   r.geometry.contact_point_arm = TorqueArm::radius_minus_half_overlap;  // and tangential_model_history.h:254
-  const auto limit = std::find(style.begin(), style.end(), "limitForce");
-  r.options.end = limit != style.end() && limit + 1 != style.end() && *(limit + 1) == "on"
-                      ? CollisionEnd::delayed_recovery
-                      : CollisionEnd::naive;
+  r.options.end = deck.end;  // limitForce on at the delayed-recovery end
   r.speed_m_s = speed_m_s;
   r.tolerance = std::clamp(tolerance, kSmallestObliqueTolerance, kLoosestObliqueTolerance);
-  const std::string kt_line = liggghts_property_line(deck, "kt");
-  return complete(r, o, [kt_line](double parameter) {
-    std::vector<std::string> changed = words_of(kt_line);
-    changed.at(kLiggghtsValueWord) = fmt::format("{}", parameter);
-    return joined(changed);
-  });
+  return complete(r, o, [](double parameter) { return dem::liggghts_one_type_line("kt", parameter); });
 }
 
 // LAMMPS's pair granular line read as LAMMPS reads it.
