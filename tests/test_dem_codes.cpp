@@ -8,6 +8,7 @@
 
 #include "cli_runner.hpp"
 #include "dem/check_deck.hpp"
+#include "dem/check_deck_codes.hpp"
 #include "dem/deck.hpp"
 #include "dem/dem_codes.hpp"
 #include "dem/polydisperse_lines.hpp"
@@ -55,6 +56,76 @@ TEST(DemCodes, EveryEntryIsWholeAndNamesRoundTrip) {
       EXPECT_EQ(std::string(e.version_query).rfind(std::string(e.program) + " ", 0), 0U);
   }
   EXPECT_EQ(names.size(), 5U);  // lammps, liggghts, mercurydpm, yade, chrono
+}
+
+// The facets that gas decks, oblique impacts, production time steps and check decks read from the table:
+// each is there whole, or absent whole.
+TEST(DemCodes, EveryFacetIsWholeOrAbsent) {
+  for (const CodeEntry& e : dem::dem_codes()) {
+    SCOPED_TRACE(e.name);
+    ASSERT_NE(e.title, nullptr);
+    EXPECT_FALSE(std::string(e.title).empty());
+    // A LAMMPS-family check deck has its atom style; only it evaluates $(...) in place.
+    const bool lammps_family = e.check_deck == &dem::lammps_family_check_deck;
+    EXPECT_EQ(lammps_family, e.check_deck_atom_style != nullptr);
+    if (e.immediate_variables) EXPECT_TRUE(lammps_family);
+    if (lammps_family) EXPECT_EQ(std::string(e.check_deck_atom_style).rfind("atom_style ", 0), 0U);
+    // A companion has the words its header gives it; a gas deck is a LAMMPS-family input with a companion
+    // and a program to run it.
+    EXPECT_EQ(e.companion == dem::Companion::none, e.companion_words == nullptr);
+    if (e.gas_deck) {
+      EXPECT_TRUE(lammps_family);
+      EXPECT_NE(e.companion, dem::Companion::none);
+      EXPECT_FALSE(std::string(e.program).empty());
+    }
+    // The velocity-Verlet the production options model is a program's integrator.
+    if (e.velocity_verlet) EXPECT_FALSE(std::string(e.program).empty());
+    // Oblique impacts: a reader comes with its cap rule, a check deck and its steps, or none of them.
+    const bool oblique = e.oblique != dem::ObliqueReader::none;
+    EXPECT_EQ(oblique, e.cap_rule != nullptr);
+    EXPECT_EQ(oblique, e.oblique_check_steps > 0);
+    if (oblique) EXPECT_NE(e.check_deck, nullptr);
+    // --tangential rewrites LAMMPS's granular line: every other reader says why it refuses it.
+    if (oblique) EXPECT_EQ(e.oblique == dem::ObliqueReader::lammps_granular, e.tangential_refusal == nullptr);
+    if (!oblique) EXPECT_EQ(e.tangential_refusal, nullptr);
+    if (!oblique) EXPECT_EQ(e.inverse_refusal, nullptr);
+  }
+}
+
+// What the CLI refuses, it refuses with the table's words, for every code.
+TEST(DemCodes, TheCommandLineRefusesByTheTable) {
+  const std::string lines =
+      " --young-modulus 2.1e11 --poisson-ratio 0.3 --radius 0.001 --density 7850 --eps 0.9 --velocity 1 "
+      "--yade-version 2023.02a --friction 0.3";
+  for (const CodeEntry& e : dem::dem_codes()) {
+    SCOPED_TRACE(e.name);
+    const std::string dem = std::string("dem --code ") + e.name + lines;
+    const auto tangential =
+        test_support::run_cli(dem + " --tangential linear_history --tangential-stiffness 1e6");
+    if (e.tangential_refusal != nullptr) {
+      EXPECT_EQ(tangential.status, 2);
+      EXPECT_NE(tangential.err.find(e.tangential_refusal), std::string::npos) << tangential.err;
+    }
+    const auto inverse = test_support::run_cli(dem + " --target-et 0.3 --reference-angle 20");
+    EXPECT_EQ(inverse.status, e.oblique != dem::ObliqueReader::none && e.inverse_refusal == nullptr ? 0 : 2)
+        << inverse.err;
+    if (e.inverse_refusal != nullptr) EXPECT_NE(inverse.err.find(e.inverse_refusal), std::string::npos);
+    const auto steps = test_support::run_cli(dem + " --timestep 1e-7");
+    EXPECT_EQ(steps.status, e.velocity_verlet ? 0 : 2) << steps.err;
+    test_support::TempFolder folder;
+    const auto gas = test_support::run_cli(
+        std::string(
+            "gas --young-modulus 1e8 --poisson-ratio 0.4 --density 920 --radius 0.005 --eps 0.8 "
+            "--velocity 2 --packing-fraction 0.1 --rms-speed 1 --haff-times 30 --particles 20 --code ") +
+        e.name + " --deck " + (folder.path / "g.in").string());
+    EXPECT_EQ(gas.status, e.gas_deck ? 0 : 2) << gas.err;
+    if (e.gas_deck) {
+      // The companion's header names the code's own damping; the commands its program.
+      const std::string companion = test_support::slurp((folder.path / "g_constant_eps.in").string());
+      EXPECT_NE(companion.find(e.companion_words), std::string::npos);
+      EXPECT_NE(gas.out.find(std::string(e.program) + " -in g.in"), std::string::npos) << gas.out;
+    }
+  }
 }
 
 TEST(DemCodes, EveryWriterWritesItsCodeAndClampingCodesRefuseTheNaiveEnd) {

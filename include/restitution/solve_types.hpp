@@ -36,9 +36,12 @@ const std::vector<std::string>& end_set_names();    // end_names() and "both"
 // The end as an identifier, for JSON keys and CSV column prefixes: "naive" | "delayed_recovery".
 const char* end_key(CollisionEnd end);
 
+// The accuracy every study, command, scene and Python call defaults to (the command line's --tolerance).
+inline constexpr double kDefaultTolerance = 1e-10;
+
 struct SolveOptions {
   // Accuracy the caller gets: |ε - ε_exact| <= tolerance · min(ε, 1 - ε) for every reported end.
-  double tolerance = 1e-10;
+  double tolerance = kDefaultTolerance;
   Method method = Method::automatic;
   EndSet ends = EndSet::both();
   bool keep_trajectory = false;  // record (τ, x, x', x'') at every internal step and at every event

@@ -77,8 +77,8 @@ def _same(a, b):
 
 def oblique(*, material, friction, angle, spin=0.0, speed=1.0, tangential="mindlin",
             tangential_stiffness=None, tangential_damping=0.0, wall=False, fixed_normal=False,
-            end="delayed-recovery", torque_arm="lammps", tolerance=1e-10, eps=None, velocity=None,
-            wall_young_modulus=None, wall_poisson_ratio=None, law="viscoelastic-hertz"):
+            end="delayed-recovery", torque_arm="lammps", tolerance=_core.default_tolerance, eps=None,
+            velocity=None, wall_young_modulus=None, wall_poisson_ratio=None, law="viscoelastic-hertz"):
     """Oblique impacts of two spheres of one material, or of a sphere on a wall, with a tangential model
     as Debian's LAMMPS writes it in `pair granular` (docs/oblique.md), as `restitution oblique` computes them.
 

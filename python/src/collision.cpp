@@ -286,7 +286,7 @@ void bind_collision(py::module_& m) {
       "has_dissipative_constant",
       [](const std::string& law) { return has_dissipative_constant(law_from_name(law)); }, py::arg("law"),
       "Whether beta, a Material and the dissipative constant A describe the law (viscoelastic Hertz).");
-  m.attr("default_tolerance") = SolveOptions{}.tolerance;
+  m.attr("default_tolerance") = kDefaultTolerance;
   m.attr("largest_checked_zeta") = kLargestCheckedZeta;
   m.attr("max_threads") = kMaxSweepThreads;  // as the command line's --threads
   m.def("require_checked_zeta", &require_checked_zeta, py::arg("zeta"),

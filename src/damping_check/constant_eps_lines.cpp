@@ -8,6 +8,7 @@
 #include "damping_check/inverse.hpp"
 #include "dem/deck_eps.hpp"
 #include "dem/deck_notes.hpp"
+#include "dem/dem_codes.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
 
@@ -29,8 +30,12 @@ std::string tangential_of(const std::string& line) {
 
 ConstantEpsLines constant_eps_lines(const dem::LinesResult& r, const dem::Pair& pair, double tolerance,
                                     CollisionSolver& solver) {
-  if (r.deck.code != dem::Code::lammps)
-    throw InvalidInput("--constant-eps: only --code lammps has its companion line here (damping tsuji)");
+  if (dem::code_entry(r.deck.code).companion != dem::Companion::damping_tsuji) {
+    throw InvalidInput(fmt::format(
+        "--constant-eps: only --code {} has its companion line here (damping tsuji)",
+        dem::code_list(
+            " or ", [](const dem::CodeEntry& e) { return e.companion == dem::Companion::damping_tsuji; })));
+  }
   const double k =
       hertz_stiffness(pair.effective_modulus_pa, pair.effective_radius_m) / pair.effective_mass_kg;
   ConstantEpsLines c;

@@ -58,8 +58,12 @@ std::size_t max_deck_collisions(Code code) {
 }
 
 std::size_t max_deck_types(Code code, std::size_t speeds) {
+  return max_deck_types(max_deck_collisions(code), speeds);
+}
+
+std::size_t max_deck_types(std::size_t collisions, std::size_t speeds) {
   std::size_t n = 0;
-  while ((n + 1) * (n + 2) / 2 * speeds <= max_deck_collisions(code)) ++n;
+  while ((n + 1) * (n + 2) / 2 * speeds <= collisions) ++n;
   return n;
 }
 

@@ -35,7 +35,7 @@ struct CheckPair {
 };
 
 struct CheckDeckRequest {
-  Code code = Code::lammps;
+  Code code = kDefaultCode;
   std::vector<std::string> lines;     // as `restitution dem` prints them, pasted unchanged
   std::vector<std::string> comments;  // written at the top of the deck (what made it), one per line
   int type_count = 1;                 // atom types the lines define (LAMMPS, LIGGGHTS)
@@ -59,8 +59,9 @@ inline constexpr std::size_t kMaxDeckCollisionsYade = 30;
 // shortest (T ∝ R v^{-1/5}): 17 classes of radii 1 to 10 mm at 0.1, 1 and 10 m/s take 2.2e9.
 inline constexpr double kMaxDeckSphereSteps = 5e9;
 std::size_t max_deck_collisions(Code code);
-// The most atom types whose every pair I <= J fits in one deck at `speeds` speeds.
+// The most atom types whose every pair I <= J fits in one deck at `speeds` speeds (of `collisions` at most).
 std::size_t max_deck_types(Code code, std::size_t speeds);
+std::size_t max_deck_types(std::size_t collisions, std::size_t speeds);
 // InvalidInput naming the bound unless type_pairs × speeds <= max_deck_collisions(code) (and both > 0 are
 // left to check_deck()).
 void require_deck_size(Code code, std::size_t type_pairs, std::size_t speeds);

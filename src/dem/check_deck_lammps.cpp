@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "dem/check_deck_codes.hpp"
+#include "dem/dem_codes.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::dem {
@@ -49,8 +50,7 @@ std::string lammps_family_pass(const CheckDeckRequest& r, double dt, long steps)
   const std::vector<Row> rows = rows_of(r);
   const Layout l = lammps_family_layout(r, dt * static_cast<double>(steps));
   std::string d = "units si\n";
-  d += r.code == Code::liggghts ? "atom_style granular\nnewton off\ncommunicate single vel yes\n"
-                                : "atom_style sphere\ncomm_modify vel yes\n";
+  d += code_entry(r.code).check_deck_atom_style;
   // No atom sorting: the spheres never mix, and its bins are the codes' first limit on the box.
   d += "atom_modify map array sort 0 0.0\nboundary f f f\n";
   const double low = -0.5 * l.spacing_m;

@@ -34,7 +34,7 @@ struct Parameter {
 };
 
 struct Deck {
-  Code code = Code::lammps;
+  Code code = kDefaultCode;
   CollisionEnd end = CollisionEnd::delayed_recovery;
   std::vector<Parameter> parameters;
   std::vector<std::string> lines;  // to paste into the code's input

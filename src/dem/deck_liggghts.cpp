@@ -27,11 +27,11 @@ void write_liggghts(Deck& d, const Pair& p, double a, double /*vn*/, double mu) 
       {"kt", kt, "k_t = 8 G* (Mindlin) [Pa], multiplied by sqrt(R_eff xi); 0: frictionless"});
   d.parameters.push_back({"gammat", gt, "gamma_t = gamma_n [1/(m s)]; 0: frictionless"});
   d.parameters.push_back({"coefficientFriction", mu, "Coulomb friction coefficient [1]"});
-  d.lines = {fmt::format("fix dem_kn all property/global kn peratomtypepair 1 {}", num(kn)),
-             fmt::format("fix dem_kt all property/global kt peratomtypepair 1 {}", num(kt)),
-             fmt::format("fix dem_gamman all property/global gamman peratomtypepair 1 {}", num(gn)),
-             fmt::format("fix dem_gammat all property/global gammat peratomtypepair 1 {}", num(gt)),
-             fmt::format("fix dem_cof all property/global coefficientFriction peratomtypepair 1 {}", num(mu)),
+  d.lines = {liggghts_one_type_line("kn", kn),
+             liggghts_one_type_line("kt", kt),
+             liggghts_one_type_line("gamman", gn),
+             liggghts_one_type_line("gammat", gt),
+             liggghts_one_type_line("coefficientFriction", mu),
              fmt::format("pair_style gran model hertz/stiffness tangential {} limitForce {}",
                          mu > 0.0 ? "history" : "no_history",
                          d.end == CollisionEnd::delayed_recovery ? "on" : "off"),
@@ -44,6 +44,11 @@ void write_liggghts(Deck& d, const Pair& p, double a, double /*vn*/, double mu) 
              friction_note(mu), clamp_note(d.code, d.end),
              "gamman contains 1/m_eff: exact only for the pair it was made for (" + pair_note(p) +
                  "); other pairs get A' = A m_eff' / m_eff"};
+}
+
+std::string liggghts_one_type_line(const std::string& key, double value) {
+  return fmt::format("fix dem_{} all property/global {} peratomtypepair 1 {}",
+                     key == "coefficientFriction" ? "cof" : key, key, num(value));
 }
 
 Coefficients read_liggghts(const Deck& d, const Pair& other) {

@@ -17,11 +17,19 @@
 #include "restitution/errors.hpp"
 
 namespace restitution::dem {
+namespace {
+
+// YADE's lines give their impacts at --angles; YADE takes kso from Y and nu, so no --target-et.
+constexpr const char* kYadeObliqueRefusal =
+    "--target-et, --reference-angle and --tangential are for --code lammps (or liggghts)";
+
+}  // namespace
 
 const std::vector<CodeEntry>& dem_codes() {
   static const std::vector<CodeEntry> table = {
       {.code = Code::lammps,
        .name = "lammps",
+       .title = "LAMMPS",
        .always_clamps = false,
        .comment = "#",
        .program = "lmp",
@@ -44,9 +52,24 @@ const std::vector<CodeEntry>& dem_codes() {
                "(fix_wall_gran.cpp:160), the pair as (4/3)/(2 (1 - nu^2)/E) (pair_granular.cpp:1008-1011, "
                "1780), and mindlin NULL as E (2 - nu)(1 + nu)/4 (line 248) against the pair's 8 G*; damping "
                "viscoelastic is eta_n0 m a on a wall (m the sphere's mass, a = sqrt(R delta)) as in a pair "
-               "(m_eff): the wall lines carry E = 2 (1 - nu) E* and a numeric k_t"},
+               "(m_eff): the wall lines carry E = 2 (1 - nu) E* and a numeric k_t",
+       .check_deck_atom_style = "atom_style sphere\ncomm_modify vel yes\n",
+       .immediate_variables = true,
+       .velocity_verlet = true,
+       .gas_deck = true,
+       .companion = Companion::damping_tsuji,
+       .companion_words = "damping tsuji",
+       .oblique = ObliqueReader::lammps_granular,
+       .cap_rule =
+           "the cap tests the whole trial force, elastic and damping (|F_t| > mu |F_n|), and the capped "
+           "force is mu |F_n| along it",
+       // |diff| <= 2e-7 on 1 mm steel at 2000 steps per contact.
+       .oblique_check_steps = 2000,
+       .tangential_refusal = nullptr,
+       .inverse_refusal = nullptr},
       {.code = Code::liggghts,
        .name = "liggghts",
+       .title = "LIGGGHTS",
        .always_clamps = false,
        .comment = "#",
        .program = "liggghts",
@@ -67,10 +90,31 @@ const std::vector<CodeEntry>& dem_codes() {
        .write_wall = nullptr,
        .wall = "--wall does not support liggghts: its walls are meshes or primitives whose contact takes the "
                "wall's atom type in the per-type-pair kn and gamman (hertz/stiffness), not yet checked by a "
-               "run here; use the type pair of the sphere's and the wall's types"},
+               "run here; use the type pair of the sphere's and the wall's types",
+       // LIGGGHTS 3.8.0 reads LAMMPS's input but has no $(...): equal-style variables.
+       .check_deck_atom_style = "atom_style granular\nnewton off\ncommunicate single vel yes\n",
+       .immediate_variables = false,
+       .velocity_verlet = true,
+       .gas_deck = true,
+       .companion = Companion::model_hertz,
+       .companion_words = "model hertz coefficientRestitution",
+       .oblique = ObliqueReader::liggghts_history,
+       .cap_rule =
+           "the cap tests the elastic force alone (kt |xi| > mu |F_n|) and the capped force carries no "
+           "damping; below the cap the damped force may exceed mu |F_n|",
+       // LIGGGHTS decides stick or slip once per step, so its e_t is less smoothly first order: on the 1 mm
+       // steel lines of docs/dem.md (six angles) the largest |diff| was 8.0e-6 at 2000 and 1.8e-6 at 10000
+       // (its printed steps for e_t within 1e-4; glass 1.6e-6, steel at eps 0.98 4.2e-7).
+       .oblique_check_steps = 10000,
+       .tangential_refusal =
+           "--tangential, --tangential-stiffness and --tangential-damping are for --code lammps: the "
+           "liggghts "
+           "lines carry one tangential model, `tangential history` with kt = 8 G* and gammat = gamman",
+       .inverse_refusal = nullptr},
       // MercuryDPM's BSHP species always clamps the normal force at zero.
       {.code = Code::mercurydpm,
        .name = "mercurydpm",
+       .title = "MercuryDPM",
        .always_clamps = true,
        .comment = "//",
        .program = "",
@@ -91,11 +135,23 @@ const std::vector<CodeEntry>& dem_codes() {
        .max_deck_collisions = 0,
        .write_wall = nullptr,
        .wall = "--wall does not support mercurydpm: a wall shares the particles' species, whose E* and A do "
-               "not depend on mass or radius; no wall convention of its own is checked here"},
+               "not depend on mass or radius; no wall convention of its own is checked here",
+       .check_deck_atom_style = nullptr,
+       .immediate_variables = false,
+       .velocity_verlet = false,
+       .gas_deck = false,
+       .companion = Companion::none,
+       .companion_words = nullptr,
+       .oblique = ObliqueReader::none,
+       .cap_rule = nullptr,
+       .oblique_check_steps = 0,
+       .tangential_refusal = nullptr,
+       .inverse_refusal = nullptr},
       // YADE's Mindlin law always clamps; its Tsuji-type damping converges more slowly in dt (5000 coarse
       // steps per natural time).
       {.code = Code::yade,
        .name = "yade",
+       .title = "YADE",
        .always_clamps = true,
        .comment = "#",
        .program = "yade",
@@ -117,10 +173,26 @@ const std::vector<CodeEntry>& dem_codes() {
        .max_deck_collisions = kMaxDeckCollisionsYade,
        .write_wall = nullptr,
        .wall = "--wall does not support yade: a wall is a body with its own material and the same Ip2 as two "
-               "spheres (no run checked here)"},
+               "spheres (no run checked here)",
+       .check_deck_atom_style = nullptr,
+       .immediate_variables = false,
+       .velocity_verlet = false,
+       .gas_deck = false,
+       .companion = Companion::none,
+       .companion_words = nullptr,
+       .oblique = ObliqueReader::yade_mindlin,
+       .cap_rule =
+           "the cap tests the elastic shear force alone (|F_e| > tan(frictionAngle) F_n, F_e' = -ks s "
+           "incremental) and the capped force carries no damping; below the cap the damped force may "
+           "exceed it",
+       // Its first-order rest is still 1.1e-5 at 2000 (1 mm steel at 60 deg; oblique_check_deck_yade.hpp).
+       .oblique_check_steps = 20000,
+       .tangential_refusal = kYadeObliqueRefusal,
+       .inverse_refusal = kYadeObliqueRefusal},
       // Chrono's SMC contact always clamps.
       {.code = Code::chrono,
        .name = "chrono",
+       .title = "Chrono",
        .always_clamps = true,
        .comment = "//",
        .program = "",
@@ -141,7 +213,18 @@ const std::vector<CodeEntry>& dem_codes() {
        .max_deck_collisions = 0,
        .write_wall = nullptr,
        .wall = "--wall does not support chrono: a wall is a body whose material Chrono combines with the "
-               "sphere's (no run checked here)"},
+               "sphere's (no run checked here)",
+       .check_deck_atom_style = nullptr,
+       .immediate_variables = false,
+       .velocity_verlet = false,
+       .gas_deck = false,
+       .companion = Companion::none,
+       .companion_words = nullptr,
+       .oblique = ObliqueReader::none,
+       .cap_rule = nullptr,
+       .oblique_check_steps = 0,
+       .tangential_refusal = nullptr,
+       .inverse_refusal = nullptr},
   };
   return table;
 }

@@ -12,6 +12,8 @@
 namespace restitution::dem {
 
 enum class Code { lammps, liggghts, mercurydpm, yade, chrono };
+// The code a request means until it names one (the first of the table).
+inline constexpr Code kDefaultCode = Code::lammps;
 
 struct Deck;
 struct Pair;
@@ -25,9 +27,19 @@ struct Coefficients {
   double damping = 0.0;
 };
 
+// The constant-eps companion of a code's law lines (`dem --constant-eps`, `gas --deck`): the code's own
+// speed-independent damping given the law's eps at the calibration speed
+// (damping_check/constant_eps_lines.hpp, gas_deck/lammps_gas_deck.cpp).
+enum class Companion { none, damping_tsuji, model_hertz };
+
+// Which reader of src/cli/dem/dem_oblique.hpp gives the oblique impacts of the code's lines with friction:
+// the code's own normal and tangential contact, read from the deck the writer made.
+enum class ObliqueReader { none, lammps_granular, liggghts_history, yade_mindlin };
+
 struct CodeEntry {
   Code code;
   const char* name;           // --code, a scene's `code`, the JSON "code"
+  const char* title;          // the code as prose names it: "LAMMPS"
   bool always_clamps;         // the code always clamps the normal force at zero: delayed-recovery end only
   const char* comment;        // how the code's input comments a line: "#" or "//"
   const char* program;        // the program that runs its input; "" for a C++ library
@@ -57,6 +69,24 @@ struct CodeEntry {
   void (*write_wall)(Deck& deck, const Pair& contact, double effective_shear_modulus_pa,
                      double dissipative_constant_s, double friction);
   const char* wall;  // the code's wall convention against its pair convention, in words
+  // A LAMMPS-family check deck's atom style and ghost-velocity lines; nullptr for the other codes.
+  const char* check_deck_atom_style;
+  // Its input evaluates $(...) in place (LAMMPS); otherwise values go through equal-style variables.
+  bool immediate_variables;
+  // Its integrator is velocity-Verlet, whose eps error at a time step `--timestep` and `--max-eps-error`
+  // report (dem/integrator_eps.hpp).
+  bool velocity_verlet;
+  bool gas_deck;  // `gas --deck` writes its input (a data file and a log-spaced schedule)
+  Companion companion;
+  const char* companion_words;  // the companion as its header names it; nullptr with none
+  // Oblique impacts (`--friction`, `--angles`): the reader, the rule of its Coulomb cap in words, the coarse
+  // steps per shortest contact of the check deck's oblique pass (0: none), and why --tangential or
+  // --target-et/--reference-angle are refused (nullptr: taken).
+  ObliqueReader oblique;
+  const char* cap_rule;
+  int oblique_check_steps;
+  const char* tangential_refusal;
+  const char* inverse_refusal;
 };
 
 // Every code, in the order of the help texts.

@@ -30,7 +30,7 @@ double dissipative_constant(double k, const DampingSource& source, CollisionEnd 
                             Method method, CollisionSolver& solver);
 
 struct LinesRequest {
-  Code code = Code::lammps;
+  Code code = kDefaultCode;
   CollisionEnd end = CollisionEnd::delayed_recovery;
   Material material;
   DampingSource damping;

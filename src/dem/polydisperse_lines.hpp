@@ -38,7 +38,7 @@ struct BinningError {
 std::size_t pair_index(std::size_t i, std::size_t j, std::size_t n);
 
 struct PolydisperseRequest {
-  Code code = Code::lammps;
+  Code code = kDefaultCode;
   CollisionEnd end = CollisionEnd::delayed_recovery;
   std::vector<ParticleType> types;
   DampingSource damping;           // A given, or calibrated for the pair (1, 1)
@@ -49,7 +49,7 @@ struct PolydisperseRequest {
 };
 
 struct PolydisperseResult {
-  Code code = Code::lammps;
+  Code code = kDefaultCode;
   CollisionEnd end = CollisionEnd::delayed_recovery;
   std::vector<ParticleType> types;
   double dissipative_constant_s = 0.0;

@@ -9,6 +9,7 @@
 
 #include "dem/check_deck.hpp"
 #include "dem/check_deck_codes.hpp"
+#include "dem/dem_codes.hpp"
 #include "dem/wall_lines.hpp"
 #include "restitution/errors.hpp"
 
@@ -51,8 +52,11 @@ std::string pass(const WallResult& w, double dt, long steps) {
 }  // namespace
 
 std::string wall_check_deck(const WallResult& result, int steps_per_time) {
-  if (result.deck.code != Code::lammps)
-    throw InvalidInput("--wall --deck: only lammps has a wall check deck");
+  if (code_entry(result.deck.code).write_wall == nullptr) {
+    throw InvalidInput(
+        fmt::format("--wall --deck: only {} has a wall check deck",
+                    code_list(" and ", [](const CodeEntry& e) { return e.write_wall != nullptr; })));
+  }
   if (result.eps.empty()) throw InvalidInput("--wall --deck needs at least one speed");
   const int n = steps_per_time > 0 ? steps_per_time : kDefaultSteps;
   double v_min = INFINITY;

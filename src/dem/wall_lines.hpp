@@ -22,7 +22,7 @@ struct WallMaterial {
 };
 
 struct WallRequest {
-  Code code = Code::lammps;
+  Code code = kDefaultCode;
   CollisionEnd end = CollisionEnd::delayed_recovery;
   Material sphere;                   // Y, ν, radius1, mass1 or density (the second sphere is ignored)
   std::optional<WallMaterial> wall;  // none: a rigid wall

@@ -8,11 +8,13 @@
 #include <cmath>
 #include <iterator>
 #include <numbers>
+#include <stdexcept>
 
 #include "damping_check/constant_eps_lines.hpp"
 #include "damping_check/inverse.hpp"
 #include "dem/deck_eps.hpp"
 #include "dem/deck_notes.hpp"
+#include "dem/dem_codes.hpp"
 #include "dem/integrator_eps.hpp"
 #include "gas_deck/cooling_scales.hpp"
 #include "gas_deck/gas_log_setup.hpp"
@@ -33,10 +35,8 @@ constexpr double kClusteringAmplitude = 0.1;
 // The companion of the code's law lines: LAMMPS `damping tsuji` (`dem --constant-eps`), LIGGGHTS `model
 // hertz` given the coefficientRestitution that its recipe (Tsuji-type damping, speed-independent ε) turns
 // into the law's ε at the calibration speed.
-damping_check::ConstantEpsLines companion_lines(const dem::LinesResult& law, const dem::Pair& pair,
-                                                double tolerance, CollisionSolver& solver) {
-  if (law.deck.code == dem::Code::lammps)
-    return damping_check::constant_eps_lines(law, pair, tolerance, solver);
+damping_check::ConstantEpsLines model_hertz_lines(const dem::LinesResult& law, const dem::Pair& pair,
+                                                  double tolerance, CollisionSolver& solver) {
   const double k =
       hertz_stiffness(pair.effective_modulus_pa, pair.effective_radius_m) / pair.effective_mass_kg;
   damping_check::ConstantEpsLines c;
@@ -66,19 +66,34 @@ damping_check::ConstantEpsLines companion_lines(const dem::LinesResult& law, con
   return c;
 }
 
+damping_check::ConstantEpsLines companion_lines(const dem::LinesResult& law, const dem::Pair& pair,
+                                                double tolerance, CollisionSolver& solver) {
+  switch (dem::code_entry(law.deck.code).companion) {
+    case dem::Companion::damping_tsuji:
+      return damping_check::constant_eps_lines(law, pair, tolerance, solver);
+    case dem::Companion::model_hertz:
+      return model_hertz_lines(law, pair, tolerance, solver);
+    case dem::Companion::none:
+      break;
+  }
+  throw std::logic_error(
+      fmt::format("a gas deck for {}, which has no constant-eps companion", dem::code_name(law.deck.code)));
+}
+
 // The schedule's idioms: LAMMPS evaluates $(...) in place; LIGGGHTS 3.8.0 has no immediate variables, so its
 // values go through equal-style variables, substituted when the line is read.
 struct ScheduleIdioms {
   std::string definitions, time, temperature, timestep, step, next_timestep;
   [[nodiscard]] std::string steps_to(double t) const;
-  dem::Code code = dem::Code::lammps;
+  bool immediate = true;  // dem::CodeEntry::immediate_variables
 };
 
 ScheduleIdioms schedule_idioms(dem::Code code) {
-  if (code == dem::Code::lammps) {
+  const bool immediate = dem::code_entry(code).immediate_variables;
+  if (immediate) {
     return {"",           "$(time:%.10g)", "$(v_temperature:%.10g)",
             "$(dt:%.6g)", "$(step)",       "$(v_dt0*(v_T0/v_temperature)^0.1)",
-            code};
+            immediate};
   }
   return {
       "variable gas_time equal time\nvariable gas_temperature equal v_temperature\n"
@@ -89,11 +104,11 @@ ScheduleIdioms schedule_idioms(dem::Code code) {
       "${gas_dt}",
       "${gas_step}",
       "${gas_next_dt}",
-      code};
+      immediate};
 }
 
 std::string ScheduleIdioms::steps_to(double t) const {
-  if (code == dem::Code::lammps) return fmt::format("run $(ceil(({}-time)/dt):%.0f)\n", t);
+  if (immediate) return fmt::format("run $(ceil(({}-time)/dt):%.0f)\n", t);
   return fmt::format("variable gas_steps equal ceil(({}-time)/dt)\nrun ${{gas_steps}}\n", t);
 }
 
@@ -164,12 +179,12 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
   if (r.points_per_decade < 1 || r.points_per_decade > 100)
     throw InvalidInput(fmt::format("--points-per-decade must be in [1, 100], got {}", r.points_per_decade));
   dem::LinesRequest lines_request;
-  if (r.code != dem::Code::lammps && r.code != dem::Code::liggghts) {
-    throw InvalidInput(
-        fmt::format("--code {}: the gas deck is written for lammps and liggghts only (a data file "
-                    "of spheres, the law's pair lines and a log-spaced schedule in their input "
-                    "language)",
-                    dem::code_name(r.code)));
+  if (!dem::code_entry(r.code).gas_deck) {
+    throw InvalidInput(fmt::format(
+        "--code {}: the gas deck is written for {} only (a data file "
+        "of spheres, the law's pair lines and a log-spaced schedule in their input "
+        "language)",
+        dem::code_name(r.code), dem::code_list(" and ", [](const dem::CodeEntry& e) { return e.gas_deck; })));
   }
   lines_request.code = r.code;
   lines_request.end = r.end;
@@ -271,8 +286,8 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
       companion_header.begin(),
       fmt::format("constant-eps companion: {} given {:.10g}, which makes eps = {:.10g} at every speed (the "
                   "law's eps at {} m/s)",
-                  r.code == dem::Code::lammps ? "damping tsuji" : "model hertz coefficientRestitution",
-                  companion.eps_to_request, companion.eps, companion.velocity_m_s));
+                  dem::code_entry(r.code).companion_words, companion.eps_to_request, companion.eps,
+                  companion.velocity_m_s));
   g.constant_eps_input =
       input(g, r.code, "constant-eps", companion_header, law.deck.prerequisites, companion.lines,
             data_file_name, gas_log_setup_line(gas_log_setup(r, g.dissipative_constant_s, "constant-eps")));
@@ -280,7 +295,7 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
 }
 
 std::string gas_deck_command(dem::Code code, const std::string& path, int ranks) {
-  const char* program = code == dem::Code::liggghts ? "liggghts" : "lmp";
+  const char* program = dem::code_entry(code).program;
   if (ranks <= 1) return fmt::format("{} -in {}", program, path);
   return fmt::format("mpirun -np {} {} -in {}", ranks, program, path);
 }

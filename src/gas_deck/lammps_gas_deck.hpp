@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "dem/lines_check.hpp"
+#include "restitution/solve_types.hpp"
 
 namespace restitution::gas_deck {
 
@@ -37,7 +38,7 @@ inline constexpr std::size_t kMaxParticles = 10'000'000;
 inline constexpr std::size_t kDataBytesPerSphere = 160;
 
 struct GasDeckRequest {
-  dem::Code code = dem::Code::lammps;  // lammps or liggghts
+  dem::Code code = dem::kDefaultCode;  // lammps or liggghts
   Material material;                   // one radius (radius1 = radius2) and the density
   dem::DampingSource damping;  // A, or ε at a speed (also the constant-ε companion's calibration speed)
   CollisionEnd end = CollisionEnd::delayed_recovery;
@@ -49,7 +50,7 @@ struct GasDeckRequest {
   double max_eps_error = 1e-3;  // bound on the worst-phase |Δε| at the fast end of the impact speeds
   int points_per_decade = 10;   // of the log-spaced temperature schedule
   std::uint64_t seed = 1;
-  double tolerance = 1e-10;
+  double tolerance = kDefaultTolerance;
 };
 
 struct GasDeck {

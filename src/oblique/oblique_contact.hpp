@@ -155,8 +155,8 @@ struct ObliqueOptions {
   // naive: the contact ends where δ returns to 0 (LAMMPS without limit_damping; the Coulomb cap is then
   // μ|F_n|, pair_granular.cpp:419); delayed_recovery: where F_n first reaches 0 (limit_damping).
   CollisionEnd end = CollisionEnd::delayed_recovery;
-  double relative_tolerance = 1e-10;  // CVODE's, on the natural-unit state
-  int max_switches = 1000;            // more stick/slip switches in one contact is reported as a failure
+  double relative_tolerance = kDefaultTolerance;  // CVODE's, on the natural-unit state
+  int max_switches = 1000;  // more stick/slip switches in one contact is reported as a failure
   // The sticking limit μ → ∞: the Coulomb cap removed, the contact sticks from first contact to the end and
   // the friction is not read. No switch function is integrated, so nothing near a huge cap can fail (a finite
   // μ = 1e12 drove CVODE into error-test failures).

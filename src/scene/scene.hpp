@@ -120,7 +120,7 @@ inline constexpr int kMaxStudyRepeats = 100;  // = kMaxWorkPrecisionRepeats (ref
 struct DemTask {
   std::string name;
   std::string title;
-  dem::Code code = dem::Code::lammps;
+  dem::Code code = dem::kDefaultCode;
   std::string material;                // a [materials.X] of this scene
   std::optional<double> eps;           // with velocity: calibrate A; without: the material's A
   std::optional<double> velocity_m_s;  // the calibration speed (YADE's vn; default 1 m/s)

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "restitution/material.hpp"
+#include "restitution/solve_types.hpp"
 
 namespace restitution::scene {
 
@@ -32,8 +33,8 @@ struct ObliqueTask {
   bool fixed_normal = false;
   std::string end = "delayed-recovery";
   std::string torque_arm = "lammps";
-  double tolerance = 1e-10;  // CVODE's relative tolerance of the oblique solve
-  bool plot = true;          // Maw's diagram (needs friction > 0)
+  double tolerance = kDefaultTolerance;  // CVODE's relative tolerance of the oblique solve
+  bool plot = true;                      // Maw's diagram (needs friction > 0)
   int line = 0;
 };
 

@@ -314,8 +314,8 @@ void add_dem_command(CLI::App& app, Action& chosen) {
                   "{} at the default 3) and {:.3g} sphere-steps (spheres x steps: radii or speeds far "
                   "apart need many steps), yade {} speeds",
                   dem::code_list(" or ", [](const dem::CodeEntry& e) { return e.check_deck != nullptr; }),
-                  dem::kMaxDeckCollisionsLammps, dem::max_deck_types(dem::Code::lammps, 1),
-                  dem::max_deck_types(dem::Code::lammps, 3), dem::kMaxDeckSphereSteps,
+                  dem::kMaxDeckCollisionsLammps, dem::max_deck_types(dem::kMaxDeckCollisionsLammps, 1),
+                  dem::max_deck_types(dem::kMaxDeckCollisionsLammps, 3), dem::kMaxDeckSphereSteps,
                   dem::kMaxDeckCollisionsYade));
   add_production_options(*cmd, o->production);
   add_wall_options(
@@ -347,13 +347,7 @@ void add_dem_command(CLI::App& app, Action& chosen) {
       apply_tangential_choice(r.deck, o->oblique, o->friction);
       const Production p = production(r, material_from(o->material), o->production, o->tolerance);
       std::optional<DemOblique> impacts;
-      if (oblique && r.deck.code == dem::Code::yade) {
-        // YADE 2024.02a's (en, vn) lines: not modelled; said where --angles asks for them.
-        if (!o->oblique.angles_deg.empty() || yade_lines_modelled(r.deck)) {
-          impacts = yade_pair_oblique(r.deck, dem::pair_of(material_from(o->material)), o->oblique,
-                                      r.reference_velocity_m_s, o->tolerance);
-        }
-      } else if (oblique) {
+      if (oblique) {
         impacts = pair_oblique(r.deck, dem::pair_of(material_from(o->material)), o->oblique,
                                r.reference_velocity_m_s, o->tolerance);
       }

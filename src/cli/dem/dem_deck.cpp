@@ -6,6 +6,7 @@
 #include "cli/common/output_files.hpp"
 #include "cli/dem/oblique_check_deck.hpp"
 #include "cli/dem/oblique_check_deck_yade.hpp"
+#include "dem/dem_codes.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -56,7 +57,7 @@ std::string write_check_deck(const std::string& path, const dem::LinesResult& r,
   if (!oblique) return write_check_deck(path, request);
   write_file_atomically(
       path,
-      dem::check_deck(request) + (oblique->code == dem::Code::yade
+      dem::check_deck(request) + (dem::code_entry(oblique->code).oblique == dem::ObliqueReader::yade_mindlin
                                       ? yade_oblique_check_section(*oblique, r.deck.lines)
                                       : oblique_check_section(*oblique, r.deck.prerequisites, r.deck.lines)));
   return dem::check_deck_command(request.code, path);

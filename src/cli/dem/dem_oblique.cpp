@@ -8,6 +8,9 @@
 #include <functional>
 #include <sstream>
 
+#include "dem/deck_liggghts.hpp"
+#include "dem/deck_notes.hpp"
+#include "dem/dem_codes.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
 
@@ -76,6 +79,20 @@ std::vector<ContractedOblique> impacts_at(const DemOblique& r, const TangentialF
   return out;
 }
 
+// The bound on the code's e_t error per step of its reader (dem::CodeEntry::oblique).
+double et_error_coefficient(const DemOblique& r) {
+  switch (dem::code_entry(r.code).oblique) {
+    case dem::ObliqueReader::liggghts_history:
+      return liggghts_et_error_coefficient();
+    case dem::ObliqueReader::yade_mindlin:
+      return yade_et_error_coefficient();
+    case dem::ObliqueReader::lammps_granular:
+    case dem::ObliqueReader::none:
+      break;
+  }
+  return lammps_et_error_coefficient(r.tangential.kind);
+}
+
 // Solves the impacts, the steps per contact and the inverse; `line_with` is the printed line that carries the
 // tangential parameter, with the value found in place of the printed one.
 DemOblique complete(DemOblique r, const DemObliqueOptions& o,
@@ -83,9 +100,7 @@ DemOblique complete(DemOblique r, const DemObliqueOptions& o,
   r.angles_deg = o.angles_deg.empty() ? kDefaultAngles : o.angles_deg;
   r.impacts = impacts_at(r, r.tangential);
   r.et_accuracy = o.et_accuracy;
-  r.error_coefficient = r.code == dem::Code::liggghts ? liggghts_et_error_coefficient()
-                        : r.code == dem::Code::yade   ? yade_et_error_coefficient()
-                                                      : lammps_et_error_coefficient(r.tangential.kind);
+  r.error_coefficient = et_error_coefficient(r);
   r.steps_per_contact = std::ceil(r.error_coefficient / r.et_accuracy);
   double shortest = HUGE_VAL;
   for (const auto& i : r.impacts) shortest = std::min(shortest, i.result.contact_time_s);
@@ -120,23 +135,6 @@ std::function<std::string(double)> lammps_line_with(const std::string& line, con
     changed.at(position + 1) = fmt::format("{}", parameter);
     return joined(changed);
   };
-}
-
-// LIGGGHTS's per-type-pair property: `fix ID all property/global KEY peratomtypepair 1 VALUE`.
-constexpr std::size_t kLiggghtsKeyWord = 4;
-constexpr std::size_t kLiggghtsValueWord = 7;
-const std::string& liggghts_property_line(const dem::Deck& deck, const std::string& key) {
-  for (const std::string& line : deck.lines) {
-    const std::vector<std::string> words = words_of(line);
-    if (words.size() == kLiggghtsValueWord + 1 && words[3] == "property/global" &&
-        words[kLiggghtsKeyWord] == key && words[5] == "peratomtypepair" && words[6] == "1") {
-      return line;
-    }
-  }
-  throw std::logic_error("a LIGGGHTS deck without its one-type " + key + " line");
-}
-double liggghts_property(const dem::Deck& deck, const std::string& key) {
-  return std::stod(words_of(liggghts_property_line(deck, key)).at(kLiggghtsValueWord));
 }
 
 void write_impacts(JsonWriter& json, const DemOblique& r, const std::vector<ContractedOblique>& impacts) {
@@ -175,21 +173,12 @@ void print_impacts(const DemOblique& r, const std::vector<ContractedOblique>& im
 }
 
 const char* code_title(dem::Code code) {
-  return code == dem::Code::liggghts ? "LIGGGHTS" : code == dem::Code::yade ? "YADE" : "LAMMPS";
+  return dem::code_entry(code).title;
 }
 
 // The Coulomb cap as each code applies it (docs/oblique.md, "LIGGGHTS and YADE").
 const char* cap_rule(dem::Code code) {
-  if (code == dem::Code::yade) {
-    return "the cap tests the elastic shear force alone (|F_e| > tan(frictionAngle) F_n, F_e' = -ks s "
-           "incremental) and the capped force carries no damping; below the cap the damped force may exceed "
-           "it";
-  }
-  return code == dem::Code::liggghts
-             ? "the cap tests the elastic force alone (kt |xi| > mu |F_n|) and the capped force carries no "
-               "damping; below the cap the damped force may exceed mu |F_n|"
-             : "the cap tests the whole trial force, elastic and damping (|F_t| > mu |F_n|), and the capped "
-               "force is mu |F_n| along it";
+  return dem::code_entry(code).cap_rule;
 }
 
 }  // namespace
@@ -269,7 +258,8 @@ bool tangential_chosen(const DemObliqueOptions& o) {
 
 void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double friction) {
   if (!tangential_chosen(o)) return;
-  if (deck.code != dem::Code::lammps) {
+  // The choice rewrites LAMMPS's granular line.
+  if (dem::code_entry(deck.code).oblique != dem::ObliqueReader::lammps_granular) {
     throw InvalidInput("--tangential, --tangential-stiffness and --tangential-damping are for --code lammps");
   }
   if (!(friction > 0.0)) {
@@ -322,16 +312,13 @@ void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double
 
 bool wants_oblique(const DemObliqueOptions& o, dem::Code code, double friction) {
   const bool asked = !o.angles_deg.empty() || o.target_et || o.reference_angle_deg || tangential_chosen(o);
-  if (code == dem::Code::liggghts && tangential_chosen(o)) {
-    throw InvalidInput(
-        "--tangential, --tangential-stiffness and --tangential-damping are for --code lammps: the liggghts "
-        "lines carry one tangential model, `tangential history` with kt = 8 G* and gammat = gamman");
+  const dem::CodeEntry& entry = dem::code_entry(code);
+  if (entry.tangential_refusal != nullptr && tangential_chosen(o))
+    throw InvalidInput(entry.tangential_refusal);
+  if (entry.inverse_refusal != nullptr && (o.target_et || o.reference_angle_deg)) {
+    throw InvalidInput(entry.inverse_refusal);
   }
-  // YADE's lines give their impacts at --angles; YADE takes kso from Y and nu, so no --target-et.
-  if (code == dem::Code::yade && (o.target_et || o.reference_angle_deg || tangential_chosen(o))) {
-    throw InvalidInput("--target-et, --reference-angle and --tangential are for --code lammps (or liggghts)");
-  }
-  if (code != dem::Code::lammps && code != dem::Code::liggghts && code != dem::Code::yade) {
+  if (entry.oblique == dem::ObliqueReader::none) {
     if (asked) {
       throw InvalidInput(
           "--angles, --target-et and --reference-angle are for --code lammps or liggghts, --tangential for "
@@ -366,21 +353,22 @@ namespace {
 // LIGGGHTS's lines read as LIGGGHTS reads them: hertz/stiffness's kn sqrt(R* δ) and gamman m* sqrt(R* δ)
 // (normal_model_hertz_stiffness.h:118-122), `tangential history`'s kt sqrt(R* δ) and gammat m* sqrt(R* δ)
 // (so γ_t = gammat/gamman on the normal coefficient), the cap on the elastic force alone, torque and
-// contact-point arm R - δ/2 (TangentialKind::liggghts_history), limitForce on: the delayed-recovery end.
+// contact-point arm R - δ/2 (TangentialKind::liggghts_history), limitForce on: the delayed-recovery end. The
+// numbers are the writer's parameters (dem/deck_liggghts.cpp), which its lines print.
 DemOblique liggghts_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
                                  double speed_m_s, double tolerance) {
-  const double mu = liggghts_property(deck, "coefficientFriction");
+  const double mu = deck.parameter("coefficientFriction");
   if (!(mu > 0.0)) {
     throw InvalidInput(
         "--angles, --target-et and --reference-angle with --code liggghts need --friction MU > 0: without "
         "it the lines are frictionless (tangential no_history)");
   }
   DemOblique r;
-  r.code = dem::Code::liggghts;
-  const double kn = liggghts_property(deck, "kn");
-  const double gamman = liggghts_property(deck, "gamman");
-  const double kt = liggghts_property(deck, "kt");
-  const double gammat = liggghts_property(deck, "gammat");
+  r.code = deck.code;
+  const double kn = deck.parameter("kn");
+  const double gamman = deck.parameter("gamman");
+  const double kt = deck.parameter("kt");
+  const double gammat = deck.parameter("gammat");
   const double sqrt_radius = std::sqrt(pair.effective_radius_m);
   r.normal = {LawKind::viscoelastic_hertz, kn * sqrt_radius, gamman * pair.effective_mass_kg * sqrt_radius};
   r.tangential.kind = TangentialKind::liggghts_history;
@@ -389,42 +377,29 @@ DemOblique liggghts_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, c
   if (gamman == 0.0 && gammat != 0.0) throw std::logic_error("LIGGGHTS lines with gammat but no gamman");
   r.tangential.damping_factor = gamman == 0.0 ? 0.0 : gammat / gamman;
   r.tangential.friction = mu;
-  const std::vector<std::string> style = words_of(deck.lines.at(5));
-  r.tangential_words =
-      fmt::format("history, kt {}, gammat {}, coefficientFriction {}",
-                  words_of(liggghts_property_line(deck, "kt")).at(kLiggghtsValueWord),
-                  words_of(liggghts_property_line(deck, "gammat")).at(kLiggghtsValueWord),
-                  words_of(liggghts_property_line(deck, "coefficientFriction")).at(kLiggghtsValueWord));
+  r.tangential_words = fmt::format("history, kt {}, gammat {}, coefficientFriction {}", dem::num(kt),
+                                   dem::num(gammat), dem::num(mu));
   r.geometry.first = solid_sphere(pair.radius1_m, pair.mass1_kg);
   r.geometry.second = solid_sphere(pair.radius2_m, pair.mass2_kg);
   r.geometry.torque_arm = TorqueArm::radius_minus_half_overlap;         // surface_model_default.h:176-188
   r.geometry.contact_point_arm = TorqueArm::radius_minus_half_overlap;  // and tangential_model_history.h:254
-  const auto limit = std::find(style.begin(), style.end(), "limitForce");
-  r.options.end = limit != style.end() && limit + 1 != style.end() && *(limit + 1) == "on"
-                      ? CollisionEnd::delayed_recovery
-                      : CollisionEnd::naive;
+  r.options.end = deck.end;  // limitForce on at the delayed-recovery end
   r.speed_m_s = speed_m_s;
   r.tolerance = std::clamp(tolerance, kSmallestObliqueTolerance, kLoosestObliqueTolerance);
-  const std::string kt_line = liggghts_property_line(deck, "kt");
-  return complete(r, o, [kt_line](double parameter) {
-    std::vector<std::string> changed = words_of(kt_line);
-    changed.at(kLiggghtsValueWord) = fmt::format("{}", parameter);
-    return joined(changed);
-  });
+  return complete(r, o, [](double parameter) { return dem::liggghts_one_type_line("kt", parameter); });
 }
 
-}  // namespace
-
-DemOblique pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
-                        double speed_m_s, double tolerance) {
-  if (deck.code == dem::Code::liggghts) return liggghts_pair_oblique(deck, pair, o, speed_m_s, tolerance);
+// LAMMPS's pair granular line read as LAMMPS reads it.
+DemOblique lammps_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
+                               double speed_m_s, double tolerance) {
   DemOblique r;
+  r.code = deck.code;
   const std::string& line = deck.lines.at(1);
   const TangentialWords words = tangential_words(words_of(line));
   r.tangential_words = joined(words.words);
   // pair granular: E* and η_n0 m* sqrt(R*) (dem/deck_lammps.cpp read_lammps); `mindlin NULL` is 8 G* with
   // 1/G* = 2 · 2(2 - ν)(1 + ν)/E for two types of one material (pair_granular.cpp:1021-1023, 1790).
-  const dem::Coefficients normal = dem::code_entry(dem::Code::lammps).read(deck, pair);
+  const dem::Coefficients normal = dem::code_entry(deck.code).read(deck, pair);
   r.normal = {LawKind::viscoelastic_hertz, normal.elastic, normal.damping};
   const double e = deck.parameter("E");
   const double nu = deck.parameter("nu");
@@ -438,9 +413,12 @@ DemOblique pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemO
   return complete(r, o, lammps_line_with(line, words));
 }
 
+}  // namespace
+
 DemOblique wall_oblique(const dem::Deck& deck, const dem::Pair& contact, const DemObliqueOptions& o,
                         double speed_m_s, double tolerance) {
   DemOblique r;
+  r.code = deck.code;
   const std::string& line = deck.lines.at(0);
   const TangentialWords words = tangential_words(words_of(line));
   r.tangential_words = joined(words.words);
@@ -473,7 +451,7 @@ DemOblique yade_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const
         "2023.02a prints the betan lines whose impacts are");
   }
   DemOblique r;
-  r.code = dem::Code::yade;
+  r.code = deck.code;
   r.tangential_words = "Law2_ScGeom_MindlinPhys_Mindlin, betas = betan";
   // Ip2_FrictMat_FrictMat_MindlinPhys::go for one material: E* = Y/(2(1 - ν²)), G = Y/(2(1 + ν)), R* from
   // the radii, kno = (4/3) E* sqrt(R*), kso = 2 sqrt(4 R*) G/(2 - ν); Law2: cn = 2 betan sqrt(m* kn), kn =
@@ -498,6 +476,23 @@ DemOblique yade_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const
   return complete(r, o, [](double /*parameter*/) -> std::string {
     throw std::logic_error("no --target-et for YADE's lines");
   });
+}
+
+std::optional<DemOblique> pair_oblique(const dem::Deck& deck, const dem::Pair& pair,
+                                       const DemObliqueOptions& o, double speed_m_s, double tolerance) {
+  switch (dem::code_entry(deck.code).oblique) {
+    case dem::ObliqueReader::lammps_granular:
+      return lammps_pair_oblique(deck, pair, o, speed_m_s, tolerance);
+    case dem::ObliqueReader::liggghts_history:
+      return liggghts_pair_oblique(deck, pair, o, speed_m_s, tolerance);
+    case dem::ObliqueReader::yade_mindlin:
+      // YADE 2024.02a's (en, vn) lines: not modelled; said where --angles asks for them.
+      if (o.angles_deg.empty() && !yade_lines_modelled(deck)) return std::nullopt;
+      return yade_pair_oblique(deck, pair, o, speed_m_s, tolerance);
+    case dem::ObliqueReader::none:
+      break;
+  }
+  return std::nullopt;
 }
 
 void print_oblique_text(const DemOblique& r, const char* c) {

@@ -43,7 +43,7 @@ double yade_et_error_coefficient();
 
 // The lines' oblique impacts at one speed (the reference speed of the lines).
 struct DemOblique {
-  dem::Code code = dem::Code::lammps;  // whose lines: lammps, liggghts or yade
+  dem::Code code = dem::kDefaultCode;  // whose lines: lammps, liggghts or yade
   std::string tangential_words;        // as the line has them, e.g. "mindlin NULL 1 0.3"
   oblique::ObliqueGeometry geometry;
   oblique::NormalForce normal;
@@ -79,11 +79,13 @@ void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double
 // is neither LAMMPS nor LIGGGHTS (--tangential: not LAMMPS) or they are out of range.
 bool wants_oblique(const DemObliqueOptions& o, dem::Code code, double friction);
 
-// The pair's lines (pair granular: the pair's 8 G* for `mindlin NULL`, torque arm R - δ/2, the line of
-// centres turning; LIGGGHTS: kn, kt, gamman, gammat, coefficientFriction, arms R - δ/2) and the wall's
-// (LAMMPS's fix wall/gran granular: its E, its NULL, torque arm R).
-DemOblique pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
-                        double speed_m_s, double tolerance);
+// The pair's lines read by the code's reader (dem::CodeEntry::oblique; pair granular: the pair's 8 G* for
+// `mindlin NULL`, torque arm R - δ/2, the line of centres turning; LIGGGHTS: kn, kt, gamman, gammat,
+// coefficientFriction, arms R - δ/2; YADE: yade_pair_oblique); none for a code without a reader, or for
+// YADE's lines that are not modelled unless --angles asks for them. And the wall's (LAMMPS's fix wall/gran
+// granular: its E, its NULL, torque arm R).
+std::optional<DemOblique> pair_oblique(const dem::Deck& deck, const dem::Pair& pair,
+                                       const DemObliqueOptions& o, double speed_m_s, double tolerance);
 DemOblique wall_oblique(const dem::Deck& deck, const dem::Pair& contact, const DemObliqueOptions& o,
                         double speed_m_s, double tolerance);
 

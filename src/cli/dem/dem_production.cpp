@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "dem/dem_codes.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -31,11 +32,10 @@ bool any_production_option(const ProductionOptions& o) {
 Production production(const dem::LinesResult& r, const Material& material, const ProductionOptions& o,
                       double tolerance) {
   const dem::Code code = r.deck.code;
-  const bool verlet = code == dem::Code::lammps || code == dem::Code::liggghts;
-  if ((o.timestep || o.max_eps_error) && !verlet) {
+  if ((o.timestep || o.max_eps_error) && !dem::code_entry(code).velocity_verlet) {
     throw InvalidInput(
-        fmt::format("--timestep and --max-eps-error model the velocity-Verlet of lammps and "
-                    "liggghts, not {}",
+        fmt::format("--timestep and --max-eps-error model the velocity-Verlet of {}, not {}",
+                    dem::code_list(" and ", [](const dem::CodeEntry& e) { return e.velocity_verlet; }),
                     dem::code_name(code)));
   }
   const dem::Pair pair = dem::pair_of(material);

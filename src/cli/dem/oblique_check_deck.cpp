@@ -77,7 +77,7 @@ std::string pass(const DemOblique& r, const std::vector<std::string>& prerequisi
 }  // namespace
 
 int oblique_check_steps_per_contact(dem::Code code) {
-  return code == dem::Code::yade ? 20000 : code == dem::Code::liggghts ? 10000 : 2000;
+  return dem::code_entry(code).oblique_check_steps;
 }
 
 ObliqueCheckSteps oblique_check_steps(const DemOblique& r, int per_contact) {

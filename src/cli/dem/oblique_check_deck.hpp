@@ -22,11 +22,8 @@ namespace restitution::cli {
 // The tag every oblique check line starts with.
 inline constexpr const char* kObliqueCheckTag = "restitution-oblique-check";
 
-// Steps per shortest contact of the coarse pass. LAMMPS: 2000 (|diff| <= 2e-7 on 1 mm steel). LIGGGHTS
-// decides stick or slip once per step, so its e_t is less smoothly first order: on the 1 mm steel lines of
-// docs/dem.md (six angles) the largest |diff| was 8.0e-6 at 2000 and 1.8e-6 at 10000 (its printed steps for
-// e_t within 1e-4; glass 1.6e-6, steel at eps 0.98 4.2e-7), so 10000. YADE: 20000 (its first-order rest is
-// still 1.1e-5 at 2000, 1 mm steel at 60°; oblique_check_deck_yade.hpp).
+// Steps per shortest contact of the coarse pass: the code's entry (dem::CodeEntry::oblique_check_steps, where
+// the measurements behind each number are).
 int oblique_check_steps_per_contact(dem::Code code);
 
 // The step choice of both passes: dt = t_c/per_contact (t_c the shortest contact), `steps` of it lasting

@@ -56,7 +56,7 @@ struct ObliqueCommandOptions {
   std::vector<double> spins = {0.0};
   std::string end = "delayed-recovery";
   std::string torque_arm = "lammps";
-  double tolerance = 1e-10;
+  double tolerance = kDefaultTolerance;
   bool json = false;
   std::string out;
   std::string plot;    // Maw's diagram

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "restitution/material.hpp"
+#include "restitution/solve_types.hpp"
 // The solver's interface (src/oblique/oblique_contact.hpp) stays where the other studies include it from;
 // this folder is the part of the module the Python module may include, and it re-exports that header by its
 // path.
@@ -43,7 +44,7 @@ struct ObliqueInputs {
   std::optional<double> friction;              // μ, required
   std::string end = "delayed-recovery";
   std::string torque_arm = "lammps";        // lammps | radius | radius-minus-half-overlap
-  double tolerance = 1e-10;                 // the accuracy contract's T (oblique_accuracy.hpp)
+  double tolerance = kDefaultTolerance;     // the accuracy contract's T (oblique_accuracy.hpp)
   double speed_m_s = 1.0;                   // impact speed: v cos θ normal, v sin θ tangential
   std::vector<double> angles_deg;           // from the normal, in [0, 90)
   std::vector<double> spins_rad_s = {0.0};  // initial spins of the first sphere
@@ -61,7 +62,8 @@ struct ObliqueSetup {
   NormalForce normal;
   TangentialForce tangential;
   ObliqueOptions options;
-  double tolerance = 1e-10;           // the contract's T; options.relative_tolerance is CVODE's rtol for it
+  double tolerance =
+      kDefaultTolerance;              // the contract's T; options.relative_tolerance is CVODE's rtol for it
   double effective_modulus_pa = 0.0;  // E*
   double effective_shear_modulus_pa = 0.0;  // G* (Mindlin's k_t = 8 G* a)
   double dissipative_constant_s = 0.0;      // A of viscoelastic Hertz, given or calibrated (0: other laws)
