@@ -19,7 +19,7 @@
 namespace restitution::cli {
 
 struct DemObliqueOptions {
-  std::vector<double> angles_deg;   // --angles; empty: kDefaultAngles when there is friction
+  std::vector<double> angles_deg;   // --angle; empty: kDefaultAngles when there is friction
   double et_accuracy = 1e-4;        // --et-accuracy: the e_t accuracy LAMMPS's steps per contact are for
   std::optional<double> target_et;  // --target-et
   std::optional<double> reference_angle_deg;  // --reference-angle

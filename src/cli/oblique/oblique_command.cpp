@@ -16,6 +16,7 @@
 
 #include "cli/common/build_json.hpp"
 #include "cli/common/commands.hpp"
+#include "cli/common/deprecated_alias.hpp"
 #include "cli/common/json_writer.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
@@ -363,7 +364,9 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
       ->delimiter(',');
   cmd->add_option("--angle-range", o->angle_range,
                   "FROM:TO:N: N impact angles from FROM to TO degrees, evenly spaced (instead of --angle)");
-  cmd->add_option("--speed", o->speed, "impact speed in m/s")->capture_default_str();
+  add_deprecated_alias(
+      *cmd, cmd->add_option("--impact-velocity", o->speed, "impact speed in m/s")->capture_default_str(),
+      "--speed");
   cmd->add_option("--spin", o->spins,
                   "initial spin(s) of the (first) sphere in rad/s (positive adds to the slip); every angle "
                   "with every spin")
