@@ -183,6 +183,7 @@ struct Scene {
   std::vector<DampingCheckTask> damping_checks;
   std::vector<FitTask> fits;          // [[fit]]: measured eps(v) (scene_fit.hpp)
   std::vector<GasTask> gases;         // [[gas]]
+  std::vector<std::string> warnings;  // a key read by its old name, each naming the new one
   std::vector<ObliqueTask> obliques;  // [[oblique]] (scene_oblique.hpp)
 };
 

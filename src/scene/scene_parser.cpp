@@ -187,7 +187,8 @@ class Parser {
     each("damping_check", [this](TomlReader& r) { scene_.damping_checks.push_back(read_damping_check(r)); });
     each("gas", [this](TomlReader& r) { scene_.gases.push_back(read_gas(r)); });
     each("oblique", [this](TomlReader& r) {
-      scene_.obliques.push_back(detail::read_oblique_task(r, read_name(r, "oblique"), scene_.materials));
+      scene_.obliques.push_back(
+          detail::read_oblique_task(r, read_name(r, "oblique"), scene_.materials, scene_.warnings));
     });
     each("fit", [this](TomlReader& r) {
       scene_.fits.push_back(detail::read_fit_task(r, read_name(r, "fit"), scene_.materials));

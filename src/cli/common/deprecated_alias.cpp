@@ -10,10 +10,9 @@
 namespace restitution::cli {
 
 void add_deprecated_alias(CLI::App& command, CLI::Option* current, const std::string& old_name) {
-  const std::string message = fmt::format(
-      "restitution: warning: {} is deprecated and will be removed in the next "
-      "release; use {}\n",
-      old_name, current->get_name());
+  const std::string message =
+      fmt::format("restitution: warning: {} is deprecated and will be removed in 0.5.0; use {}\n", old_name,
+                  current->get_name());
   // One line however often the old spelling is repeated or however many list items it carries.
   auto warned = std::make_shared<bool>(false);
   const auto warn = [message, warned] {
