@@ -4,6 +4,7 @@
 // messages name what was typed; a scene's ranges and [[gas]] keys are the command line's.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -122,6 +123,19 @@ TEST(Vocabulary, MessagesNameWhatWasTyped) {
   EXPECT_EQ(first.err.find("first_time"), std::string::npos) << first.err;
   const CliOutcome speed = run_cli("oblique" + kSteel + " --friction 0.3 --angle 10 --impact-velocity 0");
   EXPECT_NE(speed.err.find("--impact-velocity must be"), std::string::npos) << speed.err;
+}
+
+TEST(Vocabulary, AFigureNotMadeIsSaidOnce) {
+  const TempFolder t;
+  setenv("RESTITUTION_PYTHON", "/nonexistent/python3", 1);  // no matplotlib: the warning is what is tested
+  const CliOutcome r =
+      run_cli("oblique" + kSteel + " --friction 0.3 --angle 30 --plot " + (t.path / "maw.png").string());
+  unsetenv("RESTITUTION_PYTHON");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("no oblique plot: /nonexistent/python3 cannot import matplotlib"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("no plot: no plot"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("plot: no plot"), std::string::npos) << r.err;
 }
 
 const std::string kMaterial = R"([materials.steel]

@@ -65,7 +65,7 @@ bool draw(const FitDataOptions& o, const FitData& data, const FitResult& result,
   const std::string why =
       run_plot_script("fit_data", tables.points, o.plot, {"--curves", tables.curves.string()},
                       scene::plot_figure_formats(o.plot, o.format));
-  if (!why.empty()) fmt::print(stderr, "restitution: warning: no fit-data plot: {}\n", why);
+  if (!why.empty()) fmt::print(stderr, "{}", no_plot_warning("fit-data", why));
   return why.empty();
 }
 

@@ -276,7 +276,7 @@ void draw(const ObliqueCommandOptions& o, const Setup& s, const std::vector<Obli
   }
   const std::string why = plot_maw(s, model, first_solved_restitution(impacts), data, o.plot,
                                    scene::plot_figure_formats(o.plot, o.format));
-  if (!why.empty()) fmt::print(stderr, "restitution: warning: no oblique plot: {}\n", why);
+  if (!why.empty()) fmt::print(stderr, "{}", no_plot_warning("oblique", why));
 }
 
 int run(const ObliqueCommandOptions& o) {
