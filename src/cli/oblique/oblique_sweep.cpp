@@ -39,7 +39,10 @@ std::vector<double> angle_range(const std::string& text) {
   }
   // Checked here, so that a bad end is blamed on the option that was typed, not on --angle.
   for (const double end : {from, to}) {
-    if (!(end >= 0.0 && end < 90.0)) throw fail("the angles must be in [0, 90) degrees from the normal");
+    if (!(end >= 0.0 && end < 90.0)) {
+      throw InvalidInput(fmt::format(
+          "--angle-range '{}': the angles must be in [0, 90) degrees from the normal, got {}", text, end));
+    }
   }
   return evenly_spaced(from, to, static_cast<std::size_t>(count));
 }
