@@ -78,7 +78,7 @@ done
 
 # The installed program needs no checkout: a bare `run` (outside any checkout) takes the installed default scene
 # and plots with the installed scripts.
-run_log=$(cd "$work" && "$prefix/bin/restitution" run --quick --output "$work/run" 2>&1) ||
+run_log=$(cd "$work" && "$prefix/bin/restitution" run --quick --out "$work/run" 2>&1) ||
   { echo "installed restitution run failed: $run_log"; exit 1; }
 grep -qF "$prefix/share/restitution/scenes/default.toml" <<<"$run_log" ||
   { echo "installed restitution run did not take the installed default scene: $run_log"; exit 1; }

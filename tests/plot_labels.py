@@ -111,7 +111,7 @@ def main(exe, source):
         pngs = 0
         for scene in scenes:
             out = os.path.join(folder, scene[:-5])
-            run(exe, ["run", os.path.join("scenes", scene), "--quick", "--threads", "2", "--output", out], env,
+            run(exe, ["run", os.path.join("scenes", scene), "--quick", "--threads", "2", "--out", out], env,
                 source)
             pngs += sum(1 for f in os.listdir(out) if f.endswith(".png"))
         run(exe, ["series", "validate", "--out", os.path.join(folder, "series")], env, source)
@@ -164,7 +164,7 @@ def main(exe, source):
         with open(scene, "w") as f:
             f.write('output = "x"\nformat = ["svg", "pdf"]\n[[trajectory]]\nname = "t"\nzeta = 0.5\n')
         out = os.path.join(folder, "scene_formats")
-        run(exe, ["run", scene, "--output", out], {**os.environ}, source)
+        run(exe, ["run", scene, "--out", out], {**os.environ}, source)
         written = sorted(f for f in os.listdir(out) if f.startswith("t."))
         if written != ["t.csv", "t.pdf", "t.svg"]:
             failures.append(f'format = ["svg", "pdf"] wrote {written}')
@@ -173,7 +173,7 @@ def main(exe, source):
                 failures.append("report.md does not link the SVG figure of a scene without PNG")
         with open(scene, "w") as f:
             f.write('output = "x"\nformat = ["png", "gif"]\n[[trajectory]]\nname = "t"\nzeta = 0.5\n')
-        refused = run(exe, ["run", scene, "--output", os.path.join(folder, "bad")], {**os.environ}, source, 2)
+        refused = run(exe, ["run", scene, "--out", os.path.join(folder, "bad")], {**os.environ}, source, 2)
         if "format" not in refused.stderr or "'gif'" not in refused.stderr:
             failures.append(f"format = [..., \"gif\"]: the error does not name the key and 'gif': {refused.stderr!r}")
     for failure in failures:

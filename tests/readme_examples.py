@@ -9,7 +9,7 @@ The program is on PATH, so docs may write `restitution ...` as well as `build/re
 Each other fenced block is checked by its language tag:
   sh      every command line runs (exit 0) in a scratch folder that sees the build, scenes, data and
           examples of the checkout; `bash scripts/...` lines (the set-up commands) are left to CI itself;
-  toml    a scene: `restitution run FILE --quick --output DIR` must succeed;
+  toml    a scene: `restitution run FILE --quick --out DIR` must succeed;
   python  runs with the built module on PYTHONPATH;
   cpp, c, cmake  must stand verbatim in a file under examples/, which its own test compiles and runs;
   json    illustrates an output format: not run.
@@ -99,7 +99,7 @@ def main() -> int:
             elif language == "toml":
                 scene = work / f"{page.stem}_scene_{line}.toml"
                 scene.write_text(text, encoding="utf-8")
-                failures += run([str(build / "restitution"), "run", str(scene), "--quick", "--output",
+                failures += run([str(build / "restitution"), "run", str(scene), "--quick", "--out",
                                  str(work / f"{page.stem}_scene_{line}")], work, env, where)
                 ran += 1
             elif language == "python":

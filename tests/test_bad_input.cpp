@@ -146,7 +146,7 @@ const std::vector<BadInput> kCases = {
     {"run {dir}/no-such.toml", "cannot read scene file"},
     {"run {dir}", "it is a folder"},
     {"run {dir}/a-file", "a-file:1:"},
-    {"run {dir}/a-file {dir}/a-file", "not expected"},
+    {"run {dir}/a-file {dir}/a-file", "restitution run does not take"},
     {"run {dir}/latin1.toml", "latin1.toml:2: not valid UTF-8 text"},
     {"run {dir}/too-fast.toml",
      "too-fast.toml:2: sweep fast: velocity 1000000 m/s with beta 100000 gives zeta"},

@@ -80,7 +80,7 @@ TEST(CheckDeckCli, OutputIsTodaysPlusTheDeck) {
 TEST(CheckDeckCli, DeckHoldsTheLinesVerbatimAndStatesItsTimeSteps) {
   const TempFolder folder;
   const std::string file = (folder.path / "check.in").string();
-  const auto r = run_cli("dem --code lammps --json --speeds 0.5 1 2 --deck " + file + kSteel);
+  const auto r = run_cli("dem --code lammps --json --impact-velocity 0.5 1 2 --deck " + file + kSteel);
   ASSERT_EQ(r.status, 0) << r.err;
   const json out = json::parse(r.out);
   const std::string deck = slurp(file);

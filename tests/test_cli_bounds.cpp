@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Issue 25 items 5-8: a scene's `output` stays under the working directory, empty --out/--output is refused,
+// Issue 25 items 5-8: a scene's `output` stays under the working directory, empty --out/--out is refused,
 // `reference --out` is never ignored, and every count option has an upper bound (exit 2, naming the option).
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -49,13 +49,13 @@ TEST_F(SceneOutput, AbsoluteOrClimbingOutputIsRefusedNamingTheKey) {
 
 TEST_F(SceneOutput, CommandLineOutputMayNameAnyFolder) {
   const fs::path out = folder_ / "chosen";
-  const auto r = run_cli("run " + scene_with("relative/ok") + " --output " + out.string());
+  const auto r = run_cli("run " + scene_with("relative/ok") + " --out " + out.string());
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::exists(out / "report.md"));
 }
 
 TEST(CliBounds, EmptyOutputIsRefusedEverywhere) {
-  expect_refused("run scenes/dashpot.toml --output ''", "--output");
+  expect_refused("run scenes/dashpot.toml --out ''", "--out");
   expect_refused("sweep --zeta-min 0 --zeta-max 1 --points 2 --out ''", "--out");
   expect_refused("reference --out ''", "--out");
   expect_refused("work-precision --out ''", "--out");
@@ -180,7 +180,7 @@ TEST_F(SceneOutput, CalibrationEpsOutOfRangeNamesFileLineAndKey) {
   std::ofstream(scene)
       << "output = \"unused\"\n\n[[calibration]]\nname = \"ok\"\neps = 0.5\nvelocity = 1.0\n\n"
       << "[[calibration]]\nname = \"tiny\"\nvelocity = 1.0\neps = 1e-300\n";
-  const auto r = run_cli("run " + scene.string() + " --output " + (folder_ / "out").string());
+  const auto r = run_cli("run " + scene.string() + " --out " + (folder_ / "out").string());
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find(scene.string() + ":11: calibration[1].eps: eps = 1e-300 is below eps(zeta = 1e+06)"),
             std::string::npos)

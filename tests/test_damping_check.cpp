@@ -272,7 +272,7 @@ TEST(DampingCheckScene, ShippedSceneWritesTheMapsAndTheFindings) {
   std::filesystem::remove_all(folder);
   setenv("RESTITUTION_PYTHON", "/nonexistent/python3", 1);  // the plots are not what is tested here
   const auto r = test_support::run_cli(
-      "run " RESTITUTION_SOURCE_DIR "/scenes/damping_check.toml --quick --output " + folder.string());
+      "run " RESTITUTION_SOURCE_DIR "/scenes/damping_check.toml --quick --out " + folder.string());
   ASSERT_EQ(r.status, 0) << r.err;
   std::ifstream csv(folder / "recipes.csv");
   std::string line;

@@ -91,8 +91,8 @@ TEST(DemObliqueLiggghts, RefusesWhatItCannotModel) {
   for (const auto& [arguments, named] :
        {std::pair<std::string, std::string>{kLines + " --tangential linear_history", "are for --code lammps"},
         {kLines + " --tangential-damping 0.5", "one tangential model"},
-        {"dem --code liggghts " + kSteel + " --eps 0.9 --velocity 1 --angles 30", "need --friction MU > 0"},
-        {kLines + " --wall --angles 30", "--wall does not support liggghts"}}) {
+        {"dem --code liggghts " + kSteel + " --eps 0.9 --velocity 1 --angle 30", "need --friction MU > 0"},
+        {kLines + " --wall --angle 30", "--wall does not support liggghts"}}) {
     const auto r = run_cli(arguments);
     EXPECT_EQ(r.status, 2) << arguments;
     EXPECT_NE(r.err.find(named), std::string::npos) << arguments << "\n" << r.err;
@@ -105,7 +105,7 @@ TEST(DemObliqueLiggghts, RefusesWhatItCannotModel) {
 // ones, and 50° is not.
 TEST(DemObliqueLiggghts, ImpactsSlidingOnTheCapAreReported) {
   const std::string arguments =
-      "dem --code liggghts " + kSteel + " --dissipative-constant 1e-6 --friction 0.3 --angles 50,55";
+      "dem --code liggghts " + kSteel + " --dissipative-constant 1e-6 --friction 0.3 --angle 50,55";
   const auto r = run_cli(arguments + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto impacts = nlohmann::json::parse(r.out)["oblique"]["impacts"];
@@ -126,7 +126,7 @@ TEST(DemObliqueLiggghts, ImpactsSlidingOnTheCapAreReported) {
 TEST(DemObliqueLiggghts, CheckDeckHasOneObliqueLinePerAngle) {
   TempFolder folder;
   const auto deck = folder.path / "check.liggghts";
-  const auto r = run_cli(kLines + " --angles 10,35,70 --deck " + deck.string());
+  const auto r = run_cli(kLines + " --angle 10,35,70 --deck " + deck.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string text = slurp(deck.string());
   EXPECT_NE(text.find("restitution-check"), std::string::npos);
@@ -144,13 +144,13 @@ TEST(DemObliqueLiggghts, CheckDeckHasOneObliqueLinePerAngle) {
 
 // A head-on angle has no slip at impact (e_t undefined): it is left out of the deck with a comment saying so,
 // instead of a formula dividing by 0 that stopped LAMMPS; one angle left is read as fix ave/time's scalar (of
-// several, its vector). Both were found running such decks (`--angles 0,30`) in LAMMPS and LIGGGHTS.
+// several, its vector). Both were found running such decks (`--angle 0,30`) in LAMMPS and LIGGGHTS.
 TEST(DemObliqueLiggghts, CheckDeckLeavesOutAHeadOnAngleAndReadsOneAngleAsAScalar) {
   for (const std::string code : {"lammps", "liggghts"}) {
     TempFolder folder;
     const auto deck = folder.path / "check.in";
     const auto r = run_cli("dem --code " + code + " " + kSteel +
-                           " --eps 0.9 --velocity 1 --friction 0.3 --angles 0,30 --deck " + deck.string());
+                           " --eps 0.9 --velocity 1 --friction 0.3 --angle 0,30 --deck " + deck.string());
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string text = slurp(deck.string());
     EXPECT_NE(text.find("angle 0 deg has no slip at impact (e_t undefined): not checked"), std::string::npos)

@@ -167,7 +167,7 @@ TEST(DemCommand, DeckOfSeveralTypesCollidesEveryTypePair) {
   const auto r = test_support::run_cli(
       "dem --code lammps --radius 0.002,0.004,0.008 --density 7850,7850,2500 --young-modulus "
       "2.1e11,2.1e11,6.3e10 "
-      "--poisson-ratio 0.3,0.3,0.22 --dissipative-constant 2e-7 --speeds 1 --json --deck " +
+      "--poisson-ratio 0.3,0.3,0.22 --dissipative-constant 2e-7 --impact-velocity 1 --json --deck " +
       deck);
   ASSERT_EQ(r.status, 0) << r.err;
   const json out = json::parse(r.out);

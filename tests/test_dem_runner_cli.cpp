@@ -56,7 +56,7 @@ SceneRun run_with_fake_lmp(const fs::path& folder, const std::string& bin_name, 
   // plots (a python that fails at once): the report without figures is enough here.
   const std::string command = "cd '" + folder.string() + "' && PATH='" + bin.string() +
                               ":/usr/bin:/bin' RESTITUTION_PYTHON=/bin/false " + RESTITUTION_EXE +
-                              " run scene.toml --output out >/dev/null 2>err.txt";
+                              " run scene.toml --out out >/dev/null 2>err.txt";
   const int raw = std::system(command.c_str());
   SceneRun r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128;

@@ -49,7 +49,7 @@ TEST(DemTangential, PrintsTheChosenModelsLineAndItsObliqueOutputs) {
                "tangential mindlin_rescale/force NULL 0.25 0.3 ",
                "mindlin_rescale/force --tangential-damping 0.25"}}) {
     const nlohmann::json dem =
-        json_of("dem --code lammps " + kSteel + " --angles 20,45,70 --tangential " + c.options);
+        json_of("dem --code lammps " + kSteel + " --angle 20,45,70 --tangential " + c.options);
     const std::string line = dem.at("lines").at(1).get<std::string>();
     EXPECT_NE(line.find(c.words), std::string::npos) << line;
     EXPECT_EQ(line.find("mindlin NULL"), std::string::npos) << line;
@@ -116,7 +116,7 @@ TEST(DemTangential, ForceHistoriesNeedThreeTimesTheStepsPerContact) {
   for (const auto& [model, steps] :
        {std::pair{"mindlin", 10000.0}, std::pair{"mindlin_rescale", 10000.0},
         std::pair{"mindlin/force", 30000.0}, std::pair{"mindlin_rescale/force", 30000.0}}) {
-    const nlohmann::json dem = json_of("dem --code lammps " + kSteel + " --angles 45 --tangential " + model);
+    const nlohmann::json dem = json_of("dem --code lammps " + kSteel + " --angle 45 --tangential " + model);
     EXPECT_EQ(dem.at("oblique").at("lammps_steps").at("steps_per_contact").get<double>(), steps) << model;
   }
 }

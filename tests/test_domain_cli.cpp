@@ -48,7 +48,7 @@ TEST(DomainCli, OutOfRangeAndUndeliverableRequestsExitWithTheirStatusAndRange) {
       // Item 9.
       {"reference --zeta 2e6", 2, "zeta = 2000000 is outside the checked range"},
       {"dem --code lammps --young-modulus 1e9 --poisson-ratio 0.3 --radius 0.01 --density 2500 --eps 0.9 "
-       "--velocity 1 --speeds 1e300",
+       "--velocity 1 --impact-velocity 1e300",
        2, "impact speed 1e+300 m/s: zeta = 9.28"},
       // Item 10: Adams on the stiff naive tail.
       {"eps --zeta 5000 --end naive --method adams", 2, "use --method auto"},

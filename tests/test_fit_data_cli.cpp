@@ -82,7 +82,7 @@ TEST(FitDataCli, BadInputExitsTwoNamingTheLineAndWritesNothing) {
                         Case{"header", "v,f\n1,0.5\n", "unknown column 'f'"}, Case{"empty", "", "empty"},
                         Case{"one", "v,eps\n1,0.5\n", "restitution-fit-one.csv: 1 point cannot fit"}}) {
     const auto path = write_csv(c.name, c.text);
-    const auto r = run_cli("fit-data " + path + " --output " + out.string());
+    const auto r = run_cli("fit-data " + path + " --out " + out.string());
     EXPECT_EQ(r.status, 2) << c.name << ": " << r.err;
     EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.name << ": " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -99,7 +99,7 @@ namespace {
 
 TEST(FitDataCli, CalibrateFromFitCarriesTheIntervalsOver) {
   const auto json_path = (std::filesystem::temp_directory_path() / "restitution-fit-carry.json").string();
-  ASSERT_EQ(test_support::run_cli("fit-data " + kExample + " --output " + json_path).status, 0);
+  ASSERT_EQ(test_support::run_cli("fit-data " + kExample + " --out " + json_path).status, 0);
   const auto r =
       test_support::run_cli("calibrate --from-fit " + json_path +
                             " --velocity 3 --json --young-modulus 1e7 --poisson-ratio 0.45 --radius "
@@ -118,7 +118,7 @@ TEST(FitDataCli, CalibrateFromFitCarriesTheIntervalsOver) {
 
 TEST(FitDataCli, DemFromFitUsesTheFitsAAndSaysItsUncertainty) {
   const auto json_path = (std::filesystem::temp_directory_path() / "restitution-fit-dem.json").string();
-  ASSERT_EQ(test_support::run_cli("fit-data " + kExample + " --output " + json_path).status, 0);
+  ASSERT_EQ(test_support::run_cli("fit-data " + kExample + " --out " + json_path).status, 0);
   const std::string material = " --young-modulus 1e7 --poisson-ratio 0.45 --radius 0.01 --density 1100";
   const auto r = test_support::run_cli("dem --code lammps --json --from-fit " + json_path + material);
   ASSERT_EQ(r.status, 0) << r.err;
@@ -142,7 +142,7 @@ TEST(FitDataCli, DemFromFitUsesTheFitsAAndSaysItsUncertainty) {
 // attributed to the lines of the version that can, never to the printed ones.
 TEST(FitDataCli, DemFromFitOnAYadeWithoutTheLawNamesTheLinesThatGiveItsEps) {
   const auto json_path = (std::filesystem::temp_directory_path() / "restitution-fit-yade.json").string();
-  ASSERT_EQ(test_support::run_cli("fit-data " + kExample + " --output " + json_path).status, 0);
+  ASSERT_EQ(test_support::run_cli("fit-data " + kExample + " --out " + json_path).status, 0);
   const std::string request = "dem --code yade --yade-version 2023.02a --from-fit " + json_path +
                               " --young-modulus 1e7 --poisson-ratio 0.45 --radius 0.01 --density 1100";
   const auto r = test_support::run_cli(request + " --json");

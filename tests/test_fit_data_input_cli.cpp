@@ -73,7 +73,7 @@ TEST(FitDataInput, ExtremeSigmaIsFittedOrRefusedInWords) {
   const auto scene = write(t.path / "inline.toml",
                            "title = \"t\"\noutput = \"out\"\n[[fit]]\nname = \"d\"\nv = [0.5, 1.0]\n"
                            "eps = [0.8, 0.7]\nsigma = [1e-155, 1e-155]\n");
-  const std::string err = refusal("run " + scene + " --output " + (t.path / "o").string());
+  const std::string err = refusal("run " + scene + " --out " + (t.path / "o").string());
   EXPECT_NE(err.find("sigma must be in [1e-100, 1e+100]"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(t.path / "o"));
 }
@@ -116,7 +116,7 @@ TEST(FitDataInput, SceneDataIsARegularFileRelativeToTheScene) {
   }
   EXPECT_FALSE(fs::exists(t.path / "out"));
   // The shipped scene reads data/ below itself from any working directory.
-  const auto r = run_cli("run " + std::string(RESTITUTION_SOURCE_DIR) + "/scenes/ice_fit.toml --output " +
+  const auto r = run_cli("run " + std::string(RESTITUTION_SOURCE_DIR) + "/scenes/ice_fit.toml --out " +
                          (t.path / "ice").string());
   EXPECT_EQ(r.status, 0) << r.err;
 }
@@ -141,7 +141,7 @@ TEST(FitDataInput, SceneDataStaysInTheScenesFolder) {
   write(t.path / "measured" / "drops.csv", "v,eps\n0.5,0.8\n1,0.78\n2,0.75\n4,0.71\n");
   fs::create_directory_symlink(t.path / "measured", t.path / "latest");
   for (const char* data : {"measured/drops.csv", "latest/drops.csv"}) {
-    const auto r = run_cli("run " + scene_with_data(t.path, data) + " --output " + (t.path / "out").string());
+    const auto r = run_cli("run " + scene_with_data(t.path, data) + " --out " + (t.path / "out").string());
     EXPECT_EQ(r.status, 0) << data << ": " << r.err;
   }
 }
@@ -191,22 +191,22 @@ TEST(FitDataInput, OutputNeverReplacesTheInputNorFollowsADanglingLink) {
   const TempFolder t;
   const std::string text = "v,eps,sigma\n" + kRows;
   const auto csv = write(t.path / "m.csv", text);
-  std::string err = refusal("fit-data " + csv + " --output " + csv);
+  std::string err = refusal("fit-data " + csv + " --out " + csv);
   EXPECT_NE(err.find("is the input"), std::string::npos) << err;
   fs::create_symlink(t.path / "m.csv", t.path / "link.json");
-  err = refusal("fit-data " + csv + " --output " + (t.path / "link.json").string());
+  err = refusal("fit-data " + csv + " --out " + (t.path / "link.json").string());
   EXPECT_NE(err.find("is the input"), std::string::npos) << err;
   EXPECT_EQ(slurp(csv), text);
   // A dangling link into folders that do not exist: refused, none of them created.
   fs::create_symlink(t.path / "elsewhere" / "deep" / "fit.json", t.path / "dangling.json");
-  err = refusal("fit-data " + csv + " --output " + (t.path / "dangling.json").string());
+  err = refusal("fit-data " + csv + " --out " + (t.path / "dangling.json").string());
   EXPECT_NE(err.find("whose folder does not exist"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(t.path / "elsewhere"));
-  err = refusal("fit-data " + csv + " --output ''");
+  err = refusal("fit-data " + csv + " --out ''");
   EXPECT_NE(err.find("empty path"), std::string::npos) << err;
   // A dangling link into a folder that exists is written through, as before.
   fs::create_symlink(t.path / "fit.json", t.path / "ok.json");
-  EXPECT_EQ(run_cli("fit-data " + csv + " --output " + (t.path / "ok.json").string()).status, 0);
+  EXPECT_EQ(run_cli("fit-data " + csv + " --out " + (t.path / "ok.json").string()).status, 0);
   EXPECT_TRUE(fs::is_regular_file(t.path / "fit.json"));
 }
 

@@ -29,7 +29,7 @@ fs::path scratch(const std::string& name) {
 TEST(FitDataScene, IceExampleGivesGStarWithItsInterval) {
   const fs::path out = scratch("ice");
   const auto r =
-      run_cli("run " + std::string(RESTITUTION_SOURCE_DIR) + "/scenes/ice_fit.toml --output " + out.string());
+      run_cli("run " + std::string(RESTITUTION_SOURCE_DIR) + "/scenes/ice_fit.toml --out " + out.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const auto summary = nlohmann::json::parse(slurp((out / "summary.json").string()));
   const auto& fit = summary["fit_ice"];
@@ -69,7 +69,7 @@ TEST(FitDataScene, InlineDataWithAMaterialGiveA) {
                           "eps = [0.85, 0.82, 0.80, 0.78, 0.74]\nsigma = [0.01, 0.01, 0.01, 0.01, 0.01]\n"
                           "material = \"rubber\"\nlaws = [\"viscoelastic-hertz\"]\n";
   setenv("RESTITUTION_PYTHON", "/nonexistent/python3", 1);  // no plot needed here
-  const auto r = run_cli("run " + scene.string() + " --output " + out.string());
+  const auto r = run_cli("run " + scene.string() + " --out " + out.string());
   unsetenv("RESTITUTION_PYTHON");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto summary = nlohmann::json::parse(slurp((out / "summary.json").string()));
@@ -85,7 +85,7 @@ TEST(FitDataScene, BadDataAreRefusedBeforeAnythingIsWritten) {
       fs::temp_directory_path() / ("restitution-fit-bad-" + std::to_string(::getpid()) + ".toml");
   std::ofstream(scene) << "title = \"t\"\noutput = \"fit-out\"\n"
                        << "[[fit]]\nname = \"drops\"\nv = [0.2, 0.5]\neps = [0.85, 1.5]\n";
-  const auto r = run_cli("run " + scene.string() + " --output " + out.string());
+  const auto r = run_cli("run " + scene.string() + " --out " + out.string());
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("fit[0].eps"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("point 1: eps"), std::string::npos) << r.err;

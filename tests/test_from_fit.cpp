@@ -29,7 +29,7 @@ std::string write(const std::filesystem::path& path, const std::string& text) {
 
 // The fit-data report of `csv`, written to `json`.
 nlohmann::json fit_report(const std::string& csv, const std::filesystem::path& json) {
-  const auto r = run_cli("fit-data " + csv + " --output " + json.string());
+  const auto r = run_cli("fit-data " + csv + " --out " + json.string());
   EXPECT_EQ(r.status, 0) << r.err;
   return nlohmann::json::parse(test_support::slurp(json.string()));
 }

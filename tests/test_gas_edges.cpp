@@ -144,7 +144,7 @@ packing_fraction = 1e-305
 rms_speed = 1.0
 haff_times = 100.0
 )";
-  const auto outcome = run_cli("run " + (folder.path / "dilute.toml").string() + " --output " +
+  const auto outcome = run_cli("run " + (folder.path / "dilute.toml").string() + " --out " +
                                (folder.path / "out").string());
   EXPECT_EQ(outcome.status, 2) << outcome.err;
   EXPECT_NE(outcome.err.find("gas \"g\""), std::string::npos) << outcome.err;
@@ -220,7 +220,7 @@ haff_times = 10.0
 points_per_decade = 2
 )";
   const auto outcome =
-      run_cli("run " + (folder.path / "gas.toml").string() + " --output " + (folder.path / "out").string());
+      run_cli("run " + (folder.path / "gas.toml").string() + " --out " + (folder.path / "out").string());
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   const std::string report = slurp((folder.path / "out" / "report.md").string());
   EXPECT_EQ(report.find("0 distinct collisions"), std::string::npos) << report;

@@ -87,7 +87,7 @@ TEST(GasScene, EvolvingSonineCoefficientIsAColumnOfTheSectionsTable) {
   const std::filesystem::path scene = folder.path / "gas.toml";
   std::ofstream(scene) << kHead + kGas + "a2 = \"evolving\"\n";
   const auto outcome =
-      test_support::run_cli("run " + scene.string() + " --output " + (folder.path / "out").string());
+      test_support::run_cli("run " + scene.string() + " --out " + (folder.path / "out").string());
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   const std::string table = test_support::slurp((folder.path / "out" / "g.csv").string());
   const std::string header = table.substr(0, table.find('\n'));
@@ -97,7 +97,7 @@ TEST(GasScene, EvolvingSonineCoefficientIsAColumnOfTheSectionsTable) {
 TEST(GasScene, SceneWritesBothCurves) {
   const test_support::TempFolder folder;
   const auto outcome = test_support::run_cli(std::string("run ") + RESTITUTION_SOURCE_DIR +
-                                             "/scenes/gas.toml --output " + folder.path.string());
+                                             "/scenes/gas.toml --out " + folder.path.string());
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   for (const char* file : {"viscoelastic_gas.csv", "constant_eps_gas.csv", "report.md", "summary.json"}) {
     EXPECT_TRUE(std::filesystem::exists(folder.path / file)) << file;

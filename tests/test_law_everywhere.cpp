@@ -241,7 +241,7 @@ eps = 0.3
 velocity = 1.0
 end = "naive"
 )";
-  const auto r = run_cli("run " + scene.string() + " --output " + folder_.string());
+  const auto r = run_cli("run " + scene.string() + " --out " + folder_.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const auto t = read_csv(folder_ / "tsuji.csv");
   ASSERT_EQ(t.at("zeta").size(), 3U);

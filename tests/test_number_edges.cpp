@@ -95,7 +95,7 @@ TEST(NumberEdges, ScenesRefuseUnderflowingAndSubnormalNumbers) {
     std::ofstream(path) << "output = \"out\"\n"
                         << "# zeta = 1e-400 in a comment is no number\n[[sweep]]\nname = \"tiny\"\nzeta = ["
                         << zetas << "]\n";
-    return run_cli("run " + path.string() + " --output " + (folder.path / "out").string());
+    return run_cli("run " + path.string() + " --out " + (folder.path / "out").string());
   };
   auto r = scene_with("0.1, 1e-400");
   EXPECT_EQ(r.status, 2) << r.err;
@@ -136,7 +136,7 @@ TEST(NumberEdges, SceneSweepAndSweepOutNameTheirColumnsAlike) {
   std::ofstream(scene)
       << "output = \"out\"\n[[sweep]]\nname = \"z\"\nzeta = [0.1, 1.0]\nquantities = [\"eps\", "
          "\"one_minus_eps\", \"duration\", \"max_compression\"]\n";
-  const auto r = run_cli("run " + scene.string() + " --output " + (folder.path / "out").string());
+  const auto r = run_cli("run " + scene.string() + " --out " + (folder.path / "out").string());
   ASSERT_EQ(r.status, 0) << r.err;
   const std::vector<std::string> scene_columns = header_of(slurp((folder.path / "out" / "z.csv").string()));
   ASSERT_GE(scene_columns.size(), 8U);

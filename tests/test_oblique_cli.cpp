@@ -26,7 +26,7 @@ TEST(ObliqueCli, GrazingWallImpactSlidesByTheClosedForm) {
   const auto r =
       run_cli(kSteel +
               " --wall --tangential linear_history --tangential-stiffness 2.2e6 --tangential-damping 0.5 "
-              "--friction 0.2 --angle 75,85 --speed 2 --json");
+              "--friction 0.2 --angle 75,85 --impact-velocity 2 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j["impacts"].size(), 2U);
@@ -84,7 +84,7 @@ TEST(ObliqueCli, BadInputExitsWithStatus2NamingTheProblem) {
       {" --tangential mindlin --friction -0.3 --angle 10", "friction"},
       {" --tangential mindlin/rescale --friction 0.3 --angle 10", "--tangential"},
       {" --tangential mindlin --friction 0.3 --angle 10 --wall --radius2 2e-3", "--wall"},
-      {" --tangential mindlin --friction 0.3 --angle 10 --speed 0", "--speed"},
+      {" --tangential mindlin --friction 0.3 --angle 10 --impact-velocity 0", "--impact-velocity"},
   };
   for (const auto& c : cases) {
     const auto r = run_cli(kSteel + c.arguments);

@@ -134,7 +134,7 @@ TEST(ObliqueEdges, DampingIsRequiredOrCalibrated) {
 
   for (const std::string wall : {"", " --wall"}) {
     const auto r = run_cli("oblique " + kMaterial + wall +
-                           " --eps 0.85 --velocity 2 --speed 2 --friction 0.3 --angle 0 --json");
+                           " --eps 0.85 --velocity 2 --impact-velocity 2 --friction 0.3 --angle 0 --json");
     ASSERT_EQ(r.status, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["tangential_model"], "mindlin");  // the default, as dem's
@@ -162,7 +162,7 @@ TEST(ObliqueEdges, LawTakesTheHertzMembers) {
   }
   const auto tsuji =
       run_cli("oblique " + kMaterial +
-              " --law tsuji-hertz --eps 0.8 --velocity 1 --speed 3 --friction 0.3 --angle 0 --json");
+              " --law tsuji-hertz --eps 0.8 --velocity 1 --impact-velocity 3 --friction 0.3 --angle 0 --json");
   ASSERT_EQ(tsuji.status, 0) << tsuji.err;
   EXPECT_NEAR(nlohmann::json::parse(tsuji.out)["impacts"][0]["normal_restitution"].get<double>(), 0.8, 1e-8);
   for (const std::string bad :
@@ -180,7 +180,7 @@ TEST(ObliqueEdges, LawTakesTheHertzMembers) {
 TEST(ObliqueEdges, WallMeansTheWallOfDem) {
   for (const std::string material : {"", " --wall-young-modulus 7e10 --wall-poisson-ratio 0.22"}) {
     const auto dem = run_cli("dem --code lammps " + kMaterial +
-                             " --dissipative-constant 1e-7 --wall --speeds 1 --json" + material);
+                             " --dissipative-constant 1e-7 --wall --impact-velocity 1 --json" + material);
     ASSERT_EQ(dem.status, 0) << dem.err;
     const auto d = nlohmann::json::parse(dem.out);
     const auto oblique = run_cli(kSteel + " --wall --friction 0.3 --angle 0 --json" + material);
@@ -246,14 +246,14 @@ TEST(ObliqueEdges, SecondSpinAnglesAsGivenAndOneListOfModels) {
 // 44.14: `dem` prints no cap rule and no steps per contact for a frictionless oblique table.
 TEST(ObliqueEdges, DemFrictionlessTableHasNoCapRuleOrSteps) {
   const auto r =
-      run_cli("dem --code lammps " + kMaterial + " --dissipative-constant 1e-7 --angles 30,89.999");
+      run_cli("dem --code lammps " + kMaterial + " --dissipative-constant 1e-7 --angle 30,89.999");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.find("rule:"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("steps per contact (|error|"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("frictionless lines"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("89.999 "), std::string::npos) << r.out;
   const auto j = nlohmann::json::parse(
-      run_cli("dem --code lammps " + kMaterial + " --dissipative-constant 1e-7 --angles 30 --json").out);
+      run_cli("dem --code lammps " + kMaterial + " --dissipative-constant 1e-7 --angle 30 --json").out);
   EXPECT_FALSE(j["oblique"].contains("cap_rule"));
   EXPECT_FALSE(j["oblique"].contains("lammps_steps"));
 }

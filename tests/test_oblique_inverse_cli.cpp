@@ -85,9 +85,9 @@ TEST(DemOblique, RefusesWhatItCannotDo) {
   EXPECT_NE(unreachable.err.find("gives e_t in [-0.6"), std::string::npos) << unreachable.err;
   EXPECT_TRUE(unreachable.out.empty());
   for (const std::string& bad :
-       {kLines + " --target-et 0.3", kLines + " --reference-angle 20", kLines + " --angles 95",
+       {kLines + " --target-et 0.3", kLines + " --reference-angle 20", kLines + " --angle 95",
         kLines + " --target-et 0.3 --reference-angle 0", kLines + " --et-accuracy 0",
-        "dem --code mercurydpm " + kSteel + " --eps 0.9 --velocity 1 --friction 0.3 --angles 10",
+        "dem --code mercurydpm " + kSteel + " --eps 0.9 --velocity 1 --friction 0.3 --angle 10",
         "dem --code lammps " + kSteel + " --eps 0.9 --velocity 1 --target-et 0.3 --reference-angle 20"}) {
     const auto r = run_cli(bad);
     EXPECT_EQ(r.status, 2) << bad;

@@ -47,7 +47,7 @@ TEST(ObliqueScene, ReadsTheSection) {
   const Scene s =
       parse_scene(kHead + kOblique +
                       "model = [\"mindlin\", \"linear_nohistory\"]\nspins = { from = -100.0, to = 100.0, "
-                      "points = 3 }\nwall = true\nspeed = 2.0\ntangential_damping = 0.5\nplot = false\n",
+                      "points = 3 }\nwall = true\nimpact_velocity = 2.0\ntangential_damping = 0.5\nplot = false\n",
                   "oblique.toml");
   ASSERT_EQ(s.obliques.size(), 1U);
   const ObliqueTask& t = s.obliques[0];
@@ -75,7 +75,7 @@ TEST(ObliqueScene, RefusesBadKeysByName) {
   refused("frictoin = 0.3\n", "unknown key");
   refused("model = \"mindlim\"\n", "mindlim");
   refused("spins = [1.0, nan]\n", "spins");
-  refused("speed = 0.0\n", "speed");
+  refused("impact_velocity = 0.0\n", "impact_velocity");
   refused("tolerance = 1.0\n", "tolerance");
   refused("mindlin_stiffness = -1.0\n", "mindlin_stiffness");
   refused("model = \"yade_mindlin\"\n", "model");  // not run here: one list with the command
@@ -100,7 +100,7 @@ std::vector<std::string> fields_of(const std::string& line) {
 TEST(ObliqueScene, ShippedSceneWritesTheCommandsNumbers) {
   const test_support::TempFolder folder;
   const auto outcome = test_support::run_cli(std::string("run ") + RESTITUTION_SOURCE_DIR +
-                                             "/scenes/oblique.toml --output " + folder.path.string());
+                                             "/scenes/oblique.toml --out " + folder.path.string());
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   for (const char* file : {"steel_on_wall.csv", "report.md", "summary.json"}) {
     EXPECT_TRUE(std::filesystem::exists(folder.path / file)) << file;
@@ -113,7 +113,7 @@ TEST(ObliqueScene, ShippedSceneWritesTheCommandsNumbers) {
   const std::string command =
       "oblique --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --dissipative-constant "
       "1e-9 "
-      "--wall --wall-young-modulus 2e11 --wall-poisson-ratio 0.3 --friction 0.3 --speed 1 --json";
+      "--wall --wall-young-modulus 2e11 --wall-poisson-ratio 0.3 --friction 0.3 --impact-velocity 1 --json";
   for (const std::size_t row : {std::size_t{12}, std::size_t{58 + 31}}) {
     const std::vector<std::string> f = fields_of(lines[row]);
     ASSERT_EQ(f.size(), 16U);
@@ -154,7 +154,7 @@ TEST(ObliqueScene, ReadmeSteelPlotsAndPlotFalseSkipsTheStickingLimit) {
           << "tangential_damping = 0.5\nplot = " << (plot ? "true" : "false") << "\n";
     }
     const auto outcome =
-        test_support::run_cli("run " + scene + " --output " + (folder.path / "out").string());
+        test_support::run_cli("run " + scene + " --out " + (folder.path / "out").string());
     ASSERT_EQ(outcome.status, 0) << outcome.err;
     const auto summary =
         nlohmann::json::parse(test_support::slurp((folder.path / "out" / "summary.json").string()));

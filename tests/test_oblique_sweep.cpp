@@ -203,7 +203,7 @@ TEST(ObliqueSweep, BadRangesAndSpinsExitWithStatus2) {
       {" --angle-range 10:50 --friction 0.3", "--angle-range must be FROM:TO:N"},
       {" --angle-range 10:50:1 --friction 0.3", "N must be a whole number"},
       {" --angle-range 10:x:4 --friction 0.3", "not a number"},
-      {" --angle-range 10:95:4 --friction 0.3", "--angle must be in [0, 90)"},
+      {" --angle-range 10:95:4 --friction 0.3", "--angle-range '10:95:4': the angles must be in [0, 90)"},
       {" --angle 10 --angle-range 10:50:3 --friction 0.3", "not both"},
       {" --angle 10 --spin inf --friction 0.3", "--spin must be finite"},
   };

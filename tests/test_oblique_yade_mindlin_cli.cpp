@@ -2,7 +2,7 @@
 // `restitution dem --code yade --friction MU` on YADE 2023.02a's betan lines: the oblique outputs are the
 // library's yade_mindlin solve with the lines' own numbers (kno, kso of Ip2_FrictMat_FrictMat_MindlinPhys,
 // the printed betan, betas = betan, tan(frictionAngle)) and YADE's arms; frictionless lines print none;
-// what YADE's lines cannot model (--target-et, the 2024.02a (en, vn) lines at --angles) exits 2 naming it;
+// what YADE's lines cannot model (--target-et, the 2024.02a (en, vn) lines at --angle) exits 2 naming it;
 // --deck adds one restitution-oblique-check line per angle (tests/dem/oblique_yade_mindlin.cpp runs it).
 #include <gtest/gtest.h>
 
@@ -36,7 +36,7 @@ double parameter(const nlohmann::json& j, const std::string& name) {
 }
 
 TEST(ObliqueYadeMindlinCli, DemOutputsAreTheLibrarysSolve) {
-  const auto r = run_cli(kSteel + " --yade-version 2023.02a --friction 0.3 --angles 5,20,45,70 --json");
+  const auto r = run_cli(kSteel + " --yade-version 2023.02a --friction 0.3 --angle 5,20,45,70 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_TRUE(j.contains("oblique")) << r.out;
@@ -83,10 +83,10 @@ TEST(ObliqueYadeMindlinCli, WhatYadesLinesCannotModelExits2) {
       run_cli(kSteel + " --yade-version 2023.02a --friction 0.3 --target-et 0.2 --reference-angle 20");
   EXPECT_EQ(inverse.status, 2);
   EXPECT_NE(inverse.err.find("--target-et"), std::string::npos) << inverse.err;
-  const auto en_vn = run_cli(kSteel + " --yade-version 2024.02a --friction 0.3 --angles 10");
+  const auto en_vn = run_cli(kSteel + " --yade-version 2024.02a --friction 0.3 --angle 10");
   EXPECT_EQ(en_vn.status, 2);
   EXPECT_NE(en_vn.err.find("2024.02a"), std::string::npos) << en_vn.err;
-  // Without --angles the (en, vn) lines print as before, with no oblique impacts.
+  // Without --angle the (en, vn) lines print as before, with no oblique impacts.
   const auto plain = run_cli(kSteel + " --yade-version 2024.02a --friction 0.3 --json");
   ASSERT_EQ(plain.status, 0) << plain.err;
   EXPECT_FALSE(nlohmann::json::parse(plain.out).contains("oblique"));
@@ -98,7 +98,7 @@ TEST(ObliqueYadeMindlinCli, DeckHasOneObliqueCheckLinePerAngle) {
   TempFolder folder;
   const auto deck = (folder.path / "check.py").string();
   const auto r =
-      run_cli(kSteel + " --yade-version 2023.02a --friction 0.3 --angles 5,20,45,70 --json --deck " + deck);
+      run_cli(kSteel + " --yade-version 2023.02a --friction 0.3 --angle 5,20,45,70 --json --deck " + deck);
   ASSERT_EQ(r.status, 0) << r.err;
   const auto out = nlohmann::json::parse(r.out);
   const auto& impacts = out["oblique"]["impacts"];
@@ -126,7 +126,7 @@ TEST(ObliqueYadeMindlinCli, DeckHasOneObliqueCheckLinePerAngle) {
 TEST(ObliqueYadeMindlinCli, DeckSpellsAHeadOnAnglesNanForPython) {
   TempFolder folder;
   const auto deck = (folder.path / "check.py").string();
-  ASSERT_EQ(run_cli(kSteel + " --yade-version 2023.02a --friction 0.3 --angles 0,30 --deck " + deck).status,
+  ASSERT_EQ(run_cli(kSteel + " --yade-version 2023.02a --friction 0.3 --angle 0,30 --deck " + deck).status,
             0);
   const std::string text = slurp(deck);
   EXPECT_NE(text.find("OBLIQUE_ET_RESTITUTION = [float('nan'), "), std::string::npos) << text;

@@ -61,12 +61,12 @@ constexpr rlim_t kLimit = 1024;
 TEST(OutputLeftovers, AFailedWriteLeavesNoTemporaryFile) {
   const std::string source = RESTITUTION_SOURCE_DIR;
   const std::vector<std::string> commands = {
-      "fit-data " + source + "/examples/fit/rubber_drop.csv --output OUT/fit.json",
+      "fit-data " + source + "/examples/fit/rubber_drop.csv --out OUT/fit.json",
       "export c-header --out OUT/fast.h",
       "series certify --out OUT/coefficients.csv",
       // An existing folder: a run that fails keeps it (it may hold other files), so only the cleanup of the
       // failed write itself removes the temporary.
-      "run " + source + "/scenes/trajectory.toml --quick --output OUT",
+      "run " + source + "/scenes/trajectory.toml --quick --out OUT",
   };
   for (std::string command : commands) {
     const TempFolder dir;
@@ -110,7 +110,7 @@ std::pair<pid_t, pid_t> run_until_plotting(const fs::path& dir) {
     const int null = ::open("/dev/null", O_WRONLY);
     dup2(null, STDOUT_FILENO);
     dup2(null, STDERR_FILENO);
-    execl(RESTITUTION_EXE, RESTITUTION_EXE, "run", scene.c_str(), "--output", out.c_str(),
+    execl(RESTITUTION_EXE, RESTITUTION_EXE, "run", scene.c_str(), "--out", out.c_str(),
           static_cast<char*>(nullptr));
     _exit(127);
   }
@@ -172,7 +172,7 @@ TEST(OutputLeftovers, APlotBecomesItsImageOnlyWhenItSucceeds) {
     const fs::path scene = dir.path / "scene.toml";
     std::ofstream(scene) << "output = \"unused\"\n[[trajectory]]\nname = \"t\"\nzeta = 0.5\n";
     setenv("RESTITUTION_PYTHON", slow_plotting_python(dir.path, 0.0, exit_status).c_str(), 1);
-    const CliOutcome r = run_cli("run " + scene.string() + " --output " + (dir.path / "out").string());
+    const CliOutcome r = run_cli("run " + scene.string() + " --out " + (dir.path / "out").string());
     unsetenv("RESTITUTION_PYTHON");
     EXPECT_EQ(r.status, 0) << r.err;
     if (exit_status == 0) {

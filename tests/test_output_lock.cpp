@@ -96,14 +96,14 @@ TEST(FolderLock, LocksBesideTheFolderAndRemovesOnlyTheEmptyFoldersItMade) {
   EXPECT_EQ(folder_lock_path(folder), lock_file);
   EXPECT_EQ(folder_lock_path(folder / ""), lock_file);
   {
-    const FolderLock lock(folder, "--output 'a/b/results'");
+    const FolderLock lock(folder, "--out 'a/b/results'");
     EXPECT_TRUE(fs::exists(lock_file));
     EXPECT_FALSE(fs::exists(folder)) << "made by the first file written into it, not by the lock";
     EXPECT_NE(refusal(lock_file), "not refused");
   }
   EXPECT_FALSE(fs::exists(dir.path / "a")) << "a run that wrote nothing leaves no folder";
   {
-    const FolderLock lock(folder, "--output 'a/b/results'");
+    const FolderLock lock(folder, "--out 'a/b/results'");
     fs::create_directories(folder);
     std::ofstream(folder / "report.md") << "done\n";
   }
@@ -183,15 +183,15 @@ TEST(CliLock, ASecondRunIntoTheSameFolderIsRefusedAtOnce) {
   const fs::path folder = dir.path / "results";
   const std::string scene = std::string(RESTITUTION_SOURCE_DIR) + "/scenes/trajectory.toml";
   const pid_t first =
-      spawn_cli({"run", scene, "--quick", "--output", folder.string()}, dir.path / "first.err");
+      spawn_cli({"run", scene, "--quick", "--out", folder.string()}, dir.path / "first.err");
   ASSERT_TRUE(wait_for_lock(folder.string() + ".lock", first));
   const std::string other = std::string(RESTITUTION_SOURCE_DIR) + "/scenes/dashpot.toml";
   const auto start = std::chrono::steady_clock::now();
-  const auto second = run_cli("run " + other + " --quick --output " + folder.string());
+  const auto second = run_cli("run " + other + " --quick --out " + folder.string());
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5)) << "refused at once";
   EXPECT_EQ(second.status, 2) << second.err;
   EXPECT_NE(
-      second.err.find(fmt::format("--output '{}' is being written by another restitution run (process {}",
+      second.err.find(fmt::format("--out '{}' is being written by another restitution run (process {}",
                                   folder.string(), first)),
       std::string::npos)
       << second.err;
@@ -207,10 +207,10 @@ TEST(CliLock, TwoRunsThroughASymlinkedFolderAreSerialised) {
   fs::create_directory_symlink(folder, dir.path / "link-to-same2");
   const std::string scene = std::string(RESTITUTION_SOURCE_DIR) + "/scenes/trajectory.toml";
   const pid_t first =
-      spawn_cli({"run", scene, "--quick", "--output", folder.string()}, dir.path / "first.err");
+      spawn_cli({"run", scene, "--quick", "--out", folder.string()}, dir.path / "first.err");
   ASSERT_TRUE(wait_for_lock(folder.string() + ".lock", first));
   const std::string other = std::string(RESTITUTION_SOURCE_DIR) + "/scenes/dashpot.toml";
-  const auto second = run_cli("run " + other + " --quick --output " + (dir.path / "link-to-same2").string());
+  const auto second = run_cli("run " + other + " --quick --out " + (dir.path / "link-to-same2").string());
   EXPECT_EQ(second.status, 2) << second.err;
   EXPECT_NE(second.err.find(fmt::format("is being written by another restitution run (process {}", first)),
             std::string::npos)

@@ -28,7 +28,7 @@ struct Outcome {
   std::string err;
 };
 
-// Runs `restitution run SCENE --output DIR/out` in its own process group with RESTITUTION_PYTHON=python; once
+// Runs `restitution run SCENE --out DIR/out` in its own process group with RESTITUTION_PYTHON=python; once
 // `ready` exists (or after `delay` when ready is empty) sends SIGINT to the group, as Ctrl-C does.
 Outcome interrupted_run(const fs::path& scene, const fs::path& python, const fs::path& ready,
                         std::chrono::milliseconds delay, const fs::path& err_file) {
@@ -40,7 +40,7 @@ Outcome interrupted_run(const fs::path& scene, const fs::path& python, const fs:
     dup2(fd, STDERR_FILENO);
     // The scene's folder/out, given on the command line (a scene's own output stays relative).
     const std::string out = (scene.parent_path() / "out").string();
-    execl(RESTITUTION_EXE, RESTITUTION_EXE, "run", scene.c_str(), "--output", out.c_str(),
+    execl(RESTITUTION_EXE, RESTITUTION_EXE, "run", scene.c_str(), "--out", out.c_str(),
           static_cast<char*>(nullptr));
     _exit(127);
   }
@@ -75,7 +75,7 @@ fs::path fake_python(const fs::path& dir, bool hang_on_probe, bool survives_sigi
 
 fs::path write_scene(const fs::path& dir, const std::string& body) {
   const fs::path scene = dir / "scene.toml";
-  std::ofstream(scene) << "output = \"unused\"\n" << body;  // interrupted_run passes --output dir/out
+  std::ofstream(scene) << "output = \"unused\"\n" << body;  // interrupted_run passes --out dir/out
   return scene;
 }
 

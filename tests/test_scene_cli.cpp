@@ -68,7 +68,7 @@ class ShippedScene : public ::testing::Test {
     } else {
       setenv("RESTITUTION_PYTHON", "/nonexistent/python3", 1);
     }
-    const auto r = run_cli(fmt("run {}/scenes/{}.toml --quick --output {}", name));
+    const auto r = run_cli(fmt("run {}/scenes/{}.toml --quick --out {}", name));
     EXPECT_EQ(r.status, 0) << r.err;
     if (!plots && name != "calibration") {  // the calibration scene has no plots
       EXPECT_NE(r.err.find("cannot import matplotlib"), std::string::npos) << r.err;
@@ -192,7 +192,7 @@ TEST_F(ShippedScene, WorkPrecisionSectionWritesItsPointsAndSummary) {
   const fs::path scene = folder_ / "wp.toml";
   std::ofstream(scene) << "output = \"unused\"\n[[work_precision]]\nname = \"wp\"\nengines = [\"taylor\"]\n";
   setenv("RESTITUTION_PYTHON", "/nonexistent/python3", 1);
-  const auto r = run_cli("run " + scene.string() + " --quick --output " + folder_.string());
+  const auto r = run_cli("run " + scene.string() + " --quick --out " + folder_.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string report = slurp((folder_ / "report.md").string());
   EXPECT_EQ(report.find("not available"), std::string::npos) << report;

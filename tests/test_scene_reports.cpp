@@ -32,7 +32,7 @@ class SceneReport : public ::testing::Test {
   std::string run(const std::string& body) {
     const fs::path scene = folder_ / "scene.toml";
     std::ofstream(scene) << "output = \"unused\"\n" << body;
-    const auto r = run_cli("run " + scene.string() + " --output " + (folder_ / "out").string());
+    const auto r = run_cli("run " + scene.string() + " --out " + (folder_ / "out").string());
     EXPECT_EQ(r.status, 0) << r.err;
     return slurp((folder_ / "out" / "report.md").string());
   }
@@ -63,7 +63,7 @@ TEST_F(SceneReport, OutputNameCollisionsAndFailuresLeaveNoFolder) {
   std::ofstream(scene) << "output = \"unused\"\n"
                        << "[[sweep]]\nname = \"wp_summary\"\nzeta = [1.0]\n"
                        << "[[work_precision]]\nname = \"wp\"\n";
-  auto r = run_cli("run " + scene.string() + " --output " + (folder_ / "out").string());
+  auto r = run_cli("run " + scene.string() + " --out " + (folder_ / "out").string());
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("clash.toml:6: work_precision[0].name: work_precision \"wp\" would write "
                        "wp_summary.csv, which sweep"),
@@ -72,14 +72,14 @@ TEST_F(SceneReport, OutputNameCollisionsAndFailuresLeaveNoFolder) {
   EXPECT_FALSE(fs::exists(folder_ / "out"));
   std::ofstream(scene) << "output = \"unused\"\n"
                        << "[[sweep]]\nname = \"" << std::string(5000, 'a') << "\"\nzeta = [1.0]\n";
-  r = run_cli("run " + scene.string() + " --output " + (folder_ / "out").string());
+  r = run_cli("run " + scene.string() + " --out " + (folder_ / "out").string());
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("at most 100 characters"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(folder_ / "out"));
   // A calibration outside the checked range fails after planning: still no folder.
   std::ofstream(scene) << "output = \"unused\"\n"
                        << "[[calibration]]\neps = 1e-40\nvelocity = 1.0\nend = \"naive\"\n";
-  r = run_cli("run " + scene.string() + " --output " + (folder_ / "out").string());
+  r = run_cli("run " + scene.string() + " --out " + (folder_ / "out").string());
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("outside the checked range"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(folder_ / "out"));

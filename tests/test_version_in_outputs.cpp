@@ -109,7 +109,7 @@ TEST(VersionInOutputs, SceneSummaryAndReportNameTheCode) {
   std::ofstream(scene)
       << "output = \"unused\"\n[[sweep]]\nname = \"s\"\nzeta = { from = 0.1, to = 1.0, points = 3 }\n";
   setenv("RESTITUTION_PYTHON", "/nonexistent/python3", 1);  // no plots: the files are what is checked
-  const auto r = run_cli("run " + scene.string() + " --output " + (folder.path / "out").string());
+  const auto r = run_cli("run " + scene.string() + " --out " + (folder.path / "out").string());
   unsetenv("RESTITUTION_PYTHON");
   ASSERT_EQ(r.status, 0) << r.err;
   expect_names_the_code(nlohmann::json::parse(slurp((folder.path / "out" / "summary.json").string())),

@@ -1,57 +1,215 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// One vocabulary: every name of a method, an end (and the "both" set) and a law is spelled once, beside its
-// enum, and every front end parses it there; the defaults come from SolveOptions.
+// One vocabulary across commands, scene keys and messages (issue 44, item 13; docs/cli.md, "Spellings"): the
+// new spellings work, the old ones still do with one warning line naming the new, --help lists only the new;
+// messages name what was typed; a scene's ranges and [[gas]] keys are the command line's.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "cli_runner.hpp"
-#include "restitution/calibration.hpp"
-#include "restitution/collision_solver.hpp"
-#include "restitution/errors.hpp"
 
-namespace restitution {
 namespace {
 
-using test_support::run_cli;
+using restitution::test_support::CliOutcome;
+using restitution::test_support::lines_of;
+using restitution::test_support::run_cli;
+using restitution::test_support::slurp;
+using restitution::test_support::TempFolder;
 
-TEST(Vocabulary, NamesRoundTrip) {
-  ASSERT_EQ(method_names().size(), kMethods.size());
-  for (const Method m : kMethods) EXPECT_EQ(method_from_name(method_name(m)), m);
-  for (const CollisionEnd e : kCollisionEnds) {
-    EXPECT_EQ(end_from_name(end_name(e)), e);
-    EXPECT_EQ(end_set_from_name(end_name(e)), EndSet{e});
-  }
-  EXPECT_EQ(end_set_from_name(kBothEnds), EndSet::both());
-  for (const LawKind k : kLawKinds) EXPECT_EQ(law_from_name(law_name(k)), k);
-  EXPECT_EQ(law_names().size(), kLawKinds.size());
+const std::string kSteel =
+    " --young-modulus 2e11 --poisson-ratio 0.3 --radius 1e-3 --density 7800 --dissipative-constant 1e-7";
+const std::string kRubber = " --young-modulus 1e7 --poisson-ratio 0.45 --radius 0.01 --density 1100";
+
+// The old spelling gives the new one's output, with exactly one warning line on stderr that names the new.
+void expect_alias(const std::string& old_arguments, const std::string& new_arguments,
+                  const std::string& now) {
+  const CliOutcome current = run_cli(new_arguments);
+  const CliOutcome old = run_cli(old_arguments);
+  ASSERT_EQ(current.status, 0) << new_arguments << ": " << current.err;
+  EXPECT_EQ(current.err, "") << new_arguments;
+  EXPECT_EQ(old.status, 0) << old_arguments << ": " << old.err;
+  EXPECT_EQ(old.out, current.out) << old_arguments;
+  const std::vector<std::string> warning = lines_of(old.err);
+  ASSERT_EQ(warning.size(), 1U) << old.err;
+  EXPECT_NE(warning[0].find("deprecated"), std::string::npos) << warning[0];
+  EXPECT_NE(warning[0].find("use " + now), std::string::npos) << warning[0];
 }
 
-TEST(Vocabulary, UnknownNamesAreRefusedWithTheList) {
-  EXPECT_THROW((void)method_from_name("rk4"), InvalidInput);
-  EXPECT_THROW((void)end_set_from_name("middle"), InvalidInput);
-  try {
-    (void)end_set_from_name("middle");
-  } catch (const InvalidInput& e) {
-    EXPECT_STREQ(e.what(), "end must be naive, delayed-recovery or both, got 'middle'");
+TEST(Vocabulary, ImpactVelocityAndTheOldSpeedAndSpeeds) {
+  expect_alias("oblique" + kSteel + " --friction 0.3 --angle 30 --speed 2 --json",
+               "oblique" + kSteel + " --friction 0.3 --angle 30 --impact-velocity 2 --json",
+               "--impact-velocity");
+  // dem's list, space-separated as before or comma-separated; repeated, the warning is still one line.
+  const std::string dem = "dem --code lammps --eps 0.8 --velocity 1 --json" + kRubber;
+  expect_alias(dem + " --speeds 0.5 2 --speeds 4", dem + " --impact-velocity 0.5,2,4", "--impact-velocity");
+  EXPECT_NE(run_cli(dem + " --impact-velocity 0.5 2").out.find("{\"velocity_m_s\":2.0,"), std::string::npos);
+}
+
+TEST(Vocabulary, AngleForDemAsForOblique) {
+  const std::string dem = "dem --code lammps --friction 0.3 --json" + kSteel;
+  expect_alias(dem + " --angles 10,40", dem + " --angle 10,40", "--angle");
+}
+
+TEST(Vocabulary, OutForEveryOutput) {
+  const TempFolder t;
+  const std::string csv = std::string(RESTITUTION_SOURCE_DIR) + "/examples/fit/rubber_drop.csv";
+  const std::string a = (t.path / "a.json").string();
+  const std::string b = (t.path / "b.json").string();
+  const CliOutcome old = run_cli("fit-data " + csv + " --output " + a);
+  const CliOutcome now = run_cli("fit-data " + csv + " --out " + b);
+  ASSERT_EQ(now.status, 0) << now.err;
+  ASSERT_EQ(old.status, 0) << old.err;
+  EXPECT_EQ(lines_of(old.err).size(), 1U) << old.err;
+  EXPECT_NE(old.err.find("--output is deprecated"), std::string::npos) << old.err;
+  EXPECT_EQ(slurp(a), slurp(b));
+  EXPECT_FALSE(slurp(a).empty());
+
+  const std::string scene = std::string(RESTITUTION_SOURCE_DIR) + "/scenes/dashpot.toml --quick";
+  const CliOutcome run_old = run_cli("run " + scene + " --output " + (t.path / "old").string());
+  EXPECT_EQ(run_old.status, 0) << run_old.err;
+  EXPECT_NE(run_old.err.find("--output is deprecated"), std::string::npos) << run_old.err;
+  EXPECT_TRUE(std::filesystem::exists(t.path / "old" / "report.md"));
+  // The folder's name right after --out, the scene after it: the old spelling takes one value as the new.
+  const CliOutcome ordered = run_cli("run --output " + (t.path / "third").string() + " " + scene);
+  EXPECT_EQ(ordered.status, 0) << ordered.err;
+}
+
+TEST(Vocabulary, HelpListsOnlyTheNewSpellings) {
+  for (const auto& [command, old_name, new_name] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"oblique", "--speed ", "--impact-velocity"},
+           {"dem", "--speeds", "--impact-velocity"},
+           {"dem", "--angles", "--angle "},
+           {"run", "--output", "--out "},
+           {"fit-data", "--output", "--out "}}) {
+    const std::string help = run_cli(command + " --help").out;
+    EXPECT_EQ(help.find(old_name), std::string::npos) << command << " --help lists " << old_name;
+    EXPECT_NE(help.find(new_name), std::string::npos) << command << " --help lacks " << new_name;
   }
-  // The command line used to map an unknown method silently to auto.
-  const auto r = run_cli("eps --zeta 1 --method rk4");
+}
+
+TEST(Vocabulary, UnexpectedArgumentsAreAnsweredWithWhatTheCommandTakes) {
+  const CliOutcome r = run_cli("eps 1 --velocity 0.8 --eps");
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(run_cli("calibrate --eps 0.5 --velocity 1 --method rk4").status, 2);
-  EXPECT_EQ(run_cli("calibrate --eps 0.5 --velocity 1 --end both").status, 2);
-  EXPECT_EQ(
-      run_cli("sweep --zeta-min 0 --zeta-max 1 --points 2 --law hooke --out /tmp/restitution-vocabulary.csv")
-          .status,
-      2);
+  EXPECT_EQ(lines_of(r.err).size(), 1U) << r.err;
+  EXPECT_NE(r.err.find("restitution eps does not take '1 --eps'"), std::string::npos) << r.err;  // as typed
+  EXPECT_NE(r.err.find("it takes --zeta, --beta, --velocity"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("not expected"), std::string::npos) << r.err;
+  // A subcommand of a group, and hidden old spellings left unmentioned.
+  const CliOutcome eval = run_cli("series eval --kind naive-series --zeta 0.5 extra");
+  EXPECT_NE(eval.err.find("restitution series eval does not take 'extra': it takes --kind"),
+            std::string::npos)
+      << eval.err;
+  const CliOutcome dem = run_cli("dem --code lammps 3" + kRubber);
+  EXPECT_NE(dem.err.find("--impact-velocity"), std::string::npos) << dem.err;
+  EXPECT_EQ(dem.err.find("--speeds"), std::string::npos) << dem.err;
 }
 
-TEST(Vocabulary, DefaultsAreSolveOptions) {
-  EXPECT_EQ(CalibrationRequest{}.tolerance, SolveOptions{}.tolerance);
-  EXPECT_EQ(CalibrationRequest{}.method, SolveOptions{}.method);
-  const auto r = run_cli("eps --help");
-  EXPECT_NE(r.out.find("--tolerance FLOAT=1e-10"), std::string::npos) << r.out;
+TEST(Vocabulary, MessagesNameWhatWasTyped) {
+  const CliOutcome range = run_cli("oblique" + kSteel + " --friction 0.3 --angle-range 1:95:5");
+  EXPECT_EQ(range.status, 2);
+  EXPECT_NE(range.err.find("--angle-range"), std::string::npos) << range.err;
+  EXPECT_EQ(range.err.find("--angle must"), std::string::npos) << range.err;
+  const CliOutcome first = run_cli(
+      "gas --radius 0.005 --density 920 --eps 0.8 --velocity 2 --packing-fraction 0.1 --rms-speed 1 "
+      "--haff-times 1000 --first-time 1e10");
+  EXPECT_EQ(first.status, 2);
+  EXPECT_NE(first.err.find("--first-time must be below the duration"), std::string::npos) << first.err;
+  EXPECT_EQ(first.err.find("first_time"), std::string::npos) << first.err;
+  const CliOutcome speed = run_cli("oblique" + kSteel + " --friction 0.3 --angle 10 --impact-velocity 0");
+  EXPECT_NE(speed.err.find("--impact-velocity must be"), std::string::npos) << speed.err;
+}
+
+TEST(Vocabulary, AFigureNotMadeIsSaidOnce) {
+  const TempFolder t;
+  setenv("RESTITUTION_PYTHON", "/nonexistent/python3", 1);  // no matplotlib: the warning is what is tested
+  const CliOutcome r =
+      run_cli("oblique" + kSteel + " --friction 0.3 --angle 30 --plot " + (t.path / "maw.png").string());
+  unsetenv("RESTITUTION_PYTHON");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("no oblique plot: /nonexistent/python3 cannot import matplotlib"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("no plot: no plot"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("plot: no plot"), std::string::npos) << r.err;
+}
+
+const std::string kMaterial = R"([materials.steel]
+young_modulus = 2e11
+poisson_ratio = 0.3
+density = 7800.0
+radius = 1e-3
+dissipative_constant = 1e-7
+)";
+
+// Column `column` (0-based) of a CSV's rows, as text.
+std::vector<std::string> column_of(const std::string& csv, std::size_t column) {
+  std::vector<std::string> values;
+  const std::vector<std::string> rows = lines_of(csv);
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    std::size_t start = 0;
+    for (std::size_t c = 0; c < column; ++c) start = rows[i].find(',', start) + 1;
+    values.push_back(rows[i].substr(start, rows[i].find(',', start) - start));
+  }
+  return values;
+}
+
+TEST(Vocabulary, SceneAngleRangeIsTheCommandLinesGrid) {
+  const TempFolder t;
+  const std::filesystem::path scene = t.path / "o.toml";
+  std::ofstream(scene)
+      << "output = \"o\"\n" + kMaterial +
+             "[[oblique]]\nname = \"grid\"\nmaterial = \"steel\"\nfriction = 0.3\nplot = false\n"
+             "angles = { from = 1.0, to = 43.0, points = 15 }\nimpact_velocity = 2.0\n";
+  const CliOutcome run = run_cli("run " + scene.string() + " --out " + (t.path / "out").string());
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(run.err.find("warning"), std::string::npos) << run.err;
+  const std::string cli_csv = (t.path / "cli.csv").string();
+  const CliOutcome cli = run_cli(
+      "oblique" + kSteel + " --friction 0.3 --angle-range 1:43:15 --impact-velocity 2 --out " + cli_csv);
+  ASSERT_EQ(cli.status, 0) << cli.err;
+  const std::vector<std::string> from_scene = column_of(slurp((t.path / "out" / "grid.csv").string()), 1);
+  const std::vector<std::string> from_cli = column_of(slurp(cli_csv), 0);
+  EXPECT_EQ(from_scene, from_cli);
+  ASSERT_EQ(from_cli.size(), 15U);
+  EXPECT_EQ(from_cli[9], "28");  // (1·5 + 43·9)/14 in one rounding; 1 + (9/14)·42 is 28.000000000000004
+
+  // The old key still works, with one warning naming the new.
+  std::ofstream(scene)
+      << "output = \"o\"\n" + kMaterial +
+             "[[oblique]]\nname = \"grid\"\nmaterial = \"steel\"\nfriction = 0.3\nplot = false\n"
+             "angles = [30.0]\nspeed = 2.0\n";
+  const CliOutcome old = run_cli("run " + scene.string() + " --out " + (t.path / "old").string());
+  EXPECT_EQ(old.status, 0) << old.err;
+  EXPECT_NE(old.err.find("the key speed is deprecated and will be removed in 0.5.0; use impact_velocity"),
+            std::string::npos)
+      << old.err;
+}
+
+TEST(Vocabulary, GasSceneTakesTheCommandsSettings) {
+  const TempFolder t;
+  const std::filesystem::path scene = t.path / "g.toml";
+  std::ofstream(scene)
+      << "output = \"o\"\n[materials.pe]\nyoung_modulus = 1e8\npoisson_ratio = 0.4\n"
+         "density = 920.0\nradius = 0.005\ndissipative_constant = 1e-5\n"
+         "[[gas]]\nname = \"g\"\nmaterial = \"pe\"\npacking_fraction = 0.1\nrms_speed = 1.0\n"
+         "haff_times = 100.0\nfirst_time = 0.5\ncollision_rate_factor = 1.2\ntolerance = 1e-8\n";
+  const CliOutcome run = run_cli("run " + scene.string() + " --out " + (t.path / "out").string());
+  ASSERT_EQ(run.status, 0) << run.err;
+  const std::string cli_csv = (t.path / "cli.csv").string();
+  const CliOutcome cli = run_cli(
+      "gas --radius 0.005 --density 920 --young-modulus 1e8 --poisson-ratio 0.4 --dissipative-constant 1e-5 "
+      "--packing-fraction 0.1 --rms-speed 1 --haff-times 100 --first-time 0.5 --collision-rate-factor 1.2 "
+      "--tolerance 1e-8 --out " +
+      cli_csv);
+  ASSERT_EQ(cli.status, 0) << cli.err;
+  const std::string table = slurp((t.path / "out" / "g.csv").string());
+  EXPECT_EQ(table, slurp(cli_csv));
+  EXPECT_EQ(column_of(table, 0).front(), "0.5");
 }
 
 }  // namespace
-}  // namespace restitution

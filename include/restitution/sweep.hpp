@@ -35,6 +35,11 @@ inline constexpr unsigned kMaxSweepThreads = 1024;
 // logarithmic spacing with zeta-min = 0, points outside [1, kMaxSweepPoints], one point with min != max.
 std::vector<double> zeta_values(const ZetaGrid& grid);
 
+// `n` >= 1 values from `from` to `to`, evenly spaced, both ends exactly as given: value i is
+// (from (n-1-i) + to i) / (n-1), one rounding, so that whole-number ends give the nearest double (28, not
+// 28.000000000000004). The one linear grid of `oblique --angle-range` and of a scene's { from, to, points }.
+std::vector<double> evenly_spaced(double from, double to, std::size_t n);
+
 // One finished point: its index in the grid, its ζ, and either the result or the numerical failure.
 struct SweepPoint {
   std::size_t index = 0;

@@ -62,6 +62,18 @@ def _text(name, value):
     return value
 
 
+def _end(end):
+    """end as the library spells it: the attribute and JSON spelling "delayed_recovery" is the same end."""
+    return _text("end", end).replace("_", "-")
+
+
+def _scalar(value):
+    """A 0-d numpy array of real numbers as the number it holds (numpy's reductions return them); else value."""
+    if isinstance(value, _np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf":
+        return value.item()
+    return value
+
+
 def zeta_of(zeta=None, *, beta=None, velocity=None, material=None):
     """The damping parameter zeta (natural units) from exactly one of the three ways to give it.
 
@@ -220,14 +232,14 @@ def eps(zeta=None, end="delayed-recovery", tolerance=_TOLERANCE, method="auto", 
     if (type(zeta) is float and beta is None and material is None and velocity is None and type(end) is str
             and type(method) is str and type(tolerance) is float and law == "viscoelastic-hertz"
             and threads is None and progress is None):
-        return _core.eps_scalar(zeta, end, tolerance, method, law)  # fast path; pybind11 checks the types
+        return _core.eps_scalar(zeta, _end(end), tolerance, method, law)  # fast path; pybind11 checks the types
     workers = _threads(threads)
     law = _law(law, zeta, beta, material)
     _check_progress(progress)
     z = zeta_of(zeta, beta=beta, velocity=velocity, material=material)
     if isinstance(z, float):
-        return _core.eps_scalar(z, _text("end", end), _tolerance(tolerance), _text("method", method), law)
-    end, tolerance, method = _text("end", end), _tolerance(tolerance), _text("method", method)
+        return _core.eps_scalar(z, _end(end), _tolerance(tolerance), _text("method", method), law)
+    end, tolerance, method = _end(end), _tolerance(tolerance), _text("method", method)
     callback, bar = _progress_callback(progress, z.size)
     try:
         return _core.eps_array(z, end, tolerance, method, law, workers, callback)
@@ -272,6 +284,7 @@ def _threads(threads):
 
 
 def _tolerance(tolerance):
+    tolerance = _scalar(tolerance)
     if isinstance(tolerance, bool) or not isinstance(tolerance, _numbers.Real):
         raise TypeError(f"tolerance must be a real number, got {type(tolerance).__name__}")
     return float(tolerance)
@@ -328,7 +341,7 @@ def solve(zeta=None, end="both", tolerance=_TOLERANCE, method="auto", trajectory
     z = zeta_of(zeta, beta=beta, velocity=velocity, material=material)
     if not isinstance(z, float):
         raise TypeError("solve() takes one collision: zeta (or beta, velocity) must be scalars; use eps() for arrays")
-    return _core.solve(z, _text("end", end), _tolerance(tolerance), _text("method", method), bool(trajectory), law)
+    return _core.solve(z, _end(end), _tolerance(tolerance), _text("method", method), bool(trajectory), law)
 
 
 def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=_TOLERANCE, method="auto", *,
@@ -371,10 +384,11 @@ def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=_T
     law = _law(law, material=material)
     if material is not None and not isinstance(material, Material):
         raise TypeError(f"material must be a restitution.Material, got {type(material).__name__}")
+    eps, velocity = _scalar(eps), _scalar(velocity)
     for name, value in (("eps", eps), ("velocity", velocity)):
         if isinstance(value, bool) or not isinstance(value, _numbers.Real):
             raise TypeError(f"{name} must be a real number, got {type(value).__name__}")
-    return _core.calibrate(float(eps), float(velocity), _text("end", end), _tolerance(tolerance),
+    return _core.calibrate(float(eps), float(velocity), _end(end), _tolerance(tolerance),
                            _text("method", method), material, law)
 
 
@@ -488,7 +502,7 @@ def sweep_to_file(zetas, path, *, resume=False, end="both", tolerance=_TOLERANCE
         raise ValueError(f"zetas must be a 1-d array, got {z.ndim} dimensions")
     if stop is not None and not callable(stop):
         raise TypeError(f"stop must be callable or None, got {type(stop).__name__}")
-    return _core.sweep_to_file(z.tolist(), _os.fspath(path), bool(resume), _text("end", end), _tolerance(tolerance),
+    return _core.sweep_to_file(z.tolist(), _os.fspath(path), bool(resume), _end(end), _tolerance(tolerance),
                                _text("method", method), _threads(threads), _law(law), stop)
 
 
@@ -496,6 +510,7 @@ __all__.append("sweep_to_file")
 
 
 def _optional_real(name, value):
+    value = _scalar(value)
     if value is None:
         return None
     if isinstance(value, bool) or not isinstance(value, _numbers.Real):
@@ -582,7 +597,7 @@ def gas(*, radius=None, density=None, mass=None, eps=None, velocity=None, dissip
         raise TypeError(f"points_per_decade must be an int, got {type(points_per_decade).__name__}")
     if not (a2 is None or isinstance(a2, str)):
         a2 = _optional_real("a2", a2)
-    return _core.gas(**numbers, law=_text("law", law), end=_text("end", end),
+    return _core.gas(**numbers, law=_text("law", law), end=_end(end),
                      points_per_decade=int(points_per_decade), a2=a2, tolerance=_tolerance(tolerance))
 
 

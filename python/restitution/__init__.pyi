@@ -12,7 +12,7 @@ from ._oblique import ObliqueResult as ObliqueResult, oblique as oblique
 
 __version__: str  # e.g. "0.3.0", the same as `restitution --version`
 
-End = Literal["naive", "delayed-recovery"]
+End = Literal["naive", "delayed-recovery", "delayed_recovery"]
 Method = Literal["auto", "bdf", "adams", "taylor"]
 Law = Literal["viscoelastic-hertz", "linear-dashpot", "tsuji-hertz", "hertz-constant-damping"]  # the family table's order
 ArrayLike = Union[npt.ArrayLike, Sequence[float]]

@@ -7,7 +7,7 @@ import warnings as _warnings
 import numpy as _np
 
 from . import _restitution as _core
-from . import _optional_real, _real_array, _text, Material
+from . import _end, _optional_real, _real_array, _text, Material
 
 # The outputs in the order the repr shows them: attribute, unit (as the repr writes it), what it is.
 _FIELDS = (
@@ -75,10 +75,10 @@ def _same(a, b):
     return a == b
 
 
-def oblique(*, material, friction, angle, spin=0.0, speed=1.0, tangential="mindlin",
+def oblique(*, material, friction, angle, spin=0.0, impact_velocity=1.0, tangential="mindlin",
             tangential_stiffness=None, tangential_damping=0.0, wall=False, fixed_normal=False,
             end="delayed-recovery", torque_arm="lammps", tolerance=_core.default_tolerance, eps=None,
-            velocity=None, wall_young_modulus=None, wall_poisson_ratio=None, law="viscoelastic-hertz"):
+            velocity=None, wall_young_modulus=None, wall_poisson_ratio=None, law="viscoelastic-hertz", speed=None):
     """Oblique impacts of two spheres of one material, or of a sphere on a wall, with a tangential model
     as Debian's LAMMPS writes it in `pair granular` (docs/oblique.md), as `restitution oblique` computes them.
 
@@ -99,8 +99,9 @@ def oblique(*, material, friction, angle, spin=0.0, speed=1.0, tangential="mindl
         Impact angle(s) from the normal in degrees, in [0, 90).
     spin : float or array_like
         Spin of the (first) sphere before contact [rad/s], positive adding to the slip; broadcast with angle.
-    speed : float
-        Impact speed [m/s]: v cos(angle) normal, v sin(angle) tangential.
+    impact_velocity : float
+        Impact speed [m/s]: v cos(angle) normal, v sin(angle) tangential (`restitution oblique
+        --impact-velocity`). The old name speed still works, with a DeprecationWarning, until 0.5.0.
     tangential : {"mindlin", "linear_history", "linear_nohistory", "mindlin_rescale", "mindlin/force",
                   "mindlin_rescale/force", "liggghts_history"}
     tangential_stiffness : float, optional
@@ -149,22 +150,26 @@ def oblique(*, material, friction, angle, spin=0.0, speed=1.0, tangential="mindl
     """
     if not isinstance(material, Material):
         raise TypeError(f"material must be a restitution.Material, got {type(material).__name__}")
+    if speed is not None:
+        _warnings.warn("oblique(speed=...) is deprecated and will be removed in 0.5.0; use "
+                       "impact_velocity=...", DeprecationWarning, stacklevel=2)
+        impact_velocity = speed
     angles, spins = _np.broadcast_arrays(_real_array("angle", angle), _real_array("spin", spin))
     for name, flag in (("wall", wall), ("fixed_normal", fixed_normal)):
         if not isinstance(flag, bool):
             raise TypeError(f"{name} must be a bool, got {type(flag).__name__}")
     numbers = {name: _optional_real(name, value) for name, value in (
-        ("friction", friction), ("speed", speed), ("tangential_damping", tangential_damping),
+        ("friction", friction), ("impact_velocity", impact_velocity), ("tangential_damping", tangential_damping),
         ("tolerance", tolerance))}
-    for name in ("speed", "tangential_damping", "tolerance"):
+    for name in ("impact_velocity", "tangential_damping", "tolerance"):
         if numbers[name] is None:
             raise TypeError(f"{name} must be a real number")
     columns = _core.oblique_impacts(
         material, angles.ravel().tolist(), spins.ravel().tolist(), friction=numbers["friction"],
         tangential=_text("tangential", tangential),
         tangential_stiffness=_optional_real("tangential_stiffness", tangential_stiffness),
-        tangential_damping=numbers["tangential_damping"], speed=numbers["speed"], wall=wall,
-        fixed_normal=fixed_normal, end=_text("end", end), torque_arm=_text("torque_arm", torque_arm),
+        tangential_damping=numbers["tangential_damping"], speed=numbers["impact_velocity"], wall=wall,
+        fixed_normal=fixed_normal, end=_end(end), torque_arm=_text("torque_arm", torque_arm),
         tolerance=numbers["tolerance"], eps=_optional_real("eps", eps), velocity=_optional_real("velocity", velocity),
         wall_young_modulus=_optional_real("wall_young_modulus", wall_young_modulus),
         wall_poisson_ratio=_optional_real("wall_poisson_ratio", wall_poisson_ratio), law=_text("law", law))

@@ -50,13 +50,13 @@ def oblique(
     friction: Optional[float],
     angle: _Real,  # deg
     spin: _Real = ...,  # rad/s
-    speed: float = ...,  # m/s
+    impact_velocity: float = ...,  # m/s
     tangential: Tangential = ...,
     tangential_stiffness: Optional[float] = ...,  # N/m, N/m^2 for mindlin
     tangential_damping: float = ...,
     wall: bool = ...,
     fixed_normal: bool = ...,
-    end: Literal["naive", "delayed-recovery"] = ...,
+    end: Literal["naive", "delayed-recovery", "delayed_recovery"] = ...,
     torque_arm: TorqueArm = ...,
     tolerance: float = ...,
     eps: Optional[float] = ...,
@@ -64,6 +64,7 @@ def oblique(
     wall_young_modulus: Optional[float] = ...,  # Pa
     wall_poisson_ratio: Optional[float] = ...,
     law: Literal["viscoelastic-hertz", "tsuji-hertz", "hertz-constant-damping"] = ...,
+    speed: Optional[float] = ...,  # deprecated: impact_velocity
 ) -> ObliqueResult[float]: ...
 @overload
 def oblique(
@@ -72,13 +73,13 @@ def oblique(
     friction: Optional[float],
     angle: Union[_Real, _Array],
     spin: Union[_Real, _Array] = ...,
-    speed: float = ...,
+    impact_velocity: float = ...,
     tangential: Tangential = ...,
     tangential_stiffness: Optional[float] = ...,
     tangential_damping: float = ...,
     wall: bool = ...,
     fixed_normal: bool = ...,
-    end: Literal["naive", "delayed-recovery"] = ...,
+    end: Literal["naive", "delayed-recovery", "delayed_recovery"] = ...,
     torque_arm: TorqueArm = ...,
     tolerance: float = ...,
     eps: Optional[float] = ...,
@@ -86,4 +87,5 @@ def oblique(
     wall_young_modulus: Optional[float] = ...,  # Pa
     wall_poisson_ratio: Optional[float] = ...,
     law: Literal["viscoelastic-hertz", "tsuji-hertz", "hertz-constant-damping"] = ...,
+    speed: Optional[float] = ...,  # deprecated: impact_velocity
 ) -> ObliqueResult[npt.NDArray[np.float64]]: ...

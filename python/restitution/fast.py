@@ -31,7 +31,7 @@ __all__ = ["eps", "one_minus_eps", "zeta_from_eps", "collision_duration", "max_c
 
 
 def _call(name, argument, value, end):
-    end = _package._text("end", end)
+    end = _package._end(end)
     if type(value) in (float, int):
         return getattr(_core, name)(float(value), end)
     array = _package._real_array(argument, value)

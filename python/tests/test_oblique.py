@@ -57,7 +57,7 @@ def test_gross_sliding_closed_form(steel_damped):
     for tangential, stiffness, damping in (("linear_history", 2.2e6, 0.5), ("mindlin", None, 0.5),
                                            ("linear_nohistory", None, 1e3)):
         r = restitution.oblique(material=steel_damped, friction=mu, angle=[80.0, 85.0], spin=[0.0, 100.0],
-                                speed=speed, wall=True, tangential=tangential, tangential_stiffness=stiffness,
+                                impact_velocity=speed, wall=True, tangential=tangential, tangential_stiffness=stiffness,
                                 tangential_damping=damping)
         v_n = speed * np.cos(np.radians(r.angle_deg))
         slip_in = speed * np.sin(np.radians(r.angle_deg)) + 1e-3 * r.initial_spin
@@ -116,7 +116,7 @@ def test_docstring_example_runs():
     (dict(angle=10.0, friction=None), ValueError, "give friction"),
     (dict(angle=10.0, tangential="linear_histroy"), ValueError, "linear_histroy"),
     (dict(angle=10.0, tangential="linear_history", tangential_stiffness=None), ValueError, "tangential_stiffness"),
-    (dict(angle=10.0, speed=-1.0), ValueError, "speed"),
+    (dict(angle=10.0, impact_velocity=-1.0), ValueError, "impact_velocity"),
     (dict(angle="10"), TypeError, "angle"),
     (dict(angle=10.0, wall=1), TypeError, "wall"),
     (dict(angle=[10.0, 20.0], spin=[1.0, 2.0, 3.0]), ValueError, "broadcast"),
@@ -137,11 +137,11 @@ def test_damping_is_required_or_calibrated_and_the_wall_is_rigid():
     with pytest.raises(ValueError) as caught:
         restitution.oblique(material=restitution.Material(**STEEL), friction=0.3, angle=10.0)
     assert "dissipative_constant" in str(caught.value) and "eps" in str(caught.value)
-    r = restitution.oblique(material=restitution.Material(**STEEL), eps=0.85, velocity=2.0, speed=2.0,
+    r = restitution.oblique(material=restitution.Material(**STEEL), eps=0.85, velocity=2.0, impact_velocity=2.0,
                             friction=0.3, angle=0.0, wall=True)
     assert r.normal_restitution == pytest.approx(0.85, abs=1e-9)
     assert r.rigid_wall and r.tangential_model == "mindlin" and r.dissipative_constant > 0.0
-    own = restitution.oblique(material=restitution.Material(**STEEL), eps=0.85, velocity=2.0, speed=2.0,
+    own = restitution.oblique(material=restitution.Material(**STEEL), eps=0.85, velocity=2.0, impact_velocity=2.0,
                               friction=0.3, angle=0.0, wall=True, wall_young_modulus=2e11, wall_poisson_ratio=0.3)
     assert not own.rigid_wall and own.normal_restitution == pytest.approx(0.85, abs=1e-9)
     assert own.dissipative_constant != r.dissipative_constant  # calibrated on each contact

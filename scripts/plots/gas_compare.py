@@ -3,7 +3,7 @@
 """A gas deck's LAMMPS runs against the kinetic theory: T(t)/T0 (top) and the local exponent d ln T/d ln t
 (bottom), points for the runs, lines for the theory, one colour per law, with Haff's -2 and, when a viscoelastic
 run is shown, its -5/3. Usage: gas_compare.py CSV OUT_PNG [--format png,pdf,svg], the CSV of
-`restitution gas --compare --output` (columns run, law, time_s, temperature_j, theory_temperature_j, local_exponent,
+`restitution gas --compare-output` (columns run, law, time_s, temperature_j, theory_temperature_j, local_exponent,
 theory_local_exponent; the exponents empty at t = 0)."""
 import style  # first: it selects the Agg backend and sets the style
 

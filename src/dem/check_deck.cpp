@@ -73,7 +73,7 @@ void require_deck_size(Code code, std::size_t type_pairs, std::size_t speeds) {
   throw InvalidInput(
       fmt::format("--deck: {} type pair{} x {} speed{} = {} collisions; a {} check deck holds at most {} (so "
                   "that it runs "
-                  "in minutes): give fewer atom types (--radius, --classes) or speeds (--speeds)",
+                  "in minutes): give fewer atom types (--radius, --classes) or speeds (--impact-velocity)",
                   type_pairs, type_pairs == 1 ? "" : "s", speeds, speeds == 1 ? "" : "s", type_pairs * speeds,
                   code_name(code), most));
 }

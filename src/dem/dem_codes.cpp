@@ -19,7 +19,7 @@
 namespace restitution::dem {
 namespace {
 
-// YADE's lines give their impacts at --angles; YADE takes kso from Y and nu, so no --target-et.
+// YADE's lines give their impacts at --angle; YADE takes kso from Y and nu, so no --target-et.
 constexpr const char* kYadeObliqueRefusal =
     "--target-et, --reference-angle and --tangential are for --code lammps (or liggghts)";
 

@@ -79,7 +79,7 @@ struct CodeEntry {
   bool gas_deck;  // `gas --deck` writes its input (a data file and a log-spaced schedule)
   Companion companion;
   const char* companion_words;  // the companion as its header names it; nullptr with none
-  // Oblique impacts (`--friction`, `--angles`): the reader, the rule of its Coulomb cap in words, the coarse
+  // Oblique impacts (`--friction`, `--angle`): the reader, the rule of its Coulomb cap in words, the coarse
   // steps per shortest contact of the check deck's oblique pass (0: none), and why --tangential or
   // --target-et/--reference-angle are refused (nullptr: taken).
   ObliqueReader oblique;

@@ -195,6 +195,12 @@ CoolingRequest cooling_request(const GasInputs& in, ArgumentStyle style) {
   }
   r.a2_evolving = in.a2_evolving;
   check_haff_time(r, in, name);
+  // Here rather than only in cooling_curve, which knows no spelling: the message names the caller's.
+  const double duration_s = r.duration_in_haff_times ? r.duration * std::exp(log_haff_time(r)) : r.duration;
+  if (r.first_time_s >= duration_s) {
+    throw InvalidInput(fmt::format("{} must be below the duration {} s (0: six decades below it), got {}",
+                                   name("first_time"), duration_s, r.first_time_s));
+  }
   if (in.a2_of_haff_eps) {
     r.a2 = sonine_a2_constant_eps(haff_reference(r).eps);  // the Maxwellian gas's Haff ε
   } else {

@@ -56,8 +56,8 @@ void check_lists(const ObliqueInputs& in, ArgumentStyle style) {
     if (!std::isfinite(w)) throw InvalidInput(fmt::format("{} must be finite rad/s, got {}", spin, w));
   }
   if (!(in.speed_m_s > 0.0) || !std::isfinite(in.speed_m_s)) {
-    throw InvalidInput(
-        fmt::format("{} must be a positive number of m/s, got {}", spelled("speed", style), in.speed_m_s));
+    throw InvalidInput(fmt::format("{} must be a positive number of m/s, got {}",
+                                   spelled("impact_velocity", style), in.speed_m_s));
   }
 }
 

@@ -157,6 +157,9 @@ struct GasTask {
   std::optional<double> rms_speed_m_s, temperature_j;  // exactly one
   std::optional<double> duration_s, haff_times;        // exactly one
   int points_per_decade = 20;
+  double first_time_s = 0.0;           // 0: six decades below the end
+  double collision_rate_factor = 1.0;  // on Enskog's collision rate
+  std::optional<double> tolerance;     // default: the scene's
   std::string
       a2;  // the first Sonine coefficient as `gas --a2` takes it: "" (Maxwellian), a number, haff, evolving
   int line = 0;
@@ -180,6 +183,7 @@ struct Scene {
   std::vector<DampingCheckTask> damping_checks;
   std::vector<FitTask> fits;          // [[fit]]: measured eps(v) (scene_fit.hpp)
   std::vector<GasTask> gases;         // [[gas]]
+  std::vector<std::string> warnings;  // a key read by its old name, each naming the new one
   std::vector<ObliqueTask> obliques;  // [[oblique]] (scene_oblique.hpp)
 };
 

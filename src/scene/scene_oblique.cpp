@@ -15,7 +15,8 @@
 namespace restitution::scene::detail {
 
 ObliqueTask read_oblique_task(TomlReader& r, std::string name,
-                              const std::map<std::string, Material>& materials) {
+                              const std::map<std::string, Material>& materials,
+                              std::vector<std::string>& warnings) {
   ObliqueTask t;
   t.line = r.line();
   t.name = std::move(name);
@@ -62,9 +63,20 @@ ObliqueTask read_oblique_task(TomlReader& r, std::string name,
         "spins", *spins, [](double w) { return std::isfinite(w); }, "finite spins in rad/s");
     t.spins_rad_s = *spins;
   }
-  t.speed_m_s = r.number("speed").value_or(1.0);
+  // `speed` is the old name of the key, as --speed was of --impact-velocity: read for one more release.
+  const auto old_speed = r.number("speed");
+  const auto speed = r.number("impact_velocity");
+  if (old_speed && speed) r.fail("speed", "give impact_velocity alone (speed is its old name)");
+  if (old_speed) {
+    warnings.push_back(
+        fmt::format("[[oblique]] \"{}\": the key speed is deprecated and will be removed in 0.5.0; "
+                    "use impact_velocity",
+                    t.name));
+  }
+  t.speed_m_s = speed.value_or(old_speed.value_or(1.0));
   r.check_each(
-      "speed", {t.speed_m_s}, [](double v) { return v > 0.0 && std::isfinite(v); }, "a speed > 0 (m/s)");
+      old_speed ? "speed" : "impact_velocity", {t.speed_m_s},
+      [](double v) { return v > 0.0 && std::isfinite(v); }, "a speed > 0 (m/s)");
   t.wall = r.flag("wall").value_or(false);
   t.wall_young_modulus_pa = r.number("wall_young_modulus");
   t.wall_poisson_ratio = r.number("wall_poisson_ratio");

@@ -41,10 +41,12 @@ struct ObliqueTask {
 namespace detail {
 class TomlReader;
 // Reads the keys of one [[oblique]] (name already read): material, model, friction, angles, spins, wall,
-// speed, tangential_stiffness, mindlin_stiffness, tangential_damping, end, torque_arm, fixed_normal,
-// wall_young_modulus, wall_poisson_ratio, tolerance, plot, title. Throws InvalidInput naming the key.
+// impact_velocity (old name: speed, read with a line in `warnings`), tangential_stiffness, mindlin_stiffness,
+// tangential_damping, end, torque_arm, fixed_normal, wall_young_modulus, wall_poisson_ratio, tolerance, plot,
+// title. Throws InvalidInput naming the key.
 ObliqueTask read_oblique_task(TomlReader& r, std::string name,
-                              const std::map<std::string, Material>& materials);
+                              const std::map<std::string, Material>& materials,
+                              std::vector<std::string>& warnings);
 }  // namespace detail
 
 }  // namespace restitution::scene

@@ -125,17 +125,17 @@ Material read_material(TomlReader& r) {
 class Parser {
  public:
   // A scene file received from someone else must not write outside the folder it is run from: `output` is
-  // relative and never climbs (`..`); `run --output DIR` names any folder (the user's own choice).
+  // relative and never climbs (`..`); `run --out DIR` names any folder (the user's own choice).
   void check_output_folder(const std::filesystem::path& output) {
     if (output.is_absolute() || output.has_root_name() || output.has_root_directory()) {
       root_.fail("output", fmt::format("\"{}\" is absolute: a scene writes under the working directory "
-                                       "(give a relative folder, or `restitution run FILE --output DIR`)",
+                                       "(give a relative folder, or `restitution run FILE --out DIR`)",
                                        output.string()));
     }
     for (const std::filesystem::path& part : output) {
       if (part == "..") {
         root_.fail("output", fmt::format("\"{}\" climbs out with '..': a scene writes under the working "
-                                         "directory (or `restitution run FILE --output DIR`)",
+                                         "directory (or `restitution run FILE --out DIR`)",
                                          output.string()));
       }
     }
@@ -187,7 +187,8 @@ class Parser {
     each("damping_check", [this](TomlReader& r) { scene_.damping_checks.push_back(read_damping_check(r)); });
     each("gas", [this](TomlReader& r) { scene_.gases.push_back(read_gas(r)); });
     each("oblique", [this](TomlReader& r) {
-      scene_.obliques.push_back(detail::read_oblique_task(r, read_name(r, "oblique"), scene_.materials));
+      scene_.obliques.push_back(
+          detail::read_oblique_task(r, read_name(r, "oblique"), scene_.materials, scene_.warnings));
     });
     each("fit", [this](TomlReader& r) {
       scene_.fits.push_back(detail::read_fit_task(r, read_name(r, "fit"), scene_.materials));
@@ -521,6 +522,14 @@ class Parser {
       g.points_per_decade = static_cast<int>(*points);
     }
     g.a2 = read_sonine_a2(r);
+    // The keys of the command's --first-time, --collision-rate-factor and --tolerance.
+    g.first_time_s = r.number("first_time").value_or(g.first_time_s);
+    r.check_each(
+        "first_time", {g.first_time_s}, [](double v) { return v >= 0.0; },
+        "a time >= 0 s (0: six decades below the end)");
+    g.collision_rate_factor = r.number("collision_rate_factor").value_or(g.collision_rate_factor);
+    check_positive(r, "collision_rate_factor", {g.collision_rate_factor});
+    g.tolerance = r.number("tolerance");
     return g;
   }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "restitution/errors.hpp"
+#include "restitution/sweep.hpp"
 
 namespace restitution::scene::detail {
 namespace {
@@ -113,13 +114,14 @@ std::optional<std::vector<double>> TomlReader::numbers(std::string_view key) {
     if (log && *from <= 0.0) r.fail("from", "must be > 0 for spacing = \"log\"");
     const auto n = static_cast<long>(*points);
     if (n == 1 && *to != *from) r.fail("points", "one point needs from = to");
+    // A linear range is the command line's grid (oblique --angle-range), point for point.
+    if (!log) return evenly_spaced(*from, *to, static_cast<std::size_t>(n));
     for (long i = 0; i < n; ++i) {
       const double s = n == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(n - 1);
       // The ends are the numbers the user wrote (exp(log(0.01)) is 0.010000000000000004).
       values.push_back(i == n - 1 ? *to
                        : i == 0   ? *from
-                       : log      ? std::exp(std::log(*from) + s * (std::log(*to) - std::log(*from)))
-                                  : *from + s * (*to - *from));
+                                  : std::exp(std::log(*from) + s * (std::log(*to) - std::log(*from))));
     }
     return values;
   }

@@ -53,4 +53,18 @@ std::vector<double> zeta_values(const ZetaGrid& grid) {
   return zetas;
 }
 
+std::vector<double> evenly_spaced(double from, double to, std::size_t n) {
+  std::vector<double> values(n, from);
+  const auto last = static_cast<double>(n - 1);
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const auto k = static_cast<double>(i);
+    double value = (from * (last - k) + to * k) / last;
+    // Ends near the largest doubles overflow the weighted sum: interpolate from the lower end there.
+    if (!std::isfinite(value)) value = from + (to - from) / last * k;
+    values[i] = std::clamp(value, std::min(from, to), std::max(from, to));
+  }
+  if (n > 1) values.back() = to;
+  return values;
+}
+
 }  // namespace restitution

@@ -108,11 +108,11 @@ TEST_P(CheckDeck, CodeRunsTheDeckAndAgreesWithRestitution) {
 
 const std::vector<Case> kCases = {
     {"lammps_steel_delayed", "lammps", " --eps 0.9 --velocity 1" + kSteel},
-    {"lammps_rubber_naive", "lammps", " --eps 0.6 --velocity 2 --end naive --speeds 0.5 2 8" + kRubber},
+    {"lammps_rubber_naive", "lammps", " --eps 0.6 --velocity 2 --end naive --impact-velocity 0.5 2 8" + kRubber},
     {"liggghts_steel_naive", "liggghts", " --eps 0.9 --velocity 1 --end naive" + kSteel},
-    {"liggghts_rubber_delayed", "liggghts", " --eps 0.6 --velocity 2 --speeds 0.5 2 8" + kRubber},
+    {"liggghts_rubber_delayed", "liggghts", " --eps 0.6 --velocity 2 --impact-velocity 0.5 2 8" + kRubber},
     {"yade_steel", "yade", " --eps 0.8 --velocity 1" + kSteel},
-    {"yade_rubber", "yade", " --eps 0.5 --velocity 2 --speeds 0.5 2 8" + kRubber},
+    {"yade_rubber", "yade", " --eps 0.5 --velocity 2 --impact-velocity 0.5 2 8" + kRubber},
 };
 
 INSTANTIATE_TEST_SUITE_P(Codes, CheckDeck, testing::ValuesIn(kCases),

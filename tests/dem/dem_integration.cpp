@@ -85,7 +85,7 @@ TEST_P(DemIntegration, CodeMeasuresTheEpsRestitutionPredicts) {
   args.precision(17);
   args << "dem --code " << c.code << " --end " << c.end << " --eps " << m.eps << " --velocity " << v
        << " --young-modulus " << m.young_pa << " --poisson-ratio " << m.poisson << " --radius " << m.radius_m
-       << " --density " << m.density_kg_m3 << " --speeds " << speeds[0] << " " << speeds[1] << " "
+       << " --density " << m.density_kg_m3 << " --impact-velocity " << speeds[0] << " " << speeds[1] << " "
        << speeds[2] << " --friction " << c.friction << " --json";
   const auto outcome = restitution::test_support::run_cli(args.str());
   ASSERT_EQ(outcome.status, 0) << outcome.err;
@@ -160,7 +160,7 @@ TEST(DemScene, ShippedSceneRunsBothCodesAndAgreesWithRestitution) {
   std::filesystem::remove_all(folder);
   setenv("RESTITUTION_PYTHON", "/nonexistent/python3", 1);  // the plots are not what is tested here
   const auto r = restitution::test_support::run_cli(
-      "run " RESTITUTION_SOURCE_DIR "/scenes/dem.toml --quick --output " + folder.string());
+      "run " RESTITUTION_SOURCE_DIR "/scenes/dem.toml --quick --out " + folder.string());
   ASSERT_EQ(r.status, 0) << r.err;
   for (const auto& [name, code] :
        {std::pair{"steel_lammps", "lammps"}, std::pair{"rubber_liggghts", "liggghts"}}) {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The largest check decks `restitution dem --deck` writes, run as a user runs them: the most size classes
-// (--radius-range with --classes), the most radii (--radius R1,R2,...) and the most speeds (--speeds) one
+// (--radius-range with --classes), the most radii (--radius R1,R2,...) and the most speeds (--impact-velocity) one
 // deck allows (dem::kMaxDeckCollisionsLammps collisions), each in `lmp`, in `liggghts` and under
 // `mpirun -np 2 lmp`. Every deck must print its last check line, every collision's ε within
 // 1e-6 · min(ε, 1 − ε) of the ε the JSON output states, with the spheres apart at the end. One collision more
@@ -48,14 +48,14 @@ std::string series(std::size_t n, double first, double step, const std::string& 
 // The options of the largest deck of each kind at `extra` more collisions' worth (0: the largest allowed).
 std::string classes_options(std::size_t extra) {
   return " --radius-range 0.0045,0.005 --classes " +
-         std::to_string(dem::max_deck_types(dem::Code::lammps, 1) + extra) + " --speeds 1";
+         std::to_string(dem::max_deck_types(dem::Code::lammps, 1) + extra) + " --impact-velocity 1";
 }
 std::string radii_options(std::size_t extra) {
   const std::size_t n = dem::max_deck_types(dem::Code::lammps, 1) + extra;
-  return " --radius " + series(n, 0.004, 0.001 / static_cast<double>(n), ",") + " --speeds 1";
+  return " --radius " + series(n, 0.004, 0.001 / static_cast<double>(n), ",") + " --impact-velocity 1";
 }
 std::string speeds_options(std::size_t extra) {
-  return " --radius 0.005 --speeds " + series(dem::kMaxDeckCollisionsLammps + extra, 1.0, 1e-3, " ");
+  return " --radius 0.005 --impact-velocity " + series(dem::kMaxDeckCollisionsLammps + extra, 1.0, 1e-3, " ");
 }
 
 struct Case {
@@ -153,7 +153,7 @@ TEST(DeckBound, OneMoreIsRefusedNamingTheBound) {
   }
   // YADE runs each collision as a scene of its own: its bound is lower.
   const auto yade =
-      run_cli("dem --code yade --yade-version 2024.02a" + kSteel + " --radius 0.005 --speeds " +
+      run_cli("dem --code yade --yade-version 2024.02a" + kSteel + " --radius 0.005 --impact-velocity " +
               series(dem::kMaxDeckCollisionsYade + 1, 1.0, 0.01, " ") + " --deck " + deck + ".py");
   EXPECT_EQ(yade.status, 2) << yade.err;
   EXPECT_NE(yade.err.find("at most " + std::to_string(dem::kMaxDeckCollisionsYade)), std::string::npos)
@@ -165,7 +165,7 @@ TEST(DeckBound, OneMoreIsRefusedNamingTheBound) {
   for (int i = 0; i <= 30; ++i) radii += (i > 0 ? "," : "") + std::to_string(1e-5 * std::pow(1e3, i / 30.0));
   for (const std::string code : {"lammps", "liggghts"}) {
     const auto slow =
-        run_cli(fmt::format("dem --code {}{} --radius {} --speeds 1 --deck {}", code, kSteel, radii, deck));
+        run_cli(fmt::format("dem --code {}{} --radius {} --impact-velocity 1 --deck {}", code, kSteel, radii, deck));
     EXPECT_EQ(slow.status, 2) << slow.err;
     EXPECT_NE(slow.err.find("sphere-steps"), std::string::npos) << slow.err;
     EXPECT_FALSE(std::filesystem::exists(deck)) << code;

@@ -78,7 +78,7 @@ void expect_liggghts_agrees(const nlohmann::json& out, const std::vector<std::st
 
 TEST(ObliqueDemLinesLiggghts, LiggghtsGivesThePrintedObliqueOutputs) {
   // The default angles and the inverse's reference angle.
-  const auto r = run_cli(kSteel + " --angles 5,15,20,30,45,60,80 --target-et 0.25 --reference-angle 20");
+  const auto r = run_cli(kSteel + " --angle 5,15,20,30,45,60,80 --target-et 0.25 --reference-angle 20");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto out = nlohmann::json::parse(r.out);
   const auto lines = out["lines"].get<std::vector<std::string>>();

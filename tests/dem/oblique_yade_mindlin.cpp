@@ -132,7 +132,7 @@ INSTANTIATE_TEST_SUITE_P(Cases, ObliqueYadeMindlin,
                          ::testing::Combine(::testing::Bool(), ::testing::Values(0.0, 300.0)));
 
 // `restitution dem --code yade --friction 0.3 --yade-version 2023.02a` (the betan lines; steel, A = 1e-7 s)
-// prints the oblique impacts of its lines at --angles: Debian's YADE, given the lines as printed, agrees.
+// prints the oblique impacts of its lines at --angle: Debian's YADE, given the lines as printed, agrees.
 // At the printed timestep (the steps per contact for e_t within 1e-4) YADE's own e_t is within 1e-4; at a
 // tenth of it, extrapolated, within 1e-5, and the rebound angle and the spins within 1e-4 relative.
 class ObliqueYadeMindlinDemLines : public ::testing::TestWithParam<const char*> {};
@@ -142,7 +142,7 @@ TEST_P(ObliqueYadeMindlinDemLines, YadeGivesThePrintedObliqueOutputs) {
   ASSERT_FALSE(program.empty()) << "yade not found on PATH: scripts/setup installs Debian's yade";
   const auto r = restitution::test_support::run_cli(
       std::string(
-          "dem --code yade --radius 1e-3 --yade-version 2023.02a --angles 1,5,15,30,45,60,75,85 --json ") +
+          "dem --code yade --radius 1e-3 --yade-version 2023.02a --angle 1,5,15,30,45,60,75,85 --json ") +
       GetParam());
   ASSERT_EQ(r.status, 0) << r.err;
   const auto out = nlohmann::json::parse(r.out);

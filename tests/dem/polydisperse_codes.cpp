@@ -34,7 +34,7 @@ namespace dem = restitution::dem;
 
 const char* const kSet =
     "--radius 0.002,0.004,0.008 --density 7850,7850,2500 --young-modulus 2.1e11,2.1e11,6.3e10 "
-    "--poisson-ratio 0.3,0.3,0.22 --eps 0.9 --velocity 1 --speeds 0.25 1 4 --json";
+    "--poisson-ratio 0.3,0.3,0.22 --eps 0.9 --velocity 1 --impact-velocity 0.25 1 4 --json";
 
 json polydisperse_json(const std::string& code, double friction = 0.0) {
   const auto r = restitution::test_support::run_cli("dem --code " + code + " " + kSet + " --friction " +

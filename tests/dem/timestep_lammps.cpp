@@ -72,7 +72,7 @@ TEST(TimestepLammps, ReportedEpsErrorIsTheOneLammpsMakes) {
   ASSERT_FALSE(program.empty()) << "lmp not found on PATH: scripts/setup installs Debian's lammps";
   const json dem = run_json(
       "dem --code lammps --young-modulus 1e8 --poisson-ratio 0.4 --density 920 --radius 0.005 --eps 0.8 "
-      "--velocity 2 --speeds 2 --timestep 5e-6 --json");
+      "--velocity 2 --impact-velocity 2 --timestep 5e-6 --json");
   const double eps_law = dem.at("eps").at(0).at("eps").get<double>();
   const json& reported = dem.at("timestep").at("errors").at(0);
   const double mean_reported = reported.at("mean_eps_error").get<double>();

@@ -76,7 +76,7 @@ TEST_P(WallDeck, LammpsWallGivesTheLawsEps) {
 const std::vector<Case> kCases = {
     {"steel_rigid_wall_delayed", " --eps 0.9 --velocity 1" + kSteel},
     {"rubber_on_steel_wall_naive",
-     " --eps 0.6 --velocity 2 --end naive --speeds 0.5 2 8 --wall-young-modulus 2e11 --wall-poisson-ratio "
+     " --eps 0.6 --velocity 2 --end naive --impact-velocity 0.5 2 8 --wall-young-modulus 2e11 --wall-poisson-ratio "
      "0.3" +
          kRubber},
     {"steel_on_steel_wall_friction",
@@ -94,7 +94,7 @@ TEST(WallConvention, PairStringOnAWallGivesAnotherEps) {
   ASSERT_FALSE(restitution::dem::dem_program(restitution::dem::Code::lammps).empty()) << "lmp not found";
   const TempFolder folder;
   const std::string deck = (folder.path / "wall.in").string();
-  const std::string common = " --eps 0.9 --velocity 1 --speeds 1" + kSteel + " --json";
+  const std::string common = " --eps 0.9 --velocity 1 --impact-velocity 1" + kSteel + " --json";
   const auto wall = restitution::test_support::run_cli("dem --code lammps --wall --deck " + deck + common);
   ASSERT_EQ(wall.status, 0) << wall.err;
   const auto pair = restitution::test_support::run_cli("dem --code lammps" + common);

@@ -114,7 +114,7 @@ TEST(YadeLinesVersion, SceneSectionTargetsTheYadeOnPath) {
   setenv("RESTITUTION_PYTHON", "/nonexistent/python3", 1);  // the plots are not what is tested here
   const auto out = folder / "out";
   const auto r =
-      restitution::test_support::run_cli("run " + scene.string() + " --quick --output " + out.string());
+      restitution::test_support::run_cli("run " + scene.string() + " --quick --out " + out.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string report = restitution::test_support::slurp((out / "report.md").string());
   EXPECT_NE(report.find("The yade lines are for YADE 2023.02a (yade on PATH)"), std::string::npos) << report;
@@ -122,7 +122,7 @@ TEST(YadeLinesVersion, SceneSectionTargetsTheYadeOnPath) {
   const std::string shown = report.substr(0, report.find("The yade lines are for"));
   EXPECT_NE(shown.find("MindlinPhys(betan=MatchMaker(algo='val'"), std::string::npos) << shown;
   EXPECT_EQ(shown.find("vn="), std::string::npos) << shown;
-  const json cli = run_json("dem --code yade --eps 0.8 --velocity 1 --speeds 0.1 1 10 --json" + kMaterial);
+  const json cli = run_json("dem --code yade --eps 0.8 --velocity 1 --impact-velocity 0.1 1 10 --json" + kMaterial);
   const std::string csv = restitution::test_support::slurp((out / "steel_yade.csv").string());
   std::istringstream rows(csv);
   std::string row;

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string_view>
 #include <system_error>
 
 #include "child_process/child_process.hpp"
@@ -175,6 +176,12 @@ std::vector<std::string> figure_file_names(const std::string& stem, const std::v
   names.reserve(formats.size());
   for (const std::string& format : formats) names.push_back(fmt::format("{}.{}", stem, format));
   return names;
+}
+
+std::string no_plot_warning(const std::string& what, const std::string& why) {
+  constexpr std::string_view kSaid = "no plot: ";
+  const std::string reason = why.rfind(kSaid, 0) == 0 ? why.substr(kSaid.size()) : why;
+  return fmt::format("restitution: warning: no {} plot: {}\n", what, reason);
 }
 
 std::string run_plot_script(const std::string& script, const fs::path& data, const fs::path& image,

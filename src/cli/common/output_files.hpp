@@ -63,4 +63,8 @@ std::string run_plot_script(const std::string& script, const std::filesystem::pa
                             const std::vector<std::string>& arguments = {},
                             const std::vector<std::string>& formats = {"png"});
 
+// The warning line of a command's figure that was not made: "no WHAT plot: " and why (run_plot_script's
+// reason without its own "no plot: ", which would say it twice).
+std::string no_plot_warning(const std::string& what, const std::string& why);
+
 }  // namespace restitution::cli

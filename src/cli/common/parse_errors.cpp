@@ -2,6 +2,7 @@
 #include "cli/common/parse_errors.hpp"
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -98,7 +99,44 @@ std::string describe_parse_error(const CLI::App& app, const CLI::ParseError& err
 
 namespace {
 
+// The subcommand that was being parsed (`series eval`'s `eval`), or the app itself.
+const CLI::App& chosen_command(const CLI::App& app) {
+  for (const CLI::App* sub : app.get_subcommands()) return chosen_command(*sub);
+  return app;
+}
+
+// "restitution eps" for the chosen command.
+std::string command_path(const CLI::App& command) {
+  const CLI::App* parent = command.get_parent();
+  return parent == nullptr ? command.get_name() : command_path(*parent) + " " + command.get_name();
+}
+
+// CLI11: "The following arguments were not expected: 1 --eps": say instead what the command takes.
+std::string describe_unexpected(const CLI::App& app, const std::string& arguments) {
+  const CLI::App& command = chosen_command(app);
+  std::vector<std::string> names;
+  std::vector<std::string> positionals;
+  for (const CLI::Option* option : command.get_options()) {
+    // Hidden options (old spellings) stay unmentioned, as in --help.
+    if (option->get_group().empty() || option->get_name() == "--help") continue;
+    (option->nonpositional() ? names : positionals).push_back(option->get_name());
+  }
+  std::string takes = names.empty() ? std::string("no options") : fmt::format("{}", fmt::join(names, ", "));
+  if (!positionals.empty()) takes += fmt::format(" and the argument {}", fmt::join(positionals, ", "));
+  const std::string path = command_path(command);
+  return fmt::format("{} does not take '{}': it takes {} ({} --help says what each means)", path, arguments,
+                     takes, path);
+}
+
 std::string describe(const CLI::App& app, const std::string& message) {
+  for (const std::string_view extras :
+       {"The following argument was not expected: ", "The following arguments were not expected: "}) {
+    if (message.rfind(extras, 0) != 0) continue;
+    // CLI11 lists them last first: the command's own list is in the order typed.
+    const std::vector<std::string> typed = chosen_command(app).remaining();
+    return describe_unexpected(
+        app, typed.empty() ? message.substr(extras.size()) : fmt::format("{}", fmt::join(typed, " ")));
+  }
   // CLI11: "Could not convert: --zeta = abc" for a value of the wrong type.
   constexpr std::string_view kConversion = "Could not convert: ";
   if (message.rfind(kConversion, 0) == 0) {

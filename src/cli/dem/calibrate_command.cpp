@@ -39,7 +39,7 @@ struct CalibrateOptions {
   std::string method = method_name(CalibrationRequest{}.method);
   MaterialOptions material;
   bool json = false;
-  std::string from_fit;  // fit-data --output FILE: beta and its intervals instead of --eps
+  std::string from_fit;  // fit-data --out FILE: beta and its intervals instead of --eps
   bool end_given = false;
 };
 
@@ -125,7 +125,7 @@ void add_calibrate_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--eps", o->eps, "measured coefficient of restitution, in (0, 1)");
   cmd->add_option(
       "--from-fit", o->from_fit,
-      "instead of --eps: the JSON of fit-data --output; beta, eps at --velocity and A with the "
+      "instead of --eps: the JSON of fit-data --out; beta, eps at --velocity and A with the "
       "intervals the fit carries over (the Hertz fit with the lowest AIC, or at --end if given; one the fit "
       "itself rejects is said so, without intervals)");
   cmd->add_option("--velocity", o->velocity, "impact speed v > 0 in m/s")->required();

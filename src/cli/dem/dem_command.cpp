@@ -13,6 +13,7 @@
 
 #include "cli/common/build_json.hpp"
 #include "cli/common/commands.hpp"
+#include "cli/common/deprecated_alias.hpp"
 #include "cli/common/json_writer.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/dem/deck_json.hpp"
@@ -42,7 +43,7 @@ struct DemOptions {
   double tolerance = SolveOptions{}.tolerance;
   double friction = 0.0;  // Coulomb mu of the tangential model [1]
   bool json = false;
-  std::string from_fit;  // fit-data --output FILE: A (and the end) from a fit, with its uncertainty
+  std::string from_fit;  // fit-data --out FILE: A (and the end) from a fit, with its uncertainty
   bool end_given = false;
   std::string yade_version;  // --yade-version; empty: the yade on PATH
   std::string yade_source;   // how the targeted YADE was chosen (set by target_yade)
@@ -51,7 +52,7 @@ struct DemOptions {
   std::string deck_run;             // the command that runs it, once written
   ProductionOptions production;     // --timestep, --max-eps-error, --constant-eps
   WallOptions wall;                 // --wall: a sphere on a wall (cli/dem/dem_wall.hpp)
-  DemObliqueOptions oblique;        // --angles, --target-et (cli/dem/dem_oblique.hpp)
+  DemObliqueOptions oblique;        // --angle, --target-et (cli/dem/dem_oblique.hpp)
 };
 
 // The YADE the lines are for: --yade-version, else `yade --version` of the one on PATH, else the newest
@@ -216,7 +217,7 @@ void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optio
 // Several atom types (docs/dem.md, "Polydisperse sets"): lammps and liggghts only.
 int run_polydisperse(const DemOptions& o) {
   if (wants_oblique(o.oblique, dem::code_from_name(o.code), 0.0)) {
-    throw InvalidInput("several atom types take no --angles, --target-et or --reference-angle");
+    throw InvalidInput("several atom types take no --angle, --target-et or --reference-angle");
   }
   if (!o.from_fit.empty() || !o.yade_version.empty() || any_production_option(o.production)) {
     throw InvalidInput(
@@ -289,14 +290,18 @@ void add_dem_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--dissipative-constant", o->dissipative_constant, "the dissipative constant A in s");
   cmd->add_option(
       "--from-fit", o->from_fit,
-      "instead of --eps or --dissipative-constant: the JSON of fit-data --output; A from its Hertz fit "
+      "instead of --eps or --dissipative-constant: the JSON of fit-data --out; A from its Hertz fit "
       "(at --end if given, else the lowest AIC) with the uncertainty it carries over (none when the fit "
       "itself rejects it, said so)");
   cmd->add_option("--end", o->end,
                   "end of the collision: naive (no clamp) or delayed-recovery (force clamped)")
       ->check(CLI::IsMember(end_names()))
       ->capture_default_str();
-  cmd->add_option("--speeds", o->speeds, "impact speeds in m/s to report eps at (default v/10, v, 10 v)");
+  CLI::Option* impact_velocity =
+      cmd->add_option("--impact-velocity", o->speeds,
+                      "impact speed(s) in m/s to report eps at, comma-separated (default v/10, v, 10 v)")
+          ->delimiter(',');
+  add_deprecated_alias(*cmd, impact_velocity, "--speeds");
   cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")
       ->capture_default_str();
   cmd->add_option("--friction", o->friction,

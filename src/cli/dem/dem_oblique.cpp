@@ -8,6 +8,7 @@
 #include <functional>
 #include <sstream>
 
+#include "cli/common/deprecated_alias.hpp"
 #include "dem/deck_liggghts.hpp"
 #include "dem/deck_notes.hpp"
 #include "dem/dem_codes.hpp"
@@ -198,13 +199,15 @@ void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o) {
   command.add_option("--tangential-damping", o.tangential_damping,
                      "x_gamma_t of --tangential: the tangential damping coefficient over the normal one "
                      "(default 1)");
-  command
-      .add_option(
-          "--angles", o.angles_deg,
-          "with --friction (lammps, liggghts; yade's 2023.02a lines): the impact angles from the normal in "
-          "degrees, in [0, 90), at which to report what the lines give oblique impacts (default "
-          "5,15,30,45,60,80)")
-      ->delimiter(',');
+  CLI::Option* angle =
+      command
+          .add_option("--angle", o.angles_deg,
+                      "with --friction (lammps, liggghts; yade's 2023.02a lines): the impact angle(s) from "
+                      "the normal in "
+                      "degrees, in [0, 90), at which to report what the lines give oblique impacts (default "
+                      "5,15,30,45,60,80)")
+          ->delimiter(',');
+  add_deprecated_alias(command, angle, "--angles");
   command
       .add_option("--et-accuracy", o.et_accuracy,
                   "the accuracy of e_t the code's (LAMMPS's, LIGGGHTS's, YADE's) steps per contact are "
@@ -321,14 +324,14 @@ bool wants_oblique(const DemObliqueOptions& o, dem::Code code, double friction) 
   if (entry.oblique == dem::ObliqueReader::none) {
     if (asked) {
       throw InvalidInput(
-          "--angles, --target-et and --reference-angle are for --code lammps or liggghts, --tangential for "
+          "--angle, --target-et and --reference-angle are for --code lammps or liggghts, --tangential for "
           "lammps (the other codes' tangential models are not modelled yet)");
     }
     return false;
   }
   for (const double a : o.angles_deg) {
     if (!(a >= 0.0 && a < 90.0)) {
-      throw InvalidInput(fmt::format("--angles must be in [0, 90) degrees from the normal, got {}", a));
+      throw InvalidInput(fmt::format("--angle must be in [0, 90) degrees from the normal, got {}", a));
     }
   }
   if (!(o.et_accuracy > 0.0 && o.et_accuracy <= 0.1)) {
@@ -360,7 +363,7 @@ DemOblique liggghts_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, c
   const double mu = deck.parameter("coefficientFriction");
   if (!(mu > 0.0)) {
     throw InvalidInput(
-        "--angles, --target-et and --reference-angle with --code liggghts need --friction MU > 0: without "
+        "--angle, --target-et and --reference-angle with --code liggghts need --friction MU > 0: without "
         "it the lines are frictionless (tangential no_history)");
   }
   DemOblique r;
@@ -447,7 +450,7 @@ DemOblique yade_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const
                              double speed_m_s, double tolerance) {
   if (!yade_lines_modelled(deck)) {
     throw InvalidInput(
-        "--angles: the oblique impacts of YADE 2024.02a's (en, vn) lines are not modelled; --yade-version "
+        "--angle: the oblique impacts of YADE 2024.02a's (en, vn) lines are not modelled; --yade-version "
         "2023.02a prints the betan lines whose impacts are");
   }
   DemOblique r;
@@ -486,7 +489,7 @@ std::optional<DemOblique> pair_oblique(const dem::Deck& deck, const dem::Pair& p
     case dem::ObliqueReader::liggghts_history:
       return liggghts_pair_oblique(deck, pair, o, speed_m_s, tolerance);
     case dem::ObliqueReader::yade_mindlin:
-      // YADE 2024.02a's (en, vn) lines: not modelled; said where --angles asks for them.
+      // YADE 2024.02a's (en, vn) lines: not modelled; said where --angle asks for them.
       if (o.angles_deg.empty() && !yade_lines_modelled(deck)) return std::nullopt;
       return yade_pair_oblique(deck, pair, o, speed_m_s, tolerance);
     case dem::ObliqueReader::none:

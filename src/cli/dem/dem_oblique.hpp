@@ -19,7 +19,7 @@
 namespace restitution::cli {
 
 struct DemObliqueOptions {
-  std::vector<double> angles_deg;   // --angles; empty: kDefaultAngles when there is friction
+  std::vector<double> angles_deg;   // --angle; empty: kDefaultAngles when there is friction
   double et_accuracy = 1e-4;        // --et-accuracy: the e_t accuracy LAMMPS's steps per contact are for
   std::optional<double> target_et;  // --target-et
   std::optional<double> reference_angle_deg;  // --reference-angle
@@ -82,7 +82,7 @@ bool wants_oblique(const DemObliqueOptions& o, dem::Code code, double friction);
 // The pair's lines read by the code's reader (dem::CodeEntry::oblique; pair granular: the pair's 8 G* for
 // `mindlin NULL`, torque arm R - δ/2, the line of centres turning; LIGGGHTS: kn, kt, gamman, gammat,
 // coefficientFriction, arms R - δ/2; YADE: yade_pair_oblique); none for a code without a reader, or for
-// YADE's lines that are not modelled unless --angles asks for them. And the wall's (LAMMPS's fix wall/gran
+// YADE's lines that are not modelled unless --angle asks for them. And the wall's (LAMMPS's fix wall/gran
 // granular: its E, its NULL, torque arm R).
 std::optional<DemOblique> pair_oblique(const dem::Deck& deck, const dem::Pair& pair,
                                        const DemObliqueOptions& o, double speed_m_s, double tolerance);

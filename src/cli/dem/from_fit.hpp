@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// What the viscoelastic Hertz fit of `fit-data --output FILE` (docs/fit.md, cli/dem/from_fit_file.hpp) gives
+// What the viscoelastic Hertz fit of `fit-data --out FILE` (docs/fit.md, cli/dem/from_fit_file.hpp) gives
 // `calibrate --from-fit` and `dem --from-fit`: β and its intervals, and what they give at one speed.
 #include <filesystem>
 #include <optional>

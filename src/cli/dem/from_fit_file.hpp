@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// Reading the result of `fit-data --output FILE` (docs/fit.md) for `--from-fit`: the file comes from outside
+// Reading the result of `fit-data --out FILE` (docs/fit.md) for `--from-fit`: the file comes from outside
 // (it may be edited by hand), so every value used is checked for its type, finiteness and order, every index
 // for its range, and the Hertz fit that carries over is judged by the fit's own tests.
 #include <cstddef>

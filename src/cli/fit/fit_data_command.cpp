@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli/common/commands.hpp"
+#include "cli/common/deprecated_alias.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
@@ -64,7 +65,7 @@ bool draw(const FitDataOptions& o, const FitData& data, const FitResult& result,
   const std::string why =
       run_plot_script("fit_data", tables.points, o.plot, {"--curves", tables.curves.string()},
                       scene::plot_figure_formats(o.plot, o.format));
-  if (!why.empty()) fmt::print(stderr, "restitution: warning: no fit-data plot: {}\n", why);
+  if (!why.empty()) fmt::print(stderr, "{}", no_plot_warning("fit-data", why));
   return why.empty();
 }
 
@@ -139,11 +140,13 @@ void add_fit_data_command(CLI::App& app, Action& chosen) {
       ->capture_default_str();
   add_material_options(*cmd, o->material);
   cmd->add_flag("--json", o->json, "print one JSON object instead of the table");
-  cmd->add_option(
-         "--output", o->output,
-         "also write the JSON object to this file (for calibrate --from-fit and dem --from-fit); never "
-         "the input file")
-      ->check(non_empty_path());
+  CLI::Option* out =
+      cmd->add_option(
+             "--out", o->output,
+             "also write the JSON object to this file (for calibrate --from-fit and dem --from-fit); "
+             "never the input file")
+          ->check(non_empty_path());
+  add_deprecated_alias(*cmd, out, "--output");
   CLI::Option* plot =
       add_plot_option(cmd, o->plot, "draw the data, each law's eps(v) with its 95 % band and the residuals");
   add_figure_format_option(cmd, o->format)->needs(plot);

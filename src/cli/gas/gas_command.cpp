@@ -107,7 +107,7 @@ void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const
     std::error_code ignored;
     std::filesystem::remove(data, ignored);
   }
-  if (!why.empty()) fmt::print(stderr, "restitution: warning: no gas plot: {}\n", why);
+  if (!why.empty()) fmt::print(stderr, "{}", no_plot_warning("gas", why));
 }
 
 int run_gas(const GasCommandOptions& o) {

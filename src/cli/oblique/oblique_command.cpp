@@ -16,6 +16,7 @@
 
 #include "cli/common/build_json.hpp"
 #include "cli/common/commands.hpp"
+#include "cli/common/deprecated_alias.hpp"
 #include "cli/common/json_writer.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
@@ -275,7 +276,7 @@ void draw(const ObliqueCommandOptions& o, const Setup& s, const std::vector<Obli
   }
   const std::string why = plot_maw(s, model, first_solved_restitution(impacts), data, o.plot,
                                    scene::plot_figure_formats(o.plot, o.format));
-  if (!why.empty()) fmt::print(stderr, "restitution: warning: no oblique plot: {}\n", why);
+  if (!why.empty()) fmt::print(stderr, "{}", no_plot_warning("oblique", why));
 }
 
 int run(const ObliqueCommandOptions& o) {
@@ -363,7 +364,9 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
       ->delimiter(',');
   cmd->add_option("--angle-range", o->angle_range,
                   "FROM:TO:N: N impact angles from FROM to TO degrees, evenly spaced (instead of --angle)");
-  cmd->add_option("--speed", o->speed, "impact speed in m/s")->capture_default_str();
+  add_deprecated_alias(
+      *cmd, cmd->add_option("--impact-velocity", o->speed, "impact speed in m/s")->capture_default_str(),
+      "--speed");
   cmd->add_option("--spin", o->spins,
                   "initial spin(s) of the (first) sphere in rad/s (positive adds to the slip); every angle "
                   "with every spin")

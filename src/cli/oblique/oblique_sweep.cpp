@@ -10,6 +10,7 @@
 
 #include "cli/common/output_files.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/sweep.hpp"
 
 namespace restitution::cli {
 
@@ -36,13 +37,14 @@ std::vector<double> angle_range(const std::string& text) {
   if (!(count >= 2.0 && count <= 100000.0 && count == std::floor(count))) {
     throw fail("N must be a whole number in [2, 100000]");
   }
-  const auto n = static_cast<std::size_t>(count);
-  std::vector<double> angles(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    // Both ends exactly as typed; between them the evenly spaced points.
-    angles[i] = i + 1 == n ? to : from + (to - from) * static_cast<double>(i) / static_cast<double>(n - 1);
+  // Checked here, so that a bad end is blamed on the option that was typed, not on --angle.
+  for (const double end : {from, to}) {
+    if (!(end >= 0.0 && end < 90.0)) {
+      throw InvalidInput(fmt::format(
+          "--angle-range '{}': the angles must be in [0, 90) degrees from the normal, got {}", text, end));
+    }
   }
-  return angles;
+  return evenly_spaced(from, to, static_cast<std::size_t>(count));
 }
 
 const char* oblique_csv_header() {

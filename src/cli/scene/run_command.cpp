@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "cli/common/commands.hpp"
+#include "cli/common/deprecated_alias.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
 #include "cli/common/progress.hpp"
@@ -57,19 +58,19 @@ int run_scene_file(const RunOptions& o) {
   const fs::path folder = o.output.empty() ? s.output : fs::path(o.output);
   const std::string shown = printable_name(folder.string());  // a name may hold escape sequences
   // The scene's own `output` stays under the working folder after symlinks too (the parser refuses '..'
-  // and absolute names); --output names any folder, the user's own choice.
+  // and absolute names); --out names any folder, the user's own choice.
   if (o.output.empty() && !resolves_within(folder, fs::current_path())) {
     throw InvalidInput(
         fmt::format("the scene's output '{}' leads outside the working folder through a "
                     "symbolic link: a scene writes under the folder it is run from "
-                    "(or name the folder: restitution run FILE --output DIR)",
+                    "(or name the folder: restitution run FILE --out DIR)",
                     shown));
   }
   scene::Plan plan =
       scene::plan_scene(s);     // refuses points outside the solver's range before a folder exists
   check_output_folder(folder);  // fail before the work, not after
   // Before the work too: a second run into the folder is refused at once, not after its own solves.
-  const FolderLock lock(folder, fmt::format("--output '{}'", shown));
+  const FolderLock lock(folder, fmt::format("--out '{}'", shown));
 
   scene::RunSettings settings;
   settings.threads = o.threads;
@@ -104,10 +105,12 @@ void add_run_command(CLI::App& app, Action& chosen) {
   CLI::App* cmd =
       app.add_subcommand("run", "run a scene file: tables, plots and a report (default: the 2008 paper)");
   cmd->add_option("scene", o->scene, "scene file (TOML); default scenes/default.toml");
-  cmd->add_option("--output,--out", o->output,
-                  "output folder, any path (default: the scene's `output`, which must stay under the working "
-                  "directory)")
-      ->check(non_empty_path());
+  CLI::Option* out =
+      cmd->add_option("--out", o->output,
+                      "output folder, any path (default: the scene's `output`, which must stay "
+                      "under the working directory)")
+          ->check(non_empty_path());
+  add_deprecated_alias(*cmd, out, "--output");
   cmd->add_flag(
       "--quick", o->quick,
       fmt::format("small settings for CI: at most {} points per range, tolerance >= 1e-8", kQuickPoints));

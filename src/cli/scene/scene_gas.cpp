@@ -36,7 +36,9 @@ GasOptions options_of(const scene::Scene& scene, const scene::GasTask& task) {
   o.haff_times = task.haff_times;
   o.points_per_decade = task.points_per_decade;
   o.a2 = task.a2;
-  o.tolerance = scene.tolerance;
+  o.first_time = task.first_time_s;
+  o.collision_rate_factor = task.collision_rate_factor;
+  o.tolerance = task.tolerance.value_or(scene.tolerance);
   return o;
 }
 

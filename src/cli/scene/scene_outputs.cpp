@@ -72,6 +72,7 @@ class SceneWriter {
       : scene_(s), results_(r), folder_(std::move(folder)) {}
 
   WrittenOutputs write(double seconds) {
+    out_.warnings = scene_.warnings;
     report_ = fmt::format("# {}\n\n", scene_.title.empty() ? scene_.file_name : scene_.title);
     json_.begin_object();
     json_.field("scene", scene_.file_name).field("title", scene_.title);

@@ -142,7 +142,7 @@ int run_stability(const StabilityCliOptions& o) {
     const std::string why =
         run_plot_script("stability", folder / "stability.csv", folder / "stability.png",
                         {fmt::format("{}", report.tolerance)}, scene::figure_formats_from_list(o.format));
-    if (!why.empty()) fmt::print(stderr, "restitution: warning: no stability plot: {}\n", why);
+    if (!why.empty()) fmt::print(stderr, "{}", no_plot_warning("stability", why));
   }
   if (o.json)
     fmt::print("{}", json_text(report));

@@ -1,0 +1,13 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// An old spelling of an option, kept for one release: hidden from --help, it warns once on stderr naming the
+// new spelling and hands its value to the new option, whose checks and conversion then apply to it.
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace restitution::cli {
+
+// `old_name` ("--speeds") as a deprecated spelling of `current` (an option that takes a value) on `command`.
+void add_deprecated_alias(CLI::App& command, CLI::Option* current, const std::string& old_name);
+
+}  // namespace restitution::cli
