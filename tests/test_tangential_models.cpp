@@ -39,7 +39,7 @@ TEST(TangentialModels, RowsFollowTheEnumAndAreWhole) {
     // A stiffness has a unit; a default stiffness only where there is one, positive for a material.
     EXPECT_EQ(m.has_stiffness(), m.stiffness_unit != nullptr);
     EXPECT_EQ(m.rule.history != HistoryKind::none, m.has_stiffness());
-    if (m.default_stiffness) {
+    if (m.default_stiffness != nullptr) {
       EXPECT_TRUE(m.has_stiffness());
       const double k = m.default_stiffness(steel);
       EXPECT_TRUE(k > 0.0 && std::isfinite(k)) << k;
@@ -102,7 +102,7 @@ TEST(TangentialModels, TheCommandLineListsTheTable) {
         "dem --code lammps --eps 0.9 --velocity 1 --young-modulus 2.1e11 --poisson-ratio 0.3 --radius "
         "0.005 --density 7850 --friction 0.3 --angles 20 --tangential " +
         name +
-        (tangential_model(tangential_from_name(name)).default_stiffness ||
+        (tangential_model(tangential_from_name(name)).default_stiffness != nullptr ||
                  !tangential_model(tangential_from_name(name)).has_stiffness()
              ? ""
              : " --tangential-stiffness 4e6"));

@@ -177,7 +177,7 @@ LawKind normal_law(const ObliqueInputs& in, ArgumentStyle style) {
   }
   // A model the study runs that its code pairs with one normal law only.
   const TangentialModel* model = find_tangential_model(in.tangential);
-  if (model && model->runs_in_study() && model->normal_law && law != *model->normal_law) {
+  if (model != nullptr && model->runs_in_study() && model->normal_law && law != *model->normal_law) {
     throw InvalidInput(fmt::format("{} {}: {}; choose a LAMMPS model or {}", name, in.law,
                                    model->normal_law_words, law_name(*model->normal_law)));
   }
@@ -202,8 +202,8 @@ void check_tangential_limits(const ObliqueSetup& s, ArgumentStyle style) {
     throw InvalidInput(fmt::format(
         "{} must be at most {:.3g} {} for these impacts, got {:g}: a stiffer spring oscillates more than "
         "{:g} radians per unit of the contact's natural time, beyond what the solve resolves",
-        spelled("tangential_stiffness", style), limits.stiffness, unit ? unit : "", s.tangential.stiffness,
-        kFastestTangentialRate));
+        spelled("tangential_stiffness", style), limits.stiffness, unit != nullptr ? unit : "",
+        s.tangential.stiffness, kFastestTangentialRate));
   }
   if (s.tangential.damping_factor > limits.damping_factor) {
     throw InvalidInput(fmt::format(
@@ -257,7 +257,7 @@ ObliqueSetup oblique_setup(const ObliqueInputs& in, ArgumentStyle style) {
   // both, in the torque and the contact-point velocity); otherwise the torque arm given.
   if (in.torque_arm == "lammps") {
     const TangentialModel* model = find_tangential_model(in.tangential);
-    const ContactArms arms = model ? model->arms(!in.wall) : ContactArms{};
+    const ContactArms arms = model != nullptr ? model->arms(!in.wall) : ContactArms{};
     s.geometry.torque_arm = arms.torque;
     s.geometry.contact_point_arm = arms.contact_point;
   } else {
@@ -292,7 +292,7 @@ ObliqueSetup oblique_setup(const ObliqueInputs& in, ArgumentStyle style) {
   }
   if (in.tangential_stiffness) {
     s.tangential.stiffness = *in.tangential_stiffness;
-  } else if (model.default_stiffness) {
+  } else if (model.default_stiffness != nullptr) {
     // LAMMPS's `mindlin NULL`: 8 G*, of the sphere and the wall on a wall (as `dem --wall` prints it).
     s.tangential.stiffness = model.default_stiffness(
         {s.effective_modulus_pa, s.effective_shear_modulus_pa, effective_radius_m(s.geometry)});

@@ -223,7 +223,7 @@ std::vector<std::string> tangential_names_of(std::string_view code) {
 }
 
 TangentialKind tangential_from_name(const std::string& name) {
-  if (const TangentialModel* m = find_tangential_model(name)) return m->kind;
+  if (const TangentialModel* m = find_tangential_model(name); m != nullptr) return m->kind;
   throw InvalidInput(
       fmt::format("unknown tangential model '{}' (choose {})", name, alternatives(tangential_names())));
 }

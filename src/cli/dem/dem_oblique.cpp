@@ -228,7 +228,7 @@ void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double
   }
   const TangentialKind kind = tangential_from_name(o.tangential);
   const TangentialModel& model = tangential_model(kind);
-  if (model.has_stiffness() && !model.default_stiffness && !o.tangential_stiffness) {
+  if (model.has_stiffness() && model.default_stiffness == nullptr && !o.tangential_stiffness) {
     throw InvalidInput(fmt::format("--tangential {} needs --tangential-stiffness K_T in {}", model.name,
                                    model.stiffness_unit));
   }

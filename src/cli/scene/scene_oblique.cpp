@@ -32,7 +32,7 @@ ObliqueInputs inputs_of(const scene::Scene& scene, const scene::ObliqueTask& tas
   // A k_t per contact radius, in N/m² (the mindlin family, liggghts_history), is mindlin_stiffness; one in
   // N/m tangential_stiffness.
   const TangentialModel* row = find_tangential_model(model);
-  const bool per_contact_radius = row && row->rule.growth == StiffnessGrowth::contact_radius;
+  const bool per_contact_radius = row != nullptr && row->rule.growth == StiffnessGrowth::contact_radius;
   in.tangential_stiffness = per_contact_radius ? task.mindlin_stiffness : task.tangential_stiffness;
   in.tangential_damping = task.tangential_damping;
   in.friction = task.friction;
