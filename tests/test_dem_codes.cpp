@@ -80,9 +80,8 @@ TEST(DemCodes, EveryFacetIsWholeOrAbsent) {
     }
     // The velocity-Verlet the production options model is a program's integrator.
     if (e.velocity_verlet) EXPECT_FALSE(std::string(e.program).empty());
-    // Oblique impacts: a reader comes with its cap rule, a check deck and its steps, or none of them.
+    // Oblique impacts: a reader comes with a check deck and its steps, or none of them.
     const bool oblique = e.oblique != dem::ObliqueReader::none;
-    EXPECT_EQ(oblique, e.cap_rule != nullptr);
     EXPECT_EQ(oblique, e.oblique_check_steps > 0);
     if (oblique) EXPECT_NE(e.check_deck, nullptr);
     // --tangential rewrites LAMMPS's granular line: every other reader says why it refuses it.

@@ -2,6 +2,7 @@
 """restitution.oblique: oblique impacts with a LAMMPS tangential model (docs/oblique.md), the arguments of
 `restitution oblique` as keywords; array angles and spins broadcast and give arrays."""
 
+import textwrap as _textwrap
 import warnings as _warnings
 
 import numpy as _np
@@ -102,8 +103,7 @@ def oblique(*, material, friction, angle, spin=0.0, impact_velocity=1.0, tangent
     impact_velocity : float
         Impact speed [m/s]: v cos(angle) normal, v sin(angle) tangential (`restitution oblique
         --impact-velocity`). The old name speed still works, with a DeprecationWarning, until 0.5.0.
-    tangential : {"mindlin", "linear_history", "linear_nohistory", "mindlin_rescale", "mindlin/force",
-                  "mindlin_rescale/force", "liggghts_history"}
+    tangential : {TANGENTIAL_MODELS}
     tangential_stiffness : float, optional
         k_t [N/m] of linear_history (required there when friction > 0), [N/m^2] of the mindlin models
         (default LAMMPS's NULL, 8 G*).
@@ -197,3 +197,14 @@ def oblique(*, material, friction, angle, spin=0.0, impact_velocity=1.0, tangent
             cells[:] = columns[name]
             values[name] = cells.reshape(shape)
     return ObliqueResult(**values)
+
+
+def _set_of(names, column):
+    """The names as a numpydoc set's items that start at `column`, wrapped there within 116 columns."""
+    quoted = ", ".join(f'"{name}"' for name in names)
+    return _textwrap.fill(quoted, width=116, initial_indent=" " * column, subsequent_indent=" " * column,
+                          break_on_hyphens=False, break_long_words=False)[column:]
+
+
+# The models are the library's table (src/oblique/tangential_models.cpp), not a copy typed here.
+oblique.__doc__ = oblique.__doc__.replace("{TANGENTIAL_MODELS}", "{" + _set_of(_core.oblique_tangential_names, 18) + "}")

@@ -10,8 +10,8 @@ from . import Material
 _Real = Union[float, np.floating[Any], np.integer[Any]]
 _Array = Union[npt.NDArray[Any], Sequence[float], Sequence[Sequence[float]]]
 _Value = TypeVar("_Value", float, npt.NDArray[np.float64], covariant=True)
-Tangential = Literal["mindlin", "linear_history", "linear_nohistory", "mindlin_rescale", "mindlin/force",
-                     "mindlin_rescale/force", "liggghts_history"]
+Tangential = Literal["linear_nohistory", "linear_history", "mindlin", "liggghts_history", "mindlin_rescale",
+                     "mindlin/force", "mindlin_rescale/force"]
 TorqueArm = Literal["lammps", "radius", "radius-minus-half-overlap"]
 
 class ObliqueResult(Generic[_Value]):

@@ -131,6 +131,8 @@ py::dict oblique_impacts(const Material& material, const std::vector<double>& an
 }  // namespace
 
 void bind_oblique(py::module_& m) {
+  // The tangential models oblique_impacts runs, in the table's order (the docstring and the .pyi read them).
+  m.attr("oblique_tangential_names") = py::tuple(py::cast(oblique_tangential_names()));
   m.def(
       "oblique_impacts", &oblique_impacts, py::arg("material"), py::arg("angles"), py::arg("spins"),
       py::kw_only(), py::arg("friction") = py::none(), py::arg("tangential") = ObliqueInputs{}.tangential,

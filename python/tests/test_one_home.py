@@ -26,9 +26,9 @@ def test_the_command_line_s_thread_bound_is_the_module_s(command, cli):
     assert f"[1, {_core.max_threads}]" in cli(command, "--help")
 
 
-def _pyi_literal(name):
-    """The strings of `NAME = Literal[...]` in the package's __init__.pyi (installed next to __init__.py)."""
-    stub = pathlib.Path(restitution.__file__).with_suffix(".pyi")
+def _pyi_literal(name, stub_name="__init__.pyi"):
+    """The strings of `NAME = Literal[...]` in one of the package's stubs (installed next to __init__.py)."""
+    stub = pathlib.Path(restitution.__file__).with_name(stub_name)
     for node in ast.parse(stub.read_text()).body:
         if isinstance(node, ast.Assign) and [t.id for t in node.targets if isinstance(t, ast.Name)] == [name]:
             return [element.value for element in node.value.slice.elts]
@@ -37,6 +37,23 @@ def _pyi_literal(name):
 
 def test_the_stub_s_law_literal_is_the_family_table():
     assert _pyi_literal("Law") == list(_core.law_names)
+
+
+def test_the_oblique_stub_s_tangential_literal_is_the_model_table():
+    assert _pyi_literal("Tangential", "_oblique.pyi") == list(_core.oblique_tangential_names)
+
+
+def test_the_oblique_docstring_names_every_model_it_runs():
+    doc = restitution.oblique.__doc__
+    assert "{TANGENTIAL_MODELS}" not in doc
+    listed = re.search(r"tangential : \{(.*?)\}", " ".join(doc.split())).group(1)
+    assert re.findall(r'"([^"]+)"', listed) == list(_core.oblique_tangential_names)
+
+
+def test_the_oblique_help_lists_the_model_table(cli):
+    text = " ".join(cli("oblique", "--help").split())
+    listed = re.search(r"tangential model: ([^:]*?) \(docs/oblique\.md\)", text).group(1)
+    assert listed.split(", ") == list(_core.oblique_tangential_names)
 
 
 def test_the_eps_docstring_names_every_law():

@@ -60,9 +60,6 @@ const std::vector<CodeEntry>& dem_codes() {
        .companion = Companion::damping_tsuji,
        .companion_words = "damping tsuji",
        .oblique = ObliqueReader::lammps_granular,
-       .cap_rule =
-           "the cap tests the whole trial force, elastic and damping (|F_t| > mu |F_n|), and the capped "
-           "force is mu |F_n| along it",
        // |diff| <= 2e-7 on 1 mm steel at 2000 steps per contact.
        .oblique_check_steps = 2000,
        .tangential_refusal = nullptr,
@@ -99,9 +96,6 @@ const std::vector<CodeEntry>& dem_codes() {
        .companion = Companion::model_hertz,
        .companion_words = "model hertz coefficientRestitution",
        .oblique = ObliqueReader::liggghts_history,
-       .cap_rule =
-           "the cap tests the elastic force alone (kt |xi| > mu |F_n|) and the capped force carries no "
-           "damping; below the cap the damped force may exceed mu |F_n|",
        // LIGGGHTS decides stick or slip once per step, so its e_t is less smoothly first order: on the 1 mm
        // steel lines of docs/dem.md (six angles) the largest |diff| was 8.0e-6 at 2000 and 1.8e-6 at 10000
        // (its printed steps for e_t within 1e-4; glass 1.6e-6, steel at eps 0.98 4.2e-7).
@@ -143,7 +137,6 @@ const std::vector<CodeEntry>& dem_codes() {
        .companion = Companion::none,
        .companion_words = nullptr,
        .oblique = ObliqueReader::none,
-       .cap_rule = nullptr,
        .oblique_check_steps = 0,
        .tangential_refusal = nullptr,
        .inverse_refusal = nullptr},
@@ -181,10 +174,6 @@ const std::vector<CodeEntry>& dem_codes() {
        .companion = Companion::none,
        .companion_words = nullptr,
        .oblique = ObliqueReader::yade_mindlin,
-       .cap_rule =
-           "the cap tests the elastic shear force alone (|F_e| > tan(frictionAngle) F_n, F_e' = -ks s "
-           "incremental) and the capped force carries no damping; below the cap the damped force may "
-           "exceed it",
        // Its first-order rest is still 1.1e-5 at 2000 (1 mm steel at 60 deg; oblique_check_deck_yade.hpp).
        .oblique_check_steps = 20000,
        .tangential_refusal = kYadeObliqueRefusal,
@@ -221,7 +210,6 @@ const std::vector<CodeEntry>& dem_codes() {
        .companion = Companion::none,
        .companion_words = nullptr,
        .oblique = ObliqueReader::none,
-       .cap_rule = nullptr,
        .oblique_check_steps = 0,
        .tangential_refusal = nullptr,
        .inverse_refusal = nullptr},

@@ -79,11 +79,10 @@ struct CodeEntry {
   bool gas_deck;  // `gas --deck` writes its input (a data file and a log-spaced schedule)
   Companion companion;
   const char* companion_words;  // the companion as its header names it; nullptr with none
-  // Oblique impacts (`--friction`, `--angle`): the reader, the rule of its Coulomb cap in words, the coarse
-  // steps per shortest contact of the check deck's oblique pass (0: none), and why --tangential or
+  // Oblique impacts (`--friction`, `--angle`): the reader (the cap rule is the tangential model's row), the
+  // coarse steps per shortest contact of the check deck's oblique pass (0: none), and why --tangential or
   // --target-et/--reference-angle are refused (nullptr: taken).
   ObliqueReader oblique;
-  const char* cap_rule;
   int oblique_check_steps;
   const char* tangential_refusal;
   const char* inverse_refusal;

@@ -71,10 +71,7 @@ bool needs_check(const ObliqueResult& r, const ObliqueGeometry& geometry, const 
   // LAMMPS's _rescale variants: their solve's error falls unevenly with the rtol (oblique_contact.cpp takes
   // CVODE's default step control for them) and reaches 0.67 T at T·kObliqueRtolFactor, too close to T to
   // skip the check (tests/test_oblique_check_skip.cpp).
-  if (tangential.kind == TangentialKind::mindlin_rescale ||
-      tangential.kind == TangentialKind::mindlin_rescale_force) {
-    return true;
-  }
+  if (tangential_model(tangential.kind).rule.rescales_on_unloading) return true;
   double slip = impact.tangential_m_s + geometry.first.radius_m * impact.spin_first_rad_s;
   if (geometry.second) slip += geometry.second->radius_m * impact.spin_second_rad_s;
   const double scale = std::max({impact.normal_m_s, std::abs(impact.tangential_m_s), std::abs(slip)});

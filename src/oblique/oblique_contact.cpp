@@ -153,19 +153,20 @@ NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& n
   const double length_m = impact_speed_m_s * time_s;
   NaturalModel model;
   model.law = ContactLaw::physical(normal.kind, normal.stiffness, normal.damping, mass, impact_speed_m_s);
-  model.kind = tangential.kind;
+  const TangentialModel& row = tangential_model(tangential.kind);
+  model.rule = row.rule;
   model.friction = tangential.friction;
   model.uncapped = uncapped;
   model.damping_factor = tangential.damping_factor;
-  // F_t = k_t ξ: in units of m* v/T per v T of displacement, κ = k_t T²/m*; mindlin's k_t sqrt(R* δ) adds
-  // sqrt(R* v T) to κ_m.
+  // F_t = k_t ξ: in units of m* v/T per v T of displacement, κ = k_t T²/m*; k_t sqrt(R* δ) (the mindlin
+  // family, LIGGGHTS) adds sqrt(R* v T) to κ_m, YADE's ks = kso sqrt(δ) sqrt(v T).
   model.stiffness = tangential.stiffness * time_s * time_s / mass;
-  if (is_lammps_mindlin(tangential.kind) || tangential.kind == TangentialKind::liggghts_history) {
+  if (row.rule.growth == StiffnessGrowth::contact_radius) {
     model.stiffness *= std::sqrt(effective_radius_m(geometry) * length_m);
-  }
-  // YADE's Mindlin: ks = kso sqrt(δ), and sqrt(v T) of δ's natural length goes into κ_m.
-  if (tangential.kind == TangentialKind::yade_mindlin) {
+  } else if (row.rule.growth == StiffnessGrowth::overlap) {
     model.stiffness *= std::sqrt(length_m);
+  }
+  if (row.rule.incident_velocity_gain) {
     // The wall's radius is the sphere's (Ig2_Wall_Sphere_ScGeom's refR1).
     const double radii =
         geometry.first.radius_m + (geometry.second ? geometry.second->radius_m : geometry.first.radius_m);
@@ -208,7 +209,7 @@ void validate(const ObliqueGeometry& geometry, const NormalForce& normal, const 
   require_nonnegative(tangential.damping_factor, "tangential damping factor");
   // Without friction the tangential force is 0 whatever the stiffness (the cap is 0), except in the sticking
   // limit, which has no cap.
-  if (tangential.kind != TangentialKind::linear_nohistory &&
+  if (tangential_model(tangential.kind).has_stiffness() &&
       (tangential.friction != 0.0 || options.sticking_limit)) {
     require_positive(tangential.stiffness,
                      fmt::format("{} tangential stiffness", tangential_name(tangential.kind)).c_str());
@@ -291,62 +292,13 @@ TangentialLimits tangential_limits(const ObliqueGeometry& geometry, const Normal
   const double mobility = unit.mobility(0.0);
   const double rate2 = kFastestTangentialRate * kFastestTangentialRate;
   TangentialLimits limits{HUGE_VAL, HUGE_VAL};
-  if (kind != TangentialKind::linear_nohistory) {
+  if (tangential_model(kind).has_stiffness()) {
     // λ² = mobility κ for a spring force −κξ (the force histories: H' = −κ s, the same rate).
     limits.stiffness = rate2 / (mobility * unit.tangential_stiffness(x));
   }
   if (const double g = unit.tangential_damping(x); g > 0.0)
     limits.damping_factor = kFastestTangentialDampingRate / (mobility * g);
   return limits;
-}
-
-const char* tangential_name(TangentialKind kind) {
-  switch (kind) {
-    case TangentialKind::linear_nohistory:
-      return "linear_nohistory";
-    case TangentialKind::linear_history:
-      return "linear_history";
-    case TangentialKind::mindlin:
-      return "mindlin";
-    case TangentialKind::liggghts_history:
-      return "liggghts_history";
-    case TangentialKind::yade_viscel:
-      return "yade_viscel";
-    case TangentialKind::mindlin_rescale:
-      return "mindlin_rescale";
-    case TangentialKind::mindlin_force:
-      return "mindlin/force";
-    case TangentialKind::mindlin_rescale_force:
-      return "mindlin_rescale/force";
-    case TangentialKind::yade_mindlin:
-      return "yade_mindlin";
-  }
-  return "?";
-}
-
-const std::vector<std::string>& tangential_names() {
-  static const std::vector<std::string> names{"linear_nohistory", "linear_history",        "mindlin",
-                                              "liggghts_history", "yade_viscel",           "mindlin_rescale",
-                                              "mindlin/force",    "mindlin_rescale/force", "yade_mindlin"};
-  return names;
-}
-
-TangentialKind tangential_from_name(const std::string& name) {
-  for (const TangentialKind kind :
-       {TangentialKind::linear_nohistory, TangentialKind::linear_history, TangentialKind::mindlin,
-        TangentialKind::liggghts_history, TangentialKind::yade_viscel, TangentialKind::mindlin_rescale,
-        TangentialKind::mindlin_force, TangentialKind::mindlin_rescale_force, TangentialKind::yade_mindlin}) {
-    if (name == tangential_name(kind)) return kind;
-  }
-  throw InvalidInput(fmt::format(
-      "unknown tangential model '{}' (choose linear_nohistory, linear_history, mindlin, mindlin_rescale, "
-      "mindlin/force, mindlin_rescale/force, liggghts_history, yade_viscel or yade_mindlin)",
-      name));
-}
-
-bool is_lammps_mindlin(TangentialKind kind) {
-  return kind == TangentialKind::mindlin || kind == TangentialKind::mindlin_rescale ||
-         kind == TangentialKind::mindlin_force || kind == TangentialKind::mindlin_rescale_force;
 }
 
 const char* mode_name(ContactMode mode) {
@@ -431,7 +383,7 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
           "cap "
           "only, each mode drives it into the other there (the code alternates capped and uncapped steps), "
           "a limit not modelled yet; less tangential damping avoids it",
-          t * time_s, tangential.kind == TangentialKind::liggghts_history ? "LIGGGHTS" : "YADE"));
+          t * time_s, tangential_model(tangential.kind).code_title));
     }
     if (switches > options.max_switches) {
       throw NumericalFailure(fmt::format("the contact crossed the stick/slip boundary more than {} times",

@@ -26,15 +26,17 @@ constexpr double kSlack = 1e-3;
 // The parameter's natural scale: κ = 1 in the natural units of the normal law (k_t T²/m*, and mindlin's
 // k_t sqrt(R* v T) T²/m*); γ_t = 1 (a tangential damping as strong as the normal one).
 double natural_scale(const TangentialInverseRequest& r) {
-  if (r.tangential.kind == TangentialKind::linear_nohistory) return 1.0;
+  const TangentialModel& model = tangential_model(r.tangential.kind);
+  if (!model.has_stiffness()) return 1.0;
   const double mass = effective_mass_kg(r.geometry);
   const double time_s = physical_time_scale_s(r.normal.kind, r.normal.stiffness, mass, r.impact.normal_m_s);
   double scale = mass / (time_s * time_s);
-  // mindlin's k_t (and its variants') and LIGGGHTS's kt are per sqrt(R* δ).
-  if (is_lammps_mindlin(r.tangential.kind) || r.tangential.kind == TangentialKind::liggghts_history) {
+  // mindlin's k_t (and its variants') and LIGGGHTS's kt are per sqrt(R* δ), YADE's kso per sqrt(δ).
+  if (model.rule.growth == StiffnessGrowth::contact_radius) {
     scale /= std::sqrt(effective_radius_m(r.geometry) * r.impact.normal_m_s * time_s);
+  } else if (model.rule.growth == StiffnessGrowth::overlap) {
+    scale /= std::sqrt(r.impact.normal_m_s * time_s);
   }
-  if (r.tangential.kind == TangentialKind::yade_mindlin) scale /= std::sqrt(r.impact.normal_m_s * time_s);
   return scale;
 }
 
@@ -66,7 +68,7 @@ double root_in(const Et& et_at, double lo, double hi, double f_lo, double f_hi, 
 
 TangentialForce with_parameter(const TangentialInverseRequest& r, double parameter) {
   TangentialForce t = r.tangential;
-  (t.kind == TangentialKind::linear_nohistory ? t.damping_factor : t.stiffness) = parameter;
+  (tangential_model(t.kind).has_stiffness() ? t.stiffness : t.damping_factor) = parameter;
   return t;
 }
 
@@ -80,7 +82,7 @@ TangentialInverseResult tangential_parameter_for(const TangentialInverseRequest&
   if (!(request.tangential.friction > 0.0)) {
     throw InvalidInput("the target e_t needs friction: without it e_t = -1 whatever the tangential model");
   }
-  const bool damping_sought = request.tangential.kind == TangentialKind::linear_nohistory;
+  const bool damping_sought = !tangential_model(request.tangential.kind).has_stiffness();
   if (damping_sought && !(request.normal.damping > 0.0)) {
     throw InvalidInput(
         "linear_nohistory's only parameter, the tangential damping factor, multiplies the normal damping, "

@@ -46,7 +46,7 @@ enum Index {
 
 struct NaturalModel {
   ContactLaw law;
-  TangentialKind kind = TangentialKind::linear_history;
+  TangentialRule rule;     // the model's row (tangential_models.hpp)
   double friction = 0.0;   // μ
   bool uncapped = false;   // the sticking limit μ → ∞ (ObliqueOptions::sticking_limit): stick throughout
   double stiffness = 0.0;  // κ (linear_history), or κ_m with κ = κ_m sqrt(x) (the mindlin family)
@@ -91,28 +91,17 @@ struct NaturalModel {
            gain * v * y[kTangential] / (velocity_gain_distance - x);
   }
 
-  [[nodiscard]] bool has_history() const { return kind != TangentialKind::linear_nohistory; }
+  [[nodiscard]] bool has_history() const { return rule.history != HistoryKind::none; }
   // LIGGGHTS and YADE: the cap tests and caps the elastic force alone.
-  [[nodiscard]] bool caps_elastic_force() const {
-    return kind == TangentialKind::liggghts_history || kind == TangentialKind::yade_viscel ||
-           kind == TangentialKind::yade_mindlin;
-  }
+  [[nodiscard]] bool caps_elastic_force() const { return rule.cap_test == CapTest::elastic_force; }
   // κ = κ_m sqrt(x): LAMMPS's mindlin family (k_t a), LIGGGHTS's hertz/stiffness kt sqrt(R* δ) and YADE's
   // Mindlin kso sqrt(δ).
-  [[nodiscard]] bool stiffness_grows_with_overlap() const {
-    return is_lammps_mindlin(kind) || kind == TangentialKind::liggghts_history ||
-           kind == TangentialKind::yade_mindlin;
-  }
+  [[nodiscard]] bool stiffness_grows_with_overlap() const { return rule.growth != StiffnessGrowth::constant; }
   // LAMMPS's /force variants and YADE's Mindlin (`shearElastic -= ks (v_s dt)`): the history is the elastic
   // force H (pair_granular.cpp:482-487).
-  [[nodiscard]] bool history_is_force() const {
-    return kind == TangentialKind::mindlin_force || kind == TangentialKind::mindlin_rescale_force ||
-           kind == TangentialKind::yade_mindlin;
-  }
+  [[nodiscard]] bool history_is_force() const { return rule.history == HistoryKind::force; }
   // LAMMPS's _rescale variants: the history scaled by a/a_old where a shrinks (pair_granular.cpp:434-445).
-  [[nodiscard]] bool rescales_on_unloading() const {
-    return kind == TangentialKind::mindlin_rescale || kind == TangentialKind::mindlin_rescale_force;
-  }
+  [[nodiscard]] bool rescales_on_unloading() const { return rule.rescales_on_unloading; }
   // The rescale as a rate, a'/a = x'/(2x) while the contact radius shrinks (x' < 0), else 0.
   [[nodiscard]] double rescale_rate(double x, double v) const {
     return rescales_on_unloading() && v < 0.0 && x > 0.0 ? 0.5 * v / x : 0.0;

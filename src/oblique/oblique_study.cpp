@@ -62,8 +62,8 @@ void check_lists(const ObliqueInputs& in, ArgumentStyle style) {
 }
 
 // E* and G* of the contact: two spheres of one material, a sphere on a rigid wall or on a wall of its own
-// material (the compliances summed, as `dem --wall`). Returns LAMMPS's `mindlin NULL`, 8 G*.
-double contact_moduli(const ObliqueInputs& in, ArgumentStyle style, ObliqueSetup& s) {
+// material (the compliances summed, as `dem --wall`).
+void contact_moduli(const ObliqueInputs& in, ArgumentStyle style, ObliqueSetup& s) {
   const Material& m = in.material;
   const std::string young = spelled("wall_young_modulus", style);
   const std::string ratio = spelled("wall_poisson_ratio", style);
@@ -80,7 +80,7 @@ double contact_moduli(const ObliqueInputs& in, ArgumentStyle style, ObliqueSetup
     const double nu = m.poisson_ratio;
     s.effective_modulus_pa = effective_modulus_pa(m.young_modulus_pa, nu);
     s.effective_shear_modulus_pa = m.young_modulus_pa / (4.0 * (2.0 - nu) * (1.0 + nu));
-    return 8.0 * m.young_modulus_pa / (4.0 * (2.0 - nu) * (1.0 + nu));
+    return;
   }
   double normal = normal_compliance_per_pa(m.young_modulus_pa, m.poisson_ratio);
   double shear = shear_compliance_per_pa(m.young_modulus_pa, m.poisson_ratio);
@@ -98,7 +98,6 @@ double contact_moduli(const ObliqueInputs& in, ArgumentStyle style, ObliqueSetup
   }
   s.effective_modulus_pa = 1.0 / normal;
   s.effective_shear_modulus_pa = 1.0 / shear;
-  return 8.0 * s.effective_shear_modulus_pa;
 }
 
 // The normal force's damping coefficient γ [N s/m^{1+b}] of the law on this contact (stiffness ρ [N/m^{3/2}],
@@ -176,12 +175,11 @@ LawKind normal_law(const ObliqueInputs& in, ArgumentStyle style) {
                     "takes {}",
                     name, hertz_members));
   }
-  if (law != LawKind::viscoelastic_hertz && in.tangential == "liggghts_history") {
-    throw InvalidInput(
-        fmt::format("{} {}: liggghts_history is LIGGGHTS's tangential history under "
-                    "hertz/stiffness, viscoelastic Hertz; choose a LAMMPS model or "
-                    "viscoelastic-hertz",
-                    name, in.law));
+  // A model the study runs that its code pairs with one normal law only.
+  const TangentialModel* model = find_tangential_model(in.tangential);
+  if (model != nullptr && model->runs_in_study() && model->normal_law && law != *model->normal_law) {
+    throw InvalidInput(fmt::format("{} {}: {}; choose a LAMMPS model or {}", name, in.law,
+                                   model->normal_law_words, law_name(*model->normal_law)));
   }
   return law;
 }
@@ -199,12 +197,12 @@ void check_tangential_limits(const ObliqueSetup& s, ArgumentStyle style) {
     limits.stiffness = std::min(limits.stiffness, at.stiffness);
     limits.damping_factor = std::min(limits.damping_factor, at.damping_factor);
   }
-  const bool mindlin_like = s.tangential.kind != TangentialKind::linear_history;
+  const char* unit = tangential_model(s.tangential.kind).stiffness_unit;
   if (s.tangential.stiffness > limits.stiffness) {
     throw InvalidInput(fmt::format(
         "{} must be at most {:.3g} {} for these impacts, got {:g}: a stiffer spring oscillates more than "
         "{:g} radians per unit of the contact's natural time, beyond what the solve resolves",
-        spelled("tangential_stiffness", style), limits.stiffness, mindlin_like ? "N/m^2" : "N/m",
+        spelled("tangential_stiffness", style), limits.stiffness, unit != nullptr ? unit : "",
         s.tangential.stiffness, kFastestTangentialRate));
   }
   if (s.tangential.damping_factor > limits.damping_factor) {
@@ -221,9 +219,8 @@ void check_tangential_limits(const ObliqueSetup& s, ArgumentStyle style) {
 const std::vector<std::string>& oblique_tangential_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> runs;
-    for (const std::string& name : tangential_names()) {
-      const TangentialKind kind = tangential_from_name(name);
-      if (kind != TangentialKind::yade_viscel && kind != TangentialKind::yade_mindlin) runs.push_back(name);
+    for (const TangentialModel& model : tangential_models()) {
+      if (model.runs_in_study()) runs.emplace_back(model.name);
     }
     return runs;
   }();
@@ -256,16 +253,18 @@ ObliqueSetup oblique_setup(const ObliqueInputs& in, ArgumentStyle style) {
     throw InvalidInput(fmt::format("{} must be lammps, radius or radius-minus-half-overlap, got '{}'",
                                    name("torque_arm"), in.torque_arm));
   }
-  // "lammps": what LAMMPS does, R - δ/2 for a pair (pair_granular.cpp:663), R for a wall
-  // (fix_wall_gran.cpp:1512); LIGGGHTS's model takes its own arm R - δ/2 for both, in the torque and the
-  // contact-point velocity (surface_model_default.h:174-188).
-  const bool liggghts = in.tangential == "liggghts_history";
-  const bool half_overlap =
-      in.torque_arm == "radius-minus-half-overlap" || (in.torque_arm == "lammps" && (!in.wall || liggghts));
-  s.geometry.torque_arm = half_overlap ? TorqueArm::radius_minus_half_overlap : TorqueArm::radius;
-  if (liggghts && in.torque_arm == "lammps")
-    s.geometry.contact_point_arm = TorqueArm::radius_minus_half_overlap;
-  const double mindlin_null = contact_moduli(in, style, s);
+  // "lammps": what the model's code does (LAMMPS: R - δ/2 for a pair, R for a wall; LIGGGHTS: R - δ/2 for
+  // both, in the torque and the contact-point velocity); otherwise the torque arm given.
+  if (in.torque_arm == "lammps") {
+    const TangentialModel* model = find_tangential_model(in.tangential);
+    const ContactArms arms = model != nullptr ? model->arms(!in.wall) : ContactArms{};
+    s.geometry.torque_arm = arms.torque;
+    s.geometry.contact_point_arm = arms.contact_point;
+  } else {
+    s.geometry.torque_arm =
+        in.torque_arm == "radius" ? TorqueArm::radius : TorqueArm::radius_minus_half_overlap;
+  }
+  contact_moduli(in, style, s);
   // F = ρ δ^{3/2} + (3/2) A ρ sqrt(δ) δ', ρ = (4/3) E* sqrt(R*).
   const double rho = hertz_stiffness(s.effective_modulus_pa, effective_radius_m(s.geometry));
   try {
@@ -281,33 +280,25 @@ ObliqueSetup oblique_setup(const ObliqueInputs& in, ArgumentStyle style) {
     throw InvalidInput(fmt::format("{} must be one of {}, got '{}'", name("tangential"),
                                    fmt::join(oblique_tangential_names(), ", "), in.tangential));
   }
-  if (s.tangential.kind == TangentialKind::yade_viscel) {
-    throw InvalidInput(fmt::format(
-        "{} yade_viscel: YADE's ViscElPhys pairs its shear spring with a linear normal force (kn delta + cn "
-        "delta'), and this models viscoelastic Hertz; the model is in the library (docs/oblique.md)",
-        name("tangential")));
-  }
-  if (s.tangential.kind == TangentialKind::yade_mindlin) {
-    throw InvalidInput(fmt::format(
-        "{} yade_mindlin: YADE's MindlinPhys pairs its shear spring with the Tsuji normal force (kno "
-        "delta^1.5 "
-        "+ cn delta', cn = 2 betan sqrt(m* kn)), and this models viscoelastic Hertz; `restitution dem --code "
-        "yade --friction MU` prints its oblique impacts (docs/oblique.md)",
-        name("tangential")));
+  const TangentialModel& model = tangential_model(s.tangential.kind);
+  if (!model.runs_in_study()) {
+    throw InvalidInput(fmt::format("{} {}: {}, and this models viscoelastic Hertz; {}", name("tangential"),
+                                   model.name, model.normal_law_words, model.study_refusal));
   }
   s.tangential.damping_factor = in.tangential_damping;
   s.tangential.friction = *in.friction;
-  if (in.tangential_stiffness && s.tangential.kind == TangentialKind::linear_nohistory) {
-    throw InvalidInput(
-        fmt::format("linear_nohistory has no stiffness: drop {}", name("tangential_stiffness")));
+  if (in.tangential_stiffness && !model.has_stiffness()) {
+    throw InvalidInput(fmt::format("{} has no stiffness: drop {}", model.name, name("tangential_stiffness")));
   }
   if (in.tangential_stiffness) {
     s.tangential.stiffness = *in.tangential_stiffness;
-  } else if (is_lammps_mindlin(s.tangential.kind) || s.tangential.kind == TangentialKind::liggghts_history) {
+  } else if (model.default_stiffness != nullptr) {
     // LAMMPS's `mindlin NULL`: 8 G*, of the sphere and the wall on a wall (as `dem --wall` prints it).
-    s.tangential.stiffness = mindlin_null;
-  } else if (s.tangential.kind == TangentialKind::linear_history && *in.friction > 0.0) {
-    throw InvalidInput(fmt::format("linear_history needs {} K_T in N/m", name("tangential_stiffness")));
+    s.tangential.stiffness = model.default_stiffness(
+        {s.effective_modulus_pa, s.effective_shear_modulus_pa, effective_radius_m(s.geometry)});
+  } else if (model.has_stiffness() && *in.friction > 0.0) {
+    throw InvalidInput(
+        fmt::format("{} needs {} K_T in {}", model.name, name("tangential_stiffness"), model.stiffness_unit));
   }
   require_oblique_tolerance(in.tolerance, name("tolerance").c_str());
   s.tolerance = in.tolerance;

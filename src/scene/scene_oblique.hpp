@@ -20,7 +20,8 @@ struct ObliqueTask {
   std::vector<std::string> models;  // tangential models, LAMMPS's keywords; default mindlin (as `dem`)
   double friction = 0.0;            // μ
   // One section may sweep several models, whose stiffnesses differ in unit: k_t of linear_history (N/m) and
-  // of mindlin (N/m², its default LAMMPS's NULL, 8 G*).
+  // of the models whose k_t is per contact radius, the mindlin family and liggghts_history (N/m², default 8
+  // G*).
   std::optional<double> tangential_stiffness;
   std::optional<double> mindlin_stiffness;
   double tangential_damping = 0.0;

@@ -15,8 +15,8 @@
 // counting as the sphere's (without that gain e_t was up to 2.2e-3 off where the contact sticks).
 // ObliqueYadeMindlinDemLines runs the lines `dem --code yade --friction` prints (steel, glass, steel at ε =
 // 0.98) as printed, at the printed timestep and a tenth of it, against the printed outputs; it also measures
-// YADE's e_t error coefficient C (N |Δe_t| <= C, dem_oblique.cpp's yade_et_error_coefficient), and runs
-// the check deck `--deck` writes for the same lines.
+// YADE's e_t error coefficient C (N |Δe_t| <= C, the yade_mindlin row's et_error_coefficient in
+// src/oblique/tangential_models.cpp), and runs the check deck `--deck` writes for the same lines.
 #include <gtest/gtest.h>
 
 #include <algorithm>

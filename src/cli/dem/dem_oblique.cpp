@@ -42,7 +42,7 @@ TangentialWords tangential_words(const std::vector<std::string>& words) {
     throw std::logic_error("a LAMMPS granular line without tangential");
   TangentialWords t;
   t.position = static_cast<std::size_t>(at - words.begin()) + 1;
-  const std::size_t count = *(at + 1) == "linear_nohistory" ? 3 : 4;
+  const std::size_t count = tangential_model(tangential_from_name(*(at + 1))).has_stiffness() ? 4 : 3;
   if (t.position + count > words.size()) throw std::logic_error("a LAMMPS tangential model cut short");
   t.words.assign(at + 1, at + 1 + static_cast<std::ptrdiff_t>(count));
   return t;
@@ -52,7 +52,7 @@ TangentialWords tangential_words(const std::vector<std::string>& words) {
 TangentialForce tangential_of(const TangentialWords& t, double null_stiffness) {
   TangentialForce f;
   f.kind = tangential_from_name(t.words[0]);
-  const bool nohistory = f.kind == TangentialKind::linear_nohistory;
+  const bool nohistory = !tangential_model(f.kind).has_stiffness();
   if (!nohistory) f.stiffness = t.words[1] == "NULL" ? null_stiffness : std::stod(t.words[1]);
   f.damping_factor = std::stod(t.words[nohistory ? 1 : 2]);
   f.friction = std::stod(t.words[nohistory ? 2 : 3]);
@@ -80,28 +80,18 @@ std::vector<ContractedOblique> impacts_at(const DemOblique& r, const TangentialF
   return out;
 }
 
-// The bound on the code's e_t error per step of its reader (dem::CodeEntry::oblique).
-double et_error_coefficient(const DemOblique& r) {
-  switch (dem::code_entry(r.code).oblique) {
-    case dem::ObliqueReader::liggghts_history:
-      return liggghts_et_error_coefficient();
-    case dem::ObliqueReader::yade_mindlin:
-      return yade_et_error_coefficient();
-    case dem::ObliqueReader::lammps_granular:
-    case dem::ObliqueReader::none:
-      break;
-  }
-  return lammps_et_error_coefficient(r.tangential.kind);
-}
-
 // Solves the impacts, the steps per contact and the inverse; `line_with` is the printed line that carries the
-// tangential parameter, with the value found in place of the printed one.
+// tangential parameter, with the value found in place of the printed one. The arms are the model's (its row).
 DemOblique complete(DemOblique r, const DemObliqueOptions& o,
                     const std::function<std::string(double parameter)>& line_with) {
+  // The arms the model's code takes for a pair or a wall (its row).
+  const ContactArms& arms = tangential_model(r.tangential.kind).arms(r.geometry.second.has_value());
+  r.geometry.torque_arm = arms.torque;
+  r.geometry.contact_point_arm = arms.contact_point;
   r.angles_deg = o.angles_deg.empty() ? kDefaultAngles : o.angles_deg;
   r.impacts = impacts_at(r, r.tangential);
   r.et_accuracy = o.et_accuracy;
-  r.error_coefficient = et_error_coefficient(r);
+  r.error_coefficient = tangential_model(r.tangential.kind).et_error_coefficient;
   r.steps_per_contact = std::ceil(r.error_coefficient / r.et_accuracy);
   double shortest = HUGE_VAL;
   for (const auto& i : r.impacts) shortest = std::min(shortest, i.result.contact_time_s);
@@ -121,7 +111,7 @@ DemOblique complete(DemOblique r, const DemObliqueOptions& o,
     r.reference_angle_deg = *o.reference_angle_deg;
     r.inverse_lines = {line_with(r.inverse->parameter)};
     TangentialForce found = r.tangential;
-    (r.tangential.kind == TangentialKind::linear_nohistory ? found.damping_factor : found.stiffness) =
+    (tangential_model(r.tangential.kind).has_stiffness() ? found.stiffness : found.damping_factor) =
         r.inverse->parameter;
     r.inverse_impacts = impacts_at(r, found);
   }
@@ -173,25 +163,15 @@ void print_impacts(const DemOblique& r, const std::vector<ContractedOblique>& im
   }
 }
 
-const char* code_title(dem::Code code) {
-  return dem::code_entry(code).title;
-}
-
-// The Coulomb cap as each code applies it (docs/oblique.md, "LIGGGHTS and YADE").
-const char* cap_rule(dem::Code code) {
-  return dem::code_entry(code).cap_rule;
-}
-
 }  // namespace
 
 void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o) {
   command
       .add_option("--tangential", o.tangential,
                   "with --friction (lammps): LAMMPS's tangential model of the printed line, its oblique "
-                  "outputs and --target-et: linear_nohistory, linear_history, mindlin, mindlin_rescale, "
-                  "mindlin/force or mindlin_rescale/force")
-      ->check(CLI::IsMember({"linear_nohistory", "linear_history", "mindlin", "mindlin_rescale",
-                             "mindlin/force", "mindlin_rescale/force"}))
+                  "outputs and --target-et: " +
+                      alternatives(tangential_names_of("lammps")))
+      ->check(CLI::IsMember(tangential_names_of("lammps")))
       ->capture_default_str();
   command.add_option("--tangential-stiffness", o.tangential_stiffness,
                      "k_t of --tangential in N/m (mindlin: N/m^2, its stiffness is k_t a; default NULL, 8 G* "
@@ -222,39 +202,6 @@ void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o) {
                      "the impact angle in degrees from the normal at which --target-et holds, in (0, 90)");
 }
 
-double yade_et_error_coefficient() {
-  // Measured 2026-11-27 with Debian's YADE 2023.02a on the betan lines dem prints (two 1 mm spheres, eight
-  // angles 1°-85°, tests/dem/oblique_yade_mindlin.cpp): the largest N |e_t(N) - e_t| at dt = t_c/N, t_c the
-  // shortest contact, first order in dt: 2.31 for steel (A = 1e-7 s, ε = 0.914, μ = 0.3), 2.61 for glass
-  // (E = 6e10 Pa, ν = 0.25, ε = 0.7, μ = 0.5), 1.41 for steel at ε = 0.98, μ = 0.1; taken as 3.
-  return 3.0;
-}
-
-double lammps_et_error_coefficient(TangentialKind kind) {
-  // Measured 2026-11-27 with Debian's LAMMPS 20220106: the largest N |e_t(N) - e_t| at dt = t_c/N, the error
-  // falling tenfold with the step (first order). mindlin with x_gamma_t = 1, as dem prints it
-  // (tests/dem/oblique_dem_lines_lammps.cpp, pair and wall, six angles 5°-80°, the printed line and the
-  // --target-et line): 0.48 for steel (ε = 0.9, μ = 0.3), 0.60 for glass (E = 6e10 Pa, ν = 0.25, ε = 0.7,
-  // μ = 0.5), 0.14 for steel at ε = 0.98, μ = 0.1; taken as 1. The linear models with x_gamma_t = 0.5
-  // (tests/dem/oblique_lammps.cpp, nine angles, spin 0 and 300 rad/s): 0.064 and 0.033; but linear_history
-  // with x_gamma_t = 1 as `--tangential` prints it (k_t = 4e6 N/m, steel above, pair and wall): 0.48, so 1
-  // for every model. The force histories (mindlin/force, mindlin_rescale/force; tests/dem/oblique_lammps.cpp,
-  // x_gamma_t = 0.5, nine angles, spin 0 and 300 rad/s, wall and two pairs, at t_c/6000): 2.44 and 2.43 (and
-  // mindlin_rescale 0.59, mindlin 0.16 there), so 3 for them.
-  if (kind == TangentialKind::mindlin_force || kind == TangentialKind::mindlin_rescale_force) return 3.0;
-  return 1.0;
-}
-
-double liggghts_et_error_coefficient() {
-  // Measured 2026-11-27 with Debian's LIGGGHTS 3.8.0+repack1 on the pair lines dem prints (the runs of
-  // tests/dem/oblique_dem_lines_liggghts.cpp): the largest N |e_t(N) - e_t| at dt = t_c/N, N = 250, 500,
-  // 1000, 2000 and 4000, t_c the shortest contact, over the six default angles, the printed kt line and the
-  // --target-et 0.25 --reference-angle 20 one: 0.57 for steel (ε = 0.9, μ = 0.3), 0.78 for glass (E = 6e10
-  // Pa, ν = 0.25, ε = 0.7, μ = 0.5), 0.19 for steel at ε = 0.98, μ = 0.1; not falling with N (first order),
-  // so 1, as for LAMMPS.
-  return 1.0;
-}
-
 bool tangential_chosen(const DemObliqueOptions& o) {
   return o.tangential != "mindlin" || o.tangential_stiffness || o.tangential_damping;
 }
@@ -269,11 +216,14 @@ void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double
     throw InvalidInput("--tangential needs --friction MU > 0: without friction the line is frictionless");
   }
   const TangentialKind kind = tangential_from_name(o.tangential);
-  if (kind == TangentialKind::linear_history && !o.tangential_stiffness) {
-    throw InvalidInput("--tangential linear_history needs --tangential-stiffness K_T in N/m");
+  const TangentialModel& model = tangential_model(kind);
+  if (model.has_stiffness() && model.default_stiffness == nullptr && !o.tangential_stiffness) {
+    throw InvalidInput(fmt::format("--tangential {} needs --tangential-stiffness K_T in {}", model.name,
+                                   model.stiffness_unit));
   }
-  if (kind == TangentialKind::linear_nohistory && o.tangential_stiffness) {
-    throw InvalidInput("--tangential linear_nohistory has no stiffness: drop --tangential-stiffness");
+  if (!model.has_stiffness() && o.tangential_stiffness) {
+    throw InvalidInput(
+        fmt::format("--tangential {} has no stiffness: drop --tangential-stiffness", model.name));
   }
   if (o.tangential_stiffness && !(*o.tangential_stiffness > 0.0 && std::isfinite(*o.tangential_stiffness))) {
     throw InvalidInput(fmt::format("--tangential-stiffness must be a positive finite number, got {}",
@@ -291,7 +241,7 @@ void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double
   const TangentialWords printed = tangential_words(words);
   const std::string damping = o.tangential_damping ? fmt::format("{}", *o.tangential_damping) : "1";
   std::vector<std::string> chosen{o.tangential};
-  if (kind != TangentialKind::linear_nohistory) {
+  if (model.has_stiffness()) {
     // mindlin without a stiffness keeps the printed one (NULL for a pair, the wall's numeric 8 G*).
     chosen.push_back(o.tangential_stiffness ? fmt::format("{}", *o.tangential_stiffness) : printed.words[1]);
   }
@@ -305,9 +255,11 @@ void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double
       "tangential {} (--tangential): x_gamma_t = {} (tangential damping = x_gamma_t times the normal "
       "damping){}",
       joined(chosen), damping,
-      kind == TangentialKind::linear_nohistory ? ", no history: F_t = -min(mu |F_n|, x_gamma_t eta |v_t|)"
-      : kind == TangentialKind::linear_history ? ", k_t in N/m"
-                                               : ", k_t in N/m^2 (times the contact radius a)");
+      !model.has_stiffness()
+          ? std::string(", no history: F_t = -min(mu |F_n|, x_gamma_t eta |v_t|)")
+          : fmt::format(
+                ", k_t in {}{}", model.stiffness_unit,
+                model.rule.growth == StiffnessGrowth::contact_radius ? " (times the contact radius a)" : ""));
   for (std::string& n : deck.notes) {
     if (n.rfind("tangential ", 0) == 0) n = note;
   }
@@ -356,7 +308,7 @@ namespace {
 // LIGGGHTS's lines read as LIGGGHTS reads them: hertz/stiffness's kn sqrt(R* δ) and gamman m* sqrt(R* δ)
 // (normal_model_hertz_stiffness.h:118-122), `tangential history`'s kt sqrt(R* δ) and gammat m* sqrt(R* δ)
 // (so γ_t = gammat/gamman on the normal coefficient), the cap on the elastic force alone, torque and
-// contact-point arm R - δ/2 (TangentialKind::liggghts_history), limitForce on: the delayed-recovery end. The
+// contact-point arm R - δ/2 (the liggghts_history row), limitForce on: the delayed-recovery end. The
 // numbers are the writer's parameters (dem/deck_liggghts.cpp), which its lines print.
 DemOblique liggghts_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
                                  double speed_m_s, double tolerance) {
@@ -384,8 +336,6 @@ DemOblique liggghts_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, c
                                    dem::num(gammat), dem::num(mu));
   r.geometry.first = solid_sphere(pair.radius1_m, pair.mass1_kg);
   r.geometry.second = solid_sphere(pair.radius2_m, pair.mass2_kg);
-  r.geometry.torque_arm = TorqueArm::radius_minus_half_overlap;         // surface_model_default.h:176-188
-  r.geometry.contact_point_arm = TorqueArm::radius_minus_half_overlap;  // and tangential_model_history.h:254
   r.options.end = deck.end;  // limitForce on at the delayed-recovery end
   r.speed_m_s = speed_m_s;
   r.tolerance = std::clamp(tolerance, kSmallestObliqueTolerance, kLoosestObliqueTolerance);
@@ -409,7 +359,6 @@ DemOblique lammps_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, con
   r.tangential = tangential_of(words, 8.0 * e / (4.0 * (2.0 - nu) * (1.0 + nu)));
   r.geometry.first = solid_sphere(pair.radius1_m, pair.mass1_kg);
   r.geometry.second = solid_sphere(pair.radius2_m, pair.mass2_kg);
-  r.geometry.torque_arm = TorqueArm::radius_minus_half_overlap;  // pair_granular.cpp:663
   r.options.end = deck.end;
   r.speed_m_s = speed_m_s;
   r.tolerance = std::clamp(tolerance, kSmallestObliqueTolerance, kLoosestObliqueTolerance);
@@ -434,7 +383,6 @@ DemOblique wall_oblique(const dem::Deck& deck, const dem::Pair& contact, const D
               deck.parameter("eta_n0") * contact.effective_mass_kg * std::sqrt(radius)};
   r.tangential = tangential_of(words, e * (2.0 - nu) * (1.0 + nu) / 4.0);
   r.geometry.first = solid_sphere(radius, contact.effective_mass_kg);
-  r.geometry.torque_arm = TorqueArm::radius;  // fix_wall_gran.cpp:1512
   r.options.end = deck.end;
   r.speed_m_s = speed_m_s;
   r.tolerance = std::clamp(tolerance, kSmallestObliqueTolerance, kLoosestObliqueTolerance);
@@ -467,8 +415,6 @@ DemOblique yade_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const
   const double kso = 2.0 * std::sqrt(4.0 * r_star) * young / (2.0 * (1.0 + nu)) / (2.0 - nu);
   r.geometry.first = solid_sphere(pair.radius1_m, pair.mass1_kg);
   r.geometry.second = solid_sphere(pair.radius2_m, pair.mass2_kg);
-  r.geometry.torque_arm = TorqueArm::radius_minus_half_overlap;  // to ScGeom's contactPoint
-  r.geometry.contact_point_arm = TorqueArm::radius;              // getIncidentVel: the spins at R
   r.normal = {LawKind::tsuji_hertz, kno, 2.0 * betan * std::sqrt(1.5 * effective_mass_kg(r.geometry) * kno)};
   r.tangential = {TangentialKind::yade_mindlin, kso, std::sqrt(kso / (1.5 * kno)),
                   std::tan(deck.parameter("frictionAngle"))};
@@ -510,13 +456,14 @@ void print_oblique_text(const DemOblique& r, const char* c) {
         "{} frictionless lines: no tangential force, e_t = -1 and the spins unchanged at every angle\n", c);
     return;
   }
-  fmt::print("{} {}'s rule: {}\n", c, code_title(r.code), cap_rule(r.code));
+  const TangentialModel& model = tangential_model(r.tangential.kind);
+  fmt::print("{} {}'s rule: {}\n", c, model.code_title, model.cap_rule);
   fmt::print(
       "{} {} decides stick or slip once per step and is first order in dt: e_t within {:g} needs {:g} "
       "steps per contact (|error| <= {:g}/N, a bound over Debian's {} measured; docs/dem.md), timestep <= "
       "{:.4g} s for the shortest "
       "contact here\n",
-      c, code_title(r.code), r.et_accuracy, r.steps_per_contact, r.error_coefficient, code_title(r.code),
+      c, model.code_title, r.et_accuracy, r.steps_per_contact, r.error_coefficient, model.code_title,
       r.timestep_s);
   if (!r.inverse) return;
   fmt::print(
@@ -538,7 +485,7 @@ void write_oblique_json(JsonWriter& json, const DemOblique& r) {
   json.field("speed_m_s", r.speed_m_s).field("tolerance", r.tolerance);
   json.field("code", dem::code_name(r.code));
   const bool frictionless = r.tangential.friction == 0.0;  // no cap rule, no steps for e_t
-  if (!frictionless) json.field("cap_rule", cap_rule(r.code));
+  if (!frictionless) json.field("cap_rule", tangential_model(r.tangential.kind).cap_rule);
   json.key("impacts");
   write_impacts(json, r, r.impacts);
   if (!frictionless) {

@@ -33,14 +33,6 @@ struct DemObliqueOptions {
 
 void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o);
 
-// LAMMPS's integration error of e_t is first order in the step: |Δe_t| <= C/N at N steps per contact, C
-// measured with Debian's LAMMPS on the lines dem prints (dem_oblique.cpp says where and what).
-double lammps_et_error_coefficient(oblique::TangentialKind kind);
-// The same for LIGGGHTS's `tangential history` (dem_oblique.cpp says what it rests on).
-double liggghts_et_error_coefficient();
-// YADE's (2023.02a, Law2_ScGeom_MindlinPhys_Mindlin): |Δe_t| <= C/N likewise.
-double yade_et_error_coefficient();
-
 // The lines' oblique impacts at one speed (the reference speed of the lines).
 struct DemOblique {
   dem::Code code = dem::kDefaultCode;  // whose lines: lammps, liggghts or yade

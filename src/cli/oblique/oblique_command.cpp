@@ -188,16 +188,15 @@ std::string tangential_words(const Setup& s) {
   if (s.tangential.friction == 0.0) {
     return fmt::format("frictionless (friction 0): no tangential force, u and the spins unchanged");
   }
-  const TangentialKind kind = s.tangential.kind;
-  const bool liggghts = kind == TangentialKind::liggghts_history;
+  const TangentialModel& model = tangential_model(s.tangential.kind);
   std::string stiffness;
-  if (kind != TangentialKind::linear_nohistory) {
-    stiffness = fmt::format("k_t = {:.10g} {}, ", s.tangential.stiffness,
-                            is_lammps_mindlin(kind) || liggghts ? "N/m^2 (times sqrt(R* delta))" : "N/m");
+  if (model.has_stiffness()) {
+    stiffness =
+        fmt::format("k_t = {:.10g} {}{}, ", s.tangential.stiffness, model.stiffness_unit,
+                    model.rule.growth == StiffnessGrowth::contact_radius ? " (times sqrt(R* delta))" : "");
   }
-  return fmt::format("{} ({}): {}damping {:.6g}, friction {:.6g}", tangential_name(kind),
-                     liggghts ? "LIGGGHTS tangential history" : "LAMMPS pair granular", stiffness,
-                     s.tangential.damping_factor, s.tangential.friction);
+  return fmt::format("{} ({} {}): {}damping {:.6g}, friction {:.6g}", model.name, model.code_title,
+                     model.source, stiffness, s.tangential.damping_factor, s.tangential.friction);
 }
 
 void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueImpact>& impacts) {

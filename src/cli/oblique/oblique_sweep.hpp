@@ -27,7 +27,7 @@ std::string oblique_csv_rows(const std::vector<oblique::ObliqueImpact>& impacts,
 // One model on Maw's diagram: the model and its sticking-limit e_t (NaN, and why, where its solve failed:
 // the diagram then leaves the limit out).
 struct MawModel {
-  oblique::TangentialKind model = oblique::TangentialKind::linear_history;
+  oblique::TangentialKind model{};
   double sticking_restitution = 0.0;
   std::string sticking_failure;
 };

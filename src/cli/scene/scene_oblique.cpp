@@ -29,9 +29,11 @@ ObliqueInputs inputs_of(const scene::Scene& scene, const scene::ObliqueTask& tas
   in.wall_poisson_ratio = task.wall_poisson_ratio;
   in.fixed_normal = task.fixed_normal;
   in.tangential = model;
-  // The mindlin family's k_t is in N/m² (mindlin, mindlin_rescale, mindlin/force, mindlin_rescale/force).
-  in.tangential_stiffness =
-      model.rfind("mindlin", 0) == 0 ? task.mindlin_stiffness : task.tangential_stiffness;
+  // A k_t per contact radius, in N/m² (the mindlin family, liggghts_history), is mindlin_stiffness; one in
+  // N/m tangential_stiffness.
+  const TangentialModel* row = find_tangential_model(model);
+  const bool per_contact_radius = row != nullptr && row->rule.growth == StiffnessGrowth::contact_radius;
+  in.tangential_stiffness = per_contact_radius ? task.mindlin_stiffness : task.tangential_stiffness;
   in.tangential_damping = task.tangential_damping;
   in.friction = task.friction;
   in.end = task.end;
