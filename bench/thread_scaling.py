@@ -26,8 +26,7 @@ import time
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 POINTS = 100_000
 THREADS = (1, 2)
-SWEEP = ["sweep", "--method", "taylor", "--end", "delayed-recovery", "--log", "--zeta-min", "1e-3", "--zeta-max",
-         "1e3", "--points", str(POINTS)]
+SWEEP = ["sweep", "--method", "taylor", "--end", "delayed-recovery", "--log", "--zeta-range", f"1e-3:1e3:{POINTS}"]
 
 
 def load():

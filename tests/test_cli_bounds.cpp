@@ -56,7 +56,7 @@ TEST_F(SceneOutput, CommandLineOutputMayNameAnyFolder) {
 
 TEST(CliBounds, EmptyOutputIsRefusedEverywhere) {
   expect_refused("run scenes/dashpot.toml --out ''", "--out");
-  expect_refused("sweep --zeta-min 0 --zeta-max 1 --points 2 --out ''", "--out");
+  expect_refused("sweep --zeta-range 0:1:2 --out ''", "--out");
   expect_refused("reference --out ''", "--out");
   expect_refused("work-precision --out ''", "--out");
   expect_refused("stability --zeta 1 --out ''", "--out");
@@ -73,8 +73,8 @@ TEST(CliBounds, CountsHaveUpperBounds) {
   expect_refused("work-precision --repeats 2000000000", "--repeats: expected a whole number in [1, 100]");
   expect_refused("fast-table --out /tmp/restitution-x.h --checks 2000000000", "--checks");
   expect_refused("fast-table --out /tmp/restitution-x.h --seed -1", "--seed");
-  expect_refused("sweep --zeta-min 0 --zeta-max 1 --points 99999999999999999999 --out /tmp/restitution-x.csv",
-                 "got '99999999999999999999'");
+  expect_refused("sweep --zeta-range 0:1:99999999999999999999 --out /tmp/restitution-x.csv",
+                 "got '0:1:99999999999999999999': N must be a whole number in [1, 10000000]");
   EXPECT_NE(unwrapped_help(run_cli("sweep --help").out).find("in [1, 10000000]"), std::string::npos);
 }
 
@@ -140,8 +140,9 @@ TEST(CliWords, NumberTextsAreJudgedAsTyped) {
   expect_refused("eps --zeta ''", "--zeta: the value is empty, expected a number");
   expect_refused("eps --zeta 1e309", "--zeta: '1e309' is beyond the range of a double");
   expect_refused("eps --zeta -1e400", "'-1e400' is beyond the range of a double");
-  expect_refused("sweep --zeta-min 0 --zeta-max 1e999 --points 3 --out /tmp/restitution-x.csv",
-                 "--zeta-max: '1e999' is beyond the range of a double");
+  expect_refused("sweep --zeta-range 0:1e999:3 --out /tmp/restitution-x.csv",
+                 "--zeta-range must be FROM:TO:N (zeta, N >= 1 points), got '0:1e999:3': '1e999' is beyond "
+                 "the range of a double");
   expect_refused("eps --zeta inf", "got inf");  // spelled inf: the range check names it
   // Subnormal: representable, but 1 - eps would be subnormal too (issue 33, item 8; test_number_edges.cpp).
   expect_refused("eps --zeta 1e-320", "zeta = 1e-320 is below the smallest zeta served");
@@ -161,7 +162,7 @@ TEST(CliWords, ToleranceRangeIsPerMethod) {
 // Item 12: an output the system refuses names the file and the folder; the system's own reason (ENOENT for
 // /proc, which reads as if the folder were missing) comes last.
 TEST(CliWords, UnwritableOutputNamesTheFileAndTheFolder) {
-  const auto r = run_cli("sweep --zeta-min 0 --zeta-max 1 --points 3 --out /proc/x.csv");
+  const auto r = run_cli("sweep --zeta-range 0:1:3 --out /proc/x.csv");
   EXPECT_EQ(r.status, 3) << r.err;
   EXPECT_NE(
       r.err.find("cannot write '/proc/x.csv': the folder '/proc' does not let this program create files "

@@ -51,11 +51,11 @@ TEST(CliOutputs, SymlinksAndStreamsAreNotReplaced) {
   fs::create_directories(folder / "data");
   std::ofstream(folder / "data" / "real.csv") << "old\n";
   fs::create_symlink("data/real.csv", folder / "link.csv");
-  auto r = run_cli("sweep --zeta-min 0 --zeta-max 1 --points 3 --out " + (folder / "link.csv").string());
+  auto r = run_cli("sweep --zeta-range 0:1:3 --out " + (folder / "link.csv").string());
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status(folder / "link.csv")));
   EXPECT_EQ(slurp((folder / "data" / "real.csv").string()).rfind("zeta,", 0), 0U);
-  r = run_cli("sweep --zeta-min 0 --zeta-max 1 --points 3 --out /dev/stdout");
+  r = run_cli("sweep --zeta-range 0:1:3 --out /dev/stdout");
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("is not a regular file"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status("/dev/stdout")));
@@ -65,7 +65,7 @@ TEST(CliOutputs, SymlinksAndStreamsAreNotReplaced) {
 // Item 15: --resume of a sweep that finished says so and computes nothing.
 TEST(CliOutputs, ResumingAFinishedSweepSaysItIsComplete) {
   const fs::path folder = fresh_folder("resume");
-  const std::string sweep = "sweep --zeta-min 0 --zeta-max 1 --points 3 --out " + (folder / "s.csv").string();
+  const std::string sweep = "sweep --zeta-range 0:1:3 --out " + (folder / "s.csv").string();
   ASSERT_EQ(run_cli(sweep).status, 0);
   const auto r = run_cli(sweep + " --resume");
   EXPECT_EQ(r.status, 0) << r.err;
@@ -80,8 +80,7 @@ TEST(CliOutputs, RefusalsComeBeforeTheWork) {
   std::ofstream(folder / "a-file") << "x\n";
   const std::string file = (folder / "a-file").string();
   for (const std::string& command :
-       {"sweep --zeta-min 1e-3 --zeta-max 1e3 --points 1000 --log --method taylor --out " +
-            (folder / "t.csv").string(),
+       {"sweep --zeta-range 1e-3:1e3:1000 --log --method taylor --out " + (folder / "t.csv").string(),
         "work-precision --out " + file, "reference --out " + folder.string(),
         "series certify --order 12 --out " + folder.string(), "series validate --out " + file}) {
     const auto r = run_cli(command);

@@ -134,7 +134,7 @@ TEST(CliSweepVelocity, RefusesIncompleteOrMixedFormsBeforeWriting) {
     std::string arguments, message;
   } cases[] = {
       {"--velocity-min 1 --velocity-max 2 --points 2" + ice, "a material sweep needs --dissipative-constant"},
-      {"--beta 0.2 --zeta-min 1 --zeta-max 2 --points 2", "not both"},
+      {"--beta 0.2 --zeta-range 1:2:2", "not both"},
       {"--beta 0.2 --velocity-min 1 --points 2", "needs --velocity-min and --velocity-max"},
       {"--velocity-min 1 --velocity-max 2 --points 2", "exactly one of --beta and a material"},
       {"--beta 0.2 --velocity-min 1 --velocity-max 2 --points 2 --dissipative-constant 1e-4" + ice,
@@ -142,7 +142,7 @@ TEST(CliSweepVelocity, RefusesIncompleteOrMixedFormsBeforeWriting) {
       {"--beta 1000 --velocity-min 1 --velocity-max 1e20 --points 3", "outside the checked range"},
       {"--beta 0.2 --velocity-min 0 --velocity-max 1 --points 3", "velocity must be finite and > 0"},
       {"--beta 0.2 --velocity-min 2 --velocity-max 1 --points 3", "velocity-min (2) must not exceed"},
-      {"--points 3", "give --zeta-min and --zeta-max, or --velocity-min"},
+      {"--points 3", "give --zeta-range FROM:TO:N, or --velocity-min"},
   };
   for (const auto& c : cases) {
     const auto outcome = run_cli("sweep " + c.arguments + out);

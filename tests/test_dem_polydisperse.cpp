@@ -195,8 +195,8 @@ TEST(DemCommand, RefusalsNameTheOptionOrTheCode) {
             "--velocity 1",
             "--young-modulus has 2 values for 1 radius"},
            {"dem --code lammps --radius 0.002,x" + set, "--radius expects a number, got 'x'"},
-           {"dem --code lammps --radius-range 0.002,0.001 --classes 3" + set, "--radius-range must be"},
-           {"dem --code lammps --radius-range 0.001,0.002" + set, "--classes N"},
+           {"dem --code lammps --radius-range 0.002:0.001:3" + set, "--radius-range must be"},
+           {"dem --code lammps --radius-range 0.001,0.002" + set, "--radius-range RMIN:RMAX:N"},
        }) {
     const auto r = test_support::run_cli(args);
     EXPECT_EQ(r.status, 2) << args;

@@ -93,20 +93,16 @@ TEST_F(LawEverywhere, EpsComputesTsujiAndDashpot) {
 
 TEST_F(LawEverywhere, SweepOverZetaComputesTsujiAndDashpot) {
   const fs::path tsuji = folder_ / "tsuji.csv";
-  ASSERT_EQ(run_cli("sweep --law tsuji-hertz --zeta-min 0.1 --zeta-max 2.1 --points 5 --end naive --out " +
-                    tsuji.string())
-                .status,
-            0);
+  ASSERT_EQ(
+      run_cli("sweep --law tsuji-hertz --zeta-range 0.1:2.1:5 --end naive --out " + tsuji.string()).status,
+      0);
   const auto t = read_csv(tsuji);
   ASSERT_EQ(t.at("zeta").size(), 5U);
   for (std::size_t i = 0; i < 5; ++i) {
     expect_eps(t.at("naive_eps")[i], tsuji_naive_eps(t.at("zeta")[i]), "sweep tsuji");
   }
   const fs::path dashpot = folder_ / "dashpot.csv";
-  ASSERT_EQ(
-      run_cli("sweep --law linear-dashpot --zeta-min 0.2 --zeta-max 1.8 --points 4 --out " + dashpot.string())
-          .status,
-      0);
+  ASSERT_EQ(run_cli("sweep --law linear-dashpot --zeta-range 0.2:1.8:4 --out " + dashpot.string()).status, 0);
   const auto d = read_csv(dashpot);
   ASSERT_EQ(d.at("zeta").size(), 4U);
   for (std::size_t i = 0; i < 4; ++i) {
@@ -118,8 +114,8 @@ TEST_F(LawEverywhere, SweepOverZetaComputesTsujiAndDashpot) {
 }
 
 TEST_F(LawEverywhere, SweepRefusesANaiveEndBeyondTheCriticalZeta) {
-  const auto r = run_cli("sweep --law linear-dashpot --zeta-min 1 --zeta-max 3 --points 3 --out " +
-                         (folder_ / "x.csv").string());
+  const auto r =
+      run_cli("sweep --law linear-dashpot --zeta-range 1:3:3 --out " + (folder_ / "x.csv").string());
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("naive end does not exist"), std::string::npos) << r.err;
 }

@@ -54,8 +54,10 @@ TEST(NumberEdges, LiteralsThatUnderflowToZeroAreRefused) {
   expect_refused("eps --zeta 1e-400", std::string("--zeta: '1e-400' ") + kUnderflow);
   expect_refused("eps --zeta -1e-400", std::string("'-1e-400' ") + kUnderflow);
   expect_refused("eps --zeta 1 --tolerance 1e-999", std::string("--tolerance: '1e-999' ") + kUnderflow);
-  expect_refused("sweep --zeta-min 1e-400 --zeta-max 1 --points 3 --out /tmp/restitution-never.csv",
-                 std::string("--zeta-min: '1e-400' ") + kUnderflow);
+  expect_refused(
+      "sweep --zeta-range 1e-400:1:3 --out /tmp/restitution-never.csv",
+      std::string("--zeta-range must be FROM:TO:N (zeta, N >= 1 points), got '1e-400:1:3': '1e-400' ") +
+          kUnderflow);
   // A list option, item by item.
   expect_refused(
       "dem --code lammps --young-modulus 2.1e11 --poisson-ratio 0.3 --density 7850 --radius "
@@ -73,8 +75,7 @@ TEST(NumberEdges, ZetaBelowTheSmallestNormalDoubleIsRefusedByEveryFrontEnd) {
   expect_refused("eps --zeta 2.225073858507201e-308", kNotServed);                // the largest subnormal
   expect_refused("eps --law linear-dashpot --damping-ratio 1e-308", kNotServed);  // ζ = 2r = 2e-308
   expect_refused("eps --law tsuji-hertz --zeta 4.9e-324 --method taylor", kNotServed);
-  expect_refused("sweep --zeta-min 0 --zeta-max 1e-310 --points 2 --out /tmp/restitution-never.csv",
-                 kNotServed);
+  expect_refused("sweep --zeta-range 0:1e-310:2 --out /tmp/restitution-never.csv", kNotServed);
   expect_refused("series eval --kind naive --zeta 1e-315", kNotServed);
   expect_refused("reference --zeta 1e-315", kNotServed);
   EXPECT_FALSE(std::filesystem::exists("/tmp/restitution-never.csv"));
@@ -130,7 +131,7 @@ TEST(NumberEdges, ZetaZeroIsTheUndampedOscillatorForEveryMember) {
 TEST(NumberEdges, SceneSweepAndSweepOutNameTheirColumnsAlike) {
   TempFolder folder;
   const std::filesystem::path csv = folder.path / "sweep.csv";
-  ASSERT_EQ(run_cli("sweep --zeta-min 0.1 --zeta-max 1 --points 2 --out " + csv.string()).status, 0);
+  ASSERT_EQ(run_cli("sweep --zeta-range 0.1:1:2 --out " + csv.string()).status, 0);
   const std::vector<std::string> sweep_columns = header_of(slurp(csv.string()));
   const std::filesystem::path scene = folder.path / "s.toml";
   std::ofstream(scene)

@@ -113,9 +113,8 @@ TEST(FolderLock, LocksBesideTheFolderAndRemovesOnlyTheEmptyFoldersItMade) {
 
 // A sweep of about a second on two threads.
 std::vector<std::string> sweep_arguments(const fs::path& out) {
-  return {"sweep", "--zeta-min", "0",      "--zeta-max",  "10",        "--points",
-          "40000", "--method",   "taylor", "--tolerance", "1e-2",      "--end",
-          "naive", "--threads",  "2",      "--out",       out.string()};
+  return {"sweep", "--zeta-range", "0:10:40000", "--method", "taylor", "--tolerance", "1e-2",
+          "--end", "naive",        "--threads",  "2",        "--out",  out.string()};
 }
 
 std::string command_of(const std::vector<std::string>& arguments) {
@@ -182,18 +181,16 @@ TEST(CliLock, ASecondRunIntoTheSameFolderIsRefusedAtOnce) {
   const TempFolder dir;
   const fs::path folder = dir.path / "results";
   const std::string scene = std::string(RESTITUTION_SOURCE_DIR) + "/scenes/trajectory.toml";
-  const pid_t first =
-      spawn_cli({"run", scene, "--quick", "--out", folder.string()}, dir.path / "first.err");
+  const pid_t first = spawn_cli({"run", scene, "--quick", "--out", folder.string()}, dir.path / "first.err");
   ASSERT_TRUE(wait_for_lock(folder.string() + ".lock", first));
   const std::string other = std::string(RESTITUTION_SOURCE_DIR) + "/scenes/dashpot.toml";
   const auto start = std::chrono::steady_clock::now();
   const auto second = run_cli("run " + other + " --quick --out " + folder.string());
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5)) << "refused at once";
   EXPECT_EQ(second.status, 2) << second.err;
-  EXPECT_NE(
-      second.err.find(fmt::format("--out '{}' is being written by another restitution run (process {}",
-                                  folder.string(), first)),
-      std::string::npos)
+  EXPECT_NE(second.err.find(fmt::format("--out '{}' is being written by another restitution run (process {}",
+                                        folder.string(), first)),
+            std::string::npos)
       << second.err;
   EXPECT_EQ(wait_cli(first), 0) << slurp(dir.path / "first.err");
   EXPECT_TRUE(fs::exists(folder / "report.md"));
@@ -206,8 +203,7 @@ TEST(CliLock, TwoRunsThroughASymlinkedFolderAreSerialised) {
   fs::create_directories(folder);
   fs::create_directory_symlink(folder, dir.path / "link-to-same2");
   const std::string scene = std::string(RESTITUTION_SOURCE_DIR) + "/scenes/trajectory.toml";
-  const pid_t first =
-      spawn_cli({"run", scene, "--quick", "--out", folder.string()}, dir.path / "first.err");
+  const pid_t first = spawn_cli({"run", scene, "--quick", "--out", folder.string()}, dir.path / "first.err");
   ASSERT_TRUE(wait_for_lock(folder.string() + ".lock", first));
   const std::string other = std::string(RESTITUTION_SOURCE_DIR) + "/scenes/dashpot.toml";
   const auto second = run_cli("run " + other + " --quick --out " + (dir.path / "link-to-same2").string());

@@ -129,7 +129,7 @@ TEST(Progress, NothingOnStderrWhenItIsNotATerminal) {
   char folder[] = "/tmp/restitution-progress-XXXXXX";
   ASSERT_NE(mkdtemp(folder), nullptr);
   const std::string out = std::string(folder) + "/s.csv";
-  const auto sweep = test_support::run_cli("sweep --zeta-min 0 --zeta-max 1 --points 5 --out " + out);
+  const auto sweep = test_support::run_cli("sweep --zeta-range 0:1:5 --out " + out);
   std::remove(out.c_str());
   std::remove(folder);
   EXPECT_EQ(sweep.status, 0) << sweep.err;

@@ -256,7 +256,7 @@ TEST(CliSweep, WritesRowsInZetaOrderMatchingTheLibrary) {
   const TempFolder dir;
   const fs::path out = dir.path / "sub" / "s.csv";
   const auto outcome = run_cli(
-      "sweep --zeta-min 0.01 --zeta-max 100 --points 9 --log --end delayed-recovery "
+      "sweep --zeta-range 0.01:100:9 --log --end delayed-recovery "
       "--tolerance 1e-8 --threads 2 --out " +
       out.string());
   ASSERT_EQ(outcome.status, 0) << outcome.err;
@@ -279,7 +279,7 @@ TEST(CliSweep, WritesRowsInZetaOrderMatchingTheLibrary) {
 
 TEST(CliSweep, OneThreadAndTwoThreadsWriteTheSameBytes) {
   const TempFolder dir;
-  const std::string common = "sweep --zeta-min 0 --zeta-max 20 --points 25 --tolerance 1e-8 --out ";
+  const std::string common = "sweep --zeta-range 0:20:25 --tolerance 1e-8 --out ";
   ASSERT_EQ(run_cli(common + (dir.path / "one.csv").string() + " --threads 1").status, 0);
   ASSERT_EQ(run_cli(common + (dir.path / "two.csv").string() + " --threads 2").status, 0);
   EXPECT_EQ(slurp(dir.path / "one.csv"), slurp(dir.path / "two.csv"));
@@ -312,8 +312,7 @@ TEST(CliSweep, SignalsKeepFinishedRowsAndResumeFinishesWithoutRecomputing) {
   // 6000 points: about a second of work, so the signals land mid-sweep on a machine a few times faster.
   constexpr std::size_t kPoints = 6000;
   const std::vector<std::string> arguments{
-      "sweep",     "--zeta-min", "0",     "--zeta-max", "30", "--points", std::to_string(kPoints),
-      "--threads", "2",          "--out", out.string()};
+      "sweep", "--zeta-range", "0:30:" + std::to_string(kPoints), "--threads", "2", "--out", out.string()};
   // SIGINT first, then SIGTERM on the resumed sweep.
   std::vector<std::string> run = arguments;
   for (const int signal_number : {SIGINT, SIGTERM}) {
@@ -361,7 +360,7 @@ TEST(CliSweep, ResumeRefusesThePartialFileOfAnotherSweep) {
   {
     std::ofstream(out.string() + ".partial") << "# restitution sweep: zeta-min=0 zeta-max=1 points=3\nzeta\n";
   }
-  const auto outcome = run_cli("sweep --zeta-min 0 --zeta-max 2 --points 3 --resume --out " + out.string());
+  const auto outcome = run_cli("sweep --zeta-range 0:2:3 --resume --out " + out.string());
   EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.err.find("written by another sweep"), std::string::npos) << outcome.err;
   EXPECT_FALSE(fs::exists(out));

@@ -31,9 +31,19 @@ constexpr int kPlaces = 10;
 
 // Small and fast (~0.3 s): Taylor at a loose tolerance, the naive end, two threads.
 std::vector<std::string> sweep_arguments(const fs::path& out) {
-  return {"sweep",    "--zeta-min", "0",           "--zeta-max", "10",    "--points", std::to_string(kPoints),
-          "--method", "taylor",     "--tolerance", "1e-2",       "--end", "naive",    "--threads",
-          "2",        "--out",      out.string()};
+  return {"sweep",
+          "--zeta-range",
+          "0:10:" + std::to_string(kPoints),
+          "--method",
+          "taylor",
+          "--tolerance",
+          "1e-2",
+          "--end",
+          "naive",
+          "--threads",
+          "2",
+          "--out",
+          out.string()};
 }
 
 struct Fault {

@@ -28,7 +28,7 @@ using test_support::TempFolder;
 
 constexpr std::size_t kPoints = 200;
 const std::string kSweep =
-    "sweep --zeta-min 0 --zeta-max 10 --points 200 --method taylor --tolerance 1e-2 --end naive --threads 2";
+    "sweep --zeta-range 0:10:200 --method taylor --tolerance 1e-2 --end naive --threads 2";
 // The first line of that sweep's partial file.
 const std::string kSettings =
     "# restitution sweep: zeta-min=0 zeta-max=10 points=200 spacing=linear end=naive method=taylor "

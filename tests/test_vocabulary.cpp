@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "cli_runner.hpp"
@@ -79,6 +80,61 @@ TEST(Vocabulary, OutForEveryOutput) {
   EXPECT_EQ(ordered.status, 0) << ordered.err;
 }
 
+// A sweep's old --zeta-min A --zeta-max B --points N writes the bytes of --zeta-range A:B:N, in either
+// spacing.
+TEST(Vocabulary, OneRangeSyntaxForSweep) {
+  const TempFolder t;
+  for (const auto& [old_form, new_form] : std::vector<std::pair<std::string, std::string>>{
+           {"--zeta-min 0.1 --zeta-max 10 --points 5 --log", "--zeta-range 0.1:10:5 --log"},
+           {"--zeta-min 0 --zeta-max 2 --points 4", "--zeta-range 0:2:4"}}) {
+    const std::string a = (t.path / "old.csv").string();
+    const std::string b = (t.path / "new.csv").string();
+    const CliOutcome old = run_cli("sweep " + old_form + " --out " + a);
+    const CliOutcome now = run_cli("sweep " + new_form + " --out " + b);
+    ASSERT_EQ(now.status, 0) << new_form << ": " << now.err;
+    EXPECT_EQ(now.err, "") << new_form;
+    ASSERT_EQ(old.status, 0) << old_form << ": " << old.err;
+    const std::vector<std::string> warning = lines_of(old.err);
+    ASSERT_EQ(warning.size(), 1U) << old.err;
+    EXPECT_NE(warning[0].find("--zeta-min A --zeta-max B --points N is deprecated"), std::string::npos)
+        << warning[0];
+    EXPECT_NE(warning[0].find("use --zeta-range A:B:N"), std::string::npos) << warning[0];
+    EXPECT_EQ(slurp(a), slurp(b)) << new_form;  // the settings line of a resumable file included
+    EXPECT_GT(lines_of(slurp(b)).size(), 4U) << new_form;
+  }
+  for (const auto& [arguments, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--zeta-range 0:2", "--zeta-range must be FROM:TO:N"},
+           {"--zeta-range 0:2:0", "N must be a whole number in [1, 10000000]"},
+           {"--zeta-range 3:2:3", "--zeta-range '3:2:3': zeta-min (3) must not exceed zeta-max (2)"},
+           {"--zeta-range 0:2:3 --points 3", "give it alone"},
+           {"--points 3", "give --zeta-range FROM:TO:N"}}) {
+    const CliOutcome r = run_cli("sweep " + arguments + " --out " + (t.path / "bad.csv").string());
+    EXPECT_EQ(r.status, 2) << arguments;
+    EXPECT_EQ(lines_of(r.err).size(), 1U) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << arguments << ": " << r.err;
+  }
+}
+
+// dem's old --radius-range RMIN,RMAX --classes N prints the bytes of --radius-range RMIN:RMAX:N.
+TEST(Vocabulary, OneRangeSyntaxForDem) {
+  const std::string dem =
+      "dem --code liggghts --young-modulus 2.1e11 --poisson-ratio 0.3 --density 7850 --eps 0.9 --velocity 1 "
+      "--json";
+  expect_alias(dem + " --radius-range 0.001,0.004 --classes 4", dem + " --radius-range 0.001:0.004:4",
+               "--radius-range RMIN:RMAX:N");
+  const CliOutcome classes = run_cli(dem + " --radius-range 0.001:0.004:4");
+  EXPECT_NE(classes.out.find("0.004"), std::string::npos);
+  for (const auto& [arguments, message] : std::vector<std::pair<std::string, std::string>>{
+           {" --radius-range 0.004:0.001:4", "--radius-range must be RMIN:RMAX:N with 0 < RMIN < RMAX"},
+           {" --radius-range 0.001:0.004:101", "N must be a whole number in [1, 100]"},
+           {" --radius-range 0.001:0.004:4 --classes 4", "drop --classes"},
+           {" --radius-range 0.001,0.004", "--radius-range RMIN:RMAX:N"}}) {
+    const CliOutcome r = run_cli(dem + arguments);
+    EXPECT_EQ(r.status, 2) << arguments;
+    EXPECT_NE(r.err.find(message), std::string::npos) << arguments << ": " << r.err;
+  }
+}
+
 TEST(Vocabulary, HelpListsOnlyTheNewSpellings) {
   for (const auto& [command, old_name, new_name] :
        std::vector<std::tuple<std::string, std::string, std::string>>{
@@ -86,7 +142,9 @@ TEST(Vocabulary, HelpListsOnlyTheNewSpellings) {
            {"dem", "--speeds", "--impact-velocity"},
            {"dem", "--angles", "--angle "},
            {"run", "--output", "--out "},
-           {"fit-data", "--output", "--out "}}) {
+           {"fit-data", "--output", "--out "},
+           {"sweep", "--zeta-min", "--zeta-range"},
+           {"dem", "--classes", "--radius-range RMIN:RMAX:N"}}) {
     const std::string help = run_cli(command + " --help").out;
     EXPECT_EQ(help.find(old_name), std::string::npos) << command << " --help lists " << old_name;
     EXPECT_NE(help.find(new_name), std::string::npos) << command << " --help lacks " << new_name;

@@ -32,7 +32,7 @@ def beta_of(characteristic_velocity):
     """beta [s^(1/5) m^(-1/5)] of a characteristic velocity g* [m/s]: g* = (C1 beta)^-5 (1999 paper, Eq. 31); C1
     read from any calibration, which reports both its beta and its g*."""
     any_law = restitution.calibrate(0.5, 1.0)
-    return any_law.beta * (any_law.characteristic_velocity / characteristic_velocity) ** 0.2
+    return any_law.beta * (any_law.characteristic_velocity_m_s / characteristic_velocity) ** 0.2
 
 
 def main():

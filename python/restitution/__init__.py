@@ -33,10 +33,15 @@ from . import fast, series
 from ._restitution import CollisionResult, EndResult, Calibration, Material, MaxCompression
 from ._restitution import NumericalFailure, SolverStats
 from ._restitution import __version__  # the file VERSION at the root of the checkout
+from ._renamed import add_old_names as _add_old_names
 
 __all__ = ["__version__", "eps", "solve", "calibrate", "fit_data", "zeta_of", "build_info", "Material",
            "NumericalFailure", "CollisionResult", "EndResult", "MaxCompression", "SolverStats", "Calibration", "series",
            "fast"]
+
+# The names before the JSON's (issue 44, item 13), kept until 0.5.0.
+_add_old_names(Calibration, (("characteristic_velocity", "characteristic_velocity_m_s"),
+                             ("dissipative_constant", "dissipative_constant_s")))
 
 _SCALARS = (float, int)
 _TOLERANCE = _core.default_tolerance  # SolveOptions' default, the command line's too
@@ -364,10 +369,12 @@ def calibrate(eps, velocity, end="delayed-recovery", material=None, tolerance=_T
     Returns
     -------
     Calibration
-        .zeta (natural units), .beta [s^(1/5) m^(-1/5)], .characteristic_velocity (the 1999 paper's g*
-        [m/s]), .dissipative_constant (A [s] for the material's elastic data, else None), .eps_at_zeta,
-        .solves. For another law than viscoelastic Hertz .zeta (and .parameter, the dash-pot's r) is the
-        result and .beta, .characteristic_velocity are None (no material).
+        .zeta (natural units), .beta [s^(1/5) m^(-1/5)], .characteristic_velocity_m_s (the 1999 paper's g*
+        [m/s]), .dissipative_constant_s (A [s] for the material's elastic data, else None), .eps_at_zeta,
+        .solves, named as the JSON keys of `restitution calibrate --json` (the names without _m_s and _s
+        still work until 0.5.0, with a DeprecationWarning). For another law than viscoelastic Hertz .zeta (and
+        .parameter, the dash-pot's r) is the result and .beta, .characteristic_velocity_m_s are None (no
+        material).
 
     Raises
     ------

@@ -145,9 +145,13 @@ class Calibration:
     @property
     def eps_at_zeta(self) -> float: ...
     @property
-    def characteristic_velocity(self) -> Optional[float]: ...  # g*, m/s; None unless law is viscoelastic-hertz
+    def characteristic_velocity_m_s(self) -> Optional[float]: ...  # g*; None unless law is viscoelastic-hertz
     @property
-    def dissipative_constant(self) -> Optional[float]: ...  # A, s
+    def dissipative_constant_s(self) -> Optional[float]: ...  # A
+    @property
+    def characteristic_velocity(self) -> Optional[float]: ...  # deprecated: characteristic_velocity_m_s
+    @property
+    def dissipative_constant(self) -> Optional[float]: ...  # deprecated: dissipative_constant_s
     @property
     def solves(self) -> int: ...
 

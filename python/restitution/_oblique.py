@@ -9,26 +9,27 @@ import numpy as _np
 
 from . import _restitution as _core
 from . import _end, _optional_real, _real_array, _text, Material
+from ._renamed import add_old_names
 
 # The outputs in the order the repr shows them: attribute, unit (as the repr writes it), what it is.
 _FIELDS = (
     ("angle_deg", "deg", "impact angle from the normal, as given"),
-    ("initial_spin", "rad/s", "spin of the (first) sphere before contact, as given"),
+    ("initial_spin_rad_s", "rad/s", "spin of the (first) sphere before contact, as given"),
     ("normal_restitution", "", "eps = -v_n'/v_n"),
     ("tangential_restitution", "", "e_t = -s'/s at the contact point (-1: s unchanged; NaN where s = 0)"),
     ("rebound_angle", "rad", "atan2(u', eps v_n): the centre's velocity after contact, from the normal"),
     ("rebound_angle_deg", "deg", "the rebound angle in degrees"),
     ("impact_angle", "rad", "atan2(u, v_n) before contact"),
-    ("spin", "rad/s", "spin of the (first) sphere after contact"),
-    ("spin2", "rad/s", "spin of the second sphere after contact (0 on a wall)"),
+    ("spin_rad_s", "rad/s", "spin of the (first) sphere after contact"),
+    ("spin2_rad_s", "rad/s", "spin of the second sphere after contact (0 on a wall)"),
     ("slip_velocity", "m/s", "s' of the contact point after contact"),
     ("tangential_velocity", "m/s", "u' of the first centre relative to the second after contact"),
     ("normal_velocity", "m/s", "separation speed eps v_n"),
     ("impulse_ratio", "", "J_t/J_n, tangential over normal impulse (-mu for a slide throughout)"),
     ("line_of_centres_turn", "rad", "how far a pair's line of centres turned during the contact"),
-    ("contact_time", "s", "duration of the contact"),
-    ("stick_time", "s", "time below the Coulomb cap"),
-    ("slip_time", "s", "time at the cap"),
+    ("contact_time_s", "s", "duration of the contact"),
+    ("stick_time_s", "s", "time below the Coulomb cap"),
+    ("slip_time_s", "s", "time at the cap"),
     ("psi_in", "", "Maw, Barber & Fawcett's psi_1 = 2(1 - nu)/(mu(2 - nu)) s/v_n (NaN without friction)"),
     ("psi_out", "", "psi_2 of the outgoing slip over the same v_n"),
 )
@@ -38,13 +39,16 @@ class ObliqueResult:
     """The outcome of oblique impacts (restitution.oblique): floats for one impact, float64 arrays of the
     broadcast shape of angle and spin for several.
 
-    Attributes (SI units; angles in rad unless named _deg): angle_deg, initial_spin [rad/s],
-    normal_restitution, tangential_restitution, rebound_angle [rad], rebound_angle_deg, impact_angle [rad],
-    spin, spin2 [rad/s], slip_velocity, tangential_velocity, normal_velocity [m/s], impulse_ratio,
-    line_of_centres_turn [rad], contact_time, stick_time, slip_time [s], psi_in, psi_out; switch_times [s]
+    Attributes (SI units; angles in rad unless named _deg; named as the JSON of `restitution oblique --json`
+    where it has them): angle_deg, initial_spin_rad_s, normal_restitution, tangential_restitution,
+    rebound_angle [rad], rebound_angle_deg, impact_angle [rad], spin_rad_s, spin2_rad_s, slip_velocity,
+    tangential_velocity, normal_velocity [m/s], impulse_ratio, line_of_centres_turn [rad], contact_time_s,
+    stick_time_s, slip_time_s, psi_in, psi_out; dissipative_constant_s; switch_times [s]
     (per impact the times of the mode switches, the first 0) and modes (per impact "stick"/"slip" from each of
     them) as arrays, or for several impacts object arrays of them; tangential_model and maw_chi (chi of Maw's
-    diagram: the gross-slip line is psi_2 = psi_1 - 2(1 + eps) chi).
+    diagram: the gross-slip line is psi_2 = psi_1 - 2(1 + eps) chi). The names without the unit suffix
+    (initial_spin, spin, spin2, contact_time, stick_time, slip_time, dissipative_constant) still work until
+    0.5.0, with a DeprecationWarning.
     """
 
     def __init__(self, **values):
@@ -66,6 +70,12 @@ class ObliqueResult:
         if isinstance(self.angle_deg, float):
             parts.append("modes=" + ", ".join(f"{m} from {t:.4g} s" for m, t in zip(self.modes, self.switch_times)))
         return "ObliqueResult(" + ", ".join(parts) + ")"
+
+
+# The names before the JSON's (issue 44, item 13), kept until 0.5.0.
+add_old_names(ObliqueResult, (("initial_spin", "initial_spin_rad_s"), ("spin", "spin_rad_s"), ("spin2", "spin2_rad_s"),
+                              ("contact_time", "contact_time_s"), ("stick_time", "stick_time_s"),
+                              ("slip_time", "slip_time_s"), ("dissipative_constant", "dissipative_constant_s")))
 
 
 def _same(a, b):
@@ -126,8 +136,9 @@ def oblique(*, material, friction, angle, spin=0.0, impact_velocity=1.0, tangent
     ObliqueResult
         Floats for scalar angle and spin, float64 arrays of their broadcast shape otherwise: e_t, eps, the
         rebound angle in rad and deg, the spins in rad/s, the impulse ratio, contact, stick and slip times in s,
-        the switch times and modes, Maw's psi. An impact whose solve failed has NaN outputs, its reason in
-        failure (a RuntimeWarning says it); the others are kept.
+        the switch times and modes, Maw's psi, named as the JSON keys of `restitution oblique --json`. An
+        impact whose solve failed has NaN outputs, its reason in failure (a RuntimeWarning says it); the
+        others are kept.
 
     Raises
     ------
@@ -142,7 +153,7 @@ def oblique(*, material, friction, angle, spin=0.0, impact_velocity=1.0, tangent
     >>> r = restitution.oblique(material=steel, friction=0.3, angle=80.0, wall=True, tangential="mindlin")
     >>> r.modes, round(r.impulse_ratio, 12)            # grazing: slides throughout, J_t/J_n = -mu
     (('slip',), -0.3)
-    >>> round(r.rebound_angle_deg, 4), round(r.spin, 2)  # deg, rad/s
+    >>> round(r.rebound_angle_deg, 4), round(r.spin_rad_s, 2)  # deg, rad/s
     (78.845, -260.47)
     >>> restitution.oblique(material=steel, friction=0.3, angle=[10.0, 80.0], wall=True,
     ...                     tangential="mindlin").tangential_restitution.round(4)
@@ -183,7 +194,7 @@ def oblique(*, material, friction, angle, spin=0.0, impact_velocity=1.0, tangent
                            stacklevel=2)
     shape = angles.shape
     values = {"tangential_model": columns["tangential_model"], "maw_chi": columns["maw_chi"],
-              "rigid_wall": columns["rigid_wall"], "dissipative_constant": columns["dissipative_constant"]}
+              "rigid_wall": columns["rigid_wall"], "dissipative_constant_s": columns["dissipative_constant_s"]}
     columns["rebound_angle_deg"] = _np.degrees(columns["rebound_angle"])
     for name, _, _ in _FIELDS:
         values[name] = float(columns[name][0]) if shape == () else columns[name].reshape(shape)

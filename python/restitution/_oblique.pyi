@@ -18,27 +18,42 @@ class ObliqueResult(Generic[_Value]):
     tangential_model: Tangential
     maw_chi: float
     rigid_wall: bool
-    dissipative_constant: float  # s, given or calibrated
+    dissipative_constant_s: float  # given or calibrated
     failure: Any  # why an impact was not solved ("" where it was); an object array for several
     angle_deg: _Value  # deg
-    initial_spin: _Value  # rad/s
+    initial_spin_rad_s: _Value
     normal_restitution: _Value
     tangential_restitution: _Value
     rebound_angle: _Value  # rad
     rebound_angle_deg: _Value  # deg
     impact_angle: _Value  # rad
-    spin: _Value  # rad/s
-    spin2: _Value  # rad/s
+    spin_rad_s: _Value
+    spin2_rad_s: _Value
     slip_velocity: _Value  # m/s
     tangential_velocity: _Value  # m/s
     normal_velocity: _Value  # m/s
     impulse_ratio: _Value
     line_of_centres_turn: _Value  # rad
-    contact_time: _Value  # s
-    stick_time: _Value  # s
-    slip_time: _Value  # s
+    contact_time_s: _Value
+    stick_time_s: _Value
+    slip_time_s: _Value
     psi_in: _Value
     psi_out: _Value
+    # The names before the JSON's, until 0.5.0 (a DeprecationWarning).
+    @property
+    def initial_spin(self) -> _Value: ...
+    @property
+    def spin(self) -> _Value: ...
+    @property
+    def spin2(self) -> _Value: ...
+    @property
+    def contact_time(self) -> _Value: ...
+    @property
+    def stick_time(self) -> _Value: ...
+    @property
+    def slip_time(self) -> _Value: ...
+    @property
+    def dissipative_constant(self) -> float: ...
     # One impact: the switch times (s) as an array and the modes as a tuple; several: object arrays of them.
     switch_times: Any
     modes: Any

@@ -30,8 +30,8 @@ std::optional<double> hertz_only(const Calibration& c) {
 
 std::string calibration_repr(const Calibration& c) {
   return fmt::format(
-      "Calibration(law='{}', zeta={}, parameter={}, beta={}, eps_at_zeta={}, characteristic_velocity={}, "
-      "dissipative_constant={}, solves={})",
+      "Calibration(law='{}', zeta={}, parameter={}, beta={}, eps_at_zeta={}, characteristic_velocity_m_s={}, "
+      "dissipative_constant_s={}, solves={})",
       law_name(c.law), c.zeta, c.parameter,
       optional_text(hertz_only<&Calibration::beta>(c), "s^(1/5) m^(-1/5)"), c.eps_at_zeta,
       optional_text(hertz_only<&Calibration::characteristic_velocity_m_s>(c), "m/s"),
@@ -70,9 +70,9 @@ void bind_calibration(py::module_& m) {
           "beta = zeta / v^(1/5) [s^(1/5) m^(-1/5)] (viscoelastic Hertz; None for other laws).")
       .def_readonly("eps_at_zeta", &Calibration::eps_at_zeta, "eps re-solved at zeta, for the record.")
       .def_property_readonly(
-          "characteristic_velocity", &hertz_only<&Calibration::characteristic_velocity_m_s>,
+          "characteristic_velocity_m_s", &hertz_only<&Calibration::characteristic_velocity_m_s>,
           "The 1999 paper's g* = (C1 beta)^(-5) [m/s] (viscoelastic Hertz; None for other laws).")
-      .def_readonly("dissipative_constant", &Calibration::dissipative_constant_s,
+      .def_readonly("dissipative_constant_s", &Calibration::dissipative_constant_s,
                     "A [s] for the material, or None without one.")
       .def_readonly("solves", &Calibration::solves, "Collisions integrated by the root finder.")
       .def("__repr__", &calibration_repr)

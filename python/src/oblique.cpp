@@ -31,21 +31,21 @@ py::array_t<double> array_of(const std::vector<double>& values) {
 py::dict columns_of(const ObliqueSetup& setup, const std::vector<ObliqueImpact>& impacts) {
   const std::vector<std::pair<const char*, double (*)(const ObliqueImpact&)>> scalars = {
       {"angle_deg", [](const ObliqueImpact& i) { return i.angle_deg; }},
-      {"initial_spin", [](const ObliqueImpact& i) { return i.initial_spin_rad_s; }},
+      {"initial_spin_rad_s", [](const ObliqueImpact& i) { return i.initial_spin_rad_s; }},
       {"normal_restitution", [](const ObliqueImpact& i) { return i.result.normal_restitution; }},
       {"tangential_restitution", [](const ObliqueImpact& i) { return i.result.tangential_restitution; }},
       {"rebound_angle", [](const ObliqueImpact& i) { return i.result.rebound_angle_rad; }},
       {"impact_angle", [](const ObliqueImpact& i) { return i.result.impact_angle_rad; }},
-      {"spin", [](const ObliqueImpact& i) { return i.result.spin_first_rad_s; }},
-      {"spin2", [](const ObliqueImpact& i) { return i.result.spin_second_rad_s; }},
+      {"spin_rad_s", [](const ObliqueImpact& i) { return i.result.spin_first_rad_s; }},
+      {"spin2_rad_s", [](const ObliqueImpact& i) { return i.result.spin_second_rad_s; }},
       {"slip_velocity", [](const ObliqueImpact& i) { return i.result.slip_velocity_m_s; }},
       {"tangential_velocity", [](const ObliqueImpact& i) { return i.result.tangential_velocity_m_s; }},
       {"normal_velocity", [](const ObliqueImpact& i) { return i.result.normal_velocity_m_s; }},
       {"impulse_ratio", [](const ObliqueImpact& i) { return i.result.impulse_ratio; }},
       {"line_of_centres_turn", [](const ObliqueImpact& i) { return i.result.line_of_centres_turn_rad; }},
-      {"contact_time", [](const ObliqueImpact& i) { return i.result.contact_time_s; }},
-      {"stick_time", [](const ObliqueImpact& i) { return i.result.stick_time_s; }},
-      {"slip_time", [](const ObliqueImpact& i) { return i.result.slip_time_s; }},
+      {"contact_time_s", [](const ObliqueImpact& i) { return i.result.contact_time_s; }},
+      {"stick_time_s", [](const ObliqueImpact& i) { return i.result.stick_time_s; }},
+      {"slip_time_s", [](const ObliqueImpact& i) { return i.result.slip_time_s; }},
       {"psi_in", [](const ObliqueImpact& i) { return i.psi_in; }},
       {"psi_out", [](const ObliqueImpact& i) { return i.psi_out; }},
   };
@@ -77,7 +77,7 @@ py::dict columns_of(const ObliqueSetup& setup, const std::vector<ObliqueImpact>&
   for (const ObliqueImpact& i : impacts) failures.append(i.failure);
   out["failure"] = failures;
   out["rigid_wall"] = setup.rigid_wall;
-  out["dissipative_constant"] = setup.dissipative_constant_s;
+  out["dissipative_constant_s"] = setup.dissipative_constant_s;
   out["tangential_model"] = tangential_name(setup.tangential.kind);
   out["maw_chi"] = maw_chi(setup);
   return out;

@@ -17,7 +17,7 @@ def test_a_law_without_beta_gives_none_for_beta_and_g_star(law):
     c = restitution.calibrate(0.8, 1.0, law=law)
     assert c.law == law
     assert c.beta is None
-    assert c.characteristic_velocity is None
+    assert c.characteristic_velocity_m_s is None
     assert c.zeta > 0.0
     assert "beta=None" in repr(c)
 
@@ -25,7 +25,7 @@ def test_a_law_without_beta_gives_none_for_beta_and_g_star(law):
 def test_viscoelastic_hertz_keeps_beta_and_g_star():
     c = restitution.calibrate(0.8, 1.0)
     assert c.beta == pytest.approx(0.20114, rel=1e-4)  # docs/cli.md: eps = 0.8 at 1 m/s
-    assert c.characteristic_velocity > 0.0
+    assert c.characteristic_velocity_m_s > 0.0
 
 
 def _cli():

@@ -37,13 +37,13 @@ def test_equals_the_command_line_value_for_value(cli, steel_damped):
                                 **arguments)
         assert r.tangential_restitution.shape == (5, 2)
         for impact, (i, j) in zip(out["impacts"], np.ndindex(5, 2)):
-            assert impact["angle_deg"] == r.angle_deg[i, j] and impact["initial_spin_rad_s"] == r.initial_spin[i, j]
+            assert impact["angle_deg"] == r.angle_deg[i, j] and impact["initial_spin_rad_s"] == r.initial_spin_rad_s[i, j]
             e_t = impact["tangential_restitution"]
             assert (e_t is None and math.isnan(r.tangential_restitution[i, j])) or e_t == r.tangential_restitution[i, j]
             assert impact["normal_restitution"] == r.normal_restitution[i, j]
             assert impact["rebound_angle_deg"] == pytest.approx(r.rebound_angle_deg[i, j], rel=1e-15, abs=1e-15)
-            assert impact["spin_rad_s"] == r.spin[i, j] and impact["impulse_ratio"] == r.impulse_ratio[i, j]
-            assert impact["stick_time_s"] == r.stick_time[i, j] and impact["slip_time_s"] == r.slip_time[i, j]
+            assert impact["spin_rad_s"] == r.spin_rad_s[i, j] and impact["impulse_ratio"] == r.impulse_ratio[i, j]
+            assert impact["stick_time_s"] == r.stick_time_s[i, j] and impact["slip_time_s"] == r.slip_time_s[i, j]
             assert [m["time_s"] for m in impact["modes"]] == list(r.switch_times[i, j])
             assert tuple(m["mode"] for m in impact["modes"]) == r.modes[i, j]
             assert impact["psi_out"] == r.psi_out[i, j]
@@ -60,22 +60,22 @@ def test_gross_sliding_closed_form(steel_damped):
                                 impact_velocity=speed, wall=True, tangential=tangential, tangential_stiffness=stiffness,
                                 tangential_damping=damping)
         v_n = speed * np.cos(np.radians(r.angle_deg))
-        slip_in = speed * np.sin(np.radians(r.angle_deg)) + 1e-3 * r.initial_spin
+        slip_in = speed * np.sin(np.radians(r.angle_deg)) + 1e-3 * r.initial_spin_rad_s
         change = -mu * (1.0 + r.normal_restitution) * v_n * 3.5
         assert all(modes == ("slip",) for modes in r.modes), (tangential, r.modes)
         np.testing.assert_allclose(r.slip_velocity, slip_in + change, rtol=1e-10)
-        np.testing.assert_allclose(r.spin - r.initial_spin, change / 3.5 * 2.5 / 1e-3, rtol=1e-10)
+        np.testing.assert_allclose(r.spin_rad_s - r.initial_spin_rad_s, change / 3.5 * 2.5 / 1e-3, rtol=1e-10)
         np.testing.assert_allclose(r.impulse_ratio, -mu, rtol=1e-10)
         np.testing.assert_allclose(np.tan(r.rebound_angle), r.tangential_velocity / r.normal_velocity, rtol=1e-14)
         np.testing.assert_allclose(r.rebound_angle_deg, np.degrees(r.rebound_angle), rtol=1e-15)
-        np.testing.assert_allclose(r.stick_time + r.slip_time, r.contact_time, rtol=1e-12)
+        np.testing.assert_allclose(r.stick_time_s + r.slip_time_s, r.contact_time_s, rtol=1e-12)
 
 
 def test_frictionless_keeps_the_tangential_motion():
     # On a wall (a pair's line of centres turns, which moves u even without friction).
     r = restitution.oblique(material=restitution.Material(**ELASTIC), friction=0.0, angle=30.0, spin=50.0,
                             tangential="mindlin", wall=True)
-    assert r.spin == 50.0 and r.tangential_restitution == -1.0
+    assert r.spin_rad_s == 50.0 and r.tangential_restitution == -1.0
     assert math.isnan(r.psi_in) and math.isnan(r.psi_out)
 
 
@@ -86,7 +86,7 @@ def test_scalars_give_floats_and_arrays_broadcast():
     assert one.switch_times.dtype == np.float64 and one.switch_times[0] == 0.0
     many = restitution.oblique(material=steel, friction=0.3, angle=[10.0, 20.0, 30.0], tangential="mindlin",
                                wall=True)
-    assert many.spin.shape == (3,) and many.modes.shape == (3,)
+    assert many.spin_rad_s.shape == (3,) and many.modes.shape == (3,)
     assert many.tangential_restitution[1] == one.tangential_restitution
     assert many.maw_chi == pytest.approx(3.5 * 0.7 / 1.7, rel=1e-15)
 
@@ -140,11 +140,11 @@ def test_damping_is_required_or_calibrated_and_the_wall_is_rigid():
     r = restitution.oblique(material=restitution.Material(**STEEL), eps=0.85, velocity=2.0, impact_velocity=2.0,
                             friction=0.3, angle=0.0, wall=True)
     assert r.normal_restitution == pytest.approx(0.85, abs=1e-9)
-    assert r.rigid_wall and r.tangential_model == "mindlin" and r.dissipative_constant > 0.0
+    assert r.rigid_wall and r.tangential_model == "mindlin" and r.dissipative_constant_s > 0.0
     own = restitution.oblique(material=restitution.Material(**STEEL), eps=0.85, velocity=2.0, impact_velocity=2.0,
                               friction=0.3, angle=0.0, wall=True, wall_young_modulus=2e11, wall_poisson_ratio=0.3)
     assert not own.rigid_wall and own.normal_restitution == pytest.approx(0.85, abs=1e-9)
-    assert own.dissipative_constant != r.dissipative_constant  # calibrated on each contact
+    assert own.dissipative_constant_s != r.dissipative_constant_s  # calibrated on each contact
     with pytest.raises(ValueError, match="wall_poisson_ratio"):
         restitution.oblique(material=restitution.Material(**ELASTIC), friction=0.3, angle=10.0, wall=True,
                             wall_young_modulus=2e11)

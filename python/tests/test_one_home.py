@@ -65,7 +65,7 @@ def test_the_eps_docstring_names_every_law():
 def test_beta_and_material_follow_the_family_table(law, steel):
     if _core.has_dissipative_constant(law):
         assert 0 < restitution.eps(beta=1e-3, velocity=1.0, law=law) < 1
-        assert restitution.calibrate(0.8, 1.0, material=steel, law=law).dissipative_constant > 0
+        assert restitution.calibrate(0.8, 1.0, material=steel, law=law).dissipative_constant_s > 0
     else:
         with pytest.raises(TypeError, match="describe law='viscoelastic-hertz'"):
             restitution.eps(beta=1e-3, velocity=1.0, law=law)

@@ -96,16 +96,16 @@ def test_calibration_round_trip(law, material):
     m = restitution.Material(**MATERIALS["elastic only"]) if material else None
     calibration = restitution.calibrate(0.8, 1.5, material=m, law=law)
     copy = _round_trip(calibration)
-    for name in ["law", "zeta", "parameter", "beta", "eps_at_zeta", "characteristic_velocity", "dissipative_constant",
-                 "solves"]:
+    for name in ["law", "zeta", "parameter", "beta", "eps_at_zeta", "characteristic_velocity_m_s",
+                 "dissipative_constant_s", "solves"]:
         assert getattr(copy, name) == getattr(calibration, name), name
     assert repr(copy) == repr(calibration)
-    assert ("dissipative_constant=None" in repr(calibration)) != material
+    assert ("dissipative_constant_s=None" in repr(calibration)) != material
 
 
 def test_calibration_repr_shows_units():
     text = repr(restitution.calibrate(0.8, 1.0, material=restitution.Material(**MATERIALS["elastic only"])))
-    for part in ["beta=", "s^(1/5) m^(-1/5)", "characteristic_velocity=", "m/s", "eps_at_zeta=", "solves=", " s,"]:
+    for part in ["beta=", "s^(1/5) m^(-1/5)", "characteristic_velocity_m_s=", "m/s", "eps_at_zeta=", "solves=", " s,"]:
         assert part in text, (part, text)
 
 

@@ -31,7 +31,7 @@ def _stopped(zetas, path, **options):
 
 def test_the_table_is_the_command_lines(cli, tmp_path):
     reference = tmp_path / "cli.csv"
-    cli("sweep", "--zeta-min", "0", "--zeta-max", "2", "--points", "50", "--threads", "2", "--out", str(reference))
+    cli("sweep", "--zeta-range", "0:2:50", "--threads", "2", "--out", str(reference))
     out = tmp_path / "python.csv"
     outcome = restitution.sweep_to_file(_zeta_column(reference), out, threads=2)
     assert outcome["status"] == "complete"

@@ -94,10 +94,10 @@ def test_calibrate_inverts_eps(steel):
         calibration = restitution.calibrate(0.8, 2.0, end=end, material=steel)
         assert restitution.eps(calibration.zeta, end=end) == pytest.approx(0.8, abs=1e-8)
         assert calibration.beta == pytest.approx(calibration.zeta / 2.0 ** 0.2, rel=1e-14)
-        assert calibration.dissipative_constant == pytest.approx(calibration.beta / (1.5 * steel.k ** 0.4))
+        assert calibration.dissipative_constant_s == pytest.approx(calibration.beta / (1.5 * steel.k ** 0.4))
     # g* of the 1999 paper: (g/g*)^(1/5) = C1 zeta, C1 = 1.1534488580952888.
-    assert calibration.characteristic_velocity == pytest.approx((1.1534488580952888 * calibration.beta) ** -5)
-    assert restitution.calibrate(0.8, 2.0).dissipative_constant is None
+    assert calibration.characteristic_velocity_m_s == pytest.approx((1.1534488580952888 * calibration.beta) ** -5)
+    assert restitution.calibrate(0.8, 2.0).dissipative_constant_s is None
 
 
 def test_series_coefficients_match_the_2008_tables():

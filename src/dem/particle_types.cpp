@@ -100,8 +100,9 @@ Pair type_pair(const ParticleType& a, const ParticleType& b) {
 SizeClasses log_size_classes(double min_radius_m, double max_radius_m, int classes) {
   if (!(std::isfinite(min_radius_m) && std::isfinite(max_radius_m) && min_radius_m > 0.0 &&
         max_radius_m > min_radius_m)) {
-    throw InvalidInput(fmt::format("--radius-range must be RMIN,RMAX with 0 < RMIN < RMAX (m), got {},{}",
-                                   min_radius_m, max_radius_m));
+    throw InvalidInput(
+        fmt::format("--radius-range must be RMIN:RMAX:N with 0 < RMIN < RMAX (m), got RMIN {}, RMAX {}",
+                    min_radius_m, max_radius_m));
   }
   if (classes < 1 || classes > 100) {
     throw InvalidInput(fmt::format("--classes must be in [1, 100], got {}", classes));

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The largest check decks `restitution dem --deck` writes, run as a user runs them: the most size classes
-// (--radius-range with --classes), the most radii (--radius R1,R2,...) and the most speeds (--impact-velocity) one
-// deck allows (dem::kMaxDeckCollisionsLammps collisions), each in `lmp`, in `liggghts` and under
-// `mpirun -np 2 lmp`. Every deck must print its last check line, every collision's ε within
-// 1e-6 · min(ε, 1 − ε) of the ε the JSON output states, with the spheres apart at the end. One collision more
-// is refused with exit 2 naming the bound, and no file is written; so is a deck whose collisions differ so
-// much in duration that it would take more than dem::kMaxDeckSphereSteps. The decks use narrow size and
-// speed ranges so that every collision lasts about as long as the others: the run is then short (about 1e5
-// steps).
+// (--radius-range RMIN:RMAX:N), the most radii (--radius R1,R2,...) and the most speeds (--impact-velocity)
+// one deck allows (dem::kMaxDeckCollisionsLammps collisions), each in `lmp`, in `liggghts` and under `mpirun
+// -np 2 lmp`. Every deck must print its last check line, every collision's ε within 1e-6 · min(ε, 1 − ε) of
+// the ε the JSON output states, with the spheres apart at the end. One collision more is refused with exit 2
+// naming the bound, and no file is written; so is a deck whose collisions differ so much in duration that it
+// would take more than dem::kMaxDeckSphereSteps. The decks use narrow size and speed ranges so that every
+// collision lasts about as long as the others: the run is then short (about 1e5 steps).
 #include <fmt/core.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -47,8 +46,8 @@ std::string series(std::size_t n, double first, double step, const std::string& 
 
 // The options of the largest deck of each kind at `extra` more collisions' worth (0: the largest allowed).
 std::string classes_options(std::size_t extra) {
-  return " --radius-range 0.0045,0.005 --classes " +
-         std::to_string(dem::max_deck_types(dem::Code::lammps, 1) + extra) + " --impact-velocity 1";
+  return " --radius-range 0.0045:0.005:" + std::to_string(dem::max_deck_types(dem::Code::lammps, 1) + extra) +
+         " --impact-velocity 1";
 }
 std::string radii_options(std::size_t extra) {
   const std::size_t n = dem::max_deck_types(dem::Code::lammps, 1) + extra;
@@ -142,8 +141,7 @@ TEST(DeckBound, OneMoreIsRefusedNamingTheBound) {
   for (const std::string& options :
        {classes_options(1), radii_options(1), speeds_options(1),
         // The default three speeds: one class more than max_deck_types(lammps, 3).
-        " --radius-range 0.001,0.01 --classes " +
-            std::to_string(dem::max_deck_types(dem::Code::lammps, 3) + 1)}) {
+        " --radius-range 0.001:0.01:" + std::to_string(dem::max_deck_types(dem::Code::lammps, 3) + 1)}) {
     for (const std::string code : {"lammps", "liggghts"}) {
       const auto r = run_cli(fmt::format("dem --code {}{}{} --deck {}", code, kSteel, options, deck));
       EXPECT_EQ(r.status, 2) << code << options << ":\n" << r.err;
@@ -164,14 +162,14 @@ TEST(DeckBound, OneMoreIsRefusedNamingTheBound) {
   std::string radii;
   for (int i = 0; i <= 30; ++i) radii += (i > 0 ? "," : "") + std::to_string(1e-5 * std::pow(1e3, i / 30.0));
   for (const std::string code : {"lammps", "liggghts"}) {
-    const auto slow =
-        run_cli(fmt::format("dem --code {}{} --radius {} --impact-velocity 1 --deck {}", code, kSteel, radii, deck));
+    const auto slow = run_cli(
+        fmt::format("dem --code {}{} --radius {} --impact-velocity 1 --deck {}", code, kSteel, radii, deck));
     EXPECT_EQ(slow.status, 2) << slow.err;
     EXPECT_NE(slow.err.find("sphere-steps"), std::string::npos) << slow.err;
     EXPECT_FALSE(std::filesystem::exists(deck)) << code;
   }
   // The bound is the first that fails: the largest allowed deck is written.
-  const auto allowed = run_cli("dem --code lammps" + kSteel + " --radius-range 0.001,0.01 --classes " +
+  const auto allowed = run_cli("dem --code lammps" + kSteel + " --radius-range 0.001:0.01:" +
                                std::to_string(dem::max_deck_types(dem::Code::lammps, 3)) + " --deck " + deck);
   EXPECT_EQ(allowed.status, 0) << allowed.err;
   EXPECT_TRUE(std::filesystem::exists(deck));

@@ -13,5 +13,5 @@ delayed_missing: float = restitution.solve(1.0, "naive").delayed_recovery.eps  #
 fast_scalar_from_array: float = restitution.fast.eps([0.1, 0.2])  # rejected
 wrong_end: float = restitution.eps(1.0, end="middle")  # rejected
 steel = restitution.Material(young_modulus=2e11, poisson_ratio=0.3, radius=1e-3, density=7800.0)
-oblique_array_as_float: float = restitution.oblique(material=steel, friction=0.3, angle=[10.0, 20.0]).spin  # rejected
+oblique_array_as_float: float = restitution.oblique(material=steel, friction=0.3, angle=[10.0, 20.0]).spin_rad_s  # rejected
 oblique_unknown_model = restitution.oblique(material=steel, friction=0.3, angle=10.0, tangential="hertz")  # rejected

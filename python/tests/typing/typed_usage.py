@@ -46,4 +46,4 @@ cooling: dict = restitution.gas(radius=0.005, density=920.0, eps=0.8, velocity=2
 grazing: float = restitution.oblique(material=steel, friction=0.3, angle=80.0, wall=True,
                                      tangential_stiffness=2.2e6).tangential_restitution
 spins_after: npt.NDArray[np.float64] = restitution.oblique(material=steel, friction=0.3, angle=[10.0, 80.0],
-                                                           tangential="mindlin").spin  # rad/s
+                                                           tangential="mindlin").spin_rad_s

@@ -37,8 +37,21 @@ std::string expected_value(const CLI::Option* option) {
 
 std::string describe(const CLI::App& app, const std::string& message);
 
-// "" when the number at the start of `text` is one a double holds (or spells inf/nan: the range checks name
-// those), else why not.
+// number_problem of `text`, or of each item of a comma-separated list (options typed "FLOAT[,...]").
+std::string number_text_problem(const std::string& text, bool list) {
+  if (text.find_first_not_of(" \t") == std::string::npos) return "the value is empty, expected a number";
+  if (!list) return number_problem(text);
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    std::string problem = number_problem(text.substr(start, comma - start));
+    if (!problem.empty()) return problem;
+    start = comma + 1;
+  }
+  return "";
+}
+
+}  // namespace
+
 std::string number_problem(const std::string& text) {
   char* end = nullptr;
   errno = 0;
@@ -57,21 +70,6 @@ std::string number_problem(const std::string& text) {
   }
   return "";  // not a number at all is CLI11's conversion error, described below
 }
-
-// number_problem of `text`, or of each item of a comma-separated list (options typed "FLOAT[,...]").
-std::string number_text_problem(const std::string& text, bool list) {
-  if (text.find_first_not_of(" \t") == std::string::npos) return "the value is empty, expected a number";
-  if (!list) return number_problem(text);
-  for (std::size_t start = 0; start <= text.size();) {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    std::string problem = number_problem(text.substr(start, comma - start));
-    if (!problem.empty()) return problem;
-    start = comma + 1;
-  }
-  return "";
-}
-
-}  // namespace
 
 void check_number_texts(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {

@@ -18,4 +18,8 @@ std::string describe_parse_error(const CLI::App& app, const CLI::ParseError& err
 // underflows to 0 (1e-400) are refused naming the text; a list option ("FLOAT[,...]") item by item.
 void check_number_texts(CLI::App& app);
 
+// "" when the number at the start of `text` is one a double holds (or spells inf/nan: the range checks name
+// those), else why not: beyond the range of a double (1e309), or nonzero but read as 0 (1e-400).
+std::string number_problem(const std::string& text);
+
 }  // namespace restitution::cli

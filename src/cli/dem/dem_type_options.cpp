@@ -8,6 +8,9 @@
 #include <sstream>
 #include <vector>
 
+#include "cli/common/deprecated_alias.hpp"
+#include "cli/common/range_option.hpp"
+#include "dem/particle_types.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -51,6 +54,23 @@ void add_list_option(CLI::App& command, const std::string& name, std::string& ta
   command.add_option(name, target, help)->type_name(type_name);
 }
 
+// --radius-range RMIN:RMAX:N, or the old RMIN,RMAX with --classes N.
+dem::SizeClasses size_classes(const DemTypeOptions& o) {
+  if (o.radius_range.find(':') != std::string::npos) {
+    if (o.classes)
+      throw InvalidInput("--radius-range RMIN:RMAX:N gives the number of classes: drop --classes");
+    const RangeText range =
+        parse_range(o.radius_range, "--radius-range", "m, N log-spaced size classes", 1, 100);
+    return dem::log_size_classes(range.from, range.to, static_cast<int>(range.count));
+  }
+  const std::vector<double> range = numbers(o.radius_range, "--radius-range");
+  if (range.size() != 2 || !o.classes) {
+    throw InvalidInput(
+        "a size range needs --radius-range RMIN:RMAX:N (or the old RMIN,RMAX with --classes N)");
+  }
+  return dem::log_size_classes(range[0], range[1], *o.classes);
+}
+
 }  // namespace
 
 void add_dem_type_options(CLI::App& command, DemTypeOptions& o) {
@@ -67,11 +87,13 @@ void add_dem_type_options(CLI::App& command, DemTypeOptions& o) {
                   "material: density in kg/m^3 (gives the masses); d1,d2,...: one per --radius");
   command.add_option("--mass", o.mass, "material: sphere mass in kg (instead of --density)");
   command.add_option("--mass2", o.mass2, "material: mass of the second sphere in kg");
-  add_list_option(command, "--radius-range", o.radius_range,
-                  "RMIN,RMAX in m: a size range binned into --classes log-spaced atom types (" +
-                      polydisperse_codes() + "), with the worst eps error the binning causes",
-                  "FLOAT,FLOAT");
-  command.add_option("--classes", o.classes, "number of log-spaced size classes of --radius-range (1..100)");
+  add_list_option(
+      command, "--radius-range", o.radius_range,
+      "RMIN:RMAX:N, RMIN and RMAX in m: a size range binned into N (1..100) log-spaced atom types (" +
+          polydisperse_codes() + "), with the worst eps error the binning causes",
+      "RMIN:RMAX:N");
+  deprecate_old_form({command.add_option("--classes", o.classes)}, "--radius-range RMIN,RMAX --classes N",
+                     "--radius-range RMIN:RMAX:N");
 }
 
 bool several_types(const DemTypeOptions& o) {
@@ -101,11 +123,7 @@ void set_types(const DemTypeOptions& o, dem::PolydisperseRequest& request) {
   std::vector<double> radii;
   if (!o.radius_range.empty() || o.classes) {
     if (!o.radius.empty()) throw InvalidInput("give either --radius or --radius-range, not both");
-    const std::vector<double> range = numbers(o.radius_range, "--radius-range");
-    if (range.size() != 2 || !o.classes) {
-      throw InvalidInput("a size range needs --radius-range RMIN,RMAX and --classes N");
-    }
-    request.classes = dem::log_size_classes(range[0], range[1], *o.classes);
+    request.classes = size_classes(o);
     radii = request.classes->radii_m;
   } else {
     radii = numbers(o.radius, "--radius");

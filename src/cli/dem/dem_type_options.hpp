@@ -2,7 +2,8 @@
 #pragma once
 // The material options of `restitution dem`: those of `calibrate` (one pair of spheres), where --radius,
 // --density, --young-modulus and --poisson-ratio also take comma-separated lists (one atom type per radius),
-// and a size range binned into classes (--radius-range RMIN,RMAX --classes N). docs/dem.md.
+// and a size range binned into log-spaced classes (--radius-range RMIN:RMAX:N; until 0.5.0 also the old
+// --radius-range RMIN,RMAX --classes N). docs/dem.md.
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
@@ -15,8 +16,8 @@ namespace restitution::cli {
 struct DemTypeOptions {
   std::string radius, density, young_modulus, poisson_ratio;  // one number or a comma-separated list
   std::optional<double> radius2, mass, mass2;
-  std::string radius_range;  // RMIN,RMAX [m]
-  std::optional<int> classes;
+  std::string radius_range;    // RMIN:RMAX:N [m], or the old RMIN,RMAX
+  std::optional<int> classes;  // of the old form
 };
 
 void add_dem_type_options(CLI::App& command, DemTypeOptions& o);

@@ -4,11 +4,10 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <cmath>
-#include <cstdlib>
 #include <utility>
 
 #include "cli/common/output_files.hpp"
+#include "cli/common/range_option.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/sweep.hpp"
 
@@ -17,34 +16,15 @@ namespace restitution::cli {
 using namespace restitution::oblique;
 
 std::vector<double> angle_range(const std::string& text) {
-  const auto fail = [&text](const char* why) {
-    return InvalidInput(
-        fmt::format("--angle-range must be FROM:TO:N (degrees, N >= 2 angles), got '{}': {}", text, why));
-  };
-  const std::size_t first = text.find(':');
-  const std::size_t second = first == std::string::npos ? first : text.find(':', first + 1);
-  if (second == std::string::npos) throw fail("two colons expected");
-  const auto number = [&](std::size_t begin, std::size_t end) {
-    const std::string part = text.substr(begin, end - begin);
-    char* stop = nullptr;
-    const double value = std::strtod(part.c_str(), &stop);
-    if (part.empty() || *stop != '\0' || !std::isfinite(value)) throw fail("not a number");
-    return value;
-  };
-  const double from = number(0, first);
-  const double to = number(first + 1, second);
-  const double count = number(second + 1, text.size());
-  if (!(count >= 2.0 && count <= 100000.0 && count == std::floor(count))) {
-    throw fail("N must be a whole number in [2, 100000]");
-  }
+  const RangeText range = parse_range(text, "--angle-range", "degrees, N >= 2 angles", 2, 100000);
   // Checked here, so that a bad end is blamed on the option that was typed, not on --angle.
-  for (const double end : {from, to}) {
+  for (const double end : {range.from, range.to}) {
     if (!(end >= 0.0 && end < 90.0)) {
       throw InvalidInput(fmt::format(
           "--angle-range '{}': the angles must be in [0, 90) degrees from the normal, got {}", text, end));
     }
   }
-  return evenly_spaced(from, to, static_cast<std::size_t>(count));
+  return evenly_spaced(range.from, range.to, static_cast<std::size_t>(range.count));
 }
 
 const char* oblique_csv_header() {

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "cli/common/commands.hpp"
+#include "cli/common/deprecated_alias.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
@@ -55,7 +56,8 @@ std::string dropped_note(const SweepFileOutcome& done) {
       done.first_damaged_line);
 }
 
-int run_sweep_command(const SweepOptions& o) {
+int run_sweep_command(const SweepOptions& given) {
+  const SweepOptions o = with_zeta_range(given);
   if (o.threads && (*o.threads < 1 || *o.threads > kMaxSweepThreads)) {
     throw InvalidInput(fmt::format("--threads must lie in [1, {}] (default: all cores), got {}",
                                    kMaxSweepThreads, *o.threads));
@@ -134,10 +136,12 @@ void add_sweep_command(CLI::App& app, Action& chosen) {
       "sweep",
       "eps over a grid of zeta, or of impact speeds with beta or a material, in parallel, into a CSV file");
   add_law_option(*cmd, o->law);
-  cmd->add_option("--zeta-min", o->zeta_min,
-                  "smallest zeta >= 0 of the law's natural form x'' + zeta x^b x' + x^a = 0 (the linear "
-                  "dash-pot: zeta = 2 r)");
-  cmd->add_option("--zeta-max", o->zeta_max, "largest zeta >= zeta-min");
+  cmd->add_option("--zeta-range", o->zeta_range,
+                  fmt::format("FROM:TO:N: N values, in [1, {}], of zeta >= 0 of the law's natural form x'' + "
+                              "zeta x^b x' + x^a = 0 (the linear dash-pot: zeta = 2 r), FROM and TO included",
+                              kMaxSweepPoints));
+  deprecate_old_form({cmd->add_option("--zeta-min", o->zeta_min), cmd->add_option("--zeta-max", o->zeta_max)},
+                     "--zeta-min A --zeta-max B --points N", "--zeta-range A:B:N");
   cmd->add_option("--velocity-min", o->velocity_min,
                   "instead of zeta: smallest impact speed in m/s (with --beta or a material)");
   cmd->add_option("--velocity-max", o->velocity_max, "largest impact speed in m/s");
@@ -153,8 +157,7 @@ void add_sweep_command(CLI::App& app, Action& chosen) {
       "--dissipative-constant", o->dissipative_constant,
       "material: the dissipative constant A in s (adds SI columns: durations, maximal compression)");
   cmd->add_option("--points", o->points,
-                  fmt::format("number of grid values, in [1, {}] (both bounds included)", kMaxSweepPoints))
-      ->required()
+                  fmt::format("number of impact speeds, in [1, {}] (both bounds included)", kMaxSweepPoints))
       ->check(whole_number_in(1, static_cast<long long>(kMaxSweepPoints)));
   cmd->add_flag("--log", o->log, "space the grid logarithmically (needs a minimum > 0); default: linearly");
   add_solver_options(*cmd, o->solver);

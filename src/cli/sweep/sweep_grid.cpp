@@ -6,6 +6,7 @@
 #include <cmath>
 #include <utility>
 
+#include "cli/common/range_option.hpp"
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
@@ -42,7 +43,7 @@ PhysicalCoefficients physical_coefficients(const SweepOptions& o) {
 SweepColumns velocity_subject(const SweepOptions& o, LawKind law, std::optional<double>& hertz_k) {
   if (o.zeta_min || o.zeta_max) {
     throw InvalidInput(
-        "give --zeta-min/--zeta-max, or --velocity-min/--velocity-max with --beta or a material, not both");
+        "give --zeta-range, or --velocity-min/--velocity-max with --beta or a material, not both");
   }
   if (!o.velocity_min || !o.velocity_max) {
     throw InvalidInput(
@@ -97,7 +98,31 @@ void check_zeta_of_velocity(double zeta, double v, const std::string& subject) {
 
 }  // namespace
 
+SweepOptions with_zeta_range(SweepOptions o) {
+  if (o.zeta_range.empty()) return o;
+  if (o.zeta_min || o.zeta_max || o.points != 0) {
+    throw InvalidInput(
+        "--zeta-range FROM:TO:N takes the place of --zeta-min, --zeta-max and --points: give it alone");
+  }
+  const RangeText range = parse_range(o.zeta_range, "--zeta-range", "zeta, N >= 1 points", 1,
+                                      static_cast<long long>(kMaxSweepPoints));
+  o.zeta_min = range.from;
+  o.zeta_max = range.to;
+  o.points = range.count;
+  return o;
+}
+
 SweepGrid sweep_grid(const SweepOptions& o) {
+  if (!velocity_form(o) && !o.zeta_min && !o.zeta_max) {
+    throw InvalidInput(
+        "give --zeta-range FROM:TO:N, or --velocity-min/--velocity-max and --points N with --beta or a "
+        "material");
+  }
+  if (o.points == 0) {
+    throw InvalidInput(fmt::format("--points is required with {}", velocity_form(o)
+                                                                       ? "--velocity-min/--velocity-max"
+                                                                       : "--zeta-min and --zeta-max"));
+  }
   // Signed on the command line so that a negative count is reported as such, not wrapped around.
   if (o.points < 1) throw InvalidInput(fmt::format("--points must be >= 1, got {}", o.points));
   const auto points = static_cast<std::size_t>(o.points);
@@ -108,15 +133,16 @@ SweepGrid sweep_grid(const SweepOptions& o) {
     throw InvalidInput(fmt::format("--law: {}", e.what()));
   }
   if (!velocity_form(o)) {
-    if (!o.zeta_min && !o.zeta_max) {
-      throw InvalidInput(
-          "give --zeta-min and --zeta-max, or --velocity-min/--velocity-max with --beta or a material");
-    }
     if (!o.zeta_min || !o.zeta_max) {
       throw InvalidInput(fmt::format("--{} is required with --{}", o.zeta_min ? "zeta-max" : "zeta-min",
                                      o.zeta_min ? "zeta-min" : "zeta-max"));
     }
-    grid.zetas = zeta_values({*o.zeta_min, *o.zeta_max, points, o.log});
+    try {
+      grid.zetas = zeta_values({*o.zeta_min, *o.zeta_max, points, o.log});
+    } catch (const InvalidInput& e) {
+      if (o.zeta_range.empty()) throw;
+      throw InvalidInput(fmt::format("--zeta-range '{}': {}", o.zeta_range, e.what()));
+    }
     return grid;
   }
   std::optional<double> hertz_k;

@@ -14,13 +14,14 @@ namespace restitution::cli {
 
 struct SweepOptions {
   std::string law = law_name(LawKind::viscoelastic_hertz);
+  std::string zeta_range;  // FROM:TO:N; the old form is zeta_min, zeta_max and points
   std::optional<double> zeta_min, zeta_max;
   // The ε(v) forms: impact speeds with β, or with a material and its dissipative constant (viscoelastic
   // Hertz), or with the physical coefficients of ContactLaw::physical (every law).
   std::optional<double> velocity_min, velocity_max, beta, dissipative_constant;
   std::optional<double> stiffness, damping_coefficient, effective_mass;
   MaterialOptions material;
-  long long points = 0;
+  long long points = 0;  // 0: not given
   bool log = false;
   SolverArguments solver;
   std::optional<long long> threads;  // default: all cores
@@ -35,7 +36,12 @@ struct SweepGrid {
   std::optional<SweepColumns> velocity;
 };
 
-// The grid of the form the options give (exactly one of zeta-min/max, beta with velocity-min/max, a material
+// The options with --zeta-range read into zeta_min, zeta_max and points, the fields the rest reads (and the
+// settings line of a resumable file writes, the same for either form); throws InvalidInput naming
+// --zeta-range.
+SweepOptions with_zeta_range(SweepOptions o);
+
+// The grid of the form the options give (exactly one of the ζ range, beta with velocity-min/max, a material
 // with velocity-min/max, the physical coefficients with velocity-min/max); throws InvalidInput naming what
 // is missing, mixed or outside the checked range.
 SweepGrid sweep_grid(const SweepOptions& o);
