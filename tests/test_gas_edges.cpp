@@ -144,8 +144,8 @@ packing_fraction = 1e-305
 rms_speed = 1.0
 haff_times = 100.0
 )";
-  const auto outcome = run_cli("run " + (folder.path / "dilute.toml").string() + " --out " +
-                               (folder.path / "out").string());
+  const auto outcome =
+      run_cli("run " + (folder.path / "dilute.toml").string() + " --out " + (folder.path / "out").string());
   EXPECT_EQ(outcome.status, 2) << outcome.err;
   EXPECT_NE(outcome.err.find("gas \"g\""), std::string::npos) << outcome.err;
   EXPECT_NE(outcome.err.find("tau0 = 1e303 s"), std::string::npos) << outcome.err;

@@ -160,9 +160,9 @@ TEST(ObliqueEdges, LawTakesTheHertzMembers) {
     EXPECT_EQ(j["law"], law);
     EXPECT_NEAR(j["impacts"][0]["normal_restitution"].get<double>(), 0.8, 1e-8) << law;
   }
-  const auto tsuji =
-      run_cli("oblique " + kMaterial +
-              " --law tsuji-hertz --eps 0.8 --velocity 1 --impact-velocity 3 --friction 0.3 --angle 0 --json");
+  const auto tsuji = run_cli(
+      "oblique " + kMaterial +
+      " --law tsuji-hertz --eps 0.8 --velocity 1 --impact-velocity 3 --friction 0.3 --angle 0 --json");
   ASSERT_EQ(tsuji.status, 0) << tsuji.err;
   EXPECT_NEAR(nlohmann::json::parse(tsuji.out)["impacts"][0]["normal_restitution"].get<double>(), 0.8, 1e-8);
   for (const std::string bad :
@@ -245,8 +245,7 @@ TEST(ObliqueEdges, SecondSpinAnglesAsGivenAndOneListOfModels) {
 
 // 44.14: `dem` prints no cap rule and no steps per contact for a frictionless oblique table.
 TEST(ObliqueEdges, DemFrictionlessTableHasNoCapRuleOrSteps) {
-  const auto r =
-      run_cli("dem --code lammps " + kMaterial + " --dissipative-constant 1e-7 --angle 30,89.999");
+  const auto r = run_cli("dem --code lammps " + kMaterial + " --dissipative-constant 1e-7 --angle 30,89.999");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.find("rule:"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("steps per contact (|error|"), std::string::npos) << r.out;

@@ -44,11 +44,11 @@ std::string error_of(const std::string& text) {
 }
 
 TEST(ObliqueScene, ReadsTheSection) {
-  const Scene s =
-      parse_scene(kHead + kOblique +
-                      "model = [\"mindlin\", \"linear_nohistory\"]\nspins = { from = -100.0, to = 100.0, "
-                      "points = 3 }\nwall = true\nimpact_velocity = 2.0\ntangential_damping = 0.5\nplot = false\n",
-                  "oblique.toml");
+  const Scene s = parse_scene(
+      kHead + kOblique +
+          "model = [\"mindlin\", \"linear_nohistory\"]\nspins = { from = -100.0, to = 100.0, "
+          "points = 3 }\nwall = true\nimpact_velocity = 2.0\ntangential_damping = 0.5\nplot = false\n",
+      "oblique.toml");
   ASSERT_EQ(s.obliques.size(), 1U);
   const ObliqueTask& t = s.obliques[0];
   EXPECT_EQ(t.material, "steel");
@@ -153,8 +153,7 @@ TEST(ObliqueScene, ReadmeSteelPlotsAndPlotFalseSkipsTheStickingLimit) {
           << "wall = true\nmodel = [\"mindlin\", \"linear_nohistory\", \"mindlin/force\"]\n"
           << "tangential_damping = 0.5\nplot = " << (plot ? "true" : "false") << "\n";
     }
-    const auto outcome =
-        test_support::run_cli("run " + scene + " --out " + (folder.path / "out").string());
+    const auto outcome = test_support::run_cli("run " + scene + " --out " + (folder.path / "out").string());
     ASSERT_EQ(outcome.status, 0) << outcome.err;
     const auto summary =
         nlohmann::json::parse(test_support::slurp((folder.path / "out" / "summary.json").string()));

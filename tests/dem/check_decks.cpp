@@ -108,7 +108,8 @@ TEST_P(CheckDeck, CodeRunsTheDeckAndAgreesWithRestitution) {
 
 const std::vector<Case> kCases = {
     {"lammps_steel_delayed", "lammps", " --eps 0.9 --velocity 1" + kSteel},
-    {"lammps_rubber_naive", "lammps", " --eps 0.6 --velocity 2 --end naive --impact-velocity 0.5 2 8" + kRubber},
+    {"lammps_rubber_naive", "lammps",
+     " --eps 0.6 --velocity 2 --end naive --impact-velocity 0.5 2 8" + kRubber},
     {"liggghts_steel_naive", "liggghts", " --eps 0.9 --velocity 1 --end naive" + kSteel},
     {"liggghts_rubber_delayed", "liggghts", " --eps 0.6 --velocity 2 --impact-velocity 0.5 2 8" + kRubber},
     {"yade_steel", "yade", " --eps 0.8 --velocity 1" + kSteel},

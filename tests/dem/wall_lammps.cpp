@@ -76,7 +76,8 @@ TEST_P(WallDeck, LammpsWallGivesTheLawsEps) {
 const std::vector<Case> kCases = {
     {"steel_rigid_wall_delayed", " --eps 0.9 --velocity 1" + kSteel},
     {"rubber_on_steel_wall_naive",
-     " --eps 0.6 --velocity 2 --end naive --impact-velocity 0.5 2 8 --wall-young-modulus 2e11 --wall-poisson-ratio "
+     " --eps 0.6 --velocity 2 --end naive --impact-velocity 0.5 2 8 --wall-young-modulus 2e11 "
+     "--wall-poisson-ratio "
      "0.3" +
          kRubber},
     {"steel_on_steel_wall_friction",

@@ -122,7 +122,8 @@ TEST(YadeLinesVersion, SceneSectionTargetsTheYadeOnPath) {
   const std::string shown = report.substr(0, report.find("The yade lines are for"));
   EXPECT_NE(shown.find("MindlinPhys(betan=MatchMaker(algo='val'"), std::string::npos) << shown;
   EXPECT_EQ(shown.find("vn="), std::string::npos) << shown;
-  const json cli = run_json("dem --code yade --eps 0.8 --velocity 1 --impact-velocity 0.1 1 10 --json" + kMaterial);
+  const json cli =
+      run_json("dem --code yade --eps 0.8 --velocity 1 --impact-velocity 0.1 1 10 --json" + kMaterial);
   const std::string csv = restitution::test_support::slurp((out / "steel_yade.csv").string());
   std::istringstream rows(csv);
   std::string row;
