@@ -30,7 +30,7 @@ TEST(CliOutputs, FailedWriteToStdoutIsStatusThree) {
   for (const char* command :
        {"eps --zeta 1", "eps --zeta 1 --json", "calibrate --eps 0.8 --velocity 1",
         "series eval --kind naive --zeta 0.5", "series coefficients --kind naive --count 5",
-        "fit --end naive --zeta-min 10 --zeta-max 20 --points 3", "--help"}) {
+        "fit --end naive --zeta-range 10:20:3", "--help"}) {
     // run_cli redirects stdout itself: run the executable directly, stdout on /dev/full.
     const fs::path err = fs::temp_directory_path() / ("restitution-full-" + std::to_string(::getpid()));
     const std::string line = std::string(RESTITUTION_EXE) + " " + command + " >/dev/full 2>" + err.string();

@@ -62,9 +62,8 @@ Csv read_csv(const fs::path& path) {
 TEST(CliSweepVelocity, BetaFormGivesZetaFromBetaAndTheSpeedsAsGiven) {
   const TempFolder dir;
   const fs::path out = dir.path / "v.csv";
-  const auto outcome = run_cli(
-      "sweep --beta 0.2 --velocity-min 0.01 --velocity-max 100 --points 5 --log --tolerance 1e-8 --out " +
-      out.string());
+  const auto outcome =
+      run_cli("sweep --beta 0.2 --velocity-range 0.01:100:5 --log --tolerance 1e-8 --out " + out.string());
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   EXPECT_EQ(outcome.err, "");  // stderr is not a terminal: no progress line
   const Csv csv = read_csv(out);
@@ -89,7 +88,7 @@ TEST(CliSweepVelocity, MaterialFormWritesTheSameNumbersAsASceneSweep) {
   const fs::path out = dir.path / "m.csv";
   const auto outcome = run_cli(
       "sweep --young-modulus 7e9 --poisson-ratio 0.3 --density 917 --radius 0.01 --dissipative-constant 1e-4 "
-      "--velocity-min 0.01 --velocity-max 10 --points 4 --log --tolerance 1e-8 --out " +
+      "--velocity-range 0.01:10:4 --log --tolerance 1e-8 --out " +
       out.string());
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   const Csv csv = read_csv(out);
@@ -133,15 +132,15 @@ TEST(CliSweepVelocity, RefusesIncompleteOrMixedFormsBeforeWriting) {
   const struct {
     std::string arguments, message;
   } cases[] = {
-      {"--velocity-min 1 --velocity-max 2 --points 2" + ice, "a material sweep needs --dissipative-constant"},
+      {"--velocity-range 1:2:2" + ice, "a material sweep needs --dissipative-constant"},
       {"--beta 0.2 --zeta-range 1:2:2", "not both"},
       {"--beta 0.2 --velocity-min 1 --points 2", "needs --velocity-min and --velocity-max"},
-      {"--velocity-min 1 --velocity-max 2 --points 2", "exactly one of --beta and a material"},
-      {"--beta 0.2 --velocity-min 1 --velocity-max 2 --points 2 --dissipative-constant 1e-4" + ice,
+      {"--velocity-range 1:2:2", "exactly one of --beta and a material"},
+      {"--beta 0.2 --velocity-range 1:2:2 --dissipative-constant 1e-4" + ice,
        "exactly one of --beta and a material"},
-      {"--beta 1000 --velocity-min 1 --velocity-max 1e20 --points 3", "outside the checked range"},
-      {"--beta 0.2 --velocity-min 0 --velocity-max 1 --points 3", "velocity must be finite and > 0"},
-      {"--beta 0.2 --velocity-min 2 --velocity-max 1 --points 3", "velocity-min (2) must not exceed"},
+      {"--beta 1000 --velocity-range 1:1e20:3", "outside the checked range"},
+      {"--beta 0.2 --velocity-range 0:1:3", "velocity must be finite and > 0"},
+      {"--beta 0.2 --velocity-range 2:1:3", "velocity-min (2) must not exceed"},
       {"--points 3", "give --zeta-range FROM:TO:N, or --velocity-min"},
   };
   for (const auto& c : cases) {

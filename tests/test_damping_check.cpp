@@ -218,7 +218,7 @@ TEST(DampingInverse, TargetOutOfReachNamesTheRange) {
 
 TEST(DampingCheckCli, JsonHasTheContractFields) {
   const auto r = test_support::run_cli(
-      "damping-check --recipe yade-pade-3-6 --eps 0.8 --velocity-min 0.1 --velocity-max 10 --points 3 "
+      "damping-check --recipe yade-pade-3-6 --eps 0.8 --velocity-range 0.1:10:3 "
       "--json");
   ASSERT_EQ(r.status, 0) << r.err;
   const json out = json::parse(r.out);

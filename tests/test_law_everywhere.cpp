@@ -128,10 +128,9 @@ TEST_F(LawEverywhere, PhysicalSweepsMatchContactLawPhysicalByHand) {
   const double m = 0.02;
   for (const char* law : {"tsuji-hertz", "linear-dashpot", "hertz-constant-damping", "viscoelastic-hertz"}) {
     const fs::path out = folder_ / (std::string(law) + ".csv");
-    const auto r =
-        run_cli(std::string("sweep --law ") + law +
-                " --velocity-min 0.5 --velocity-max 2 --points 3 --end delayed-recovery --stiffness " +
-                std::to_string(k) + " --damping-coefficient 3 --effective-mass 0.02 --out " + out.string());
+    const auto r = run_cli(
+        std::string("sweep --law ") + law + " --velocity-range 0.5:2:3 --end delayed-recovery --stiffness " +
+        std::to_string(k) + " --damping-coefficient 3 --effective-mass 0.02 --out " + out.string());
     ASSERT_EQ(r.status, 0) << law << ": " << r.err;
     const auto c = read_csv(out);
     const auto [a, b] = law_exponents(law_from_name(law));
@@ -157,7 +156,7 @@ TEST_F(LawEverywhere, PhysicalSweepsMatchContactLawPhysicalByHand) {
 
 TEST_F(LawEverywhere, SweepRefusesBetaForAnotherLaw) {
   const auto r = run_cli(
-      "sweep --law tsuji-hertz --velocity-min 1 --velocity-max 2 --points 2 --beta 0.1 "
+      "sweep --law tsuji-hertz --velocity-range 1:2:2 --beta 0.1 "
       "--out " +
       (folder_ / "x.csv").string());
   EXPECT_EQ(r.status, 2);

@@ -82,7 +82,7 @@ TEST(LocalSlope, DelayedSlopeFollowsTheDerivedApproach) {
 }
 
 TEST(CliFit, NaiveContractAndDerivedLaw) {
-  const auto outcome = run_cli("fit --end naive --zeta-min 10 --zeta-max 1e5 --points 4 --json");
+  const auto outcome = run_cli("fit --end naive --zeta-range 10:1e5:4 --json");
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   const json j = json::parse(outcome.out);
   EXPECT_EQ(j["end"], "naive");
@@ -97,7 +97,7 @@ TEST(CliFit, NaiveContractAndDerivedLaw) {
 }
 
 TEST(CliFit, DelayedFitApproachesMinusFiveThirdsFromAbove) {
-  const auto outcome = run_cli("fit --end delayed-recovery --zeta-min 1e4 --zeta-max 1e6 --points 3 --json");
+  const auto outcome = run_cli("fit --end delayed-recovery --zeta-range 1e4:1e6:3 --json");
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   const json j = json::parse(outcome.out);
   const double exponent = j["exponent_zeta"].get<double>();
@@ -107,9 +107,8 @@ TEST(CliFit, DelayedFitApproachesMinusFiveThirdsFromAbove) {
 }
 
 TEST(CliFit, BadInputExitsTwo) {
-  for (const char* args :
-       {"fit --end both --zeta-min 1 --zeta-max 10", "fit --end naive --zeta-min 10 --zeta-max 1",
-        "fit --end naive --zeta-min 1 --zeta-max 10 --points 2", "fit --end naive --zeta-max 10"}) {
+  for (const char* args : {"fit --end both --zeta-range 1:10:9", "fit --end naive --zeta-range 10:1:9",
+                           "fit --end naive --zeta-range 1:10:2", "fit --end naive --zeta-max 10"}) {
     const auto outcome = run_cli(args);
     EXPECT_EQ(outcome.status, 2) << args;
     EXPECT_EQ(outcome.err.rfind("restitution: error: ", 0), 0U) << outcome.err;

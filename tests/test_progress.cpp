@@ -134,7 +134,7 @@ TEST(Progress, NothingOnStderrWhenItIsNotATerminal) {
   std::remove(folder);
   EXPECT_EQ(sweep.status, 0) << sweep.err;
   EXPECT_EQ(sweep.err, "");
-  const auto fit = test_support::run_cli("fit --end naive --zeta-min 1 --zeta-max 10 --points 5 --json");
+  const auto fit = test_support::run_cli("fit --end naive --zeta-range 1:10:5 --json");
   EXPECT_EQ(fit.status, 0) << fit.err;
   EXPECT_EQ(fit.err, "");
   EXPECT_EQ(cli::ProgressLine("x").enabled(), isatty(fileno(stderr)) != 0);

@@ -31,7 +31,7 @@ const std::string kMaterial = " --young-modulus 1e7 --poisson-ratio 0.45 --radiu
 std::map<std::string, std::string> json_invocations(const fs::path& folder) {
   return {
       {"eps", "eps --zeta 1 --json"},
-      {"fit", "fit --end naive --zeta-min 1 --zeta-max 10 --points 5 --json"},
+      {"fit", "fit --end naive --zeta-range 1:10:5 --json"},
       {"fit-data",
        std::string("fit-data ") + RESTITUTION_SOURCE_DIR + "/examples/fit/rubber_drop.csv --json"},
       {"stability", "stability --tolerance 1e-7 --json --out " + (folder / "stability").string()},

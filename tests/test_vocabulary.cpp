@@ -115,6 +115,49 @@ TEST(Vocabulary, OneRangeSyntaxForSweep) {
   }
 }
 
+// The other ranges of the old form: a sweep's impact speeds, fit's ζ (its old default of 9 points written
+// out) and damping-check's speeds (its defaults are the range 0.1:10:5) give the bytes of FROM:TO:N.
+TEST(Vocabulary, OneRangeSyntaxForSpeedsAndFits) {
+  const TempFolder t;
+  const std::string a = (t.path / "old.csv").string();
+  const std::string b = (t.path / "new.csv").string();
+  const CliOutcome old =
+      run_cli("sweep --beta 0.2 --velocity-min 0.01 --velocity-max 100 --points 5 --log --out " + a);
+  const CliOutcome now = run_cli("sweep --beta 0.2 --velocity-range 0.01:100:5 --log --out " + b);
+  ASSERT_EQ(now.status, 0) << now.err;
+  EXPECT_EQ(now.err, "");
+  ASSERT_EQ(old.status, 0) << old.err;
+  ASSERT_EQ(lines_of(old.err).size(), 1U) << old.err;
+  EXPECT_NE(old.err.find("use --velocity-range V1:V2:N"), std::string::npos) << old.err;
+  EXPECT_EQ(slurp(a), slurp(b));
+  EXPECT_EQ(lines_of(slurp(b)).size(), 6U);  // the header and five speeds
+
+  expect_alias("fit --end naive --zeta-min 10 --zeta-max 1e5 --points 4 --json",
+               "fit --end naive --zeta-range 10:1e5:4 --json", "--zeta-range A:B:N");
+  expect_alias("fit --end delayed-recovery --zeta-min 1 --zeta-max 10",
+               "fit --end delayed-recovery --zeta-range 1:10:9", "--zeta-range A:B:N");
+  const std::string check = "damping-check --recipe pade-1-4 --eps 0.5 --json";
+  expect_alias(check + " --velocity-min 0.2 --velocity-max 5 --points 3", check + " --velocity-range 0.2:5:3",
+               "--velocity-range V1:V2:N");
+  EXPECT_EQ(run_cli(check).out, run_cli(check + " --velocity-range 0.1:10:5").out);
+
+  for (const auto& [arguments, message] : std::vector<std::pair<std::string, std::string>>{
+           {"fit --end naive", "--zeta-range FROM:TO:N is required"},
+           {"fit --end naive --zeta-range 1:10:9 --points 3", "give it alone"},
+           {"fit --end naive --zeta-range 1:10:2", "N must be a whole number in [3, 100000]"},
+           {"fit --end naive --zeta-range 0:10:9", "--zeta-range '0:10:9': need 0 < zeta-min < zeta-max"},
+           {"sweep --beta 0.2 --velocity-range 0:1:3 --out " + a,
+            "--velocity-range '0:1:3': velocity must be"},
+           {"sweep --beta 0.2 --velocity-range 1:2:3 --points 3 --out " + a, "give it alone"},
+           {"sweep --beta 0.2 --velocity-range 1:2:3 --zeta-range 0:1:3 --out " + a, "not both"},
+           {check + " --velocity-range -1:2:3", "--velocity-range '-1:2:3': the smallest impact speed"},
+           {check + " --velocity-range 1:2:3 --points 3", "give it alone"}}) {
+    const CliOutcome r = run_cli(arguments);
+    EXPECT_EQ(r.status, 2) << arguments;
+    EXPECT_NE(r.err.find(message), std::string::npos) << arguments << ": " << r.err;
+  }
+}
+
 // dem's old --radius-range RMIN,RMAX --classes N prints the bytes of --radius-range RMIN:RMAX:N.
 TEST(Vocabulary, OneRangeSyntaxForDem) {
   const std::string dem =
@@ -144,6 +187,9 @@ TEST(Vocabulary, HelpListsOnlyTheNewSpellings) {
            {"run", "--output", "--out "},
            {"fit-data", "--output", "--out "},
            {"sweep", "--zeta-min", "--zeta-range"},
+           {"sweep", "--velocity-min", "--velocity-range"},
+           {"fit", "--zeta-min", "--zeta-range"},
+           {"damping-check", "--velocity-min", "--velocity-range"},
            {"dem", "--classes", "--radius-range RMIN:RMAX:N"}}) {
     const std::string help = run_cli(command + " --help").out;
     EXPECT_EQ(help.find(old_name), std::string::npos) << command << " --help lists " << old_name;

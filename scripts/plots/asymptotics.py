@@ -22,8 +22,8 @@ LN_A = math.log(XM) + math.log(2) + 0.5 * math.log(3) - math.pi / (2 * math.sqrt
 
 
 def fit(exe, end, zmin, zmax, points):
-    out = subprocess.run([exe, "fit", "--end", end, "--zeta-min", str(zmin), "--zeta-max", str(zmax),
-                          "--points", str(points), "--json"], check=True, capture_output=True, text=True)
+    out = subprocess.run([exe, "fit", "--end", end, "--zeta-range", f"{zmin}:{zmax}:{points}", "--json"],
+                         check=True, capture_output=True, text=True)
     return json.loads(out.stdout)
 
 

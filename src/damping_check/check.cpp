@@ -28,14 +28,17 @@ std::vector<Clamp> clamps_from_name(const std::string& name) {
 
 std::vector<double> speed_grid(double v_min_m_s, double v_max_m_s, int points) {
   if (!std::isfinite(v_min_m_s) || v_min_m_s <= 0.0) {
-    throw InvalidInput(fmt::format("--velocity-min must be finite and > 0 m/s, got {}", v_min_m_s));
+    throw InvalidInput(
+        fmt::format("the smallest impact speed must be finite and > 0 m/s, got {}", v_min_m_s));
   }
   if (!std::isfinite(v_max_m_s) || v_max_m_s < v_min_m_s) {
-    throw InvalidInput(fmt::format("--velocity-max must be finite and >= --velocity-min ({}), got {}",
-                                   v_min_m_s, v_max_m_s));
+    throw InvalidInput(
+        fmt::format("the largest impact speed must be finite and >= the smallest ({} m/s), got {}", v_min_m_s,
+                    v_max_m_s));
   }
   if (points < 1 || points > kMaxSpeedPoints)
-    throw InvalidInput(fmt::format("--points must be in [1, {}], got {}", kMaxSpeedPoints, points));
+    throw InvalidInput(
+        fmt::format("the number of impact speeds must be in [1, {}], got {}", kMaxSpeedPoints, points));
   // The sweep's grid: log-spaced with both ends exactly the speeds given.
   return zeta_values({.zeta_min = v_min_m_s,
                       .zeta_max = points == 1 ? v_min_m_s : v_max_m_s,

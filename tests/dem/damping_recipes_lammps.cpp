@@ -135,7 +135,7 @@ TEST_P(LammpsViscoelastic, MeasuresTheEpsDampingCheckPredicts) {
        << " --end " << (clamp == "on" ? "delayed-recovery" : "naive") << " --json" << material;
   const json lines = run_json(args.str());
   const json check = run_json("damping-check --recipe lammps-viscoelastic --eps 0.6 --velocity 1 --clamp " +
-                              clamp + " --velocity-min 0.25 --velocity-max 4 --points 3 --json");
+                              clamp + " --velocity-range 0.25:4:3 --json");
   std::vector<double> speeds;
   std::vector<double> predicted;
   for (const auto& p : check.at("points")) {

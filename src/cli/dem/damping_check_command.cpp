@@ -10,7 +10,9 @@
 
 #include "cli/common/build_json.hpp"
 #include "cli/common/commands.hpp"
+#include "cli/common/deprecated_alias.hpp"
 #include "cli/common/json_writer.hpp"
+#include "cli/common/range_option.hpp"
 #include "damping_check/check.hpp"
 #include "damping_check/inverse.hpp"
 #include "restitution/collision_solver.hpp"
@@ -28,13 +30,40 @@ struct DampingCheckOptions {
   std::optional<double> eps;
   std::optional<double> target_eps;  // the inverse: the ε wanted at --velocity
   std::string clamp = "both";
-  double velocity = 1.0;  // reference speed of the speed-dependent recipes [m/s]
+  double velocity = 1.0;       // reference speed of the speed-dependent recipes [m/s]
+  std::string velocity_range;  // FROM:TO:N; the old form is velocity_min, velocity_max and points
   double velocity_min = 0.1, velocity_max = 10.0;
   int points = 5;
+  bool old_range_given = false;  // any of --velocity-min, --velocity-max, --points
   double tolerance = SolveOptions{}.tolerance;
   bool map = false;
   bool json = false;
 };
+
+// The impact speeds: --velocity-range, or the old form (its defaults without either); throws InvalidInput
+// naming the option the user typed.
+std::vector<double> speeds_of(const DampingCheckOptions& o) {
+  if (o.velocity_range.empty()) {
+    try {
+      return damping_check::speed_grid(o.velocity_min, o.velocity_max, o.points);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(fmt::format("--velocity-min {} --velocity-max {} --points {}: {}", o.velocity_min,
+                                     o.velocity_max, o.points, e.what()));
+    }
+  }
+  if (o.old_range_given) {
+    throw InvalidInput(
+        "--velocity-range FROM:TO:N takes the place of --velocity-min, --velocity-max and --points: give it "
+        "alone");
+  }
+  const RangeText range = parse_range(o.velocity_range, "--velocity-range", "impact speeds in m/s, N >= 1", 1,
+                                      damping_check::kMaxSpeedPoints);
+  try {
+    return damping_check::speed_grid(range.from, range.to, static_cast<int>(range.count));
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("--velocity-range '{}': {}", o.velocity_range, e.what()));
+  }
+}
 
 CheckRequest request_of(const DampingCheckOptions& o, double eps) {
   CheckRequest r;
@@ -42,7 +71,7 @@ CheckRequest request_of(const DampingCheckOptions& o, double eps) {
   r.eps_requested = eps;
   r.clamps = damping_check::clamps_from_name(o.clamp);
   r.reference_velocity_m_s = o.velocity;
-  r.speeds_m_s = damping_check::speed_grid(o.velocity_min, o.velocity_max, o.points);
+  r.speeds_m_s = speeds_of(o);
   r.tolerance = o.tolerance;
   return r;
 }
@@ -156,7 +185,7 @@ int run_inverse(const DampingCheckOptions& o) {
   r.recipe = damping_check::recipe_from_name(o.recipe);
   r.target_eps = *o.target_eps;
   r.target_velocity_m_s = o.velocity;
-  r.speeds_m_s = damping_check::speed_grid(o.velocity_min, o.velocity_max, o.points);
+  r.speeds_m_s = speeds_of(o);
   r.tolerance = o.tolerance;
   for (const damping_check::Clamp clamp : damping_check::clamps_from_name(o.clamp)) {
     r.clamp = clamp;
@@ -242,17 +271,22 @@ void add_damping_check_command(CLI::App& app, Action& chosen) {
                   "reference impact speed in m/s the speed-dependent recipes are set up at (YADE's vn); "
                   "with --target-eps the speed of the target")
       ->capture_default_str();
-  cmd->add_option("--velocity-min", o->velocity_min, "smallest impact speed in m/s")->capture_default_str();
-  cmd->add_option("--velocity-max", o->velocity_max, "largest impact speed in m/s")->capture_default_str();
-  cmd->add_option("--points", o->points,
-                  fmt::format("impact speeds, log-spaced (speed-dependent recipes), in [1, {}]",
-                              damping_check::kMaxSpeedPoints))
-      ->capture_default_str();
+  cmd->add_option("--velocity-range", o->velocity_range,
+                  fmt::format("FROM:TO:N: N log-spaced impact speeds in m/s (speed-dependent recipes), ends "
+                              "included, N in [1, {}] (default {:g}:{:g}:{})",
+                              damping_check::kMaxSpeedPoints, o->velocity_min, o->velocity_max, o->points));
+  std::vector<CLI::Option*> old_form{cmd->add_option("--velocity-min", o->velocity_min),
+                                     cmd->add_option("--velocity-max", o->velocity_max),
+                                     cmd->add_option("--points", o->points)};
+  deprecate_old_form(old_form, "--velocity-min V1 --velocity-max V2 --points N", "--velocity-range V1:V2:N");
   cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")
       ->capture_default_str();
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
-  cmd->callback([o, &chosen] { chosen = [o] { return run(*o); }; });
+  cmd->callback([o, old_form, &chosen] {
+    for (const CLI::Option* option : old_form) o->old_range_given = o->old_range_given || option->count() > 0;
+    chosen = [o] { return run(*o); };
+  });
 }
 
 }  // namespace restitution::cli

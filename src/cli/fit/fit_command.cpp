@@ -4,13 +4,16 @@
 #include <fmt/core.h>
 
 #include <memory>
+#include <optional>
 
 #include "analysis/asymptotics.hpp"
 #include "analysis/power_law_fit.hpp"
 #include "cli/common/build_json.hpp"
 #include "cli/common/commands.hpp"
+#include "cli/common/deprecated_alias.hpp"
 #include "cli/common/json_writer.hpp"
 #include "cli/common/progress.hpp"
+#include "cli/common/range_option.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 
@@ -19,9 +22,9 @@ namespace {
 
 struct PowerLawFitOptions {
   std::string end;
-  double zeta_min = 0.0;
-  double zeta_max = 0.0;
-  long long points = 9;  // signed and wide: a huge or negative count is reported, not wrapped
+  std::string zeta_range;  // FROM:TO:N; the old form is zeta_min, zeta_max and points
+  std::optional<double> zeta_min, zeta_max;
+  std::optional<long long> points;  // signed and wide: a huge or negative count is reported, not wrapped
   double tolerance = SolveOptions{}.tolerance;
   bool json = false;
 };
@@ -37,14 +40,41 @@ DerivedLaw derived_law(CollisionEnd end) {
 
 // A power law over a range gains nothing from more points than this; each point is two solves.
 constexpr long long kMaxFitPoints = 100000;
+constexpr long long kDefaultFitPoints = 9;  // of the old form without --points
+
+// The ζ grid: --zeta-range FROM:TO:N, or the old --zeta-min/--zeta-max/--points; throws InvalidInput naming
+// the option the user typed.
+std::vector<double> fit_zetas(const PowerLawFitOptions& o) {
+  if (o.zeta_range.empty()) {
+    if (!o.zeta_min || !o.zeta_max) {
+      throw InvalidInput(
+          fmt::format("--zeta-range FROM:TO:N is required: N log-spaced zeta, ends included, N in "
+                      "[3, {}]",
+                      kMaxFitPoints));
+    }
+    const long long points = o.points.value_or(kDefaultFitPoints);
+    if (points > kMaxFitPoints) {
+      throw InvalidInput(fmt::format("--points must be at most {}, got {}", kMaxFitPoints, points));
+    }
+    return log_grid(*o.zeta_min, *o.zeta_max, static_cast<int>(points));
+  }
+  if (o.zeta_min || o.zeta_max || o.points) {
+    throw InvalidInput(
+        "--zeta-range FROM:TO:N takes the place of --zeta-min, --zeta-max and --points: give it alone");
+  }
+  const RangeText range =
+      parse_range(o.zeta_range, "--zeta-range", "zeta, N >= 3 log-spaced points", 3, kMaxFitPoints);
+  try {
+    return log_grid(range.from, range.to, static_cast<int>(range.count));
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("--zeta-range '{}': {}", o.zeta_range, e.what()));
+  }
+}
 
 int run_fit(const PowerLawFitOptions& o) {
   const CollisionEnd end = end_from_name(o.end);
-  if (o.points > kMaxFitPoints) {
-    throw InvalidInput(fmt::format("--points must be at most {}, got {}", kMaxFitPoints, o.points));
-  }
-  const std::vector<double> zetas = log_grid(o.zeta_min, o.zeta_max, static_cast<int>(o.points));
-  require_checked_zeta(o.zeta_max);
+  const std::vector<double> zetas = fit_zetas(o);
+  require_checked_zeta(zetas.back());
   CollisionSolver solver;
   SolveOptions options;
   options.tolerance = o.tolerance;
@@ -72,8 +102,8 @@ int run_fit(const PowerLawFitOptions& o) {
         .field("log_prefactor_stderr", fit.log_prefactor_stderr)
         .field("max_residual", fit.max_residual)
         .field("points", fit.points)
-        .field("zeta_min", o.zeta_min)
-        .field("zeta_max", o.zeta_max)
+        .field("zeta_min", zetas.front())
+        .field("zeta_max", zetas.back())
         .field("tolerance", o.tolerance);
     json.key("derived").begin_object();
     json.field("exponent_zeta", derived.exponent).field("prefactor", derived.prefactor).end_object();
@@ -88,8 +118,8 @@ int run_fit(const PowerLawFitOptions& o) {
     fmt::print("{}\n", finish_json_document(json));
     return 0;
   }
-  fmt::print("{} end, zeta in [{:g}, {:g}], {} points, tolerance {:g}\n", end_name(end), o.zeta_min,
-             o.zeta_max, fit.points, o.tolerance);
+  fmt::print("{} end, zeta in [{:g}, {:g}], {} points, tolerance {:g}\n", end_name(end), zetas.front(),
+             zetas.back(), fit.points, o.tolerance);
   fmt::print("  fit:     eps = {:.10g} * zeta^({:.10g} +- {:.2g})  (velocity exponent {:.10g})\n",
              fit.prefactor, fit.exponent, fit.exponent_stderr, fit.exponent / 5.0);
   fmt::print("  derived: eps = {:.10g} * zeta^({:.10g}) as zeta -> infinity\n", derived.prefactor,
@@ -108,11 +138,12 @@ void add_fit_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--end", o->end, "end of the collision: naive or delayed-recovery")
       ->required()
       ->check(CLI::IsMember(end_names()));
-  cmd->add_option("--zeta-min", o->zeta_min, "smallest zeta of the fit (> 0)")->required();
-  cmd->add_option("--zeta-max", o->zeta_max, "largest zeta of the fit")->required();
-  cmd->add_option("--points", o->points,
-                  fmt::format("log-spaced points, ends included, in [3, {}]", kMaxFitPoints))
-      ->capture_default_str();
+  cmd->add_option(
+      "--zeta-range", o->zeta_range,
+      fmt::format("FROM:TO:N: N log-spaced zeta > 0 of the fit, ends included, N in [3, {}]", kMaxFitPoints));
+  deprecate_old_form({cmd->add_option("--zeta-min", o->zeta_min), cmd->add_option("--zeta-max", o->zeta_max)},
+                     "--zeta-min A --zeta-max B --points N", "--zeta-range A:B:N");
+  cmd->add_option("--points", o->points)->group("");  // the old form's count, hidden with it
   cmd->add_option("--tolerance", o->tolerance, "accuracy of each fitted eps, in [1e-11, 1e-2]")
       ->capture_default_str();
   cmd->add_flag("--json", o->json,

@@ -57,7 +57,7 @@ std::string dropped_note(const SweepFileOutcome& done) {
 }
 
 int run_sweep_command(const SweepOptions& given) {
-  const SweepOptions o = with_zeta_range(given);
+  const SweepOptions o = with_ranges(given);
   if (o.threads && (*o.threads < 1 || *o.threads > kMaxSweepThreads)) {
     throw InvalidInput(fmt::format("--threads must lie in [1, {}] (default: all cores), got {}",
                                    kMaxSweepThreads, *o.threads));
@@ -142,9 +142,13 @@ void add_sweep_command(CLI::App& app, Action& chosen) {
                               kMaxSweepPoints));
   deprecate_old_form({cmd->add_option("--zeta-min", o->zeta_min), cmd->add_option("--zeta-max", o->zeta_max)},
                      "--zeta-min A --zeta-max B --points N", "--zeta-range A:B:N");
-  cmd->add_option("--velocity-min", o->velocity_min,
-                  "instead of zeta: smallest impact speed in m/s (with --beta or a material)");
-  cmd->add_option("--velocity-max", o->velocity_max, "largest impact speed in m/s");
+  cmd->add_option("--velocity-range", o->velocity_range,
+                  fmt::format("instead of zeta, FROM:TO:N: N impact speeds in m/s, in [1, {}], FROM and TO "
+                              "included (with --beta, a material or the physical coefficients)",
+                              kMaxSweepPoints));
+  deprecate_old_form({cmd->add_option("--velocity-min", o->velocity_min),
+                      cmd->add_option("--velocity-max", o->velocity_max)},
+                     "--velocity-min V1 --velocity-max V2 --points N", "--velocity-range V1:V2:N");
   cmd->add_option("--beta", o->beta, "viscoelastic Hertz: beta in s^(1/5) m^(-1/5), zeta = beta v^(1/5)");
   cmd->add_option("--stiffness", o->stiffness,
                   "any law, in physical units: k in N/m^a of the force F = k xi^a + gamma xi^b xi'");
@@ -156,9 +160,10 @@ void add_sweep_command(CLI::App& app, Action& chosen) {
   cmd->add_option(
       "--dissipative-constant", o->dissipative_constant,
       "material: the dissipative constant A in s (adds SI columns: durations, maximal compression)");
-  cmd->add_option("--points", o->points,
-                  fmt::format("number of impact speeds, in [1, {}] (both bounds included)", kMaxSweepPoints))
-      ->check(whole_number_in(1, static_cast<long long>(kMaxSweepPoints)));
+  // The old forms' count (hidden with them; their min and max options say they are old).
+  cmd->add_option("--points", o->points)
+      ->check(whole_number_in(1, static_cast<long long>(kMaxSweepPoints)))
+      ->group("");
   cmd->add_flag("--log", o->log, "space the grid logarithmically (needs a minimum > 0); default: linearly");
   add_solver_options(*cmd, o->solver);
   cmd->add_option("--threads", o->threads,

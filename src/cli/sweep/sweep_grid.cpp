@@ -42,8 +42,7 @@ PhysicalCoefficients physical_coefficients(const SweepOptions& o) {
 // β (and k for a material) of the ε(v) forms; throws InvalidInput naming what is missing or mixed.
 SweepColumns velocity_subject(const SweepOptions& o, LawKind law, std::optional<double>& hertz_k) {
   if (o.zeta_min || o.zeta_max) {
-    throw InvalidInput(
-        "give --zeta-range, or --velocity-min/--velocity-max with --beta or a material, not both");
+    throw InvalidInput("give --zeta-range, or --velocity-range with --beta or a material, not both");
   }
   if (!o.velocity_min || !o.velocity_max) {
     throw InvalidInput(
@@ -61,7 +60,7 @@ SweepColumns velocity_subject(const SweepOptions& o, LawKind law, std::optional<
   }
   if (o.beta.has_value() == material) {
     throw InvalidInput(
-        "--velocity-min/--velocity-max need exactly one of --beta and a material (--young-modulus, "
+        "an impact-speed sweep needs exactly one of --beta and a material (--young-modulus, "
         "--poisson-ratio, --radius, --density or --mass, --dissipative-constant), or the physical "
         "coefficients --stiffness, --damping-coefficient and --effective-mass");
   }
@@ -98,25 +97,40 @@ void check_zeta_of_velocity(double zeta, double v, const std::string& subject) {
 
 }  // namespace
 
-SweepOptions with_zeta_range(SweepOptions o) {
-  if (o.zeta_range.empty()) return o;
-  if (o.zeta_min || o.zeta_max || o.points != 0) {
-    throw InvalidInput(
-        "--zeta-range FROM:TO:N takes the place of --zeta-min, --zeta-max and --points: give it alone");
+SweepOptions with_ranges(SweepOptions o) {
+  if (!o.zeta_range.empty() && !o.velocity_range.empty()) {
+    throw InvalidInput("give --zeta-range or --velocity-range, not both");
   }
-  const RangeText range = parse_range(o.zeta_range, "--zeta-range", "zeta, N >= 1 points", 1,
-                                      static_cast<long long>(kMaxSweepPoints));
-  o.zeta_min = range.from;
-  o.zeta_max = range.to;
-  o.points = range.count;
+  if (!o.zeta_range.empty()) {
+    if (o.zeta_min || o.zeta_max || o.points != 0) {
+      throw InvalidInput(
+          "--zeta-range FROM:TO:N takes the place of --zeta-min, --zeta-max and --points: give it alone");
+    }
+    const RangeText range = parse_range(o.zeta_range, "--zeta-range", "zeta, N >= 1 points", 1,
+                                        static_cast<long long>(kMaxSweepPoints));
+    o.zeta_min = range.from;
+    o.zeta_max = range.to;
+    o.points = range.count;
+  }
+  if (!o.velocity_range.empty()) {
+    if (o.velocity_min || o.velocity_max || o.points != 0) {
+      throw InvalidInput(
+          "--velocity-range FROM:TO:N takes the place of --velocity-min, --velocity-max and --points: "
+          "give it alone");
+    }
+    const RangeText range = parse_range(o.velocity_range, "--velocity-range", "impact speeds in m/s, N >= 1",
+                                        1, static_cast<long long>(kMaxSweepPoints));
+    o.velocity_min = range.from;
+    o.velocity_max = range.to;
+    o.points = range.count;
+  }
   return o;
 }
 
 SweepGrid sweep_grid(const SweepOptions& o) {
   if (!velocity_form(o) && !o.zeta_min && !o.zeta_max) {
     throw InvalidInput(
-        "give --zeta-range FROM:TO:N, or --velocity-min/--velocity-max and --points N with --beta or a "
-        "material");
+        "give --zeta-range FROM:TO:N, or --velocity-range FROM:TO:N with --beta or a material");
   }
   if (o.points == 0) {
     throw InvalidInput(fmt::format("--points is required with {}", velocity_form(o)
@@ -147,23 +161,29 @@ SweepGrid sweep_grid(const SweepOptions& o) {
   }
   std::optional<double> hertz_k;
   SweepColumns axis = velocity_subject(o, grid.law, hertz_k);
-  axis.velocity_m_s = zeta_values({*o.velocity_min, *o.velocity_max, points, o.log, "velocity"});
-  if (physical_form(o)) {
-    const PhysicalCoefficients c = physical_coefficients(o);
+  const std::optional<PhysicalCoefficients> physical =
+      physical_form(o) ? std::optional(physical_coefficients(o)) : std::nullopt;
+  // The speeds and their ζ: a bad end or a speed outside the checked range is named by the option typed.
+  try {
+    axis.velocity_m_s = zeta_values({*o.velocity_min, *o.velocity_max, points, o.log, "velocity"});
     for (const double v : axis.velocity_m_s) {
-      const double zeta =
-          ContactLaw::physical(grid.law, c.stiffness, c.damping, c.effective_mass_kg, v).zeta();
-      check_zeta_of_velocity(zeta, v, "these coefficients");
-      grid.zetas.push_back(zeta);
-      axis.scales.push_back(physical_scales(grid.law, c, v));
+      if (physical) {
+        const PhysicalCoefficients& c = *physical;
+        const double zeta =
+            ContactLaw::physical(grid.law, c.stiffness, c.damping, c.effective_mass_kg, v).zeta();
+        check_zeta_of_velocity(zeta, v, "these coefficients");
+        grid.zetas.push_back(zeta);
+        axis.scales.push_back(physical_scales(grid.law, c, v));
+      } else {
+        const double zeta = zeta_from(*axis.beta, v);
+        check_zeta_of_velocity(zeta, v, fmt::format("beta {}", *axis.beta));
+        grid.zetas.push_back(zeta);
+        if (hertz_k) axis.scales.push_back(natural_scales(*hertz_k, v));
+      }
     }
-  } else {
-    for (const double v : axis.velocity_m_s) {
-      const double zeta = zeta_from(*axis.beta, v);
-      check_zeta_of_velocity(zeta, v, fmt::format("beta {}", *axis.beta));
-      grid.zetas.push_back(zeta);
-      if (hertz_k) axis.scales.push_back(natural_scales(*hertz_k, v));
-    }
+  } catch (const InvalidInput& e) {
+    if (o.velocity_range.empty()) throw;
+    throw InvalidInput(fmt::format("--velocity-range '{}': {}", o.velocity_range, e.what()));
   }
   grid.velocity = std::move(axis);
   return grid;

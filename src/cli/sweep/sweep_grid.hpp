@@ -18,6 +18,7 @@ struct SweepOptions {
   std::optional<double> zeta_min, zeta_max;
   // The ε(v) forms: impact speeds with β, or with a material and its dissipative constant (viscoelastic
   // Hertz), or with the physical coefficients of ContactLaw::physical (every law).
+  std::string velocity_range;  // FROM:TO:N in m/s; the old form is velocity_min, velocity_max and points
   std::optional<double> velocity_min, velocity_max, beta, dissipative_constant;
   std::optional<double> stiffness, damping_coefficient, effective_mass;
   MaterialOptions material;
@@ -36,10 +37,10 @@ struct SweepGrid {
   std::optional<SweepColumns> velocity;
 };
 
-// The options with --zeta-range read into zeta_min, zeta_max and points, the fields the rest reads (and the
-// settings line of a resumable file writes, the same for either form); throws InvalidInput naming
-// --zeta-range.
-SweepOptions with_zeta_range(SweepOptions o);
+// The options with --zeta-range or --velocity-range read into the old form's fields (zeta_min, zeta_max or
+// velocity_min, velocity_max, and points), which the rest reads (and the settings line of a resumable file
+// writes, the same for either form); throws InvalidInput naming the range option.
+SweepOptions with_ranges(SweepOptions o);
 
 // The grid of the form the options give (exactly one of the ζ range, beta with velocity-min/max, a material
 // with velocity-min/max, the physical coefficients with velocity-min/max); throws InvalidInput naming what
