@@ -141,7 +141,7 @@ TEST(CliSweepVelocity, RefusesIncompleteOrMixedFormsBeforeWriting) {
       {"--beta 1000 --velocity-range 1:1e20:3", "outside the checked range"},
       {"--beta 0.2 --velocity-range 0:1:3", "velocity must be finite and > 0"},
       {"--beta 0.2 --velocity-range 2:1:3", "velocity-min (2) must not exceed"},
-      {"--points 3", "give --zeta-range FROM:TO:N, or --velocity-min"},
+      {"--points 3", "give --zeta-range FROM:TO:N, or --velocity-range FROM:TO:N"},
   };
   for (const auto& c : cases) {
     const auto outcome = run_cli("sweep " + c.arguments + out);

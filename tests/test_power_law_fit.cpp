@@ -108,7 +108,7 @@ TEST(CliFit, DelayedFitApproachesMinusFiveThirdsFromAbove) {
 
 TEST(CliFit, BadInputExitsTwo) {
   for (const char* args : {"fit --end both --zeta-range 1:10:9", "fit --end naive --zeta-range 10:1:9",
-                           "fit --end naive --zeta-range 1:10:2", "fit --end naive --zeta-max 10"}) {
+                           "fit --end naive --zeta-range 1:10:2", "fit --end naive"}) {
     const auto outcome = run_cli(args);
     EXPECT_EQ(outcome.status, 2) << args;
     EXPECT_EQ(outcome.err.rfind("restitution: error: ", 0), 0U) << outcome.err;
