@@ -122,6 +122,28 @@ for module in sorted(modules):
     print(f"{module} -> {', '.join(f'{t} ({n})' for t, n in sorted(edges[module].items())) or '(nothing)'}")
 print(f"python -> {' '.join(sorted(python_edges)) or '(nothing)'}")
 print("public headers: " + ", ".join(f"{h} ({m or 'inline only'})" for h, m in owner.items()))
+# docs/design.md prints the same graph ("Include graph between modules"): an arrow per module, continuation lines
+# indented, several edgeless modules on one line; it must be this graph, not an older one.
+design = (pathlib.Path(sys.argv[1]) / "docs" / "design.md").read_text(encoding="utf-8")
+documented = {}
+block = design.split("## Include graph between modules", 1)[1].split("(`python3 tests/module_graph.py .`", 1)[0]
+for line in block.splitlines():
+    if "→" in line:
+        names, targets = (part.strip() for part in line.split("→", 1))
+        current = [name.strip() for name in names.split(",")]
+        for name in current:
+            documented[name] = targets
+    elif line.startswith("    ") and line.strip() and documented:
+        for name in current:
+            documented[name] += " " + line.strip()
+for module in sorted(modules):
+    shown = ", ".join(f"{t} ({n})" for t, n in sorted(edges[module].items())) or "(nothing)"
+    text = documented.get(module, "missing").split("   (", 1)[0].strip()
+    if text != shown:
+        failures.append(f"docs/design.md shows {module} -> {text}; the sources give {shown}")
+if documented.get("python", "").split() != sorted(python_edges):
+    failures.append(f"docs/design.md shows python -> {documented.get('python')}; the sources give "
+                    f"{' '.join(sorted(python_edges))}")
 for failure in failures:
     print(failure)
 sys.exit(1 if failures else 0)
