@@ -12,7 +12,7 @@
 
 #include "restitution/fast.hpp"
 #include "restitution/series.hpp"
-#include "series_study/series_coefficients.hpp"
+#include "restitution_series_study/series_coefficients.hpp"
 
 namespace {
 

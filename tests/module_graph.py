@@ -1,7 +1,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The include graph between the modules under src/ has no cycle, the installable library reaches no study, and
 the Python module (python/src) includes only the installed API, its own headers and a module's public interface,
-never a header under a module folder (no study's private header, no library internals).
+never a header under a module folder (no study's private header, no library internals). The command line
+(src/cli) only renders: it includes no module of the solving layers, no numerical library and no private header
+of a study that has a public interface.
 
 A module is a folder under src/; `#include "M/..."` in a file of module A is an edge A -> M. A public header
 include/restitution/H.hpp belongs to the module that implements it: the folder named H, else the folder of
@@ -118,6 +120,32 @@ for path in sorted(python_source.rglob("*")):
                 continue
             failures.append(f"python/{path.relative_to(python_source.parent)} includes {header}: neither the "
                             "installed API, its own header nor a module's public interface (src/M/include/)")
+# The front end renders (docs/design.md, "Who computes, who renders"): src/cli includes no header of the solving
+# layers (their folders; it calls the installed API, restitution/*.hpp), no numerical library (Boost, Eigen,
+# SUNDIALS), and of a study with a public interface (src/M/include/P/) only that interface, never a header
+# beside the study's sources. No file is excepted.
+solver_layers = {"law", "engine", "cvode", "sundials", "taylor", "solver"}
+numerical_libraries = ("boost/", "Eigen/", "unsupported/Eigen/", "cvode/", "sundials/", "nvector/", "sunmatrix/",
+                       "sunlinsol/")
+studies_with_interface = {m for m in interfaces.values() if m in study}
+for path in sorted((source / "cli").rglob("*")):
+    if path.suffix not in (".cpp", ".hpp"):
+        continue
+    text = path.read_text(encoding="utf-8")
+    where = path.relative_to(source)
+    for header in re.findall(r'^#include "([^"]+)"', text, re.M):
+        prefix = header.split("/")[0] if "/" in header else None
+        if prefix in solver_layers:
+            failures.append(f"{where} includes {header}: the front end calls the solver through the installed "
+                            "API (restitution/*.hpp), never its modules")
+        elif prefix in studies_with_interface:
+            interface = next(p for p, m in interfaces.items() if m == prefix)
+            failures.append(f"{where} includes {header}, a private header of the study {prefix}: only its "
+                            f"interface {interface}/ (what it computes belongs in the study)")
+    for header in re.findall(r'^#include [<"]([^>"]+)[>"]', text, re.M):
+        if header.startswith(numerical_libraries):
+            failures.append(f"{where} includes {header}: a numerical library, which only the library and the "
+                            "studies use")
 for module in sorted(modules):
     print(f"{module} -> {', '.join(f'{t} ({n})' for t, n in sorted(edges[module].items())) or '(nothing)'}")
 print(f"python -> {' '.join(sorted(python_edges)) or '(nothing)'}")

@@ -11,9 +11,9 @@
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
 #include "restitution_series_study/series_named.hpp"
+#include "restitution_series_study/series_validation.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_approximations.hpp"
-#include "series_study/series_validation.hpp"
 
 namespace restitution::series {
 namespace {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// `restitution dem --code liggghts --friction MU` with oblique outputs (src/cli/dem/dem_oblique.cpp): the
-// impacts it reports are `restitution oblique --tangential liggghts_history`'s for the same material and
-// damping (gammat = gamman: damping factor 1; kt = 8 G*, the oblique command's default); the kt --target-et
-// finds, fed back into `restitution oblique`, gives the target at the reference angle; --tangential, a
-// frictionless line and a LIGGGHTS wall exit with status 2 naming why; an impact sliding on the cap is
-// reported; the check deck holds one oblique check line per angle.
+// `restitution dem --code liggghts --friction MU` with oblique outputs (src/dem/oblique_lines.cpp, worded by
+// src/cli/dem/dem_oblique.cpp): the impacts it reports are `restitution oblique --tangential
+// liggghts_history`'s for the same material and damping (gammat = gamman: damping factor 1; kt = 8 G*, the
+// oblique command's default); the kt --target-et finds, fed back into `restitution oblique`, gives the target
+// at the reference angle; --tangential, a frictionless line and a LIGGGHTS wall exit with status 2 naming
+// why; an impact sliding on the cap is reported; the check deck holds one oblique check line per angle.
 #include <fmt/core.h>
 #include <gtest/gtest.h>
 
@@ -121,7 +121,7 @@ TEST(DemObliqueLiggghts, ImpactsSlidingOnTheCapAreReported) {
   EXPECT_NE(text.out.find("  (not modelled: "), std::string::npos) << text.out;
 }
 
-// The check deck adds the oblique section (cli/dem/oblique_check_deck.hpp) after the head-on collisions: one
+// The check deck adds the oblique section (dem/oblique_check_deck.hpp) after the head-on collisions: one
 // restitution-oblique-check line per listed angle, in order, at LIGGGHTS's dt = t_c/10000 and t_c/100000.
 TEST(DemObliqueLiggghts, CheckDeckHasOneObliqueLinePerAngle) {
   TempFolder folder;

@@ -111,7 +111,7 @@ TEST(DemTangential, BadChoicesExit2NamingTheOption) {
 }
 
 // LAMMPS's error in e_t at N steps per contact is below C/N with C = 1, except for the force histories
-// (measured 2.44: src/cli/dem/dem_oblique.cpp), which take C = 3.
+// (measured 2.44: src/dem/oblique_lines.cpp), which take C = 3.
 TEST(DemTangential, ForceHistoriesNeedThreeTimesTheStepsPerContact) {
   for (const auto& [model, steps] :
        {std::pair{"mindlin", 10000.0}, std::pair{"mindlin_rescale", 10000.0},

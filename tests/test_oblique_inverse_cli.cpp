@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// `restitution dem --code lammps --friction MU` with oblique outputs (src/cli/dem/dem_oblique.cpp): the
-// impacts it reports are `restitution oblique`'s for the same material, damping and LAMMPS's mindlin NULL;
-// the stiffness --target-et finds, fed back into `restitution oblique`, gives the target at the reference
-// angle; an unreachable target and the options outside LAMMPS exit with status 2 naming the problem.
+// `restitution dem --code lammps --friction MU` with oblique outputs (src/dem/oblique_lines.cpp, worded by
+// src/cli/dem/dem_oblique.cpp): the impacts it reports are `restitution oblique`'s for the same material,
+// damping and LAMMPS's mindlin NULL; the stiffness --target-et finds, fed back into `restitution oblique`,
+// gives the target at the reference angle; an unreachable target and the options outside LAMMPS exit with
+// status 2 naming the problem.
 #include <fmt/core.h>
 #include <gtest/gtest.h>
 

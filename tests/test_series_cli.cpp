@@ -11,7 +11,7 @@
 
 #include "cli_runner.hpp"
 #include "restitution/series.hpp"
-#include "series_study/series_coefficients.hpp"
+#include "restitution_series_study/series_coefficients.hpp"
 
 namespace restitution {
 namespace {

@@ -14,8 +14,8 @@
 
 #include "restitution/errors.hpp"
 #include "restitution/series.hpp"
+#include "restitution_series_study/series_coefficients.hpp"
 #include "series/published_tables.hpp"
-#include "series_study/series_coefficients.hpp"
 
 namespace restitution::series {
 namespace {

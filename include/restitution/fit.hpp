@@ -88,6 +88,47 @@ inline constexpr double kFitSignificance = 0.01;
 // the residuals χ²/dof is that estimate and the test says nothing: do not call it then.
 double chi2_p_value(double chi2, std::size_t points);
 
+// Whether a fit-data report's own tests reject one of its fits (docs/fit.md): another law has a lower AIC
+// (ties excepted), χ² is improbably large for the data's σ, or the residuals trend with the speed. Where a
+// fit is carried over (`dem --from-fit`) the intervals of a rejected fit describe the scatter about a law the
+// data do not follow, not the data. Typed reasons; a front end words them.
+// One fit of a report, as far as judging it needs.
+struct ReportedFit {
+  LawKind law = LawKind::viscoelastic_hertz;
+  CollisionEnd end = CollisionEnd::delayed_recovery;
+  double chi2 = 0.0;
+  double aic = 0.0;
+  std::string residual_verdict;  // ResidualTests::verdict when the tests ran, else empty
+};
+
+struct FitRejection {
+  std::optional<std::size_t> better_fit;  // the report's best fit, when it is not this one nor tied with it
+  // χ²/dof and its p-value, when p < kFitSignificance with the data's own σ (never with σ estimated).
+  std::optional<double> chi2_per_dof;
+  double chi2_p_value = 1.0;
+  // "falls-with-speed", "rises-with-speed" or "runs" when the residual tests found that; empty otherwise.
+  std::string residual_trend;
+
+  [[nodiscard]] bool rejected() const { return better_fit || chi2_per_dof || !residual_trend.empty(); }
+};
+
+// The verdict on fits[chosen] of a report of `points` data points whose lowest-AIC fit is fits[best] and
+// whose fits tied with it are `tied`.
+FitRejection judge_reported_fit(const std::vector<ReportedFit>& fits, std::size_t chosen, std::size_t best,
+                                const std::vector<std::size_t>& tied, bool sigma_estimated,
+                                std::size_t points);
+
+// ε at speed v [m/s] that a fitted β [s^{1/5} m^{-1/5}] and its intervals give at `end` (ε decreases with β,
+// so the bounds swap; a β bound at the edge, or one whose ζ at v lies beyond the checked range, gives no ε
+// bound: NaN and the flag set). Throws InvalidInput when β's own ζ = β v^{1/5} lies outside the checked
+// range (require_checked_zeta), as for a β typed with `eps --beta`.
+struct FittedEps {
+  double eps = 0.0;
+  FitInterval ci68, ci95;
+};
+FittedEps fitted_eps_at_speed(double beta, const FitInterval& ci68, const FitInterval& ci95, CollisionEnd end,
+                              double velocity_m_s);
+
 struct ResidualTests {
   bool available = false;
   double slope = 0.0;        // d(ε_measured - ε_law)/d ln v

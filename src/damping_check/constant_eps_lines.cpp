@@ -7,26 +7,13 @@
 
 #include "damping_check/inverse.hpp"
 #include "dem/deck_eps.hpp"
+#include "dem/deck_lammps.hpp"
 #include "dem/deck_notes.hpp"
 #include "dem/dem_codes.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/units.hpp"
 
 namespace restitution::damping_check {
-namespace {
-
-// The tangential model of the law's pair_coeff line ("linear_nohistory 0 0" or "mindlin NULL 1 mu"), kept.
-std::string tangential_of(const std::string& line) {
-  const std::string from = " tangential ";
-  const std::string to = " damping ";
-  const auto begin = line.find(from);
-  const auto end = line.find(to);
-  if (begin == std::string::npos || end == std::string::npos || end < begin)
-    throw std::logic_error("LAMMPS line without tangential and damping: " + line);
-  return line.substr(begin + from.size(), end - begin - from.size());
-}
-
-}  // namespace
 
 ConstantEpsLines constant_eps_lines(const dem::LinesResult& r, const dem::Pair& pair, double tolerance,
                                     CollisionSolver& solver) {
@@ -55,7 +42,8 @@ ConstantEpsLines constant_eps_lines(const dem::LinesResult& r, const dem::Pair& 
       "pair_style granular",
       fmt::format("pair_coeff * * hertz/material {} {} {} tangential {} damping tsuji{}",
                   dem::num(pair.young_modulus_pa), dem::num(c.eps_to_request), dem::num(pair.poisson_ratio),
-                  tangential_of(r.deck.lines.at(1)), limit ? " limit_damping" : "")};
+                  dem::granular_tangential_words(r.deck.granular_tangential.value()),
+                  limit ? " limit_damping" : "")};
   return c;
 }
 

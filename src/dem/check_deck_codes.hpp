@@ -46,6 +46,13 @@ std::string lammps_family_check_deck(const CheckDeckRequest& r, int n);
 // inf as float('nan'), float('inf')).
 std::string python_list(const std::vector<double>& values);
 
+// InvalidInput unless `lines` are the three YADE lines (material, Ip2, Law2).
+void require_yade_lines(const std::vector<std::string>& lines);
+// The engines of a YADE collision scene with the Ip2 and Law2 lines (lines[1], lines[2]) in its
+// InteractionLoop and NewtonIntegrator(damping=0`newton_extra`), then O.dt = dt and O.run(steps, True):
+// indented for a function body, each line ended. The head-on and the oblique check decks share it.
+std::string yade_engines_and_run(const std::vector<std::string>& lines, const std::string& newton_extra);
+
 // YADE: the Python function collide(r1, r2, v, dt, steps) -> (eps, gap [m]): a fresh scene with the three
 // lines (material, Ip2, Law2) in their places and two touching spheres closing at v, run for `steps` at `dt`.
 std::string yade_collide_function(const std::vector<std::string>& lines);

@@ -20,10 +20,30 @@ std::string python_list(const std::vector<double>& values) {
   return s + "]";
 }
 
-std::string yade_collide_function(const std::vector<std::string>& lines) {
+void require_yade_lines(const std::vector<std::string>& lines) {
   if (lines.size() != 3) {
     throw InvalidInput(fmt::format("a YADE deck needs the three YADE lines, got {}", lines.size()));
   }
+}
+
+std::string yade_engines_and_run(const std::vector<std::string>& lines, const std::string& newton_extra) {
+  require_yade_lines(lines);
+  return fmt::format(R"(    O.engines = [
+        ForceResetter(),
+        InsertionSortCollider([Bo1_Sphere_Aabb()]),
+        InteractionLoop([Ig2_Sphere_Sphere_ScGeom()],
+                        [{0}],
+                        [{1}]),
+        NewtonIntegrator(damping=0{2}),
+    ]
+    O.dt = dt
+    O.run(steps, True)
+)",
+                     lines[1], lines[2], newton_extra);
+}
+
+std::string yade_collide_function(const std::vector<std::string>& lines) {
+  require_yade_lines(lines);
   return fmt::format(R"(
 def collide(r1, r2, v, dt, steps):
     """Two spheres touching at the origin, closing at v [m/s]: eps and the surface gap [m] after steps."""
@@ -32,20 +52,10 @@ def collide(r1, r2, v, dt, steps):
     O.bodies.append([sphere((-r1, 0, 0), r1), sphere((r2, 0, 0), r2)])
     O.bodies[0].state.vel = Vector3(v / 2, 0, 0)
     O.bodies[1].state.vel = Vector3(-v / 2, 0, 0)
-    O.engines = [
-        ForceResetter(),
-        InsertionSortCollider([Bo1_Sphere_Aabb()]),
-        InteractionLoop([Ig2_Sphere_Sphere_ScGeom()],
-                        [{1}],
-                        [{2}]),
-        NewtonIntegrator(damping=0),
-    ]
-    O.dt = dt
-    O.run(steps, True)
-    a, b = O.bodies[0].state, O.bodies[1].state
+{1}    a, b = O.bodies[0].state, O.bodies[1].state
     return (b.vel[0] - a.vel[0]) / v, b.pos[0] - a.pos[0] - (r1 + r2)
 )",
-                     lines[0], lines[1], lines[2]);
+                     lines[0], yade_engines_and_run(lines, ""));
 }
 
 std::string yade_check_deck(const CheckDeckRequest& r, int n) {

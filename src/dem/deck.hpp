@@ -2,11 +2,13 @@
 #pragma once
 // Input lines for DEM codes that implement the viscoelastic Hertz law, each in its own convention
 // (docs/dem.md), and what those lines give a pair of spheres: the code's own reading of its parameters.
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "dem/dem_codes.hpp"
+#include "oblique/tangential_models.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/material.hpp"
 
@@ -33,6 +35,16 @@ struct Parameter {
   std::string meaning;  // what it is, with its SI unit
 };
 
+// LAMMPS's granular tangential model as its writer puts it into the line (pair granular's pair_coeff, or fix
+// wall/gran): MODEL [k_t] x_gamma_t mu. The oblique readers take it from here, never from the printed text.
+struct GranularTangential {
+  oblique::TangentialKind kind = oblique::TangentialKind::linear_nohistory;
+  std::optional<double> stiffness;  // k_t in the model's unit (tangential_models.hpp); nullopt: NULL
+  double damping_factor = 0.0;      // x_gamma_t
+  double friction = 0.0;            // mu
+  bool wall = false;                // the line is fix wall/gran's (lines[0]), else pair_coeff (lines[1])
+};
+
 struct Deck {
   Code code = kDefaultCode;
   CollisionEnd end = CollisionEnd::delayed_recovery;
@@ -43,6 +55,8 @@ struct Deck {
   // lines were run on (tests/dem/); empty for the codes that are libraries.
   std::vector<std::string> prerequisites;
   std::string checked_on;
+  // LAMMPS: the tangential model its granular line holds; none for the other codes.
+  std::optional<GranularTangential> granular_tangential;
   [[nodiscard]] double parameter(
       std::string_view name) const;  // throws std::out_of_range naming an unknown name
 };

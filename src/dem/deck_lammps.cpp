@@ -13,6 +13,36 @@
 #include "restitution/units.hpp"
 
 namespace restitution::dem {
+namespace {
+
+// mindlin with k_t (nullopt: NULL), x_gamma_t = 1 and mu; frictionless: linear_nohistory 0 0.
+GranularTangential frictional_or_not(double mu, std::optional<double> stiffness, bool wall) {
+  if (mu > 0.0) return {oblique::TangentialKind::mindlin, stiffness, 1.0, mu, wall};
+  return {oblique::TangentialKind::linear_nohistory, std::nullopt, 0.0, 0.0, wall};
+}
+
+}  // namespace
+
+std::string granular_tangential_words(const GranularTangential& t) {
+  std::string words = oblique::tangential_name(t.kind);
+  if (oblique::tangential_model(t.kind).has_stiffness())
+    words += " " + (t.stiffness ? num(*t.stiffness) : "NULL");
+  return words + " " + num(t.damping_factor) + " " + num(t.friction);
+}
+
+std::string granular_line(const Deck& d, const GranularTangential& t) {
+  const std::string limit = d.end == CollisionEnd::delayed_recovery ? " limit_damping" : "";
+  const std::string material =
+      fmt::format("hertz/material {} {} {} tangential {} damping viscoelastic{}", num(d.parameter("E")),
+                  num(d.parameter("eta_n0")), num(d.parameter("nu")), granular_tangential_words(t), limit);
+  return t.wall ? "fix wall all wall/gran granular " + material + " zplane 0 NULL"
+                : "pair_coeff * * " + material;
+}
+
+void set_granular_tangential(Deck& d, const GranularTangential& t) {
+  d.lines.at(t.wall ? 0 : 1) = granular_line(d, t);
+  d.granular_tangential = t;
+}
 
 void write_lammps(Deck& d, const Pair& p, double a, double /*vn*/, double mu) {
   const double eta = damping_per_mass(a, p.effective_modulus_pa, p.effective_mass_kg);
@@ -25,12 +55,8 @@ void write_lammps(Deck& d, const Pair& p, double a, double /*vn*/, double mu) {
   };
   // With friction: Mindlin's k_t = 8 G* a from Y and nu (NULL), the same law family as the normal force,
   // and x_gamma_t = 1, a tangential dashpot as strong as the normal one.
-  const std::string tangential =
-      mu > 0.0 ? fmt::format("mindlin NULL 1 {}", num(mu)) : "linear_nohistory 0 0";
-  d.lines = {"pair_style granular",
-             fmt::format("pair_coeff * * hertz/material {} {} {} tangential {} damping viscoelastic{}",
-                         num(p.young_modulus_pa), num(eta), num(p.poisson_ratio), tangential,
-                         d.end == CollisionEnd::delayed_recovery ? " limit_damping" : "")};
+  d.lines = {"pair_style granular", ""};
+  set_granular_tangential(d, frictional_or_not(mu, std::nullopt, false));
   d.prerequisites = {"units si", "atom_style sphere", "comm_modify vel yes"};
   d.checked_on = "LAMMPS 29 Sep 2021 - Update 2 (Debian 12's lammps 20220106.git7586adbb6a)";
   d.notes = {
@@ -82,13 +108,8 @@ void write_lammps_wall(Deck& d, const Pair& contact, double shear_modulus_pa, do
       {"mu_s", mu, "Coulomb friction coefficient [1]"},
   };
   // With friction a numeric k_t: the wall's `mindlin NULL` is not 8 G* (fix_wall_gran.cpp:248).
-  const std::string tangential =
-      mu > 0.0 ? fmt::format("mindlin {} 1 {}", num(kt), num(mu)) : "linear_nohistory 0 0";
-  d.lines = {
-      fmt::format("fix wall all wall/gran granular hertz/material {} {} {} tangential {} damping "
-                  "viscoelastic{} zplane 0 NULL",
-                  num(e), num(eta), num(nu), tangential,
-                  d.end == CollisionEnd::delayed_recovery ? " limit_damping" : "")};
+  d.lines = {""};
+  set_granular_tangential(d, frictional_or_not(mu, kt, true));
   d.prerequisites = {"units si", "atom_style sphere"};
   d.checked_on = "LAMMPS 29 Sep 2021 - Update 2 (Debian 12's lammps 20220106.git7586adbb6a)";
   const std::string convention =

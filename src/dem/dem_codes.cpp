@@ -174,7 +174,7 @@ const std::vector<CodeEntry>& dem_codes() {
        .companion = Companion::none,
        .companion_words = nullptr,
        .oblique = ObliqueReader::yade_mindlin,
-       // Its first-order rest is still 1.1e-5 at 2000 (1 mm steel at 60 deg; oblique_check_deck_yade.hpp).
+       // Its first-order rest is still 1.1e-5 at 2000 (1 mm steel at 60 deg; dem/oblique_check_deck.hpp).
        .oblique_check_steps = 20000,
        .tangential_refusal = kYadeObliqueRefusal,
        .inverse_refusal = kYadeObliqueRefusal},

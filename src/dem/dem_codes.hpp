@@ -32,7 +32,7 @@ struct Coefficients {
 // (damping_check/constant_eps_lines.hpp, gas_deck/lammps_gas_deck.cpp).
 enum class Companion { none, damping_tsuji, model_hertz };
 
-// Which reader of src/cli/dem/dem_oblique.hpp gives the oblique impacts of the code's lines with friction:
+// Which reader of src/dem/oblique_lines.hpp gives the oblique impacts of the code's lines with friction:
 // the code's own normal and tangential contact, read from the deck the writer made.
 enum class ObliqueReader { none, lammps_granular, liggghts_history, yade_mindlin };
 

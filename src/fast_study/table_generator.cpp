@@ -11,7 +11,7 @@
 
 #include "reference/reference_solution.hpp"
 #include "restitution/errors.hpp"
-#include "series_study/series_coefficients.hpp"
+#include "restitution_series_study/series_coefficients.hpp"
 
 namespace restitution::fast {
 namespace {

@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "restitution/errors.hpp"
+#include "restitution_series_study/series_coefficients.hpp"
 #include "series_study/coefficient_generator.hpp"
-#include "series_study/series_coefficients.hpp"
 
 namespace restitution::series {
 namespace {

@@ -12,9 +12,9 @@
 
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
+#include "restitution_series_study/series_coefficients.hpp"
 #include "restitution_series_study/series_named.hpp"
 #include "series/published_tables.hpp"
-#include "series_study/series_coefficients.hpp"
 
 namespace restitution::series {
 namespace {

@@ -5,8 +5,8 @@
 #include <span>
 
 #include "restitution/errors.hpp"
+#include "restitution_series_study/series_coefficients.hpp"
 #include "series/published_tables.hpp"
-#include "series_study/series_coefficients.hpp"
 
 namespace restitution::series {
 namespace {

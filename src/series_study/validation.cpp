@@ -9,10 +9,10 @@
 
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
+#include "restitution_series_study/series_coefficients.hpp"
 #include "restitution_series_study/series_named.hpp"
+#include "restitution_series_study/series_validation.hpp"
 #include "series/published_tables.hpp"
-#include "series_study/series_coefficients.hpp"
-#include "series_study/series_validation.hpp"
 
 namespace restitution::series {
 namespace {

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The oblique outputs of `restitution dem --code lammps --friction 0.3` (src/cli/dem/dem_oblique.cpp) are
-// what Debian's LAMMPS gives with the printed lines pasted unchanged: two 1 mm steel spheres under `pair
-// granular` and a sphere on `fix wall/gran granular`, at the six listed angles, with the lines as printed
-// (mindlin NULL) and with the line --target-et prints (a numeric k_t). At the printed timestep (the steps per
-// contact for e_t within 1e-4) LAMMPS's e_t is within 1e-4 of the printed one; at a tenth of it,
-// Richardson-extrapolated, within 1e-5, and so are the rebound angle (degrees, relative 1e-4) and the spin.
-// The same for the line `--tangential linear_history` prints and its --target-et line.
+// The oblique outputs of `restitution dem --code lammps --friction 0.3` (src/dem/oblique_lines.cpp, worded by
+// src/cli/dem/dem_oblique.cpp) are what Debian's LAMMPS gives with the printed lines pasted unchanged: two 1
+// mm steel spheres under `pair granular` and a sphere on `fix wall/gran granular`, at the six listed angles,
+// with the lines as printed (mindlin NULL) and with the line --target-et prints (a numeric k_t). At the
+// printed timestep (the steps per contact for e_t within 1e-4) LAMMPS's e_t is within 1e-4 of the printed
+// one; at a tenth of it, Richardson-extrapolated, within 1e-5, and so are the rebound angle (degrees,
+// relative 1e-4) and the spin. The same for the line `--tangential linear_history` prints and its --target-et
+// line.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The oblique outputs of `restitution dem --code liggghts --friction 0.3` (src/cli/dem/dem_oblique.cpp) are
-// what Debian's LIGGGHTS (3.8.0+repack1) gives with the printed lines pasted unchanged: two 1 mm steel
-// spheres under hertz/stiffness with `tangential history`, at the six default angles and 20°, with the lines
-// as printed and with the kt line --target-et prints in place of the printed one (e_t = 0.25 at 20°). At the
-// printed timestep (the steps per contact for e_t within 1e-4) LIGGGHTS's e_t is within 1e-4 of the printed
-// one; at a tenth of it, Richardson-extrapolated, within 1e-5, and so are the rebound angle (degrees,
-// relative 1e-4) and both spins. The check deck `--deck FILE` writes, run unchanged by `liggghts -in`, prints
-// one restitution-oblique-check line per angle with |diff| <= 1e-5 (measured 1.8e-6).
+// The oblique outputs of `restitution dem --code liggghts --friction 0.3` (src/dem/oblique_lines.cpp, worded
+// by src/cli/dem/dem_oblique.cpp) are what Debian's LIGGGHTS (3.8.0+repack1) gives with the printed lines
+// pasted unchanged: two 1 mm steel spheres under hertz/stiffness with `tangential history`, at the six
+// default angles and 20°, with the lines as printed and with the kt line --target-et prints in place of the
+// printed one (e_t = 0.25 at 20°). At the printed timestep (the steps per contact for e_t within 1e-4)
+// LIGGGHTS's e_t is within 1e-4 of the printed one; at a tenth of it, Richardson-extrapolated, within 1e-5,
+// and so are the rebound angle (degrees, relative 1e-4) and both spins. The check deck `--deck FILE` writes,
+// run unchanged by `liggghts -in`, prints one restitution-oblique-check line per angle with |diff| <= 1e-5
+// (measured 1.8e-6).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -216,7 +216,7 @@ void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optio
 
 // Several atom types (docs/dem.md, "Polydisperse sets"): lammps and liggghts only.
 int run_polydisperse(const DemOptions& o) {
-  if (wants_oblique(o.oblique, dem::code_from_name(o.code), 0.0)) {
+  if (dem::wants_oblique(o.oblique, dem::code_from_name(o.code), 0.0)) {
     throw InvalidInput("several atom types take no --angle, --target-et or --reference-angle");
   }
   if (!o.from_fit.empty() || !o.yade_version.empty() || any_production_option(o.production)) {
@@ -263,11 +263,14 @@ int run_wall(const DemOptions& o) {
   request.speeds_m_s = o.speeds;
   request.tolerance = o.tolerance;
   request.friction = o.friction;
-  const bool oblique = wants_oblique(o.oblique, request.code, o.friction);
+  const bool oblique = dem::wants_oblique(o.oblique, request.code, o.friction);
   dem::WallResult r = dem::wall_lines(request);
-  apply_tangential_choice(r.deck, o.oblique, o.friction);
+  dem::apply_tangential_choice(r.deck, o.oblique, o.friction);
   std::optional<DemOblique> impacts;
-  if (oblique) impacts = wall_oblique(r.deck, r.contact, o.oblique, r.reference_velocity_m_s, o.tolerance);
+  if (oblique) {
+    impacts = dem::wall_oblique(r.deck, r.contact, o.oblique, r.reference_velocity_m_s, o.tolerance);
+    warn_oblique(*impacts);
+  }
   print_wall(r, o.json, o.deck, impacts);
   return 0;
 }
@@ -339,22 +342,23 @@ void add_dem_command(CLI::App& app, Action& chosen) {
       }
       if (o->deck) check_deck_target(*o->deck, dem::code_from_name(o->code));
       if (several_types(o->types)) {
-        if (tangential_chosen(o->oblique)) {
+        if (dem::tangential_chosen(o->oblique)) {
           throw InvalidInput("--tangential is for one pair of spheres or a wall, not several types");
         }
         return run_polydisperse(*o);
       }
       if (o->deck) check_deck_size(dem::code_from_name(o->code), 1, o->speeds.size());
       o->material = one_pair_material(o->types);
-      const bool oblique = wants_oblique(o->oblique, dem::code_from_name(o->code), o->friction);
+      const bool oblique = dem::wants_oblique(o->oblique, dem::code_from_name(o->code), o->friction);
       const std::optional<FromFit> from_fit = apply_from_fit(*o);
       dem::LinesResult r = compute(*o);
-      apply_tangential_choice(r.deck, o->oblique, o->friction);
+      dem::apply_tangential_choice(r.deck, o->oblique, o->friction);
       const Production p = production(r, material_from(o->material), o->production, o->tolerance);
       std::optional<DemOblique> impacts;
       if (oblique) {
-        impacts = pair_oblique(r.deck, dem::pair_of(material_from(o->material)), o->oblique,
-                               r.reference_velocity_m_s, o->tolerance);
+        impacts = dem::pair_oblique(r.deck, dem::pair_of(material_from(o->material)), o->oblique,
+                                    r.reference_velocity_m_s, o->tolerance);
+        if (impacts) warn_oblique(*impacts);
       }
       if (o->deck) o->deck_run = write_check_deck(*o->deck, r, material_from(o->material), impacts);
       if (o->json) {

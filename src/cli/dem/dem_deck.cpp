@@ -4,9 +4,8 @@
 #include <fmt/core.h>
 
 #include "cli/common/output_files.hpp"
-#include "cli/dem/oblique_check_deck.hpp"
-#include "cli/dem/oblique_check_deck_yade.hpp"
 #include "dem/dem_codes.hpp"
+#include "dem/oblique_check_deck.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -52,14 +51,9 @@ std::string write_check_deck(const std::string& path, const dem::LinesResult& r,
         r.yade_exact_deck ? ": it cannot express the law; eps_restitution is the eps these lines give there"
                           : ""));
   }
-  // The oblique section: LAMMPS's and LIGGGHTS's (oblique_check_deck.hpp), YADE's
-  // (oblique_check_deck_yade.hpp).
+  // The oblique section of the code (dem/oblique_check_deck.hpp).
   if (!oblique) return write_check_deck(path, request);
-  write_file_atomically(
-      path,
-      dem::check_deck(request) + (dem::code_entry(oblique->code).oblique == dem::ObliqueReader::yade_mindlin
-                                      ? yade_oblique_check_section(*oblique, r.deck.lines)
-                                      : oblique_check_section(*oblique, r.deck.prerequisites, r.deck.lines)));
+  write_file_atomically(path, dem::check_deck(request) + dem::oblique_check_section(*oblique, r.deck));
   return dem::check_deck_command(request.code, path);
 }
 

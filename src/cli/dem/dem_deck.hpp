@@ -26,7 +26,7 @@ void check_deck_size(dem::Code code, std::size_t type_count, std::size_t speed_c
 std::string write_check_deck(const std::string& path, const dem::CheckDeckRequest& request);
 // The one-pair deck: `r`'s lines on `material`'s pair (type 1 for both spheres) at `r`'s speeds against `r`'s
 // ε.
-// With `oblique`, the deck also collides the pair at its angles (cli/dem/oblique_check_deck.hpp).
+// With `oblique`, the deck also collides the pair at its angles (dem/oblique_check_deck.hpp).
 std::string write_check_deck(const std::string& path, const dem::LinesResult& r, const Material& material,
                              const std::optional<DemOblique>& oblique = std::nullopt);
 

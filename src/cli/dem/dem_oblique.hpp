@@ -1,95 +1,22 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// `restitution dem --code lammps|liggghts --friction MU`: what the printed lines give oblique impacts
-// (docs/dem.md, "Oblique impacts"): the lines' own normal and tangential numbers read as the code reads them
-// (LAMMPS's pair granular, or fix wall/gran granular with --wall; LIGGGHTS's hertz/stiffness with
-// `tangential history`, a pair), solved by src/oblique/ under the accuracy contract at the listed impact
-// angles; how many steps per contact the code needs for a requested accuracy of e_t; and with --target-et E
-// --reference-angle DEG the stiffness that gives e_t = E there, with the line that carries it.
+// `restitution dem --code lammps|liggghts|yade --friction MU`: the options of the oblique outputs, and what
+// the printed lines give oblique impacts (dem/oblique_lines.hpp computes it) as text and JSON.
 #include <CLI/CLI.hpp>
-#include <optional>
-#include <string>
 #include <vector>
 
 #include "cli/common/json_writer.hpp"
-#include "dem/deck.hpp"
-#include "oblique/oblique_accuracy.hpp"
-#include "oblique/oblique_inverse.hpp"
+#include "dem/oblique_lines.hpp"
 
 namespace restitution::cli {
 
-struct DemObliqueOptions {
-  std::vector<double> angles_deg;   // --angle; empty: kDefaultAngles when there is friction
-  double et_accuracy = 1e-4;        // --et-accuracy: the e_t accuracy LAMMPS's steps per contact are for
-  std::optional<double> target_et;  // --target-et
-  std::optional<double> reference_angle_deg;  // --reference-angle
-  // --tangential: LAMMPS's tangential model of the printed line (mindlin NULL 1 MU by default), with
-  // --tangential-stiffness k_t (N/m; N/m² for mindlin, whose stiffness is k_t a) and --tangential-damping
-  // x_gamma_t (default 1: the tangential dash-pot as strong as the normal one).
-  std::string tangential = "mindlin";
-  std::optional<double> tangential_stiffness;
-  std::optional<double> tangential_damping;
-};
+using DemObliqueOptions = dem::ObliqueLinesRequest;
+using DemOblique = dem::ObliqueLines;
 
 void add_dem_oblique_options(CLI::App& command, DemObliqueOptions& o);
 
-// The lines' oblique impacts at one speed (the reference speed of the lines).
-struct DemOblique {
-  dem::Code code = dem::kDefaultCode;  // whose lines: lammps, liggghts or yade
-  std::string tangential_words;        // as the line has them, e.g. "mindlin NULL 1 0.3"
-  oblique::ObliqueGeometry geometry;
-  oblique::NormalForce normal;
-  oblique::TangentialForce tangential;
-  oblique::ObliqueOptions options;  // the end of the lines
-  double speed_m_s = 0.0;
-  double tolerance = 0.0;
-  std::vector<double> angles_deg;
-  std::vector<oblique::ContractedOblique> impacts;
-  // Steps per contact for e_t within et_accuracy, and the step that gives it for the shortest contact.
-  double et_accuracy = 0.0;
-  double error_coefficient = 0.0;
-  double steps_per_contact = 0.0;
-  double timestep_s = 0.0;
-  // --target-et: the parameter found, the line carrying it, and the impacts of the new line.
-  std::optional<oblique::TangentialInverseResult> inverse;
-  double target_et = 0.0;
-  double reference_angle_deg = 0.0;
-  std::vector<std::string> inverse_lines;
-  std::vector<oblique::ContractedOblique> inverse_impacts;
-};
-
-// Whether --tangential, --tangential-stiffness or --tangential-damping change the printed tangential model.
-bool tangential_chosen(const DemObliqueOptions& o);
-// Puts --tangential's model into the deck's LAMMPS line (the pair's pair_coeff or the wall's fix wall/gran)
-// and its note, in place of the printed mindlin; nothing when none is chosen. mindlin without
-// --tangential-stiffness keeps the printed k_t (the pair's NULL, the wall's number). Throws
-// InvalidInput naming the option: not --code lammps, no --friction, linear_history without
-// --tangential-stiffness, linear_nohistory with it, a stiffness not positive or a damping negative.
-void apply_tangential_choice(dem::Deck& deck, const DemObliqueOptions& o, double friction);
-
-// Whether the options or the friction ask for oblique outputs; InvalidInput naming the options when the code
-// is neither LAMMPS nor LIGGGHTS (--tangential: not LAMMPS) or they are out of range.
-bool wants_oblique(const DemObliqueOptions& o, dem::Code code, double friction);
-
-// The pair's lines read by the code's reader (dem::CodeEntry::oblique; pair granular: the pair's 8 G* for
-// `mindlin NULL`, torque arm R - δ/2, the line of centres turning; LIGGGHTS: kn, kt, gamman, gammat,
-// coefficientFriction, arms R - δ/2; YADE: yade_pair_oblique); none for a code without a reader, or for
-// YADE's lines that are not modelled unless --angle asks for them. And the wall's (LAMMPS's fix wall/gran
-// granular: its E, its NULL, torque arm R).
-std::optional<DemOblique> pair_oblique(const dem::Deck& deck, const dem::Pair& pair,
-                                       const DemObliqueOptions& o, double speed_m_s, double tolerance);
-DemOblique wall_oblique(const dem::Deck& deck, const dem::Pair& contact, const DemObliqueOptions& o,
-                        double speed_m_s, double tolerance);
-
-// YADE 2023.02a's lines for `pair` (FrictMat, Ip2_FrictMat_FrictMat_MindlinPhys(betan),
-// Law2_ScGeom_MindlinPhys_Mindlin): yade_mindlin over the Tsuji normal force with Ip2's kno, kso and betas =
-// betan, the torque to ScGeom's contact point (R - δ/2) and getIncidentVel's contact-point velocity
-// (oblique_contact.hpp). Only lines with betan are modelled (yade_lines_modelled): YADE 2024.02a's (en, vn)
-// damp otherwise.
-bool yade_lines_modelled(const dem::Deck& deck);
-DemOblique yade_pair_oblique(const dem::Deck& deck, const dem::Pair& pair, const DemObliqueOptions& o,
-                             double speed_m_s, double tolerance);
-
+// The impacts whose tolerance cannot be shown (ill-conditioned), each a warning on stderr: never silently.
+void warn_oblique(const DemOblique& r);
 void print_oblique_text(const DemOblique& r, const char* comment);
 // "oblique": {...}
 void write_oblique_json(JsonWriter& json, const DemOblique& r);

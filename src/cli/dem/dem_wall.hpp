@@ -25,7 +25,7 @@ void add_wall_options(CLI::App& command, WallOptions& o, const std::string& wall
 std::optional<dem::WallMaterial> wall_material(const WallOptions& o);
 
 // Prints the wall lines (and writes the deck to `deck` when given, complete or not at all).
-// With `oblique`, what the wall lines give oblique impacts (cli/dem/dem_oblique.hpp).
+// With `oblique`, what the wall lines give oblique impacts (dem/oblique_lines.hpp).
 void print_wall(const dem::WallResult& r, bool json, const std::optional<std::string>& deck,
                 const std::optional<DemOblique>& oblique = std::nullopt);
 

@@ -4,36 +4,20 @@
 #include <fmt/core.h>
 
 #include <cmath>
-#include <limits>
 
 #include "cli/common/build_json.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/fast.hpp"
 #include "restitution/units.hpp"
 
 namespace restitution::cli {
 
 EpsCarryOver eps_at_speed(const FitCarryOver& fit, double velocity_m_s) {
-  // β carried over passes the domain check of a β typed with `eps --beta --velocity`.
   try {
-    require_checked_zeta(zeta_from(fit.beta, velocity_m_s));
+    return fitted_eps_at_speed(fit.beta, fit.ci68, fit.ci95, fit.end, velocity_m_s);
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("--from-fit {}: beta = {} at v = {} m/s: {}", fit.file, fit.beta,
                                    velocity_m_s, e.what()));
   }
-  auto eps = [&](double beta) { return fast::eps(zeta_from(beta, velocity_m_s), fit.end); };
-  // A bound whose ζ at this speed lies beyond the checked range is at the edge here, as fit-data reports it.
-  auto beyond = [&](double beta) { return zeta_from(beta, velocity_m_s) > kLargestCheckedZeta; };
-  auto map = [&](const FitInterval& b) {
-    FitInterval out;
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    out.low_at_edge = b.high_at_edge || beyond(b.high);
-    out.low = out.low_at_edge ? nan : eps(b.high);
-    out.high_at_edge = b.low_at_edge;
-    out.high = b.low_at_edge ? nan : eps(b.low);
-    return out;
-  };
-  return {eps(fit.beta), map(fit.ci68), map(fit.ci95)};
 }
 
 }  // namespace restitution::cli

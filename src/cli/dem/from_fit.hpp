@@ -11,14 +11,9 @@
 
 namespace restitution::cli {
 
-// ε at speed v [m/s] for β and its interval (ε decreases with β, so the bounds swap; a β bound at the edge,
-// or one whose ζ at v lies beyond the checked range, gives no ε bound: NaN and the flag set). Throws
-// InvalidInput when β's own ζ = β v^{1/5} lies outside the checked range (require_checked_zeta), as for a
-// β typed with `eps --beta`.
-struct EpsCarryOver {
-  double eps = 0.0;
-  FitInterval ci68, ci95;
-};
+// ε at speed v [m/s] for the fit's β and its intervals (restitution/fit.hpp, fitted_eps_at_speed); its
+// InvalidInput for a β whose ζ lies outside the checked range names --from-fit FILE.
+using EpsCarryOver = FittedEps;
 EpsCarryOver eps_at_speed(const FitCarryOver& fit, double velocity_m_s);
 
 }  // namespace restitution::cli

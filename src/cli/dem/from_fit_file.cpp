@@ -232,28 +232,25 @@ std::string fit_words(const Entry& e) {
   return fmt::format("{}, {} end", law_name(e.law), end_name(e.end));
 }
 
-// Why the fit's own tests reject entry `chosen` (docs/fit.md): another law has a lower AIC (ties excepted),
-// χ² is improbably large for the data's σ, or the residuals trend with the speed.
+// The fit's own verdict on entry `chosen` (fit/fit_rejection.hpp), in words.
 std::vector<std::string> rejections(const std::vector<Entry>& fits, std::size_t chosen, std::size_t best,
                                     const std::vector<std::size_t>& tied, bool sigma_estimated,
                                     std::size_t points) {
+  std::vector<ReportedFit> reported;
+  for (const Entry& e : fits) reported.push_back({e.law, e.end, e.chi2, e.aic, e.verdict});
+  const FitRejection verdict = judge_reported_fit(reported, chosen, best, tied, sigma_estimated, points);
   std::vector<std::string> out;
-  const Entry& f = fits[chosen];
-  if (chosen != best && std::find(tied.begin(), tied.end(), chosen) == tied.end()) {
-    out.push_back(fmt::format("the fit's best law is {} (AIC {:.4g} against {:.4g})", fit_words(fits[best]),
-                              fits[best].aic, f.aic));
+  if (verdict.better_fit) {
+    const Entry& better = fits[*verdict.better_fit];
+    out.push_back(fmt::format("the fit's best law is {} (AIC {:.4g} against {:.4g})", fit_words(better),
+                              better.aic, fits[chosen].aic));
   }
-  // The χ² test means something with the data's own σ only (restitution/fit.hpp, chi2_p_value).
-  if (!sigma_estimated && points > 1) {
-    const auto dof = static_cast<double>(points - 1);
-    const double p = chi2_p_value(f.chi2, points);
-    if (p < kFitSignificance) {
-      out.push_back(fmt::format("chi2/dof = {:.4g} with the data's sigma (p = {:.2g} < {:g})", f.chi2 / dof,
-                                p, kFitSignificance));
-    }
+  if (verdict.chi2_per_dof) {
+    out.push_back(fmt::format("chi2/dof = {:.4g} with the data's sigma (p = {:.2g} < {:g})",
+                              *verdict.chi2_per_dof, verdict.chi2_p_value, kFitSignificance));
   }
-  for (const char* trend : {"falls-with-speed", "rises-with-speed", "runs"}) {
-    if (f.verdict == trend) out.push_back(fmt::format("its residuals: {} at the 1 % level", trend));
+  if (!verdict.residual_trend.empty()) {
+    out.push_back(fmt::format("its residuals: {} at the 1 % level", verdict.residual_trend));
   }
   return out;
 }

@@ -381,12 +381,13 @@ class SceneWriter {
     const scene::ObliqueTask& task = scene_.obliques[i];
     const ObliqueSection section = oblique_section(scene_, task);
     write_file(task.name + ".csv", section.csv);
-    for (const ObliqueModelRun& run : section.runs) {
-      if (const std::size_t failed = oblique::failed_count(run.impacts); failed > 0) {
+    const scene::ObliqueOutcome& outcome = section.outcome;
+    for (const scene::ObliqueModelRun& run : outcome.runs) {
+      if (run.failed > 0) {
         out_.warnings.push_back(
             fmt::format("{}: {} of {} impacts of {} failed (status failed in {}.csv; the "
                         "report says why)",
-                        task.name, failed, run.impacts.size(),
+                        task.name, run.failed, run.impacts.size(),
                         oblique::tangential_name(run.setup.tangential.kind), task.name));
       }
     }
@@ -395,12 +396,12 @@ class SceneWriter {
     report_ += section.markdown;
     json_.key("oblique_" + task.name).begin_object();
     json_.field("csv", task.name + ".csv")
-        .field("impacts", static_cast<long>(section.runs.front().impacts.size()));
-    json_.field("normal_restitution", section.runs.front().impacts.front().result.normal_restitution);
-    json_.field("maw_chi", oblique::maw_chi(section.runs.front().setup));
+        .field("impacts", static_cast<long>(outcome.runs.front().impacts.size()));
+    json_.field("normal_restitution", outcome.runs.front().impacts.front().result.normal_restitution);
+    json_.field("maw_chi", outcome.maw_chi);
     json_.key("sticking_restitution").begin_object();
-    for (const ObliqueModelRun& run : section.runs) {
-      json_.field(oblique::tangential_name(run.setup.tangential.kind), run.maw.sticking_restitution);
+    for (const scene::ObliqueModelRun& run : outcome.runs) {
+      json_.field(oblique::tangential_name(run.setup.tangential.kind), run.sticking.tangential_restitution);
     }
     json_.end_object().end_object();
   }

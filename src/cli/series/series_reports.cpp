@@ -11,8 +11,8 @@
 
 #include "cli/common/json_writer.hpp"
 #include "cli/common/output_files.hpp"
-#include "series_study/series_coefficients.hpp"
-#include "series_study/series_validation.hpp"
+#include "restitution_series_study/series_coefficients.hpp"
+#include "restitution_series_study/series_validation.hpp"
 
 namespace restitution::cli {
 namespace {

@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/dem/oblique_check_deck_yade.hpp"
-
+// The oblique part of a YADE check deck (`dem --code yade --yade-version 2023.02a --friction MU --deck
+// FILE`): LAMMPS's section (oblique_check_deck.cpp) in YADE's Python, the engines of the head-on deck's
+// scenes.
 #include <fmt/core.h>
 
 #include <algorithm>
 
-#include "cli/dem/oblique_check_deck.hpp"
 #include "dem/check_deck_codes.hpp"
+#include "dem/oblique_check_deck.hpp"
 #include "restitution/errors.hpp"
 
-namespace restitution::cli {
+namespace restitution::dem {
 namespace {
 
 // One scene per pass, one collision per angle: body 2i at rest, body 2i + 1 touching it from above (+z) and
@@ -29,17 +30,7 @@ def collide_oblique(dt, steps):
         t = math.radians(a)
         O.bodies[b].state.vel = Vector3(OBLIQUE_SPEED * math.sin(t), 0, -OBLIQUE_SPEED * math.cos(t))
         movers.append(b)
-    O.engines = [
-        ForceResetter(),
-        InsertionSortCollider([Bo1_Sphere_Aabb()]),
-        InteractionLoop([Ig2_Sphere_Sphere_ScGeom()],
-                        [{1}],
-                        [{2}]),
-        NewtonIntegrator(damping=0, gravity=(0, 0, 0)),
-    ]
-    O.dt = dt
-    O.run(steps, True)
-    et = []
+{1}    et = []
     for a, b in zip(OBLIQUE_ANGLES, movers):
         m, r = O.bodies[b].state, O.bodies[b - 1].state
         slip = m.vel[0] - OBLIQUE_R1 * m.angVel[1] - r.vel[0] - OBLIQUE_R2 * r.angVel[1]
@@ -47,15 +38,13 @@ def collide_oblique(dt, steps):
         et.append(-slip / s0 if s0 != 0 else float('nan'))  # head-on: no slip to restitute
     return et
 )",
-                     lines[0], lines[1], lines[2]);
+                     lines[0], yade_engines_and_run(lines, ", gravity=(0, 0, 0)"));
 }
 
 }  // namespace
 
-std::string yade_oblique_check_section(const DemOblique& r, const std::vector<std::string>& lines) {
-  if (lines.size() != 3) {
-    throw InvalidInput(fmt::format("a YADE deck needs the three YADE lines, got {}", lines.size()));
-  }
+std::string yade_oblique_check_section(const ObliqueLines& r, const std::vector<std::string>& lines) {
+  require_yade_lines(lines);
   if (!r.geometry.second) throw InvalidInput("YADE's oblique check deck collides a pair, not a wall");
   const double r1 = r.geometry.first.radius_m;
   const double r2 = r.geometry.second->radius_m;
@@ -65,7 +54,7 @@ std::string yade_oblique_check_section(const DemOblique& r, const std::vector<st
       "OBLIQUE_ANGLES = {}  # degrees from the normal\nOBLIQUE_SPEED = {}  # m/s\n"
       "OBLIQUE_R1, OBLIQUE_R2 = {}, {}  # m: the moving sphere, the one at rest\n"
       "OBLIQUE_SPACING = {}  # m between the collisions\n",
-      dem::python_list(r.angles_deg), r.speed_m_s, r1, r2, 10.0 * (r1 + std::max(r1, r2)));
+      python_list(r.angles_deg), r.speed_m_s, r1, r2, 10.0 * (r1 + std::max(r1, r2)));
   d += collide_function(lines);
   d += fmt::format(
       "\noblique_10dt = collide_oblique({0}, {1})\noblique_dt = collide_oblique({0} / 10, {2})\n"
@@ -73,7 +62,7 @@ std::string yade_oblique_check_section(const DemOblique& r, const std::vector<st
       s.dt_s, s.steps, 10 * s.steps);
   std::vector<double> et;
   for (const auto& i : r.impacts) et.push_back(i.result.tangential_restitution);
-  d += dem::python_list(et) + "\n\n# the oblique check lines\n";
+  d += python_list(et) + "\n\n# the oblique check lines\n";
   // The line's fixed words per angle, its four measured values as %-formats.
   const ObliqueCheckValues formats{"%.15g", "%.15g", "%.15g", "%.15g"};
   d += "OBLIQUE_LINES = [\n";
@@ -88,4 +77,4 @@ for line, et_10dt, et_dt, et_r in zip(OBLIQUE_LINES, oblique_10dt, oblique_dt, O
   return d;
 }
 
-}  // namespace restitution::cli
+}  // namespace restitution::dem

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/dem/oblique_check_deck.hpp"
+#include "dem/oblique_check_deck.hpp"
 
 #include <fmt/core.h>
 
@@ -9,15 +9,15 @@
 #include "dem/dem_codes.hpp"
 #include "restitution/units.hpp"
 
-namespace restitution::cli {
+namespace restitution::dem {
 namespace {
 
 // One pass: a fresh system with one collision per angle at dt, e_t of each into variable `name`{i}. A pair:
 // atom 2i+1 at rest, 2i+2 above it moving down onto it; a wall: atom i+1 touching the plane z = 0. LAMMPS's
 // slip is vx - R omega_y per sphere with the normal +z towards the mover, and so is LIGGGHTS's
 // (tests/dem/oblique_runs.hpp).
-std::string pass(const DemOblique& r, const std::vector<std::string>& prerequisites,
-                 const std::vector<std::string>& lines, double dt, long steps, const char* name) {
+std::string oblique_pass(const ObliqueLines& r, const std::vector<std::string>& prerequisites,
+                         const std::vector<std::string>& lines, double dt, long steps, const char* name) {
   const bool pair = r.geometry.second.has_value();
   const double r1 = r.geometry.first.radius_m;
   const double r2 = pair ? r.geometry.second->radius_m : 0.0;
@@ -76,11 +76,11 @@ std::string pass(const DemOblique& r, const std::vector<std::string>& prerequisi
 
 }  // namespace
 
-int oblique_check_steps_per_contact(dem::Code code) {
-  return dem::code_entry(code).oblique_check_steps;
+int oblique_check_steps_per_contact(Code code) {
+  return code_entry(code).oblique_check_steps;
 }
 
-ObliqueCheckSteps oblique_check_steps(const DemOblique& r, int per_contact) {
+ObliqueCheckSteps oblique_check_steps(const ObliqueLines& r, int per_contact) {
   ObliqueCheckSteps s;
   s.per_contact = per_contact;
   s.shortest_contact_s = HUGE_VAL;
@@ -94,7 +94,7 @@ ObliqueCheckSteps oblique_check_steps(const DemOblique& r, int per_contact) {
   return s;
 }
 
-std::string oblique_check_heading(const DemOblique& r, const ObliqueCheckSteps& s) {
+std::string oblique_check_heading(const ObliqueLines& r, const ObliqueCheckSteps& s) {
   return fmt::format(
       "oblique impacts ({}): the lines again, at each angle restitution dem lists, at {} m/s; dt = t_c/{} "
       "and "
@@ -103,18 +103,18 @@ std::string oblique_check_heading(const DemOblique& r, const ObliqueCheckSteps& 
       s.shortest_contact_s);
 }
 
-std::string oblique_check_line(const DemOblique& r, std::size_t i, const ObliqueCheckValues& values) {
+std::string oblique_check_line(const ObliqueLines& r, std::size_t i, const ObliqueCheckValues& values) {
   return fmt::format(
       "{} code={} contact={} angle={} et_10dt={} et_dt={} et_code={} et_restitution={} diff={}",
-      kObliqueCheckTag, dem::code_name(r.code), r.geometry.second ? "pair" : "wall", r.angles_deg[i],
+      kObliqueCheckTag, code_name(r.code), r.geometry.second ? "pair" : "wall", r.angles_deg[i],
       values.et_10dt, values.et_dt, values.et_code, r.impacts[i].result.tangential_restitution, values.diff);
 }
 
-std::string oblique_check_section(const DemOblique& printed, const std::vector<std::string>& prerequisites,
+std::string oblique_check_section(const ObliqueLines& printed, const std::vector<std::string>& prerequisites,
                                   const std::vector<std::string>& lines) {
   // A head-on angle has no slip at impact: e_t = -s'/s is undefined there (and the deck's formula would
   // divide by 0, which stops LAMMPS), so only the angles with an e_t are collided.
-  DemOblique r = printed;
+  ObliqueLines r = printed;
   r.angles_deg.clear();
   r.impacts.clear();
   std::string skipped;
@@ -131,8 +131,8 @@ std::string oblique_check_section(const DemOblique& printed, const std::vector<s
   if (r.angles_deg.empty()) return "\n" + skipped;
   const ObliqueCheckSteps s = oblique_check_steps(r, oblique_check_steps_per_contact(r.code));
   std::string d = "\n" + skipped + "# " + oblique_check_heading(r, s) + "\n";
-  d += pass(r, prerequisites, lines, s.dt_s, s.steps, "rc_oblique_10dt");
-  d += pass(r, prerequisites, lines, s.dt_s / 10.0, 10 * s.steps, "rc_oblique_dt");
+  d += oblique_pass(r, prerequisites, lines, s.dt_s, s.steps, "rc_oblique_10dt");
+  d += oblique_pass(r, prerequisites, lines, s.dt_s / 10.0, 10 * s.steps, "rc_oblique_dt");
   d += "\n# the oblique check lines\n";
   for (std::size_t i = 0; i < r.angles_deg.size(); ++i) {
     const double et = r.impacts[i].result.tangential_restitution;
@@ -146,4 +146,10 @@ std::string oblique_check_section(const DemOblique& printed, const std::vector<s
   return d;
 }
 
-}  // namespace restitution::cli
+std::string oblique_check_section(const ObliqueLines& r, const Deck& deck) {
+  if (code_entry(r.code).oblique == ObliqueReader::yade_mindlin)
+    return yade_oblique_check_section(r, deck.lines);
+  return oblique_check_section(r, deck.prerequisites, deck.lines);
+}
+
+}  // namespace restitution::dem
