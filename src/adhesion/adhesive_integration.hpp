@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// The adhesive collision integrated in its Sundman form (docs/adhesion.md §4) with CVODE, from first touch
-// to the break or to the point where the spheres are certainly bound. Written on the RAII wrappers of
-// src/sundials behind this one function, so that it can move onto a shared event driver unchanged.
-// Private to the library.
+// The adhesive collision integrated in its Sundman form (docs/adhesion.md §4) on the event driver
+// (src/cvode/event_driver.hpp), from first touch to the break or to the point where the spheres are certainly
+// bound. Private to the library.
 #include "adhesion/adhesive_scales.hpp"
 #include "restitution/solve_types.hpp"
 
