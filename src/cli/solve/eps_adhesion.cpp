@@ -74,10 +74,10 @@ void print_json(const AdhesiveReport& r) {
 
 }  // namespace
 
-int run_adhesive_eps(const AdhesionOptions& adhesion, std::optional<double> velocity_m_per_s,
+int run_adhesive_eps(const AdhesiveContact& contact, std::optional<double> velocity_m_per_s,
                      double tolerance, bool json) {
   AdhesiveReport report;
-  report.contact = adhesive_contact_from(adhesion);
+  report.contact = contact;
   report.tolerance = tolerance;
   report.velocity = velocity_m_per_s;
   report.elastic_work_j = elastic_hysteresis_work_j(report.contact);

@@ -4,11 +4,11 @@
 // speed, as a table or one JSON object.
 #include <optional>
 
-#include "cli/common/adhesion_options.hpp"
+#include "restitution/adhesion.hpp"
 
 namespace restitution::cli {
 
-int run_adhesive_eps(const AdhesionOptions& adhesion, std::optional<double> velocity_m_per_s,
+int run_adhesive_eps(const AdhesiveContact& contact, std::optional<double> velocity_m_per_s,
                      double tolerance, bool json);
 
 }  // namespace restitution::cli

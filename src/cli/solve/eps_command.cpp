@@ -6,9 +6,11 @@
 #include <optional>
 #include <string_view>
 
+#include "cli/common/adhesion_options.hpp"
 #include "cli/common/build_json.hpp"
 #include "cli/common/commands.hpp"
 #include "cli/common/json_writer.hpp"
+#include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/result_json.hpp"
 #include "cli/solve/eps_adhesion.hpp"
@@ -23,7 +25,9 @@ struct EpsOptions {
   std::string law = law_name(LawKind::viscoelastic_hertz);
   SolverArguments solver;
   bool json = false;
-  AdhesionOptions adhesion;
+  AdhesionOptions adhesion;  // with the material and A below: an adhesive collision
+  MaterialOptions material;
+  std::optional<double> dissipative_constant;
 };
 
 ContactLaw law_from(const EpsOptions& o) {
@@ -122,9 +126,12 @@ void add_eps_command(CLI::App& app, Action& chosen) {
                 "the tolerance holds for eps when eps is small "
                 "and for one_minus_eps when eps is near 1");
   add_adhesion_options(*cmd, o->adhesion);
+  cmd->add_option("--dissipative-constant", o->dissipative_constant,
+                  "with --adhesion: dissipative constant A in s (default 0: elastic); jkr-lammps and dmt use "
+                  "LAMMPS's damp = 2 A E*/m_eff");
+  add_material_options(*cmd, o->material);
   cmd->callback([o, cmd, &chosen] {
-    if (!o->adhesion.model && !o->adhesion.surface_energy && !o->adhesion.dissipative_constant &&
-        !o->adhesion.material.any()) {
+    if (!o->adhesion.any() && !o->dissipative_constant && !o->material.any()) {
       chosen = [o] { return run_eps(*o); };
       return;
     }
@@ -140,7 +147,14 @@ void add_eps_command(CLI::App& app, Action& chosen) {
                         "adhesive collision takes the material, --surface-energy and --velocity",
                         conflict));
       }
-      return run_adhesive_eps(o->adhesion, o->velocity, o->solver.tolerance, o->json);
+      if (!o->adhesion.model) {
+        throw InvalidInput(
+            "--surface-energy, --dissipative-constant and the material options belong to --adhesion");
+      }
+      const AdhesiveContact contact =
+          adhesive_contact_from(adhesive_model_from_name(*o->adhesion.model), o->adhesion,
+                                material_from(o->material), o->dissipative_constant.value_or(0.0));
+      return run_adhesive_eps(contact, o->velocity, o->solver.tolerance, o->json);
     };
   });
 }
