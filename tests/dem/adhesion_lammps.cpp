@@ -86,7 +86,8 @@ restitution::dem::TaggedEps run_lammps(const std::string& deck, std::size_t n) {
   });
   const auto read = restitution::dem::tagged_eps(run.output, "PAIR", n);
   const std::string failure = restitution::dem::code_run_failure(run, program, read);
-  EXPECT_TRUE(failure.empty()) << failure << "\n" << run.output.substr(run.output.size() > 2000 ? run.output.size() - 2000 : 0);
+  EXPECT_TRUE(failure.empty()) << failure << "\n"
+                               << run.output.substr(run.output.size() > 2000 ? run.output.size() - 2000 : 0);
   return read;
 }
 

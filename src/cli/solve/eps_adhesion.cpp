@@ -74,8 +74,8 @@ void print_json(const AdhesiveReport& r) {
 
 }  // namespace
 
-int run_adhesive_eps(const AdhesiveContact& contact, std::optional<double> velocity_m_per_s,
-                     double tolerance, bool json) {
+int run_adhesive_eps(const AdhesiveContact& contact, std::optional<double> velocity_m_per_s, double tolerance,
+                     bool json) {
   AdhesiveReport report;
   report.contact = contact;
   report.tolerance = tolerance;

@@ -8,7 +8,7 @@
 
 namespace restitution::cli {
 
-int run_adhesive_eps(const AdhesiveContact& contact, std::optional<double> velocity_m_per_s,
-                     double tolerance, bool json);
+int run_adhesive_eps(const AdhesiveContact& contact, std::optional<double> velocity_m_per_s, double tolerance,
+                     bool json);
 
 }  // namespace restitution::cli
