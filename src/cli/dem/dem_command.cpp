@@ -17,6 +17,7 @@
 #include "cli/common/json_writer.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/dem/deck_json.hpp"
+#include "cli/dem/dem_adhesion.hpp"
 #include "cli/dem/dem_deck.hpp"
 #include "cli/dem/dem_oblique.hpp"
 #include "cli/dem/dem_polydisperse_output.hpp"
@@ -53,6 +54,7 @@ struct DemOptions {
   ProductionOptions production;     // --timestep, --max-eps-error, --constant-eps
   WallOptions wall;                 // --wall: a sphere on a wall (cli/dem/dem_wall.hpp)
   DemObliqueOptions oblique;        // --angle, --target-et (cli/dem/dem_oblique.hpp)
+  AdhesionOptions adhesion;         // --adhesion, --surface-energy (cli/dem/dem_adhesion.hpp)
 };
 
 // The YADE the lines are for: --yade-version, else `yade --version` of the one on PATH, else the newest
@@ -245,6 +247,34 @@ int run_polydisperse(const DemOptions& o) {
 }
 
 // --wall: one sphere on a wall; the options of pairs and type sets are refused by name.
+// The adhesive pair's lines: LAMMPS only, one pair, no wall, A given (not calibrated from --eps).
+int run_adhesion(const DemOptions& o, const std::vector<std::string>& given) {
+  if (!o.adhesion.model) throw InvalidInput("--surface-energy belongs to --adhesion");
+  if (o.code != "lammps") {
+    throw InvalidInput(fmt::format("--adhesion prints LAMMPS's pair granular lines only (not {}'s)", o.code));
+  }
+  if (o.wall.wall && *o.adhesion.model == "jkr") {
+    throw InvalidInput(
+        "--wall with --adhesion jkr: LAMMPS 20220106's fix wall/gran ... jkr uses a pull-off distance of the "
+        "wrong dimension and turns the atom into NaN without an error (docs/adhesion.md)");
+  }
+  for (const auto& option : given) {
+    throw InvalidInput(
+        fmt::format("{} does not go with --adhesion (give the material, --surface-energy, "
+                    "--dissipative-constant and --impact-velocity)",
+                    option));
+  }
+  if (several_types(o.types)) throw InvalidInput("--adhesion is for one pair of spheres, not several types");
+  AdhesiveDemRequest request;
+  request.adhesion = o.adhesion;
+  request.material = material_from(one_pair_material(o.types));
+  request.dissipative_constant_s = o.dissipative_constant.value_or(0.0);
+  request.speeds = o.speeds;
+  request.tolerance = o.tolerance;
+  request.json = o.json;
+  return run_adhesive_dem(request);
+}
+
 int run_wall(const DemOptions& o) {
   if (several_types(o.types) || o.types.radius2 || o.types.mass2) {
     throw InvalidInput("--wall takes one sphere: one --radius, no --radius2, --mass2 or --radius-range");
@@ -333,8 +363,22 @@ void add_dem_command(CLI::App& app, Action& chosen) {
   add_dem_oblique_options(*cmd, o->oblique);
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
+  add_adhesion_options(*cmd, o->adhesion, {"jkr", "dmt"});
   cmd->callback([o, cmd, &chosen] {
     o->end_given = cmd->count("--end") > 0;
+    if (o->adhesion.any()) {
+      std::vector<std::string> given;  // what the adhesive lines do not take
+      for (const char* option :
+           {"--eps", "--from-fit", "--end", "--deck", "--angle", "--target-et", "--tangential", "--friction",
+            "--timestep", "--constant-eps", "--yade-version", "--wall"}) {
+        if (cmd->count(option) > 0 &&
+            !(std::string_view(option) == "--wall" && o->adhesion.model && *o->adhesion.model == "jkr")) {
+          given.emplace_back(option);
+        }
+      }
+      chosen = [o, given] { return run_adhesion(*o, given); };
+      return;
+    }
     chosen = [o] {
       if (o->wall.wall || o->wall.young_modulus || o->wall.poisson_ratio) {
         if (o->deck) check_deck_target(*o->deck, dem::code_from_name(o->code));

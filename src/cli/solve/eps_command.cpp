@@ -6,11 +6,14 @@
 #include <optional>
 #include <string_view>
 
+#include "cli/common/adhesion_options.hpp"
 #include "cli/common/build_json.hpp"
 #include "cli/common/commands.hpp"
 #include "cli/common/json_writer.hpp"
+#include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/result_json.hpp"
+#include "cli/solve/eps_adhesion.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 
@@ -22,6 +25,9 @@ struct EpsOptions {
   std::string law = law_name(LawKind::viscoelastic_hertz);
   SolverArguments solver;
   bool json = false;
+  AdhesionOptions adhesion;  // with the material and A below: an adhesive collision
+  MaterialOptions material;
+  std::optional<double> dissipative_constant;
 };
 
 ContactLaw law_from(const EpsOptions& o) {
@@ -109,7 +115,8 @@ void add_eps_command(CLI::App& app, Action& chosen) {
       "v^{1/5}; linear dash-pot: zeta = 2 r)");
   cmd->add_option("--beta", o->beta,
                   "beta >= 0 in s^{1/5} m^{-1/5} (with --velocity: the 2008 paper's Eq. 23)");
-  cmd->add_option("--velocity", o->velocity, "impact speed v > 0 (scaled as in the 2008 paper's Eq. 23)");
+  cmd->add_option("--velocity", o->velocity,
+                  "impact speed v > 0 (scaled as in the 2008 paper's Eq. 23; with --adhesion in m/s)");
   add_law_option(*cmd, o->law);
   cmd->add_option("--damping-ratio", o->damping_ratio,
                   "damping ratio r >= 0 of the linear dash-pot x'' + 2r x' + x = 0");
@@ -118,7 +125,38 @@ void add_eps_command(CLI::App& app, Action& chosen) {
                 "print one JSON object (numbers in the shortest form that reads back to the same double); "
                 "the tolerance holds for eps when eps is small "
                 "and for one_minus_eps when eps is near 1");
-  cmd->callback([o, &chosen] { chosen = [o] { return run_eps(*o); }; });
+  add_adhesion_options(*cmd, o->adhesion);
+  cmd->add_option("--dissipative-constant", o->dissipative_constant,
+                  "with --adhesion: dissipative constant A in s (default 0: elastic); jkr-lammps and dmt use "
+                  "LAMMPS's damp = 2 A E*/m_eff");
+  add_material_options(*cmd, o->material);
+  cmd->callback([o, cmd, &chosen] {
+    if (!o->adhesion.any() && !o->dissipative_constant && !o->material.any()) {
+      chosen = [o] { return run_eps(*o); };
+      return;
+    }
+    // An adhesive collision is given by its material and speed, not by the natural form's parameters.
+    std::string conflict;
+    for (const char* option : {"--zeta", "--beta", "--damping-ratio", "--law", "--end", "--method"}) {
+      if (conflict.empty() && cmd->count(option) > 0) conflict = option;
+    }
+    chosen = [o, conflict] {
+      if (!conflict.empty()) {
+        throw InvalidInput(
+            fmt::format("{} does not go with --adhesion (nor with the material options): an "
+                        "adhesive collision takes the material, --surface-energy and --velocity",
+                        conflict));
+      }
+      if (!o->adhesion.model) {
+        throw InvalidInput(
+            "--surface-energy, --dissipative-constant and the material options belong to --adhesion");
+      }
+      const AdhesiveContact contact =
+          adhesive_contact_from(adhesive_model_from_name(*o->adhesion.model), o->adhesion,
+                                material_from(o->material), o->dissipative_constant.value_or(0.0));
+      return run_adhesive_eps(contact, o->velocity, o->solver.tolerance, o->json);
+    };
+  });
 }
 
 }  // namespace restitution::cli

@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// `restitution dem --code lammps --adhesion jkr|dmt --surface-energy γ`: LAMMPS 20220106's lines for an
+// adhesive pair and the ε and sticking speed they give (dem/adhesive_lines_lammps.hpp), as text or JSON.
+#include <vector>
+
+#include "cli/common/adhesion_options.hpp"
+#include "restitution/material.hpp"
+
+namespace restitution::cli {
+
+struct AdhesiveDemRequest {
+  AdhesionOptions adhesion;  // --adhesion jkr (LAMMPS's, our jkr-lammps) or dmt
+  Material material;
+  double dissipative_constant_s = 0.0;
+  std::vector<double> speeds;
+  double tolerance = 1e-10;
+  bool json = false;
+};
+
+int run_adhesive_dem(const AdhesiveDemRequest& request);
+
+}  // namespace restitution::cli

@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "cli/solve/eps_adhesion.hpp"
+
+#include <fmt/core.h>
+
+#include "cli/common/build_json.hpp"
+#include "cli/common/json_writer.hpp"
+
+namespace restitution::cli {
+namespace {
+
+struct AdhesiveReport {
+  AdhesiveContact contact;
+  double tolerance = 0.0;
+  StickingSpeed sticking;
+  double elastic_work_j = 0.0, break_overlap = 0.0;
+  std::optional<double> velocity;
+  std::optional<AdhesiveCollision> collision;
+};
+
+void print_table(const AdhesiveReport& r) {
+  const auto& c = r.contact;
+  fmt::print("{} adhesive collision, surface energy {:g} J/m^2 per surface (w = 2 gamma), tolerance {:g}\n",
+             adhesive_model_name(c.model), c.surface_energy_j_per_m2, r.tolerance);
+  fmt::print("  E* = {:.12g} Pa   R_eff = {:.12g} m   m_eff = {:.12g} kg   damping = {:.12g} {}\n",
+             c.effective_modulus_pa, c.effective_radius_m, c.effective_mass_kg, c.damping,
+             c.model == AdhesiveModel::jkr ? "s (A)" : "1/(m s) (LAMMPS damp)");
+  fmt::print("  break overlap {:.12g} m   elastic hysteresis work {:.12g} J\n", r.break_overlap,
+             r.elastic_work_j);
+  fmt::print("  sticking speed v_s = {:.12g} m/s ({} solves)\n", r.sticking.speed_m_per_s, r.sticking.solves);
+  if (!r.collision) return;
+  const auto& e = *r.collision;
+  fmt::print("  at v = {:.12g} m/s: {}   eps = {:.15g}   1 - eps = {:.15g}\n", *r.velocity,
+             adhesive_outcome_name(e.outcome), e.eps, e.one_minus_eps);
+  fmt::print("  contact time {:.12g} s   maximal compression {:.12g} m\n", e.contact_time_s,
+             e.max_compression_m);
+  fmt::print(
+      "  work to the neck (hysteresis) {:.12g} J   to viscosity {:.12g} J   (1/2) m_eff v^2 / adhesion "
+      "energy unit = {:.12g}\n",
+      e.hysteresis_work_j, e.viscous_work_j, e.kinetic_to_adhesion_energy);
+  fmt::print("  solver: {} steps, {} right-hand sides, {} root functions\n", e.stats.steps,
+             e.stats.rhs_evaluations, e.stats.root_evaluations);
+}
+
+void print_json(const AdhesiveReport& r) {
+  const auto& c = r.contact;
+  JsonWriter json;
+  json.begin_object();
+  json.field("adhesion", adhesive_model_name(c.model).c_str());
+  json.field("surface_energy_j_per_m2", c.surface_energy_j_per_m2);
+  json.field("effective_modulus_pa", c.effective_modulus_pa);
+  json.field("effective_radius_m", c.effective_radius_m);
+  json.field("effective_mass_kg", c.effective_mass_kg);
+  json.field(c.model == AdhesiveModel::jkr ? "dissipative_constant_s" : "lammps_damping_per_m_s", c.damping);
+  json.field("tolerance", r.tolerance);
+  json.field("break_overlap_m", r.break_overlap);
+  json.field("elastic_hysteresis_work_j", r.elastic_work_j);
+  json.field("sticking_speed_m_per_s", r.sticking.speed_m_per_s);
+  json.field("sticking_speed_solves", r.sticking.solves);
+  if (r.collision) {
+    const auto& e = *r.collision;
+    json.field("velocity_m_per_s", *r.velocity);
+    json.field("outcome", adhesive_outcome_name(e.outcome));
+    json.field("eps", e.eps);
+    json.field("one_minus_eps", e.one_minus_eps);
+    json.field("contact_time_s", e.contact_time_s);
+    json.field("max_compression_m", e.max_compression_m);
+    json.field("hysteresis_work_j", e.hysteresis_work_j);
+    json.field("viscous_work_j", e.viscous_work_j);
+    json.field("kinetic_to_adhesion_energy", e.kinetic_to_adhesion_energy);
+  }
+  fmt::print("{}\n", finish_json_document(json));
+}
+
+}  // namespace
+
+int run_adhesive_eps(const AdhesiveContact& contact, std::optional<double> velocity_m_per_s, double tolerance,
+                     bool json) {
+  AdhesiveReport report;
+  report.contact = contact;
+  report.tolerance = tolerance;
+  report.velocity = velocity_m_per_s;
+  report.elastic_work_j = elastic_hysteresis_work_j(report.contact);
+  report.break_overlap = break_overlap_m(report.contact);
+  if (velocity_m_per_s) report.collision = solve_adhesive(report.contact, *velocity_m_per_s, tolerance);
+  report.sticking = sticking_speed(report.contact, tolerance);
+  if (json) {
+    print_json(report);
+  } else {
+    print_table(report);
+  }
+  return 0;
+}
+
+}  // namespace restitution::cli
