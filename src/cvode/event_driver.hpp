@@ -19,6 +19,7 @@
 // events (directions, active) and return AfterEvent::restart, go on, or stop.
 #include <exception>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -119,6 +120,8 @@ class EventDriver {
   // not one per integrated component, more than 64 events, a Jacobian with the smoothing.
   EventDriver(EventSystem system, DriverSettings settings, const sundials::Context& context,
               Smoothing smoothing = {});
+  // The same with a SUNDIALS context of its own (a consumer that runs one driver needs no sundials/ header).
+  EventDriver(EventSystem system, DriverSettings settings, Smoothing smoothing = {});
   EventDriver(const EventDriver&) = delete;  // CVODE holds a pointer to it
   EventDriver& operator=(const EventDriver&) = delete;
   ~EventDriver();
@@ -150,6 +153,10 @@ class EventDriver {
   void configure_segment();
   [[nodiscard]] DriverStep step_at(double t) const;
 
+  EventDriver(EventSystem system, DriverSettings settings, std::unique_ptr<sundials::Context> own,
+              const sundials::Context* context, Smoothing smoothing);
+
+  std::unique_ptr<sundials::Context> own_context_;  // null where the caller's context is used
   EventSystem system_;
   DriverSettings settings_;
   const ContactLaw* law_ = nullptr;

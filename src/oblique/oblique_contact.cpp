@@ -9,7 +9,6 @@
 #include "cvode/event_driver.hpp"
 #include "oblique/oblique_model.hpp"
 #include "restitution/errors.hpp"
-#include "sundials/handles.hpp"
 
 namespace restitution::oblique {
 namespace {
@@ -519,9 +518,8 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
   initial_mode(model, y, automaton.mode, automaton.sign);
   const double tangential_scale = std::max({1.0, std::abs(slip0), std::abs(y[detail::kTangential])});
 
-  sundials::Context context;
   driver::EventDriver driver(contact_system(model, automaton, options.end),
-                             contact_settings(model, options.relative_tolerance, tangential_scale), context,
+                             contact_settings(model, options.relative_tolerance, tangential_scale),
                              driver::Smoothing{&model.law});
   ObliqueResult result;
   StickSlip stick_slip(model, automaton, options, tangential, time_s, result);
