@@ -17,6 +17,10 @@
 //      driver.advance() step by step), reading driver.stats() at the end.
 // The hook is called at every step where a non-terminal event was found; it may change the state and the
 // events (directions, active) and return AfterEvent::restart, go on, or stop.
+// The smoothing holds while x >= 0 (u = x^{1/q}): a contact whose overlap goes negative (an adhesive neck)
+// ends the smoothed run at a terminal event (u falling through 0) and goes on in the time form with a second
+// driver started from that step's τ and state. Events that must not fire at the start (a function that is 0
+// there) are best inactive until the hook turns them on.
 #include <exception>
 #include <functional>
 #include <memory>
