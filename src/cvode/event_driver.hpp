@@ -19,8 +19,9 @@
 // events (directions, active) and return AfterEvent::restart, go on, or stop.
 // The smoothing holds while x >= 0 (u = x^{1/q}): a contact whose overlap goes negative (an adhesive neck)
 // ends the smoothed run at a terminal event (u falling through 0) and goes on in the time form with a second
-// driver started from that step's τ and state. Events that must not fire at the start (a function that is 0
-// there) are best inactive until the hook turns them on.
+// driver started from that step's τ and state. An event function that is 0 at the start (x = 0 at first
+// touch) is no event there: CVODE looks just past the start and reports a root only where the function then
+// crosses 0 (the head-on phases and tests/test_event_driver.cpp start at u = 0 with the naive end watched).
 #include <exception>
 #include <functional>
 #include <memory>
