@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// What every CVODE user of the library computes alike, written once (inline: it runs per right-hand side or
-// per step): the Sundman form of a contact's smoothing and CVODE's error weights. The event driver
-// (event_driver.hpp) and the head-on integrator (cvode_integrator.hpp) use them. Private to the library.
+// The Sundman form of a contact's smoothing and CVODE's error weights for the event driver
+// (event_driver.hpp), inline: they run per right-hand side or per step. The head-on integrator
+// (cvode_integrator.cpp) keeps its own copies, fused into its right-hand side and unrolled for its 3- and
+// 4-component states: through these helpers its 400-point delayed-end sweep took 0.4 % more instructions
+// (its right-hand side 4.6 %, its error weights 10 %: the loops over a run-time size are not unrolled).
+// Private to the library.
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
