@@ -167,10 +167,9 @@ TEST(EventDriver, SmoothingIntegratesHertzThroughBothEnds) {
   system.events = {
       {"naive_end", [](const DriverPoint& p) { return p.u; }, Crossing::falling, true},
       {"max_compression", [](const DriverPoint& p) { return p.y[1]; }, Crossing::falling, false}};
-  restitution::sundials::Context context;
   DriverSettings s = settings(Multistep::adams, Corrector::fixed_point, 3);
   s.variable_name = "sigma";
-  EventDriver driver(std::move(system), s, context, Smoothing{&law});
+  EventDriver driver(std::move(system), s, Smoothing{&law});  // with a SUNDIALS context of its own
   const double start[2] = {0.0, 1.0};
   driver.start(0.0, start);
   double largest = 0.0;

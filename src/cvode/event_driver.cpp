@@ -10,6 +10,7 @@
 #include <cmath>
 #include <utility>
 
+#include "cvode/cvode_forms.hpp"
 #include "restitution/errors.hpp"
 #include "sundials/fixed_point.hpp"
 #include "sundials/small_dense.hpp"
@@ -31,14 +32,7 @@ class EventDriver::Callbacks {
       const double* s = NV_DATA_S(y);
       double* d = NV_DATA_S(ydot);
       driver.system_.rates(driver.point_at(t, s), d);
-      if (const ContactLaw* law = driver.law_) {
-        // dτ/dσ = u^{q-1}; du/dσ = (dx/dτ)/q.
-        const double dtau = law->dcompression_du(s[0]) / law->smoothing_root();
-        d[0] = d[0] / law->smoothing_root();
-        const int n = driver.system_.size;
-        for (int i = 1; i < n; ++i) d[i] = d[i] * dtau;
-        d[n] = dtau;
-      }
+      if (driver.law_ != nullptr) to_sundman_rates(*driver.law_, s[0], d, driver.system_.size);
       return 0;
     } catch (...) {
       driver.pending_exception_ = std::current_exception();
@@ -72,20 +66,11 @@ class EventDriver::Callbacks {
     }
   }
 
-  // CVODE's error weights 1/(rtol |y_i| + atol_i) in one loop: the same arithmetic as CVodeSVtolerances
-  // (N_VAbs, N_VLinearSum, N_VInv), without its four vector calls per step (~2 % of a head-on solve).
   static int error_weights(N_Vector y, N_Vector weights, void* user_data) noexcept {
     const auto& driver = *static_cast<const EventDriver*>(user_data);
-    const double* s = NV_DATA_S(y);
-    double* w = NV_DATA_S(weights);
-    const double rtol = driver.relative_tolerance_;
     const std::vector<double>& atol = driver.settings_.absolute_tolerance;
-    for (std::size_t i = 0; i < atol.size(); ++i) {
-      const double scale = rtol * std::abs(s[i]) + atol[i];
-      if (scale <= 0.0) return -1;  // as CVODE: a zero weight scale is an error
-      w[i] = 1.0 / scale;
-    }
-    return 0;
+    return detail::error_weights(driver.relative_tolerance_, atol.data(), NV_DATA_S(y), NV_DATA_S(weights),
+                                 atol.size());
   }
 };
 
@@ -99,11 +84,22 @@ void require_driver_input(bool condition, const std::string& what) {
 
 EventDriver::EventDriver(EventSystem system, DriverSettings settings, const sundials::Context& context,
                          Smoothing smoothing)
-    : system_(std::move(system)),
+    : EventDriver(std::move(system), std::move(settings), nullptr, &context, smoothing) {}
+
+EventDriver::EventDriver(EventSystem system, DriverSettings settings, Smoothing smoothing)
+    : EventDriver(std::move(system), std::move(settings), std::make_unique<sundials::Context>(), nullptr,
+                  smoothing) {}
+
+EventDriver::EventDriver(EventSystem system, DriverSettings settings, std::unique_ptr<sundials::Context> own,
+                         const sundials::Context* context, Smoothing smoothing)
+    : own_context_(std::move(own)),
+      system_(std::move(system)),
       settings_(std::move(settings)),
       law_(smoothing.law),
       size_(system_.size + (smoothing.law != nullptr ? 1 : 0)),
-      memory_(settings_.method == Multistep::adams ? CV_ADAMS : CV_BDF, context) {
+      memory_(settings_.method == Multistep::adams ? CV_ADAMS : CV_BDF,
+              context != nullptr ? *context : *own_context_) {
+  const sundials::Context& sundials_context = context != nullptr ? *context : *own_context_;
   require_driver_input(system_.size > 0 && system_.rates, "the system needs a size and a right-hand side");
   require_driver_input(
       settings_.absolute_tolerance.size() == static_cast<std::size_t>(size_),
@@ -114,18 +110,16 @@ EventDriver::EventDriver(EventSystem system, DriverSettings settings, const sund
   require_driver_input(!(law_ != nullptr && system_.jacobian),
                        "no Jacobian with the smoothing (it is of the time form)");
   require_driver_input(settings_.relative_tolerance > 0.0, "the relative tolerance must be positive");
-  state_ = sundials::make_small_vector(size_, context);
+  state_ = sundials::make_small_vector(size_, sundials_context);
   N_VConst(0.0, state_.get());
   if (law_ != nullptr) time_form_.resize(static_cast<std::size_t>(system_.size));
   if (settings_.corrector == Corrector::fixed_point) {
-    fixed_point_solver_ = sundials::make_small_fixed_point_solver(state_, context);
+    fixed_point_solver_ = sundials::make_small_fixed_point_solver(state_, sundials_context);
   } else {
-    jacobian_ = sundials::make_small_dense_matrix(size_, context);
-    linear_solver_ = sundials::make_small_dense_solver(state_, jacobian_, context);
+    jacobian_ = sundials::make_small_dense_matrix(size_, sundials_context);
+    linear_solver_ = sundials::make_small_dense_solver(state_, jacobian_, sundials_context);
   }
-  // CVODE stops with "too much accuracy requested" (flag -2) where DBL_EPSILON/rtol > 1; below 2 DBL_EPSILON
-  // its steps are bound by rounding anyway.
-  relative_tolerance_ = std::max(settings_.relative_tolerance, 2.0 * DBL_EPSILON);
+  relative_tolerance_ = cvode_relative_tolerance(settings_.relative_tolerance);
 }
 
 EventDriver::~EventDriver() = default;

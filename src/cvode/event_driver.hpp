@@ -17,8 +17,14 @@
 //      driver.advance() step by step), reading driver.stats() at the end.
 // The hook is called at every step where a non-terminal event was found; it may change the state and the
 // events (directions, active) and return AfterEvent::restart, go on, or stop.
+// The smoothing holds while x >= 0 (u = x^{1/q}): a contact whose overlap goes negative (an adhesive neck)
+// ends the smoothed run at a terminal event (u falling through 0) and goes on in the time form with a second
+// driver started from that step's τ and state. An event function that is 0 at the start (x = 0 at first
+// touch) is no event there: CVODE looks just past the start and reports a root only where the function then
+// crosses 0 (the head-on phases and tests/test_event_driver.cpp start at u = 0 with the naive end watched).
 #include <exception>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -119,6 +125,8 @@ class EventDriver {
   // not one per integrated component, more than 64 events, a Jacobian with the smoothing.
   EventDriver(EventSystem system, DriverSettings settings, const sundials::Context& context,
               Smoothing smoothing = {});
+  // The same with a SUNDIALS context of its own (a consumer that runs one driver needs no sundials/ header).
+  EventDriver(EventSystem system, DriverSettings settings, Smoothing smoothing = {});
   EventDriver(const EventDriver&) = delete;  // CVODE holds a pointer to it
   EventDriver& operator=(const EventDriver&) = delete;
   ~EventDriver();
@@ -150,6 +158,10 @@ class EventDriver {
   void configure_segment();
   [[nodiscard]] DriverStep step_at(double t) const;
 
+  EventDriver(EventSystem system, DriverSettings settings, std::unique_ptr<sundials::Context> own,
+              const sundials::Context* context, Smoothing smoothing);
+
+  std::unique_ptr<sundials::Context> own_context_;  // null where the caller's context is used
   EventSystem system_;
   DriverSettings settings_;
   const ContactLaw* law_ = nullptr;

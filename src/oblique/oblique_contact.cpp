@@ -1,23 +1,22 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "oblique/oblique_contact.hpp"
 
-#include <cvode/cvode.h>
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "cvode/event_driver.hpp"
 #include "oblique/oblique_model.hpp"
 #include "restitution/errors.hpp"
-#include "sundials/fixed_point.hpp"
-#include "sundials/handles.hpp"
-#include "sundials/small_vector.hpp"
 
 namespace restitution::oblique {
 namespace {
 
 using detail::NaturalModel;
 using detail::State;
+namespace driver = restitution::detail;  // the event driver (src/cvode)
+using driver::Crossing;
 
 // The integration starts at τ0 > 0 on the leading terms x = τ0, x' = 1 (their error, O(τ0^{b+2}), is far
 // below any tolerance): at x = 0 the switch function of a damped Hertz contact is infinite (w'(0) = ∞).
@@ -50,11 +49,10 @@ void require_body(const Body& body, const char* which) {
   require_positive(body.inertia_kg_m2, fmt::format("{} moment of inertia [kg m^2]", which).c_str());
 }
 
-struct CallbackData {
-  const NaturalModel* model = nullptr;
+// The stick/slip automaton's mode and its watch on the switch function.
+struct Automaton {
   ContactMode mode = ContactMode::stick;
   double sign = 1.0;
-  CollisionEnd end = CollisionEnd::delayed_recovery;
   // The switch function's distance from 0 over its scale at the last two step ends of this phase (-1: none
   // yet), the largest so far in the phase and when it was last sampled, and the smallest interior minimum of
   // it over the contact: where it comes back close to 0 without crossing, a switch nearly happened.
@@ -66,52 +64,30 @@ struct CallbackData {
   // The smallest distance from 0 of the switch function at any interior minimum of its step-end samples, and
   // the smallest largest distance of a phase that ended in a switch: the margin of the mode sequence.
   double margin = 1.0;
+
+  void new_phase() {
+    before_previous = previous = -1.0;
+    phase_largest = 0.0;
+    last_sample = -HUGE_VAL;
+  }
 };
 
-// CVODE integrates the Sundman form of the engines (src/cvode/cvode_integrator.hpp): independent variable σ
-// with dτ = u^{q-1} dσ, u = x^{1/q} (ContactLaw::smoothing_root), state (u, x', ξ, u_t, R1ω1, R2ω2, τ). For
-// viscoelastic Hertz every right-hand side is then a polynomial in the state (w(x) = u, a = sqrt(R* δ) ∝ u),
-// where in τ the start and the naive end are sqrt singularities that cost CVODE its order.
-constexpr int kCvodeSize = detail::kStateSize + 1;
-constexpr int kTau = detail::kStateSize;
-constexpr int kRootCount = 3;
+// The events of the contact, in this order: its end (the normal law's own end functions), the switch out
+// of the mode, and for a _rescale variant only the maximal compression (x' = 0), where its rescale turns on,
+// a kink in the rates that CVODE is restarted at.
+enum ContactEvent { kEnd = 0, kSwitch = 1, kMaxCompression = 2 };
 
-// The state in τ form (index 0 the overlap x) from the integrated one (index 0 u).
-State read(const ContactLaw& law, N_Vector y) {
-  State s{};
-  const double* d = N_VGetArrayPointer(y);
-  std::copy(d, d + detail::kStateSize, s.begin());
-  s[detail::kOverlap] = law.compression_of(d[0]);
-  return s;
-}
-
-int right_hand_side(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_data) noexcept {
-  const auto& data = *static_cast<CallbackData*>(user_data);
-  const ContactLaw& law = data.model->law;
-  State rates{};
-  data.model->rates(read(law, y), data.mode, data.sign, rates);
-  const double u = N_VGetArrayPointer(y)[0];
-  const double dtau = law.dcompression_du(u) / law.smoothing_root();  // u^{q-1}
-  double* d = N_VGetArrayPointer(ydot);
-  d[0] = rates[detail::kOverlap] / law.smoothing_root();  // du/dσ = x'/q
-  for (int i = 1; i < detail::kStateSize; ++i) d[i] = rates[static_cast<std::size_t>(i)] * dtau;
-  d[kTau] = dtau;
-  return 0;
-}
-
-// g[0]: the end of the contact (the normal law's own end functions); g[1]: the switch out of the mode;
-// g[2], for a _rescale variant only: the maximal compression (x' = 0), where its rescale turns on, a kink in
-// the rates that CVODE is restarted at.
 // A sample of the switch function: an interior minimum of its distance from 0 is a near miss.
 // Only the step ends count (CVODE's root finding samples back inside the last step, around a root), and
 // only a minimum far below what the phase reached before (a phase starts at a switch, where its function is
 // 0).
-void track_switch_distance(CallbackData& data, double sigma, const State& s, double value) {
-  const double scale = data.model->switch_scale(s, data.mode, data.sign);
+void track_switch_distance(const NaturalModel& model, Automaton& data, double sigma, const State& s,
+                           double value) {
+  const double scale = model.switch_scale(s, data.mode, data.sign);
   if (!(sigma > data.last_sample) || !(scale > 0.0) || !std::isfinite(scale)) return;
   data.last_sample = sigma;
   // On the side where the mode lasts (a history slip's h below 0, the others above); across it a crossing.
-  const bool lasts = data.mode == ContactMode::slip && data.model->has_history() ? value < 0.0 : value > 0.0;
+  const bool lasts = data.mode == ContactMode::slip && model.has_history() ? value < 0.0 : value > 0.0;
   if (!lasts) {
     data.before_previous = data.previous = -1.0;
     return;
@@ -128,21 +104,82 @@ void track_switch_distance(CallbackData& data, double sigma, const State& s, dou
   data.previous = distance;
 }
 
-int root_functions(sunrealtype sigma, N_Vector y, sunrealtype* g, void* user_data) noexcept {
-  auto& data = *static_cast<CallbackData*>(user_data);
-  const State s = read(data.model->law, y);
+State state_at(const driver::DriverPoint& p) {
+  State s{};
+  std::copy(p.y, p.y + detail::kStateSize, s.begin());
+  return s;
+}
+
+// A switch ends a stick where its function falls through 0, a slip of a history model where h rises
+// through 0, a slip of linear_nohistory where g|s| - C falls through 0.
+Crossing switch_direction(const NaturalModel& model, ContactMode mode) {
+  return mode == ContactMode::slip && model.has_history() ? Crossing::rising : Crossing::falling;
+}
+
+// The contact for the event driver in the smoothing of its normal law (independent variable σ with
+// dτ = u^{q-1} dσ, u = x^{1/q}): for viscoelastic Hertz every right-hand side is then a polynomial in the
+// state (w(x) = u, a = sqrt(R* δ) ∝ u), where in τ the start and the naive end are sqrt singularities that
+// cost CVODE its order.
+driver::EventSystem contact_system(const NaturalModel& model, Automaton& automaton, CollisionEnd end) {
+  driver::EventSystem system;
+  system.size = detail::kStateSize;
+  system.rates = [&model, &automaton](const driver::DriverPoint& p, double* d) {
+    State rates{};
+    model.rates(state_at(p), automaton.mode, automaton.sign, rates);
+    std::copy(rates.begin(), rates.end(), d);
+  };
   // u changes sign at the naive end where x = u^q may not; without damping the force-zero end is the naive
   // one, where the force factor x^{a-b} = u^{q(a-b)} only touches 0.
-  g[0] = data.end == CollisionEnd::naive || data.model->law.damping() == 0.0
-             ? N_VGetArrayPointer(y)[0]
-             : law_rhs::force_factor(data.model->law, s[detail::kOverlap], s[detail::kOverlapRate]);
+  const bool naive = end == CollisionEnd::naive || model.law.damping() == 0.0;
+  system.events.push_back({"end",
+                           [&model, naive](const driver::DriverPoint& p) {
+                             return naive ? p.u
+                                          : law_rhs::force_factor(model.law, p.y[detail::kOverlap],
+                                                                  p.y[detail::kOverlapRate]);
+                           },
+                           Crossing::falling, true});
   // Without friction the force is 0 in every mode (LAMMPS caps it at 0), and without a cap the contact
   // sticks throughout: nothing to switch.
-  const bool switches = data.model->friction != 0.0 && !data.model->uncapped;
-  g[1] = switches ? data.model->switch_function(s, data.mode, data.sign) : 1.0;
-  if (switches) track_switch_distance(data, sigma, s, g[1]);
-  if (data.model->rescales_on_unloading()) g[2] = s[detail::kOverlapRate];  // registered only then
-  return 0;
+  const bool switches = model.friction != 0.0 && !model.uncapped;
+  system.events.push_back({"switch",
+                           [&model, &automaton, switches](const driver::DriverPoint& p) {
+                             if (!switches) return 1.0;
+                             const State s = state_at(p);
+                             const double g = model.switch_function(s, automaton.mode, automaton.sign);
+                             track_switch_distance(model, automaton, p.t, s, g);
+                             return g;
+                           },
+                           switch_direction(model, automaton.mode), false});
+  // Only where it can fire: each event costs every root evaluation.
+  if (model.rescales_on_unloading()) {
+    system.events.push_back({"max_compression",
+                             [](const driver::DriverPoint& p) { return p.y[detail::kOverlapRate]; },
+                             Crossing::falling, false});
+  }
+  return system;
+}
+
+// Adams with the fixed-point corrector, absolute tolerances on the natural scales: the overlap and its rate
+// are O(1), the tangential state is O(max(1, |s|)); the integrated state is (u, x', ξ, u_t, R1ω1, R2ω2, θ,
+// τ).
+driver::DriverSettings contact_settings(const NaturalModel& model, double rtol, double tangential_scale) {
+  driver::DriverSettings settings;
+  settings.relative_tolerance = rtol;
+  settings.absolute_tolerance.assign(detail::kStateSize + 1, 1e-3 * rtol);
+  for (const int i : {detail::kDisplacement, detail::kTangential, detail::kSpinFirst, detail::kSpinSecond}) {
+    settings.absolute_tolerance[static_cast<std::size_t>(i)] = 1e-3 * rtol * tangential_scale;
+  }
+  settings.stop = kStopTime;
+  settings.max_steps = kMaxSteps;
+  settings.variable_name = "sigma";
+  // Not for the _rescale variants: with these settings their error fell unevenly with the rtol
+  // (mindlin_rescale, wall, 12.4°, 300 rad/s of backspin: 9.6e-9 off at rtol 1e-11, 2.9e-10 at 1e-12),
+  // with CVODE's own 3.6e-10 and 1.4e-11.
+  if (!model.rescales_on_unloading()) {
+    settings.step_growth_threshold = kStepGrowthThreshold;
+    settings.max_order = kAdamsMaxOrder;
+  }
+  return settings;
 }
 
 NaturalModel natural_model(const ObliqueGeometry& geometry, const NormalForce& normal,
@@ -323,16 +360,108 @@ double effective_radius_m(const ObliqueGeometry& geometry) {
   return r1 * r2 / (r1 + r2);
 }
 
-ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& normal,
-                            const TangentialForce& tangential, const ImpactVelocity& impact,
-                            const ObliqueOptions& options) {
-  validate(geometry, normal, tangential, impact, options);
-  const double speed = impact.normal_m_s;
-  const NaturalModel model =
-      natural_model(geometry, normal, tangential, speed, options.end, options.sticking_limit);
-  const double time_s =
-      physical_time_scale_s(normal.kind, normal.stiffness, effective_mass_kg(geometry), speed);
+namespace {
 
+// Switches in a row that left no time in their mode: LIGGGHTS's and YADE's rule (the damping added only below
+// the cap, so the force jumps at a switch) can make each mode drive the contact into the other, a sliding
+// mode on the cap that their codes follow by alternating capped and uncapped steps and that the two modes
+// here do not represent.
+constexpr int kChatterSwitches = 50;
+
+// The stick/slip automaton: at each switch event it changes the mode (or finds the event no switch) and
+// restarts the integration; it adds up the time in each mode and the switches into the result.
+class StickSlip {
+ public:
+  StickSlip(const NaturalModel& model, Automaton& automaton, const ObliqueOptions& options,
+            const TangentialForce& tangential, double time_s, ObliqueResult& result)
+      : model_(model),
+        automaton_(automaton),
+        options_(options),
+        tangential_(tangential),
+        time_s_(time_s),
+        result_(result) {
+    result_.switches.push_back({0.0, automaton_.mode});
+  }
+
+  // The restart hook of the event driver.
+  driver::AfterEvent operator()(driver::DriverStep& step, std::vector<driver::EventSpec>& events) {
+    if (!step.event(kSwitch)) return restart(step, true);  // the maximal compression of a _rescale variant
+    State y = state_of(step);
+    // Restarted in the same mode: the function, now just below 0, rises through it, which is no event.
+    if (!model_.leaving_is_consistent(y, automaton_.mode, automaton_.sign)) return restart(step, false);
+    end_mode(step.tau);
+    automaton_.margin = std::min(automaton_.margin, automaton_.phase_largest);
+    // A switch: into slip in the direction of the trial force, or into stick from the capped force.
+    if (automaton_.mode == ContactMode::stick) {
+      automaton_.mode = ContactMode::slip;
+      automaton_.sign = model_.cap_test_force(y) < 0.0 ? -1.0 : 1.0;
+    } else {
+      State stuck = y;
+      if (model_.has_history()) stuck[detail::kDisplacement] = model_.displacement_at_cap(y, automaton_.sign);
+      if (model_.stick_falls_back_onto_cap(stuck, automaton_.sign)) {
+        // A sliding mode on the cap: the slip goes on (at the capped force, a definite outcome where
+        // switching would chatter), and the result says that it is not the code's.
+        if (!result_.slides_on_cap) result_.cap_sliding_time_s = step.tau * time_s_;
+        result_.slides_on_cap = true;
+        return restart(step, false);
+      }
+      automaton_.mode = ContactMode::stick;
+      std::copy(stuck.begin(), stuck.end(), step.y.begin());
+    }
+    events[kSwitch].direction = switch_direction(model_, automaton_.mode);
+    result_.switches.push_back({step.tau * time_s_, automaton_.mode});
+    return restart(step, false);
+  }
+
+  // The time in the mode that ends at τ (a switch or the end of the contact).
+  void end_mode(double tau) {
+    instant_switches_ = tau - mode_start_ < 1e-9 ? instant_switches_ + 1 : 0;
+    (automaton_.mode == ContactMode::stick ? result_.stick_time_s : result_.slip_time_s) +=
+        (tau - mode_start_) * time_s_;
+    mode_start_ = tau;
+  }
+
+ private:
+  static State state_of(const driver::DriverStep& step) {
+    State y{};
+    std::copy(step.y.begin(), step.y.end(), y.begin());
+    return y;
+  }
+
+  // Every restart counts against max_switches; a phase that goes on keeps its watch on the switch function.
+  driver::AfterEvent restart(const driver::DriverStep& step, bool phase_goes_on) {
+    ++restarts_;
+    if (instant_switches_ > kChatterSwitches && model_.caps_elastic_force()) {
+      throw NumericalFailure(fmt::format(
+          "the contact chatters between stick and slip at t = {:.6g} s: with {}'s damping added below the "
+          "cap "
+          "only, each mode drives it into the other there (the code alternates capped and uncapped steps), "
+          "a limit not modelled yet; less tangential damping avoids it",
+          step.tau * time_s_, tangential_model(tangential_.kind).code_title));
+    }
+    if (restarts_ > options_.max_switches) {
+      throw NumericalFailure(fmt::format("the contact crossed the stick/slip boundary more than {} times",
+                                         options_.max_switches));
+    }
+    if (!phase_goes_on) automaton_.new_phase();
+    return driver::AfterEvent::restart;
+  }
+
+  const NaturalModel& model_;
+  Automaton& automaton_;
+  const ObliqueOptions& options_;
+  const TangentialForce& tangential_;
+  double time_s_;
+  ObliqueResult& result_;
+  double mode_start_ = 0.0;
+  int restarts_ = 0;
+  int instant_switches_ = 0;
+};
+
+// The state at first contact in natural units: τ0 on the leading terms, the history of the model.
+State first_contact(const ObliqueGeometry& geometry, const ImpactVelocity& impact,
+                    const NaturalModel& model) {
+  const double speed = impact.normal_m_s;
   State y{};
   y[detail::kOverlap] = kStartTime;
   y[detail::kOverlapRate] = 1.0;
@@ -340,145 +469,14 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
   y[detail::kSpinFirst] = geometry.first.radius_m * impact.spin_first_rad_s / speed;
   y[detail::kSpinSecond] =
       geometry.second ? geometry.second->radius_m * impact.spin_second_rad_s / speed : 0.0;
-  const double slip0 = NaturalModel::slip_velocity(y);
-  y[detail::kDisplacement] = model.initial_history(y, slip0);
-  CallbackData data{&model, ContactMode::stick, 1.0, options.end};
-  initial_mode(model, y, data.mode, data.sign);
+  y[detail::kDisplacement] = model.initial_history(y, NaturalModel::slip_velocity(y));
+  return y;
+}
 
-  // Absolute tolerances on the natural scales: the overlap and its rate are O(1), the tangential state is
-  // O(max(1, |s|)).
-  const double tangential_scale = std::max({1.0, std::abs(slip0), std::abs(y[detail::kTangential])});
-  const double rtol = options.relative_tolerance;
-  sundials::Context context;
-  sundials::Vector state = sundials::make_small_vector(kCvodeSize, context);
-  sundials::Vector atol = sundials::make_small_vector(kCvodeSize, context);
-  double* a = N_VGetArrayPointer(atol.get());
-  a[detail::kOverlap] = a[detail::kOverlapRate] = a[kTau] = 1e-3 * rtol;
-  for (const int i : {detail::kDisplacement, detail::kTangential, detail::kSpinFirst, detail::kSpinSecond}) {
-    a[i] = 1e-3 * rtol * tangential_scale;
-  }
-  a[detail::kTurn] = 1e-3 * rtol;
-  sundials::NonlinearSolver corrector = sundials::make_small_fixed_point_solver(state, context);
-  sundials::CvodeMemory memory(CV_ADAMS, context);
-  void* mem = memory.get();
-
-  ObliqueResult result;
-  result.switches.push_back({0.0, data.mode});
-  double* raw = N_VGetArrayPointer(state.get());
-  double sigma = 0.0;  // CVODE's independent variable
-  double t = kStartTime;
-  double mode_start = 0.0;
-  bool initialized = false;
-  bool phase_goes_on = false;  // a restart within a phase (the maximal compression), not a switch
-  // Switches in a row that left no time in their mode: LIGGGHTS's and YADE's rule (the damping added only
-  // below the cap, so the force jumps at a switch) can make each mode drive the contact into the other, a
-  // sliding mode on the cap that their codes follow by alternating capped and uncapped steps and that the
-  // two modes here do not represent.
-  constexpr int kChatterSwitches = 50;
-  int instant_switches = 0;
-  for (int switches = 0;; ++switches) {
-    if (instant_switches > kChatterSwitches && model.caps_elastic_force()) {
-      throw NumericalFailure(fmt::format(
-          "the contact chatters between stick and slip at t = {:.6g} s: with {}'s damping added below the "
-          "cap "
-          "only, each mode drives it into the other there (the code alternates capped and uncapped steps), "
-          "a limit not modelled yet; less tangential damping avoids it",
-          t * time_s, tangential_model(tangential.kind).code_title));
-    }
-    if (switches > options.max_switches) {
-      throw NumericalFailure(fmt::format("the contact crossed the stick/slip boundary more than {} times",
-                                         options.max_switches));
-    }
-    // The τ-form state back into CVODE's (only ξ changes at a switch; u stays as integrated).
-    std::copy(y.begin() + 1, y.end(), raw + 1);
-    if (!initialized) {
-      raw[0] = model.law.smooth_variable(y[detail::kOverlap]);
-      raw[kTau] = t;
-      sundials::check_flag(CVodeInit(mem, right_hand_side, sigma, state.get()), "CVodeInit");
-      sundials::check_flag(CVodeSetUserData(mem, &data), "CVodeSetUserData");
-      sundials::check_flag(CVodeSetNonlinearSolver(mem, corrector.get()), "CVodeSetNonlinearSolver");
-      sundials::check_flag(CVodeSVtolerances(mem, rtol, atol.get()), "CVodeSVtolerances");
-      sundials::check_flag(CVodeSetMaxNumSteps(mem, kMaxSteps), "CVodeSetMaxNumSteps");
-      sundials::check_flag(CVodeSetStopTime(mem, kStopTime), "CVodeSetStopTime");
-      // The third function only where it can fire: each one costs every root evaluation.
-      sundials::check_flag(
-          CVodeRootInit(mem, model.rescales_on_unloading() ? kRootCount : kRootCount - 1, root_functions),
-          "CVodeRootInit");
-      // Not for the _rescale variants: with these settings their error fell unevenly with the rtol
-      // (mindlin_rescale, wall, 12.4°, 300 rad/s of backspin: 9.6e-9 off at rtol 1e-11, 2.9e-10 at 1e-12),
-      // with CVODE's own 3.6e-10 and 1.4e-11.
-      if (!model.rescales_on_unloading()) {
-        sundials::check_flag(CVodeSetEtaFixedStepBounds(mem, 0.0, kStepGrowthThreshold),
-                             "CVodeSetEtaFixedStepBounds");
-        sundials::check_flag(CVodeSetMaxOrd(mem, kAdamsMaxOrder), "CVodeSetMaxOrd");
-      }
-      initialized = true;
-    } else {
-      sundials::check_flag(CVodeReInit(mem, sigma, state.get()), "CVodeReInit");
-    }
-    // The end is a downward crossing; a stick ends where its function falls through 0, a slip of a history
-    // model where h rises through 0, a slip of linear_nohistory where g|s| - C falls through 0.
-    if (!phase_goes_on) {
-      data.before_previous = data.previous = -1.0;  // a new phase
-      data.phase_largest = 0.0;
-      data.last_sample = -HUGE_VAL;
-    }
-    phase_goes_on = false;
-    std::array<int, kRootCount> directions{-1, data.mode == ContactMode::slip && model.has_history() ? 1 : -1,
-                                           -1};
-    sundials::check_flag(CVodeSetRootDirection(mem, directions.data()), "CVodeSetRootDirection");
-
-    const int flag = CVode(mem, kStopTime, state.get(), &sigma, CV_NORMAL);
-    t = raw[kTau];
-    if (flag < 0) {
-      throw NumericalFailure(fmt::format("CVODE failed at tau={} with flag {} ({})", t, flag,
-                                         memory.last_error().empty() ? "no message" : memory.last_error()));
-    }
-    if (flag != CV_ROOT_RETURN) {
-      throw NumericalFailure(fmt::format("the contact did not end before sigma={}", kStopTime));
-    }
-    y = read(model.law, state.get());
-    std::array<int, kRootCount> found{};
-    sundials::check_flag(CVodeGetRootInfo(mem, found.data()), "CVodeGetRootInfo");
-    if (found[0] == 0 && found[1] == 0) {
-      // The maximal compression of a _rescale variant: CVODE restarts there, in the same phase.
-      result.stats += sundials::cvode_phase_stats(mem);
-      phase_goes_on = true;
-      continue;
-    }
-    if (found[0] == 0 && !model.leaving_is_consistent(y, data.mode, data.sign)) {
-      // Restarted in the same mode: the function, now just below 0, rises through it, which is no event.
-      result.stats += sundials::cvode_phase_stats(mem);
-      continue;
-    }
-    result.stats += sundials::cvode_phase_stats(mem);
-    const double elapsed_s = (t - mode_start) * time_s;
-    instant_switches = t - mode_start < 1e-9 ? instant_switches + 1 : 0;
-    (data.mode == ContactMode::stick ? result.stick_time_s : result.slip_time_s) += elapsed_s;
-    mode_start = t;
-    if (found[0] != 0) break;
-    data.margin = std::min(data.margin, data.phase_largest);
-
-    // A switch: into slip in the direction of the trial force, or into stick from the capped force.
-    if (data.mode == ContactMode::stick) {
-      data.mode = ContactMode::slip;
-      data.sign = model.cap_test_force(y) < 0.0 ? -1.0 : 1.0;
-    } else {
-      State stuck = y;
-      if (model.has_history()) stuck[detail::kDisplacement] = model.displacement_at_cap(y, data.sign);
-      if (model.stick_falls_back_onto_cap(stuck, data.sign)) {
-        // A sliding mode on the cap: the slip goes on (at the capped force, a definite outcome where
-        // switching would chatter), and the result says that it is not the code's.
-        if (!result.slides_on_cap) result.cap_sliding_time_s = t * time_s;
-        result.slides_on_cap = true;
-        continue;
-      }
-      data.mode = ContactMode::stick;
-      y = stuck;
-    }
-    result.switches.push_back({t * time_s, data.mode});
-  }
-
+// The result from the state at the end of the contact.
+void write_outcome(const ObliqueGeometry& geometry, const ImpactVelocity& impact, const State& y,
+                   double slip0, ObliqueResult& result) {
+  const double speed = impact.normal_m_s;
   // Back in the frame of the impact (normal n0, tangent t0): the line of centres has turned by θ, so the
   // relative velocity -δ' n + u t has components -δ' cos θ - u sin θ along n0 and u cos θ - δ' sin θ along
   // t0.
@@ -500,9 +498,43 @@ ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& 
   result.impact_angle_rad = std::atan2(impact.tangential_m_s, speed);
   result.rebound_angle_rad = std::atan2(result.tangential_velocity_m_s, result.normal_velocity_m_s);
   result.impulse_ratio = (tangential_after - impact.tangential_m_s / speed) / (1.0 + separation);
-  result.contact_time_s = t * time_s;
-  result.closest_switch_approach = data.closest;
-  result.switch_margin = data.margin;
+}
+
+}  // namespace
+
+ObliqueResult solve_oblique(const ObliqueGeometry& geometry, const NormalForce& normal,
+                            const TangentialForce& tangential, const ImpactVelocity& impact,
+                            const ObliqueOptions& options) {
+  validate(geometry, normal, tangential, impact, options);
+  const double speed = impact.normal_m_s;
+  const NaturalModel model =
+      natural_model(geometry, normal, tangential, speed, options.end, options.sticking_limit);
+  const double time_s =
+      physical_time_scale_s(normal.kind, normal.stiffness, effective_mass_kg(geometry), speed);
+
+  State y = first_contact(geometry, impact, model);
+  const double slip0 = NaturalModel::slip_velocity(y);
+  Automaton automaton;
+  initial_mode(model, y, automaton.mode, automaton.sign);
+  const double tangential_scale = std::max({1.0, std::abs(slip0), std::abs(y[detail::kTangential])});
+
+  driver::EventDriver driver(contact_system(model, automaton, options.end),
+                             contact_settings(model, options.relative_tolerance, tangential_scale),
+                             driver::Smoothing{&model.law});
+  ObliqueResult result;
+  StickSlip stick_slip(model, automaton, options, tangential, time_s, result);
+  driver.start(kStartTime, y.data());
+  const driver::DriverStep end =
+      driver.run([&](driver::DriverStep& step) { return stick_slip(step, driver.events()); });
+  if (end.reached_stop)
+    throw NumericalFailure(fmt::format("the contact did not end before sigma={}", kStopTime));
+  stick_slip.end_mode(end.tau);
+  result.stats = driver.stats();
+  std::copy(end.y.begin(), end.y.end(), y.begin());
+  write_outcome(geometry, impact, y, slip0, result);
+  result.contact_time_s = end.tau * time_s;
+  result.closest_switch_approach = automaton.closest;
+  result.switch_margin = automaton.margin;
   return result;
 }
 

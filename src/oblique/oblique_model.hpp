@@ -2,7 +2,7 @@
 #pragma once
 // The oblique contact in the natural units of its normal law (time T, length v_n T, velocity v_n, force
 // m* v_n/T; ContactLaw::physical): the state, the forces of each mode and the root functions of the switches.
-// Private to the oblique module (solve_oblique's CVODE driver evaluates it).
+// Private to the oblique module (solve_oblique's system for the event driver evaluates it).
 //
 // The stick/slip switches are those of LAMMPS's step (pair_granular.cpp:478-533) as dt -> 0:
 //  * stick -> slip where the trial force -κξ - g s (history) or -g s (no history) reaches the cap C = μ|f_n|;

@@ -147,7 +147,7 @@ Vector make_small_vector(sunindextype length, const Context& context) {
     Loops<3>::install(v->ops);
   } else if (length == 4) {  // the Sundman form's state (src/cvode/cvode_integrator.hpp)
     Loops<4>::install(v->ops);
-  } else if (length == 8) {  // the oblique contact's (src/oblique/oblique_contact.cpp)
+  } else if (length == 8) {  // the oblique contact's (oblique_contact.cpp, via the event driver)
     Loops<8>::install(v->ops);
   } else {
     Loops<0>::install(v->ops);
