@@ -84,6 +84,16 @@ gas_deck::GasDeckRequest deck_request(const GasDeckOptions& o, const GasOptions&
   r.particles = o.particles;
   r.seed = o.seed;
   r.max_eps_error = o.max_eps_error;
+  if (const std::optional<gas::Thermostat> thermostat = thermostat_of(gas)) {
+    if (thermostat->kind != gas::ThermostatKind::langevin) {
+      throw InvalidInput(
+          "--deck and --compare drive the gas with LAMMPS's fix langevin: give --thermostat langevin (white "
+          "noise is its limit of a long --bath-time at fixed --bath-temperature/--bath-time)");
+    }
+    const gas::SteadyState steady = gas::steady_state({theory, *thermostat});
+    r.bath = gas_deck::DeckBath{thermostat->bath_temperature_j, thermostat->bath_time_s,
+                                steady.relaxation_time_s, o.seed};
+  }
   return r;
 }
 
