@@ -12,6 +12,7 @@
 #include "cli/common/output_files.hpp"
 #include "cli/common/output_guards.hpp"
 #include "cli/common/stop_signals.hpp"
+#include "cli/gas/driven_compare_report.hpp"
 #include "cli/gas/gas_compare_report.hpp"
 #include "cli/gas/gas_deck_files.hpp"
 #include "restitution/errors.hpp"
@@ -139,6 +140,22 @@ int run_gas_deck(const GasDeckOptions& o, const GasOptions& gas, bool json) {
     const StopSignals signals;
     deck = write_gas_deck(*paths, request);
     throw_if_interrupted();
+  }
+  if (request.bath && !o.compare.empty()) {
+    const std::optional<gas::Thermostat> thermostat = thermostat_of(gas);
+    const gas_deck::DrivenComparison driven = compare_driven_logs(
+        o.compare, gas_deck::gas_setup(request), *thermostat, request.bath->relaxation_time_s);
+    if (json) {
+      JsonWriter w;
+      w.begin_object();
+      if (deck) write_gas_deck_json(w, *paths, *deck);
+      write_driven_comparison_json(w, driven);
+      fmt::print("{}\n", finish_json_document(w));
+    } else {
+      if (deck) print_gas_deck_text(*paths, *deck, request);
+      print_driven_comparison_text(driven);
+    }
+    return 0;
   }
   std::optional<gas_deck::GasComparison> comparison;
   std::string plot_warning;
