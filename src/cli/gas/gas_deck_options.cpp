@@ -124,6 +124,11 @@ int run_gas_deck(const GasDeckOptions& o, const GasOptions& gas, bool json) {
     throw InvalidInput(fmt::format("--compare takes at most {} logs (a deck's two runs are two), got {}",
                                    kMaxComparedLogs, o.compare.size()));
   const gas_deck::GasDeckRequest request = deck_request(o, gas);
+  if (request.bath && o.compare_output) {
+    throw InvalidInput(
+        "--compare-output: the driven gas's comparison writes no CSV or plot; --json gives its curves "
+        "(driven_comparison), and scripts/plots/driven_gas_runs.py draws them");
+  }
   std::optional<GasDeckPaths> paths;
   if (o.deck) paths = gas_deck_paths(*o.deck);
   if (o.compare_output) check_output_folder(*o.compare_output);
