@@ -94,6 +94,38 @@ TEST(GasScene, EvolvingSonineCoefficientIsAColumnOfTheSectionsTable) {
   EXPECT_NE(header.find(",a2"), std::string::npos) << header;
 }
 
+// The driven gas (issue 49): the section's thermostat keys give the command's steady state in summary.json.
+TEST(GasScene, ThermostatKeysDriveTheGasToItsSteadyState) {
+  const std::string driven = kHead + kGas + "eps = 0.8\nvelocity = 2.0\nthermostat = \"langevin\"\n";
+  const Scene s = parse_scene(driven + "bath_temperature = 1e-3\nbath_time = 0.5\n", "gas.toml");
+  EXPECT_EQ(s.gases[0].thermostat, "langevin");
+  EXPECT_EQ(*s.gases[0].bath_temperature_j, 1e-3);
+  EXPECT_EQ(*s.gases[0].bath_time_s, 0.5);
+  EXPECT_NE(error_of(kHead + kGas + "thermostat = \"shaker\"\n").find("thermostat"), std::string::npos);
+  EXPECT_NE(error_of(driven + "bath_time = -1\n").find("bath_time"), std::string::npos);
+  const test_support::TempFolder folder;
+  const std::filesystem::path scene = folder.path / "gas.toml";
+  std::ofstream(scene) << driven + "bath_temperature = 1e-3\nbath_time = 0.5\n";
+  const auto outcome =
+      test_support::run_cli("run " + scene.string() + " --out " + (folder.path / "out").string());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const auto summary =
+      nlohmann::json::parse(test_support::slurp((folder.path / "out" / "summary.json").string()));
+  const auto command = nlohmann::json::parse(
+      test_support::run_cli("gas --radius 0.005 --density 920 --eps 0.8 --velocity 2 --packing-fraction 0.1 "
+                            "--rms-speed 1 --haff-times 100 --thermostat langevin --bath-temperature 1e-3 "
+                            "--bath-time 0.5 --json")
+          .out);
+  EXPECT_EQ(summary.at("gas_g").at("steady_temperature_j"), command.at("steady_temperature_j"));
+  EXPECT_EQ(summary.at("gas_g").at("steady_a2"), command.at("steady_a2"));
+  // A bath without the thermostat's kind is refused by name.
+  std::ofstream(scene) << kHead + kGas + "eps = 0.8\nvelocity = 2.0\npower = 1.0\n";
+  const auto refused =
+      test_support::run_cli("run " + scene.string() + " --out " + (folder.path / "o2").string());
+  EXPECT_NE(refused.status, 0);
+  EXPECT_NE(refused.err.find("thermostat"), std::string::npos) << refused.err;
+}
+
 TEST(GasScene, SceneWritesBothCurves) {
   const test_support::TempFolder folder;
   const auto outcome = test_support::run_cli(std::string("run ") + RESTITUTION_SOURCE_DIR +

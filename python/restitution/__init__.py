@@ -528,7 +528,8 @@ def _optional_real(name, value):
 def gas(*, radius=None, density=None, mass=None, eps=None, velocity=None, dissipative_constant=None,
         young_modulus=None, poisson_ratio=None, law="viscoelastic-hertz", end="delayed-recovery",
         packing_fraction=None, rms_speed=None, temperature=None, duration=None, haff_times=None, first_time=0.0,
-        points_per_decade=20, a2=None, collision_rate_factor=1.0, tolerance=_TOLERANCE):
+        points_per_decade=20, a2=None, collision_rate_factor=1.0, tolerance=_TOLERANCE, thermostat=None,
+        bath_temperature=None, bath_time=None, power=None):
     """The freely cooling granular gas of these spheres in its homogeneous cooling state (docs/gas.md), as
     `restitution gas` computes it: T(t) from the kinetic theory with the law's exact eps(v), beside Haff's law.
 
@@ -565,6 +566,11 @@ def gas(*, radius=None, density=None, mass=None, eps=None, velocity=None, dissip
     tolerance : float
         Accuracy of each eps solve of a law without a fast table, and of the calibration: in [1e-11, 1e-2] for
         every law.
+    thermostat : {"langevin", "white-noise"}, optional
+        The driven gas (docs/gas.md, "The driven gas"): a Langevin bath (LAMMPS's fix langevin) of
+        bath_temperature T_b [J, energy units like temperature] and drag time bath_time tau_b [s], or white
+        noise putting in power [W] per sphere. The curve is then the relaxation from T0 to the steady state.
+    bath_temperature, bath_time, power : float, optional
 
     Returns
     -------
@@ -574,7 +580,10 @@ def gas(*, radius=None, density=None, mass=None, eps=None, velocity=None, dissip
         "number_density_m3", "initial_temperature_j", "tau0_s", "haff_eps", "a2", "collision_rate_factor",
         "duration_s", and the curve as numpy arrays: "time_s", "temperature_j", "haff_temperature_j",
         "local_exponent", "cooling_rate_hz", "collision_frequency_hz", "collisions_per_particle",
-        "effective_eps" (and "a2" with a2="evolving").
+        "effective_eps" (and "a2" with a2="evolving"). With a thermostat also "thermostat" (a dict: "kind" and
+        "bath_temperature_j", "bath_time_s" or "power_w"), "steady_temperature_j", "steady_a2",
+        "relaxation_time_s", "driving_exponent" (d ln T_s / d ln T_b or P), "constant_eps_driving_exponent",
+        "steady_effective_eps", "steady_collision_frequency_hz" and "steady_power_w".
 
     Raises
     ------
@@ -597,15 +606,19 @@ def gas(*, radius=None, density=None, mass=None, eps=None, velocity=None, dissip
         ("poisson_ratio", poisson_ratio), ("eps", eps), ("velocity", velocity),
         ("dissipative_constant", dissipative_constant), ("packing_fraction", packing_fraction),
         ("rms_speed", rms_speed), ("temperature", temperature), ("duration", duration), ("haff_times", haff_times),
-        ("first_time", first_time), ("collision_rate_factor", collision_rate_factor))}
+        ("first_time", first_time), ("collision_rate_factor", collision_rate_factor),
+        ("bath_temperature", bath_temperature), ("bath_time", bath_time), ("power", power))}
     if numbers["first_time"] is None or numbers["collision_rate_factor"] is None:
         raise TypeError("first_time and collision_rate_factor must be real numbers")
     if isinstance(points_per_decade, bool) or not isinstance(points_per_decade, _numbers.Integral):
         raise TypeError(f"points_per_decade must be an int, got {type(points_per_decade).__name__}")
     if not (a2 is None or isinstance(a2, str)):
         a2 = _optional_real("a2", a2)
+    if thermostat is not None:
+        thermostat = _text("thermostat", thermostat)
     return _core.gas(**numbers, law=_text("law", law), end=_end(end),
-                     points_per_decade=int(points_per_decade), a2=a2, tolerance=_tolerance(tolerance))
+                     points_per_decade=int(points_per_decade), a2=a2, tolerance=_tolerance(tolerance),
+                     thermostat=thermostat)
 
 
 __all__.append("gas")

@@ -301,6 +301,10 @@ def gas(
     a2: Union[None, float, Literal["haff", "evolving"]] = ...,  # "evolving": the result's "a2" is an array
     collision_rate_factor: float = ...,
     tolerance: float = ...,
+    thermostat: Optional[Literal["langevin", "white-noise"]] = ...,  # the driven gas
+    bath_temperature: Optional[float] = ...,  # J (langevin)
+    bath_time: Optional[float] = ...,  # s (langevin)
+    power: Optional[float] = ...,  # W per sphere (white-noise)
 ) -> Dict[str, Any]: ...  # the keys of `restitution gas --json`, the curve as float64 arrays
 from os import PathLike
 from typing import Callable

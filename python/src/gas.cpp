@@ -68,11 +68,35 @@ py::dict cooling_dict(const gas::CoolingRequest& r, const gas::CoolingCurve& c) 
   return out;
 }
 
+// The driven gas's keys of `gas --json`: the thermostat and the steady state.
+void add_driving(py::dict& out, const gas::Thermostat& t, const gas::SteadyState& s) {
+  py::dict thermostat;
+  if (t.kind == gas::ThermostatKind::langevin) {
+    thermostat["kind"] = "langevin";
+    thermostat["bath_temperature_j"] = t.bath_temperature_j;
+    thermostat["bath_time_s"] = t.bath_time_s;
+  } else {
+    thermostat["kind"] = "white-noise";
+    thermostat["power_w"] = t.power_w;
+  }
+  out["thermostat"] = thermostat;
+  out["steady_temperature_j"] = s.temperature_j;
+  out["steady_a2"] = s.a2;
+  out["relaxation_time_s"] = s.relaxation_time_s;
+  out["driving_exponent"] = s.driving_exponent;
+  out["constant_eps_driving_exponent"] = s.constant_eps_driving_exponent;
+  out["steady_effective_eps"] = s.effective_eps;
+  out["steady_collision_frequency_hz"] = s.collision_frequency_hz;
+  out["steady_power_w"] = s.power_w;
+}
+
 py::dict cooling(Number radius, Number density, Number mass, Number young_modulus, Number poisson_ratio,
                  Number eps, Number velocity, Number dissipative_constant, const std::string& law,
                  const std::string& end, Number packing_fraction, Number rms_speed, Number temperature,
                  Number duration, Number haff_times, double first_time, int points_per_decade,
-                 const py::object& a2, double collision_rate_factor, double tolerance) {
+                 const py::object& a2, double collision_rate_factor, double tolerance,
+                 const std::optional<std::string>& thermostat, Number bath_temperature, Number bath_time,
+                 Number power) {
   gas::GasInputs in;
   in.radius_m = radius;
   in.density_kg_m3 = density;
@@ -94,12 +118,29 @@ py::dict cooling(Number radius, Number density, Number mass, Number young_modulu
   in.collision_rate_factor = collision_rate_factor;
   in.tolerance = tolerance;
   read_a2(a2, in);
-  const auto [request, curve] = without_gil([&] {
-    gas::CoolingRequest r = gas::cooling_request(in, gas::ArgumentStyle::keyword);
-    gas::CoolingCurve c = gas::cooling_curve(r);
-    return std::pair{std::move(r), std::move(c)};
+  in.thermostat = thermostat.value_or("");
+  in.bath_temperature_j = bath_temperature;
+  in.bath_time_s = bath_time;
+  in.power_w = power;
+  struct Result {
+    gas::CoolingRequest request;
+    std::optional<gas::Thermostat> thermostat;
+    gas::DrivenCurve curve;
+  };
+  const Result result = without_gil([&] {
+    Result out{gas::cooling_request(in, gas::ArgumentStyle::keyword),
+               gas::thermostat_of(in, gas::ArgumentStyle::keyword),
+               {}};
+    if (out.thermostat) {
+      out.curve = gas::driven_curve({out.request, *out.thermostat});
+    } else {
+      out.curve.curve = gas::cooling_curve(out.request);
+    }
+    return out;
   });
-  return cooling_dict(request, curve);
+  py::dict out = cooling_dict(result.request, result.curve.curve);
+  if (result.thermostat) add_driving(out, *result.thermostat, result.curve.steady);
+  return out;
 }
 
 }  // namespace
@@ -114,7 +155,10 @@ void bind_gas(py::module_& m) {
         py::arg("duration") = py::none(), py::arg("haff_times") = py::none(), py::arg("first_time") = 0.0,
         py::arg("points_per_decade") = gas::CoolingRequest{}.points_per_decade, py::arg("a2") = py::none(),
         py::arg("collision_rate_factor") = 1.0, py::arg("tolerance") = SolveOptions{}.tolerance,
-        "The cooling curve of the freely cooling gas (restitution.gas documents the arguments).");
+        py::arg("thermostat") = py::none(), py::arg("bath_temperature") = py::none(),
+        py::arg("bath_time") = py::none(), py::arg("power") = py::none(),
+        "The cooling curve of the freely cooling gas, or the driven gas's relaxation and steady state "
+        "(restitution.gas documents the arguments).");
 }
 
 }  // namespace restitution::python

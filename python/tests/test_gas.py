@@ -18,6 +18,9 @@ MATERIAL = dict(radius=0.005, density=920.0, young_modulus=1e8, poisson_ratio=0.
                 packing_fraction=0.1, temperature=1e-4, duration=1.0, points_per_decade=5, a2="haff")
 # The issue's gas with the evolving a2: its curve gains the array "a2", in place of the number.
 EVOLVING = dict(ISSUE, a2="evolving", haff_times=100)
+# The issue's gas driven (issue 49): a Langevin bath from a cold start, white noise with the evolving a2.
+LANGEVIN = dict(ISSUE, haff_times=10, thermostat="langevin", bath_temperature=1e-3, bath_time=0.5, rms_speed=0.1)
+WHITE_NOISE = dict(ISSUE, haff_times=10, thermostat="white-noise", power=1e-4, a2="evolving")
 
 
 def _options(arguments):
@@ -40,7 +43,8 @@ def _same(python_value, cli_value, key):
         assert python_value == cli_value, key
 
 
-@pytest.mark.parametrize("arguments", [ISSUE, MATERIAL, EVOLVING], ids=["issue", "material", "evolving"])
+@pytest.mark.parametrize("arguments", [ISSUE, MATERIAL, EVOLVING, LANGEVIN, WHITE_NOISE],
+                         ids=["issue", "material", "evolving", "langevin", "white-noise"])
 def test_gas_equals_the_command_lines_json(cli, arguments):
     expected = json.loads(cli("gas", *_options(arguments), "--json"))
     for build_field in ("restitution", "sundials"):  # what built the program: restitution.build_info() says it
@@ -119,3 +123,21 @@ def test_dissipative_constant_needs_the_elastic_data():
 def test_wrong_types_raise_type_errors(change):
     with pytest.raises(TypeError):
         restitution.gas(**{**ISSUE, **change})
+
+
+def test_white_noise_with_a_constant_eps_gives_van_noije_and_ernsts_a2():
+    # The linear dash-pot's eps does not depend on the speed; van Noije & Ernst (1998), white noise, d = 3.
+    eps = 0.8
+    g = restitution.gas(**{**WHITE_NOISE, "law": "linear-dashpot"})
+    expected = 16 * (1 - eps) * (1 - 2 * eps**2) / (241 - 177 * eps + 30 * eps**2 * (1 - eps))
+    assert g["steady_a2"] == pytest.approx(expected, abs=1e-9)  # eps of the calibration: 1e-10
+    assert g["constant_eps_driving_exponent"] == pytest.approx(2 / 3, rel=1e-12)
+
+
+def test_thermostat_arguments_are_named():
+    with pytest.raises(ValueError, match="bath_time"):
+        restitution.gas(**{**LANGEVIN, "bath_time": None})
+    with pytest.raises(ValueError, match="thermostat"):
+        restitution.gas(**{**ISSUE, "power": 1.0})
+    with pytest.raises(ValueError, match="thermostat"):
+        restitution.gas(**{**ISSUE, "thermostat": "shaker", "power": 1.0})

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "restitution_gas/cooling.hpp"
 #include "gas/collision_integral.hpp"
+#include "gas/cooling_checks.hpp"
 
 #include <fmt/core.h>
 
@@ -20,7 +21,6 @@ namespace {
 constexpr int kNodes = 12;           // Gauss–Legendre nodes per panel
 constexpr double kPanelWidth = 0.5;  // in x = ln(T₀/T): e^{x/2} and J are resolved to rounding
 constexpr double kLargestX = 690.0;  // T₀ e^{−x} stays a normal double for T₀ up to 1e0
-constexpr double kLargestA2 = 0.5;   // the first Sonine correction is a small one
 // With an evolving a₂ its relaxation is stiff when the dissipation is small (the rate in x, |∂F/∂a₂| with
 // F = da₂/dx, grows as 1/(1 − ε²)). Gauss collocation is A-stable but does not damp a fast transient (its
 // amplification, the (12, 12) Padé approximant of e^{λw}, tends to 1), so panels are narrowed to
@@ -29,57 +29,6 @@ constexpr double kLargestA2 = 0.5;   // the first Sonine correction is a small o
 // (Measured for a constant ε = 0.95 against the exact a₂: 9e-13 with 4, 4e-10 with 8.)
 constexpr double kLargestStiffness = 4.0;
 constexpr double kTransientDecay = 40.0;
-
-void require_positive(double value, const char* name, const char* unit) {
-  if (!std::isfinite(value) || value <= 0.0) {
-    throw InvalidInput(fmt::format("{} must be finite and > 0{}, got {}", name, unit, value));
-  }
-}
-
-void check(const CoolingRequest& r) {
-  require_positive(r.particles.mass_kg, "mass", " kg");
-  require_positive(r.particles.diameter_m, "diameter", " m");
-  const double phi = r.particles.packing_fraction;
-  if (!std::isfinite(phi) || phi <= 0.0 || phi >= 0.5) {
-    throw InvalidInput(fmt::format(
-        "packing_fraction must be in (0, 0.5) (a homogeneous fluid, below freezing), got {}", phi));
-  }
-  require_positive(r.initial_temperature_j, "initial_temperature", " J");
-  if (r.a2 && (!std::isfinite(*r.a2) || std::abs(*r.a2) > kLargestA2)) {
-    throw InvalidInput(
-        fmt::format("a2 must be finite with |a2| <= {} (a first correction), got {}", kLargestA2, *r.a2));
-  }
-  require_positive(r.collision_rate_factor, "collision_rate_factor", "");
-}
-
-// The output times: the requested ones, or the log-spaced grid.
-std::vector<double> output_times(const CoolingRequest& r, double duration_s) {
-  if (!r.times_s.empty()) {
-    for (std::size_t i = 0; i < r.times_s.size(); ++i) {
-      const double t = r.times_s[i];
-      if (!std::isfinite(t) || t <= 0.0 || (i > 0 && t <= r.times_s[i - 1])) {
-        throw InvalidInput(fmt::format("times must be finite, > 0 s and ascending; times[{}] = {}", i, t));
-      }
-    }
-    return r.times_s;
-  }
-  if (r.points_per_decade < 1 || r.points_per_decade > 1000) {
-    throw InvalidInput(fmt::format("points_per_decade must be in [1, 1000], got {}", r.points_per_decade));
-  }
-  const double first = r.first_time_s == 0.0 ? 1e-6 * duration_s : r.first_time_s;
-  if (!std::isfinite(first) || first <= 0.0 || first >= duration_s) {
-    throw InvalidInput(fmt::format("first_time must be finite, > 0 s and below the duration {} s, got {}",
-                                   duration_s, first));
-  }
-  const double decades = std::log10(duration_s / first);
-  const auto intervals = static_cast<int>(std::ceil(decades * r.points_per_decade - 1e-9));
-  std::vector<double> times;
-  // Counted down from the duration, so that a whole number of decades gives round times.
-  for (int i = 0; i <= intervals; ++i) {
-    times.push_back(duration_s * std::pow(10.0, -decades * (intervals - i) / intervals));
-  }
-  return times;
-}
 
 using Matrix = Eigen::Matrix<double, kNodes, kNodes>;
 
@@ -328,13 +277,13 @@ void check_haff_time(double log_tau0) {
 }  // namespace
 
 double log_haff_time(const CoolingRequest& request) {
-  check(request);
+  check_cooling_request(request);
   Gas gas(request);
   return checked_log_haff_time(gas, request);
 }
 
 HaffReference haff_reference(const CoolingRequest& request) {
-  check(request);
+  check_cooling_request(request);
   Gas gas(request);
   const double log_tau0 = checked_log_haff_time(gas, request);
   check_haff_time(log_tau0);
@@ -344,7 +293,7 @@ HaffReference haff_reference(const CoolingRequest& request) {
 }
 
 CoolingCurve cooling_curve(const CoolingRequest& request) {
-  check(request);
+  check_cooling_request(request);
   const double t0 = request.initial_temperature_j;
   CoolingCurve c;
   c.contact_correlation = contact_correlation(request.particles.packing_fraction);
@@ -355,11 +304,7 @@ CoolingCurve cooling_curve(const CoolingRequest& request) {
   c.tau0_s = haff.tau0_s;
   c.haff_eps = haff.eps;
   Gas gas(request);
-  if (!std::isfinite(request.duration) || request.duration <= 0.0) {
-    throw InvalidInput(fmt::format("duration must be finite and > 0, got {}", request.duration));
-  }
-  c.duration_s = request.duration_in_haff_times ? request.duration * c.tau0_s : request.duration;
-  if (!std::isfinite(c.duration_s)) throw InvalidInput("duration: too long to represent in seconds");
+  c.duration_s = duration_in_seconds(request, c.tau0_s);
   const std::vector<double> times = output_times(request, c.duration_s);
 
   const Rule rule;

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 #include "gas/collision_integral.hpp"
 #include "restitution/collision_solver.hpp"
@@ -207,6 +209,51 @@ CoolingRequest cooling_request(const GasInputs& in, ArgumentStyle style) {
     r.a2 = in.a2;
   }
   return r;
+}
+
+std::optional<Thermostat> thermostat_of(const GasInputs& in, ArgumentStyle style) {
+  const Rules name(style);
+  const bool langevin = in.thermostat == "langevin";
+  if (in.thermostat.empty() || (!langevin && in.thermostat != "white-noise")) {
+    if (!in.thermostat.empty()) {
+      throw InvalidInput(
+          fmt::format("{} must be langevin or white-noise, got '{}'", name("thermostat"), in.thermostat));
+    }
+    for (const auto& [value, keyword] :
+         {std::pair{in.bath_temperature_j, "bath_temperature"}, std::pair{in.bath_time_s, "bath_time"},
+          std::pair{in.power_w, "power"}}) {
+      if (value) throw InvalidInput(fmt::format("{} needs {}", name(keyword), name("thermostat")));
+    }
+    return std::nullopt;
+  }
+  Thermostat t;
+  t.kind = langevin ? ThermostatKind::langevin : ThermostatKind::white_noise;
+  const std::optional<double>& extra =
+      langevin ? in.power_w : (in.bath_temperature_j ? in.bath_temperature_j : in.bath_time_s);
+  if (extra) {
+    throw InvalidInput(fmt::format(
+        "{} {} takes {}", name("thermostat"), in.thermostat,
+        langevin
+            ? fmt::format("{} and {}, not {}", name("bath_temperature"), name("bath_time"), name("power"))
+            : fmt::format("{}, not {} or {}", name("power"), name("bath_temperature"), name("bath_time"))));
+  }
+  for (const auto& [value, keyword, unit] :
+       {std::tuple{langevin ? in.bath_temperature_j : in.power_w, langevin ? "bath_temperature" : "power",
+                   langevin ? " J" : " W"},
+        std::tuple{langevin ? in.bath_time_s : in.power_w, langevin ? "bath_time" : "power",
+                   langevin ? " s" : " W"}}) {
+    if (!value)
+      throw InvalidInput(fmt::format("{} {} needs {}", name("thermostat"), in.thermostat, name(keyword)));
+    name.require_positive(value, keyword, unit);
+  }
+  t.bath_temperature_j = in.bath_temperature_j.value_or(0.0);
+  t.bath_time_s = in.bath_time_s.value_or(0.0);
+  t.power_w = in.power_w.value_or(0.0);
+  if (!std::isfinite(t.heating_j_s())) {
+    throw InvalidInput(fmt::format("{} / {} overflows: the heating 2 T_b/tau_b is beyond the doubles",
+                                   name("bath_temperature"), name("bath_time")));
+  }
+  return t;
 }
 
 std::vector<CurveColumn> curve_columns(const CoolingCurve& c) {

@@ -31,6 +31,8 @@ constexpr int kCheckedDecadesOfSpeed = 3;
 constexpr double kClusteringGrowth = 2.0;
 // ... and reaches this fraction of the thermal speed.
 constexpr double kClusteringAmplitude = 0.1;
+// The driven gas has relaxed to e^-10 of its distance from the steady state after this many relaxation times.
+constexpr double kRelaxationTimes = 10.0;
 
 // The companion of the code's law lines: LAMMPS `damping tsuji` (`dem --constant-eps`), LIGGGHTS `model
 // hertz` given the coefficientRestitution that its recipe (Tsuji-type damping, speed-independent ε) turns
@@ -129,10 +131,25 @@ std::string data_file(const GasDeck& g, const std::vector<Vec3>& x, const std::v
   return fmt::to_string(out);
 }
 
+// fix langevin on the translation (omega no, its default: frictionless spheres do not couple rotation), and
+// the moments of the speed the driven gas's lines print.
+std::string bath_lines(const DeckBath& b) {
+  const double kelvin = b.temperature_j / kLammpsBoltzmannJK;
+  return fmt::format(
+      "# Langevin bath (fix_langevin.cpp of LAMMPS 20220106): drag -m v/damp and a random force uniform in\n"
+      "# [-1/2, 1/2] sqrt(24 k_B T_b m/(damp dt)) per component (variance 2 k_B T_b m/(damp dt)); zero yes\n"
+      "# subtracts the random forces' mean (no drift of the total momentum); T_b in K under units si:\n"
+      "# {} J / {} J/K\n"
+      "fix bath all langevin {} {} {} {} zero yes\n"
+      "variable speed2 atom vx*vx+vy*vy+vz*vz\nvariable speed4 atom v_speed2*v_speed2\n"
+      "compute moments all reduce ave v_speed2 v_speed4\n",
+      b.temperature_j, kLammpsBoltzmannJK, kelvin, kelvin, b.time_s, b.seed);
+}
+
 std::string input(const GasDeck& g, dem::Code code, std::string_view law,
                   const std::vector<std::string>& header, const std::vector<std::string>& prerequisites,
                   const std::vector<std::string>& lines, const std::string& data_file_name,
-                  const std::string& setup_line) {
+                  const std::string& setup_line, const std::optional<DeckBath>& bath) {
   std::string d;
   for (const auto& h : header) d += "# " + h + "\n";
   for (const auto& p : prerequisites) d += p + "\n";
@@ -145,7 +162,12 @@ std::string input(const GasDeck& g, dem::Code code, std::string_view law,
   d += "compute kinetic all ke\n";
   d += "variable temperature equal 2*c_kinetic/(3*atoms)\n";
   // thermo 0: output at the first and last step of each run only, which keeps c_kinetic current between runs.
-  d += "thermo_style custom step time dt c_kinetic\nthermo 0\n";
+  if (bath) {
+    d += bath_lines(*bath);
+    d += "thermo_style custom step time dt c_kinetic c_moments[1] c_moments[2]\nthermo 0\n";
+  } else {
+    d += "thermo_style custom step time dt c_kinetic\nthermo 0\n";
+  }
   d += fmt::format("variable dt0 equal {}\nvariable T0 equal {}\n", g.time_step_s, g.initial_temperature_j);
   const ScheduleIdioms idioms = schedule_idioms(code);
   d += idioms.definitions;
@@ -154,14 +176,52 @@ std::string input(const GasDeck& g, dem::Code code, std::string_view law,
                   idioms.time, idioms.temperature, idioms.timestep, idioms.step);
   // The gas of this run, before its first print: --compare checks a log against the command's gas.
   d += "print \"" + setup_line + "\"\n";
-  d += "timestep ${dt0}\nrun 0\n" + print;
+  std::string prints = print;
+  if (bath) {
+    d += fmt::format("print \"{} bath_temperature_j={} bath_time_s={} steady_from_s={}\"\n", kDrivenSetupTag,
+                     bath->temperature_j, bath->time_s, g.steady_from_s);
+    prints += fmt::format(
+        "print \"{} law={} time_s={} mean_v2_m2_s2=$(c_moments[1]:%.10g) "
+        "mean_v4_m4_s4=$(c_moments[2]:%.10g)\"\n",
+        kDrivenTag, law, idioms.time);
+  }
+  d += "timestep ${dt0}\nrun 0\n" + prints;
   for (double t : g.print_times_s) {
     // dt grows as the contact duration does, T^(-1/10); each block runs to the next scheduled time.
     d += "timestep " + idioms.next_timestep + "\n";
     d += idioms.steps_to(t);
-    d += print;
+    d += prints;
   }
   return d;
+}
+
+// The log-spaced times from a tenth of τ0 to the duration; with a bath up to kRelaxationTimes relaxation
+// times (at most half of it), and the steady part sampled evenly after.
+std::vector<double> print_schedule(const GasDeckRequest& r, GasDeck& g) {
+  const double relax_end =
+      r.bath ? std::min(0.5 * g.duration_s, kRelaxationTimes * r.bath->relaxation_time_s) : g.duration_s;
+  const double t_first = std::max(0.1 * g.haff_time_s, 50.0 * g.time_step_s);
+  std::vector<double> times;
+  for (int j = 0;; ++j) {
+    const double t = t_first * std::pow(10.0, static_cast<double>(j) / r.points_per_decade);
+    if (t >= relax_end * (1.0 - 1e-9)) break;
+    times.push_back(t);
+  }
+  times.push_back(relax_end);
+  if (!r.bath) return times;
+  g.steady_from_s = relax_end;
+  const double spacing = r.bath->relaxation_time_s / kSteadySamplesPerRelaxation;
+  const auto samples = static_cast<long>(std::ceil((g.duration_s - relax_end) / spacing));
+  if (samples < 40) {
+    throw InvalidInput(
+        fmt::format("--duration: the steady half of the run ({:.4g} s) holds fewer than 10 relaxation times "
+                    "({:.4g} s) to "
+                    "sample; give a longer one",
+                    g.duration_s - relax_end, r.bath->relaxation_time_s));
+  }
+  for (long k = 1; k <= samples; ++k)
+    times.push_back(relax_end + (g.duration_s - relax_end) * static_cast<double>(k) / samples);
+  return times;
 }
 
 }  // namespace
@@ -185,6 +245,12 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
         "of spheres, the law's pair lines and a log-spaced schedule in their input "
         "language)",
         dem::code_name(r.code), dem::code_list(" and ", [](const dem::CodeEntry& e) { return e.gas_deck; })));
+  }
+  if (r.bath && !dem::code_entry(r.code).immediate_variables) {
+    throw InvalidInput(
+        fmt::format("--thermostat with --deck: the driven gas's deck is written for LAMMPS only "
+                    "(its fix langevin and immediate variables), not --code {}",
+                    dem::code_name(r.code)));
   }
   lines_request.code = r.code;
   lines_request.end = r.end;
@@ -239,13 +305,7 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
         g.duration_s / g.haff_time_s, initial_amplitude, g.shear_mode_growth * initial_amplitude));
   }
 
-  const double t_first = std::max(0.1 * g.haff_time_s, 50.0 * g.time_step_s);
-  for (int j = 0;; ++j) {
-    const double t = t_first * std::pow(10.0, static_cast<double>(j) / r.points_per_decade);
-    if (t >= g.duration_s * (1.0 - 1e-9)) break;
-    g.print_times_s.push_back(t);
-  }
-  g.print_times_s.push_back(g.duration_s);
+  g.print_times_s = print_schedule(r, g);
 
   const auto positions = random_positions(r.particles, g.diameter_m, g.box_m, r.seed);
   const auto velocities = maxwellian_velocities(r.particles, r.rms_speed_m_s, r.seed);
@@ -273,6 +333,15 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
                   "set OMPI_MCA_mpi_yield_when_idle=1), from the folder of the data file",
                   gas_deck_command(r.code, "FILE", 1), gas_deck_command(r.code, "FILE", 4)),
       "checked on " + law.deck.checked_on};
+  if (r.bath) {
+    header.insert(
+        header.begin(),
+        fmt::format("driven by a Langevin bath T_b = {} J ({} K), tau_b = {} s: it relaxes over the first "
+                    "half of the run (log-spaced prints) and is sampled {} times per relaxation time "
+                    "({} s) in the second, the steady part from {} s",
+                    r.bath->temperature_j, r.bath->temperature_j / kLammpsBoltzmannJK, r.bath->time_s,
+                    kSteadySamplesPerRelaxation, r.bath->relaxation_time_s, g.steady_from_s));
+  }
   header.insert(header.end(), g.warnings.begin(), g.warnings.end());
 
   std::vector<std::string> law_header = header;
@@ -280,7 +349,7 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
                                                     g.dissipative_constant_s, end_name(r.end)));
   g.law_input =
       input(g, r.code, "viscoelastic", law_header, law.deck.prerequisites, law.deck.lines, data_file_name,
-            gas_log_setup_line(gas_log_setup(r, g.dissipative_constant_s, "viscoelastic")));
+            gas_log_setup_line(gas_log_setup(r, g.dissipative_constant_s, "viscoelastic")), r.bath);
   std::vector<std::string> companion_header = header;
   companion_header.insert(
       companion_header.begin(),
@@ -288,9 +357,9 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
                   "law's eps at {} m/s)",
                   dem::code_entry(r.code).companion_words, companion.eps_to_request, companion.eps,
                   companion.velocity_m_s));
-  g.constant_eps_input =
-      input(g, r.code, "constant-eps", companion_header, law.deck.prerequisites, companion.lines,
-            data_file_name, gas_log_setup_line(gas_log_setup(r, g.dissipative_constant_s, "constant-eps")));
+  g.constant_eps_input = input(
+      g, r.code, "constant-eps", companion_header, law.deck.prerequisites, companion.lines, data_file_name,
+      gas_log_setup_line(gas_log_setup(r, g.dissipative_constant_s, "constant-eps")), r.bath);
   return g;
 }
 

@@ -14,6 +14,7 @@
 // Each input prints one line per scheduled time, read back by `restitution gas --compare`:
 //   restitution-gas law=viscoelastic time_s=... temperature_j=... timestep_s=... step=...
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,6 +38,25 @@ inline constexpr std::size_t kMaxParticles = 10'000'000;
 // issue 35's gas): an Atoms and a Velocities line, each number in the shortest form that reads back the same.
 inline constexpr std::size_t kDataBytesPerSphere = 160;
 
+// The driven gas's deck (issue 49, docs/gas.md "The driven gas"): LAMMPS's `fix langevin` on the translation,
+// its moments printed on a line of their own at each scheduled time:
+//   restitution-driven law=... time_s=... mean_v2_m2_s2=... mean_v4_m4_s4=...
+// after one line restitution-driven-setup bath_temperature_j=... bath_time_s=... steady_from_s=...
+inline constexpr std::string_view kDrivenTag = "restitution-driven";
+inline constexpr std::string_view kDrivenSetupTag = "restitution-driven-setup";
+// Boltzmann's constant as LAMMPS 20220106 holds it under `units si` (src/update.cpp): fix langevin reads T_b
+// in K and multiplies it by this.
+inline constexpr double kLammpsBoltzmannJK = 1.3806504e-23;
+// The steady part is sampled this many times per relaxation time.
+inline constexpr int kSteadySamplesPerRelaxation = 4;
+
+struct DeckBath {
+  double temperature_j = 0.0;      // T_b [J]
+  double time_s = 0.0;             // τ_b, fix langevin's damp [s]
+  double relaxation_time_s = 0.0;  // of the theory's steady state: the spacing of the steady samples
+  std::uint64_t seed = 1;          // of fix langevin's random numbers
+};
+
 struct GasDeckRequest {
   dem::Code code = dem::kDefaultCode;  // lammps or liggghts
   Material material;                   // one radius (radius1 = radius2) and the density
@@ -51,6 +71,10 @@ struct GasDeckRequest {
   int points_per_decade = 10;   // of the log-spaced temperature schedule
   std::uint64_t seed = 1;
   double tolerance = kDefaultTolerance;
+  // A Langevin bath (the driven gas): the run relaxes over 10 relaxation times (at most half of the duration;
+  // log-spaced prints) and is sampled in the rest, its steady part (kSteadySamplesPerRelaxation prints per
+  // relaxation time).
+  std::optional<DeckBath> bath;
 };
 
 struct GasDeck {
@@ -71,6 +95,7 @@ struct GasDeck {
   double shear_critical_length_m = 0.0;
   double shear_mode_growth = 1.0;  // of the companion's longest shear mode over the duration
   std::vector<double> print_times_s;
+  double steady_from_s = 0.0;         // the driven gas: the first time of the steady part
   std::vector<std::string> warnings;  // e.g. the constant-ε gas will cluster
 };
 

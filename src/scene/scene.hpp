@@ -162,6 +162,9 @@ struct GasTask {
   std::optional<double> tolerance;     // default: the scene's
   std::string
       a2;  // the first Sonine coefficient as `gas --a2` takes it: "" (Maxwellian), a number, haff, evolving
+  // The driven gas, as `gas --thermostat` takes it: "" (freely cooling), langevin or white-noise.
+  std::string thermostat;
+  std::optional<double> bath_temperature_j, bath_time_s, power_w;  // [J], [s], [W per sphere]
   int line = 0;
 };
 

@@ -530,7 +530,23 @@ class Parser {
     g.collision_rate_factor = r.number("collision_rate_factor").value_or(g.collision_rate_factor);
     check_positive(r, "collision_rate_factor", {g.collision_rate_factor});
     g.tolerance = r.number("tolerance");
+    read_thermostat(r, g);
     return g;
+  }
+
+  // The driven gas's keys, as `gas --thermostat` takes them (the library checks which go together).
+  static void read_thermostat(TomlReader& r, GasTask& g) {
+    g.thermostat = r.text("thermostat").value_or("");
+    if (!g.thermostat.empty() && g.thermostat != "langevin" && g.thermostat != "white-noise") {
+      r.fail("thermostat",
+             "\"langevin\" (bath_temperature in J, bath_time in s) or \"white-noise\" (power in W)");
+    }
+    g.bath_temperature_j = r.number("bath_temperature");
+    g.bath_time_s = r.number("bath_time");
+    g.power_w = r.number("power");
+    if (g.bath_temperature_j) check_positive(r, "bath_temperature", {*g.bath_temperature_j});
+    if (g.bath_time_s) check_positive(r, "bath_time", {*g.bath_time_s});
+    if (g.power_w) check_positive(r, "power", {*g.power_w});
   }
 
   // `a2 = 0.02`, "haff" or "evolving", in the words of `gas --a2` (the library checks the number's range).

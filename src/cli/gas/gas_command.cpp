@@ -9,8 +9,10 @@
 #include <filesystem>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "cli/common/build_json.hpp"
@@ -38,7 +40,36 @@ struct GasCommandOptions {
   std::string format;  // figure formats besides the one --plot's extension names
 };
 
-std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const GasCommandOptions& o) {
+// The driven gas's thermostat and steady state (none: the freely cooling gas).
+struct Driving {
+  gas::Thermostat thermostat;
+  gas::SteadyState steady;
+};
+
+const char* thermostat_name(const gas::Thermostat& t) {
+  return t.kind == gas::ThermostatKind::langevin ? "langevin" : "white-noise";
+}
+
+void add_driving_json(JsonWriter& json, const Driving& d) {
+  json.key("thermostat").begin_object().field("kind", thermostat_name(d.thermostat));
+  if (d.thermostat.kind == gas::ThermostatKind::langevin) {
+    json.field("bath_temperature_j", d.thermostat.bath_temperature_j)
+        .field("bath_time_s", d.thermostat.bath_time_s);
+  } else {
+    json.field("power_w", d.thermostat.power_w);
+  }
+  json.end_object();
+  const gas::SteadyState& s = d.steady;
+  json.field("steady_temperature_j", s.temperature_j).field("steady_a2", s.a2);
+  json.field("relaxation_time_s", s.relaxation_time_s).field("driving_exponent", s.driving_exponent);
+  json.field("constant_eps_driving_exponent", s.constant_eps_driving_exponent);
+  json.field("steady_effective_eps", s.effective_eps)
+      .field("steady_collision_frequency_hz", s.collision_frequency_hz);
+  json.field("steady_power_w", s.power_w);
+}
+
+std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const GasCommandOptions& o,
+                      const std::optional<Driving>& driving) {
   JsonWriter json;
   json.begin_object();
   json.key("law").begin_object();
@@ -52,6 +83,7 @@ std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, 
   json.field("tau0_s", c.tau0_s).field("haff_eps", c.haff_eps);
   if (!c.a2_evolving) json.field("a2", c.a2);  // evolving: the array "a2" of the curve
   json.field("collision_rate_factor", r.collision_rate_factor).field("duration_s", c.duration_s);
+  if (driving) add_driving_json(json, *driving);
   for (const gas::CurveColumn& col : gas::curve_columns(c)) {
     json.key(col.name).begin_array();
     for (const double v : *col.values) json.value(v);
@@ -62,7 +94,23 @@ std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, 
   return finish_json_document(json) + "\n";
 }
 
-std::string text_table(const gas::CoolingRequest& r, const gas::CoolingCurve& c) {
+std::string driving_text(const Driving& d) {
+  const gas::SteadyState& s = d.steady;
+  const bool langevin = d.thermostat.kind == gas::ThermostatKind::langevin;
+  const std::string bath = langevin
+                               ? fmt::format("Langevin bath T_b = {:.10g} J, tau_b = {:.10g} s",
+                                             d.thermostat.bath_temperature_j, d.thermostat.bath_time_s)
+                               : fmt::format("white noise, power {:.10g} W per sphere", d.thermostat.power_w);
+  return fmt::format(
+      "# driven by {}: steady T_s = {:.10g} J, a2 = {:.6g} (stationary), relaxation time {:.6g} s, eps_eff "
+      "= {:.8g}, {:.6g} collisions/s, {:.6g} W per sphere dissipated\n"
+      "# d ln T_s / d ln {} = {:.6f} (a constant eps: {:.6f})\n",
+      bath, s.temperature_j, s.a2, s.relaxation_time_s, s.effective_eps, s.collision_frequency_hz, s.power_w,
+      langevin ? "T_b" : "P", s.driving_exponent, s.constant_eps_driving_exponent);
+}
+
+std::string text_table(const gas::CoolingRequest& r, const gas::CoolingCurve& c,
+                       const std::optional<Driving>& driving) {
   std::string out;
   auto line = std::back_inserter(out);
   fmt::format_to(line, "# restitution gas: {}\n", gas_law_text(r));
@@ -77,6 +125,7 @@ std::string text_table(const gas::CoolingRequest& r, const gas::CoolingCurve& c)
                                       : " (first Sonine correction, constant)";
   fmt::format_to(line, "# Haff's law tangent at t = 0: tau0 = {:.10g} s, eps = {:.10g}; a2 = {:g}{}\n",
                  c.tau0_s, c.haff_eps, c.a2, a2_kind);
+  if (driving) out += driving_text(*driving);
   fmt::format_to(line, "{:>13} {:>13} {:>10} {:>10} {:>9} {:>12} {:>12} {:>12} {:>10}{}\n", "time_s",
                  "temperature_j", "T/T0", "Haff T/T0", "exponent", "cooling_1/s", "collisions/s",
                  "collisions", "eps_eff", c.a2_evolving ? fmt::format(" {:>11}", "a2") : "");
@@ -116,10 +165,20 @@ int run_gas(const GasCommandOptions& o) {
   if (!o.plot.empty()) check_figure_file(o.plot, "--plot");
   if (!o.out.empty() && !o.plot.empty()) check_outputs_apart({{"--out", o.out}, {"--plot", o.plot}}, {});
   const gas::CoolingRequest request = cooling_request(o.gas);
-  const gas::CoolingCurve curve = gas::cooling_curve(request);
+  const std::optional<gas::Thermostat> thermostat = thermostat_of(o.gas);
+  std::optional<Driving> driving;
+  gas::CoolingCurve curve;
+  if (thermostat) {
+    gas::DrivenCurve driven = gas::driven_curve({request, *thermostat});
+    curve = std::move(driven.curve);
+    driving = Driving{*thermostat, driven.steady};
+  } else {
+    curve = gas::cooling_curve(request);
+  }
   write_files(request, curve, o);
   // One write: a stdout that cannot take it is reported once, as the I/O failure it is (main's flush).
-  const std::string text = o.json ? json_text(request, curve, o) : text_table(request, curve);
+  const std::string text =
+      o.json ? json_text(request, curve, o, driving) : text_table(request, curve, driving);
   std::fputs(text.c_str(), stdout);
   return 0;
 }
@@ -131,7 +190,8 @@ void add_gas_command(CLI::App& app, Action& chosen) {
   CLI::App* cmd = app.add_subcommand(
       "gas",
       "the freely cooling gas of these spheres from kinetic theory with the exact eps(v): T(t), Haff's "
-      "tau0, the local exponent (docs/gas.md)");
+      "tau0, the local exponent; with --thermostat the driven gas: steady T_s and a2, relaxation "
+      "(docs/gas.md)");
   add_gas_options(*cmd, o->gas);
   add_gas_deck_options(*cmd, o->deck);
   cmd->add_flag("--json", o->json,

@@ -12,6 +12,7 @@
 #include "cli/common/output_files.hpp"
 #include "cli/common/output_guards.hpp"
 #include "cli/common/stop_signals.hpp"
+#include "cli/gas/driven_compare_report.hpp"
 #include "cli/gas/gas_compare_report.hpp"
 #include "cli/gas/gas_deck_files.hpp"
 #include "restitution/errors.hpp"
@@ -84,6 +85,16 @@ gas_deck::GasDeckRequest deck_request(const GasDeckOptions& o, const GasOptions&
   r.particles = o.particles;
   r.seed = o.seed;
   r.max_eps_error = o.max_eps_error;
+  if (const std::optional<gas::Thermostat> thermostat = thermostat_of(gas)) {
+    if (thermostat->kind != gas::ThermostatKind::langevin) {
+      throw InvalidInput(
+          "--deck and --compare drive the gas with LAMMPS's fix langevin: give --thermostat langevin (white "
+          "noise is its limit of a long --bath-time at fixed --bath-temperature/--bath-time)");
+    }
+    const gas::SteadyState steady = gas::steady_state({theory, *thermostat});
+    r.bath = gas_deck::DeckBath{thermostat->bath_temperature_j, thermostat->bath_time_s,
+                                steady.relaxation_time_s, o.seed};
+  }
   return r;
 }
 
@@ -113,6 +124,11 @@ int run_gas_deck(const GasDeckOptions& o, const GasOptions& gas, bool json) {
     throw InvalidInput(fmt::format("--compare takes at most {} logs (a deck's two runs are two), got {}",
                                    kMaxComparedLogs, o.compare.size()));
   const gas_deck::GasDeckRequest request = deck_request(o, gas);
+  if (request.bath && o.compare_output) {
+    throw InvalidInput(
+        "--compare-output: the driven gas's comparison writes no CSV or plot; --json gives its curves "
+        "(driven_comparison), and scripts/plots/driven_gas_runs.py draws them");
+  }
   std::optional<GasDeckPaths> paths;
   if (o.deck) paths = gas_deck_paths(*o.deck);
   if (o.compare_output) check_output_folder(*o.compare_output);
@@ -129,6 +145,22 @@ int run_gas_deck(const GasDeckOptions& o, const GasOptions& gas, bool json) {
     const StopSignals signals;
     deck = write_gas_deck(*paths, request);
     throw_if_interrupted();
+  }
+  if (request.bath && !o.compare.empty()) {
+    const std::optional<gas::Thermostat> thermostat = thermostat_of(gas);
+    const gas_deck::DrivenComparison driven = compare_driven_logs(
+        o.compare, gas_deck::gas_setup(request), *thermostat, request.bath->relaxation_time_s);
+    if (json) {
+      JsonWriter w;
+      w.begin_object();
+      if (deck) write_gas_deck_json(w, *paths, *deck);
+      write_driven_comparison_json(w, driven);
+      fmt::print("{}\n", finish_json_document(w));
+    } else {
+      if (deck) print_gas_deck_text(*paths, *deck, request);
+      print_driven_comparison_text(driven);
+    }
+    return 0;
   }
   std::optional<gas_deck::GasComparison> comparison;
   std::string plot_warning;

@@ -48,9 +48,21 @@ void add_gas_options(CLI::App& command, GasOptions& o) {
       ->capture_default_str();
   command.add_option("--tolerance", o.tolerance, "accuracy of each eps solve of a law without a fast table")
       ->capture_default_str();
+  command
+      .add_option("--thermostat", o.thermostat,
+                  "drive the gas to a steady state: langevin (LAMMPS fix langevin: --bath-temperature, "
+                  "--bath-time) or white-noise (--power); default: the freely cooling gas")
+      ->check(CLI::IsMember({"langevin", "white-noise"}));
+  command.add_option("--bath-temperature", o.bath_temperature,
+                     "Langevin bath temperature T_b in J (energy units, as --temperature; LAMMPS reads "
+                     "T_b/k_B in K)");
+  command.add_option("--bath-time", o.bath_time, "Langevin drag time tau_b in s (LAMMPS's damp)");
+  command.add_option("--power", o.power, "white-noise driving: energy put in per sphere in W");
 }
 
-gas::CoolingRequest cooling_request(const GasOptions& o) {
+namespace {
+
+gas::GasInputs gas_inputs(const GasOptions& o) {
   if (o.material.radius2 || o.material.mass2) {
     throw InvalidInput("--radius2 and --mass2: the gas is of one kind of sphere (monodisperse)");
   }
@@ -89,7 +101,21 @@ gas::CoolingRequest cooling_request(const GasOptions& o) {
     }
     in.a2 = value;
   }
-  return gas::cooling_request(in, gas::ArgumentStyle::option);
+  in.thermostat = o.thermostat;
+  in.bath_temperature_j = o.bath_temperature;
+  in.bath_time_s = o.bath_time;
+  in.power_w = o.power;
+  return in;
+}
+
+}  // namespace
+
+gas::CoolingRequest cooling_request(const GasOptions& o) {
+  return gas::cooling_request(gas_inputs(o), gas::ArgumentStyle::option);
+}
+
+std::optional<gas::Thermostat> thermostat_of(const GasOptions& o) {
+  return gas::thermostat_of(gas_inputs(o), gas::ArgumentStyle::option);
 }
 
 }  // namespace restitution::cli

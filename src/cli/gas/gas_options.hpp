@@ -10,6 +10,7 @@
 
 #include "cli/common/material_options.hpp"
 #include "restitution_gas/cooling.hpp"
+#include "restitution_gas/driven.hpp"
 
 namespace restitution::cli {
 
@@ -26,10 +27,14 @@ struct GasOptions {
   std::string a2;  // empty: Maxwellian; a number, or "haff" (van Noije & Ernst's a₂ of the Haff ε)
   double collision_rate_factor = 1.0;
   double tolerance = SolveOptions{}.tolerance;
+  std::string thermostat;  // empty: freely cooling; langevin or white-noise (the driven gas)
+  std::optional<double> bath_temperature, bath_time, power;  // J, s; W per sphere
 };
 
 void add_gas_options(CLI::App& command, GasOptions& o);
 // The request the options describe; throws InvalidInput naming the option that is missing, extra or bad.
 gas::CoolingRequest cooling_request(const GasOptions& o);
+// The thermostat of --thermostat (none: the freely cooling gas); throws InvalidInput naming the option.
+std::optional<gas::Thermostat> thermostat_of(const GasOptions& o);
 
 }  // namespace restitution::cli

@@ -3,6 +3,8 @@
 
 #include <fmt/core.h>
 
+#include <utility>
+
 #include "cli/gas/gas_options.hpp"
 #include "cli/gas/gas_table.hpp"
 #include "restitution/errors.hpp"
@@ -39,6 +41,10 @@ GasOptions options_of(const scene::Scene& scene, const scene::GasTask& task) {
   o.first_time = task.first_time_s;
   o.collision_rate_factor = task.collision_rate_factor;
   o.tolerance = task.tolerance.value_or(scene.tolerance);
+  o.thermostat = task.thermostat;
+  o.bath_temperature = task.bath_temperature_j;
+  o.bath_time = task.bath_time_s;
+  o.power = task.power_w;
   return o;
 }
 
@@ -47,8 +53,16 @@ GasOptions options_of(const scene::Scene& scene, const scene::GasTask& task) {
 GasSection gas_section(const scene::Scene& scene, const scene::GasTask& task) {
   GasSection s;
   try {
-    s.request = cooling_request(options_of(scene, task));
-    s.curve = gas::cooling_curve(s.request);
+    const GasOptions options = options_of(scene, task);
+    s.request = cooling_request(options);
+    s.thermostat = thermostat_of(options);
+    if (s.thermostat) {
+      gas::DrivenCurve driven = gas::driven_curve({s.request, *s.thermostat});
+      s.curve = std::move(driven.curve);
+      s.steady = driven.steady;
+    } else {
+      s.curve = gas::cooling_curve(s.request);
+    }
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("{}: gas \"{}\": {}", scene.file_name, task.name, e.what()));
   }
@@ -69,6 +83,19 @@ GasSection gas_section(const scene::Scene& scene, const scene::GasTask& task) {
       c.haff_temperature_j.back() / s.request.initial_temperature_j, c.local_exponent.back(),
       -2.0 * c.duration_s / (c.tau0_s + c.duration_s), c.effective_eps.back(),
       c.collisions_per_particle.back());
+  if (s.steady) {
+    s.markdown += fmt::format(
+        "Driven by {}: the steady temperature T_s = {:.6g} J with the stationary a₂ = {:.4g}, reached from "
+        "T₀ "
+        "with the relaxation time {:.4g} s; d ln T_s/d ln {} = {:.4f} (a constant ε: {:.4f}).\n\n",
+        s.thermostat->kind == gas::ThermostatKind::langevin
+            ? fmt::format("a Langevin bath (T_b = {:.6g} J, τ_b = {:.6g} s)",
+                          s.thermostat->bath_temperature_j, s.thermostat->bath_time_s)
+            : fmt::format("white noise ({:.6g} W per sphere)", s.thermostat->power_w),
+        s.steady->temperature_j, s.steady->a2, s.steady->relaxation_time_s,
+        s.thermostat->kind == gas::ThermostatKind::langevin ? "T_b" : "P", s.steady->driving_exponent,
+        s.steady->constant_eps_driving_exponent);
+  }
   return s;
 }
 

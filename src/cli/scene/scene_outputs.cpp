@@ -372,7 +372,14 @@ class SceneWriter {
     json_.key("gas_" + task.name).begin_object();
     json_.field("tau0_s", c.tau0_s).field("haff_eps", c.haff_eps).field("duration_s", c.duration_s);
     json_.field("final_temperature_j", c.temperature_j.back());
-    json_.field("final_local_exponent", c.local_exponent.back()).end_object();
+    json_.field("final_local_exponent", c.local_exponent.back());
+    if (section.steady) {
+      json_.field("steady_temperature_j", section.steady->temperature_j)
+          .field("steady_a2", section.steady->a2);
+      json_.field("relaxation_time_s", section.steady->relaxation_time_s);
+      json_.field("driving_exponent", section.steady->driving_exponent);
+    }
+    json_.end_object();
   }
 
   // [[oblique]]: every model's sweep in one CSV, Maw's diagram, a summary per model; χ, ε and each model's

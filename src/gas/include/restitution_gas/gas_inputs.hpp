@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "restitution_gas/cooling.hpp"
+#include "restitution_gas/driven.hpp"
 
 namespace restitution::gas {
 
@@ -29,6 +30,10 @@ struct GasInputs {
   bool a2_evolving = false;     // a₂(t) from the Sonine moment equations, from 0 (a Maxwellian start)
   double collision_rate_factor = 1.0;
   double tolerance = SolveOptions{}.tolerance;
+  // The driven gas (driven.hpp): empty for the freely cooling gas, or "langevin" (bath_temperature_j [J],
+  // bath_time_s [s]) or "white-noise" (power_w [W] per sphere).
+  std::string thermostat;
+  std::optional<double> bath_temperature_j, bath_time_s, power_w;
 };
 
 // How errors spell an argument: "--packing-fraction" (option) or "packing_fraction" (keyword).
@@ -36,6 +41,10 @@ enum class ArgumentStyle { option, keyword };
 
 // The request the inputs describe; throws InvalidInput naming the argument that is missing, extra or bad.
 CoolingRequest cooling_request(const GasInputs& inputs, ArgumentStyle style);
+
+// The thermostat the inputs name, none for the freely cooling gas; throws InvalidInput naming the argument
+// that is missing, extra or bad (bath_temperature and bath_time for langevin, power for white-noise).
+std::optional<Thermostat> thermostat_of(const GasInputs& inputs, ArgumentStyle style);
 
 // One column of the curve: its name (the CSV header, the JSON key) and its values.
 struct CurveColumn {
