@@ -9,6 +9,7 @@ import json
 import sys
 
 import matplotlib
+import matplotlib.ticker
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -33,9 +34,12 @@ def main(out, folders):
         left.plot(t, np.array(visco["theory_temperature_j"]) / ts, "-", color=colour)
     left.set_xscale("log")
     left.set_yscale("log")
+    left.yaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
+    left.yaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+    left.set_yticks([0.6, 0.8, 1, 1.5, 2, 3])
     left.set_xlabel("t [s]")
-    left.set_ylabel("T / T_s (theory)")
-    left.set_title("relaxation from T0 (lines: kinetic theory, exact ε(v))")
+    left.set_ylabel("$T / T_s$ ($T_s$ from the kinetic theory)")
+    left.set_title("relaxation from $T_0$ (lines: kinetic theory, exact ε(v))")
     left.legend(fontsize=8)
     baths = np.geomspace(8e-4, 1e-1, 30)
     for law, style, label in [("viscoelastic", "-", "ε(v), theory"), ("constant-eps", "--", "constant ε, theory")]:
