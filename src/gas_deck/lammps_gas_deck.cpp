@@ -33,6 +33,8 @@ constexpr double kClusteringGrowth = 2.0;
 constexpr double kClusteringAmplitude = 0.1;
 // The driven gas has relaxed to e^-10 of its distance from the steady state after this many relaxation times.
 constexpr double kRelaxationTimes = 10.0;
+// The most time steps a deck may ask for: ~1e10 steps of 2000 spheres is already weeks of one core.
+constexpr double kMostSteps = 1e10;
 
 // The companion of the code's law lines: LAMMPS `damping tsuji` (`dem --constant-eps`), LIGGGHTS `model
 // hertz` given the coefficientRestitution that its recipe (Tsuji-type damping, speed-independent ε) turns
@@ -224,9 +226,8 @@ std::vector<double> print_schedule(const GasDeckRequest& r, GasDeck& g) {
   return times;
 }
 
-}  // namespace
-
-GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_name) {
+// The request's own limits, before anything is solved.
+void check_request(const GasDeckRequest& r) {
   if (r.particles < 2 || r.particles > kMaxParticles) {
     throw InvalidInput(
         fmt::format("--particles must be in [2, {}] (a data file of about {} bytes per sphere), got {}",
@@ -238,7 +239,6 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
     throw InvalidInput(fmt::format("--max-eps-error must be in [1e-6, 0.05], got {}", r.max_eps_error));
   if (r.points_per_decade < 1 || r.points_per_decade > 100)
     throw InvalidInput(fmt::format("--points-per-decade must be in [1, 100], got {}", r.points_per_decade));
-  dem::LinesRequest lines_request;
   if (!dem::code_entry(r.code).gas_deck) {
     throw InvalidInput(fmt::format(
         "--code {}: the gas deck is written for {} only (a data file "
@@ -252,32 +252,11 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
                     "(its fix langevin and immediate variables), not --code {}",
                     dem::code_name(r.code)));
   }
-  lines_request.code = r.code;
-  lines_request.end = r.end;
-  lines_request.material = r.material;
-  lines_request.damping = r.damping;
-  lines_request.tolerance = r.tolerance;
-  const dem::LinesResult law = dem::check_lines(lines_request);
-  const dem::Pair pair = dem::pair_of(r.material);
-  CollisionSolver solver;
-  const damping_check::ConstantEpsLines companion = companion_lines(law, pair, r.tolerance, solver);
+}
 
-  GasDeck g;
-  g.dissipative_constant_s = law.dissipative_constant_s;
-  g.diameter_m = 2.0 * pair.radius1_m;
-  g.mass_kg = pair.mass1_kg;
-  g.initial_temperature_j = g.mass_kg * r.rms_speed_m_s * r.rms_speed_m_s;
-  g.constant_eps = companion.eps;
-  g.calibration_speed_m_s = companion.velocity_m_s;
-  const GasScales scales =
-      gas_scales(g.diameter_m, g.mass_kg, r.packing_fraction, g.initial_temperature_j, companion.eps);
-  g.box_m = std::cbrt(static_cast<double>(r.particles) * std::numbers::pi * std::pow(g.diameter_m, 3) /
-                      (6.0 * r.packing_fraction));
-  g.haff_time_s = scales.haff_time_s;
-  g.duration_s = r.duration_s > 0.0 ? r.duration_s : r.haff_times * g.haff_time_s;
-  if (!(g.duration_s > 0.0 && std::isfinite(g.duration_s)))
-    throw InvalidInput(fmt::format("--duration must be > 0 s, got {}", g.duration_s));
-
+// The largest time step that keeps the integrator's ε error within --max-eps-error at the fast end of the
+// impact speeds, and the worst error it gives over the slower decades the run reaches.
+void choose_time_step(const GasDeckRequest& r, const dem::Pair& pair, CollisionSolver& solver, GasDeck& g) {
   g.fast_speed_m_s = kFastSpeedFactor * std::sqrt(6.0) * r.rms_speed_m_s;
   g.time_step_s = dem::largest_time_step_s(pair, g.dissipative_constant_s, r.end, g.fast_speed_m_s,
                                            r.max_eps_error, r.tolerance, solver);
@@ -288,6 +267,20 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
     g.eps_error_worst = std::max(g.eps_error_worst, std::abs(e.worst_error));
   }
 
+  // A run no code could finish is refused before a file is written (a dilute or long gas: --packing-fraction
+  // 1e-300 asks for a box of 1e98 m and a run of ~1e100 steps).
+  const double steps = g.duration_s / g.time_step_s;
+  if (!(steps <= kMostSteps)) {
+    throw InvalidInput(
+        fmt::format("the run would take about {:.3g} time steps of {:.4g} s over {:.4g} s (at most {:.0e}): "
+                    "give a denser gas "
+                    "(--packing-fraction), a shorter --duration or a larger --max-eps-error",
+                    steps, g.time_step_s, g.duration_s, kMostSteps));
+  }
+}
+
+// Haff's law holds only while the constant-ε gas stays homogeneous: a warning when its shear mode will grow.
+void warn_of_clustering(const GasDeckRequest& r, const GasScales& scales, GasDeck& g) {
   g.shear_critical_length_m = scales.shear_critical_length_m;
   g.shear_mode_growth = shear_mode_growth(scales, g.box_m, g.duration_s);
   // Clustering shows once the longest shear mode, of initial amplitude ~ 1/sqrt(N) of the thermal speed,
@@ -304,14 +297,10 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
         g.box_m / g.diameter_m, g.shear_critical_length_m / g.diameter_m, g.shear_mode_growth, g.duration_s,
         g.duration_s / g.haff_time_s, initial_amplitude, g.shear_mode_growth * initial_amplitude));
   }
+}
 
-  g.print_times_s = print_schedule(r, g);
-
-  const auto positions = random_positions(r.particles, g.diameter_m, g.box_m, r.seed);
-  const auto velocities = maxwellian_velocities(r.particles, r.rms_speed_m_s, r.seed);
-  g.data = data_file(g, positions, velocities,
-                     g.mass_kg / (std::numbers::pi / 6.0 * std::pow(g.diameter_m, 3)), r.seed);
-
+// The comment lines both inputs open with: what the gas is, its time step, its schedule and how to run it.
+std::vector<std::string> deck_header(const GasDeckRequest& r, const GasDeck& g, const dem::LinesResult& law) {
   std::vector<std::string> header{
       fmt::format(
           "freely cooling gas written by restitution gas --deck: {} spheres of diameter {} m, mass {} kg, "
@@ -344,6 +333,50 @@ GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_na
   }
   header.insert(header.end(), g.warnings.begin(), g.warnings.end());
 
+  return header;
+}
+
+}  // namespace
+
+GasDeck lammps_gas_deck(const GasDeckRequest& r, const std::string& data_file_name) {
+  check_request(r);
+  dem::LinesRequest lines_request;
+  lines_request.code = r.code;
+  lines_request.end = r.end;
+  lines_request.material = r.material;
+  lines_request.damping = r.damping;
+  lines_request.tolerance = r.tolerance;
+  const dem::LinesResult law = dem::check_lines(lines_request);
+  const dem::Pair pair = dem::pair_of(r.material);
+  CollisionSolver solver;
+  const damping_check::ConstantEpsLines companion = companion_lines(law, pair, r.tolerance, solver);
+
+  GasDeck g;
+  g.dissipative_constant_s = law.dissipative_constant_s;
+  g.diameter_m = 2.0 * pair.radius1_m;
+  g.mass_kg = pair.mass1_kg;
+  g.initial_temperature_j = g.mass_kg * r.rms_speed_m_s * r.rms_speed_m_s;
+  g.constant_eps = companion.eps;
+  g.calibration_speed_m_s = companion.velocity_m_s;
+  const GasScales scales =
+      gas_scales(g.diameter_m, g.mass_kg, r.packing_fraction, g.initial_temperature_j, companion.eps);
+  g.box_m = std::cbrt(static_cast<double>(r.particles) * std::numbers::pi * std::pow(g.diameter_m, 3) /
+                      (6.0 * r.packing_fraction));
+  g.haff_time_s = scales.haff_time_s;
+  g.duration_s = r.duration_s > 0.0 ? r.duration_s : r.haff_times * g.haff_time_s;
+  if (!(g.duration_s > 0.0 && std::isfinite(g.duration_s)))
+    throw InvalidInput(fmt::format("--duration must be > 0 s, got {}", g.duration_s));
+
+  choose_time_step(r, pair, solver, g);
+  warn_of_clustering(r, scales, g);
+  g.print_times_s = print_schedule(r, g);
+
+  const auto positions = random_positions(r.particles, g.diameter_m, g.box_m, r.seed);
+  const auto velocities = maxwellian_velocities(r.particles, r.rms_speed_m_s, r.seed);
+  g.data = data_file(g, positions, velocities,
+                     g.mass_kg / (std::numbers::pi / 6.0 * std::pow(g.diameter_m, 3)), r.seed);
+
+  const std::vector<std::string> header = deck_header(r, g, law);
   std::vector<std::string> law_header = header;
   law_header.insert(law_header.begin(), fmt::format("viscoelastic Hertz law, A = {:.10g} s ({} end)",
                                                     g.dissipative_constant_s, end_name(r.end)));
