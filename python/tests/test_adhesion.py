@@ -129,3 +129,33 @@ def test_bad_arguments_are_named(ice, arguments, error, words):
 def test_material_must_be_a_material():
     with pytest.raises(TypeError, match="restitution.Material"):
         restitution.sticking_speed(material=ICE, surface_energy=GAMMA)
+
+
+@pytest.mark.parametrize("adhesion, damping", [("jkr", None), ("jkr-lammps", 2e-10)])
+def test_the_adhesive_sweep_s_rows_are_the_module_s_collisions(cli, tmp_path, ice, adhesion, damping):
+    import csv
+
+    out = tmp_path / "sweep.csv"
+    extra = ["--dissipative-constant", str(damping)] if damping is not None else []
+    said = cli("sweep", "--adhesion", adhesion, "--surface-energy", str(GAMMA), *ICE_CLI, *extra,
+               "--velocity-range", "0.3:30:9", "--log", "--out", str(out))
+    assert said == f"wrote {out}: 9 points\n"
+    with open(out, newline="") as table:
+        rows = list(csv.DictReader(table))
+    assert len(rows) == 9 and float(rows[0]["velocity_m_per_s"]) == 0.3 and float(rows[-1]["velocity_m_per_s"]) == 30.0
+    v_s = restitution.sticking_speed(material=ice, adhesion=adhesion, surface_energy=GAMMA,
+                                     dissipative_constant=damping)
+    assert {float(row["sticking_speed_m_per_s"]) for row in rows} == {v_s}
+    outcomes = set()
+    for row in rows:
+        v = float(row["velocity_m_per_s"])
+        r = restitution.adhesive_collision(v, material=ice, adhesion=adhesion, surface_energy=GAMMA,
+                                           dissipative_constant=damping)
+        assert row["outcome"] == r.outcome == ("stuck" if v < v_s else "bounced")
+        for name in ("eps", "one_minus_eps", "contact_time_s", "max_compression_m", "hysteresis_work_j",
+                     "viscous_work_j", "kinetic_to_adhesion_energy"):
+            assert float(row[name]) == getattr(r, name), name
+        if r.outcome == "stuck":
+            assert float(row["eps"]) == 0.0
+        outcomes.add(r.outcome)
+    assert outcomes == {"stuck", "bounced"}
