@@ -159,3 +159,34 @@ def test_the_adhesive_sweep_s_rows_are_the_module_s_collisions(cli, tmp_path, ic
             assert float(row["eps"]) == 0.0
         outcomes.add(r.outcome)
     assert outcomes == {"stuck", "bounced"}
+
+
+@pytest.mark.parametrize("adhesion", ["jkr", "jkr-lammps", "dmt"])
+@pytest.mark.parametrize("velocity, damping", [(3.0, 3e-10), (20.0, 1e-9)])
+def test_calibrate_finds_the_damping_back(cli, ice, adhesion, velocity, damping):
+    # Round trip: eps of a known A, then `calibrate --adhesion` from that eps must give A back.
+    r = restitution.adhesive_collision(velocity, material=ice, adhesion=adhesion, surface_energy=GAMMA,
+                                       dissipative_constant=damping)
+    assert r.outcome == "bounced"
+    out = json.loads(cli("calibrate", "--adhesion", adhesion, "--surface-energy", str(GAMMA), *ICE_CLI, "--velocity",
+                         str(velocity), "--eps", repr(r.eps), "--json"))
+    assert out["dissipative_constant_s"] == pytest.approx(damping, rel=1e-8)
+    assert out["eps_at_velocity"] == pytest.approx(r.eps, rel=1e-9)
+    assert out["solves"] <= 60
+    if adhesion != "jkr":  # LAMMPS's damp = 2 A E*/m_eff
+        e_star = ICE["young_modulus"] / (2 * (1 - ICE["poisson_ratio"] ** 2))
+        assert out["lammps_damping_per_m_s"] == pytest.approx(2 * out["dissipative_constant_s"] * e_star
+                                                              / ice.effective_mass, rel=1e-14)
+
+
+def test_calibrate_refuses_an_eps_above_the_undamped_one(ice):
+    import os
+    import subprocess
+
+    path = os.environ.get("RESTITUTION_CLI")
+    if not path:
+        pytest.skip("RESTITUTION_CLI names no built command line")
+    elastic = restitution.adhesive_collision(3.0, material=ice, surface_energy=GAMMA, dissipative_constant=0.0).eps
+    done = subprocess.run([path, "calibrate", "--adhesion", "jkr", "--surface-energy", str(GAMMA), *ICE_CLI,
+                           "--velocity", "3", "--eps", str(min(0.999, elastic + 0.01))], capture_output=True, text=True)
+    assert done.returncode == 2 and "damping only lowers eps" in done.stderr
