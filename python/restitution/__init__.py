@@ -626,3 +626,7 @@ __all__.append("gas")
 from ._oblique import ObliqueResult, oblique  # noqa: E402 (it uses the helpers above)
 
 __all__ += ["oblique", "ObliqueResult"]
+
+from ._adhesion import AdhesiveCollision, adhesive_closed_forms, adhesive_collision, sticking_speed  # noqa: E402 (it uses the helpers above)
+
+__all__ += ["adhesive_collision", "sticking_speed", "adhesive_closed_forms", "AdhesiveCollision"]

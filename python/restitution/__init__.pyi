@@ -9,6 +9,7 @@ import numpy.typing as npt
 from . import fast as fast
 from . import series as series
 from ._oblique import ObliqueResult as ObliqueResult, oblique as oblique
+from ._adhesion import AdhesiveCollision as AdhesiveCollision, adhesive_collision as adhesive_collision, sticking_speed as sticking_speed, adhesive_closed_forms as adhesive_closed_forms
 
 __version__: str  # e.g. "0.3.0", the same as `restitution --version`
 

@@ -17,5 +17,6 @@ void bind_build_info(pybind11::module_& m);   // build_info.cpp: version and SUN
 void bind_sweep_file(pybind11::module_& m);   // sweep_file.cpp: sweep_to_file, resumable
 void bind_gas(pybind11::module_& m);          // gas.cpp: the freely cooling gas
 void bind_oblique(pybind11::module_& m);      // oblique.cpp: oblique impacts, tangential models
+void bind_adhesion(pybind11::module_& m);     // adhesion.cpp: adhesive collisions, the sticking speed
 
 }  // namespace restitution::python

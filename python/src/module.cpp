@@ -15,6 +15,7 @@ PYBIND11_MODULE(_restitution, m) {
   restitution::python::bind_sweep_file(m);
   restitution::python::bind_gas(m);
   restitution::python::bind_oblique(m);
+  restitution::python::bind_adhesion(m);
   auto series = m.def_submodule("series", "Analytic series and approximations of eps(zeta).");
   restitution::python::bind_series(series);
   auto fast = m.def_submodule("fast", "The certified fast table of eps(zeta) and its inverse.");

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
+#include "restitution/adhesive_contact.hpp"
 #include "restitution/errors.hpp"
-#include "restitution/units.hpp"
 
 namespace restitution::cli {
 
@@ -29,21 +29,11 @@ AdhesiveContact adhesive_contact_from(AdhesiveModel model, const AdhesionOptions
   if (!o.surface_energy) {
     throw InvalidInput(fmt::format("--adhesion {} needs --surface-energy", adhesive_model_name(model)));
   }
-  const ElasticConstants elastic = elastic_constants(material);
-  AdhesiveContact contact;
-  contact.model = model;
-  contact.effective_modulus_pa = effective_modulus_pa(material.young_modulus_pa, material.poisson_ratio);
-  contact.effective_radius_m = elastic.effective_radius_m;
-  contact.effective_mass_kg = elastic.effective_mass_kg;
-  contact.surface_energy_j_per_m2 = *o.surface_energy;
   const double a = dissipative_constant_s;
   if (!(a >= 0.0) || !std::isfinite(a)) {
     throw InvalidInput(fmt::format("--dissipative-constant must be finite and not negative (got {})", a));
   }
-  contact.damping = model == AdhesiveModel::jkr
-                        ? a
-                        : damping_per_mass(a, contact.effective_modulus_pa, contact.effective_mass_kg);
-  return contact;
+  return adhesive_contact_of(model, material, *o.surface_energy, a);
 }
 
 }  // namespace restitution::cli

@@ -22,10 +22,8 @@ struct AdhesionOptions {
 // `models`: the names --adhesion accepts (default: every adhesive model).
 void add_adhesion_options(CLI::App& command, AdhesionOptions& o,
                           const std::vector<std::string>& models = adhesive_model_names());
-// The contact of two spheres of the material: E* = Y/(2(1 − ν²)), R_eff, m_eff, γ, and the damping from A
-// [s]: A itself for `jkr`, LAMMPS's `damping viscoelastic` coefficient damp = 2AE*/m_eff for `jkr-lammps` and
-// `dmt` (the Hertz mapping of docs/dem.md, whose force damp·m_eff·a·δ̇ is A·δ̇·dF_Hertz/dδ). Throws
-// InvalidInput naming the missing or bad option.
+// The contact of two spheres of the material (adhesive_contact_of, adhesive_contact.hpp: E*, R_eff, m_eff, γ
+// and the model's damping from A [s]). Throws InvalidInput naming the missing or bad option.
 AdhesiveContact adhesive_contact_from(AdhesiveModel model, const AdhesionOptions& o, const Material& material,
                                       double dissipative_constant_s);
 

@@ -8,12 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "cli/common/adhesion_options.hpp"
 #include "cli/common/build_json.hpp"
 #include "cli/common/commands.hpp"
 #include "cli/common/json_writer.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/result_json.hpp"
+#include "cli/dem/calibrate_adhesion.hpp"
 #include "cli/dem/from_fit.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/errors.hpp"
@@ -38,6 +40,7 @@ struct CalibrateOptions {
   double tolerance = CalibrationRequest{}.tolerance;
   std::string method = method_name(CalibrationRequest{}.method);
   MaterialOptions material;
+  AdhesionOptions adhesion;  // the damping of an adhesive contact instead (calibrate_adhesion.hpp)
   bool json = false;
   std::string from_fit;  // fit-data --out FILE: beta and its intervals instead of --eps
   bool end_given = false;
@@ -49,6 +52,16 @@ std::optional<double> material_k(const CalibrateOptions& o) {
 }
 
 int run_calibrate(const CalibrateOptions& o) {
+  if (o.adhesion.any()) {
+    if (!o.from_fit.empty() || o.end_given || o.method == kFastMethod ||
+        o.law != law_name(LawKind::viscoelastic_hertz)) {
+      throw InvalidInput(
+          "--adhesion takes the material, --surface-energy, --eps, --velocity and --tolerance: not "
+          "--from-fit, "
+          "--end, --law or --method fast");
+    }
+    return run_adhesive_calibrate(o.adhesion, o.material, o.eps, o.velocity, o.tolerance, o.json);
+  }
   if (!o.from_fit.empty()) {
     if (o.eps != 0.0) throw InvalidInput("--from-fit and --eps exclude each other");
     if (law_from_name(o.law) != LawKind::viscoelastic_hertz) {
@@ -144,6 +157,7 @@ void add_calibrate_command(CLI::App& app, Action& chosen) {
       ->check(CLI::IsMember(calibration_methods()))
       ->capture_default_str();
   add_material_options(*cmd, o->material);
+  add_adhesion_options(*cmd, o->adhesion);
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, cmd, &chosen] {

@@ -17,6 +17,7 @@
 #include "cli/common/output_files.hpp"
 #include "cli/common/progress.hpp"
 #include "cli/common/stop_signals.hpp"
+#include "cli/sweep/sweep_adhesion.hpp"
 #include "cli/sweep/sweep_grid.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
@@ -58,6 +59,7 @@ std::string dropped_note(const SweepFileOutcome& done) {
 
 int run_sweep_command(const SweepOptions& given) {
   const SweepOptions o = with_ranges(given);
+  if (o.adhesion.any()) return run_adhesive_sweep(o);
   if (o.threads && (*o.threads < 1 || *o.threads > kMaxSweepThreads)) {
     throw InvalidInput(fmt::format("--threads must lie in [1, {}] (default: all cores), got {}",
                                    kMaxSweepThreads, *o.threads));
@@ -159,7 +161,9 @@ void add_sweep_command(CLI::App& app, Action& chosen) {
   add_material_options(*cmd, o->material);
   cmd->add_option(
       "--dissipative-constant", o->dissipative_constant,
-      "material: the dissipative constant A in s (adds SI columns: durations, maximal compression)");
+      "material: the dissipative constant A in s (adds SI columns: durations, maximal compression); with "
+      "--adhesion: A of the adhesive model (default 0: elastic)");
+  add_adhesion_options(*cmd, o->adhesion);
   // The old forms' count (hidden with them; their min and max options say they are old).
   cmd->add_option("--points", o->points)
       ->check(whole_number_in(1, static_cast<long long>(kMaxSweepPoints)))

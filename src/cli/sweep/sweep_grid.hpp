@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/common/adhesion_options.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
 #include "restitution/sweep.hpp"
@@ -22,7 +23,8 @@ struct SweepOptions {
   std::optional<double> velocity_min, velocity_max, beta, dissipative_constant;
   std::optional<double> stiffness, damping_coefficient, effective_mass;
   MaterialOptions material;
-  long long points = 0;  // 0: not given
+  AdhesionOptions adhesion;  // ε(v) of an adhesive collision instead (sweep_adhesion.hpp)
+  long long points = 0;      // 0: not given
   bool log = false;
   SolverArguments solver;
   std::optional<long long> threads;  // default: all cores

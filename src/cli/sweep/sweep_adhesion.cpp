@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "cli/sweep/sweep_adhesion.hpp"
+
+#include <fmt/core.h>
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli/common/adhesion_options.hpp"
+#include "cli/common/material_options.hpp"
+#include "cli/common/output_files.hpp"
+#include "restitution/adhesion.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/sweep.hpp"
+
+namespace restitution::cli {
+namespace {
+
+// What the ζ and β forms and the resumable file take, none of which an adhesive sweep has.
+void refuse_other_forms(const SweepOptions& o) {
+  const std::vector<std::pair<bool, const char*>> others = {
+      {o.zeta_min || o.zeta_max, "--zeta-range"},
+      {o.beta.has_value(), "--beta"},
+      {o.stiffness || o.damping_coefficient || o.effective_mass,
+       "--stiffness, --damping-coefficient and --effective-mass"},
+      {o.law != law_name(LawKind::viscoelastic_hertz), "--law"},
+      {o.resume, "--resume"},
+      {o.threads.has_value(), "--threads"},
+  };
+  for (const auto& [given, option] : others) {
+    if (given) {
+      throw InvalidInput(fmt::format(
+          "{} does not go with --adhesion: an adhesive sweep takes the material, --surface-energy, "
+          "--velocity-range (m/s) and optionally --dissipative-constant and --log, and runs on one thread "
+          "into a file written whole at the end",
+          option));
+    }
+  }
+  if (!o.velocity_min || !o.velocity_max) {
+    throw InvalidInput("an adhesive sweep needs --velocity-range FROM:TO:N (impact speeds in m/s)");
+  }
+}
+
+std::string table(const AdhesiveContact& contact, const std::vector<double>& speeds, double tolerance) {
+  const StickingSpeed sticking = sticking_speed(contact, tolerance);
+  std::string text =
+      "velocity_m_per_s,outcome,eps,one_minus_eps,contact_time_s,max_compression_m,hysteresis_work_j,"
+      "viscous_work_j,kinetic_to_adhesion_energy,sticking_speed_m_per_s\n";
+  for (const double v : speeds) {
+    const AdhesiveCollision c = solve_adhesive(contact, v, tolerance);
+    text +=
+        fmt::format("{},{},{},{},{},{},{},{},{},{}\n", number17(v), adhesive_outcome_name(c.outcome),
+                    number17(c.eps), number17(c.one_minus_eps), number17(c.contact_time_s),
+                    number17(c.max_compression_m), number17(c.hysteresis_work_j), number17(c.viscous_work_j),
+                    number17(c.kinetic_to_adhesion_energy), number17(sticking.speed_m_per_s));
+  }
+  return text;
+}
+
+}  // namespace
+
+int run_adhesive_sweep(const SweepOptions& o) {
+  refuse_other_forms(o);
+  if (!o.adhesion.model) {
+    throw InvalidInput("--surface-energy belongs to --adhesion: give --adhesion MODEL");
+  }
+  const AdhesiveContact contact =
+      adhesive_contact_from(adhesive_model_from_name(*o.adhesion.model), o.adhesion,
+                            material_from(o.material), o.dissipative_constant.value_or(0.0));
+  std::vector<double> speeds;
+  try {
+    speeds = zeta_values(
+        {*o.velocity_min, *o.velocity_max, static_cast<std::size_t>(o.points), o.log, "velocity"});
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("--velocity-range '{}': {}", o.velocity_range, e.what()));
+  }
+  const OutputTarget target = output_target(o.out);
+  check_output_file(o.out);
+  const std::string text = table(contact, speeds, o.solver.tolerance);
+  if (target.in_place) {
+    write_in_place(target.path, text);
+  } else {
+    write_file_atomically(target.path, text);
+  }
+  fmt::print("wrote {}: {} points\n", o.out, speeds.size());
+  return 0;
+}
+
+}  // namespace restitution::cli
