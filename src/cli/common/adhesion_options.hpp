@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// The adhesion options, declared once for every command that takes them: --adhesion MODEL and
-// --surface-energy γ [J/m², per surface]. The material and --dissipative-constant are each command's own
-// (material_options.hpp; `dem` has its own --dissipative-constant).
+// The adhesion options, declared once for every command that takes them: --adhesion MODEL,
+// --surface-energy γ [J/m², per surface] and --cohesion-energy-density k_c [J/m³] (sjkr). The material and
+// --dissipative-constant are each command's own (material_options.hpp; `dem` has its own
+// --dissipative-constant).
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
@@ -16,7 +17,8 @@ namespace restitution::cli {
 struct AdhesionOptions {
   std::optional<std::string> model;
   std::optional<double> surface_energy;
-  [[nodiscard]] bool any() const { return model || surface_energy; }
+  std::optional<double> cohesion_energy_density;  // sjkr's k_c [J/m³]
+  [[nodiscard]] bool any() const { return model || surface_energy || cohesion_energy_density; }
 };
 
 // `models`: the names --adhesion accepts (default: every adhesive model).
@@ -24,8 +26,8 @@ void add_adhesion_options(CLI::App& command, AdhesionOptions& o,
                           const std::vector<std::string>& models = adhesive_model_names());
 // The contact of two spheres of the material: E* = Y/(2(1 − ν²)), R_eff, m_eff, γ, and the damping from A
 // [s]: A itself for `jkr`, LAMMPS's `damping viscoelastic` coefficient damp = 2AE*/m_eff for `jkr-lammps` and
-// `dmt` (the Hertz mapping of docs/dem.md, whose force damp·m_eff·a·δ̇ is A·δ̇·dF_Hertz/dδ). Throws
-// InvalidInput naming the missing or bad option.
+// `dmt` and `sjkr` (LIGGGHTS's gamman; the Hertz mapping of docs/dem.md, whose force damp·m_eff·a·δ̇ is
+// A·δ̇·dF_Hertz/dδ). Throws InvalidInput naming the missing or bad option.
 AdhesiveContact adhesive_contact_from(AdhesiveModel model, const AdhesionOptions& o, const Material& material,
                                       double dissipative_constant_s);
 

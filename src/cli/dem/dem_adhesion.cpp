@@ -6,9 +6,35 @@
 #include "cli/common/build_json.hpp"
 #include "cli/common/json_writer.hpp"
 #include "dem/adhesive_lines_lammps.hpp"
+#include "dem/adhesive_lines_liggghts.hpp"
 
 namespace restitution::cli {
 namespace {
+
+void print_speed_table(const std::vector<double>& speeds, const std::vector<AdhesiveCollision>& collisions,
+                       const char* eps_header) {
+  fmt::print("{:>22} {:>10} {:>22} {:>18}\n", "v [m/s]", "outcome", eps_header, "contact [s]");
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    const auto& e = collisions[i];
+    fmt::print("{:>22.12g} {:>10} {:>22.15g} {:>18.12g}\n", speeds[i], adhesive_outcome_name(e.outcome),
+               e.eps, e.contact_time_s);
+  }
+}
+
+void write_speeds(JsonWriter& json, const std::vector<double>& speeds,
+                  const std::vector<AdhesiveCollision>& collisions) {
+  json.key("speeds").begin_array();
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    const auto& e = collisions[i];
+    json.begin_object();
+    json.field("velocity_m_per_s", speeds[i]);
+    json.field("outcome", adhesive_outcome_name(e.outcome));
+    json.field("eps", e.eps);
+    json.field("contact_time_s", e.contact_time_s);
+    json.end_object();
+  }
+  json.end_array();
+}
 
 void print_text(const dem::AdhesiveLammpsLines& r, const AdhesiveContact& c) {
   fmt::print(
@@ -27,12 +53,7 @@ void print_text(const dem::AdhesiveLammpsLines& r, const AdhesiveContact& c) {
     fmt::print("textbook JKR (break where d(overlap)/da = 0, damping A dF/d(overlap), same A): {:.12g} m/s\n",
                r.textbook_sticking.speed_m_per_s);
   }
-  fmt::print("{:>22} {:>10} {:>22} {:>18}\n", "v [m/s]", "outcome", "eps (LAMMPS rules)", "contact [s]");
-  for (std::size_t i = 0; i < r.speeds.size(); ++i) {
-    const auto& e = r.collisions[i];
-    fmt::print("{:>22.12g} {:>10} {:>22.15g} {:>18.12g}\n", r.speeds[i], adhesive_outcome_name(e.outcome),
-               e.eps, e.contact_time_s);
-  }
+  print_speed_table(r.speeds, r.collisions, "eps (LAMMPS rules)");
 }
 
 void print_json(const dem::AdhesiveLammpsLines& r, const AdhesiveContact& c) {
@@ -55,23 +76,66 @@ void print_json(const dem::AdhesiveLammpsLines& r, const AdhesiveContact& c) {
   if (c.model == AdhesiveModel::jkr_lammps) {
     json.field("textbook_sticking_speed_m_per_s", r.textbook_sticking.speed_m_per_s);
   }
-  json.key("speeds").begin_array();
-  for (std::size_t i = 0; i < r.speeds.size(); ++i) {
-    const auto& e = r.collisions[i];
-    json.begin_object();
-    json.field("velocity_m_per_s", r.speeds[i]);
-    json.field("outcome", adhesive_outcome_name(e.outcome));
-    json.field("eps", e.eps);
-    json.field("contact_time_s", e.contact_time_s);
-    json.end_object();
-  }
-  json.end_array();
+  write_speeds(json, r.speeds, r.collisions);
   fmt::print("{}\n", finish_json_document(json));
+}
+
+void print_liggghts_text(const dem::AdhesiveLiggghtsLines& r, const AdhesiveContact& c) {
+  fmt::print(
+      "# LIGGGHTS 3.8.0 (pair gran): hertz/stiffness with cohesion sjkr, cohesionEnergyDensity = {:g} "
+      "J/m^3\n",
+      c.cohesion_energy_density_j_per_m3);
+  fmt::print("# E* = {:.12g} Pa, R_eff = {:.12g} m, m_eff = {:.12g} kg, gamman = {:.12g} 1/(m s)\n",
+             c.effective_modulus_pa, c.effective_radius_m, c.effective_mass_kg, c.damping);
+  fmt::print(
+      "# the cohesion -k_c * (area of the spheres' intersection circle) acts while they overlap and ends at "
+      "overlap 0 with Hertz's force\n");
+  for (const auto& line : r.lines) fmt::print("{}\n", line);
+  fmt::print("\nsticking speed under LIGGGHTS's rules: {:.12g} m/s ({} solves)\n", r.sticking.speed_m_per_s,
+             r.sticking.solves);
+  print_speed_table(r.speeds, r.collisions, "eps (LIGGGHTS rules)");
+}
+
+void print_liggghts_json(const dem::AdhesiveLiggghtsLines& r, const AdhesiveContact& c) {
+  JsonWriter json;
+  json.begin_object();
+  json.field("code", "liggghts");
+  json.field("adhesion", "sjkr");
+  json.field("cohesion_energy_density_j_per_m3", c.cohesion_energy_density_j_per_m3);
+  json.field("effective_modulus_pa", c.effective_modulus_pa);
+  json.field("effective_radius_m", c.effective_radius_m);
+  json.field("effective_mass_kg", c.effective_mass_kg);
+  json.field("liggghts_gamman_per_m_s", c.damping);
+  json.key("lines").begin_array();
+  for (const auto& line : r.lines) json.value(line);
+  json.end_array();
+  json.field("skin_m", r.skin_m);
+  json.field("timestep_s", r.timestep_s);
+  json.field("break_overlap_m", 0.0);
+  json.field("sticking_speed_m_per_s", r.sticking.speed_m_per_s);
+  write_speeds(json, r.speeds, r.collisions);
+  fmt::print("{}\n", finish_json_document(json));
+}
+
+int run_liggghts(const AdhesiveDemRequest& request) {
+  dem::AdhesiveLiggghtsRequest lines_request;
+  lines_request.contact = adhesive_contact_from(AdhesiveModel::sjkr, request.adhesion, request.material,
+                                                request.dissipative_constant_s);
+  lines_request.speeds = request.speeds;
+  lines_request.tolerance = request.tolerance;
+  const auto r = dem::adhesive_liggghts_lines(lines_request);
+  if (request.json) {
+    print_liggghts_json(r, lines_request.contact);
+  } else {
+    print_liggghts_text(r, lines_request.contact);
+  }
+  return 0;
 }
 
 }  // namespace
 
 int run_adhesive_dem(const AdhesiveDemRequest& request) {
+  if (*request.adhesion.model == "sjkr") return run_liggghts(request);
   // LAMMPS's `jkr` is our jkr-lammps: its damping and its break rule.
   const AdhesiveModel model =
       *request.adhesion.model == "dmt" ? AdhesiveModel::dmt : AdhesiveModel::jkr_lammps;
