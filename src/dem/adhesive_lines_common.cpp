@@ -20,6 +20,11 @@ double round_up_2(double x) {
   return std::ceil(x / scale) * scale;
 }
 
+std::vector<std::string> integration_lines(double skin_m, double timestep_s) {
+  return {fmt::format("neighbor {} bin", skin_m), "neigh_modify delay 0 every 1 check yes",
+          "fix integrate all nve/sphere", fmt::format("timestep {}", timestep_s)};
+}
+
 AdhesiveSolves solve_listed_speeds(const AdhesiveContact& contact, const std::vector<double>& speeds,
                                    double tolerance) {
   AdhesiveSolves out;

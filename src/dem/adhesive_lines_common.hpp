@@ -2,6 +2,7 @@
 #pragma once
 // What every code's adhesive lines share: the listed speeds (default multiples of the sticking speed), one
 // adhesive solve per speed, and the rounding of the skin and time step to numbers a user can read.
+#include <string>
 #include <vector>
 
 #include "restitution/adhesion.hpp"
@@ -20,6 +21,10 @@ struct AdhesiveSolves {
 // sticking speed is 0 and no speed is given.
 [[nodiscard]] AdhesiveSolves solve_listed_speeds(const AdhesiveContact& contact,
                                                  const std::vector<double>& speeds, double tolerance);
+
+// The lines after the pair style, the same in LAMMPS and LIGGGHTS: the neighbour skin [m], rebuilds checked
+// every step, NVE for spheres and the time step [s].
+[[nodiscard]] std::vector<std::string> integration_lines(double skin_m, double timestep_s);
 
 // Rounds down (up) to two significant digits.
 [[nodiscard]] double round_down_2(double x);

@@ -76,11 +76,8 @@ AdhesiveLammpsLines adhesive_lammps_lines(const AdhesiveLammpsRequest& request) 
       fmt::format("pair_coeff * * {} {} {} {} {} tangential linear_history 0 0 0 damping viscoelastic",
                   jkr ? "jkr" : "dmt", request.young_modulus_pa, contact.damping, request.poisson_ratio,
                   contact.surface_energy_j_per_m2),
-      fmt::format("neighbor {} bin", out.skin_m),
-      "neigh_modify delay 0 every 1 check yes",
-      "fix integrate all nve/sphere",
-      fmt::format("timestep {}", out.timestep_s),
   };
+  for (auto& line : integration_lines(out.skin_m, out.timestep_s)) out.lines.push_back(std::move(line));
   return out;
 }
 

@@ -46,11 +46,8 @@ AdhesiveLiggghtsLines adhesive_liggghts_lines(const AdhesiveLiggghtsRequest& req
       liggghts_one_type_line("cohesionEnergyDensity", contact.cohesion_energy_density_j_per_m3),
       "pair_style gran model hertz/stiffness tangential no_history cohesion sjkr limitForce off",
       "pair_coeff * *",
-      fmt::format("neighbor {} bin", out.skin_m),
-      "neigh_modify delay 0 every 1 check yes",
-      "fix integrate all nve/sphere",
-      fmt::format("timestep {}", out.timestep_s),
   };
+  for (auto& line : integration_lines(out.skin_m, out.timestep_s)) out.lines.push_back(std::move(line));
   return out;
 }
 

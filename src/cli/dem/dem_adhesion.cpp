@@ -36,7 +36,7 @@ void write_speeds(JsonWriter& json, const std::vector<double>& speeds,
   json.end_array();
 }
 
-void print_text(const dem::AdhesiveLammpsLines& r, const AdhesiveContact& c) {
+void print_lammps_text(const dem::AdhesiveLammpsLines& r, const AdhesiveContact& c) {
   fmt::print(
       "# LAMMPS 20220106 (pair granular): {} with damping viscoelastic, gamma = {:g} J/m^2 per surface\n",
       c.model == AdhesiveModel::dmt ? "dmt" : "jkr", c.surface_energy_j_per_m2);
@@ -56,7 +56,7 @@ void print_text(const dem::AdhesiveLammpsLines& r, const AdhesiveContact& c) {
   print_speed_table(r.speeds, r.collisions, "eps (LAMMPS rules)");
 }
 
-void print_json(const dem::AdhesiveLammpsLines& r, const AdhesiveContact& c) {
+void print_lammps_json(const dem::AdhesiveLammpsLines& r, const AdhesiveContact& c) {
   JsonWriter json;
   json.begin_object();
   json.field("code", "lammps");
@@ -124,11 +124,7 @@ int run_liggghts(const AdhesiveDemRequest& request) {
   lines_request.speeds = request.speeds;
   lines_request.tolerance = request.tolerance;
   const auto r = dem::adhesive_liggghts_lines(lines_request);
-  if (request.json) {
-    print_liggghts_json(r, lines_request.contact);
-  } else {
-    print_liggghts_text(r, lines_request.contact);
-  }
+  (request.json ? print_liggghts_json : print_liggghts_text)(r, lines_request.contact);
   return 0;
 }
 
@@ -147,11 +143,7 @@ int run_adhesive_dem(const AdhesiveDemRequest& request) {
   lines_request.speeds = request.speeds;
   lines_request.tolerance = request.tolerance;
   const auto r = dem::adhesive_lammps_lines(lines_request);
-  if (request.json) {
-    print_json(r, lines_request.contact);
-  } else {
-    print_text(r, lines_request.contact);
-  }
+  (request.json ? print_lammps_json : print_lammps_text)(r, lines_request.contact);
   return 0;
 }
 
