@@ -36,6 +36,20 @@ void write_speeds(JsonWriter& json, const std::vector<double>& speeds,
   json.end_array();
 }
 
+// The members after the adhesion parameter, in the order both codes print them.
+void write_contact_and_lines(JsonWriter& json, const AdhesiveContact& c, const char* damping_key,
+                             const std::vector<std::string>& lines, double skin_m, double timestep_s) {
+  json.field("effective_modulus_pa", c.effective_modulus_pa);
+  json.field("effective_radius_m", c.effective_radius_m);
+  json.field("effective_mass_kg", c.effective_mass_kg);
+  json.field(damping_key, c.damping);
+  json.key("lines").begin_array();
+  for (const auto& line : lines) json.value(line);
+  json.end_array();
+  json.field("skin_m", skin_m);
+  json.field("timestep_s", timestep_s);
+}
+
 void print_lammps_text(const dem::AdhesiveLammpsLines& r, const AdhesiveContact& c) {
   fmt::print(
       "# LAMMPS 20220106 (pair granular): {} with damping viscoelastic, gamma = {:g} J/m^2 per surface\n",
@@ -62,15 +76,7 @@ void print_lammps_json(const dem::AdhesiveLammpsLines& r, const AdhesiveContact&
   json.field("code", "lammps");
   json.field("adhesion", c.model == AdhesiveModel::dmt ? "dmt" : "jkr");
   json.field("surface_energy_j_per_m2", c.surface_energy_j_per_m2);
-  json.field("effective_modulus_pa", c.effective_modulus_pa);
-  json.field("effective_radius_m", c.effective_radius_m);
-  json.field("effective_mass_kg", c.effective_mass_kg);
-  json.field("lammps_damping_per_m_s", c.damping);
-  json.key("lines").begin_array();
-  for (const auto& line : r.lines) json.value(line);
-  json.end_array();
-  json.field("skin_m", r.skin_m);
-  json.field("timestep_s", r.timestep_s);
+  write_contact_and_lines(json, c, "lammps_damping_per_m_s", r.lines, r.skin_m, r.timestep_s);
   json.field("break_overlap_m", r.break_overlap_m);
   json.field("sticking_speed_m_per_s", r.sticking.speed_m_per_s);
   if (c.model == AdhesiveModel::jkr_lammps) {
@@ -102,15 +108,7 @@ void print_liggghts_json(const dem::AdhesiveLiggghtsLines& r, const AdhesiveCont
   json.field("code", "liggghts");
   json.field("adhesion", "sjkr");
   json.field("cohesion_energy_density_j_per_m3", c.cohesion_energy_density_j_per_m3);
-  json.field("effective_modulus_pa", c.effective_modulus_pa);
-  json.field("effective_radius_m", c.effective_radius_m);
-  json.field("effective_mass_kg", c.effective_mass_kg);
-  json.field("liggghts_gamman_per_m_s", c.damping);
-  json.key("lines").begin_array();
-  for (const auto& line : r.lines) json.value(line);
-  json.end_array();
-  json.field("skin_m", r.skin_m);
-  json.field("timestep_s", r.timestep_s);
+  write_contact_and_lines(json, c, "liggghts_gamman_per_m_s", r.lines, r.skin_m, r.timestep_s);
   json.field("break_overlap_m", 0.0);
   json.field("sticking_speed_m_per_s", r.sticking.speed_m_per_s);
   write_speeds(json, r.speeds, r.collisions);
