@@ -84,6 +84,12 @@ TEST_P(AdhesionLammps, ErrorShrinksWithTheTimeStep) {
   EXPECT_GT(worst_coarse, worst_fine) << c.name;
 }
 
+TEST(AdhesionLammpsDeck, WrittenCheckDeckAgrees) {
+  const Case c{"ice_dmt_damped_deck", "dmt", 7e9, 0.25, 1.5e-6, 920.0, 0.19, 1e-9, ""};
+  adhesive_pair_test::expect_written_deck_agrees(restitution::dem::Code::lammps, command_of(c), c.name,
+                                                 run_json);
+}
+
 // µm ice (docs/adhesion.md §7) and 10 µm silica-like spheres (Y = 70 GPa, ν = 0.17, ρ = 2600, γ = 0.025).
 INSTANTIATE_TEST_SUITE_P(
     Pairs, AdhesionLammps,

@@ -62,6 +62,11 @@ TEST_P(AdhesionLiggghts, PrintedLinesGiveThePrintedEps) {
   RecordProperty("worst_eps_error", worst_text);
 }
 
+TEST_P(AdhesionLiggghts, WrittenCheckDeckAgrees) {
+  adhesive_pair_test::expect_written_deck_agrees(restitution::dem::Code::liggghts, command_of(GetParam()),
+                                                 GetParam().name, run_json);
+}
+
 // mm spheres soft enough for the cohesion to matter (Y = 5 MPa, as in LIGGGHTS's own examples; the overlap
 // reaches a few % of R, where the exact intersection area differs from 2πRδ), and two damping levels.
 INSTANTIATE_TEST_SUITE_P(Pairs, AdhesionLiggghts,

@@ -1,16 +1,20 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// The deck the adhesive-pair tests run: the printed lines of `dem --adhesion ... --json`, one pair per listed
-// speed, run by the code as a user runs it (LAMMPS's lmp or LIGGGHTS's liggghts).
+// The deck the adhesive-pair tests run: the check deck of the printed lines of `dem --adhesion ... --json`,
+// one pair per listed speed, run by the code as a user runs it (LAMMPS's lmp or LIGGGHTS's liggghts).
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
+#include "dem/adhesive_check_deck.hpp"
 #include "dem/code_runner.hpp"
 #include "dem/process_output.hpp"
 
@@ -18,56 +22,25 @@ namespace adhesive_pair_test {
 
 using nlohmann::json;
 
-// One pair per speed, 20 radii apart in y; each starts a thousandth of a radius from touching and prints
-// "PAIR i eps gap" (gap: centre distance − 2R, negative while in contact).
+// The library's check deck (dem/adhesive_check_deck.hpp) of what `dem --adhesion ... --json` printed, at a
+// chosen time step: one pair per speed, printing "PAIR i eps gap".
 inline std::string deck_of(const json& dem, double radius, double density, double timestep_s) {
-  std::string d = "atom_modify map array sort 0 0.0\nboundary f f f\n";
-  const auto& speeds = dem.at("speeds");
-  const std::size_t n = speeds.size();
-  const double spacing = 20.0 * radius, gap = 1e-3 * radius;
-  char b[512];
-  // The prerequisites (units, atom_style, comm_modify; LIGGGHTS: newton, communicate) come before the box.
-  const std::size_t before_box = dem.at("code") == "liggghts" ? 4 : 3;
-  for (std::size_t i = 0; i < before_box; ++i) d += dem.at("lines").at(i).get<std::string>() + "\n";
-  std::snprintf(b, sizeof b,
-                "region box block %.17g %.17g %.17g %.17g %.17g %.17g units box\ncreate_box 1 box\n",
-                -spacing, spacing, -spacing, spacing * static_cast<double>(n), -spacing, spacing);
-  d += b;
-  double longest = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double v = speeds[i].at("velocity_m_per_s").get<double>();
-    const double y = spacing * static_cast<double>(i);
-    std::snprintf(
-        b, sizeof b,
-        "create_atoms 1 single %.17g %.17g 0 units box\ncreate_atoms 1 single %.17g %.17g 0 units box\n",
-        -radius - gap / 2, y, radius + gap / 2, y);
-    d += b;
-    longest = std::max(longest, gap / v + 3.0 * speeds[i].at("contact_time_s").get<double>());
+  restitution::dem::AdhesiveDeckRequest r;
+  r.liggghts = dem.at("code") == "liggghts";
+  for (const auto& line : dem.at("lines")) r.lines.push_back(line.get<std::string>());
+  r.radius_m = radius;
+  r.density_kg_per_m3 = density;
+  r.timestep_s = timestep_s;
+  for (const auto& s : dem.at("speeds")) {
+    r.speeds_m_per_s.push_back(s.at("velocity_m_per_s").get<double>());
+    restitution::AdhesiveCollision c;
+    c.outcome = s.at("outcome") == "stuck" ? restitution::AdhesiveOutcome::stuck
+                                           : restitution::AdhesiveOutcome::bounced;
+    c.eps = s.at("eps").get<double>();
+    c.contact_time_s = s.at("contact_time_s").get<double>();
+    r.collisions.push_back(c);
   }
-  std::snprintf(b, sizeof b, "set group all diameter %.17g\nset group all density %.17g\n", 2 * radius,
-                density);
-  d += b;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double v = speeds[i].at("velocity_m_per_s").get<double>();
-    std::snprintf(b, sizeof b, "set atom %zu vx %.17g\nset atom %zu vx %.17g\n", 2 * i + 1, 0.5 * v,
-                  2 * i + 2, -0.5 * v);
-    d += b;
-  }
-  for (std::size_t i = before_box; i < dem.at("lines").size(); ++i) {
-    const std::string line = dem.at("lines").at(i).get<std::string>();
-    if (line.rfind("timestep", 0) == 0) continue;
-    d += line + "\n";
-  }
-  std::snprintf(b, sizeof b, "timestep %.17g\nthermo 0\nrun %ld\n", timestep_s,
-                static_cast<long>(std::ceil(longest / timestep_s)));
-  d += b;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double v = speeds[i].at("velocity_m_per_s").get<double>();
-    std::snprintf(b, sizeof b, "print \"PAIR %zu $((vx[%zu]-vx[%zu])/%.17g) $(x[%zu]-x[%zu]-%.17g)\"\n", i,
-                  2 * i + 2, 2 * i + 1, v, 2 * i + 2, 2 * i + 1, 2 * radius);
-    d += b;
-  }
-  return d;
+  return restitution::dem::adhesive_check_deck(r);
 }
 
 inline restitution::dem::TaggedEps run_code(restitution::dem::Code code, const std::string& deck,
@@ -81,6 +54,28 @@ inline restitution::dem::TaggedEps run_code(restitution::dem::Code code, const s
   EXPECT_TRUE(failure.empty()) << failure << "\n"
                                << run.output.substr(run.output.size() > 2000 ? run.output.size() - 2000 : 0);
   return read;
+}
+
+// Runs `restitution COMMAND --json --deck FILE`, then the code on FILE as written: the outcome at every speed
+// and ε within 1e-5 at every bounce, against what the command printed.
+template <typename RunJson>
+void expect_written_deck_agrees(restitution::dem::Code code, const std::string& command,
+                                const std::string& name, RunJson run_json) {
+  const auto path = std::filesystem::temp_directory_path() / ("restitution_adhesive_deck_" + name + ".in");
+  const json dem = run_json(command + " --deck " + path.string());
+  std::ifstream in(path);
+  ASSERT_TRUE(in) << "no deck at " << path;
+  const std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(deck.find("print \"EXPECT 0 "), std::string::npos);
+  const auto& speeds = dem.at("speeds");
+  const auto measured = run_code(code, deck, speeds.size());
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    const bool stuck = speeds[i].at("outcome") == "stuck";
+    EXPECT_EQ(measured.gap_m[i] <= -dem.at("break_overlap_m").get<double>(), stuck) << name << " speed " << i;
+    if (!stuck)
+      EXPECT_NEAR(measured.eps[i], speeds[i].at("eps").get<double>(), 1e-5) << name << " speed " << i;
+  }
+  std::filesystem::remove(path);
 }
 
 }  // namespace adhesive_pair_test

@@ -5,11 +5,39 @@
 
 #include "cli/common/build_json.hpp"
 #include "cli/common/json_writer.hpp"
+#include "cli/common/output_files.hpp"
+#include "dem/adhesive_check_deck.hpp"
 #include "dem/adhesive_lines_lammps.hpp"
 #include "dem/adhesive_lines_liggghts.hpp"
+#include "restitution/errors.hpp"
 
 namespace restitution::cli {
 namespace {
+
+// Writes the check deck when --deck is given; returns the command that runs it (text output names it; the
+// JSON output is unchanged).
+template <typename Lines>
+std::optional<std::string> write_deck(const AdhesiveDemRequest& request, const Lines& r, bool liggghts) {
+  if (!request.deck) return std::nullopt;
+  const Material& m = request.material;
+  if (!m.density_kg_m3 || m.radius1_m != m.radius2_m) {
+    throw InvalidInput("--deck with --adhesion needs one --radius and --density (equal spheres)");
+  }
+  dem::AdhesiveDeckRequest deck;
+  deck.liggghts = liggghts;
+  deck.lines = r.lines;
+  deck.radius_m = m.radius1_m;
+  deck.density_kg_per_m3 = *m.density_kg_m3;
+  deck.timestep_s = r.timestep_s;
+  deck.speeds_m_per_s = r.speeds;
+  deck.collisions = r.collisions;
+  write_file_atomically(*request.deck, dem::adhesive_check_deck(deck));
+  return fmt::format("{} -in {}", liggghts ? "liggghts" : "lmp", *request.deck);
+}
+
+void print_deck_note(const std::optional<std::string>& run) {
+  if (run) fmt::print("\ncheck deck written; run it with `{}` (EXPECT and PAIR lines per speed)\n", *run);
+}
 
 void print_speed_table(const std::vector<double>& speeds, const std::vector<AdhesiveCollision>& collisions,
                        const char* eps_header) {
@@ -122,7 +150,9 @@ int run_liggghts(const AdhesiveDemRequest& request) {
   lines_request.speeds = request.speeds;
   lines_request.tolerance = request.tolerance;
   const auto r = dem::adhesive_liggghts_lines(lines_request);
+  const auto run = write_deck(request, r, true);
   (request.json ? print_liggghts_json : print_liggghts_text)(r, lines_request.contact);
+  if (!request.json) print_deck_note(run);
   return 0;
 }
 
@@ -141,7 +171,9 @@ int run_adhesive_dem(const AdhesiveDemRequest& request) {
   lines_request.speeds = request.speeds;
   lines_request.tolerance = request.tolerance;
   const auto r = dem::adhesive_lammps_lines(lines_request);
+  const auto run = write_deck(request, r, false);
   (request.json ? print_lammps_json : print_lammps_text)(r, lines_request.contact);
+  if (!request.json) print_deck_note(run);
   return 0;
 }
 

@@ -4,6 +4,8 @@
 // adhesive pair and the ε and sticking speed they give (dem/adhesive_lines_lammps.hpp), as text or JSON;
 // `dem --code liggghts --adhesion sjkr --cohesion-energy-density k_c`: LIGGGHTS 3.8.0's
 // (dem/adhesive_lines_liggghts.hpp).
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "cli/common/adhesion_options.hpp"
@@ -18,6 +20,8 @@ struct AdhesiveDemRequest {
   std::vector<double> speeds;
   double tolerance = 1e-10;
   bool json = false;
+  // --deck FILE: the check deck (dem/adhesive_check_deck.hpp), for one radius and --density.
+  std::optional<std::string> deck;
 };
 
 int run_adhesive_dem(const AdhesiveDemRequest& request);

@@ -282,6 +282,7 @@ int run_adhesion(const DemOptions& o, const std::vector<std::string>& given) {
   request.speeds = o.speeds;
   request.tolerance = o.tolerance;
   request.json = o.json;
+  request.deck = o.deck;
   return run_adhesive_dem(request);
 }
 
@@ -378,9 +379,8 @@ void add_dem_command(CLI::App& app, Action& chosen) {
     o->end_given = cmd->count("--end") > 0;
     if (o->adhesion.any()) {
       std::vector<std::string> given;  // what the adhesive lines do not take
-      for (const char* option :
-           {"--eps", "--from-fit", "--end", "--deck", "--angle", "--target-et", "--tangential", "--friction",
-            "--timestep", "--constant-eps", "--yade-version", "--wall"}) {
+      for (const char* option : {"--eps", "--from-fit", "--end", "--angle", "--target-et", "--tangential",
+                                 "--friction", "--timestep", "--constant-eps", "--yade-version", "--wall"}) {
         if (cmd->count(option) > 0 &&
             !(std::string_view(option) == "--wall" && o->adhesion.model && *o->adhesion.model == "jkr")) {
           given.emplace_back(option);
