@@ -9,6 +9,7 @@
 #include "dem/adhesive_check_deck.hpp"
 #include "dem/adhesive_lines_lammps.hpp"
 #include "dem/adhesive_lines_liggghts.hpp"
+#include "dem/dem_codes.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -32,7 +33,8 @@ std::optional<std::string> write_deck(const AdhesiveDemRequest& request, const L
   deck.speeds_m_per_s = r.speeds;
   deck.collisions = r.collisions;
   write_file_atomically(*request.deck, dem::adhesive_check_deck(deck));
-  return fmt::format("{} -in {}", liggghts ? "liggghts" : "lmp", *request.deck);
+  const auto code = liggghts ? dem::Code::liggghts : dem::Code::lammps;
+  return dem::code_entry(code).check_deck_run + *request.deck;
 }
 
 void print_deck_note(const std::optional<std::string>& run) {
