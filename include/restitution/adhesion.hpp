@@ -22,8 +22,11 @@ enum class AdhesiveModel {
                // force-controlled pull-off overlap (pair_granular.cpp 20220106, lines 266-275)
   jkr,  // JKR elastic force, viscoelastic dissipation A·δ̇·dF_el/dδ, broken where dδ/da = 0 (textbook)
   dmt,  // DMT as LAMMPS codes it: (4/3)E*sqrt(R)δ^{3/2} − 4πγR and damp·m*·sqrt(Rδ)·δ̇ while δ > 0
+  // LIGGGHTS 3.8.0's `cohesion sjkr` on `model hertz/stiffness`: (4/3)E*sqrt(R)δ^{3/2} − k_c·A(δ) and
+  // damp·m*·sqrt(Rδ)·δ̇ while δ > 0, A the area of the two spheres' intersection circle (2πRδ for small δ).
+  sjkr,
 };
-// The command-line and scene names: "jkr-lammps", "jkr", "dmt".
+// The command-line and scene names: "jkr-lammps", "jkr", "dmt", "sjkr".
 [[nodiscard]] const std::vector<std::string>& adhesive_model_names();
 // Throws InvalidInput naming the alternatives for an unknown name.
 [[nodiscard]] AdhesiveModel adhesive_model_from_name(const std::string& name);
@@ -34,10 +37,16 @@ struct AdhesiveContact {
   double effective_modulus_pa = 0.0;     // E*
   double effective_radius_m = 0.0;       // R = R1 R2/(R1 + R2)
   double effective_mass_kg = 0.0;        // m* = m1 m2/(m1 + m2)
-  double surface_energy_j_per_m2 = 0.0;  // γ per surface (w = 2γ)
-  // jkr-lammps and dmt: LAMMPS's `damping viscoelastic` coefficient damp [1/(m s)] (force damp·m*·a·δ̇, a the
-  // contact radius). jkr: the dissipative constant A [s] (force A·δ̇·dF_el/dδ). 0: elastic.
+  double surface_energy_j_per_m2 = 0.0;  // γ per surface (w = 2γ); not used by sjkr
+  // jkr-lammps, dmt and sjkr: LAMMPS's `damping viscoelastic` coefficient damp (LIGGGHTS's gamman) [1/(m s)]
+  // (force damp·m*·a·δ̇, a the contact radius). jkr: the dissipative constant A [s] (force A·δ̇·dF_el/dδ). 0:
+  // elastic.
   double damping = 0.0;
+  // sjkr only: LIGGGHTS's cohesionEnergyDensity k_c [J/m³] and the two sphere radii [m], which the exact
+  // intersection area needs (0, 0: two equal spheres of radius 2R).
+  double cohesion_energy_density_j_per_m3 = 0.0;
+  double sphere_radius_1_m = 0.0;
+  double sphere_radius_2_m = 0.0;
 };
 
 enum class AdhesiveOutcome { bounced, stuck };
@@ -56,7 +65,8 @@ struct AdhesiveCollision {
   double hysteresis_work_j = 0.0;
   double viscous_work_j = 0.0;  // work of the damping force from first touch to the end above
   // The model's extra dimensionless group: the impact's kinetic energy over the adhesion energy unit,
-  // ½m*v²/(πwA²) with A³ = πwR²/E* (JKR), ½m*v²/(F_D L) with F_D = 4πγR, L = (F_D/ρ)^{2/3} (DMT).
+  // ½m*v²/(πwA²) with A³ = πwR²/E* (JKR), ½m*v²/(F_D L) with F_D = 4πγR, L = (F_D/ρ)^{2/3} (DMT),
+  // ½m*v²/(F_s L) with L = (2πk_cR/ρ)², F_s = 2πk_cRL (sjkr); ρ = (4/3)E*sqrt(R).
   double kinetic_to_adhesion_energy = 0.0;
   SolverStats stats;
 };
@@ -69,7 +79,7 @@ struct AdhesiveCollision {
                                                double tolerance = 1e-10);
 
 struct StickingSpeed {
-  double speed_m_per_s = 0.0;  // 0: the spheres never stick (undamped DMT)
+  double speed_m_per_s = 0.0;  // 0: the spheres never stick (undamped DMT or sjkr)
   int solves = 0;
 };
 // The impact speed below which the spheres stick, to relative tolerance T: the root of the energy left at the
@@ -77,8 +87,8 @@ struct StickingSpeed {
 [[nodiscard]] StickingSpeed sticking_speed(const AdhesiveContact& contact, double tolerance = 1e-10);
 
 // Closed forms of the elastic model (docs/adhesion.md): the hysteresis work W of the model's break rule [J]
-// (0 for DMT), the overlap at which the contact breaks [m] (negative for JKR, 0 for DMT), the JKR pull-off
-// force F_c = 3πγR [N] and the adhesion energy unit πwA² [J].
+// (0 for DMT and sjkr), the overlap at which the contact breaks [m] (negative for JKR, 0 for DMT and sjkr),
+// the JKR pull-off force F_c = 3πγR [N] and the adhesion energy unit πwA² [J].
 [[nodiscard]] double elastic_hysteresis_work_j(const AdhesiveContact& contact);
 [[nodiscard]] double break_overlap_m(const AdhesiveContact& contact);
 [[nodiscard]] double jkr_pull_off_force_n(const AdhesiveContact& contact);

@@ -114,6 +114,8 @@ def test_repr_and_doctests(ice):
 
 @pytest.mark.parametrize("arguments, error, words", [
     (dict(adhesion="sticky"), ValueError, "adhesion must be one of jkr-lammps, jkr, dmt"),
+    # LIGGGHTS's sjkr takes a cohesion energy density, which Python does not bind yet.
+    (dict(adhesion="sjkr"), ValueError, "adhesion must be one of jkr-lammps, jkr, dmt, got 'sjkr'"),
     (dict(surface_energy=None), TypeError, "surface_energy"),
     (dict(surface_energy="0.19"), TypeError, "surface_energy"),
     (dict(dissipative_constant=-1e-9), ValueError, "dissipative constant A must be finite and not negative"),

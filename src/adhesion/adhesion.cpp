@@ -15,7 +15,7 @@
 namespace restitution {
 
 const std::vector<std::string>& adhesive_model_names() {
-  static const std::vector<std::string> names{"jkr-lammps", "jkr", "dmt"};  // AdhesiveModel's order
+  static const std::vector<std::string> names{"jkr-lammps", "jkr", "dmt", "sjkr"};  // AdhesiveModel's order
   return names;
 }
 
@@ -25,7 +25,7 @@ AdhesiveModel adhesive_model_from_name(const std::string& name) {
     if (names[i] == name) return static_cast<AdhesiveModel>(i);
   }
   throw InvalidInput(
-      fmt::format("unknown adhesive model '{}' (choose {}, {} or {})", name, names[0], names[1], names[2]));
+      fmt::format("unknown adhesive model '{}' (choose one of {})", name, fmt::join(names, ", ")));
 }
 
 const std::string& adhesive_model_name(AdhesiveModel model) {
@@ -91,7 +91,7 @@ double elastic_hysteresis_work_j(const AdhesiveContact& contact) {
 
 double break_overlap_m(const AdhesiveContact& contact) {
   const auto scaled = adhesion::scale_adhesion(contact);
-  if (contact.model == AdhesiveModel::dmt) return 0.0;
+  if (contact.model == AdhesiveModel::dmt || contact.model == AdhesiveModel::sjkr) return 0.0;
   return adhesion::jkr_overlap(scaled.break_radius) * scaled.length_m;
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "adhesion/jkr_branch.hpp"
+#include "adhesion/sjkr_branch.hpp"
 #include "cvode/event_driver.hpp"
 #include "restitution/errors.hpp"
 
@@ -24,10 +25,12 @@ void derivatives(const ScaledAdhesion& scaled, const double* y, double* rates) {
   const double position = y[0];
   const double p = y[1];
   const double c = scaled.damping;
-  if (scaled.model == AdhesiveModel::dmt) {
+  if (scaled.model == AdhesiveModel::dmt || scaled.model == AdhesiveModel::sjkr) {
     const double u = position;
+    const double force =
+        scaled.model == AdhesiveModel::dmt ? u * u * u - 1.0 : sjkr_force(scaled.sjkr_radii, u);
     rates[0] = 0.5 * p;
-    rates[1] = u * (1.0 - u * u * u - c * u * p);
+    rates[1] = -u * (force + c * u * p);
     rates[2] = u;
     rates[3] = c * u * u * p * p;
     return;
@@ -47,7 +50,7 @@ void derivatives(const ScaledAdhesion& scaled, const double* y, double* rates) {
 }
 
 double energy(const ScaledAdhesion& scaled, const double* y) {
-  return 0.5 * y[1] * y[1] + branch_potential(scaled.model, y[0]);
+  return 0.5 * y[1] * y[1] + branch_potential(scaled, y[0]);
 }
 
 detail::EventSystem adhesive_system(const ScaledAdhesion& scaled) {
@@ -71,7 +74,8 @@ detail::EventSystem adhesive_system(const ScaledAdhesion& scaled) {
 }  // namespace
 
 ScaledEnd integrate_adhesive(const ScaledAdhesion& scaled, double impact_speed, double tolerance) {
-  const double start = scaled.model == AdhesiveModel::dmt ? 0.0 : kSnapInRadius;
+  const bool from_touch = scaled.model == AdhesiveModel::dmt || scaled.model == AdhesiveModel::sjkr;
+  const double start = from_touch ? 0.0 : kSnapInRadius;
   // Magnitudes for the absolute tolerances: the elastic energy ½V² reaches the position ~ (V²)^{1/5} at
   // maximal compression (both branches grow as position^5 in energy).
   const double kinetic = 0.5 * impact_speed * impact_speed + scaled.break_energy + 1.0;

@@ -6,23 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
+#include "dem/adhesive_lines_common.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::dem {
 namespace {
-
-// Rounds down to two significant digits: a number a user can read in the lines.
-double round_down_2(double x) {
-  const double scale = std::pow(10.0, std::floor(std::log10(x)) - 1.0);
-  return std::floor(x / scale) * scale;
-}
-
-// Rounds up to two significant digits.
-double round_up_2(double x) {
-  const double scale = std::pow(10.0, std::floor(std::log10(x)) - 1.0);
-  return std::ceil(x / scale) * scale;
-}
 
 // LAMMPS's step starts and drops the contact inside a step: the force there (|F_touch| at first touch,
 // |F_break| at the break) acts for up to one step too long or too short, an energy error up to |F| v dt at
@@ -47,12 +37,14 @@ double end_forces_n(const AdhesiveContact& c, double break_speed_m_per_s) {
 
 AdhesiveLammpsLines adhesive_lammps_lines(const AdhesiveLammpsRequest& request) {
   const AdhesiveContact& contact = request.contact;
-  if (contact.model == AdhesiveModel::jkr) {
+  if (contact.model == AdhesiveModel::jkr || contact.model == AdhesiveModel::sjkr) {
     throw InvalidInput(
-        "LAMMPS codes JKR with its own break rule and damping: the lines are for jkr-lammps or dmt");
+        "LAMMPS codes JKR with its own break rule and damping, and has no sjkr: the lines are for jkr-lammps "
+        "or dmt");
   }
   AdhesiveLammpsLines out;
-  out.sticking = sticking_speed(contact, request.tolerance);
+  auto solves = solve_listed_speeds(contact, request.speeds, request.tolerance);
+  out.sticking = solves.sticking;
   if (contact.model == AdhesiveModel::jkr_lammps) {
     // The textbook model with the A behind LAMMPS's damp = 2AE*/m*.
     AdhesiveContact textbook = contact;
@@ -60,29 +52,10 @@ AdhesiveLammpsLines adhesive_lammps_lines(const AdhesiveLammpsRequest& request) 
     textbook.damping = contact.damping * contact.effective_mass_kg / (2.0 * contact.effective_modulus_pa);
     out.textbook_sticking = sticking_speed(textbook, request.tolerance);
   }
-  out.speeds = request.speeds;
-  if (out.speeds.empty()) {
-    if (out.sticking.speed_m_per_s == 0.0) {
-      throw InvalidInput("these spheres never stick (elastic DMT): give the speeds with --impact-velocity");
-    }
-    for (const double k : {0.97, 1.03, 1.05, 1.5, 3.0, 10.0, 100.0}) {
-      out.speeds.push_back(k * out.sticking.speed_m_per_s);
-    }
-  }
-  double shortest_contact_s = 0.0;
-  double deepest_m = 0.0;
-  for (const double v : out.speeds) {
-    out.collisions.push_back(solve_adhesive(contact, v, request.tolerance));
-    const auto& c = out.collisions.back();
-    if (c.outcome == AdhesiveOutcome::bounced &&
-        (shortest_contact_s == 0.0 || c.contact_time_s < shortest_contact_s)) {
-      shortest_contact_s = c.contact_time_s;
-    }
-    deepest_m = std::max(deepest_m, c.max_compression_m);
-  }
-  if (shortest_contact_s == 0.0) {  // every speed sticks: resolve the approach to the first turn
-    for (const auto& c : out.collisions) shortest_contact_s = std::max(shortest_contact_s, c.contact_time_s);
-  }
+  out.speeds = std::move(solves.speeds);
+  out.collisions = std::move(solves.collisions);
+  const double shortest_contact_s = solves.shortest_contact_s;
+  const double deepest_m = solves.deepest_m;
   out.break_overlap_m = break_overlap_m(contact);
   const bool jkr = contact.model == AdhesiveModel::jkr_lammps;
   out.skin_m = round_up_2(jkr ? 3.0 * std::abs(out.break_overlap_m) : deepest_m);
@@ -103,11 +76,8 @@ AdhesiveLammpsLines adhesive_lammps_lines(const AdhesiveLammpsRequest& request) 
       fmt::format("pair_coeff * * {} {} {} {} {} tangential linear_history 0 0 0 damping viscoelastic",
                   jkr ? "jkr" : "dmt", request.young_modulus_pa, contact.damping, request.poisson_ratio,
                   contact.surface_energy_j_per_m2),
-      fmt::format("neighbor {} bin", out.skin_m),
-      "neigh_modify delay 0 every 1 check yes",
-      "fix integrate all nve/sphere",
-      fmt::format("timestep {}", out.timestep_s),
   };
+  for (auto& line : integration_lines(out.skin_m, out.timestep_s)) out.lines.push_back(std::move(line));
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "dem/adhesive_pair_deck.hpp"
 #include "dem/code_runner.hpp"
 #include "dem/process_output.hpp"
 #include "dem/steel_beads.hpp"
@@ -28,67 +29,10 @@ struct Case {
   std::string speeds;  // --impact-velocity, or "" for the default multiples of v_s
 };
 
-// One pair per speed, 20 radii apart in y; each starts a thousandth of a radius from touching and prints
-// "PAIR i eps gap" (gap: centre distance − 2R, negative while in contact).
-std::string deck_of(const json& dem, const Case& c, double timestep_s) {
-  std::string d = "atom_modify map array sort 0 0.0\nboundary f f f\n";
-  const auto& speeds = dem.at("speeds");
-  const std::size_t n = speeds.size();
-  const double spacing = 20.0 * c.radius, gap = 1e-3 * c.radius;
-  char b[512];
-  for (std::size_t i = 0; i < 3; ++i)
-    d += dem.at("lines").at(i).get<std::string>() + "\n";  // units, atom_style, comm_modify
-  std::snprintf(b, sizeof b,
-                "region box block %.17g %.17g %.17g %.17g %.17g %.17g units box\ncreate_box 1 box\n",
-                -spacing, spacing, -spacing, spacing * static_cast<double>(n), -spacing, spacing);
-  d += b;
-  double longest = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double v = speeds[i].at("velocity_m_per_s").get<double>();
-    const double y = spacing * static_cast<double>(i);
-    std::snprintf(
-        b, sizeof b,
-        "create_atoms 1 single %.17g %.17g 0 units box\ncreate_atoms 1 single %.17g %.17g 0 units box\n",
-        -c.radius - gap / 2, y, c.radius + gap / 2, y);
-    d += b;
-    longest = std::max(longest, gap / v + 3.0 * speeds[i].at("contact_time_s").get<double>());
-  }
-  std::snprintf(b, sizeof b, "set group all diameter %.17g\nset group all density %.17g\n", 2 * c.radius,
-                c.density);
-  d += b;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double v = speeds[i].at("velocity_m_per_s").get<double>();
-    std::snprintf(b, sizeof b, "set atom %zu vx %.17g\nset atom %zu vx %.17g\n", 2 * i + 1, 0.5 * v,
-                  2 * i + 2, -0.5 * v);
-    d += b;
-  }
-  for (std::size_t i = 3; i < dem.at("lines").size(); ++i) {
-    const std::string line = dem.at("lines").at(i).get<std::string>();
-    if (line.rfind("timestep", 0) == 0) continue;
-    d += line + "\n";
-  }
-  std::snprintf(b, sizeof b, "timestep %.17g\nthermo 0\nrun %ld\n", timestep_s,
-                static_cast<long>(std::ceil(longest / timestep_s)));
-  d += b;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double v = speeds[i].at("velocity_m_per_s").get<double>();
-    std::snprintf(b, sizeof b, "print \"PAIR %zu $((vx[%zu]-vx[%zu])/%.17g) $(x[%zu]-x[%zu]-%.17g)\"\n", i,
-                  2 * i + 2, 2 * i + 1, v, 2 * i + 2, 2 * i + 1, 2 * c.radius);
-    d += b;
-  }
-  return d;
-}
+using adhesive_pair_test::deck_of;
 
 restitution::dem::TaggedEps run_lammps(const std::string& deck, std::size_t n) {
-  const std::string program = restitution::dem::dem_program(restitution::dem::Code::lammps);
-  const auto run = restitution::dem::output_with_input_file(deck, ".in", [&](const std::string& path) {
-    return std::vector<std::string>{program, "-log", "none", "-echo", "none", "-in", path};
-  });
-  const auto read = restitution::dem::tagged_eps(run.output, "PAIR", n);
-  const std::string failure = restitution::dem::code_run_failure(run, program, read);
-  EXPECT_TRUE(failure.empty()) << failure << "\n"
-                               << run.output.substr(run.output.size() > 2000 ? run.output.size() - 2000 : 0);
-  return read;
+  return adhesive_pair_test::run_code(restitution::dem::Code::lammps, deck, n);
 }
 
 std::string command_of(const Case& c) {
@@ -110,7 +54,7 @@ TEST_P(AdhesionLammps, PrintedLinesGiveThePrintedEps) {
   const json dem = run_json(command_of(c));
   const double dt = dem.at("timestep_s").get<double>();
   const auto& speeds = dem.at("speeds");
-  const auto measured = run_lammps(deck_of(dem, c, dt), speeds.size());
+  const auto measured = run_lammps(deck_of(dem, c.radius, c.density, dt), speeds.size());
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     const double v = speeds[i].at("velocity_m_per_s").get<double>();
     const bool stuck = speeds[i].at("outcome") == "stuck";
@@ -127,8 +71,8 @@ TEST_P(AdhesionLammps, ErrorShrinksWithTheTimeStep) {
   const double dt = dem.at("timestep_s").get<double>();
   const auto& speeds = dem.at("speeds");
   double worst_fine = 0.0, worst_coarse = 0.0;
-  const auto fine = run_lammps(deck_of(dem, c, dt), speeds.size());
-  const auto coarse = run_lammps(deck_of(dem, c, 16.0 * dt), speeds.size());
+  const auto fine = run_lammps(deck_of(dem, c.radius, c.density, dt), speeds.size());
+  const auto coarse = run_lammps(deck_of(dem, c.radius, c.density, 16.0 * dt), speeds.size());
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     if (speeds[i].at("outcome") == "stuck") continue;
     const double eps = speeds[i].at("eps").get<double>();
@@ -138,6 +82,12 @@ TEST_P(AdhesionLammps, ErrorShrinksWithTheTimeStep) {
   RecordProperty("worst_eps_error_at_dt", std::to_string(worst_fine));
   RecordProperty("worst_eps_error_at_16dt", std::to_string(worst_coarse));
   EXPECT_GT(worst_coarse, worst_fine) << c.name;
+}
+
+TEST(AdhesionLammpsDeck, WrittenCheckDeckAgrees) {
+  const Case c{"ice_dmt_damped_deck", "dmt", 7e9, 0.25, 1.5e-6, 920.0, 0.19, 1e-9, ""};
+  adhesive_pair_test::expect_written_deck_agrees(restitution::dem::Code::lammps, command_of(c), c.name,
+                                                 run_json);
 }
 
 // µm ice (docs/adhesion.md §7) and 10 µm silica-like spheres (Y = 70 GPa, ν = 0.17, ρ = 2600, γ = 0.025).

@@ -249,10 +249,20 @@ int run_polydisperse(const DemOptions& o) {
 // --wall: one sphere on a wall; the options of pairs and type sets are refused by name.
 // The adhesive pair's lines: LAMMPS only, one pair, no wall, A given (not calibrated from --eps).
 int run_adhesion(const DemOptions& o, const std::vector<std::string>& given) {
-  if (!o.adhesion.model) throw InvalidInput("--surface-energy belongs to --adhesion");
-  if (o.code != "lammps") {
-    throw InvalidInput(fmt::format("--adhesion prints LAMMPS's pair granular lines only (not {}'s)", o.code));
+  if (!o.adhesion.model) {
+    throw InvalidInput("--surface-energy and --cohesion-energy-density belong to --adhesion");
   }
+  const bool sjkr = *o.adhesion.model == "sjkr";
+  if (sjkr && o.code != "liggghts") {
+    throw InvalidInput(
+        fmt::format("--adhesion sjkr is LIGGGHTS's cohesion model: use --code liggghts (not {})", o.code));
+  }
+  if (!sjkr && o.code != "lammps") {
+    throw InvalidInput(fmt::format(
+        "--adhesion {} prints LAMMPS's pair granular lines only (not {}'s; LIGGGHTS has --adhesion sjkr)",
+        *o.adhesion.model, o.code));
+  }
+  if (sjkr && o.wall.wall) throw InvalidInput("--adhesion sjkr is for a pair of spheres, not --wall");
   if (o.wall.wall && *o.adhesion.model == "jkr") {
     throw InvalidInput(
         "--wall with --adhesion jkr: LAMMPS 20220106's fix wall/gran ... jkr uses a pull-off distance of the "
@@ -272,6 +282,7 @@ int run_adhesion(const DemOptions& o, const std::vector<std::string>& given) {
   request.speeds = o.speeds;
   request.tolerance = o.tolerance;
   request.json = o.json;
+  request.deck = o.deck;
   return run_adhesive_dem(request);
 }
 
@@ -363,14 +374,13 @@ void add_dem_command(CLI::App& app, Action& chosen) {
   add_dem_oblique_options(*cmd, o->oblique);
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
-  add_adhesion_options(*cmd, o->adhesion, {"jkr", "dmt"});
+  add_adhesion_options(*cmd, o->adhesion, {"jkr", "dmt", "sjkr"});
   cmd->callback([o, cmd, &chosen] {
     o->end_given = cmd->count("--end") > 0;
     if (o->adhesion.any()) {
       std::vector<std::string> given;  // what the adhesive lines do not take
-      for (const char* option :
-           {"--eps", "--from-fit", "--end", "--deck", "--angle", "--target-et", "--tangential", "--friction",
-            "--timestep", "--constant-eps", "--yade-version", "--wall"}) {
+      for (const char* option : {"--eps", "--from-fit", "--end", "--angle", "--target-et", "--tangential",
+                                 "--friction", "--timestep", "--constant-eps", "--yade-version", "--wall"}) {
         if (cmd->count(option) > 0 &&
             !(std::string_view(option) == "--wall" && o->adhesion.model && *o->adhesion.model == "jkr")) {
           given.emplace_back(option);

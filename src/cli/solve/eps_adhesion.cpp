@@ -18,13 +18,28 @@ struct AdhesiveReport {
   std::optional<AdhesiveCollision> collision;
 };
 
+const char* damping_unit(AdhesiveModel model) {
+  if (model == AdhesiveModel::jkr) return "s (A)";
+  return model == AdhesiveModel::sjkr ? "1/(m s) (LIGGGHTS gamman)" : "1/(m s) (LAMMPS damp)";
+}
+
+const char* damping_key(AdhesiveModel model) {
+  if (model == AdhesiveModel::jkr) return "dissipative_constant_s";
+  return model == AdhesiveModel::sjkr ? "liggghts_gamman_per_m_s" : "lammps_damping_per_m_s";
+}
+
 void print_table(const AdhesiveReport& r) {
   const auto& c = r.contact;
-  fmt::print("{} adhesive collision, surface energy {:g} J/m^2 per surface (w = 2 gamma), tolerance {:g}\n",
-             adhesive_model_name(c.model), c.surface_energy_j_per_m2, r.tolerance);
+  if (c.model == AdhesiveModel::sjkr) {
+    fmt::print("sjkr adhesive collision (LIGGGHTS), cohesion energy density {:g} J/m^3, tolerance {:g}\n",
+               c.cohesion_energy_density_j_per_m3, r.tolerance);
+  } else {
+    fmt::print("{} adhesive collision, surface energy {:g} J/m^2 per surface (w = 2 gamma), tolerance {:g}\n",
+               adhesive_model_name(c.model), c.surface_energy_j_per_m2, r.tolerance);
+  }
   fmt::print("  E* = {:.12g} Pa   R_eff = {:.12g} m   m_eff = {:.12g} kg   damping = {:.12g} {}\n",
              c.effective_modulus_pa, c.effective_radius_m, c.effective_mass_kg, c.damping,
-             c.model == AdhesiveModel::jkr ? "s (A)" : "1/(m s) (LAMMPS damp)");
+             damping_unit(c.model));
   fmt::print("  break overlap {:.12g} m   elastic hysteresis work {:.12g} J\n", r.break_overlap,
              r.elastic_work_j);
   fmt::print("  sticking speed v_s = {:.12g} m/s ({} solves)\n", r.sticking.speed_m_per_s, r.sticking.solves);
@@ -47,11 +62,15 @@ void print_json(const AdhesiveReport& r) {
   JsonWriter json;
   json.begin_object();
   json.field("adhesion", adhesive_model_name(c.model).c_str());
-  json.field("surface_energy_j_per_m2", c.surface_energy_j_per_m2);
+  if (c.model == AdhesiveModel::sjkr) {
+    json.field("cohesion_energy_density_j_per_m3", c.cohesion_energy_density_j_per_m3);
+  } else {
+    json.field("surface_energy_j_per_m2", c.surface_energy_j_per_m2);
+  }
   json.field("effective_modulus_pa", c.effective_modulus_pa);
   json.field("effective_radius_m", c.effective_radius_m);
   json.field("effective_mass_kg", c.effective_mass_kg);
-  json.field(c.model == AdhesiveModel::jkr ? "dissipative_constant_s" : "lammps_damping_per_m_s", c.damping);
+  json.field(damping_key(c.model), c.damping);
   json.field("tolerance", r.tolerance);
   json.field("break_overlap_m", r.break_overlap);
   json.field("elastic_hysteresis_work_j", r.elastic_work_j);
