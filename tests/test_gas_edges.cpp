@@ -170,6 +170,18 @@ TEST(GasEdges, SeedAndParticlesAreRefusedOutsideTheirRanges) {
   EXPECT_TRUE(std::filesystem::is_empty(folder.path));
 }
 
+// A deck no code could finish is refused before a file is written: φ = 1e-300 asks for a box of 2e98 m and
+// about 1e100 steps (it used to be written).
+TEST(GasEdges, DeckOfARunTooLongForAnyCodeIsRefused) {
+  TempFolder folder;
+  expect_refused(kSpheres +
+                     "--packing-fraction 1e-300 --young-modulus 1e8 --poisson-ratio 0.4 --eps 0.8 "
+                     "--velocity 2 --haff-times 30 --deck " +
+                     (folder.path / "d.in").string(),
+                 {"time steps", "at most 1e+10", "--packing-fraction", "--duration"});
+  EXPECT_TRUE(std::filesystem::is_empty(folder.path));
+}
+
 // The deck says how big its data file is, and the figure docs/gas.md gives per sphere is the one measured.
 TEST(GasEdges, DeckSaysHowBigItsDataFileIs) {
   TempFolder folder;
