@@ -63,6 +63,8 @@ TEST(CliEpsAdhesion, RefusalsNameTheProblem) {
       {std::string("eps --surface-energy 0.19 --zeta 1"), "--adhesion"},
       {std::string("eps --adhesion jkr --surface-energy 0.19 --dissipative-constant -1") + kIce,
        "--dissipative-constant"},
+      {std::string("calibrate --adhesion sjkr --cohesion-energy-density 1e5 --eps 0.6 --velocity 0.1") + kIce,
+       "sjkr (--cohesion-energy-density) is not calibrated yet"},
   };
   for (const auto& [command, word] : cases) {
     const auto outcome = run_cli(command);

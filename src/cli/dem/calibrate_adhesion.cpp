@@ -14,6 +14,14 @@ int run_adhesive_calibrate(const AdhesionOptions& adhesion, const MaterialOption
                            double velocity_m_per_s, double tolerance, bool json) {
   if (!adhesion.model) throw InvalidInput("--surface-energy belongs to --adhesion: give --adhesion MODEL");
   const AdhesiveModel model = adhesive_model_from_name(*adhesion.model);
+  if (model == AdhesiveModel::sjkr || adhesion.cohesion_energy_density) {
+    // The calibration searches A with a surface energy; sjkr's cohesion energy density is not wired to it
+    // yet.
+    throw InvalidInput(
+        "calibrate --adhesion takes jkr, jkr-lammps or dmt with --surface-energy; sjkr "
+        "(--cohesion-energy-density) "
+        "is not calibrated yet: bracket A with `restitution eps --adhesion sjkr` or `sweep --adhesion sjkr`");
+  }
   if (!adhesion.surface_energy) {
     throw InvalidInput(fmt::format("--adhesion {} needs --surface-energy", *adhesion.model));
   }
