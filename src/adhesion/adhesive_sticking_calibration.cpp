@@ -10,8 +10,10 @@
 
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
+#include <optional>
 #include <utility>
 
+#include "adhesion/sticking_search.hpp"
 #include "restitution/adhesive_calibration.hpp"
 #include "restitution/adhesive_contact.hpp"
 #include "restitution/errors.hpp"
@@ -76,17 +78,20 @@ AdhesiveStickingCalibration calibrate_adhesive_sticking(AdhesiveModel model, con
   const double contact_time = solve_adhesive(elastic, impact_speed_m_per_s, tolerance).contact_time_s;
   ++out.solves;
   // g(ln A0) = ε at r·v_s(A0) − eps, at γ0: positive as A0 → 0 (the undamped limit), falling with A0.
+  // The reference contact's sticking speed; nullopt above the critical damping, where they stick at every
+  // speed (ε = 0 at any r·v_s: too much damping).
   auto reference_sticking = [&](double log_a) {
     const AdhesiveContact contact = adhesive_contact_of(model, material, gamma0, std::exp(log_a));
-    const StickingSpeed vs = sticking_speed(contact, tolerance);
+    const adhesion::StickingSearch vs = adhesion::search_sticking_speed(contact, tolerance);
     out.solves += vs.solves;
     return std::pair{contact, vs.speed_m_per_s};
   };
   auto margin = [&](double log_a) {
     try {
       const auto [contact, vs] = reference_sticking(log_a);
+      if (!vs) return -eps;
       ++out.solves;
-      return solve_adhesive(contact, ratio * vs, tolerance).eps - eps;
+      return solve_adhesive(contact, ratio * *vs, tolerance).eps - eps;
     } catch (const NumericalFailure& e) {
       throw NumericalFailure(fmt::format(
           "calibrate_adhesive_sticking: at a trial damping of {:g} times the reference collision's time "
@@ -121,7 +126,13 @@ AdhesiveStickingCalibration calibrate_adhesive_sticking(AdhesiveModel model, con
   const double log_a0 = 0.5 * (a + b);
 
   // Scale to the measured v_s at the same dimensionless damping.
-  const double gamma_ratio = std::pow(sticking_speed_m_per_s / reference_sticking(log_a0).second, 1.2);
+  const std::optional<double> root_sticking = reference_sticking(log_a0).second;
+  if (!root_sticking) {
+    throw NumericalFailure(
+        "calibrate_adhesive_sticking: the root lies at the critical damping, above which there is no "
+        "sticking speed");
+  }
+  const double gamma_ratio = std::pow(sticking_speed_m_per_s / *root_sticking, 1.2);
   out.surface_energy_j_per_m2 = gamma0 * gamma_ratio;
   out.dissipative_constant_s = std::exp(log_a0) * std::pow(gamma_ratio, -1.0 / 6.0);
   out.contact = adhesive_contact_of(model, material, out.surface_energy_j_per_m2, out.dissipative_constant_s);
