@@ -77,7 +77,6 @@ AdhesiveStickingCalibration calibrate_adhesive_sticking(AdhesiveModel model, con
   const AdhesiveContact elastic = adhesive_contact_of(model, material, gamma0, 0.0);
   const double contact_time = solve_adhesive(elastic, impact_speed_m_per_s, tolerance).contact_time_s;
   ++out.solves;
-  // g(ln A0) = ε at r·v_s(A0) − eps, at γ0: positive as A0 → 0 (the undamped limit), falling with A0.
   // The reference contact's sticking speed; nullopt above the critical damping, where they stick at every
   // speed (ε = 0 at any r·v_s: too much damping).
   auto reference_sticking = [&](double log_a) {
@@ -86,6 +85,7 @@ AdhesiveStickingCalibration calibrate_adhesive_sticking(AdhesiveModel model, con
     out.solves += vs.solves;
     return std::pair{contact, vs.speed_m_per_s};
   };
+  // g(ln A0) = ε at r·v_s(A0) − eps, at γ0: positive as A0 → 0 (the undamped limit), falling with A0.
   auto margin = [&](double log_a) {
     try {
       const auto [contact, vs] = reference_sticking(log_a);
