@@ -3,13 +3,16 @@
 // against the viscoelastic Hertz solve at the same tolerance (default method, both ends as `eps` asks, and
 // the naive end alone, which is what the adhesive solve computes), and the sticking speed at T = 1e-8
 // (counter "solves"). Issue 48's target: an adhesive solve costs at most 3× the Hertz one; v_s in at most 30
-// solves. µm ice (docs/adhesion.md §7) at 3 v_s, with a damping that gives ε ≈ 0.5-0.7 there.
+// solves. µm ice (docs/adhesion.md §7) at 3 v_s, with a damping that gives ε ≈ 0.5-0.7 there. And γ with the
+// damping from ε at 3 v_s plus v_s (calibrate_adhesive_sticking, T = 1e-8; counter "solves").
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "restitution/adhesion.hpp"
+#include "restitution/adhesive_calibration.hpp"
+#include "restitution/adhesive_contact.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/contact_law.hpp"
 
@@ -60,6 +63,25 @@ void sticking(benchmark::State& state, AdhesiveModel model) {
   state.counters["solves"] = result.solves;
 }
 
+// The inverse of adhesive_solve: ε at 3 v_s and v_s of the same contact give γ and A back.
+void calibrate_sticking(benchmark::State& state, AdhesiveModel model) {
+  Material material;
+  material.young_modulus_pa = 7e9;
+  material.poisson_ratio = 0.25;
+  material.radius1_m = material.radius2_m = 1.5e-6;
+  material.density_kg_m3 = 920.0;
+  const auto contact = adhesive_contact_of(model, material, 0.19, 2e-10);
+  const double vs = sticking_speed(contact, 1e-10).speed_m_per_s;
+  const double eps = solve_adhesive(contact, 3.0 * vs, 1e-10).eps;
+  AdhesiveStickingCalibration result;
+  for (auto _ : state) {  // NOLINT(clang-analyzer-deadcode.DeadStores): the benchmark loop idiom
+    result = calibrate_adhesive_sticking(model, material, eps, 3.0 * vs, vs, 1e-8);
+    benchmark::DoNotOptimize(result);
+  }
+  state.counters["solves"] = result.solves;
+  state.counters["gamma_error"] = result.surface_energy_j_per_m2 / 0.19 - 1.0;
+}
+
 void register_cases() {
   for (const AdhesiveModel model : {AdhesiveModel::jkr_lammps, AdhesiveModel::jkr, AdhesiveModel::dmt}) {
     const std::string name = adhesive_model_name(model);
@@ -67,6 +89,9 @@ void register_cases() {
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("sticking_speed/" + name + "/T=1e-8").c_str(), sticking, model)
         ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("calibrate_sticking/" + name + "/T=1e-8").c_str(), calibrate_sticking,
+                                 model)
+        ->Unit(benchmark::kMillisecond);
   }
   benchmark::RegisterBenchmark("hertz/both_ends/zeta=0.3/T=1e-8", hertz_solve, EndSet::both())
       ->Unit(benchmark::kMicrosecond);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "restitution/adhesion.hpp"
 #include "restitution/errors.hpp"
@@ -66,6 +67,8 @@ double rk4_eps(const AdhesiveContact& c, double v, double dt) {
     s += dt / 6.0 * (k1s + 2.0 * k2s + 2.0 * k3s + k4s);
     if (s < 0.0) receding = true;
     if (receding && s > 0.0 && d > 0.0) return 0.0;
+    // Overdamped: at rest inside the cohesive well (never turning inwards again), bound as well.
+    if (receding && d > 0.0 && std::abs(s) < 1e-9 * v) return 0.0;
     if (d < 0.0) return -s / v;
   }
   return -1.0;
@@ -104,6 +107,24 @@ TEST(AdhesionSjkr, SticksBelowTheStickingSpeed) {
   EXPECT_EQ(rk4_eps(c, 0.97 * vs, 1e-8), 0.0);
   EXPECT_EQ(restitution::solve_adhesive(c, 1.03 * vs).outcome, AdhesiveOutcome::bounced);
   EXPECT_GT(rk4_eps(c, 1.03 * vs, 1e-8), 0.0);
+}
+
+// Strong damping (LIGGGHTS's gamman for A = 1e-4 s, the damping number c ≈ 1.2): the spheres stick at every
+// impact speed, so there is no sticking speed. The search used to double the speed until CVODE ran out of
+// steps ("too much work"); it now stops at 1e6 speed units and says so.
+TEST(AdhesionSjkr, StrongDampingHasNoStickingSpeed) {
+  const auto c = soft({1e-3, 1e-3, 2500.0}, 1e5, 1.1974039605659839e8);
+  try {
+    (void)restitution::sticking_speed(c);
+    ADD_FAILURE() << "a sticking speed for a contact that sticks at every speed";
+  } catch (const restitution::InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("no sticking speed"), std::string::npos) << e.what();
+  }
+  for (const double v : {0.01, 0.3, 3.0, 100.0, 1e4}) {
+    const auto r = restitution::solve_adhesive(c, v);
+    EXPECT_EQ(r.outcome, AdhesiveOutcome::stuck) << v;
+    if (v <= 3.0) EXPECT_EQ(rk4_eps(c, v, r.contact_time_s / 4e5), 0.0) << v;
+  }
 }
 
 TEST(AdhesionSjkr, EqualSpheresByDefault) {

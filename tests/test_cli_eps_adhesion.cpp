@@ -7,6 +7,7 @@
 
 #include "cli_runner.hpp"
 #include "restitution/adhesion.hpp"
+#include "restitution/adhesive_calibration.hpp"
 
 namespace restitution {
 namespace {
@@ -53,6 +54,28 @@ TEST(CliEpsAdhesion, StuckBelowTheStickingSpeedIsAResult) {
   EXPECT_GT(j["sticking_speed_m_per_s"].get<double>(), 1.0);
 }
 
+TEST(CliEpsAdhesion, CalibrateFromTheStickingSpeedIsTheLibrarys) {
+  const auto outcome = run_cli(std::string("calibrate --adhesion jkr-lammps --eps 0.5 --velocity 3 ") +
+                               "--sticking-speed 1.5 --json" + kIce);
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const json j = json::parse(outcome.out);
+  Material ice;
+  ice.young_modulus_pa = 7e9;
+  ice.poisson_ratio = 0.25;
+  ice.radius1_m = ice.radius2_m = 1.5e-6;
+  ice.density_kg_m3 = 920.0;
+  const auto c = calibrate_adhesive_sticking(AdhesiveModel::jkr_lammps, ice, 0.5, 3.0, 1.5);
+  EXPECT_EQ(j["surface_energy_j_per_m2"].get<double>(), c.surface_energy_j_per_m2);
+  EXPECT_EQ(j["dissipative_constant_s"].get<double>(), c.dissipative_constant_s);
+  EXPECT_EQ(j["lammps_damping_per_m_s"].get<double>(), c.contact.damping);
+  EXPECT_EQ(j["eps_at_velocity"].get<double>(), c.eps_at_velocity);
+  EXPECT_EQ(j["sticking_speed_resolved_m_per_s"].get<double>(), c.sticking_speed_m_per_s);
+  EXPECT_EQ(j["undamped_eps"].get<double>(), c.undamped_eps);
+  EXPECT_EQ(j["solves"].get<int>(), c.solves);
+  EXPECT_NEAR(c.eps_at_velocity, 0.5, 1e-9);
+  EXPECT_NEAR(c.sticking_speed_m_per_s, 1.5, 1.5e-9);
+}
+
 TEST(CliEpsAdhesion, RefusalsNameTheProblem) {
   const std::pair<std::string, std::string> cases[] = {
       {std::string("eps --adhesion jkr") + kIce, "--surface-energy"},
@@ -65,6 +88,15 @@ TEST(CliEpsAdhesion, RefusalsNameTheProblem) {
        "--dissipative-constant"},
       {std::string("calibrate --adhesion sjkr --cohesion-energy-density 1e5 --eps 0.6 --velocity 0.1") + kIce,
        "sjkr (--cohesion-energy-density) is not calibrated yet"},
+      {std::string("calibrate --adhesion jkr --eps 0.5 --velocity 2 --sticking-speed 2") + kIce,
+       "not below the impact speed"},
+      {std::string("calibrate --adhesion jkr --eps 0.9 --velocity 2 --sticking-speed 1") + kIce,
+       "damping only lowers eps"},
+      {std::string(
+           "calibrate --adhesion jkr --eps 0.5 --velocity 2 --sticking-speed 1 --surface-energy 0.1") +
+           kIce,
+       "exclude each other"},
+      {std::string("calibrate --eps 0.5 --velocity 2 --sticking-speed 1") + kIce, "--adhesion MODEL"},
   };
   for (const auto& [command, word] : cases) {
     const auto outcome = run_cli(command);

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// The damping of an adhesive contact from one measured ε at one impact speed, the surface energy known
-// (docs/adhesion.md §7a): `calibrate --adhesion`.
+// The damping of an adhesive contact from one measured ε at one impact speed, the surface energy known, or
+// the surface energy and the damping together from ε at one speed plus the sticking speed (docs/adhesion.md
+// §7a): `calibrate --adhesion`.
 #include "restitution/adhesion.hpp"
 #include "restitution/material.hpp"
 
@@ -25,5 +26,30 @@ struct AdhesiveDampingCalibration {
                                                                     double surface_energy_j_per_m2,
                                                                     double eps, double impact_speed_m_per_s,
                                                                     double tolerance = 1e-10);
+
+struct AdhesiveStickingCalibration {
+  double surface_energy_j_per_m2 = 0.0;  // γ per surface
+  double dissipative_constant_s = 0.0;   // A [s]; LAMMPS's damp = 2AE*/m_eff for jkr-lammps and dmt
+  AdhesiveContact contact;               // with γ and the damping found
+  double eps_at_velocity = 0.0;          // ε re-solved with (γ, A)
+  double sticking_speed_m_per_s = 0.0;   // v_s re-solved with (γ, A)
+  // sqrt(1 − (v_s/v)²): ε of the undamped JKR models at the γ that gives v_s, and the limit of every model
+  // (DMT too) as the damping vanishes; the largest ε reachable.
+  double undamped_eps = 0.0;
+  int solves = 0;  // collisions integrated, the sticking speeds' included
+};
+
+// γ and A such that the model (jkr-lammps, jkr or dmt) sticks below v_s [m/s] and gives ε = eps at the impact
+// speed v [m/s] > v_s, for two spheres of the material, each to relative tolerance T (docs/adhesion.md §7a).
+// In the scaled variables ε(v/v_s) depends on the dimensionless damping alone, so one 1-D root in A at a
+// reference γ (each trial: a sticking speed and one collision), then γ and A follow from the scaling
+// v_s ∝ γ^{5/6}, A ∝ γ^{−1/6} at fixed dimensionless damping. Throws InvalidInput for eps outside (0, 1), v_s
+// not in (0, v), an eps at or above the undamped sqrt(1 − (v_s/v)²), sjkr, or a bad material;
+// NumericalFailure when the damping needed lies where the solver fails.
+[[nodiscard]] AdhesiveStickingCalibration calibrate_adhesive_sticking(AdhesiveModel model,
+                                                                      const Material& material, double eps,
+                                                                      double impact_speed_m_per_s,
+                                                                      double sticking_speed_m_per_s,
+                                                                      double tolerance = 1e-10);
 
 }  // namespace restitution

@@ -7,7 +7,7 @@ import numpy as np
 from . import Material, SolverStats
 
 _Real = Union[float, np.floating[Any], np.integer[Any]]
-Adhesion = Literal["jkr-lammps", "jkr", "dmt"]
+Adhesion = Literal["jkr-lammps", "jkr", "dmt", "sjkr"]
 Outcome = Literal["bounced", "stuck"]
 
 class AdhesiveCollision:
@@ -39,7 +39,8 @@ def adhesive_collision(
     *,
     material: Material,
     adhesion: Adhesion = ...,
-    surface_energy: _Real,  # J/m^2, per surface
+    surface_energy: Optional[_Real] = ...,  # J/m^2, per surface (jkr-lammps, jkr, dmt)
+    cohesion_energy_density: Optional[_Real] = ...,  # J/m^3, LIGGGHTS's k_c (sjkr)
     dissipative_constant: Optional[_Real] = ...,  # A, s
     tolerance: _Real = ...,
 ) -> AdhesiveCollision: ...
@@ -47,8 +48,15 @@ def sticking_speed(
     *,
     material: Material,
     adhesion: Adhesion = ...,
-    surface_energy: _Real,  # J/m^2, per surface
+    surface_energy: Optional[_Real] = ...,  # J/m^2, per surface (jkr-lammps, jkr, dmt)
+    cohesion_energy_density: Optional[_Real] = ...,  # J/m^3, LIGGGHTS's k_c (sjkr)
     dissipative_constant: Optional[_Real] = ...,  # A, s
     tolerance: _Real = ...,
 ) -> float: ...  # m/s
-def adhesive_closed_forms(*, material: Material, adhesion: Adhesion = ..., surface_energy: _Real) -> Dict[str, float]: ...
+def adhesive_closed_forms(
+    *,
+    material: Material,
+    adhesion: Adhesion = ...,
+    surface_energy: Optional[_Real] = ...,  # J/m^2, per surface (jkr-lammps, jkr, dmt)
+    cohesion_energy_density: Optional[_Real] = ...,  # J/m^3, LIGGGHTS's k_c (sjkr)
+) -> Dict[str, float]: ...

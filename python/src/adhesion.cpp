@@ -7,7 +7,6 @@
 
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "bindings.hpp"
 #include "restitution/adhesion.hpp"
@@ -28,55 +27,70 @@ struct AdhesiveResult {
   AdhesiveCollision collision;
 };
 
+// The model's adhesion parameter: γ per surface [J/m²] for jkr-lammps, jkr and dmt, LIGGGHTS's cohesion
+// energy density k_c [J/m³] for sjkr, as `eps --adhesion` takes them (--surface-energy,
+// --cohesion-energy-density).
+struct Adhesion {
+  std::string model;
+  std::optional<double> surface_energy;
+  std::optional<double> cohesion_energy_density;
+};
+
 // A given as an argument, else the Material's dissipation (A or its viscosities' A), else elastic (A = 0) as
 // `eps --adhesion` without --dissipative-constant.
-AdhesiveContact adhesive_contact_for(const Material& material, const std::string& adhesion,
-                                     double surface_energy, std::optional<double> dissipative_constant) {
+AdhesiveContact adhesive_contact_for(const Material& material, const Adhesion& adhesion,
+                                     std::optional<double> dissipative_constant) {
   if (!dissipative_constant && (material.dissipative_constant_s || material.viscosities)) {
     dissipative_constant = material_constants(material).dissipative_constant_s;
   }
-  const AdhesiveModel model = adhesive_model_from_name(adhesion);
-  if (model == AdhesiveModel::sjkr) {
-    // sjkr takes LIGGGHTS's cohesion energy density, not a surface energy: not bound here yet.
-    throw InvalidInput(
-        "adhesion='sjkr' (LIGGGHTS's cohesion sjkr) is not offered in Python yet: use `restitution eps "
-        "--adhesion sjkr --cohesion-energy-density K`");
+  const AdhesiveModel model = adhesive_model_from_name(adhesion.model);
+  const bool sjkr = model == AdhesiveModel::sjkr;
+  if (sjkr ? !adhesion.cohesion_energy_density : !adhesion.surface_energy) {
+    throw InvalidInput(fmt::format(
+        "adhesion='{}' needs {}", adhesion.model,
+        sjkr ? "cohesion_energy_density (k_c, J/m^3)" : "surface_energy (gamma per surface, J/m^2)"));
   }
-  return adhesive_contact_of(model, material, surface_energy, dissipative_constant.value_or(0.0));
-}
-
-// The models Python takes: every adhesive model that a surface energy defines.
-std::vector<std::string> python_adhesive_model_names() {
-  std::vector<std::string> names = adhesive_model_names();
-  std::erase(names, adhesive_model_name(AdhesiveModel::sjkr));
-  return names;
+  if (sjkr ? adhesion.surface_energy.has_value() : adhesion.cohesion_energy_density.has_value()) {
+    throw InvalidInput(fmt::format("adhesion='{}' does not take {}", adhesion.model,
+                                   sjkr ? "surface_energy" : "cohesion_energy_density (sjkr's)"));
+  }
+  AdhesiveContact contact = adhesive_contact_of(model, material, adhesion.surface_energy.value_or(0.0),
+                                                dissipative_constant.value_or(0.0));
+  contact.cohesion_energy_density_j_per_m3 = adhesion.cohesion_energy_density.value_or(0.0);
+  return contact;
 }
 
 AdhesiveResult adhesive_collision(const Material& material, double velocity, const std::string& adhesion,
-                                  double surface_energy, std::optional<double> dissipative_constant,
-                                  double tolerance) {
-  const AdhesiveContact contact =
-      adhesive_contact_for(material, adhesion, surface_energy, dissipative_constant);
+                                  std::optional<double> surface_energy,
+                                  std::optional<double> cohesion_energy_density,
+                                  std::optional<double> dissipative_constant, double tolerance) {
+  const AdhesiveContact contact = adhesive_contact_for(
+      material, {adhesion, surface_energy, cohesion_energy_density}, dissipative_constant);
   AdhesiveResult r{adhesion, velocity, {}};
   r.collision = without_gil([&] { return solve_adhesive(contact, velocity, tolerance); });
   return r;
 }
 
-double sticking_speed_m_per_s(const Material& material, const std::string& adhesion, double surface_energy,
+double sticking_speed_m_per_s(const Material& material, const std::string& adhesion,
+                              std::optional<double> surface_energy,
+                              std::optional<double> cohesion_energy_density,
                               std::optional<double> dissipative_constant, double tolerance) {
-  const AdhesiveContact contact =
-      adhesive_contact_for(material, adhesion, surface_energy, dissipative_constant);
+  const AdhesiveContact contact = adhesive_contact_for(
+      material, {adhesion, surface_energy, cohesion_energy_density}, dissipative_constant);
   return without_gil([&] { return sticking_speed(contact, tolerance).speed_m_per_s; });
 }
 
-// The elastic model's closed forms (adhesion.hpp), named as the JSON of `eps --adhesion` names them.
+// The elastic model's closed forms (adhesion.hpp), named as the JSON of `eps --adhesion` names them (sjkr:
+// no pull-off force, as there).
 py::dict adhesive_closed_forms_of(const Material& material, const std::string& adhesion,
-                                  double surface_energy) {
-  const AdhesiveContact contact = adhesive_contact_for(material, adhesion, surface_energy, 0.0);
+                                  std::optional<double> surface_energy,
+                                  std::optional<double> cohesion_energy_density) {
+  const AdhesiveContact contact =
+      adhesive_contact_for(material, {adhesion, surface_energy, cohesion_energy_density}, 0.0);
   py::dict out;
   out["break_overlap_m"] = break_overlap_m(contact);
   out["elastic_hysteresis_work_j"] = elastic_hysteresis_work_j(contact);
-  out["pull_off_force_n"] = jkr_pull_off_force_n(contact);
+  if (contact.model != AdhesiveModel::sjkr) out["pull_off_force_n"] = jkr_pull_off_force_n(contact);
   out["effective_modulus_pa"] = contact.effective_modulus_pa;
   return out;
 }
@@ -102,7 +116,8 @@ void bind_adhesive_result(py::module_& m) {
       m, "AdhesiveCollision",
       "One adhesive collision (restitution.adhesive_collision); SI units, the names of "
       "`restitution eps --adhesion --json`.")
-      .def_readonly("adhesion", &AdhesiveResult::adhesion, "The adhesive model: jkr-lammps, jkr or dmt.")
+      .def_readonly("adhesion", &AdhesiveResult::adhesion,
+                    "The adhesive model: jkr-lammps, jkr, dmt or sjkr.")
       .def_readonly("velocity_m_per_s", &AdhesiveResult::velocity_m_per_s, "Impact speed v [m/s].")
       .def_property_readonly(
           "outcome",
@@ -134,16 +149,17 @@ void bind_adhesive_result(py::module_& m) {
 
 void bind_adhesion(py::module_& m) {
   bind_adhesive_result(m);
-  m.attr("adhesive_model_names") = py::tuple(py::cast(python_adhesive_model_names()));
-  m.def(
-      "adhesive_collision", &adhesive_collision, py::arg("material"), py::arg("velocity"),
-      py::arg("adhesion"), py::arg("surface_energy"), py::arg("dissipative_constant"), py::arg("tolerance"),
-      "One adhesive collision at the impact speed (restitution.adhesive_collision documents the arguments).");
+  m.attr("adhesive_model_names") = py::tuple(py::cast(adhesive_model_names()));
+  m.def("adhesive_collision", &adhesive_collision, py::arg("material"), py::arg("velocity"),
+        py::arg("adhesion"), py::arg("surface_energy"), py::arg("cohesion_energy_density"),
+        py::arg("dissipative_constant"), py::arg("tolerance"),
+        "One adhesive collision at the impact speed (restitution.adhesive_collision documents the "
+        "arguments).");
   m.def("sticking_speed", &sticking_speed_m_per_s, py::arg("material"), py::arg("adhesion"),
-        py::arg("surface_energy"), py::arg("dissipative_constant"), py::arg("tolerance"),
-        "The impact speed [m/s] below which the spheres stick (0: never).");
+        py::arg("surface_energy"), py::arg("cohesion_energy_density"), py::arg("dissipative_constant"),
+        py::arg("tolerance"), "The impact speed [m/s] below which the spheres stick (0: never).");
   m.def("adhesive_closed_forms", &adhesive_closed_forms_of, py::arg("material"), py::arg("adhesion"),
-        py::arg("surface_energy"),
+        py::arg("surface_energy"), py::arg("cohesion_energy_density"),
         "The elastic model's break overlap [m], hysteresis work [J], JKR pull-off force 3 pi gamma R [N] and "
         "E* [Pa].");
 }

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """restitution.adhesive_collision and restitution.sticking_speed (docs/adhesion.md): the command line's numbers for
-the same collisions, the undamped closed forms eps(v) = sqrt(1 - W/(m* v^2/2)) and v_s = sqrt(2W/m*) with W of
+the same collisions (sjkr included), the undamped closed forms eps(v) = sqrt(1 - W/(m* v^2/2)) and v_s = sqrt(2W/m*) with W of
 each break rule, the stub's model names, the doctests and bad arguments named."""
 
 import doctest
@@ -51,6 +51,59 @@ def test_equals_the_command_line_value_for_value(cli, ice, adhesion, velocity, d
                                      dissipative_constant=damping)
     assert v_s == out["sticking_speed_m_per_s"]
     assert r.outcome == ("stuck" if velocity < v_s else "bounced")
+
+
+# LIGGGHTS's sjkr (docs/adhesion.md §10): the soft spheres of its `dem --code liggghts` example, equal and unequal.
+SOFT = dict(young_modulus=5e6, poisson_ratio=0.45, density=2500.0)
+K_C = 1e5
+
+
+@pytest.mark.parametrize("radii", [(1e-3, 1e-3), (1e-3, 3e-4)])
+@pytest.mark.parametrize("velocity, damping", [(0.02, 1e-5), (0.1, 1e-5), (1.0, 1e-6), (0.3, None)])
+def test_sjkr_equals_the_command_line_value_for_value(cli, radii, velocity, damping):
+    material = restitution.Material(**SOFT, radii=radii)
+    extra = ["--dissipative-constant", str(damping)] if damping is not None else []
+    out = json.loads(cli("eps", "--adhesion", "sjkr", "--cohesion-energy-density", str(K_C), "--young-modulus", "5e6",
+                         "--poisson-ratio", "0.45", "--radius", str(radii[0]), "--radius2", str(radii[1]),
+                         "--density", "2500", "--velocity", str(velocity), *extra, "--json"))
+    r = restitution.adhesive_collision(velocity, material=material, adhesion="sjkr", cohesion_energy_density=K_C,
+                                       dissipative_constant=damping)
+    assert r.adhesion == out["adhesion"] == "sjkr" and r.outcome == out["outcome"]
+    for name in ("eps", "one_minus_eps", "contact_time_s", "max_compression_m", "hysteresis_work_j", "viscous_work_j",
+                 "kinetic_to_adhesion_energy"):
+        assert getattr(r, name) == out[name], name
+    v_s = restitution.sticking_speed(material=material, adhesion="sjkr", cohesion_energy_density=K_C,
+                                     dissipative_constant=damping)
+    assert v_s == out["sticking_speed_m_per_s"]
+    assert r.outcome == ("stuck" if velocity < v_s else "bounced")
+    forms = restitution.adhesive_closed_forms(material=material, adhesion="sjkr", cohesion_energy_density=K_C)
+    assert forms == {"break_overlap_m": out["break_overlap_m"],
+                     "elastic_hysteresis_work_j": out["elastic_hysteresis_work_j"],
+                     "effective_modulus_pa": out["effective_modulus_pa"]}
+
+
+def test_undamped_sjkr_is_conservative():
+    # Elastic, the cohesion -k_c A(delta) is a conservative force that starts and ends at delta = 0: eps = 1, never stuck.
+    material = restitution.Material(**SOFT, radius=1e-3)
+    for velocity in (0.01, 0.1, 1.0):
+        r = restitution.adhesive_collision(velocity, material=material, adhesion="sjkr", cohesion_energy_density=K_C,
+                                           dissipative_constant=0.0)
+        assert r.outcome == "bounced" and r.eps == pytest.approx(1.0, abs=1e-12)
+    assert restitution.sticking_speed(material=material, adhesion="sjkr", cohesion_energy_density=K_C,
+                                      dissipative_constant=0.0) == 0.0
+
+
+def test_the_unequal_sjkr_lens_is_not_the_equal_one():
+    # The intersection circle depends on both radii (docs/adhesion.md §10): spheres of 1 mm and 0.3 mm differ from
+    # two equal spheres of the same effective radius and mass (radius 2R each).
+    unequal = restitution.Material(**SOFT, radii=(1e-3, 3e-4))
+    r_eff, m_eff = unequal.effective_radius, unequal.effective_mass
+    equal = restitution.Material(young_modulus=5e6, poisson_ratio=0.45, radius=2 * r_eff, mass=2 * m_eff)
+    assert equal.effective_radius == pytest.approx(r_eff, rel=1e-15)
+    assert equal.effective_mass == pytest.approx(m_eff, rel=1e-15)
+    eps = [restitution.adhesive_collision(0.5, material=m, adhesion="sjkr", cohesion_energy_density=K_C,
+                                          dissipative_constant=1e-6).eps for m in (unequal, equal)]
+    assert abs(eps[0] - eps[1]) > 1e-6
 
 
 @pytest.mark.parametrize("adhesion", ["jkr", "jkr-lammps"])
@@ -113,9 +166,12 @@ def test_repr_and_doctests(ice):
 
 
 @pytest.mark.parametrize("arguments, error, words", [
-    (dict(adhesion="sticky"), ValueError, "adhesion must be one of jkr-lammps, jkr, dmt"),
-    # LIGGGHTS's sjkr takes a cohesion energy density, which Python does not bind yet.
-    (dict(adhesion="sjkr"), ValueError, "adhesion must be one of jkr-lammps, jkr, dmt, got 'sjkr'"),
+    (dict(adhesion="sticky"), ValueError, "adhesion must be one of jkr-lammps, jkr, dmt, sjkr"),
+    # LIGGGHTS's sjkr takes a cohesion energy density, not a surface energy; the others the reverse.
+    (dict(adhesion="sjkr", surface_energy=None), TypeError, "cohesion_energy_density"),
+    (dict(adhesion="sjkr", cohesion_energy_density=1e5), ValueError, "adhesion='sjkr' does not take surface_energy"),
+    (dict(cohesion_energy_density=1e5), ValueError, "adhesion='jkr' does not take cohesion_energy_density"),
+    (dict(adhesion="sjkr", surface_energy=None, cohesion_energy_density=-1.0), ValueError, "cohesion energy density"),
     (dict(surface_energy=None), TypeError, "surface_energy"),
     (dict(surface_energy="0.19"), TypeError, "surface_energy"),
     (dict(dissipative_constant=-1e-9), ValueError, "dissipative constant A must be finite and not negative"),

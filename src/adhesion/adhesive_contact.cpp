@@ -23,6 +23,11 @@ AdhesiveContact adhesive_contact_of(AdhesiveModel model, const Material& materia
   contact.effective_radius_m = elastic.effective_radius_m;
   contact.effective_mass_kg = elastic.effective_mass_kg;
   contact.surface_energy_j_per_m2 = surface_energy_j_per_m2;
+  // sjkr's lens needs both radii when they differ (equal spheres: 0, 0, the radius 2R).
+  if (model == AdhesiveModel::sjkr && material.radius1_m != material.radius2_m) {
+    contact.sphere_radius_1_m = material.radius1_m;
+    contact.sphere_radius_2_m = material.radius2_m;
+  }
   contact.damping = model == AdhesiveModel::jkr
                         ? a
                         : damping_per_mass(a, contact.effective_modulus_pa, contact.effective_mass_kg);

@@ -8,6 +8,7 @@
 
 #include "adhesion/adhesive_integration.hpp"
 #include "adhesion/adhesive_scales.hpp"
+#include "adhesion/sticking_search.hpp"
 #include "restitution/adhesion.hpp"
 #include "restitution/errors.hpp"
 
@@ -66,13 +67,15 @@ double brent_root(Margin& margin, double low, double f_low, double high, double 
 
 }  // namespace
 
-StickingSpeed sticking_speed(const AdhesiveContact& contact, double tolerance) {
-  const auto scaled = adhesion::scale_adhesion(contact);
+namespace adhesion {
+
+StickingSearch search_sticking_speed(const AdhesiveContact& contact, double tolerance) {
+  const auto scaled = scale_adhesion(contact);
   if (!(tolerance >= 1e-12 && tolerance <= 1e-2)) {
     throw InvalidInput(
         fmt::format("the tolerance of the sticking speed must lie in [1e-12, 1e-2] (got {})", tolerance));
   }
-  StickingSpeed result;
+  StickingSearch result;
   // Elastic: the closed form sqrt(2W/m*) (W = 0 for DMT: it never sticks).
   const double elastic = std::sqrt(2.0 * scaled.break_energy);
   if (scaled.damping == 0.0) {
@@ -85,7 +88,7 @@ StickingSpeed sticking_speed(const AdhesiveContact& contact, double tolerance) {
           fmt::format("the sticking speed was not bracketed within {} solves", kMaxSolves));
     }
     // The root is needed to T in V: the margin to a little better.
-    return adhesion::integrate_adhesive(scaled, speed, 0.1 * tolerance).energy_margin;
+    return integrate_adhesive(scaled, speed, 0.1 * tolerance).energy_margin;
   };
   // Damping only adds losses: the elastic value is a lower bound (DMT's is 0: start from its unit speed).
   double low = elastic > 0.0 ? elastic : 1.0;
@@ -98,12 +101,29 @@ StickingSpeed sticking_speed(const AdhesiveContact& contact, double tolerance) {
     f_low = margin(low);
   }
   while (f_high < 0.0) {
+    if (high >= kLargestScaledSpeed) {  // stuck all the way up: no sticking speed
+      result.largest_tried_m_per_s = high * scaled.speed_m_per_s();
+      return result;
+    }
     low = high, f_low = f_high;
     high *= 2.0;
     f_high = margin(high);
   }
   result.speed_m_per_s = brent_root(margin, low, f_low, high, f_high, tolerance) * scaled.speed_m_per_s();
   return result;
+}
+
+}  // namespace adhesion
+
+StickingSpeed sticking_speed(const AdhesiveContact& contact, double tolerance) {
+  const adhesion::StickingSearch search = adhesion::search_sticking_speed(contact, tolerance);
+  if (!search.speed_m_per_s) {
+    throw InvalidInput(fmt::format(
+        "no sticking speed: the spheres stick at every impact speed tried, up to {:.6g} m/s ({} solves); the "
+        "damping takes all the energy at every speed (above a critical damping eps(v) = 0 for all v)",
+        search.largest_tried_m_per_s, search.solves));
+  }
+  return {*search.speed_m_per_s, search.solves};
 }
 
 }  // namespace restitution

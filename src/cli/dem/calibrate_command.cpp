@@ -41,6 +41,7 @@ struct CalibrateOptions {
   std::string method = method_name(CalibrationRequest{}.method);
   MaterialOptions material;
   AdhesionOptions adhesion;  // the damping of an adhesive contact instead (calibrate_adhesion.hpp)
+  std::optional<double> sticking_speed;  // with --adhesion: γ and the damping from it and ε
   bool json = false;
   std::string from_fit;  // fit-data --out FILE: beta and its intervals instead of --eps
   bool end_given = false;
@@ -52,15 +53,17 @@ std::optional<double> material_k(const CalibrateOptions& o) {
 }
 
 int run_calibrate(const CalibrateOptions& o) {
-  if (o.adhesion.any()) {
+  if (o.adhesion.any() || o.sticking_speed) {
     if (!o.from_fit.empty() || o.end_given || o.method == kFastMethod ||
         o.law != law_name(LawKind::viscoelastic_hertz)) {
       throw InvalidInput(
-          "--adhesion takes the material, --surface-energy, --eps, --velocity and --tolerance: not "
+          "--adhesion takes the material, --surface-energy or --sticking-speed, --eps, --velocity and "
+          "--tolerance: not "
           "--from-fit, "
           "--end, --law or --method fast");
     }
-    return run_adhesive_calibrate(o.adhesion, o.material, o.eps, o.velocity, o.tolerance, o.json);
+    return run_adhesive_calibrate(o.adhesion, o.material, o.eps, o.velocity, o.sticking_speed, o.tolerance,
+                                  o.json);
   }
   if (!o.from_fit.empty()) {
     if (o.eps != 0.0) throw InvalidInput("--from-fit and --eps exclude each other");
@@ -158,6 +161,10 @@ void add_calibrate_command(CLI::App& app, Action& chosen) {
       ->capture_default_str();
   add_material_options(*cmd, o->material);
   add_adhesion_options(*cmd, o->adhesion);
+  cmd->add_option(
+      "--sticking-speed", o->sticking_speed,
+      "with --adhesion jkr|jkr-lammps|dmt, instead of --surface-energy: the measured sticking speed "
+      "v_s < --velocity in m/s; the surface energy and the damping are calibrated together");
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, cmd, &chosen] {
