@@ -96,9 +96,13 @@ dissipative_constant = 1e-5
 name = "g"
 material = "pe"
 )";
-// The keys every section needs, unless the row under test is one of them.
-const std::vector<std::pair<std::string, std::string>> kNeeded{
-    {"packing_fraction", "0.1"}, {"rms_speed", "1.0"}, {"haff_times", "10.0"}};
+// The keys every section needs (eps with velocity: any law, A or not), unless the row under test is one of
+// them or the other of its pair.
+const std::vector<std::pair<std::string, std::string>> kNeeded{{"eps", "0.8"},
+                                                               {"velocity", "2.0"},
+                                                               {"packing_fraction", "0.1"},
+                                                               {"rms_speed", "1.0"},
+                                                               {"haff_times", "10.0"}};
 
 std::string scene_with(const GasField& f, const std::string& value) {
   std::string text = kScene;
@@ -106,9 +110,6 @@ std::string scene_with(const GasField& f, const std::string& value) {
     const bool pair_of_row = (f.name == std::string("temperature") && key == "rms_speed") ||
                              (f.name == std::string("duration") && key == "haff_times");
     if (key != f.name && !pair_of_row) text += key + " = " + v + "\n";
-  }
-  if (f.name == std::string("eps") || f.name == std::string("velocity")) {
-    text += f.name == std::string("eps") ? "velocity = 2.0\n" : "eps = 0.8\n";
   }
   const bool word = !f.words.empty() && value == f.words.back();
   return text + f.name + " = " + (word ? "\"" + value + "\"" : value) + "\n";

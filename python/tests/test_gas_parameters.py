@@ -56,7 +56,7 @@ def test_the_command_line_takes_the_table():
     table = {"--" + name.replace("_", "-") for name in TABLE}
     # Beside the table: the refused second sphere, the deck's options and the outputs.
     assert table <= options
-    assert options - table == {"--help", "--radius2", "--mass2", "--deck", "--compare", "--compare-output",
+    assert options - table == {"--radius2", "--mass2", "--deck", "--compare", "--compare-output",
                                "--particles", "--seed", "--max-eps-error", "--code", "--json", "--out", "--plot",
                                "--format"}
 
