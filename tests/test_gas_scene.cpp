@@ -54,7 +54,7 @@ TEST(GasScene, ReadsTheSection) {
   EXPECT_EQ(*g.rms_speed_m_s, 1.0);
   EXPECT_EQ(*g.haff_times, 100.0);
   EXPECT_FALSE(g.duration_s);
-  EXPECT_FALSE(g.radius_m);  // the material's, when the section runs
+  EXPECT_FALSE(g.radius_m);                // the material's, when the section runs
   EXPECT_FALSE(s.gases[0].own_tolerance);  // the scene's, as run
 }
 

@@ -24,10 +24,10 @@ enum class FieldKind {
 };
 
 // The range a number must lie in, as a scene states it before anything is computed ("a value > 0"); the
-// library's own checks (cooling_request) say the same with the caller's spelling.
+// library's own checks (cooling_request) test the same ranges in their words, with the caller's spelling.
 struct FieldRange {
   double low = 0.0;
-  bool low_open = true;  // low itself excluded
+  bool low_open = true;                       // low itself excluded
   std::optional<double> high = std::nullopt;  // none: unbounded above
   bool high_open = true;
   const char* text = nullptr;  // "a value in (0, 0.5)": the scene's words after "expected"
