@@ -92,20 +92,17 @@ gas::GasInputs inputs_of(const Scene& scene, const GasTask& task) {
 
 void detail::read_gas_keys(TomlReader& r, gas::GasInputs& in) {
   for (const gas::GasField& f : gas::gas_fields()) {
-    if (f.from_material || !r.has(f.name)) {
-      if (!f.from_material && (f.required || f.kind == gas::FieldKind::number)) read_number(r, f, in);
-      continue;
-    }
+    if (f.from_material) continue;  // the spheres' fields: from [materials.X] when the section runs
     switch (f.kind) {
       case gas::FieldKind::word:
       case gas::FieldKind::optional_word:
         read_word(r, f, in);
         break;
       case gas::FieldKind::number_or_word:
-        read_sonine_a2(r, f, in);
+        if (r.has(f.name)) read_sonine_a2(r, f, in);
         break;
       default:
-        read_number(r, f, in);
+        read_number(r, f, in);  // also refuses a required key's absence and checks a default's range
     }
   }
   check_groups(r, in);
