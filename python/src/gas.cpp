@@ -4,6 +4,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -25,15 +26,14 @@ namespace {
 
 // a2: None (Maxwellian), a number, "haff" (van Noije & Ernst's a2 of the Haff eps), held constant, or
 // "evolving" (a2(t) from the Sonine moment equations).
-void read_a2(const py::object& a2, gas::GasInputs& in) {
+void read_a2(const gas::GasField& field, const py::object& a2, gas::GasInputs& in) {
   if (a2.is_none()) return;
   if (py::isinstance<py::str>(a2)) {
     const auto word = a2.cast<std::string>();
-    if (word != "haff" && word != "evolving") {
+    if (std::find(field.words.begin(), field.words.end(), word) == field.words.end()) {
       throw InvalidInput("a2 must be a number, 'haff' or 'evolving', got '" + word + "'");
     }
-    in.a2_of_haff_eps = word == "haff";
-    in.a2_evolving = word == "evolving";
+    gas::set_sonine_word(in, word);
     return;
   }
   if (py::isinstance<py::bool_>(a2) || !(py::isinstance<py::float_>(a2) || py::isinstance<py::int_>(a2))) {
@@ -108,7 +108,7 @@ void read_argument(const gas::GasField& f, const py::handle& value, gas::GasInpu
       in.*f.word = value.cast<std::string>();
       break;
     case gas::FieldKind::number_or_word:
-      read_a2(py::reinterpret_borrow<py::object>(value), in);
+      read_a2(f, py::reinterpret_borrow<py::object>(value), in);
       break;
   }
 }
