@@ -45,15 +45,17 @@ TEST(GasScene, ReadsTheSection) {
   const Scene s =
       parse_scene(kHead + kGas + "eps = 0.8\nvelocity = 2.0\nlaw = \"tsuji-hertz\"\n", "gas.toml");
   ASSERT_EQ(s.gases.size(), 1U);
-  const GasTask& g = s.gases[0];
-  EXPECT_EQ(g.material, "pe");
-  EXPECT_EQ(g.law, LawKind::tsuji_hertz);
+  EXPECT_EQ(s.gases[0].material, "pe");
+  const gas::GasInputs& g = s.gases[0].inputs;
+  EXPECT_EQ(g.law, "tsuji-hertz");
   EXPECT_EQ(*g.eps, 0.8);
   EXPECT_EQ(*g.velocity_m_s, 2.0);
-  EXPECT_EQ(g.packing_fraction, 0.1);
+  EXPECT_EQ(*g.packing_fraction, 0.1);
   EXPECT_EQ(*g.rms_speed_m_s, 1.0);
   EXPECT_EQ(*g.haff_times, 100.0);
   EXPECT_FALSE(g.duration_s);
+  EXPECT_FALSE(g.radius_m);                // the material's, when the section runs
+  EXPECT_FALSE(s.gases[0].own_tolerance);  // the scene's, as run
 }
 
 TEST(GasScene, RefusesBadKeysByName) {
@@ -70,10 +72,14 @@ TEST(GasScene, RefusesBadKeysByName) {
 }
 
 TEST(GasScene, ReadsTheSonineCoefficientInTheCommandsWords) {
-  EXPECT_EQ(parse_scene(kHead + kGas, "gas.toml").gases[0].a2, "");
-  EXPECT_EQ(parse_scene(kHead + kGas + "a2 = -0.0125\n", "gas.toml").gases[0].a2, "-0.0125");
-  EXPECT_EQ(parse_scene(kHead + kGas + "a2 = \"haff\"\n", "gas.toml").gases[0].a2, "haff");
-  EXPECT_EQ(parse_scene(kHead + kGas + "a2 = \"evolving\"\n", "gas.toml").gases[0].a2, "evolving");
+  const auto inputs = [](const std::string& key) {
+    return parse_scene(kHead + kGas + key, "gas.toml").gases[0].inputs;
+  };
+  EXPECT_FALSE(inputs("").a2);
+  EXPECT_FALSE(inputs("").a2_of_haff_eps || inputs("").a2_evolving);
+  EXPECT_EQ(inputs("a2 = -0.0125\n").a2, -0.0125);
+  EXPECT_TRUE(inputs("a2 = \"haff\"\n").a2_of_haff_eps);
+  EXPECT_TRUE(inputs("a2 = \"evolving\"\n").a2_evolving);
   for (const char* bad : {"a2 = \"evolve\"\n", "a2 = true\n"}) {
     const std::string error = error_of(kHead + kGas + bad);
     EXPECT_NE(error.find("gas.toml:"), std::string::npos) << error;
@@ -98,9 +104,9 @@ TEST(GasScene, EvolvingSonineCoefficientIsAColumnOfTheSectionsTable) {
 TEST(GasScene, ThermostatKeysDriveTheGasToItsSteadyState) {
   const std::string driven = kHead + kGas + "eps = 0.8\nvelocity = 2.0\nthermostat = \"langevin\"\n";
   const Scene s = parse_scene(driven + "bath_temperature = 1e-3\nbath_time = 0.5\n", "gas.toml");
-  EXPECT_EQ(s.gases[0].thermostat, "langevin");
-  EXPECT_EQ(*s.gases[0].bath_temperature_j, 1e-3);
-  EXPECT_EQ(*s.gases[0].bath_time_s, 0.5);
+  EXPECT_EQ(s.gases[0].inputs.thermostat, "langevin");
+  EXPECT_EQ(*s.gases[0].inputs.bath_temperature_j, 1e-3);
+  EXPECT_EQ(*s.gases[0].inputs.bath_time_s, 0.5);
   EXPECT_NE(error_of(kHead + kGas + "thermostat = \"shaker\"\n").find("thermostat"), std::string::npos);
   EXPECT_NE(error_of(driven + "bath_time = -1\n").find("bath_time"), std::string::npos);
   const test_support::TempFolder folder;

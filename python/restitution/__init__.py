@@ -601,24 +601,32 @@ def gas(*, radius=None, density=None, mass=None, eps=None, velocity=None, dissip
     >>> round(g["local_exponent"][-1], 2)   # Haff's law: -2; viscoelastic spheres tend to -5/3
     -1.69
     """
-    numbers = {name: _optional_real(name, value) for name, value in (
-        ("radius", radius), ("density", density), ("mass", mass), ("young_modulus", young_modulus),
-        ("poisson_ratio", poisson_ratio), ("eps", eps), ("velocity", velocity),
-        ("dissipative_constant", dissipative_constant), ("packing_fraction", packing_fraction),
-        ("rms_speed", rms_speed), ("temperature", temperature), ("duration", duration), ("haff_times", haff_times),
-        ("first_time", first_time), ("collision_rate_factor", collision_rate_factor),
-        ("bath_temperature", bath_temperature), ("bath_time", bath_time), ("power", power))}
-    if numbers["first_time"] is None or numbers["collision_rate_factor"] is None:
-        raise TypeError("first_time and collision_rate_factor must be real numbers")
-    if isinstance(points_per_decade, bool) or not isinstance(points_per_decade, _numbers.Integral):
-        raise TypeError(f"points_per_decade must be an int, got {type(points_per_decade).__name__}")
-    if not (a2 is None or isinstance(a2, str)):
-        a2 = _optional_real("a2", a2)
-    if thermostat is not None:
-        thermostat = _text("thermostat", thermostat)
-    return _core.gas(**numbers, law=_text("law", law), end=_end(end),
-                     points_per_decade=int(points_per_decade), a2=a2, tolerance=_tolerance(tolerance),
-                     thermostat=thermostat)
+    return _core.gas(_gas_arguments(locals()))
+
+
+def _gas_arguments(given):
+    """restitution.gas's arguments checked by type, read through the gas study's table (_core.gas_parameters:
+    name, kind and unit of each; the signature, the docstring and the .pyi list the same names, a test
+    compares them)."""
+    arguments = {}
+    for name, kind, _ in _core.gas_parameters:
+        value = given[name]
+        if kind == "optional number" or (kind == "number" and name != "tolerance"):
+            arguments[name] = _optional_real(name, value)
+        elif kind == "number":
+            arguments[name] = _tolerance(value)
+        elif kind == "whole number":
+            if isinstance(value, bool) or not isinstance(value, _numbers.Integral):
+                raise TypeError(f"{name} must be an int, got {type(value).__name__}")
+            arguments[name] = int(value)
+        elif kind == "number or word":
+            arguments[name] = value if value is None or isinstance(value, str) else _optional_real(name, value)
+        elif value is not None or kind == "word":
+            arguments[name] = _end(value) if name == "end" else _text(name, value)
+    required = [name for name, kind, _ in _core.gas_parameters if kind == "number" and name != "tolerance"]
+    if any(arguments[name] is None for name in required):
+        raise TypeError(f"{' and '.join(required)} must be real numbers")
+    return arguments
 
 
 __all__.append("gas")

@@ -4,7 +4,9 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +16,7 @@
 #include "restitution/errors.hpp"
 #include "restitution/solve_types.hpp"
 #include "restitution_gas/gas_inputs.hpp"
+#include "restitution_gas/gas_parameters.hpp"
 #include "without_gil.hpp"
 
 namespace py = pybind11;
@@ -21,19 +24,16 @@ namespace py = pybind11;
 namespace restitution::python {
 namespace {
 
-using Number = std::optional<double>;
-
 // a2: None (Maxwellian), a number, "haff" (van Noije & Ernst's a2 of the Haff eps), held constant, or
 // "evolving" (a2(t) from the Sonine moment equations).
-void read_a2(const py::object& a2, gas::GasInputs& in) {
+void read_a2(const gas::GasField& field, const py::object& a2, gas::GasInputs& in) {
   if (a2.is_none()) return;
   if (py::isinstance<py::str>(a2)) {
     const auto word = a2.cast<std::string>();
-    if (word != "haff" && word != "evolving") {
+    if (std::find(field.words.begin(), field.words.end(), word) == field.words.end()) {
       throw InvalidInput("a2 must be a number, 'haff' or 'evolving', got '" + word + "'");
     }
-    in.a2_of_haff_eps = word == "haff";
-    in.a2_evolving = word == "evolving";
+    gas::set_sonine_word(in, word);
     return;
   }
   if (py::isinstance<py::bool_>(a2) || !(py::isinstance<py::float_>(a2) || py::isinstance<py::int_>(a2))) {
@@ -90,38 +90,45 @@ void add_driving(py::dict& out, const gas::Thermostat& t, const gas::SteadyState
   out["steady_power_w"] = s.power_w;
 }
 
-py::dict cooling(Number radius, Number density, Number mass, Number young_modulus, Number poisson_ratio,
-                 Number eps, Number velocity, Number dissipative_constant, const std::string& law,
-                 const std::string& end, Number packing_fraction, Number rms_speed, Number temperature,
-                 Number duration, Number haff_times, double first_time, int points_per_decade,
-                 const py::object& a2, double collision_rate_factor, double tolerance,
-                 const std::optional<std::string>& thermostat, Number bath_temperature, Number bath_time,
-                 Number power) {
+// One argument of the table (restitution_gas/gas_parameters.hpp) into the inputs; None leaves the default.
+void read_argument(const gas::GasField& f, const py::handle& value, gas::GasInputs& in) {
+  if (value.is_none()) return;
+  switch (f.kind) {
+    case gas::FieldKind::optional_number:
+      in.*f.optional_number = value.cast<double>();
+      break;
+    case gas::FieldKind::number:
+      in.*f.number = value.cast<double>();
+      break;
+    case gas::FieldKind::whole_number:
+      in.*f.whole_number = value.cast<int>();
+      break;
+    case gas::FieldKind::word:
+    case gas::FieldKind::optional_word:
+      in.*f.word = value.cast<std::string>();
+      break;
+    case gas::FieldKind::number_or_word:
+      read_a2(f, py::reinterpret_borrow<py::object>(value), in);
+      break;
+  }
+}
+
+// The arguments restitution.gas checked (their types), by the table's names.
+gas::GasInputs inputs_of(const py::dict& arguments) {
   gas::GasInputs in;
-  in.radius_m = radius;
-  in.density_kg_m3 = density;
-  in.mass_kg = mass;
-  in.young_modulus_pa = young_modulus;
-  in.poisson_ratio = poisson_ratio;
-  in.eps = eps;
-  in.velocity_m_s = velocity;
-  in.dissipative_constant_s = dissipative_constant;
-  in.law = law;
-  in.end = end;
-  in.packing_fraction = packing_fraction;
-  in.rms_speed_m_s = rms_speed;
-  in.temperature_j = temperature;
-  in.duration_s = duration;
-  in.haff_times = haff_times;
-  in.first_time_s = first_time;
-  in.points_per_decade = points_per_decade;
-  in.collision_rate_factor = collision_rate_factor;
-  in.tolerance = tolerance;
-  read_a2(a2, in);
-  in.thermostat = thermostat.value_or("");
-  in.bath_temperature_j = bath_temperature;
-  in.bath_time_s = bath_time;
-  in.power_w = power;
+  for (const auto& [key, value] : arguments) {
+    const auto name = key.cast<std::string>();
+    try {
+      read_argument(gas::gas_field(name), value, in);
+    } catch (const std::out_of_range&) {
+      throw py::type_error("gas() got an unexpected keyword argument '" + name + "'");
+    }
+  }
+  return in;
+}
+
+py::dict cooling(const py::dict& arguments) {
+  const gas::GasInputs in = inputs_of(arguments);
   struct Result {
     gas::CoolingRequest request;
     std::optional<gas::Thermostat> thermostat;
@@ -143,22 +150,39 @@ py::dict cooling(Number radius, Number density, Number mass, Number young_modulu
   return out;
 }
 
+const char* kind_name(gas::FieldKind kind) {
+  switch (kind) {
+    case gas::FieldKind::optional_number:
+      return "optional number";
+    case gas::FieldKind::number:
+      return "number";
+    case gas::FieldKind::whole_number:
+      return "whole number";
+    case gas::FieldKind::word:
+      return "word";
+    case gas::FieldKind::optional_word:
+      return "optional word";
+    case gas::FieldKind::number_or_word:
+      return "number or word";
+  }
+  return "";
+}
+
+// The table as restitution.gas reads it: (name, kind, unit) per argument, in the table's order.
+py::list gas_parameters() {
+  py::list rows;
+  for (const gas::GasField& f : gas::gas_fields())
+    rows.append(py::make_tuple(f.name, kind_name(f.kind), f.unit));
+  return rows;
+}
+
 }  // namespace
 
 void bind_gas(py::module_& m) {
-  m.def("gas", &cooling, py::kw_only(), py::arg("radius") = py::none(), py::arg("density") = py::none(),
-        py::arg("mass") = py::none(), py::arg("young_modulus") = py::none(),
-        py::arg("poisson_ratio") = py::none(), py::arg("eps") = py::none(), py::arg("velocity") = py::none(),
-        py::arg("dissipative_constant") = py::none(), py::arg("law") = law_name(LawKind::viscoelastic_hertz),
-        py::arg("end") = end_name(CollisionEnd::delayed_recovery), py::arg("packing_fraction") = py::none(),
-        py::arg("rms_speed") = py::none(), py::arg("temperature") = py::none(),
-        py::arg("duration") = py::none(), py::arg("haff_times") = py::none(), py::arg("first_time") = 0.0,
-        py::arg("points_per_decade") = gas::CoolingRequest{}.points_per_decade, py::arg("a2") = py::none(),
-        py::arg("collision_rate_factor") = 1.0, py::arg("tolerance") = SolveOptions{}.tolerance,
-        py::arg("thermostat") = py::none(), py::arg("bath_temperature") = py::none(),
-        py::arg("bath_time") = py::none(), py::arg("power") = py::none(),
+  m.def("gas", &cooling, py::arg("arguments"),
         "The cooling curve of the freely cooling gas, or the driven gas's relaxation and steady state "
-        "(restitution.gas documents the arguments).");
+        "(restitution.gas documents the arguments): the arguments by the names of gas_parameters.");
+  m.attr("gas_parameters") = gas_parameters();
 }
 
 }  // namespace restitution::python

@@ -14,16 +14,14 @@
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 #include "restitution/units.hpp"
+#include "restitution_gas/gas_parameters.hpp"
 
 namespace restitution::gas {
 namespace {
 
 // The argument as the caller spells it.
 std::string spelled(const char* keyword, ArgumentStyle style) {
-  if (style == ArgumentStyle::keyword) return keyword;
-  std::string option = std::string("--") + keyword;
-  std::replace(option.begin(), option.end(), '_', '-');
-  return option;
+  return style == ArgumentStyle::keyword ? keyword : option_name(keyword);
 }
 
 class Rules {

@@ -16,6 +16,7 @@
 #include "restitution/collision_solver.hpp"
 #include "restitution/material.hpp"
 #include "restitution/series.hpp"
+#include "restitution_gas/gas_inputs.hpp"
 #include "scene/scene_fit.hpp"
 #include "scene/scene_oblique.hpp"
 
@@ -143,28 +144,15 @@ struct DampingCheckTask {
   int line = 0;
 };
 
-// The freely cooling gas of a material's spheres from kinetic theory (docs/gas.md): T(t) and the local
-// exponent of the law's ε(v) beside Haff's law of a constant ε.
+// The freely cooling or driven gas of a material's spheres from kinetic theory (docs/gas.md): T(t) and the
+// local exponent of the law's eps(v) beside Haff's law of a constant eps. The keys are the gas study's table
+// (restitution_gas/gas_parameters.hpp) but for the spheres', which come from the material when it runs.
 struct GasTask {
   std::string name;
   std::string title;
-  std::string material;                // a [materials.X]: radius, density or mass (and A without eps)
-  std::optional<double> eps;           // with velocity: the law calibrated there; without: the material's A
-  std::optional<double> velocity_m_s;  // [m/s]
-  LawKind law = LawKind::viscoelastic_hertz;
-  CollisionEnd end = CollisionEnd::delayed_recovery;
-  double packing_fraction = 0.0;
-  std::optional<double> rms_speed_m_s, temperature_j;  // exactly one
-  std::optional<double> duration_s, haff_times;        // exactly one
-  int points_per_decade = 20;
-  double first_time_s = 0.0;           // 0: six decades below the end
-  double collision_rate_factor = 1.0;  // on Enskog's collision rate
-  std::optional<double> tolerance;     // default: the scene's
-  std::string
-      a2;  // the first Sonine coefficient as `gas --a2` takes it: "" (Maxwellian), a number, haff, evolving
-  // The driven gas, as `gas --thermostat` takes it: "" (freely cooling), langevin or white-noise.
-  std::string thermostat;
-  std::optional<double> bath_temperature_j, bath_time_s, power_w;  // [J], [s], [W per sphere]
+  std::string material;  // a [materials.X]: radius, density or mass (and A without eps)
+  gas::GasInputs inputs;
+  bool own_tolerance = false;  // false: the scene's tolerance, as run (--quick loosens it), not inputs'
   int line = 0;
 };
 

@@ -19,6 +19,7 @@
 #include "scene/figure_formats.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_approximations.hpp"
+#include "scene/scene_gas.hpp"
 #include "scene/toml_ascii.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -482,83 +483,14 @@ class Parser {
     const auto material = read_material_name(r);
     if (!material) r.fail("material", "missing: the [materials.X] whose spheres make the gas");
     g.material = *material;
-    g.law = read_law(r);
-    g.eps = r.number("eps");
-    g.velocity_m_s = r.number("velocity");
-    if (g.eps) check_eps(r, "eps", {*g.eps});
-    if (g.eps.has_value() != g.velocity_m_s.has_value()) {
-      r.fail(g.eps ? "eps" : "velocity", "eps and velocity go together (the impact speed eps holds at, m/s)");
-    }
-    if (!g.eps) {
+    g.own_tolerance = r.has("tolerance");
+    detail::read_gas_keys(r, g.inputs);
+    if (!g.inputs.eps) {
       require_dissipation(r, g.material, "a gas without eps");
-      if (!has_dissipative_constant(g.law)) r.fail("law", "without eps only viscoelastic-hertz takes A");
+      if (!has_dissipative_constant(law_from_name(g.inputs.law)))
+        r.fail("law", "without eps only viscoelastic-hertz takes A");
     }
-    if (g.velocity_m_s) check_positive(r, "velocity", {*g.velocity_m_s});
-    g.end = read_end(r);
-    const auto phi = r.number("packing_fraction");
-    if (!phi) r.fail("packing_fraction", "missing: the packing fraction in (0, 0.5)");
-    r.check_each(
-        "packing_fraction", {*phi}, [](double v) { return v > 0.0 && v < 0.5; }, "a value in (0, 0.5)");
-    g.packing_fraction = *phi;
-    g.rms_speed_m_s = r.number("rms_speed");
-    g.temperature_j = r.number("temperature");
-    if (g.rms_speed_m_s.has_value() == g.temperature_j.has_value()) {
-      r.fail("rms_speed", "give exactly one of rms_speed (m/s per direction) and temperature (J)");
-    }
-    if (g.rms_speed_m_s) check_positive(r, "rms_speed", {*g.rms_speed_m_s});
-    if (g.temperature_j) check_positive(r, "temperature", {*g.temperature_j});
-    g.duration_s = r.number("duration");
-    g.haff_times = r.number("haff_times");
-    if (g.duration_s.has_value() == g.haff_times.has_value()) {
-      r.fail("duration", "give exactly one of duration (s) and haff_times");
-    }
-    if (g.duration_s) check_positive(r, "duration", {*g.duration_s});
-    if (g.haff_times) check_positive(r, "haff_times", {*g.haff_times});
-    if (const auto points = r.number("points_per_decade")) {
-      r.check_each(
-          "points_per_decade", {*points},
-          [](double v) { return v >= 1.0 && v <= 1000.0 && v == std::floor(v); },
-          "a whole number in [1, 1000]");
-      g.points_per_decade = static_cast<int>(*points);
-    }
-    g.a2 = read_sonine_a2(r);
-    // The keys of the command's --first-time, --collision-rate-factor and --tolerance.
-    g.first_time_s = r.number("first_time").value_or(g.first_time_s);
-    r.check_each(
-        "first_time", {g.first_time_s}, [](double v) { return v >= 0.0; },
-        "a time >= 0 s (0: six decades below the end)");
-    g.collision_rate_factor = r.number("collision_rate_factor").value_or(g.collision_rate_factor);
-    check_positive(r, "collision_rate_factor", {g.collision_rate_factor});
-    g.tolerance = r.number("tolerance");
-    read_thermostat(r, g);
     return g;
-  }
-
-  // The driven gas's keys, as `gas --thermostat` takes them (the library checks which go together).
-  static void read_thermostat(TomlReader& r, GasTask& g) {
-    g.thermostat = r.text("thermostat").value_or("");
-    if (!g.thermostat.empty() && g.thermostat != "langevin" && g.thermostat != "white-noise") {
-      r.fail("thermostat",
-             "\"langevin\" (bath_temperature in J, bath_time in s) or \"white-noise\" (power in W)");
-    }
-    g.bath_temperature_j = r.number("bath_temperature");
-    g.bath_time_s = r.number("bath_time");
-    g.power_w = r.number("power");
-    if (g.bath_temperature_j) check_positive(r, "bath_temperature", {*g.bath_temperature_j});
-    if (g.bath_time_s) check_positive(r, "bath_time", {*g.bath_time_s});
-    if (g.power_w) check_positive(r, "power", {*g.power_w});
-  }
-
-  // `a2 = 0.02`, "haff" or "evolving", in the words of `gas --a2` (the library checks the number's range).
-  static std::string read_sonine_a2(TomlReader& r) {
-    if (!r.has("a2")) return {};
-    const toml::node* node = r.take("a2");
-    if (node->is_number()) return fmt::format("{}", *r.number("a2"));
-    const auto* word = node->as_string();
-    if (word == nullptr || (word->get() != "haff" && word->get() != "evolving")) {
-      r.fail("a2", "a number, \"haff\" (van Noije & Ernst's a2 of the Haff eps) or \"evolving\" (a2(t))");
-    }
-    return word->get();
   }
 
   DampingCheckTask read_damping_check(TomlReader& r) {

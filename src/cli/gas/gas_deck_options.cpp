@@ -65,7 +65,8 @@ constexpr std::size_t kMaxComparedLogs = 64;
 // The deck's request for the gas of `gas`: its spheres, law, T0 and duration (in Haff times of the theory's
 // τ0).
 gas_deck::GasDeckRequest deck_request(const GasDeckOptions& o, const GasOptions& gas) {
-  if (law_from_name(gas.law) != LawKind::viscoelastic_hertz)
+  const gas::GasInputs& in = gas.inputs;
+  if (law_from_name(in.law) != LawKind::viscoelastic_hertz)
     throw InvalidInput("--deck and --compare: only --law viscoelastic-hertz (LAMMPS's damping viscoelastic)");
   const gas::CoolingRequest theory = cooling_request(gas);
   gas_deck::GasDeckRequest r;
@@ -74,14 +75,14 @@ gas_deck::GasDeckRequest deck_request(const GasDeckOptions& o, const GasOptions&
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("--code: {}", e.what()));
   }
-  r.material = material_from(gas.material);
-  r.damping = {gas.dissipative_constant, gas.eps, gas.velocity};
-  r.end = end_from_name(gas.end);
+  r.material = material_from(material_options(gas));
+  r.damping = {in.dissipative_constant_s, in.eps, in.velocity_m_s};
+  r.end = end_from_name(in.end);
   r.packing_fraction = theory.particles.packing_fraction;
   r.rms_speed_m_s = std::sqrt(theory.initial_temperature_j / theory.particles.mass_kg);
   r.duration_s =
       theory.duration_in_haff_times ? theory.duration * gas::haff_reference(theory).tau0_s : theory.duration;
-  r.tolerance = gas.tolerance;
+  r.tolerance = in.tolerance;
   r.particles = o.particles;
   r.seed = o.seed;
   r.max_eps_error = o.max_eps_error;

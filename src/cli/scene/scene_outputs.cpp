@@ -368,16 +368,15 @@ class SceneWriter {
     report_ += fmt::format("## {}\n\n", task.title);
     report_ += plot("gas_cooling", task.name, section.plot_args);
     report_ += section.markdown;
-    const gas::CoolingCurve& c = section.curve;
+    const gas::CoolingCurve& c = section.outcome.curve;
     json_.key("gas_" + task.name).begin_object();
     json_.field("tau0_s", c.tau0_s).field("haff_eps", c.haff_eps).field("duration_s", c.duration_s);
     json_.field("final_temperature_j", c.temperature_j.back());
     json_.field("final_local_exponent", c.local_exponent.back());
-    if (section.steady) {
-      json_.field("steady_temperature_j", section.steady->temperature_j)
-          .field("steady_a2", section.steady->a2);
-      json_.field("relaxation_time_s", section.steady->relaxation_time_s);
-      json_.field("driving_exponent", section.steady->driving_exponent);
+    if (const std::optional<gas::SteadyState>& steady = section.outcome.steady) {
+      json_.field("steady_temperature_j", steady->temperature_j).field("steady_a2", steady->a2);
+      json_.field("relaxation_time_s", steady->relaxation_time_s);
+      json_.field("driving_exponent", steady->driving_exponent);
     }
     json_.end_object();
   }

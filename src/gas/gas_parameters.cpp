@@ -1,0 +1,262 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "restitution_gas/gas_parameters.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "restitution/contact_law.hpp"
+#include "restitution/errors.hpp"
+#include "restitution/solve_types.hpp"
+
+namespace restitution::gas {
+namespace {
+
+using K = FieldKind;
+constexpr FieldRange kPositive{.text = "a value > 0"};
+
+std::string law_help() {
+  const std::vector<std::string>& names = law_names();
+  const std::vector<std::string> all_but_last(names.begin(), names.end() - 1);
+  return fmt::format("contact law: {} or {} (docs/contact_laws.md)", fmt::join(all_but_last, ", "),
+                     names.back());
+}
+
+void check_law(const std::string& word) {
+  (void)law_from_name(word);
+}
+void check_end(const std::string& word) {
+  (void)end_from_name(word);
+}
+void check_thermostat(const std::string& word) {
+  if (word != "langevin" && word != "white-noise") {
+    throw InvalidInput(
+        "\"langevin\" (bath_temperature in J, bath_time in s) or \"white-noise\" (power in W)");
+  }
+}
+
+// The spheres and their law: the rows of the material options and of --eps, --law and --end.
+std::vector<GasField> sphere_and_law_fields() {
+  using In = GasInputs;
+  return {
+      {.name = "young_modulus",
+       .kind = K::optional_number,
+       .unit = "Pa",
+       .help = "material: Young's modulus Y in Pa",
+       .optional_number = &In::young_modulus_pa,
+       .from_material = true},
+      {.name = "poisson_ratio",
+       .kind = K::optional_number,
+       .unit = "",
+       .help = "material: Poisson ratio in (-1, 0.5)",
+       .optional_number = &In::poisson_ratio,
+       .from_material = true},
+      {.name = "radius",
+       .kind = K::optional_number,
+       .unit = "m",
+       .help = "material: sphere radius in m (both spheres unless --radius2)",
+       .optional_number = &In::radius_m,
+       .from_material = true},
+      {.name = "density",
+       .kind = K::optional_number,
+       .unit = "kg/m^3",
+       .help = "material: density in kg/m^3 (gives the masses)",
+       .optional_number = &In::density_kg_m3,
+       .from_material = true},
+      {.name = "mass",
+       .kind = K::optional_number,
+       .unit = "kg",
+       .help = "material: sphere mass in kg (instead of --density)",
+       .optional_number = &In::mass_kg,
+       .from_material = true},
+      {.name = "eps",
+       .kind = K::optional_number,
+       .unit = "",
+       .help = "coefficient of restitution in (0, 1) at --velocity: calibrates the law",
+       .optional_number = &In::eps,
+       .range = FieldRange{.low = 0.0, .high = 1.0, .text = "a value in (0, 1)"}},
+      {.name = "velocity",
+       .kind = K::optional_number,
+       .unit = "m/s",
+       .help = "impact speed in m/s at which --eps holds",
+       .optional_number = &In::velocity_m_s,
+       .range = kPositive},
+      {.name = "dissipative_constant",
+       .kind = K::optional_number,
+       .unit = "s",
+       .help =
+           "instead of --eps: the dissipative constant A in s (viscoelastic Hertz; needs --young-modulus and "
+           "--poisson-ratio)",
+       .optional_number = &In::dissipative_constant_s,
+       .from_material = true},
+      {.name = "law",
+       .kind = K::word,
+       .unit = "",
+       .help = law_help(),
+       .word = &In::law,
+       .words = law_names(),
+       .check_word = check_law,
+       .show_default = true},
+      {.name = "end",
+       .kind = K::word,
+       .unit = "",
+       .help = "end of the collision: naive (no clamp) or delayed-recovery (force clamped)",
+       .word = &In::end,
+       .words = end_names(),
+       .check_word = check_end,
+       .show_default = true},
+  };
+}
+
+// The gas, its span of time, the theory's settings and the thermostat.
+std::vector<GasField> gas_and_time_fields() {
+  using In = GasInputs;
+  return {
+      {.name = "packing_fraction",
+       .kind = K::optional_number,
+       .unit = "",
+       .help = "packing fraction phi of the gas in (0, 0.5) (Enskog factor of Carnahan-Starling)",
+       .optional_number = &In::packing_fraction,
+       .range = FieldRange{.low = 0.0, .high = 0.5, .text = "a value in (0, 0.5)"},
+       .required = "the packing fraction in (0, 0.5)"},
+      {.name = "rms_speed",
+       .kind = K::optional_number,
+       .unit = "m/s",
+       .help = "initial rms speed per direction in m/s (T0 = m v^2), or --temperature",
+       .optional_number = &In::rms_speed_m_s,
+       .range = kPositive},
+      {.name = "temperature",
+       .kind = K::optional_number,
+       .unit = "J",
+       .help = "initial granular temperature T0 = m<v^2>/3 in J",
+       .optional_number = &In::temperature_j,
+       .range = kPositive},
+      {.name = "duration",
+       .kind = K::optional_number,
+       .unit = "s",
+       .help = "span of time in s, or --haff-times",
+       .optional_number = &In::duration_s,
+       .range = kPositive},
+      {.name = "haff_times",
+       .kind = K::optional_number,
+       .unit = "",
+       .help = "span of time in Haff times tau0",
+       .optional_number = &In::haff_times,
+       .range = kPositive},
+      {.name = "first_time",
+       .kind = K::number,
+       .unit = "s",
+       .help = "first time of the log-spaced grid in s (default: six decades below the end)",
+       .number = &In::first_time_s,
+       .range = FieldRange{.low_open = false, .text = "a time >= 0 s (0: six decades below the end)"}},
+      {.name = "points_per_decade",
+       .kind = K::whole_number,
+       .unit = "",
+       .help = "points of the time grid per decade",
+       .whole_number = &In::points_per_decade,
+       .range = FieldRange{.low = 1.0,
+                           .low_open = false,
+                           .high = 1000.0,
+                           .high_open = false,
+                           .text = "a whole number in [1, 1000]"},
+       .show_default = true},
+      {.name = "a2",
+       .kind = K::number_or_word,
+       .unit = "",
+       .help = "first Sonine coefficient a2: a number or haff (van Noije & Ernst's a2 of the Haff eps), held "
+               "constant, or evolving (a2(t) from the Sonine moment equations, from 0); default Maxwellian "
+               "(a2 = 0)",
+       .words = {"haff", "evolving"}},
+      {.name = "collision_rate_factor",
+       .kind = K::number,
+       .unit = "",
+       .help = "factor on Enskog's collision rate (e.g. one measured on a simulation)",
+       .number = &In::collision_rate_factor,
+       .range = kPositive,
+       .show_default = true},
+      {.name = "tolerance",
+       .kind = K::number,
+       .unit = "",
+       .help = "accuracy of each eps solve of a law without a fast table",
+       .number = &In::tolerance,
+       .show_default = true},
+      {.name = "thermostat",
+       .kind = K::optional_word,
+       .unit = "",
+       .help = "drive the gas to a steady state: langevin (LAMMPS fix langevin: --bath-temperature, "
+               "--bath-time) or white-noise (--power); default: the freely cooling gas",
+       .word = &In::thermostat,
+       .words = {"langevin", "white-noise"},
+       .check_word = check_thermostat},
+      {.name = "bath_temperature",
+       .kind = K::optional_number,
+       .unit = "J",
+       .help =
+           "Langevin bath temperature T_b in J (energy units, as --temperature; LAMMPS reads T_b/k_B in K)",
+       .optional_number = &In::bath_temperature_j,
+       .range = kPositive},
+      {.name = "bath_time",
+       .kind = K::optional_number,
+       .unit = "s",
+       .help = "Langevin drag time tau_b in s (LAMMPS's damp)",
+       .optional_number = &In::bath_time_s,
+       .range = kPositive},
+      {.name = "power",
+       .kind = K::optional_number,
+       .unit = "W",
+       .help = "white-noise driving: energy put in per sphere in W",
+       .optional_number = &In::power_w,
+       .range = kPositive},
+  };
+}
+
+}  // namespace
+
+bool FieldRange::contains(double v) const {
+  const bool above = low_open ? v > low : v >= low;
+  const bool below = !high || (high_open ? v < *high : v <= *high);
+  return above && below;
+}
+
+const std::vector<GasField>& gas_fields() {
+  static const std::vector<GasField> fields = [] {
+    std::vector<GasField> all = sphere_and_law_fields();
+    std::vector<GasField> rest = gas_and_time_fields();
+    all.insert(all.end(), rest.begin(), rest.end());
+    return all;
+  }();
+  return fields;
+}
+
+const std::vector<FieldGroup>& gas_field_groups() {
+  static const std::vector<FieldGroup> groups{
+      {"eps", "velocity", FieldGroup::together,
+       "eps and velocity go together (the impact speed eps holds at, m/s)"},
+      {"rms_speed", "temperature", FieldGroup::exactly_one,
+       "give exactly one of rms_speed (m/s per direction) and temperature (J)"},
+      {"duration", "haff_times", FieldGroup::exactly_one, "give exactly one of duration (s) and haff_times"},
+  };
+  return groups;
+}
+
+const GasField& gas_field(std::string_view name) {
+  const std::vector<GasField>& fields = gas_fields();
+  const auto it =
+      std::find_if(fields.begin(), fields.end(), [&](const GasField& f) { return f.name == name; });
+  if (it == fields.end()) throw std::out_of_range(fmt::format("no gas parameter '{}'", name));
+  return *it;
+}
+
+std::string option_name(std::string_view name) {
+  std::string option = "--" + std::string(name);
+  std::replace(option.begin(), option.end(), '_', '-');
+  return option;
+}
+
+void set_sonine_word(GasInputs& inputs, std::string_view word) {
+  inputs.a2_of_haff_eps = word == "haff";
+  inputs.a2_evolving = word == "evolving";
+}
+
+}  // namespace restitution::gas
