@@ -16,6 +16,7 @@
 #include "restitution/collision_solver.hpp"
 #include "restitution/material.hpp"
 #include "restitution/series.hpp"
+#include "scene/scene_adhesion.hpp"
 #include "scene/scene_fit.hpp"
 #include "scene/scene_oblique.hpp"
 
@@ -184,10 +185,11 @@ struct Scene {
   std::vector<ExternalStudy> studies;
   std::vector<DemTask> dems;
   std::vector<DampingCheckTask> damping_checks;
-  std::vector<FitTask> fits;          // [[fit]]: measured eps(v) (scene_fit.hpp)
-  std::vector<GasTask> gases;         // [[gas]]
-  std::vector<std::string> warnings;  // a key read by its old name, each naming the new one
-  std::vector<ObliqueTask> obliques;  // [[oblique]] (scene_oblique.hpp)
+  std::vector<FitTask> fits;            // [[fit]]: measured eps(v) (scene_fit.hpp)
+  std::vector<GasTask> gases;           // [[gas]]
+  std::vector<std::string> warnings;    // a key read by its old name, each naming the new one
+  std::vector<ObliqueTask> obliques;    // [[oblique]] (scene_oblique.hpp)
+  std::vector<AdhesionTask> adhesions;  // [[adhesion]] (scene_adhesion.hpp)
 };
 
 // Parses and validates a scene. file_name is used in messages only. Throws InvalidInput.
@@ -196,8 +198,8 @@ Scene parse_scene(std::string_view toml_text, std::string_view file_name);
 // Reads the file and parses it. Throws InvalidInput naming the file when it cannot be read.
 Scene load_scene(const std::filesystem::path& path);
 
-// Caps every sweep, dash-pot and stability range at `points` values (first and last kept) and times each
-// work-precision point once: CI's small settings.
+// Caps every sweep, dash-pot, adhesion and stability range at `points` values (first and last kept) and times
+// each work-precision point once: CI's small settings.
 void make_quick(Scene& scene, std::size_t points);
 
 }  // namespace restitution::scene

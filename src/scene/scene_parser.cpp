@@ -190,6 +190,9 @@ class Parser {
       scene_.obliques.push_back(
           detail::read_oblique_task(r, read_name(r, "oblique"), scene_.materials, scene_.warnings));
     });
+    each("adhesion", [this](TomlReader& r) {
+      scene_.adhesions.push_back(detail::read_adhesion_task(r, read_name(r, "adhesion"), scene_.materials));
+    });
     each("fit", [this](TomlReader& r) {
       scene_.fits.push_back(detail::read_fit_task(r, read_name(r, "fit"), scene_.materials));
     });
@@ -681,6 +684,7 @@ void make_quick(Scene& scene, std::size_t points) {
   }
   for (DashpotCheck& d : scene.dashpots) thin(d.damping_ratio);
   for (DemTask& d : scene.dems) thin(d.speeds);
+  for (AdhesionTask& a : scene.adhesions) thin(a.speeds_m_s);
   for (DampingCheckTask& d : scene.damping_checks) {
     thin(d.eps);
     thin(d.speeds);

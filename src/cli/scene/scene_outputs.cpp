@@ -12,6 +12,7 @@
 #include "cli/common/result_json.hpp"
 #include "cli/common/stop_signals.hpp"
 #include "cli/fit/fit_data_report.hpp"
+#include "cli/scene/scene_adhesion.hpp"
 #include "cli/scene/scene_damping.hpp"
 #include "cli/scene/scene_dem.hpp"
 #include "cli/scene/scene_fit_section.hpp"
@@ -87,6 +88,7 @@ class SceneWriter {
     collect(order, scene_.fits, &SceneWriter::fit);
     collect(order, scene_.gases, &SceneWriter::gas);
     collect(order, scene_.obliques, &SceneWriter::oblique);
+    collect(order, scene_.adhesions, &SceneWriter::adhesion);
     std::stable_sort(order.begin(), order.end(),
                      [](const SectionEntry& a, const SectionEntry& b) { return a.line < b.line; });
     for (const SectionEntry& entry : order) (this->*entry.write)(entry.index);
@@ -411,6 +413,28 @@ class SceneWriter {
       json_.field(oblique::tangential_name(run.setup.tangential.kind), run.sticking.tangential_restitution);
     }
     json_.end_object().end_object();
+  }
+
+  // [[adhesion]]: ε(v) with outcome, contact time, compression and both works in a CSV, the figure with the
+  // sticking region shaded; the sticking speed and the damping in summary.json.
+  void adhesion(std::size_t i) {
+    const scene::AdhesionTask& task = scene_.adhesions[i];
+    const AdhesionSection section = adhesion_section(scene_, task);
+    write_file(task.name + ".csv", section.csv);
+    report_ += fmt::format("## {}\n\n", task.title);
+    report_ += plot("scene_adhesion", task.name, section.plot_args);
+    report_ += section.markdown;
+    const scene::AdhesionOutcome& o = section.outcome;
+    json_.key("adhesion_" + task.name).begin_object();
+    json_.field("csv", task.name + ".csv").field("model", adhesive_model_name(task.model));
+    json_.field("sticking_speed_m_per_s", o.sticking.speed_m_per_s)
+        .field("sticking_speed_solves", o.sticking.solves);
+    json_.field("dissipative_constant_s", o.dissipative_constant_s).field("damping", o.contact.damping);
+    json_.field("elastic_hysteresis_work_j", o.elastic_hysteresis_work_j)
+        .field("break_overlap_m", o.break_overlap_m);
+    json_.field("speeds", static_cast<long>(o.collisions.size())).field("stuck", static_cast<long>(o.stuck));
+    json_.field("tolerance", o.tolerance);
+    json_.end_object();
   }
 
   // [[fit]]: the data with error bars, each law's curve with its 95 % band and the residuals (one plot), the

@@ -95,6 +95,8 @@ std::string own_collisions_text(const scene::Scene& scene) {
   if (!scene.gases.empty())
     parts.emplace_back("the [[gas]] sections take eps(v) from the fast table or from their own solves");
   if (!scene.obliques.empty()) parts.emplace_back("the [[oblique]] sections integrate their own impacts");
+  if (!scene.adhesions.empty())
+    parts.emplace_back("the [[adhesion]] sections integrate their own collisions");
   if (parts.empty()) return "";
   return fmt::format("not counted here: {}", fmt::join(parts, "; "));
 }
