@@ -18,6 +18,8 @@
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_adhesion.hpp"
+#include "scene/scene_sections.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -59,8 +61,9 @@ std::string error_of(const std::string& text) {
 TEST(AdhesionScene, ReadsTheSection) {
   const Scene s = parse_scene(kHead + kSection + "model = \"jkr-lammps\"\ntolerance = 1e-9\ntitle = \"T\"\n",
                               "adhesion.toml");
-  ASSERT_EQ(s.adhesions.size(), 1U);
-  const AdhesionTask& t = s.adhesions[0];
+  const std::vector<const AdhesionTask*> tasks = tasks_of<AdhesionTask>(s, "adhesion");
+  ASSERT_EQ(tasks.size(), 1U);
+  const AdhesionTask& t = *tasks[0];
   EXPECT_EQ(t.material, "ice");
   EXPECT_EQ(t.model, AdhesiveModel::jkr_lammps);
   EXPECT_EQ(t.surface_energy_j_per_m2, 0.19);
@@ -73,7 +76,7 @@ TEST(AdhesionScene, ReadsTheSection) {
           "[[adhesion]]\nmaterial = \"bare_ice\"\nmodel = \"dmt\"\nsurface_energy = 0.19\n"
           "eps = 0.5\nvelocity = 2.0\nspeeds = { from = 1.0, to = 100.0, points = 3, spacing = \"log\" }\n",
       "adhesion.toml");
-  EXPECT_EQ(ranged.adhesions[0].speeds_m_s.size(), 3U);
+  EXPECT_EQ(tasks_of<AdhesionTask>(ranged, "adhesion")[0]->speeds_m_s.size(), 3U);
 }
 
 TEST(AdhesionScene, RefusesBadKeysByName) {

@@ -19,6 +19,7 @@
 #include "scene/figure_formats.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_approximations.hpp"
+#include "scene/scene_sections.hpp"
 #include "scene/toml_ascii.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -190,14 +191,18 @@ class Parser {
       scene_.obliques.push_back(
           detail::read_oblique_task(r, read_name(r, "oblique"), scene_.materials, scene_.warnings));
     });
-    each("adhesion", [this](TomlReader& r) {
-      scene_.adhesions.push_back(detail::read_adhesion_task(r, read_name(r, "adhesion"), scene_.materials));
-    });
     each("fit", [this](TomlReader& r) {
       scene_.fits.push_back(detail::read_fit_task(r, read_name(r, "fit"), scene_.materials));
     });
     for (const char* kind : {"work_precision", "stability"}) {
       each(kind, [this, kind](TomlReader& r) { scene_.studies.push_back(read_study(r, kind)); });
+    }
+    for (const SectionKind& kind : section_kinds()) {
+      each(kind.name, [this, &kind](TomlReader& r) {
+        SectionTask section{kind.name, read_name(r, kind.name), r.line(), {}};
+        section.task = kind.parse(r, SectionContext{section.name, scene_.materials, scene_.warnings});
+        scene_.sections.push_back(std::move(section));
+      });
     }
     root_.finish();
     return std::move(scene_);
@@ -671,20 +676,21 @@ Scene load_scene(const std::filesystem::path& path) {
   return parse_scene(buffer.str(), path.string());
 }
 
+void thin_values(std::vector<double>& values, std::size_t points) {
+  if (points < 2 || values.size() <= points) return;
+  std::vector<double> kept;
+  for (std::size_t i = 0; i < points; ++i) kept.push_back(values[i * (values.size() - 1) / (points - 1)]);
+  values = kept;
+}
+
 void make_quick(Scene& scene, std::size_t points) {
-  auto thin = [points](std::vector<double>& values) {
-    if (points < 2 || values.size() <= points) return;
-    std::vector<double> kept;
-    for (std::size_t i = 0; i < points; ++i) kept.push_back(values[i * (values.size() - 1) / (points - 1)]);
-    values = kept;
-  };
+  auto thin = [points](std::vector<double>& values) { thin_values(values, points); };
   for (Sweep& s : scene.sweeps) {
     thin(s.zeta);
     thin(s.velocity_m_s);
   }
   for (DashpotCheck& d : scene.dashpots) thin(d.damping_ratio);
   for (DemTask& d : scene.dems) thin(d.speeds);
-  for (AdhesionTask& a : scene.adhesions) thin(a.speeds_m_s);
   for (DampingCheckTask& d : scene.damping_checks) {
     thin(d.eps);
     thin(d.speeds);
@@ -693,6 +699,7 @@ void make_quick(Scene& scene, std::size_t points) {
     thin(s.zeta);
     s.repeats = 1;
   }
+  for (SectionTask& s : scene.sections) find_section_kind(s.kind)->quick(s.task, points);
 }
 
 }  // namespace restitution::scene

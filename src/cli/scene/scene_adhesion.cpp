@@ -56,32 +56,52 @@ std::string sticking_words(const scene::AdhesionOutcome& o) {
                      o.sticking.speed_m_per_s, how);
 }
 
+// The figure's arguments after the CSV and the image.
+std::vector<std::string> plot_arguments(const scene::AdhesionTask& task, const scene::AdhesionOutcome& o) {
+  const auto [slowest, fastest] = std::minmax_element(task.speeds_m_s.begin(), task.speeds_m_s.end());
+  std::vector<std::string> args = {"--sticking-speed", fmt::format("{:.17g}", o.sticking.speed_m_per_s),
+                                   "--model", model_words(task.model)};
+  // More than a decade and a bit: a log axis reads better.
+  if (*fastest > 20.0 * *slowest) args.insert(args.end(), {"--xscale", "log"});
+  return args;
+}
+
+void write_summary(JsonWriter& json, const scene::AdhesionTask& task, const scene::AdhesionOutcome& o) {
+  json.key("adhesion_" + task.name).begin_object();
+  json.field("csv", task.name + ".csv").field("model", adhesive_model_name(task.model));
+  json.field("sticking_speed_m_per_s", o.sticking.speed_m_per_s)
+      .field("sticking_speed_solves", o.sticking.solves);
+  json.field("dissipative_constant_s", o.dissipative_constant_s).field("damping", o.contact.damping);
+  json.field("elastic_hysteresis_work_j", o.elastic_hysteresis_work_j)
+      .field("break_overlap_m", o.break_overlap_m);
+  json.field("speeds", static_cast<long>(o.collisions.size())).field("stuck", static_cast<long>(o.stuck));
+  json.field("tolerance", o.tolerance);
+  json.end_object();
+}
+
 }  // namespace
 
-AdhesionSection adhesion_section(const scene::Scene& scene, const scene::AdhesionTask& task) {
-  AdhesionSection s;
-  s.outcome = scene::run_adhesion_section(scene, task);
-  const scene::AdhesionOutcome& o = s.outcome;
-  s.csv = adhesive_table_header();
+void write_adhesion_section(const scene::Scene& /*scene*/, const scene::AdhesionTask& task,
+                            const scene::AdhesionOutcome& o, SectionOutput& out) {
+  std::string csv = adhesive_table_header();
   double low = HUGE_VAL;
   double high = -HUGE_VAL;
   for (std::size_t i = 0; i < o.collisions.size(); ++i) {
     const AdhesiveCollision& c = o.collisions[i];
-    s.csv += adhesive_table_row(task.speeds_m_s[i], c, o.sticking.speed_m_per_s);
+    csv += adhesive_table_row(task.speeds_m_s[i], c, o.sticking.speed_m_per_s);
     if (c.outcome == AdhesiveOutcome::bounced) {
       low = std::min(low, c.eps);
       high = std::max(high, c.eps);
     }
   }
+  out.file(task.name + ".csv", csv);
+  out.report(fmt::format("## {}\n\n", task.title));
+  out.report(out.plot("scene_adhesion", task.name, plot_arguments(task, o)));
   const auto [slowest, fastest] = std::minmax_element(task.speeds_m_s.begin(), task.speeds_m_s.end());
-  const bool log_axis = *fastest > 20.0 * *slowest;  // more than a decade and a bit: a log axis reads better
-  s.plot_args = {"--sticking-speed", fmt::format("{:.17g}", o.sticking.speed_m_per_s), "--model",
-                 model_words(task.model)};
-  if (log_axis) s.plot_args.insert(s.plot_args.end(), {"--xscale", "log"});
   const std::string bounced = o.stuck == o.collisions.size()
                                   ? "none bounced"
                                   : fmt::format("ε of those that bounced from {:.10g} to {:.10g}", low, high);
-  s.markdown = fmt::format(
+  out.report(fmt::format(
       "Adhesive collisions (docs/adhesion.md) of two spheres of [materials.{}], model `{}`: {}. Undamped, "
       "the "
       "contact breaks at overlap {:.10g} m after the neck took W = {:.10g} J. {}. Of {} impact speeds from "
@@ -89,8 +109,8 @@ AdhesionSection adhesion_section(const scene::Scene& scene, const scene::Adhesio
       "1 − ε, contact time, maximal compression, the work to the neck and to viscosity).\n\n",
       task.material, adhesive_model_name(task.model), contact_words(task, o), o.break_overlap_m,
       o.elastic_hysteresis_work_j, sticking_words(o), o.collisions.size(), *slowest, *fastest, o.tolerance,
-      o.stuck, bounced, task.name);
-  return s;
+      o.stuck, bounced, task.name));
+  write_summary(out.summary(), task, o);
 }
 
 }  // namespace restitution::cli

@@ -1,23 +1,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A scene's [[adhesion]] section written (docs/scenes.md, docs/adhesion.md): what scene/scene_adhesion_run
-// computes, as the CSV of `sweep --adhesion`, the arguments of the ε(v) figure and the report's words.
-#include <string>
-#include <vector>
-
+// computed, as the CSV of `sweep --adhesion`, the ε(v) figure, the report's words and summary.json.
+#include "cli/scene/scene_section_writers.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_adhesion.hpp"
 #include "scene/scene_adhesion_run.hpp"
 
 namespace restitution::cli {
 
-struct AdhesionSection {
-  scene::AdhesionOutcome outcome;
-  std::string csv;
-  std::vector<std::string> plot_args;  // scripts/plots/scene_adhesion.py after CSV and image
-  std::string markdown;                // after the plot
-};
-
-// Throws InvalidInput naming the scene, the section and the problem.
-AdhesionSection adhesion_section(const scene::Scene& scene, const scene::AdhesionTask& task);
+// Writes the section: NAME.csv (the columns of `sweep --adhesion`), the figure of ε(v) with the sticking
+// region shaded (scripts/plots/scene_adhesion.py), the report's paragraph and summary.json's adhesion_NAME
+// (the sticking speed, the damping, the closed forms).
+void write_adhesion_section(const scene::Scene& scene, const scene::AdhesionTask& task,
+                            const scene::AdhesionOutcome& outcome, SectionOutput& out);
 
 }  // namespace restitution::cli

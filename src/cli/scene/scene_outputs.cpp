@@ -12,12 +12,12 @@
 #include "cli/common/result_json.hpp"
 #include "cli/common/stop_signals.hpp"
 #include "cli/fit/fit_data_report.hpp"
-#include "cli/scene/scene_adhesion.hpp"
 #include "cli/scene/scene_damping.hpp"
 #include "cli/scene/scene_dem.hpp"
 #include "cli/scene/scene_fit_section.hpp"
 #include "cli/scene/scene_gas.hpp"
 #include "cli/scene/scene_oblique.hpp"
+#include "cli/scene/scene_section_writers.hpp"
 #include "cli/scene/scene_tables.hpp"
 #include "cli/scene/scene_text.hpp"
 #include "cli/solve/work_precision_files.hpp"
@@ -67,7 +67,7 @@ std::string markdown_rows(const Table& t, const std::vector<std::string>& column
   return out;
 }
 
-class SceneWriter {
+class SceneWriter : private SectionOutput {
  public:
   SceneWriter(const scene::Scene& s, const scene::SceneResults& r, fs::path folder)
       : scene_(s), results_(r), folder_(std::move(folder)) {}
@@ -88,7 +88,8 @@ class SceneWriter {
     collect(order, scene_.fits, &SceneWriter::fit);
     collect(order, scene_.gases, &SceneWriter::gas);
     collect(order, scene_.obliques, &SceneWriter::oblique);
-    collect(order, scene_.adhesions, &SceneWriter::adhesion);
+    for (std::size_t i = 0; i < scene_.sections.size(); ++i)
+      order.push_back({scene_.sections[i].line, &SceneWriter::section, i});
     std::stable_sort(order.begin(), order.end(),
                      [](const SectionEntry& a, const SectionEntry& b) { return a.line < b.line; });
     for (const SectionEntry& entry : order) (this->*entry.write)(entry.index);
@@ -119,9 +120,19 @@ class SceneWriter {
     out_.files.push_back(name);
   }
 
+  // A section of the table of kinds (scene/scene_sections.hpp), written by its row of section_writers().
+  void section(std::size_t i) {
+    const scene::SectionTask& s = scene_.sections[i];
+    find_section_writer(s.kind)->write(scene_, s, results_.sections[i], *this);
+  }
+  void file(const std::string& name, const std::string& content) override { write_file(name, content); }
+  void report(const std::string& markdown) override { report_ += markdown; }
+  JsonWriter& summary() override { return json_; }
+  void warn(const std::string& line) override { out_.warnings.push_back(line); }
+
   // Runs a plot script; returns the markdown image link, or a note saying why there is no plot.
   std::string plot(const std::string& script, const std::string& name,
-                   const std::vector<std::string>& arguments) {
+                   const std::vector<std::string>& arguments) override {
     const std::vector<std::string>& formats = scene_.figure_formats;
     const std::string why =
         run_plot_script(script, folder_ / (name + ".csv"), folder_ / (name + ".png"), arguments, formats);
@@ -413,28 +424,6 @@ class SceneWriter {
       json_.field(oblique::tangential_name(run.setup.tangential.kind), run.sticking.tangential_restitution);
     }
     json_.end_object().end_object();
-  }
-
-  // [[adhesion]]: ε(v) with outcome, contact time, compression and both works in a CSV, the figure with the
-  // sticking region shaded; the sticking speed and the damping in summary.json.
-  void adhesion(std::size_t i) {
-    const scene::AdhesionTask& task = scene_.adhesions[i];
-    const AdhesionSection section = adhesion_section(scene_, task);
-    write_file(task.name + ".csv", section.csv);
-    report_ += fmt::format("## {}\n\n", task.title);
-    report_ += plot("scene_adhesion", task.name, section.plot_args);
-    report_ += section.markdown;
-    const scene::AdhesionOutcome& o = section.outcome;
-    json_.key("adhesion_" + task.name).begin_object();
-    json_.field("csv", task.name + ".csv").field("model", adhesive_model_name(task.model));
-    json_.field("sticking_speed_m_per_s", o.sticking.speed_m_per_s)
-        .field("sticking_speed_solves", o.sticking.solves);
-    json_.field("dissipative_constant_s", o.dissipative_constant_s).field("damping", o.contact.damping);
-    json_.field("elastic_hysteresis_work_j", o.elastic_hysteresis_work_j)
-        .field("break_overlap_m", o.break_overlap_m);
-    json_.field("speeds", static_cast<long>(o.collisions.size())).field("stuck", static_cast<long>(o.stuck));
-    json_.field("tolerance", o.tolerance);
-    json_.end_object();
   }
 
   // [[fit]]: the data with error bars, each law's curve with its 95 % band and the residuals (one plot), the
