@@ -196,9 +196,8 @@ struct Scene {
   std::vector<FitTask> fits;          // [[fit]]: measured eps(v) (scene_fit.hpp)
   std::vector<GasTask> gases;         // [[gas]]
   std::vector<std::string> warnings;  // a key read by its old name, each naming the new one
-  std::vector<ObliqueTask> obliques;  // [[oblique]] (scene_oblique.hpp)
-  // The sections of the table of kinds (scene_sections.hpp: [[adhesion]]), by kind in the table's order, each
-  // kind's in file order.
+  // The sections of the table of kinds (scene_sections.hpp: [[oblique]], [[adhesion]]), by kind in the
+  // table's order, each kind's in file order.
   std::vector<SectionTask> sections;
 };
 

@@ -187,22 +187,20 @@ class Parser {
     each("dem", [this](TomlReader& r) { scene_.dems.push_back(read_dem(r)); });
     each("damping_check", [this](TomlReader& r) { scene_.damping_checks.push_back(read_damping_check(r)); });
     each("gas", [this](TomlReader& r) { scene_.gases.push_back(read_gas(r)); });
-    each("oblique", [this](TomlReader& r) {
-      scene_.obliques.push_back(
-          detail::read_oblique_task(r, read_name(r, "oblique"), scene_.materials, scene_.warnings));
-    });
-    each("fit", [this](TomlReader& r) {
-      scene_.fits.push_back(detail::read_fit_task(r, read_name(r, "fit"), scene_.materials));
-    });
-    for (const char* kind : {"work_precision", "stability"}) {
-      each(kind, [this, kind](TomlReader& r) { scene_.studies.push_back(read_study(r, kind)); });
-    }
+    // The table's sections (scene_sections.hpp), read where [[oblique]] was: unnamed sections keep their
+    // numbers.
     for (const SectionKind& kind : section_kinds()) {
       each(kind.name, [this, &kind](TomlReader& r) {
         SectionTask section{kind.name, read_name(r, kind.name), r.line(), {}};
         section.task = kind.parse(r, SectionContext{section.name, scene_.materials, scene_.warnings});
         scene_.sections.push_back(std::move(section));
       });
+    }
+    each("fit", [this](TomlReader& r) {
+      scene_.fits.push_back(detail::read_fit_task(r, read_name(r, "fit"), scene_.materials));
+    });
+    for (const char* kind : {"work_precision", "stability"}) {
+      each(kind, [this, kind](TomlReader& r) { scene_.studies.push_back(read_study(r, kind)); });
     }
     root_.finish();
     return std::move(scene_);

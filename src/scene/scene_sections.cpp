@@ -3,6 +3,8 @@
 
 #include "scene/scene_adhesion.hpp"
 #include "scene/scene_adhesion_run.hpp"
+#include "scene/scene_oblique.hpp"
+#include "scene/scene_oblique_run.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -10,20 +12,31 @@ namespace {
 // Each row's functions take the kind's own task type out of the std::any and put its outcome in one.
 template <class Task, auto read, auto compute>
 SectionKind row(const char* name, void (*quick)(std::any&, std::size_t), const char* own_solves) {
-  return {
-      name,
-      [](detail::TomlReader& r, const SectionContext& c) -> std::any { return read(r, c.name, c.materials); },
-      [](const Scene& scene, const std::any& task) -> std::any {
-        return compute(scene, std::any_cast<const Task&>(task));
-      },
-      quick, own_solves};
+  return {name, [](detail::TomlReader& r, const SectionContext& c) -> std::any { return read(r, c); },
+          [](const Scene& scene, const std::any& task) -> std::any {
+            return compute(scene, std::any_cast<const Task&>(task));
+          },
+          quick, own_solves};
 }
+
+ObliqueTask read_oblique(detail::TomlReader& r, const SectionContext& c) {
+  return detail::read_oblique_task(r, c.name, c.materials, c.warnings);
+}
+
+AdhesionTask read_adhesion(detail::TomlReader& r, const SectionContext& c) {
+  return detail::read_adhesion_task(r, c.name, c.materials);
+}
+
+void keep_all(std::any& /*task*/, std::size_t /*points*/) {}
 
 }  // namespace
 
 const std::vector<SectionKind>& section_kinds() {
   static const std::vector<SectionKind> kinds = {
-      row<AdhesionTask, detail::read_adhesion_task, run_adhesion_section>(
+      // Angles and spins are few, and Maw's diagram needs them: --quick keeps them all.
+      row<ObliqueTask, read_oblique, run_oblique_section>(
+          "oblique", keep_all, "the [[oblique]] sections integrate their own impacts"),
+      row<AdhesionTask, read_adhesion, run_adhesion_section>(
           "adhesion",
           [](std::any& task, std::size_t points) {
             thin_values(std::any_cast<AdhesionTask&>(task).speeds_m_s, points);

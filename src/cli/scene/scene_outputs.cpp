@@ -16,7 +16,6 @@
 #include "cli/scene/scene_dem.hpp"
 #include "cli/scene/scene_fit_section.hpp"
 #include "cli/scene/scene_gas.hpp"
-#include "cli/scene/scene_oblique.hpp"
 #include "cli/scene/scene_section_writers.hpp"
 #include "cli/scene/scene_tables.hpp"
 #include "cli/scene/scene_text.hpp"
@@ -87,7 +86,6 @@ class SceneWriter : private SectionOutput {
     collect(order, scene_.damping_checks, &SceneWriter::damping_check);
     collect(order, scene_.fits, &SceneWriter::fit);
     collect(order, scene_.gases, &SceneWriter::gas);
-    collect(order, scene_.obliques, &SceneWriter::oblique);
     for (std::size_t i = 0; i < scene_.sections.size(); ++i)
       order.push_back({scene_.sections[i].line, &SceneWriter::section, i});
     std::stable_sort(order.begin(), order.end(),
@@ -393,37 +391,6 @@ class SceneWriter : private SectionOutput {
       json_.field("driving_exponent", section.steady->driving_exponent);
     }
     json_.end_object();
-  }
-
-  // [[oblique]]: every model's sweep in one CSV, Maw's diagram, a summary per model; χ, ε and each model's
-  // sticking limit in summary.json.
-  void oblique(std::size_t i) {
-    const scene::ObliqueTask& task = scene_.obliques[i];
-    const ObliqueSection section = oblique_section(scene_, task);
-    write_file(task.name + ".csv", section.csv);
-    const scene::ObliqueOutcome& outcome = section.outcome;
-    for (const scene::ObliqueModelRun& run : outcome.runs) {
-      if (run.failed > 0) {
-        out_.warnings.push_back(
-            fmt::format("{}: {} of {} impacts of {} failed (status failed in {}.csv; the "
-                        "report says why)",
-                        task.name, run.failed, run.impacts.size(),
-                        oblique::tangential_name(run.setup.tangential.kind), task.name));
-      }
-    }
-    report_ += fmt::format("## {}\n\n", task.title);
-    if (!section.plot_args.empty()) report_ += plot("oblique_maw", task.name, section.plot_args);
-    report_ += section.markdown;
-    json_.key("oblique_" + task.name).begin_object();
-    json_.field("csv", task.name + ".csv")
-        .field("impacts", static_cast<long>(outcome.runs.front().impacts.size()));
-    json_.field("normal_restitution", outcome.runs.front().impacts.front().result.normal_restitution);
-    json_.field("maw_chi", outcome.maw_chi);
-    json_.key("sticking_restitution").begin_object();
-    for (const scene::ObliqueModelRun& run : outcome.runs) {
-      json_.field(oblique::tangential_name(run.setup.tangential.kind), run.sticking.tangential_restitution);
-    }
-    json_.end_object().end_object();
   }
 
   // [[fit]]: the data with error bars, each law's curve with its 95 % band and the residuals (one plot), the

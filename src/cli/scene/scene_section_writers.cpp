@@ -2,6 +2,7 @@
 #include "cli/scene/scene_section_writers.hpp"
 
 #include "cli/scene/scene_adhesion.hpp"
+#include "cli/scene/scene_oblique.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -20,6 +21,7 @@ SectionWriter row(const char* name) {
 
 const std::vector<SectionWriter>& section_writers() {
   static const std::vector<SectionWriter> writers = {
+      row<scene::ObliqueTask, scene::ObliqueOutcome, write_oblique_section>("oblique"),
       row<scene::AdhesionTask, scene::AdhesionOutcome, write_adhesion_section>("adhesion"),
   };
   return writers;

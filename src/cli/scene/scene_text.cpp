@@ -98,7 +98,6 @@ std::string own_collisions_text(const scene::Scene& scene) {
     parts.emplace_back("the [[dem]] and [[damping_check]] sections solve their own collisions");
   if (!scene.gases.empty())
     parts.emplace_back("the [[gas]] sections take eps(v) from the fast table or from their own solves");
-  if (!scene.obliques.empty()) parts.emplace_back("the [[oblique]] sections integrate their own impacts");
   for (const scene::SectionKind& kind : scene::section_kinds()) {
     const bool present = std::any_of(scene.sections.begin(), scene.sections.end(),
                                      [&kind](const scene::SectionTask& s) { return s.kind == kind.name; });
