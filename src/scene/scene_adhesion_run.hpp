@@ -11,6 +11,7 @@
 #include "restitution/adhesion.hpp"
 #include "restitution/adhesive_calibration.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_adhesion.hpp"
 
 namespace restitution::scene {
 
