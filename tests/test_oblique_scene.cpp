@@ -14,6 +14,7 @@
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_sections.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -49,8 +50,8 @@ TEST(ObliqueScene, ReadsTheSection) {
           "model = [\"mindlin\", \"linear_nohistory\"]\nspins = { from = -100.0, to = 100.0, "
           "points = 3 }\nwall = true\nimpact_velocity = 2.0\ntangential_damping = 0.5\nplot = false\n",
       "oblique.toml");
-  ASSERT_EQ(s.obliques.size(), 1U);
-  const ObliqueTask& t = s.obliques[0];
+  ASSERT_EQ(tasks_of<ObliqueTask>(s, "oblique").size(), 1U);
+  const ObliqueTask& t = *tasks_of<ObliqueTask>(s, "oblique")[0];
   EXPECT_EQ(t.material, "steel");
   EXPECT_EQ(t.models, (std::vector<std::string>{"mindlin", "linear_nohistory"}));
   EXPECT_EQ(t.friction, 0.3);
@@ -62,8 +63,9 @@ TEST(ObliqueScene, ReadsTheSection) {
   EXPECT_FALSE(t.plot);
   EXPECT_EQ(t.tolerance, 1e-10);
   const Scene defaults = parse_scene(kHead + kOblique, "oblique.toml");
-  EXPECT_EQ(defaults.obliques[0].models, std::vector<std::string>{"mindlin"});  // as dem's
-  EXPECT_EQ(defaults.obliques[0].spins_rad_s, std::vector<double>{0.0});
+  EXPECT_EQ(tasks_of<ObliqueTask>(defaults, "oblique")[0]->models,
+            std::vector<std::string>{"mindlin"});  // as dem's
+  EXPECT_EQ(tasks_of<ObliqueTask>(defaults, "oblique")[0]->spins_rad_s, std::vector<double>{0.0});
 }
 
 TEST(ObliqueScene, RefusesBadKeysByName) {

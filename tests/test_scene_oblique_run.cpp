@@ -10,6 +10,7 @@
 
 #include "scene/scene.hpp"
 #include "scene/scene_oblique_run.hpp"
+#include "scene/scene_sections.hpp"
 
 namespace {
 
@@ -39,7 +40,8 @@ angles = [0.0, 5.0, 30.0, 60.0, 85.0]
 
 TEST(SceneObliqueRun, CountsAndRangesAreThoseOfTheImpacts) {
   const scene::Scene s = scene::parse_scene(scene_text(""), "oblique_test.toml");
-  const scene::ObliqueOutcome o = scene::run_oblique_section(s, s.obliques.at(0));
+  const scene::ObliqueOutcome o =
+      scene::run_oblique_section(s, *scene::tasks_of<scene::ObliqueTask>(s, "oblique").at(0));
   ASSERT_EQ(o.runs.size(), 2U);
   EXPECT_TRUE(o.plotted);
   EXPECT_NEAR(o.maw_chi, 7.0 * (1.0 - 0.3) / (2.0 * (2.0 - 0.3)), 1e-14);
@@ -68,7 +70,8 @@ TEST(SceneObliqueRun, CountsAndRangesAreThoseOfTheImpacts) {
 
 TEST(SceneObliqueRun, NoPlotNoStickingLimit) {
   const scene::Scene s = scene::parse_scene(scene_text("plot = false\n"), "oblique_test.toml");
-  const scene::ObliqueOutcome o = scene::run_oblique_section(s, s.obliques.at(0));
+  const scene::ObliqueOutcome o =
+      scene::run_oblique_section(s, *scene::tasks_of<scene::ObliqueTask>(s, "oblique").at(0));
   EXPECT_FALSE(o.plotted);
   for (const scene::ObliqueModelRun& run : o.runs)
     EXPECT_TRUE(std::isnan(run.sticking.tangential_restitution));

@@ -4,6 +4,7 @@
 // scenes/*.toml). This header holds the parsed scene as plain values and the parser; planning and running
 // are in scene_plan.hpp and scene_run.hpp. The parser validates everything it can: unknown keys, wrong
 // types and out-of-range values throw InvalidInput naming the file, the line and the key.
+#include <any>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -156,6 +157,14 @@ struct GasTask {
   int line = 0;
 };
 
+// A section of a kind in the table of scene_sections.hpp: its task, of the kind's own type.
+struct SectionTask {
+  std::string kind;  // the row's name, [[kind]] in the file
+  std::string name;
+  int line = 0;  // where the section starts
+  std::any task;
+};
+
 struct Scene {
   std::string file_name;
   std::string title;
@@ -175,7 +184,9 @@ struct Scene {
   std::vector<FitTask> fits;          // [[fit]]: measured eps(v) (scene_fit.hpp)
   std::vector<GasTask> gases;         // [[gas]]
   std::vector<std::string> warnings;  // a key read by its old name, each naming the new one
-  std::vector<ObliqueTask> obliques;  // [[oblique]] (scene_oblique.hpp)
+  // The sections of the table of kinds (scene_sections.hpp: [[oblique]], [[adhesion]]), by kind in the
+  // table's order, each kind's in file order.
+  std::vector<SectionTask> sections;
 };
 
 // Parses and validates a scene. file_name is used in messages only. Throws InvalidInput.
@@ -184,8 +195,10 @@ Scene parse_scene(std::string_view toml_text, std::string_view file_name);
 // Reads the file and parses it. Throws InvalidInput naming the file when it cannot be read.
 Scene load_scene(const std::filesystem::path& path);
 
-// Caps every sweep, dash-pot and stability range at `points` values (first and last kept) and times each
-// work-precision point once: CI's small settings.
+// Caps every sweep, dash-pot, stability and table-section range at `points` values (first and last kept) and
+// times each work-precision point once: CI's small settings.
 void make_quick(Scene& scene, std::size_t points);
+// Keeps `points` of the values, spread evenly, the first and the last among them (points < 2: all).
+void thin_values(std::vector<double>& values, std::size_t points);
 
 }  // namespace restitution::scene

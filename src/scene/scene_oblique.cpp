@@ -10,6 +10,7 @@
 
 #include "restitution/errors.hpp"
 #include "restitution_oblique/oblique_study.hpp"
+#include "scene/section_material.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace restitution::scene::detail {
@@ -21,11 +22,7 @@ ObliqueTask read_oblique_task(TomlReader& r, std::string name,
   t.line = r.line();
   t.name = std::move(name);
   t.title = r.text("title").value_or(t.name);
-  const auto material = r.text("material");
-  if (!material) r.fail("material", "missing: the [materials.X] whose spheres collide");
-  if (!materials.contains(*material))
-    r.fail("material", fmt::format("no [materials.{}] in this scene", *material));
-  t.material = *material;
+  t.material = read_section_material(r, materials, "whose spheres collide");
   t.models = r.words("model").value_or(std::vector<std::string>{oblique::ObliqueInputs{}.tangential});
   if (t.models.empty()) r.fail("model", "empty: leave the key out for mindlin");
   const std::vector<std::string>& runs = oblique::oblique_tangential_names();

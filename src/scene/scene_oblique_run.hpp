@@ -9,6 +9,7 @@
 
 #include "restitution_oblique/oblique_study.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_oblique.hpp"
 
 namespace restitution::scene {
 

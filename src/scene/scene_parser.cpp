@@ -20,6 +20,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_approximations.hpp"
 #include "scene/scene_gas.hpp"
+#include "scene/scene_sections.hpp"
 #include "scene/toml_ascii.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -187,10 +188,15 @@ class Parser {
     each("dem", [this](TomlReader& r) { scene_.dems.push_back(read_dem(r)); });
     each("damping_check", [this](TomlReader& r) { scene_.damping_checks.push_back(read_damping_check(r)); });
     each("gas", [this](TomlReader& r) { scene_.gases.push_back(read_gas(r)); });
-    each("oblique", [this](TomlReader& r) {
-      scene_.obliques.push_back(
-          detail::read_oblique_task(r, read_name(r, "oblique"), scene_.materials, scene_.warnings));
-    });
+    // The table's sections (scene_sections.hpp), read where [[oblique]] was: unnamed sections keep their
+    // numbers.
+    for (const SectionKind& kind : section_kinds()) {
+      each(kind.name, [this, &kind](TomlReader& r) {
+        SectionTask section{kind.name, read_name(r, kind.name), r.line(), {}};
+        section.task = kind.parse(r, SectionContext{section.name, scene_.materials, scene_.warnings});
+        scene_.sections.push_back(std::move(section));
+      });
+    }
     each("fit", [this](TomlReader& r) {
       scene_.fits.push_back(detail::read_fit_task(r, read_name(r, "fit"), scene_.materials));
     });
@@ -600,13 +606,15 @@ Scene load_scene(const std::filesystem::path& path) {
   return parse_scene(buffer.str(), path.string());
 }
 
+void thin_values(std::vector<double>& values, std::size_t points) {
+  if (points < 2 || values.size() <= points) return;
+  std::vector<double> kept;
+  for (std::size_t i = 0; i < points; ++i) kept.push_back(values[i * (values.size() - 1) / (points - 1)]);
+  values = kept;
+}
+
 void make_quick(Scene& scene, std::size_t points) {
-  auto thin = [points](std::vector<double>& values) {
-    if (points < 2 || values.size() <= points) return;
-    std::vector<double> kept;
-    for (std::size_t i = 0; i < points; ++i) kept.push_back(values[i * (values.size() - 1) / (points - 1)]);
-    values = kept;
-  };
+  auto thin = [points](std::vector<double>& values) { thin_values(values, points); };
   for (Sweep& s : scene.sweeps) {
     thin(s.zeta);
     thin(s.velocity_m_s);
@@ -621,6 +629,7 @@ void make_quick(Scene& scene, std::size_t points) {
     thin(s.zeta);
     s.repeats = 1;
   }
+  for (SectionTask& s : scene.sections) find_section_kind(s.kind)->quick(s.task, points);
 }
 
 }  // namespace restitution::scene

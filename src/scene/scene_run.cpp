@@ -15,6 +15,7 @@
 #include "restitution/material.hpp"
 #include "scene/scene_comparisons.hpp"
 #include "scene/scene_extensions.hpp"
+#include "scene/scene_sections.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -139,6 +140,8 @@ SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& setting
   }
   for (const ExternalStudy& study : scene.studies)
     out.studies.push_back(detail::run_study(study, scene.tolerance, settings.reference_file));
+  for (const SectionTask& section : scene.sections)
+    out.sections.push_back(find_section_kind(section.kind)->run(scene, section.task));
   return out;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 // Running a planned scene: every job solved once (in parallel, one solver per thread), calibrations, and the
 // comparisons the scene asks for. Results are values; writing them is the caller's business.
+#include <any>
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -31,8 +32,11 @@ struct SceneResults {
   // Parallel to Scene::damping_checks; their solves are not counted in `total` or `collisions`.
   std::vector<damping_check::GridResult> damping_checks;
   std::vector<StudyOutcome> studies;  // parallel to Scene::studies
-  SolverStats total;                  // summed over the planned collisions (not the calibrations)
-  std::size_t collisions = 0;         // collisions integrated, calibrations included
+  // Parallel to Scene::sections: each section's outcome, of its kind's type (scene_sections.hpp); their
+  // solves are not counted in `total` or `collisions`.
+  std::vector<std::any> sections;
+  SolverStats total;           // summed over the planned collisions (not the calibrations)
+  std::size_t collisions = 0;  // collisions integrated, calibrations included
 };
 
 // Runs `plan`, which plan_scene(scene) made: planning apart lets a caller refuse a scene (points outside the

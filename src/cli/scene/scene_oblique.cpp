@@ -36,31 +36,15 @@ std::string model_summary(const scene::ObliqueModelRun& run, bool sticking_limit
       run.impacts.size(), limit, failures);
 }
 
-}  // namespace
-
-ObliqueSection oblique_section(const scene::Scene& scene, const scene::ObliqueTask& task) {
-  ObliqueSection s;
-  s.outcome = scene::run_oblique_section(scene, task);
-  const scene::ObliqueOutcome& o = s.outcome;
-  s.csv = oblique_csv_header_with_model() + "\n";
-  for (const scene::ObliqueModelRun& run : o.runs) {
-    s.csv += oblique_csv_rows(run.impacts, tangential_name(run.setup.tangential.kind));
-  }
+// The report's paragraph: which wall, ε's range, χ, then one sentence per model.
+std::string oblique_markdown(const scene::ObliqueTask& task, const scene::ObliqueOutcome& o) {
   const scene::ObliqueModelRun& first = o.runs.front();
-  if (o.plotted && !std::isnan(o.first_eps)) {
-    std::vector<MawModel> models;
-    for (const scene::ObliqueModelRun& run : o.runs) {
-      models.push_back(
-          {run.setup.tangential.kind, run.sticking.tangential_restitution, run.sticking.failure});
-    }
-    s.plot_args = maw_plot_arguments(first.setup, o.first_eps, models);
-  }
   const std::string wall = !task.wall ? "two spheres"
                            : first.setup.rigid_wall
                                ? "a sphere on a rigid wall"
                                : fmt::format("a sphere on a wall of Y = {:g} Pa, ν = {:g}",
                                              *task.wall_young_modulus_pa, *task.wall_poisson_ratio);
-  s.markdown = fmt::format(
+  std::string markdown = fmt::format(
       "Oblique impacts (docs/oblique.md) of {} of [materials.{}] at {:g} m/s, μ = {:g}, {} angle(s) from "
       "{}° to {}°, {} initial spin(s); normal restitution ε (head-on at the normal speed v cos θ, {} end) "
       "from {:.10g} to {:.10g}; Maw's χ = {:.6g} (gross slip: ψ₂ = ψ₁ − 2(1 + ε)χ, drawn with ε = {:.10g} of "
@@ -69,9 +53,51 @@ ObliqueSection oblique_section(const scene::Scene& scene, const scene::ObliqueTa
       *std::min_element(task.angles_deg.begin(), task.angles_deg.end()),
       *std::max_element(task.angles_deg.begin(), task.angles_deg.end()), task.spins_rad_s.size(), task.end,
       o.eps_low, o.eps_high, o.maw_chi, o.first_eps);
-  for (const scene::ObliqueModelRun& run : o.runs) s.markdown += model_summary(run, o.plotted);
-  s.markdown += fmt::format("\nEvery impact is a row of `{}.csv`.\n\n", task.name);
-  return s;
+  for (const scene::ObliqueModelRun& run : o.runs) markdown += model_summary(run, o.plotted);
+  markdown += fmt::format("\nEvery impact is a row of `{}.csv`.\n\n", task.name);
+  return markdown;
+}
+
+void write_summary(JsonWriter& json, const scene::ObliqueTask& task, const scene::ObliqueOutcome& o) {
+  json.key("oblique_" + task.name).begin_object();
+  json.field("csv", task.name + ".csv").field("impacts", static_cast<long>(o.runs.front().impacts.size()));
+  json.field("normal_restitution", o.runs.front().impacts.front().result.normal_restitution);
+  json.field("maw_chi", o.maw_chi);
+  json.key("sticking_restitution").begin_object();
+  for (const scene::ObliqueModelRun& run : o.runs) {
+    json.field(tangential_name(run.setup.tangential.kind), run.sticking.tangential_restitution);
+  }
+  json.end_object().end_object();
+}
+
+}  // namespace
+
+void write_oblique_section(const scene::Scene& /*scene*/, const scene::ObliqueTask& task,
+                           const scene::ObliqueOutcome& o, SectionOutput& out) {
+  std::string csv = oblique_csv_header_with_model() + "\n";
+  for (const scene::ObliqueModelRun& run : o.runs) {
+    csv += oblique_csv_rows(run.impacts, tangential_name(run.setup.tangential.kind));
+  }
+  out.file(task.name + ".csv", csv);
+  for (const scene::ObliqueModelRun& run : o.runs) {
+    if (run.failed > 0) {
+      out.warn(fmt::format("{}: {} of {} impacts of {} failed (status failed in {}.csv; the report says why)",
+                           task.name, run.failed, run.impacts.size(),
+                           tangential_name(run.setup.tangential.kind), task.name));
+    }
+  }
+  out.report(fmt::format("## {}\n\n", task.title));
+  if (o.plotted && !std::isnan(o.first_eps)) {
+    std::vector<MawModel> models;
+    for (const scene::ObliqueModelRun& run : o.runs) {
+      models.push_back(
+          {run.setup.tangential.kind, run.sticking.tangential_restitution, run.sticking.failure});
+    }
+    out.report(
+        out.plot("oblique_maw", task.name, maw_plot_arguments(o.runs.front().setup, o.first_eps, models)));
+  }
+  out.report(oblique_markdown(task, o));
+  write_summary(out.summary(), task, o);
 }
 
 }  // namespace restitution::cli

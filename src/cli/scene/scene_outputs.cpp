@@ -16,7 +16,7 @@
 #include "cli/scene/scene_dem.hpp"
 #include "cli/scene/scene_fit_section.hpp"
 #include "cli/scene/scene_gas.hpp"
-#include "cli/scene/scene_oblique.hpp"
+#include "cli/scene/scene_section_writers.hpp"
 #include "cli/scene/scene_tables.hpp"
 #include "cli/scene/scene_text.hpp"
 #include "cli/solve/work_precision_files.hpp"
@@ -66,7 +66,7 @@ std::string markdown_rows(const Table& t, const std::vector<std::string>& column
   return out;
 }
 
-class SceneWriter {
+class SceneWriter : private SectionOutput {
  public:
   SceneWriter(const scene::Scene& s, const scene::SceneResults& r, fs::path folder)
       : scene_(s), results_(r), folder_(std::move(folder)) {}
@@ -86,7 +86,8 @@ class SceneWriter {
     collect(order, scene_.damping_checks, &SceneWriter::damping_check);
     collect(order, scene_.fits, &SceneWriter::fit);
     collect(order, scene_.gases, &SceneWriter::gas);
-    collect(order, scene_.obliques, &SceneWriter::oblique);
+    for (std::size_t i = 0; i < scene_.sections.size(); ++i)
+      order.push_back({scene_.sections[i].line, &SceneWriter::section, i});
     std::stable_sort(order.begin(), order.end(),
                      [](const SectionEntry& a, const SectionEntry& b) { return a.line < b.line; });
     for (const SectionEntry& entry : order) (this->*entry.write)(entry.index);
@@ -117,9 +118,19 @@ class SceneWriter {
     out_.files.push_back(name);
   }
 
+  // A section of the table of kinds (scene/scene_sections.hpp), written by its row of section_writers().
+  void section(std::size_t i) {
+    const scene::SectionTask& s = scene_.sections[i];
+    find_section_writer(s.kind)->write(scene_, s, results_.sections[i], *this);
+  }
+  void file(const std::string& name, const std::string& content) override { write_file(name, content); }
+  void report(const std::string& markdown) override { report_ += markdown; }
+  JsonWriter& summary() override { return json_; }
+  void warn(const std::string& line) override { out_.warnings.push_back(line); }
+
   // Runs a plot script; returns the markdown image link, or a note saying why there is no plot.
   std::string plot(const std::string& script, const std::string& name,
-                   const std::vector<std::string>& arguments) {
+                   const std::vector<std::string>& arguments) override {
     const std::vector<std::string>& formats = scene_.figure_formats;
     const std::string why =
         run_plot_script(script, folder_ / (name + ".csv"), folder_ / (name + ".png"), arguments, formats);
@@ -379,37 +390,6 @@ class SceneWriter {
       json_.field("driving_exponent", steady->driving_exponent);
     }
     json_.end_object();
-  }
-
-  // [[oblique]]: every model's sweep in one CSV, Maw's diagram, a summary per model; χ, ε and each model's
-  // sticking limit in summary.json.
-  void oblique(std::size_t i) {
-    const scene::ObliqueTask& task = scene_.obliques[i];
-    const ObliqueSection section = oblique_section(scene_, task);
-    write_file(task.name + ".csv", section.csv);
-    const scene::ObliqueOutcome& outcome = section.outcome;
-    for (const scene::ObliqueModelRun& run : outcome.runs) {
-      if (run.failed > 0) {
-        out_.warnings.push_back(
-            fmt::format("{}: {} of {} impacts of {} failed (status failed in {}.csv; the "
-                        "report says why)",
-                        task.name, run.failed, run.impacts.size(),
-                        oblique::tangential_name(run.setup.tangential.kind), task.name));
-      }
-    }
-    report_ += fmt::format("## {}\n\n", task.title);
-    if (!section.plot_args.empty()) report_ += plot("oblique_maw", task.name, section.plot_args);
-    report_ += section.markdown;
-    json_.key("oblique_" + task.name).begin_object();
-    json_.field("csv", task.name + ".csv")
-        .field("impacts", static_cast<long>(outcome.runs.front().impacts.size()));
-    json_.field("normal_restitution", outcome.runs.front().impacts.front().result.normal_restitution);
-    json_.field("maw_chi", outcome.maw_chi);
-    json_.key("sticking_restitution").begin_object();
-    for (const scene::ObliqueModelRun& run : outcome.runs) {
-      json_.field(oblique::tangential_name(run.setup.tangential.kind), run.sticking.tangential_restitution);
-    }
-    json_.end_object().end_object();
   }
 
   // [[fit]]: the data with error bars, each law's curve with its 95 % band and the residuals (one plot), the

@@ -4,6 +4,10 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include <algorithm>
+
+#include "scene/scene_sections.hpp"
+
 namespace restitution::cli {
 namespace {
 
@@ -94,7 +98,11 @@ std::string own_collisions_text(const scene::Scene& scene) {
     parts.emplace_back("the [[dem]] and [[damping_check]] sections solve their own collisions");
   if (!scene.gases.empty())
     parts.emplace_back("the [[gas]] sections take eps(v) from the fast table or from their own solves");
-  if (!scene.obliques.empty()) parts.emplace_back("the [[oblique]] sections integrate their own impacts");
+  for (const scene::SectionKind& kind : scene::section_kinds()) {
+    const bool present = std::any_of(scene.sections.begin(), scene.sections.end(),
+                                     [&kind](const scene::SectionTask& s) { return s.kind == kind.name; });
+    if (present && *kind.own_solves != '\0') parts.emplace_back(kind.own_solves);
+  }
   if (parts.empty()) return "";
   return fmt::format("not counted here: {}", fmt::join(parts, "; "));
 }

@@ -45,21 +45,27 @@ void refuse_other_forms(const SweepOptions& o) {
 
 std::string table(const AdhesiveContact& contact, const std::vector<double>& speeds, double tolerance) {
   const StickingSpeed sticking = sticking_speed(contact, tolerance);
-  std::string text =
-      "velocity_m_per_s,outcome,eps,one_minus_eps,contact_time_s,max_compression_m,hysteresis_work_j,"
-      "viscous_work_j,kinetic_to_adhesion_energy,sticking_speed_m_per_s\n";
-  for (const double v : speeds) {
-    const AdhesiveCollision c = solve_adhesive(contact, v, tolerance);
-    text +=
-        fmt::format("{},{},{},{},{},{},{},{},{},{}\n", number17(v), adhesive_outcome_name(c.outcome),
-                    number17(c.eps), number17(c.one_minus_eps), number17(c.contact_time_s),
-                    number17(c.max_compression_m), number17(c.hysteresis_work_j), number17(c.viscous_work_j),
-                    number17(c.kinetic_to_adhesion_energy), number17(sticking.speed_m_per_s));
-  }
+  std::string text = adhesive_table_header();
+  for (const double v : speeds)
+    text += adhesive_table_row(v, solve_adhesive(contact, v, tolerance), sticking.speed_m_per_s);
   return text;
 }
 
 }  // namespace
+
+std::string adhesive_table_header() {
+  return "velocity_m_per_s,outcome,eps,one_minus_eps,contact_time_s,max_compression_m,hysteresis_work_j,"
+         "viscous_work_j,kinetic_to_adhesion_energy,sticking_speed_m_per_s\n";
+}
+
+std::string adhesive_table_row(double speed_m_per_s, const AdhesiveCollision& c,
+                               double sticking_speed_m_per_s) {
+  return fmt::format("{},{},{},{},{},{},{},{},{},{}\n", number17(speed_m_per_s),
+                     adhesive_outcome_name(c.outcome), number17(c.eps), number17(c.one_minus_eps),
+                     number17(c.contact_time_s), number17(c.max_compression_m), number17(c.hysteresis_work_j),
+                     number17(c.viscous_work_j), number17(c.kinetic_to_adhesion_energy),
+                     number17(sticking_speed_m_per_s));
+}
 
 int run_adhesive_sweep(const SweepOptions& o) {
   refuse_other_forms(o);

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "cli/scene/scene_section_writers.hpp"
+
+#include "cli/scene/scene_adhesion.hpp"
+#include "cli/scene/scene_oblique.hpp"
+
+namespace restitution::cli {
+namespace {
+
+// The row's function takes the kind's task and outcome types out of their std::any.
+template <class Task, class Outcome, auto write>
+SectionWriter row(const char* name) {
+  return {name, [](const scene::Scene& scene, const scene::SectionTask& section, const std::any& outcome,
+                   SectionOutput& out) {
+            write(scene, std::any_cast<const Task&>(section.task), std::any_cast<const Outcome&>(outcome),
+                  out);
+          }};
+}
+
+}  // namespace
+
+const std::vector<SectionWriter>& section_writers() {
+  static const std::vector<SectionWriter> writers = {
+      row<scene::ObliqueTask, scene::ObliqueOutcome, write_oblique_section>("oblique"),
+      row<scene::AdhesionTask, scene::AdhesionOutcome, write_adhesion_section>("adhesion"),
+  };
+  return writers;
+}
+
+const SectionWriter* find_section_writer(std::string_view name) {
+  for (const SectionWriter& writer : section_writers()) {
+    if (name == writer.name) return &writer;
+  }
+  return nullptr;
+}
+
+}  // namespace restitution::cli

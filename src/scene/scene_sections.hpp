@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// The table of scene sections that compute on their own (docs/design.md, "A new scene section touches"): one
+// row per kind with its name, how one section is read and how it runs. The scene holds these sections as
+// SectionTask values (scene.hpp) in the order of this table, the run step (scene_run.cpp) computes each into
+// a typed outcome, and the CLI's table of writers (cli/scene/scene_section_writers.hpp, keyed by the same
+// names; a test checks both tables list the same kinds) writes it. The sections whose collisions the planner
+// shares ([[sweep]], [[trajectory]], [[dashpot]], [[calibration]]) and those not moved yet keep their own
+// members of Scene.
+#include <any>
+#include <cstddef>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "restitution/material.hpp"
+#include "scene/scene.hpp"
+
+namespace restitution::scene {
+
+namespace detail {
+class TomlReader;
+}
+
+// What a section's reader is given besides its table: its name (read and checked by the parser: unique, a
+// file stem), the scene's materials, and the warnings a deprecated key adds to.
+struct SectionContext {
+  const std::string& name;
+  const std::map<std::string, Material>& materials;
+  std::vector<std::string>& warnings;
+};
+
+struct SectionKind {
+  const char* name;  // [[name]] in a scene file
+  // Reads one section's keys into its task (InvalidInput naming the key); the parser then refuses the keys
+  // nobody read.
+  std::any (*parse)(detail::TomlReader& r, const SectionContext& context);
+  // Computes the task into its outcome (InvalidInput or NumericalFailure naming the scene and the section).
+  std::any (*run)(const Scene& scene, const std::any& task);
+  // Caps the task's ranges at `points` values: `run --quick`.
+  void (*quick)(std::any& task, std::size_t points);
+  // The report's words for what this kind integrates outside the shared plan ("" for nothing).
+  const char* own_solves;
+};
+
+// Every row, in the order the parser reads the kinds.
+const std::vector<SectionKind>& section_kinds();
+// The row of `name`; nullptr when no row has it.
+const SectionKind* find_section_kind(std::string_view name);
+
+// A scene's sections of `kind`, as their typed tasks (the any_cast the rows' functions do).
+template <class Task>
+std::vector<const Task*> tasks_of(const Scene& scene, std::string_view kind) {
+  std::vector<const Task*> tasks;
+  for (const SectionTask& s : scene.sections) {
+    if (s.kind == kind) tasks.push_back(&std::any_cast<const Task&>(s.task));
+  }
+  return tasks;
+}
+
+}  // namespace restitution::scene
