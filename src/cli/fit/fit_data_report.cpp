@@ -74,9 +74,7 @@ void fit_object(JsonWriter& json, const LawFit& f) {
     write_interval(json, "dissipative_constant_ci68", f.dissipative_constant_ci68);
     write_interval(json, "dissipative_constant_ci95", f.dissipative_constant_ci95);
   }
-  json.key("model_eps").begin_array();
-  for (const double e : f.model_eps) json.value(e);
-  json.end_array().end_object();
+  json.field("model_eps", f.model_eps).end_object();
 }
 
 // The viscoelastic Hertz fit with the lowest AIC: the one whose A a DEM code should take.
@@ -98,16 +96,8 @@ void write_fit_json(JsonWriter& json, const FitReportInput& in) {
   json.field("sigma_estimated", r.sigma_estimated);
   json.key("levels").begin_object().field("ci68", r.level68).field("ci95", r.level95).end_object();
   json.key("data").begin_object();
-  json.key("v").begin_array();
-  for (const double v : d.velocity_m_s) json.value(v);
-  json.end_array().key("eps").begin_array();
-  for (const double e : d.eps) json.value(e);
-  json.end_array();
-  if (!d.sigma.empty()) {
-    json.key("sigma").begin_array();
-    for (const double s : d.sigma) json.value(s);
-    json.end_array();
-  }
+  json.field("v", d.velocity_m_s).field("eps", d.eps);
+  if (!d.sigma.empty()) json.field("sigma", d.sigma);
   json.end_object();
   json.key("fits").begin_array();
   for (const LawFit& f : r.fits) fit_object(json, f);
