@@ -11,6 +11,7 @@
 #include <string>
 
 #include "cli/fit/fit_data_report.hpp"
+#include "fit/best_hertz_fit.hpp"
 #include "fit/fit_report_reader.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/fit.hpp"
@@ -87,6 +88,20 @@ TEST(FitReportReader, ReadsBackWhatTheWriterWrote) {
     EXPECT_EQ(c.fits[c.chosen].law, LawKind::viscoelastic_hertz);
     EXPECT_EQ(c.file, "drop.json");
   }
+}
+
+TEST(FitReportReader, CarriesTheFitWhoseATheReportGives) {
+  // The report's A comes from best_hertz_fit; --from-fit without --end must carry that same fit.
+  const Report r = make_report();
+  const std::optional<std::size_t> best = best_hertz_fit(r.result);
+  ASSERT_TRUE(best.has_value());
+  EXPECT_EQ(*best, lowest_hertz(r.result, std::nullopt));
+  EXPECT_EQ(parse_fit_report(r.json, "drop.json", std::nullopt).chosen, *best);
+  FitResult none = r.result;
+  for (LawFit& f : none.fits) {
+    if (f.candidate.law == LawKind::viscoelastic_hertz) f.status = FitStatus::at_edge;
+  }
+  EXPECT_FALSE(best_hertz_fit(none).has_value());
 }
 
 TEST(FitReportReader, CarriesTheIntervalsOverAsTheFitItselfDoes) {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "cli/common/build_json.hpp"
+#include "fit/best_hertz_fit.hpp"
 
 namespace restitution::cli {
 
@@ -77,16 +78,6 @@ void fit_object(JsonWriter& json, const LawFit& f) {
   json.field("model_eps", f.model_eps).end_object();
 }
 
-// The viscoelastic Hertz fit with the lowest AIC: the one whose A a DEM code should take.
-const LawFit* best_hertz(const FitResult& r) {
-  const LawFit* best = nullptr;
-  for (const LawFit& f : r.fits) {
-    if (f.candidate.law != LawKind::viscoelastic_hertz || f.status != FitStatus::converged) continue;
-    if (best == nullptr || f.aic < best->aic) best = &f;
-  }
-  return best;
-}
-
 }  // namespace
 
 void write_fit_json(JsonWriter& json, const FitReportInput& in) {
@@ -114,11 +105,14 @@ void write_fit_json(JsonWriter& json, const FitReportInput& in) {
   json.end_array();
   if (in.k) {
     json.field("k", *in.k);
-    if (const LawFit* h = best_hertz(r); h != nullptr && h->dissipative_constant_s) {
+    // The Hertz fit whose A a DEM code should take.
+    const std::optional<std::size_t> hertz = best_hertz_fit(r);
+    if (hertz && r.fits[*hertz].dissipative_constant_s) {
+      const LawFit& h = r.fits[*hertz];
       json.key("dissipative_constant_s").begin_object();
-      json.field("end", end_name(h->candidate.end)).field("value", *h->dissipative_constant_s);
-      write_interval(json, "ci68", h->dissipative_constant_ci68);
-      write_interval(json, "ci95", h->dissipative_constant_ci95);
+      json.field("end", end_name(h.candidate.end)).field("value", *h.dissipative_constant_s);
+      write_interval(json, "ci68", h.dissipative_constant_ci68);
+      write_interval(json, "ci95", h.dissipative_constant_ci95);
       json.end_object();
     }
   }
