@@ -30,6 +30,13 @@ class JsonWriter {
     key(name);
     return value(v);
   }
+  // The key `name` and an array of `values` (numbers or strings), in order.
+  template <typename Range>
+  JsonWriter& array(std::string_view name, const Range& values) {
+    key(name).begin_array();
+    for (const auto& v : values) value(v);
+    return end_array();
+  }
   // The document written so far, serialised (compact, one line).
   [[nodiscard]] std::string str() const;
 
