@@ -124,39 +124,29 @@ int run_gas_deck(const GasDeckOptions& o, const GasOptions& gas, bool json) {
     deck = write_gas_deck(*paths, request);
     throw_if_interrupted();
   }
-  if (request.bath && !o.compare.empty()) {
-    const std::optional<gas::Thermostat> thermostat = thermostat_of(gas);
-    const gas_deck::DrivenComparison driven =
-        gas_deck::compare_driven_logs(o.compare, gas_deck::gas_setup(request), *thermostat,
-                                      request.bath->relaxation_time_s, print_log_note);
-    if (json) {
-      JsonWriter w;
-      w.begin_object();
-      if (deck) write_gas_deck_json(w, *paths, *deck);
-      write_driven_comparison_json(w, driven);
-      fmt::print("{}\n", finish_json_document(w));
-    } else {
-      if (deck) print_gas_deck_text(*paths, *deck, request);
-      print_driven_comparison_text(driven);
-    }
-    return 0;
-  }
+  // A driven deck's logs are compared with the driven theory, a freely cooling one's with Haff's and ours.
+  std::optional<gas_deck::DrivenComparison> driven;
   std::optional<gas_deck::GasComparison> comparison;
-  std::string plot_warning;
-  if (!o.compare.empty()) {
+  if (!o.compare.empty() && request.bath) {
+    driven = gas_deck::compare_driven_logs(o.compare, gas_deck::gas_setup(request), *thermostat_of(gas),
+                                           request.bath->relaxation_time_s, print_log_note);
+  } else if (!o.compare.empty()) {
     comparison = gas_deck::compare_logs(o.compare, gas_deck::gas_setup(request), print_log_note);
-    if (o.compare_output) plot_warning = write_comparison_files(*o.compare_output, *comparison);
+    const std::string warning =
+        o.compare_output ? write_comparison_files(*o.compare_output, *comparison) : "";
+    if (!warning.empty()) fmt::print(stderr, "restitution: warning: {}\n", warning);
   }
-  if (!plot_warning.empty()) fmt::print(stderr, "restitution: warning: {}\n", plot_warning);
   if (json) {
     JsonWriter w;
     w.begin_object();
     if (deck) write_gas_deck_json(w, *paths, *deck);
     if (comparison) write_comparison_json(w, *comparison);
+    if (driven) write_driven_comparison_json(w, *driven);
     fmt::print("{}\n", finish_json_document(w));
   } else {
     if (deck) print_gas_deck_text(*paths, *deck, request);
     if (comparison) print_comparison_text(*comparison);
+    if (driven) print_driven_comparison_text(*driven);
   }
   return 0;
 }

@@ -82,35 +82,33 @@ VelocitySubject velocity_subject(const SweepOptions& o, LawKind law) {
   return {c.hertz.beta, c.hertz.k, std::nullopt};
 }
 
+// --VARIABLE-range FROM:TO:N (when given) read into the old form's --VARIABLE-min, --VARIABLE-max and
+// --points, which must not be given beside it.
+void read_range(const std::string& text, const std::string& variable, const std::string& what,
+                std::optional<double>& min, std::optional<double>& max, long long& points) {
+  if (text.empty()) return;
+  if (min || max || points != 0) {
+    throw InvalidInput(
+        fmt::format("--{0}-range FROM:TO:N takes the place of --{0}-min, --{0}-max and --points: "
+                    "give it alone",
+                    variable));
+  }
+  const RangeText range = parse_range(text, fmt::format("--{}-range", variable), what, 1,
+                                      static_cast<long long>(kMaxSweepPoints));
+  min = range.from;
+  max = range.to;
+  points = range.count;
+}
+
 }  // namespace
 
 SweepOptions with_ranges(SweepOptions o) {
   if (!o.zeta_range.empty() && !o.velocity_range.empty()) {
     throw InvalidInput("give --zeta-range or --velocity-range, not both");
   }
-  if (!o.zeta_range.empty()) {
-    if (o.zeta_min || o.zeta_max || o.points != 0) {
-      throw InvalidInput(
-          "--zeta-range FROM:TO:N takes the place of --zeta-min, --zeta-max and --points: give it alone");
-    }
-    const RangeText range = parse_range(o.zeta_range, "--zeta-range", "zeta, N >= 1 points", 1,
-                                        static_cast<long long>(kMaxSweepPoints));
-    o.zeta_min = range.from;
-    o.zeta_max = range.to;
-    o.points = range.count;
-  }
-  if (!o.velocity_range.empty()) {
-    if (o.velocity_min || o.velocity_max || o.points != 0) {
-      throw InvalidInput(
-          "--velocity-range FROM:TO:N takes the place of --velocity-min, --velocity-max and --points: "
-          "give it alone");
-    }
-    const RangeText range = parse_range(o.velocity_range, "--velocity-range", "impact speeds in m/s, N >= 1",
-                                        1, static_cast<long long>(kMaxSweepPoints));
-    o.velocity_min = range.from;
-    o.velocity_max = range.to;
-    o.points = range.count;
-  }
+  read_range(o.zeta_range, "zeta", "zeta, N >= 1 points", o.zeta_min, o.zeta_max, o.points);
+  read_range(o.velocity_range, "velocity", "impact speeds in m/s, N >= 1", o.velocity_min, o.velocity_max,
+             o.points);
   return o;
 }
 
