@@ -9,6 +9,8 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <string>
+#include <vector>
 
 namespace restitution::cli {
 namespace {
@@ -21,6 +23,22 @@ TEST(JsonWriter, NestedObjectsAndArraysParse) {
   EXPECT_EQ(j["a"].get<double>(), 1.5);
   EXPECT_EQ(j["list"][2], "x\"y");
   EXPECT_EQ(j["inner"]["flag"], true);
+}
+
+// array(name, values): the same document as key, begin_array, a value each and end_array, for numbers and
+// text.
+TEST(JsonWriter, ArrayIsTheLoopWrittenOnce) {
+  const std::vector<double> numbers{1.0, 0.1, -2e300};
+  const std::vector<std::string> words{"a", "b\n"};
+  JsonWriter once, loop;
+  once.begin_object().array("n", numbers).array("w", words).array("none", std::vector<double>{}).end_object();
+  loop.begin_object().key("n").begin_array();
+  for (const double v : numbers) loop.value(v);
+  loop.end_array().key("w").begin_array();
+  for (const std::string& v : words) loop.value(v);
+  loop.end_array().key("none").begin_array().end_array().end_object();
+  EXPECT_EQ(once.str(), loop.str());
+  EXPECT_EQ(nlohmann::json::parse(once.str())["n"][1].get<double>(), 0.1);
 }
 
 TEST(JsonWriter, KeysStayInTheOrderWritten) {
