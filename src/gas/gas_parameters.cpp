@@ -8,7 +8,8 @@
 #include "restitution/solve_types.hpp"
 
 // A row leaves out what it does not use. GCC 12 crashes on defaults of class type in a class template
-// (ParameterField's words and range), so those have none and -Wextra would name each row that leaves them out.
+// (ParameterField's words and range), so those have none and -Wextra would name each row that leaves them
+// out.
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 
 namespace restitution::gas {
