@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/gas/gas_options.hpp"
+#include "parameter_table_checks.hpp"
 #include "restitution/errors.hpp"
 #include "restitution_gas/gas_parameters.hpp"
 #include "scene/scene.hpp"
@@ -16,44 +17,20 @@
 namespace restitution::gas {
 namespace {
 
-int members_set(const GasField& f) {
-  return int{f.optional_number != nullptr} + int{f.number != nullptr} + int{f.whole_number != nullptr} +
-         int{f.word != nullptr};
+using table_checks::expected;
+using table_checks::valid_value;
+
+// a2's member: its word, or "number".
+std::string sonine_words(const GasInputs& in) {
+  return in.a2_evolving ? "evolving" : in.a2_of_haff_eps ? "haff" : "number";
+}
+std::string read_back(const GasField& f, const GasInputs& in) {
+  return table_checks::read_back(f, in, sonine_words);
 }
 
 TEST(GasParameters, EveryRowIsComplete) {
   for (const GasField& f : gas_fields()) {
-    SCOPED_TRACE(f.name);
-    EXPECT_FALSE(std::string(f.name).empty());
-    EXPECT_EQ(std::string(f.name).find_first_not_of("abcdefghijklmnopqrstuvwxyz_0123456789"),
-              std::string::npos);
-    EXPECT_FALSE(f.help.empty());
-    EXPECT_NE(f.unit, nullptr);
-    switch (f.kind) {
-      case FieldKind::optional_number:
-        EXPECT_TRUE(f.optional_number != nullptr && members_set(f) == 1);
-        break;
-      case FieldKind::number:
-        EXPECT_TRUE(f.number != nullptr && members_set(f) == 1);
-        break;
-      case FieldKind::whole_number:
-        EXPECT_TRUE(f.whole_number != nullptr && members_set(f) == 1);
-        EXPECT_TRUE(f.range.has_value());
-        break;
-      case FieldKind::word:
-      case FieldKind::optional_word:
-        EXPECT_TRUE(f.word != nullptr && members_set(f) == 1);
-        EXPECT_FALSE(f.words.empty());
-        EXPECT_NE(f.check_word, nullptr);
-        for (const std::string& w : f.words) EXPECT_NO_THROW(f.check_word(w)) << w;
-        EXPECT_THROW(f.check_word("no such word"), InvalidInput);
-        break;
-      case FieldKind::number_or_word:
-        EXPECT_EQ(members_set(f), 0);  // a2, a2_of_haff_eps, a2_evolving
-        EXPECT_FALSE(f.words.empty());
-        break;
-    }
-    if (f.range) EXPECT_NE(f.range->text, nullptr);
+    table_checks::expect_complete(f);
     EXPECT_EQ(&gas_field(f.name), &f);
   }
   EXPECT_THROW((void)gas_field("no_such_parameter"), std::out_of_range);
@@ -61,28 +38,6 @@ TEST(GasParameters, EveryRowIsComplete) {
     EXPECT_NE(gas_field(g.first).optional_number, nullptr) << g.first;
     EXPECT_NE(gas_field(g.second).optional_number, nullptr) << g.second;
   }
-}
-
-// A value inside the row's range (or one of its words), written as TOML and as an option's argument.
-std::string valid_value(const GasField& f) {
-  if (!f.words.empty()) return f.words.back();
-  if (f.kind == FieldKind::whole_number) return "7";
-  return f.range && f.range->high ? "0.25" : "3.5";
-}
-
-// What the value became in the inputs, as text.
-std::string read_back(const GasField& f, const GasInputs& in) {
-  if (f.optional_number) return in.*f.optional_number ? std::to_string(*(in.*f.optional_number)) : "none";
-  if (f.number) return std::to_string(in.*f.number);
-  if (f.whole_number) return std::to_string(in.*f.whole_number);
-  if (f.word) return in.*f.word;
-  return in.a2_evolving ? "evolving" : in.a2_of_haff_eps ? "haff" : "number";
-}
-
-std::string expected(const GasField& f) {
-  const std::string v = valid_value(f);
-  if (f.kind == FieldKind::whole_number || !f.words.empty()) return v;
-  return std::to_string(std::stod(v));
 }
 
 const std::string kScene = R"(output = "out/gas"
@@ -111,8 +66,7 @@ std::string scene_with(const GasField& f, const std::string& value) {
                              (f.name == std::string("duration") && key == "haff_times");
     if (key != f.name && !pair_of_row) text += key + " = " + v + "\n";
   }
-  const bool word = !f.words.empty() && value == f.words.back();
-  return text + f.name + " = " + (word ? "\"" + value + "\"" : value) + "\n";
+  return text + f.name + " = " + table_checks::toml_value(f, value) + "\n";
 }
 
 TEST(GasParameters, ASceneReadsEveryKeyIntoItsMemberWithItsRange) {
@@ -153,8 +107,7 @@ TEST(GasParameters, TheCommandLineReadsEveryOptionIntoItsMember) {
     CLI::App app;
     cli::GasOptions o;
     cli::add_gas_options(app, o);
-    app.parse(
-        std::vector<std::string>{valid_value(f), option_name(f.name)});  // reversed: CLI11 pops the back
+    table_checks::parse_option(app, f);
     if (f.kind == FieldKind::number_or_word) {
       EXPECT_EQ(o.a2, valid_value(f));
     } else {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -54,18 +55,18 @@ TEST(ObliqueScene, ReadsTheSection) {
   const ObliqueTask& t = *tasks_of<ObliqueTask>(s, "oblique")[0];
   EXPECT_EQ(t.material, "steel");
   EXPECT_EQ(t.models, (std::vector<std::string>{"mindlin", "linear_nohistory"}));
-  EXPECT_EQ(t.friction, 0.3);
-  EXPECT_EQ(t.angles_deg, (std::vector<double>{10.0, 40.0}));
-  EXPECT_EQ(t.spins_rad_s, (std::vector<double>{-100.0, 0.0, 100.0}));
-  EXPECT_TRUE(t.wall);
-  EXPECT_EQ(t.speed_m_s, 2.0);
-  EXPECT_EQ(t.tangential_damping, 0.5);
+  EXPECT_EQ(t.inputs.friction, std::optional<double>(0.3));
+  EXPECT_EQ(t.inputs.angles_deg, (std::vector<double>{10.0, 40.0}));
+  EXPECT_EQ(t.inputs.spins_rad_s, (std::vector<double>{-100.0, 0.0, 100.0}));
+  EXPECT_TRUE(t.inputs.wall);
+  EXPECT_EQ(t.inputs.speed_m_s, 2.0);
+  EXPECT_EQ(t.inputs.tangential_damping, 0.5);
   EXPECT_FALSE(t.plot);
-  EXPECT_EQ(t.tolerance, 1e-10);
+  EXPECT_EQ(t.inputs.tolerance, 1e-10);
   const Scene defaults = parse_scene(kHead + kOblique, "oblique.toml");
   EXPECT_EQ(tasks_of<ObliqueTask>(defaults, "oblique")[0]->models,
             std::vector<std::string>{"mindlin"});  // as dem's
-  EXPECT_EQ(tasks_of<ObliqueTask>(defaults, "oblique")[0]->spins_rad_s, std::vector<double>{0.0});
+  EXPECT_EQ(tasks_of<ObliqueTask>(defaults, "oblique")[0]->inputs.spins_rad_s, std::vector<double>{0.0});
 }
 
 TEST(ObliqueScene, RefusesBadKeysByName) {

@@ -606,10 +606,10 @@ def gas(*, radius=None, density=None, mass=None, eps=None, velocity=None, dissip
 
 def _gas_arguments(given):
     """restitution.gas's arguments checked by type, read through the gas study's table (_core.gas_parameters:
-    name, kind and unit of each; the signature, the docstring and the .pyi list the same names, a test
-    compares them)."""
+    name, kind, unit and whether a scene takes it from the material; the signature, the docstring and the .pyi
+    list the same names, a test compares them)."""
     arguments = {}
-    for name, kind, _ in _core.gas_parameters:
+    for name, kind, *_ in _core.gas_parameters:
         value = given[name]
         if kind == "optional number" or (kind == "number" and name != "tolerance"):
             arguments[name] = _optional_real(name, value)
@@ -623,7 +623,7 @@ def _gas_arguments(given):
             arguments[name] = value if value is None or isinstance(value, str) else _optional_real(name, value)
         elif value is not None or kind == "word":
             arguments[name] = _end(value) if name == "end" else _text(name, value)
-    required = [name for name, kind, _ in _core.gas_parameters if kind == "number" and name != "tolerance"]
+    required = [name for name, kind, *_ in _core.gas_parameters if kind == "number" and name != "tolerance"]
     if any(arguments[name] is None for name in required):
         raise TypeError(f"{' and '.join(required)} must be real numbers")
     return arguments

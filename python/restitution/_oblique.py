@@ -122,6 +122,8 @@ def oblique(*, material, friction, angle, spin=0.0, impact_velocity=1.0, tangent
     wall : bool
         A sphere on a flat wall instead of two spheres: rigid, as `restitution dem --wall`, unless
         wall_young_modulus [Pa] and wall_poisson_ratio give its material (both or neither).
+    wall_young_modulus, wall_poisson_ratio : float, optional
+        The wall's Young's modulus [Pa] and Poisson ratio (both or neither; default: a rigid wall).
     fixed_normal : bool
         Two spheres: keep the impact's normal instead of letting the line of centres turn as LAMMPS's pair does.
     end : {"delayed-recovery", "naive"}
@@ -175,15 +177,16 @@ def oblique(*, material, friction, angle, spin=0.0, impact_velocity=1.0, tangent
     for name in ("impact_velocity", "tangential_damping", "tolerance"):
         if numbers[name] is None:
             raise TypeError(f"{name} must be a real number")
-    columns = _core.oblique_impacts(
-        material, angles.ravel().tolist(), spins.ravel().tolist(), friction=numbers["friction"],
-        tangential=_text("tangential", tangential),
-        tangential_stiffness=_optional_real("tangential_stiffness", tangential_stiffness),
-        tangential_damping=numbers["tangential_damping"], speed=numbers["impact_velocity"], wall=wall,
-        fixed_normal=fixed_normal, end=_end(end), torque_arm=_text("torque_arm", torque_arm),
-        tolerance=numbers["tolerance"], eps=_optional_real("eps", eps), velocity=_optional_real("velocity", velocity),
-        wall_young_modulus=_optional_real("wall_young_modulus", wall_young_modulus),
-        wall_poisson_ratio=_optional_real("wall_poisson_ratio", wall_poisson_ratio), law=_text("law", law))
+    # By the names of the study's table (_core.oblique_parameters), as the command's options and a scene's keys.
+    columns = _core.oblique_impacts(material, angles.ravel().tolist(), spins.ravel().tolist(), {
+        "friction": numbers["friction"], "tangential": _text("tangential", tangential),
+        "tangential_stiffness": _optional_real("tangential_stiffness", tangential_stiffness),
+        "tangential_damping": numbers["tangential_damping"], "impact_velocity": numbers["impact_velocity"],
+        "wall": wall, "fixed_normal": fixed_normal, "end": _end(end), "torque_arm": _text("torque_arm", torque_arm),
+        "tolerance": numbers["tolerance"], "eps": _optional_real("eps", eps),
+        "velocity": _optional_real("velocity", velocity),
+        "wall_young_modulus": _optional_real("wall_young_modulus", wall_young_modulus),
+        "wall_poisson_ratio": _optional_real("wall_poisson_ratio", wall_poisson_ratio), "law": _text("law", law)})
     for angle_deg, spin_rad_s, why in zip(angles.ravel(), spins.ravel(), columns["failure"]):
         if why:  # never silently: this impact was not solved, its outputs are NaN
             _warnings.warn(f"oblique impact at {angle_deg:g} deg, spin {spin_rad_s:g} rad/s not solved: {why}",

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "parameter_arguments.hpp"
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/solve_types.hpp"
@@ -90,41 +91,13 @@ void add_driving(py::dict& out, const gas::Thermostat& t, const gas::SteadyState
   out["steady_power_w"] = s.power_w;
 }
 
-// One argument of the table (restitution_gas/gas_parameters.hpp) into the inputs; None leaves the default.
-void read_argument(const gas::GasField& f, const py::handle& value, gas::GasInputs& in) {
-  if (value.is_none()) return;
-  switch (f.kind) {
-    case gas::FieldKind::optional_number:
-      in.*f.optional_number = value.cast<double>();
-      break;
-    case gas::FieldKind::number:
-      in.*f.number = value.cast<double>();
-      break;
-    case gas::FieldKind::whole_number:
-      in.*f.whole_number = value.cast<int>();
-      break;
-    case gas::FieldKind::word:
-    case gas::FieldKind::optional_word:
-      in.*f.word = value.cast<std::string>();
-      break;
-    case gas::FieldKind::number_or_word:
-      read_a2(f, py::reinterpret_borrow<py::object>(value), in);
-      break;
-  }
-}
-
-// The arguments restitution.gas checked (their types), by the table's names.
+// The arguments restitution.gas checked (their types), by the names of the table
+// (restitution_gas/gas_parameters.hpp); a2 is a number or a word.
 gas::GasInputs inputs_of(const py::dict& arguments) {
-  gas::GasInputs in;
-  for (const auto& [key, value] : arguments) {
-    const auto name = key.cast<std::string>();
-    try {
-      read_argument(gas::gas_field(name), value, in);
-    } catch (const std::out_of_range&) {
-      throw py::type_error("gas() got an unexpected keyword argument '" + name + "'");
-    }
-  }
-  return in;
+  return parameter_arguments(arguments, gas::gas_fields(), "gas",
+                             [](const gas::GasField& f, const py::handle& value, gas::GasInputs& in) {
+                               read_a2(f, py::reinterpret_borrow<py::object>(value), in);
+                             });
 }
 
 py::dict cooling(const py::dict& arguments) {
@@ -150,39 +123,13 @@ py::dict cooling(const py::dict& arguments) {
   return out;
 }
 
-const char* kind_name(gas::FieldKind kind) {
-  switch (kind) {
-    case gas::FieldKind::optional_number:
-      return "optional number";
-    case gas::FieldKind::number:
-      return "number";
-    case gas::FieldKind::whole_number:
-      return "whole number";
-    case gas::FieldKind::word:
-      return "word";
-    case gas::FieldKind::optional_word:
-      return "optional word";
-    case gas::FieldKind::number_or_word:
-      return "number or word";
-  }
-  return "";
-}
-
-// The table as restitution.gas reads it: (name, kind, unit) per argument, in the table's order.
-py::list gas_parameters() {
-  py::list rows;
-  for (const gas::GasField& f : gas::gas_fields())
-    rows.append(py::make_tuple(f.name, kind_name(f.kind), f.unit));
-  return rows;
-}
-
 }  // namespace
 
 void bind_gas(py::module_& m) {
   m.def("gas", &cooling, py::arg("arguments"),
         "The cooling curve of the freely cooling gas, or the driven gas's relaxation and steady state "
         "(restitution.gas documents the arguments): the arguments by the names of gas_parameters.");
-  m.attr("gas_parameters") = gas_parameters();
+  m.attr("gas_parameters") = parameter_rows(gas::gas_fields());
 }
 
 }  // namespace restitution::python

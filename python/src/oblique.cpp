@@ -5,14 +5,15 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "bindings.hpp"
+#include "parameter_arguments.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
+#include "restitution_oblique/oblique_parameters.hpp"
 #include "restitution_oblique/oblique_study.hpp"
 #include "without_gil.hpp"
 
@@ -83,38 +84,19 @@ py::dict columns_of(const ObliqueSetup& setup, const std::vector<ObliqueImpact>&
   return out;
 }
 
-// angles and spins are paired, one impact each (the Python side broadcast them).
+// angles and spins are paired, one impact each (the Python side broadcast them); the other arguments by the
+// names of the study's table (restitution_oblique/oblique_parameters.hpp), their types checked.
 py::dict oblique_impacts(const Material& material, const std::vector<double>& angles,
-                         const std::vector<double>& spins, std::optional<double> friction,
-                         const std::string& tangential, std::optional<double> tangential_stiffness,
-                         double tangential_damping, double speed, bool wall, bool fixed_normal,
-                         const std::string& end, const std::string& torque_arm, double tolerance,
-                         std::optional<double> eps, std::optional<double> velocity,
-                         std::optional<double> wall_young_modulus, std::optional<double> wall_poisson_ratio,
-                         const std::string& law) {
+                         const std::vector<double>& spins, const py::dict& arguments) {
   if (angles.size() != spins.size()) throw InvalidInput("angle and spin must broadcast to one shape");
-  ObliqueInputs in;
+  ObliqueInputs in = parameter_arguments(arguments, oblique_fields(), "oblique",
+                                         [](const ObliqueField&, const py::handle&, ObliqueInputs&) {});
   in.material = material;
   // The material's dissipation when it has one (A, or the viscosities' A), or eps at velocity: one of the
   // two, never a silent elastic default.
   if (material.dissipative_constant_s || material.viscosities) {
     in.dissipative_constant_s = material_constants(material).dissipative_constant_s;
   }
-  in.eps = eps;
-  in.eps_velocity_m_s = velocity;
-  in.wall_young_modulus_pa = wall_young_modulus;
-  in.wall_poisson_ratio = wall_poisson_ratio;
-  in.law = law;
-  in.friction = friction;
-  in.tangential = tangential;
-  in.tangential_stiffness = tangential_stiffness;
-  in.tangential_damping = tangential_damping;
-  in.speed_m_s = speed;
-  in.wall = wall;
-  in.fixed_normal = fixed_normal;
-  in.end = end;
-  in.torque_arm = torque_arm;
-  in.tolerance = tolerance;
   in.angles_deg = angles;
   in.spins_rad_s = spins.empty() ? std::vector<double>{0.0} : spins;
   const ObliqueSetup setup = oblique_setup(in, ArgumentStyle::keyword);
@@ -133,16 +115,11 @@ py::dict oblique_impacts(const Material& material, const std::vector<double>& an
 void bind_oblique(py::module_& m) {
   // The tangential models oblique_impacts runs, in the table's order (the docstring and the .pyi read them).
   m.attr("oblique_tangential_names") = py::tuple(py::cast(oblique_tangential_names()));
-  m.def(
-      "oblique_impacts", &oblique_impacts, py::arg("material"), py::arg("angles"), py::arg("spins"),
-      py::kw_only(), py::arg("friction") = py::none(), py::arg("tangential") = ObliqueInputs{}.tangential,
-      py::arg("tangential_stiffness") = py::none(), py::arg("tangential_damping") = 0.0,
-      py::arg("speed") = 1.0, py::arg("wall") = false, py::arg("fixed_normal") = false,
-      py::arg("end") = "delayed-recovery", py::arg("torque_arm") = "lammps",
-      py::arg("tolerance") = ObliqueInputs{}.tolerance, py::arg("eps") = py::none(),
-      py::arg("velocity") = py::none(), py::arg("wall_young_modulus") = py::none(),
-      py::arg("wall_poisson_ratio") = py::none(), py::arg("law") = ObliqueInputs{}.law,
-      "One oblique impact per (angle, spin) pair as columns (restitution.oblique documents the arguments).");
+  m.def("oblique_impacts", &oblique_impacts, py::arg("material"), py::arg("angles"), py::arg("spins"),
+        py::arg("arguments"),
+        "One oblique impact per (angle, spin) pair as columns (restitution.oblique documents the arguments): "
+        "the arguments by the names of oblique_parameters.");
+  m.attr("oblique_parameters") = parameter_rows(oblique_fields());
 }
 
 }  // namespace restitution::python

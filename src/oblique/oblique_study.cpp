@@ -12,6 +12,7 @@
 #include "oblique/oblique_accuracy.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/parameter_table.hpp"
 #include "restitution/units.hpp"
 #include "units/contact_compliance.hpp"
 
@@ -33,10 +34,7 @@ ObliqueResult failed_result() {
 
 // The argument as the caller spells it.
 std::string spelled(const char* keyword, ArgumentStyle style) {
-  if (style == ArgumentStyle::keyword) return keyword;
-  std::string option = std::string("--") + keyword;
-  std::replace(option.begin(), option.end(), '_', '-');
-  return option;
+  return style == ArgumentStyle::keyword ? keyword : option_name(keyword);
 }
 
 // The lists are named as the command and Python take them, one value or several: --angle, angle (a scene's

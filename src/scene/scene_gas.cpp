@@ -11,6 +11,7 @@
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 #include "restitution_gas/gas_parameters.hpp"
+#include "scene/parameter_keys.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace restitution::scene {
@@ -28,46 +29,6 @@ void read_sonine_a2(detail::TomlReader& r, const gas::GasField& f, gas::GasInput
     r.fail(f.name, "a number, \"haff\" (van Noije & Ernst's a2 of the Haff eps) or \"evolving\" (a2(t))");
   }
   gas::set_sonine_word(in, word->get());
-}
-
-void read_word(detail::TomlReader& r, const gas::GasField& f, gas::GasInputs& in) {
-  const auto word = r.text(f.name);
-  if (!word) return;
-  try {
-    f.check_word(*word);
-  } catch (const InvalidInput& e) {
-    r.fail(f.name, e.what());
-  }
-  in.*f.word = *word;
-}
-
-void read_number(detail::TomlReader& r, const gas::GasField& f, gas::GasInputs& in) {
-  std::optional<double> value = r.number(f.name);
-  if (!value && f.required) r.fail(f.name, fmt::format("missing: {}", f.required));
-  if (f.kind == gas::FieldKind::number && !value) value = in.*f.number;  // the default is checked too
-  if (value && f.range) {
-    const bool whole = f.kind == gas::FieldKind::whole_number;
-    r.check_each(
-        f.name, {*value}, [&](double v) { return f.range->contains(v) && (!whole || v == std::floor(v)); },
-        f.range->text);
-  }
-  if (!value) return;
-  if (f.kind == gas::FieldKind::optional_number) in.*f.optional_number = value;
-  if (f.kind == gas::FieldKind::number) in.*f.number = *value;
-  if (f.kind == gas::FieldKind::whole_number) in.*f.whole_number = static_cast<int>(*value);
-}
-
-bool given(const gas::GasInputs& in, const char* name) {
-  return (in.*gas::gas_field(name).optional_number).has_value();
-}
-
-void check_groups(const detail::TomlReader& r, const gas::GasInputs& in) {
-  for (const gas::FieldGroup& g : gas::gas_field_groups()) {
-    const bool first = given(in, g.first);
-    const bool second = given(in, g.second);
-    if (g.rule == gas::FieldGroup::together && first != second) r.fail(first ? g.first : g.second, g.message);
-    if (g.rule == gas::FieldGroup::exactly_one && first == second) r.fail(g.first, g.message);
-  }
 }
 
 // The section's inputs with the material's spheres (and its A when the section gives no eps).
@@ -91,21 +52,13 @@ gas::GasInputs inputs_of(const Scene& scene, const GasTask& task) {
 }  // namespace
 
 void detail::read_gas_keys(TomlReader& r, gas::GasInputs& in) {
+  // The spheres' fields are no keys (from [materials.X] when the section runs); a2 is a number or a word.
   for (const gas::GasField& f : gas::gas_fields()) {
-    if (f.from_material) continue;  // the spheres' fields: from [materials.X] when the section runs
-    switch (f.kind) {
-      case gas::FieldKind::word:
-      case gas::FieldKind::optional_word:
-        read_word(r, f, in);
-        break;
-      case gas::FieldKind::number_or_word:
-        if (r.has(f.name)) read_sonine_a2(r, f, in);
-        break;
-      default:
-        read_number(r, f, in);  // also refuses a required key's absence and checks a default's range
+    if (!read_parameter_key(r, f, in) && f.kind == gas::FieldKind::number_or_word && r.has(f.name)) {
+      read_sonine_a2(r, f, in);
     }
   }
-  check_groups(r, in);
+  check_parameter_groups(r, gas::gas_fields(), gas::gas_field_groups(), in);
 }
 
 GasOutcome run_gas_section(const Scene& scene, const GasTask& task) {

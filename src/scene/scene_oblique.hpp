@@ -10,6 +10,7 @@
 
 #include "restitution/material.hpp"
 #include "restitution/solve_types.hpp"
+#include "restitution_oblique/oblique_study.hpp"
 
 namespace restitution::scene {
 
@@ -18,24 +19,14 @@ struct ObliqueTask {
   std::string title;
   std::string material;             // a [materials.X]: radius (radius2), density or mass, and A if given
   std::vector<std::string> models;  // tangential models, LAMMPS's keywords; default mindlin (as `dem`)
-  double friction = 0.0;            // μ
-  // One section may sweep several models, whose stiffnesses differ in unit: k_t of linear_history (N/m) and
-  // of the models whose k_t is per contact radius, the mindlin family and liggghts_history (N/m², default 8
-  // G*).
-  std::optional<double> tangential_stiffness;
+  // The study's inputs as the keys give them (the rows of restitution_oblique/oblique_parameters.hpp): the
+  // material, its A and the model are set per model when the section runs (scene_oblique_run.cpp).
+  oblique::ObliqueInputs inputs;
+  // One section may sweep several models, whose stiffnesses differ in unit: k_t of linear_history (N/m,
+  // inputs.tangential_stiffness) and of the models whose k_t is per contact radius, the mindlin family and
+  // liggghts_history (N/m², default 8 G*).
   std::optional<double> mindlin_stiffness;
-  double tangential_damping = 0.0;
-  std::vector<double> angles_deg;
-  std::vector<double> spins_rad_s = {0.0};
-  double speed_m_s = 1.0;
-  bool wall = false;  // rigid, unless wall_young_modulus and wall_poisson_ratio give its material
-  std::optional<double> wall_young_modulus_pa;
-  std::optional<double> wall_poisson_ratio;
-  bool fixed_normal = false;
-  std::string end = "delayed-recovery";
-  std::string torque_arm = "lammps";
-  double tolerance = kDefaultTolerance;  // CVODE's relative tolerance of the oblique solve
-  bool plot = true;                      // Maw's diagram (needs friction > 0)
+  bool plot = true;  // Maw's diagram (needs friction > 0)
   int line = 0;
 };
 

@@ -19,28 +19,16 @@ using namespace restitution::oblique;
 // The section as the study's inputs for one model, so that the scene and the command take one path.
 ObliqueInputs inputs_of(const Scene& scene, const ObliqueTask& task, const std::string& model) {
   const Material& m = scene.materials.at(task.material);
-  ObliqueInputs in;
+  ObliqueInputs in = task.inputs;
   in.material = m;
   // The material's dissipation (A, or the viscosities' A; the section's reader requires one).
   in.dissipative_constant_s = material_constants(m).dissipative_constant_s;
-  in.wall = task.wall;
-  in.wall_young_modulus_pa = task.wall_young_modulus_pa;
-  in.wall_poisson_ratio = task.wall_poisson_ratio;
-  in.fixed_normal = task.fixed_normal;
   in.tangential = model;
   // A k_t per contact radius, in N/m² (the mindlin family, liggghts_history), is mindlin_stiffness; one in
   // N/m tangential_stiffness.
   const TangentialModel* row = find_tangential_model(model);
   const bool per_contact_radius = row != nullptr && row->rule.growth == StiffnessGrowth::contact_radius;
-  in.tangential_stiffness = per_contact_radius ? task.mindlin_stiffness : task.tangential_stiffness;
-  in.tangential_damping = task.tangential_damping;
-  in.friction = task.friction;
-  in.end = task.end;
-  in.torque_arm = task.torque_arm;
-  in.tolerance = task.tolerance;
-  in.speed_m_s = task.speed_m_s;
-  in.angles_deg = task.angles_deg;
-  in.spins_rad_s = task.spins_rad_s;
+  if (per_contact_radius) in.tangential_stiffness = task.mindlin_stiffness;
   return in;
 }
 
@@ -68,7 +56,7 @@ ObliqueModelRun model_run(const Scene& scene, const ObliqueTask& task, const std
 
 ObliqueOutcome run_oblique_section(const Scene& scene, const ObliqueTask& task) {
   ObliqueOutcome out;
-  out.plotted = task.plot && task.friction > 0.0;
+  out.plotted = task.plot && *task.inputs.friction > 0.0;
   try {
     for (const std::string& model : task.models)
       out.runs.push_back(model_run(scene, task, model, out.plotted));

@@ -8,29 +8,12 @@
 #include <exception>
 #include <string>
 
+#include "cli/common/parameter_options.hpp"
 #include "restitution/errors.hpp"
 #include "restitution_gas/gas_parameters.hpp"
 
 namespace restitution::cli {
 namespace {
-
-CLI::Option* add_field_option(CLI::App& command, const gas::GasField& f, GasOptions& o) {
-  const std::string option = gas::option_name(f.name);
-  switch (f.kind) {
-    case gas::FieldKind::optional_number:
-      return command.add_option(option, o.inputs.*f.optional_number, f.help);
-    case gas::FieldKind::number:
-      return command.add_option(option, o.inputs.*f.number, f.help);
-    case gas::FieldKind::whole_number:
-      return command.add_option(option, o.inputs.*f.whole_number, f.help);
-    case gas::FieldKind::word:
-    case gas::FieldKind::optional_word:
-      return command.add_option(option, o.inputs.*f.word, f.help)->check(CLI::IsMember(f.words));
-    case gas::FieldKind::number_or_word:
-      return command.add_option(option, o.a2, f.help);  // parsed by gas_inputs
-  }
-  return nullptr;
-}
 
 // The inputs with --a2's text read: a number, haff or evolving.
 gas::GasInputs gas_inputs(const GasOptions& o) {
@@ -61,16 +44,17 @@ gas::GasInputs gas_inputs(const GasOptions& o) {
 }  // namespace
 
 void add_gas_options(CLI::App& command, GasOptions& o) {
-  for (const gas::GasField& f : gas::gas_fields()) {
-    CLI::Option* option = add_field_option(command, f, o);
-    if (f.show_default) option->capture_default_str();
+  add_parameter_options(command, gas::gas_fields(), o.inputs, [&](const gas::GasField& f, CLI::Option*) {
+    if (f.kind == gas::FieldKind::number_or_word) {
+      command.add_option(gas::option_name(f.name), o.a2, f.help);  // parsed by gas_inputs
+    }
     // The second sphere's options, where the material options list them: refused by the monodisperse gas.
     if (f.optional_number == &gas::GasInputs::radius_m) {
       command.add_option("--radius2", o.radius2, "material: radius of the second sphere in m");
     } else if (f.optional_number == &gas::GasInputs::mass_kg) {
       command.add_option("--mass2", o.mass2, "material: mass of the second sphere in kg");
     }
-  }
+  });
 }
 
 MaterialOptions material_options(const GasOptions& o) {

@@ -22,14 +22,15 @@
 #include "cli/common/options.hpp"
 #include "cli/common/output_files.hpp"
 #include "cli/common/output_guards.hpp"
+#include "cli/common/parameter_options.hpp"
 #include "cli/common/parse_errors.hpp"
-#include "cli/dem/dem_wall.hpp"
 #include "cli/oblique/oblique_sweep.hpp"
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 #include "restitution/solve_types.hpp"
 #include "restitution/units.hpp"
+#include "restitution_oblique/oblique_parameters.hpp"
 #include "restitution_oblique/oblique_study.hpp"
 #include "scene/figure_formats.hpp"
 #include "sweep/temporary_file.hpp"
@@ -39,25 +40,12 @@ namespace {
 
 using namespace restitution::oblique;
 
+// The study's inputs (one option per row of its table, restitution_oblique/oblique_parameters.hpp) and what
+// only the command line has: the shared material options, --angle-range and the outputs.
 struct ObliqueCommandOptions {
+  ObliqueInputs inputs;
   MaterialOptions material;
-  std::optional<double> dissipative_constant;
-  std::optional<double> eps;       // with velocity: A calibrated on this contact
-  std::optional<double> velocity;  // m/s, the speed eps was measured at
-  std::string law = ObliqueInputs{}.law;
-  WallOptions wall;
-  bool fixed_normal = false;
-  std::string tangential = ObliqueInputs{}.tangential;
-  std::optional<double> tangential_stiffness;
-  double tangential_damping = 0.0;
-  std::optional<double> friction;
-  std::vector<double> angles_deg;
   std::string angle_range;  // FROM:TO:N, instead of --angle
-  double speed = 1.0;
-  std::vector<double> spins = {0.0};
-  std::string end = "delayed-recovery";
-  std::string torque_arm = "lammps";
-  double tolerance = kDefaultTolerance;
   bool json = false;
   std::string out;
   std::string plot;    // Maw's diagram
@@ -68,57 +56,41 @@ using Setup = ObliqueSetup;
 
 // The options as the study's inputs; its rules (src/oblique/oblique_study.cpp) check them.
 Setup setup_of(const ObliqueCommandOptions& o) {
-  if (o.wall.wall && (o.material.radius2 || o.material.mass2)) {
+  if (o.inputs.wall && (o.material.radius2 || o.material.mass2)) {
     throw InvalidInput("--wall takes one sphere: drop --radius2 and --mass2");
   }
-  if (!o.angle_range.empty() && !o.angles_deg.empty()) {
+  if (!o.angle_range.empty() && !o.inputs.angles_deg.empty()) {
     throw InvalidInput("give --angle or --angle-range, not both");
   }
-  ObliqueInputs in;
+  ObliqueInputs in = o.inputs;
   in.material = material_from(o.material);
-  in.dissipative_constant_s = o.dissipative_constant;
-  in.eps = o.eps;
-  in.eps_velocity_m_s = o.velocity;
-  in.law = o.law;
-  in.wall = o.wall.wall;
-  in.wall_young_modulus_pa = o.wall.young_modulus;
-  in.wall_poisson_ratio = o.wall.poisson_ratio;
-  in.fixed_normal = o.fixed_normal;
-  in.tangential = o.tangential;
-  in.tangential_stiffness = o.tangential_stiffness;
-  in.tangential_damping = o.tangential_damping;
-  in.friction = o.friction;
-  in.end = o.end;
-  in.torque_arm = o.torque_arm;
-  in.tolerance = o.tolerance;
-  in.speed_m_s = o.speed;
-  in.angles_deg = o.angle_range.empty() ? o.angles_deg : angle_range(o.angle_range);
-  in.spins_rad_s = o.spins;
+  if (!o.angle_range.empty()) in.angles_deg = angle_range(o.angle_range);
   return oblique_setup(in, ArgumentStyle::option);
 }
 
 void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueImpact>& impacts) {
   JsonWriter json;
   json.begin_object().field("tangential_model", tangential_name(s.tangential.kind));
-  json.field("contact", o.wall.wall ? "sphere-wall" : "sphere-sphere").field("end", o.end);
-  if (o.wall.wall) {
+  json.field("contact", o.inputs.wall ? "sphere-wall" : "sphere-sphere").field("end", o.inputs.end);
+  if (o.inputs.wall) {
     json.field("rigid_wall", s.rigid_wall);
     if (!s.rigid_wall) {
-      json.field("wall_young_modulus_pa", *o.wall.young_modulus)
-          .field("wall_poisson_ratio", *o.wall.poisson_ratio);
+      json.field("wall_young_modulus_pa", *o.inputs.wall_young_modulus_pa)
+          .field("wall_poisson_ratio", *o.inputs.wall_poisson_ratio);
     }
   }
   json.field("effective_modulus_pa", s.effective_modulus_pa)
       .field("effective_shear_modulus_pa", s.effective_shear_modulus_pa);
   json.field("law", law_name(s.normal.kind)).field("dissipative_constant_s", s.dissipative_constant_s);
-  if (o.eps) json.field("calibrated_eps", *o.eps).field("calibration_velocity_m_s", *o.velocity);
-  json.field("torque_arm", o.torque_arm).field("fixed_normal", o.wall.wall || o.fixed_normal);
+  if (o.inputs.eps)
+    json.field("calibrated_eps", *o.inputs.eps).field("calibration_velocity_m_s", *o.inputs.eps_velocity_m_s);
+  json.field("torque_arm", o.inputs.torque_arm).field("fixed_normal", o.inputs.wall || o.inputs.fixed_normal);
   json.field("normal_stiffness_N_m1_5", s.normal.stiffness)
       .field("normal_damping_N_s_m1_5", s.normal.damping);
   json.field("tangential_stiffness", s.tangential.stiffness);
   json.field("tangential_damping_factor", s.tangential.damping_factor)
       .field("friction", s.tangential.friction);
-  json.field("speed_m_s", o.speed).field("tolerance", o.tolerance);
+  json.field("speed_m_s", o.inputs.speed_m_s).field("tolerance", o.inputs.tolerance);
   json.field("maw_chi", maw_chi(s));
   if (!o.out.empty()) json.field("csv", o.out);
   if (!o.plot.empty()) json.field("plot", o.plot);
@@ -138,9 +110,10 @@ void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
     }
     json.field("rebound_angle_deg", r.rebound_angle_rad / kRadiansPerDegree);
     json.field("spin_rad_s", r.spin_first_rad_s);
-    if (!o.wall.wall) json.field("spin2_rad_s", r.spin_second_rad_s);
+    if (!o.inputs.wall) json.field("spin2_rad_s", r.spin_second_rad_s);
     json.field("impulse_ratio", r.impulse_ratio).field("contact_time_s", r.contact_time_s);
-    if (!o.wall.wall) json.field("line_of_centres_turn_deg", r.line_of_centres_turn_rad / kRadiansPerDegree);
+    if (!o.inputs.wall)
+      json.field("line_of_centres_turn_deg", r.line_of_centres_turn_rad / kRadiansPerDegree);
     json.field("stick_time_s", r.stick_time_s).field("slip_time_s", r.slip_time_s);
     json.key("modes").begin_array();
     for (const ModeSwitch& m : r.switches) {
@@ -167,18 +140,19 @@ void print_json(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
 
 // Which contact, in words: the wall is rigid unless it has a material (as `dem --wall`).
 std::string contact_words(const ObliqueCommandOptions& o, const Setup& s) {
-  if (!o.wall.wall) return "two spheres of one material";
+  if (!o.inputs.wall) return "two spheres of one material";
   if (s.rigid_wall) return "a sphere on a rigid wall";
-  return fmt::format("a sphere on a wall of Y = {:g} Pa, nu = {:g}", *o.wall.young_modulus,
-                     *o.wall.poisson_ratio);
+  return fmt::format("a sphere on a wall of Y = {:g} Pa, nu = {:g}", *o.inputs.wall_young_modulus_pa,
+                     *o.inputs.wall_poisson_ratio);
 }
 
 std::string damping_words(const ObliqueCommandOptions& o, const Setup& s) {
-  if (o.eps) {
+  if (o.inputs.eps) {
     const std::string what = s.normal.kind == LawKind::viscoelastic_hertz
                                  ? fmt::format("A = {:.10g} s", s.dissipative_constant_s)
                                  : std::string("gamma");
-    return fmt::format("{} calibrated: eps = {:g} head-on at {:g} m/s", what, *o.eps, *o.velocity);
+    return fmt::format("{} calibrated: eps = {:g} head-on at {:g} m/s", what, *o.inputs.eps,
+                       *o.inputs.eps_velocity_m_s);
   }
   return fmt::format("A = {:.10g} s{}", s.dissipative_constant_s,
                      s.dissipative_constant_s == 0.0 ? " (elastic)" : "");
@@ -200,13 +174,13 @@ std::string tangential_words(const Setup& s) {
 }
 
 void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueImpact>& impacts) {
-  const bool pair = !o.wall.wall;
+  const bool pair = !o.inputs.wall;
   fmt::print(
       "# oblique impact, {}: E* = {:.10g} Pa; {} k = {:.10g} N/m^1.5, gamma = {:.10g} N s/m^(1+b), {}; "
       "eps_n at the {} end\n",
       contact_words(o, s), s.effective_modulus_pa, law_name(s.normal.kind), s.normal.stiffness,
-      s.normal.damping, damping_words(o, s), o.end);
-  fmt::print("# tangential {}; speed {:g} m/s\n", tangential_words(s), o.speed);
+      s.normal.damping, damping_words(o, s), o.inputs.end);
+  fmt::print("# tangential {}; speed {:g} m/s\n", tangential_words(s), o.inputs.speed_m_s);
   fmt::print("{:>9} {:>11} {:>14} {:>14} {:>12} {:>14} {}{:>12} {:>12} {:>10} {:>10}  modes\n", "angle_deg",
              "spin0_rad_s", "eps_n", "e_t", "rebound_deg", "spin_rad_s",
              pair ? fmt::format("{:>14} ", "spin2_rad_s") : "", "impulse", "contact_s", "stick", "slip");
@@ -233,7 +207,7 @@ void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
       "time\n");
   fmt::print(
       "# eps and e_t within {:g}, rebound angle within {:g} rad, spin within {:g} of max(|spin|, v/R)\n",
-      o.tolerance, o.tolerance, o.tolerance);
+      o.inputs.tolerance, o.inputs.tolerance, o.inputs.tolerance);
   for (const ObliqueImpact& impact : impacts) {
     if (impact.ill_conditioned) {
       fmt::print("# at {} deg, spin {:g} rad/s: {}\n", impact.angle_deg, impact.initial_spin_rad_s,
@@ -331,61 +305,15 @@ void add_oblique_command(CLI::App& app, Action& chosen) {
                                      "oblique impacts with a LAMMPS or LIGGGHTS tangential model: tangential "
                                      "restitution, rebound angle, spin, stick/slip");
   add_material_options(*cmd, o->material);
-  cmd->add_option("--dissipative-constant", o->dissipative_constant,
-                  "the dissipative constant A in s (0: elastic); or --eps and --velocity");
-  cmd->add_option("--eps", o->eps,
-                  "measured coefficient of restitution in (0, 1): A calibrated on this contact (sphere and "
-                  "sphere, or sphere and wall), head-on at --velocity");
-  cmd->add_option("--velocity", o->velocity, "impact speed in m/s at which --eps was measured");
-  cmd->add_option("--law", o->law,
-                  "normal law: viscoelastic-hertz, tsuji-hertz or hertz-constant-damping (the material's "
-                  "Hertz stiffness; the last two damped by --eps/--velocity; LAMMPS's tangential models)")
-      ->capture_default_str();
-  add_wall_options(*cmd, o->wall,
-                   "a sphere on a flat wall instead of two spheres: rigid, as in `dem --wall`, unless "
-                   "--wall-young-modulus and --wall-poisson-ratio give its material");
-  cmd->add_flag(
-      "--fixed-normal", o->fixed_normal,
-      "two spheres: keep the normal of the impact (the textbook model) instead of letting the line of "
-      "centres turn as in LAMMPS");
-  cmd->add_option(
-         "--tangential", o->tangential,
-         fmt::format("tangential model: {} (docs/oblique.md)", fmt::join(oblique_tangential_names(), ", ")))
-      ->capture_default_str();
-  cmd->add_option("--tangential-stiffness", o->tangential_stiffness,
-                  "k_t: N/m for linear_history (required there when friction > 0), N/m^2 for the mindlin "
-                  "models and liggghts_history (default there: 8 G*)");
-  cmd->add_option("--tangential-damping", o->tangential_damping,
-                  "LAMMPS's tangential damping factor (times the normal damping coefficient)")
-      ->capture_default_str();
-  cmd->add_option("--friction", o->friction, "Coulomb friction coefficient mu");
-  cmd->add_option("--angle", o->angles_deg, "impact angle(s) from the normal in degrees, in [0, 90)")
-      ->delimiter(',');
-  cmd->add_option("--angle-range", o->angle_range,
-                  "FROM:TO:N: N impact angles from FROM to TO degrees, evenly spaced (instead of --angle)");
-  add_deprecated_alias(
-      *cmd, cmd->add_option("--impact-velocity", o->speed, "impact speed in m/s")->capture_default_str(),
-      "--speed");
-  cmd->add_option("--spin", o->spins,
-                  "initial spin(s) of the (first) sphere in rad/s (positive adds to the slip); every angle "
-                  "with every spin")
-      ->delimiter(',')
-      ->capture_default_str();
-  cmd->add_option("--end", o->end,
-                  "end of the collision: naive (no clamp) or delayed-recovery (force clamped)")
-      ->check(CLI::IsMember(end_names()))
-      ->capture_default_str();
-  cmd->add_option(
-         "--torque-arm", o->torque_arm,
-         "lammps (R - delta/2 for a pair, R for a wall; liggghts_history: R - delta/2 in the torque and the "
-         "contact-point velocity), radius or radius-minus-half-overlap")
-      ->check(CLI::IsMember({"lammps", "radius", "radius-minus-half-overlap"}))
-      ->capture_default_str();
-  cmd->add_option(
-         "--tolerance", o->tolerance,
-         "bound on eps, e_t (absolute), rebound angle (rad) and spins (relative to max(|spin|, v/R)), "
-         "in [1e-10, 1e-2)")
-      ->capture_default_str();
+  add_parameter_options(*cmd, oblique_fields(), o->inputs, [&](const ObliqueField& f, CLI::Option* option) {
+    if (f.numbers == &ObliqueInputs::angles_deg) {
+      cmd->add_option(
+          "--angle-range", o->angle_range,
+          "FROM:TO:N: N impact angles from FROM to TO degrees, evenly spaced (instead of --angle)");
+    } else if (f.number == &ObliqueInputs::speed_m_s) {
+      add_deprecated_alias(*cmd, option, "--speed");
+    }
+  });
   cmd->add_flag("--json", o->json, "print JSON instead of the table");
   cmd->add_option("--out", o->out, "also write the table as CSV to this file");
   CLI::Option* plot = add_plot_option(

@@ -39,20 +39,21 @@ std::string model_summary(const scene::ObliqueModelRun& run, bool sticking_limit
 // The report's paragraph: which wall, ε's range, χ, then one sentence per model.
 std::string oblique_markdown(const scene::ObliqueTask& task, const scene::ObliqueOutcome& o) {
   const scene::ObliqueModelRun& first = o.runs.front();
-  const std::string wall = !task.wall ? "two spheres"
-                           : first.setup.rigid_wall
-                               ? "a sphere on a rigid wall"
-                               : fmt::format("a sphere on a wall of Y = {:g} Pa, ν = {:g}",
-                                             *task.wall_young_modulus_pa, *task.wall_poisson_ratio);
+  const std::string wall =
+      !task.inputs.wall ? "two spheres"
+      : first.setup.rigid_wall
+          ? "a sphere on a rigid wall"
+          : fmt::format("a sphere on a wall of Y = {:g} Pa, ν = {:g}", *task.inputs.wall_young_modulus_pa,
+                        *task.inputs.wall_poisson_ratio);
   std::string markdown = fmt::format(
       "Oblique impacts (docs/oblique.md) of {} of [materials.{}] at {:g} m/s, μ = {:g}, {} angle(s) from "
       "{}° to {}°, {} initial spin(s); normal restitution ε (head-on at the normal speed v cos θ, {} end) "
       "from {:.10g} to {:.10g}; Maw's χ = {:.6g} (gross slip: ψ₂ = ψ₁ − 2(1 + ε)χ, drawn with ε = {:.10g} of "
       "the first impact).\n\n",
-      wall, task.material, task.speed_m_s, task.friction, task.angles_deg.size(),
-      *std::min_element(task.angles_deg.begin(), task.angles_deg.end()),
-      *std::max_element(task.angles_deg.begin(), task.angles_deg.end()), task.spins_rad_s.size(), task.end,
-      o.eps_low, o.eps_high, o.maw_chi, o.first_eps);
+      wall, task.material, task.inputs.speed_m_s, *task.inputs.friction, task.inputs.angles_deg.size(),
+      *std::min_element(task.inputs.angles_deg.begin(), task.inputs.angles_deg.end()),
+      *std::max_element(task.inputs.angles_deg.begin(), task.inputs.angles_deg.end()),
+      task.inputs.spins_rad_s.size(), task.inputs.end, o.eps_low, o.eps_high, o.maw_chi, o.first_eps);
   for (const scene::ObliqueModelRun& run : o.runs) markdown += model_summary(run, o.plotted);
   markdown += fmt::format("\nEvery impact is a row of `{}.csv`.\n\n", task.name);
   return markdown;
