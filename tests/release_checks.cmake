@@ -10,4 +10,5 @@ add_test(NAME citation COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/cita
 add_test(NAME docs_cli
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/docs_cli.py $<TARGET_FILE:restitution> ${PROJECT_SOURCE_DIR})
 add_test(NAME spdx_headers COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/scripts/spdx --check ${PROJECT_SOURCE_DIR})
-set_tests_properties(citation docs_cli spdx_headers PROPERTIES LABELS unit)  # each under a second
+set_tests_properties(docs_cli PROPERTIES LABELS unit)  # each under a second
+set_tests_properties(citation spdx_headers PROPERTIES LABELS "unit;source")

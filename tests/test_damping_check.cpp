@@ -324,3 +324,43 @@ TEST(DampingCheckScene, MisspelledKeysAndUnknownRecipesNameFileAndLine) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(DampingCheckLists, EachRequestedEpsInTurnAsAlone) {
+  CheckRequest request;
+  request.recipe = Recipe::lammps_tsuji;
+  request.clamps = {Clamp::on};
+  CollisionSolver solver;
+  const std::vector<double> eps{0.3, 0.6, 0.9};
+  const std::vector<CheckResult> results = check_recipe_at(request, eps, solver);
+  ASSERT_EQ(results.size(), eps.size());
+  for (std::size_t i = 0; i < eps.size(); ++i) {
+    request.eps_requested = eps[i];
+    const CheckResult alone = check_recipe(request, solver);
+    ASSERT_EQ(results[i].points.size(), alone.points.size());
+    EXPECT_EQ(results[i].setting.code_value, alone.setting.code_value);
+    EXPECT_EQ(results[i].points[0].actual_eps, alone.points[0].actual_eps);
+    // A larger requested ε gives a larger actual ε (less damping).
+    if (i > 0) EXPECT_GT(*results[i].points[0].actual_eps, *results[i - 1].points[0].actual_eps);
+  }
+}
+
+TEST(DampingCheckLists, TheInverseForEachClampGivesTheTarget) {
+  InverseRequest request;
+  request.recipe = Recipe::lammps_tsuji;
+  request.target_eps = 0.6;
+  CollisionSolver solver;
+  const std::vector<Clamp> clamps{Clamp::off, Clamp::on};
+  const std::vector<InverseResult> results = invert_recipe_for(request, clamps, solver);
+  ASSERT_EQ(results.size(), clamps.size());
+  for (std::size_t i = 0; i < clamps.size(); ++i) {
+    ASSERT_FALSE(results[i].check.points.empty());
+    EXPECT_EQ(results[i].check.points.front().clamp, clamps[i]);
+    EXPECT_NEAR(*results[i].check.points.front().actual_eps, request.target_eps, 1e-8);
+  }
+  // Clamped and unclamped ends differ, so do the ε to request for the same target.
+  EXPECT_NE(results[0].eps_to_request, results[1].eps_to_request);
+}
+
+}  // namespace

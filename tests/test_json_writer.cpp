@@ -9,6 +9,8 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <string>
+#include <vector>
 
 namespace restitution::cli {
 namespace {
@@ -27,6 +29,27 @@ TEST(JsonWriter, KeysStayInTheOrderWritten) {
   JsonWriter w;
   w.begin_object().field("zeta", 1L).field("law", "hertz").key("a").begin_array().end_array().end_object();
   EXPECT_EQ(w.str(), R"({"zeta":1,"law":"hertz","a":[]})");
+}
+
+TEST(JsonWriter, AListIsTheArrayOfItsValues) {
+  // One call writes what an array of the values one at a time writes, an empty list included.
+  const std::vector<std::string> lines{"pair_style granular", "a \"quoted\" line"};
+  const std::vector<double> speeds{0.1, 1.0, std::numeric_limits<double>::quiet_NaN()};
+  JsonWriter listed;
+  listed.begin_object()
+      .field("lines", lines)
+      .field("v", speeds)
+      .field("none", std::vector<double>{})
+      .end_object();
+  JsonWriter one_by_one;
+  one_by_one.begin_object().key("lines").begin_array();
+  for (const std::string& line : lines) one_by_one.value(line);
+  one_by_one.end_array().key("v").begin_array();
+  for (const double v : speeds) one_by_one.value(v);
+  one_by_one.end_array().key("none").begin_array().end_array().end_object();
+  EXPECT_EQ(listed.str(), one_by_one.str());
+  EXPECT_EQ(listed.str(),
+            R"({"lines":["pair_style granular","a \"quoted\" line"],"v":[0.1,1.0,null],"none":[]})");
 }
 
 TEST(JsonWriter, ShortestRoundTripAndNonFiniteIsNull) {

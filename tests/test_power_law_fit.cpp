@@ -8,6 +8,7 @@
 
 #include "analysis/asymptotics.hpp"
 #include "analysis/power_law_fit.hpp"
+#include "analysis/power_law_study.hpp"
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
 
@@ -79,6 +80,42 @@ TEST(LocalSlope, DelayedSlopeFollowsTheDerivedApproach) {
     // ... and the approach is resolved: the slope is measurably above -5/3.
     EXPECT_GT(s.slope + 5.0 / 3.0, 10.0 * (s.error_estimate + omitted));
   }
+}
+
+TEST(PowerLawStudy, NaiveTailFollowsTheDerivedLawAndReportsProgress) {
+  // Beyond ζ = 10 the naive end is ε = κ ζ^{-5} to the tolerance: the fit recovers the derived law it
+  // reports.
+  const std::vector<double> zetas = log_grid(10.0, 1000.0, 4);
+  std::vector<std::size_t> done;
+  const PowerLawStudy s =
+      power_law_study(zetas, CollisionEnd::naive, 1e-10, [&](std::size_t i, std::size_t n) {
+        EXPECT_EQ(n, zetas.size());
+        done.push_back(i);
+      });
+  EXPECT_EQ(done, (std::vector<std::size_t>{1, 2, 3, 4}));
+  ASSERT_EQ(s.eps.size(), zetas.size());
+  ASSERT_EQ(s.slopes.size(), zetas.size());
+  EXPECT_EQ(s.derived_exponent, -5.0);
+  EXPECT_NEAR(s.fit.exponent, s.derived_exponent, 1e-6);
+  EXPECT_NEAR(s.fit.prefactor / s.derived_prefactor, 1.0, 1e-6);
+  for (std::size_t i = 0; i < zetas.size(); ++i) {
+    EXPECT_EQ(s.slopes[i].zeta, zetas[i]);
+    EXPECT_NEAR(s.slopes[i].slope, -5.0, 1e-6 + s.slopes[i].error_estimate);
+  }
+}
+
+TEST(PowerLawStudy, DelayedRecoveryComparesWithItsOwnLawAndRefusesUncheckedZeta) {
+  const PowerLawStudy s = power_law_study(log_grid(1e2, 1e4, 3), CollisionEnd::delayed_recovery, 1e-10);
+  EXPECT_EQ(s.derived_exponent, asymptotics::kDelayedRecoveryExponent);
+  EXPECT_EQ(s.derived_prefactor, asymptotics::delayed_recovery_prefactor());
+  // The approach to -5/3 is from above (LocalSlope.DelayedSlopeFollowsTheDerivedApproach).
+  EXPECT_GT(s.fit.exponent, s.derived_exponent);
+  EXPECT_LT(s.fit.exponent, s.derived_exponent + 0.1);
+  bool called = false;
+  EXPECT_THROW((void)power_law_study({1.0, 10.0, 2e6}, CollisionEnd::naive, 1e-10,
+                                     [&](std::size_t, std::size_t) { called = true; }),
+               InvalidInput);
+  EXPECT_FALSE(called);  // refused before any solve
 }
 
 TEST(CliFit, NaiveContractAndDerivedLaw) {

@@ -76,7 +76,7 @@ struct AdhesiveCollision {
 // Throws InvalidInput for a contact or speed that is not finite and positive (γ ≥ 0 and damping ≥ 0 allowed:
 // γ = 0 is refused with the non-adhesive law to use instead), NumericalFailure when CVODE fails.
 [[nodiscard]] AdhesiveCollision solve_adhesive(const AdhesiveContact& contact, double impact_speed_m_per_s,
-                                               double tolerance = 1e-10);
+                                               double tolerance = kDefaultTolerance);
 
 struct StickingSpeed {
   double speed_m_per_s = 0.0;  // 0: the spheres never stick (undamped DMT or sjkr)
@@ -84,7 +84,7 @@ struct StickingSpeed {
 };
 // The impact speed below which the spheres stick, to relative tolerance T: the root of the energy left at the
 // break overlap (bracketed, then Brent's method); the elastic JKR value is the closed form sqrt(2W/m*).
-[[nodiscard]] StickingSpeed sticking_speed(const AdhesiveContact& contact, double tolerance = 1e-10);
+[[nodiscard]] StickingSpeed sticking_speed(const AdhesiveContact& contact, double tolerance = kDefaultTolerance);
 
 // Closed forms of the elastic model (docs/adhesion.md): the hysteresis work W of the model's break rule [J]
 // (0 for DMT and sjkr), the overlap at which the contact breaks [m] (negative for JKR, 0 for DMT and sjkr),

@@ -25,7 +25,7 @@ struct AdhesiveDampingCalibration {
                                                                     const Material& material,
                                                                     double surface_energy_j_per_m2,
                                                                     double eps, double impact_speed_m_per_s,
-                                                                    double tolerance = 1e-10);
+                                                                    double tolerance = kDefaultTolerance);
 
 struct AdhesiveStickingCalibration {
   double surface_energy_j_per_m2 = 0.0;  // γ per surface
@@ -50,6 +50,6 @@ struct AdhesiveStickingCalibration {
                                                                       const Material& material, double eps,
                                                                       double impact_speed_m_per_s,
                                                                       double sticking_speed_m_per_s,
-                                                                      double tolerance = 1e-10);
+                                                                      double tolerance = kDefaultTolerance);
 
 }  // namespace restitution

@@ -100,4 +100,15 @@ CheckResult check_recipe(const CheckRequest& request, CollisionSolver& solver) {
   return result;
 }
 
+std::vector<CheckResult> check_recipe_at(CheckRequest request, const std::vector<double>& eps_requested,
+                                         CollisionSolver& solver) {
+  std::vector<CheckResult> results;
+  results.reserve(eps_requested.size());
+  for (const double eps : eps_requested) {
+    request.eps_requested = eps;
+    results.push_back(check_recipe(request, solver));
+  }
+  return results;
+}
+
 }  // namespace restitution::damping_check

@@ -61,6 +61,11 @@ struct CheckResult {
 // NumericalFailure when a solve fails.
 CheckResult check_recipe(const CheckRequest& request, CollisionSolver& solver);
 
+// `request` checked at each requested ε of `eps_requested` in turn (its own eps_requested is not read): one
+// result per ε, in that order (`damping-check --map`).
+std::vector<CheckResult> check_recipe_at(CheckRequest request, const std::vector<double>& eps_requested,
+                                         CollisionSolver& solver);
+
 // `points` impact speeds [m/s] spaced evenly in log v from v_min to v_max (v_min alone for one point).
 // Throws InvalidInput naming the bad bound or count.
 inline constexpr int kMaxSpeedPoints = 1000;  // speed_grid's largest `points`

@@ -57,4 +57,14 @@ InverseResult invert_recipe(const InverseRequest& request, CollisionSolver& solv
   return result;
 }
 
+std::vector<InverseResult> invert_recipe_for(InverseRequest request, const std::vector<Clamp>& clamps,
+                                             CollisionSolver& solver) {
+  std::vector<InverseResult> results;
+  for (const Clamp clamp : clamps) {
+    request.clamp = clamp;
+    results.push_back(invert_recipe(request, solver));
+  }
+  return results;
+}
+
 }  // namespace restitution::damping_check

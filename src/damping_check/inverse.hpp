@@ -30,4 +30,9 @@ struct InverseResult {
 // (the message names the reachable range), NumericalFailure when a solve fails.
 InverseResult invert_recipe(const InverseRequest& request, CollisionSolver& solver);
 
+// The inverse for each clamp of `clamps` in turn (its own `clamp` is not read): one result per clamp, in that
+// order (`damping-check --target-eps`).
+std::vector<InverseResult> invert_recipe_for(InverseRequest request, const std::vector<Clamp>& clamps,
+                                             CollisionSolver& solver);
+
 }  // namespace restitution::damping_check

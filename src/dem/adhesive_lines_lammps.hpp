@@ -20,7 +20,7 @@ struct AdhesiveLammpsRequest {
   // Impact speeds [m/s]; empty: 0.97, 1.03, 1.05, 1.5, 3, 10 and 100 times the sticking speed (needs v_s >
   // 0).
   std::vector<double> speeds;
-  double tolerance = 1e-10;
+  double tolerance = kDefaultTolerance;
 };
 
 struct AdhesiveLammpsLines {

@@ -15,7 +15,7 @@ struct AdhesiveLiggghtsRequest {
   AdhesiveContact contact;  // model sjkr; the damping is LIGGGHTS's gamman [1/(m s)]
   // Impact speeds [m/s]; empty: 0.97 ... 100 times the sticking speed (needs damping).
   std::vector<double> speeds;
-  double tolerance = 1e-10;
+  double tolerance = kDefaultTolerance;
 };
 
 struct AdhesiveLiggghtsLines {

@@ -269,4 +269,11 @@ DrivenCurve driven_curve(const DrivenRequest& request) {
   return out;
 }
 
+DrivenCurve gas_curve(const CoolingRequest& request, const std::optional<Thermostat>& thermostat) {
+  if (thermostat) return driven_curve({request, *thermostat});
+  DrivenCurve free;
+  free.curve = cooling_curve(request);
+  return free;
+}
+
 }  // namespace restitution::gas

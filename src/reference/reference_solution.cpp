@@ -151,6 +151,16 @@ ReferenceSolution dashpot_reference(double damping_ratio) {
   return compare(solve(kCoarse), solve(kFine), "linear-dashpot");
 }
 
+std::vector<ReferenceSolution> hertz_references(
+    const std::vector<double>& zetas, const std::function<void(std::size_t, std::size_t)>& progress) {
+  std::vector<ReferenceSolution> solutions;
+  for (const double zeta : zetas) {
+    solutions.push_back(hertz_reference(zeta));
+    progress(solutions.size(), zetas.size());
+  }
+  return solutions;
+}
+
 std::vector<double> reference_zeta_grid() {
   std::vector<double> grid{0.0};
   for (int k = -32; k <= 16; ++k) grid.push_back(std::pow(10.0, k / 4.0));

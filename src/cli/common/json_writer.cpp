@@ -80,6 +80,18 @@ JsonWriter& JsonWriter::value(std::string_view text) {
   return *this;
 }
 
+JsonWriter& JsonWriter::value(const std::vector<std::string>& texts) {
+  begin_array();
+  for (const std::string& text : texts) value(text);
+  return end_array();
+}
+
+JsonWriter& JsonWriter::value(const std::vector<double>& numbers) {
+  begin_array();
+  for (const double number : numbers) value(number);
+  return end_array();
+}
+
 std::string JsonWriter::str() const {
   // Text that is not valid UTF-8 (a file name, say) is written with replacement characters, not refused.
   return document_.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);

@@ -25,6 +25,9 @@ class JsonWriter {
   JsonWriter& value(std::string_view text);
   JsonWriter& value(const char* text) { return value(std::string_view(text)); }
   JsonWriter& null();
+  // A list as one array of its values, in order.
+  JsonWriter& value(const std::vector<std::string>& texts);
+  JsonWriter& value(const std::vector<double>& numbers);
   template <typename T>
   JsonWriter& field(std::string_view name, const T& v) {
     key(name);

@@ -65,10 +65,9 @@ std::vector<double> speeds_of(const DampingCheckOptions& o) {
   }
 }
 
-CheckRequest request_of(const DampingCheckOptions& o, double eps) {
+CheckRequest request_of(const DampingCheckOptions& o) {
   CheckRequest r;
   r.recipe = damping_check::recipe_from_name(o.recipe);
-  r.eps_requested = eps;
   r.clamps = damping_check::clamps_from_name(o.clamp);
   r.reference_velocity_m_s = o.velocity;
   r.speeds_m_s = speeds_of(o);
@@ -180,17 +179,14 @@ void print_text(const DampingCheckOptions& o, const std::vector<double>& eps,
 // --target-eps: per clamp, the ε to request and what it then gives over the speed grid.
 int run_inverse(const DampingCheckOptions& o) {
   CollisionSolver solver;
-  std::vector<damping_check::InverseResult> results;
   damping_check::InverseRequest r;
   r.recipe = damping_check::recipe_from_name(o.recipe);
   r.target_eps = *o.target_eps;
   r.target_velocity_m_s = o.velocity;
   r.speeds_m_s = speeds_of(o);
   r.tolerance = o.tolerance;
-  for (const damping_check::Clamp clamp : damping_check::clamps_from_name(o.clamp)) {
-    r.clamp = clamp;
-    results.push_back(damping_check::invert_recipe(r, solver));
-  }
+  const std::vector<damping_check::InverseResult> results =
+      damping_check::invert_recipe_for(r, damping_check::clamps_from_name(o.clamp), solver);
   const damping_check::RecipeSetting& s = results.front().check.setting;
   if (o.json) {
     JsonWriter json;
@@ -241,9 +237,7 @@ int run(const DampingCheckOptions& o) {
   if (o.target_eps) return run_inverse(o);
   const std::vector<double> eps = o.map ? damping_check::map_eps_grid() : std::vector<double>{*o.eps};
   CollisionSolver solver;
-  std::vector<CheckResult> results;
-  results.reserve(eps.size());
-  for (double e : eps) results.push_back(damping_check::check_recipe(request_of(o, e), solver));
+  const std::vector<CheckResult> results = damping_check::check_recipe_at(request_of(o), eps, solver);
   if (o.json) {
     print_json(o, eps, results);
   } else {

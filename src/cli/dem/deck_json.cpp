@@ -10,16 +10,10 @@ void write_deck_json(JsonWriter& json, const dem::Deck& deck) {
   json.key("meanings").begin_object();
   for (const auto& p : deck.parameters) json.field(p.name, p.meaning);
   json.end_object();
-  json.key("prerequisites").begin_array();
-  for (const auto& line : deck.prerequisites) json.value(line);
-  json.end_array();
+  json.field("prerequisites", deck.prerequisites);
   if (!deck.checked_on.empty()) json.field("checked_on", deck.checked_on);
-  json.key("lines").begin_array();
-  for (const auto& line : deck.lines) json.value(line);
-  json.end_array();
-  json.key("notes").begin_array();
-  for (const auto& note : deck.notes) json.value(note);
-  json.end_array();
+  json.field("lines", deck.lines);
+  json.field("notes", deck.notes);
 }
 
 void write_speed_eps_json(JsonWriter& json, const std::vector<dem::SpeedEps>& eps) {

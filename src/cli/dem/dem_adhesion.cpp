@@ -73,9 +73,7 @@ void write_contact_and_lines(JsonWriter& json, const AdhesiveContact& c, const c
   json.field("effective_radius_m", c.effective_radius_m);
   json.field("effective_mass_kg", c.effective_mass_kg);
   json.field(damping_key, c.damping);
-  json.key("lines").begin_array();
-  for (const auto& line : lines) json.value(line);
-  json.end_array();
+  json.field("lines", lines);
   json.field("skin_m", skin_m);
   json.field("timestep_s", timestep_s);
 }

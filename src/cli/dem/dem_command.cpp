@@ -142,13 +142,9 @@ void print_json(const dem::LinesResult& r, const DemOptions& o, const std::optio
   if (r.yade_exact_deck) {
     // Not these lines: the ones YADE 2024.02a and later take for the exact law, and the ε(v) they give there.
     json.key("yade_exact_law").begin_object().field("needs_yade", "2024.02a");
-    json.key("lines").begin_array();
-    for (const auto& line : r.yade_exact_deck->lines) json.value(line);
-    json.end_array();
-    json.key("eps").begin_array();
-    for (const auto& e : r.yade_exact_eps)
-      json.begin_object().field("velocity_m_s", e.velocity_m_s).field("eps", e.eps).end_object();
-    json.end_array().end_object();
+    json.field("lines", r.yade_exact_deck->lines);
+    write_speed_eps_json(json, r.yade_exact_eps);
+    json.end_object();
   }
   if (r.yade && !r.yade_exact_deck) {
     json.key("yade_own_conversion").begin_object();
@@ -216,16 +212,23 @@ void print_text(const dem::LinesResult& r, const DemOptions& o, const std::optio
   if (o.deck) fmt::print("{} check deck written to {}: run `{}`\n", c, *o.deck, o.deck_run);
 }
 
+// --from-fit, --yade-version and the production options are for one pair of spheres; `subject` says what
+// takes the damping options only.
+void refuse_pair_options(const DemOptions& o, const char* subject) {
+  if (!o.from_fit.empty() || !o.yade_version.empty() || any_production_option(o.production)) {
+    throw InvalidInput(fmt::format(
+        "{} --eps/--velocity or --dissipative-constant, not --from-fit, --yade-version, --timestep, "
+        "--max-eps-error or --constant-eps",
+        subject));
+  }
+}
+
 // Several atom types (docs/dem.md, "Polydisperse sets"): lammps and liggghts only.
 int run_polydisperse(const DemOptions& o) {
   if (dem::wants_oblique(o.oblique, dem::code_from_name(o.code), 0.0)) {
     throw InvalidInput("several atom types take no --angle, --target-et or --reference-angle");
   }
-  if (!o.from_fit.empty() || !o.yade_version.empty() || any_production_option(o.production)) {
-    throw InvalidInput(
-        "several atom types take --eps/--velocity or --dissipative-constant, not --from-fit, "
-        "--yade-version, --timestep, --max-eps-error or --constant-eps");
-  }
+  refuse_pair_options(o, "several atom types take");
   dem::PolydisperseRequest request;
   request.code = dem::code_from_name(o.code);
   request.end = end_from_name(o.end);
@@ -290,11 +293,7 @@ int run_wall(const DemOptions& o) {
   if (several_types(o.types) || o.types.radius2 || o.types.mass2) {
     throw InvalidInput("--wall takes one sphere: one --radius, no --radius2, --mass2 or --radius-range");
   }
-  if (!o.from_fit.empty() || !o.yade_version.empty() || any_production_option(o.production)) {
-    throw InvalidInput(
-        "--wall takes --eps/--velocity or --dissipative-constant, not --from-fit, --yade-version, "
-        "--timestep, --max-eps-error or --constant-eps");
-  }
+  refuse_pair_options(o, "--wall takes");
   dem::WallRequest request;
   request.code = dem::code_from_name(o.code);
   request.end = end_from_name(o.end);

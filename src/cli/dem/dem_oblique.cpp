@@ -158,9 +158,7 @@ void write_oblique_json(JsonWriter& json, const DemOblique& r) {
     json.field("tangential_restitution", r.inverse->check.result.tangential_restitution);
     json.key("reachable_et").begin_array().value(r.inverse->lowest_reachable_et);
     json.value(r.inverse->highest_reachable_et).end_array();
-    json.key("lines").begin_array();
-    for (const auto& line : r.inverse_lines) json.value(line);
-    json.end_array();
+    json.field("lines", r.inverse_lines);
     json.key("impacts");
     write_impacts(json, r, r.inverse_impacts);
     json.end_object();

@@ -5,6 +5,7 @@
 
 #include "cli/common/build_json.hpp"
 #include "cli/common/json_writer.hpp"
+#include "cli/dem/deck_json.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/units.hpp"
 
@@ -73,27 +74,19 @@ void print_polydisperse_json(const dem::PolydisperseResult& r, const std::option
     json.key("parameters").begin_object();
     for (const auto& q : p.deck.parameters) json.field(q.name, q.value);
     json.end_object();
-    json.key("eps").begin_array();
-    for (const auto& e : p.eps)
-      json.begin_object().field("velocity_m_s", e.velocity_m_s).field("eps", e.eps).end_object();
-    json.end_array().end_object();
+    write_speed_eps_json(json, p.eps);
+    json.end_object();
   }
   json.end_array();
   json.key("meanings").begin_object();
   for (const auto& q : r.pairs.front().deck.parameters) json.field(q.name, q.meaning);
   json.end_object();
-  json.key("lines").begin_array();
-  for (const auto& line : r.lines) json.value(line);
-  json.end_array();
-  json.key("notes").begin_array();
-  for (const auto& note : r.notes) json.value(note);
-  json.end_array();
+  json.field("lines", r.lines);
+  json.field("notes", r.notes);
   if (r.binning) {
     const dem::BinningError& b = *r.binning;
     json.key("binning").begin_object().field("spacing", "log");
-    json.key("edges_m").begin_array();
-    for (double e : b.edges_m) json.value(e);
-    json.end_array();
+    json.field("edges_m", b.edges_m);
     json.field("grid_points_per_class", b.grid_points_per_class);
     json.field("worst_abs_error", b.worst_abs_error).field("worst_relative_error", b.worst_relative_error);
     json.field("radius1_m", b.radius1_m).field("radius2_m", b.radius2_m);

@@ -3,10 +3,7 @@
 
 #include <fmt/core.h>
 
-#include <algorithm>
-
 #include "dem/dem_codes.hpp"
-#include "restitution/errors.hpp"
 
 namespace restitution::cli {
 
@@ -31,30 +28,8 @@ bool any_production_option(const ProductionOptions& o) {
 
 Production production(const dem::LinesResult& r, const Material& material, const ProductionOptions& o,
                       double tolerance) {
-  const dem::Code code = r.deck.code;
-  if ((o.timestep || o.max_eps_error) && !dem::code_entry(code).velocity_verlet) {
-    throw InvalidInput(
-        fmt::format("--timestep and --max-eps-error model the velocity-Verlet of {}, not {}",
-                    dem::code_list(" and ", [](const dem::CodeEntry& e) { return e.velocity_verlet; }),
-                    dem::code_name(code)));
-  }
-  const dem::Pair pair = dem::pair_of(material);
-  CollisionSolver solver;
-  Production p;
-  for (const auto& e : r.eps) {
-    p.contact_duration_s.push_back(dem::contact_duration_s(pair, r.dissipative_constant_s, r.deck.end,
-                                                           e.velocity_m_s, tolerance, solver));
-    if (o.timestep) {
-      p.errors.push_back(dem::integrator_error(pair, r.dissipative_constant_s, r.deck.end, e.velocity_m_s,
-                                               *o.timestep, tolerance, solver));
-    }
-    if (o.max_eps_error) {
-      p.largest_time_step_s.push_back(dem::largest_time_step_s(
-          pair, r.dissipative_constant_s, r.deck.end, e.velocity_m_s, *o.max_eps_error, tolerance, solver));
-    }
-  }
-  if (o.constant_eps) p.constant_eps = damping_check::constant_eps_lines(r, pair, tolerance, solver);
-  return p;
+  return damping_check::check_production(r, material,
+                                         {o.timestep, o.max_eps_error, o.constant_eps, tolerance});
 }
 
 void print_production_text(const dem::LinesResult& r, const Production& p, const ProductionOptions& o) {
@@ -77,8 +52,7 @@ void print_production_text(const dem::LinesResult& r, const Production& p, const
     fmt::print("{} largest dt keeping the worst |eps error| <= {}:", c, *o.max_eps_error);
     for (std::size_t i = 0; i < r.eps.size(); ++i)
       fmt::print(" {:.4g} s at {:g} m/s;", p.largest_time_step_s[i], r.eps[i].velocity_m_s);
-    fmt::print(" all speeds: {:.4g} s\n",
-               *std::min_element(p.largest_time_step_s.begin(), p.largest_time_step_s.end()));
+    fmt::print(" all speeds: {:.4g} s\n", *p.largest_time_step_all_s);
   }
   if (p.constant_eps) {
     fmt::print(
@@ -111,8 +85,7 @@ void write_production_json(JsonWriter& json, const dem::LinesResult& r, const Pr
   }
   if (o.max_eps_error) {
     json.key("max_eps_error").begin_object().field("bound", *o.max_eps_error);
-    json.field("largest_time_step_s",
-               *std::min_element(p.largest_time_step_s.begin(), p.largest_time_step_s.end()));
+    json.field("largest_time_step_s", *p.largest_time_step_all_s);
     json.key("per_speed").begin_array();
     for (std::size_t i = 0; i < r.eps.size(); ++i) {
       json.begin_object().field("velocity_m_s", r.eps[i].velocity_m_s);
@@ -124,9 +97,7 @@ void write_production_json(JsonWriter& json, const dem::LinesResult& r, const Pr
     json.key("constant_eps").begin_object().field("eps", p.constant_eps->eps);
     json.field("velocity_m_s", p.constant_eps->velocity_m_s)
         .field("eps_to_request", p.constant_eps->eps_to_request);
-    json.key("lines").begin_array();
-    for (const auto& line : p.constant_eps->lines) json.value(line);
-    json.end_array().end_object();
+    json.field("lines", p.constant_eps->lines).end_object();
   }
 }
 

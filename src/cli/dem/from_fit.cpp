@@ -11,13 +11,24 @@
 
 namespace restitution::cli {
 
-EpsCarryOver eps_at_speed(const FitCarryOver& fit, double velocity_m_s) {
+namespace {
+// The library names the file; the command line names the option too.
+template <typename Call>
+auto naming_from_fit(Call call) {
   try {
-    return fitted_eps_at_speed(fit.beta, fit.ci68, fit.ci95, fit.end, velocity_m_s);
+    return call();
   } catch (const InvalidInput& e) {
-    throw InvalidInput(fmt::format("--from-fit {}: beta = {} at v = {} m/s: {}", fit.file, fit.beta,
-                                   velocity_m_s, e.what()));
+    throw InvalidInput(fmt::format("--from-fit {}", e.what()));
   }
+}
+}  // namespace
+
+FitCarryOver read_fit_result(const std::filesystem::path& path, std::optional<CollisionEnd> end) {
+  return naming_from_fit([&] { return read_fit_report(path, end); });
+}
+
+EpsCarryOver eps_at_speed(const FitCarryOver& fit, double velocity_m_s) {
+  return naming_from_fit([&] { return carried_eps_at_speed(fit, velocity_m_s); });
 }
 
 }  // namespace restitution::cli
@@ -27,31 +38,42 @@ EpsCarryOver eps_at_speed(const FitCarryOver& fit, double velocity_m_s) {
 namespace restitution::cli {
 namespace {
 
-FitInterval scaled(FitInterval i, double factor) {
-  if (!i.low_at_edge) i.low *= factor;
-  if (!i.high_at_edge) i.high *= factor;
-  return i;
+// The report's reasons for rejecting the fit that carries over (FitRejection), in words.
+std::vector<std::string> rejection_reasons(const FitCarryOver& fit) {
+  const FitRejection& verdict = fit.rejection;
+  std::vector<std::string> out;
+  if (verdict.better_fit) {
+    const ReportedFit& better = fit.fits[*verdict.better_fit];
+    out.push_back(fmt::format("the fit's best law is {}, {} end (AIC {:.4g} against {:.4g})",
+                              law_name(better.law), end_name(better.end), better.aic,
+                              fit.fits[fit.chosen].aic));
+  }
+  if (verdict.chi2_per_dof) {
+    out.push_back(fmt::format("chi2/dof = {:.4g} with the data's sigma (p = {:.2g} < {:g})",
+                              *verdict.chi2_per_dof, verdict.chi2_p_value, kFitSignificance));
+  }
+  if (!verdict.residual_trend.empty()) {
+    out.push_back(fmt::format("its residuals: {} at the 1 % level", verdict.residual_trend));
+  }
+  return out;
 }
 
 // Why the fit rejects its Hertz fit, in one line; the intervals it would carry over then do not describe
 // the data, so none is printed.
 std::string rejection_text(const FitCarryOver& fit) {
   std::string out = "warning: the fit rejects viscoelastic Hertz for its data: ";
-  for (std::size_t i = 0; i < fit.rejected_because.size(); ++i) {
-    out += (i == 0 ? "" : "; ") + fit.rejected_because[i];
-  }
+  const std::vector<std::string> reasons = rejection_reasons(fit);
+  for (std::size_t i = 0; i < reasons.size(); ++i) out += (i == 0 ? "" : "; ") + reasons[i];
   return out + "; its intervals describe the scatter about a law the data do not follow and are left out";
 }
 
 void write_rejection(JsonWriter& json, const FitCarryOver& fit) {
-  json.key("hertz_fit_rejected").begin_array();
-  for (const std::string& reason : fit.rejected_because) json.value(reason);
-  json.end_array();
+  json.field("hertz_fit_rejected", rejection_reasons(fit));
 }
 
 // `[low, high]` after a value, or nothing for a rejected fit.
 std::string interval_words(const FitCarryOver& fit, const char* level, const FitInterval& interval) {
-  return fit.rejected_because.empty() ? fmt::format(", {} {}", level, interval_text(interval)) : "";
+  return fit.rejection.rejected() ? "" : fmt::format(", {} {}", level, interval_text(interval));
 }
 
 }  // namespace
@@ -63,8 +85,9 @@ int calibrate_from_fit(const std::filesystem::path& file, std::optional<Collisio
   }
   const FitCarryOver fit = read_fit_result(file, end);
   const EpsCarryOver eps = eps_at_speed(fit, velocity_m_s);
-  const double factor = k ? dissipative_constant_from(1.0, *k) : 0.0;
-  const bool intervals = fit.rejected_because.empty();
+  const std::optional<CarriedDissipativeConstant> a =
+      k ? std::optional(carried_dissipative_constant(fit, *k)) : std::nullopt;
+  const bool intervals = !fit.rejection.rejected();
   if (json) {
     JsonWriter w;
     w.begin_object().field("from_fit", file.string()).field("end", end_name(fit.end));
@@ -82,11 +105,11 @@ int calibrate_from_fit(const std::filesystem::path& file, std::optional<Collisio
       write_interval(w, "eps_ci95", eps.ci95);
     }
     w.field("characteristic_velocity_m_s", characteristic_velocity_m_s(fit.beta));
-    if (k) {
-      w.field("k", *k).field("dissipative_constant_s", dissipative_constant_from(fit.beta, *k));
+    if (a) {
+      w.field("k", *k).field("dissipative_constant_s", a->value_s);
       if (intervals) {
-        write_interval(w, "dissipative_constant_ci68", scaled(fit.ci68, factor));
-        write_interval(w, "dissipative_constant_ci95", scaled(fit.ci95, factor));
+        write_interval(w, "dissipative_constant_ci68", a->ci68);
+        write_interval(w, "dissipative_constant_ci95", a->ci95);
       }
     }
     fmt::print("{}\n", finish_json_document(w));
@@ -101,10 +124,9 @@ int calibrate_from_fit(const std::filesystem::path& file, std::optional<Collisio
              interval_words(fit, "68 %", eps.ci68), interval_words(fit, "95 %", eps.ci95),
              intervals ? " (carried over from beta's intervals)" : "");
   fmt::print("  g* (1999 paper, Eq. 31)     {:.9g} m/s\n", characteristic_velocity_m_s(fit.beta));
-  if (k) {
-    fmt::print("  A (dissipative constant)    {:.9g} s{}{}\n", dissipative_constant_from(fit.beta, *k),
-               interval_words(fit, "68 %", scaled(fit.ci68, factor)),
-               interval_words(fit, "95 %", scaled(fit.ci95, factor)));
+  if (a) {
+    fmt::print("  A (dissipative constant)    {:.9g} s{}{}\n", a->value_s,
+               interval_words(fit, "68 %", a->ci68), interval_words(fit, "95 %", a->ci95));
   }
   return 0;
 }
@@ -116,20 +138,19 @@ namespace restitution::cli {
 std::string fit_carry_over_text(const std::filesystem::path& file, const FitCarryOver& fit, double k,
                                 const std::vector<double>& speeds_m_s, const std::string& eps_given_by,
                                 const char* comment) {
-  const double factor = dissipative_constant_from(1.0, k);
+  const CarriedDissipativeConstant a = carried_dissipative_constant(fit, k);
   std::string out =
       fmt::format("{} from the fit {} ({} points{}): beta = {:.9g}{}; A = {:.9g} s{}{}\n", comment,
                   file.string(), fit.points, fit.sigma_estimated ? ", scatter estimated" : "", fit.beta,
-                  interval_words(fit, "95 %", fit.ci95), dissipative_constant_from(fit.beta, k),
-                  interval_words(fit, "68 %", scaled(fit.ci68, factor)),
-                  interval_words(fit, "95 %", scaled(fit.ci95, factor)));
-  if (!fit.rejected_because.empty()) out += fmt::format("{} {}\n", comment, rejection_text(fit));
+                  interval_words(fit, "95 %", fit.ci95), a.value_s, interval_words(fit, "68 %", a.ci68),
+                  interval_words(fit, "95 %", a.ci95));
+  if (!!fit.rejection.rejected()) out += fmt::format("{} {}\n", comment, rejection_text(fit));
   out += fmt::format("{} the law's eps{}, given by {}:\n", comment,
-                     fit.rejected_because.empty() ? " with the fit's uncertainty" : "", eps_given_by);
+                     !fit.rejection.rejected() ? " with the fit's uncertainty" : "", eps_given_by);
   for (const double v : speeds_m_s) {
     const EpsCarryOver e = eps_at_speed(fit, v);
     out += fmt::format("{}   v = {:<10.6g} m/s  eps = {:.6f}{}\n", comment, v, e.eps,
-                       fit.rejected_because.empty()
+                       !fit.rejection.rejected()
                            ? fmt::format(", 95 % {} (the fit's uncertainty)", interval_text(e.ci95))
                            : std::string());
   }
@@ -138,8 +159,8 @@ std::string fit_carry_over_text(const std::filesystem::path& file, const FitCarr
 
 void write_fit_carry_over(JsonWriter& json, const std::filesystem::path& file, const FitCarryOver& fit,
                           double k, const std::vector<double>& speeds_m_s, const std::string& eps_given_by) {
-  const double factor = dissipative_constant_from(1.0, k);
-  const bool intervals = fit.rejected_because.empty();
+  const CarriedDissipativeConstant a = carried_dissipative_constant(fit, k);
+  const bool intervals = !fit.rejection.rejected();
   json.key("from_fit").begin_object().field("file", file.string()).field("end", end_name(fit.end));
   json.field("sigma_estimated", fit.sigma_estimated);
   if (!intervals) write_rejection(json, fit);
@@ -148,10 +169,10 @@ void write_fit_carry_over(JsonWriter& json, const std::filesystem::path& file, c
     write_interval(json, "beta_ci68", fit.ci68);
     write_interval(json, "beta_ci95", fit.ci95);
   }
-  json.field("dissipative_constant_s", dissipative_constant_from(fit.beta, k));
+  json.field("dissipative_constant_s", a.value_s);
   if (intervals) {
-    write_interval(json, "dissipative_constant_ci68", scaled(fit.ci68, factor));
-    write_interval(json, "dissipative_constant_ci95", scaled(fit.ci95, factor));
+    write_interval(json, "dissipative_constant_ci68", a.ci68);
+    write_interval(json, "dissipative_constant_ci95", a.ci95);
   }
   json.field("eps_given_by", eps_given_by);
   json.key("eps").begin_array();

@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// What the viscoelastic Hertz fit of `fit-data --out FILE` (docs/fit.md, cli/dem/from_fit_file.hpp) gives
+// What the viscoelastic Hertz fit of `fit-data --out FILE` (docs/fit.md, fit/fit_report_reader.hpp) gives
 // `calibrate --from-fit` and `dem --from-fit`: β and its intervals, and what they give at one speed.
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "cli/dem/from_fit_file.hpp"
+#include "fit/fit_report_reader.hpp"
 
 namespace restitution::cli {
+
+// The report at `path` (fit/fit_report_reader.hpp); its InvalidInput names --from-fit FILE.
+FitCarryOver read_fit_result(const std::filesystem::path& path, std::optional<CollisionEnd> end);
 
 // ε at speed v [m/s] for the fit's β and its intervals (restitution/fit.hpp, fitted_eps_at_speed); its
 // InvalidInput for a β whose ζ lies outside the checked range names --from-fit FILE.
@@ -21,8 +24,8 @@ EpsCarryOver eps_at_speed(const FitCarryOver& fit, double velocity_m_s);
 namespace restitution::cli {
 // `calibrate --from-fit FILE --velocity V [material]`: the fit's β with its intervals, ε at V with the
 // interval β's carries over, g*, and with k the dissipative constant A with its intervals. Prints the table
-// or (json) one object; returns the exit status. When the fit rejects its Hertz fit (rejected_because) the
-// output says why (JSON `hertz_fit_rejected`) and gives no interval.
+// or (json) one object; returns the exit status. When the fit rejects its Hertz fit (FitCarryOver::rejection)
+// the output says why (JSON `hertz_fit_rejected`) and gives no interval.
 int calibrate_from_fit(const std::filesystem::path& file, std::optional<CollisionEnd> end,
                        double velocity_m_s, std::optional<double> k, bool json);
 }  // namespace restitution::cli

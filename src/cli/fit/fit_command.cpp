@@ -6,8 +6,7 @@
 #include <memory>
 #include <optional>
 
-#include "analysis/asymptotics.hpp"
-#include "analysis/power_law_fit.hpp"
+#include "analysis/power_law_study.hpp"
 #include "cli/common/build_json.hpp"
 #include "cli/common/commands.hpp"
 #include "cli/common/deprecated_alias.hpp"
@@ -29,16 +28,6 @@ struct PowerLawFitOptions {
   bool json = false;
 };
 
-struct DerivedLaw {
-  double exponent, prefactor;
-};
-
-DerivedLaw derived_law(CollisionEnd end) {
-  if (end == CollisionEnd::naive) return {asymptotics::kNaiveExponent, asymptotics::naive_prefactor().value};
-  return {asymptotics::kDelayedRecoveryExponent, asymptotics::delayed_recovery_prefactor()};
-}
-
-// A power law over a range gains nothing from more points than this; each point is two solves.
 constexpr long long kMaxFitPoints = 100000;
 constexpr long long kDefaultFitPoints = 9;  // of the old form without --points
 
@@ -74,23 +63,13 @@ std::vector<double> fit_zetas(const PowerLawFitOptions& o) {
 int run_fit(const PowerLawFitOptions& o) {
   const CollisionEnd end = end_from_name(o.end);
   const std::vector<double> zetas = fit_zetas(o);
-  require_checked_zeta(zetas.back());
-  CollisionSolver solver;
-  SolveOptions options;
-  options.tolerance = o.tolerance;
-  options.ends = EndSet{end};
-  std::vector<double> eps;
-  std::vector<LocalSlope> slopes;
-  {
-    ProgressLine progress("fit");
-    for (const double zeta : zetas) {
-      eps.push_back(end_of(solver.solve(ContactLaw::hertz_natural(zeta), options), end).eps);
-      slopes.push_back(local_slope(solver, zeta, end, kMinTolerance));
-      progress.update(eps.size(), zetas.size());
-    }
-  }
-  const PowerLawFit fit = fit_power_law(zetas, eps);
-  const DerivedLaw derived = derived_law(end);
+  const PowerLawStudy study = [&] {
+    ProgressLine progress("fit");  // ends its line before the results print
+    return power_law_study(zetas, end, o.tolerance, progress.callback());
+  }();
+  const PowerLawFit& fit = study.fit;
+  const std::vector<double>& eps = study.eps;
+  const std::vector<LocalSlope>& slopes = study.slopes;
   if (o.json) {
     JsonWriter json;
     json.begin_object()
@@ -106,7 +85,9 @@ int run_fit(const PowerLawFitOptions& o) {
         .field("zeta_max", zetas.back())
         .field("tolerance", o.tolerance);
     json.key("derived").begin_object();
-    json.field("exponent_zeta", derived.exponent).field("prefactor", derived.prefactor).end_object();
+    json.field("exponent_zeta", study.derived_exponent)
+        .field("prefactor", study.derived_prefactor)
+        .end_object();
     json.key("local_slopes").begin_array();
     for (std::size_t i = 0; i < slopes.size(); ++i) {
       const LocalSlope& s = slopes[i];
@@ -122,8 +103,8 @@ int run_fit(const PowerLawFitOptions& o) {
              zetas.back(), fit.points, o.tolerance);
   fmt::print("  fit:     eps = {:.10g} * zeta^({:.10g} +- {:.2g})  (velocity exponent {:.10g})\n",
              fit.prefactor, fit.exponent, fit.exponent_stderr, fit.exponent / 5.0);
-  fmt::print("  derived: eps = {:.10g} * zeta^({:.10g}) as zeta -> infinity\n", derived.prefactor,
-             derived.exponent);
+  fmt::print("  derived: eps = {:.10g} * zeta^({:.10g}) as zeta -> infinity\n", study.derived_prefactor,
+             study.derived_exponent);
   fmt::print("  {:>14} {:>20} {:>12}\n", "zeta", "d ln eps/d ln zeta", "error");
   for (const LocalSlope& s : slopes)
     fmt::print("  {:>14.6g} {:>20.12g} {:>12.2g}\n", s.zeta, s.slope, s.error_estimate);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "cli/common/build_json.hpp"
+#include "fit/best_hertz_fit.hpp"
 
 namespace restitution::cli {
 
@@ -74,19 +75,7 @@ void fit_object(JsonWriter& json, const LawFit& f) {
     write_interval(json, "dissipative_constant_ci68", f.dissipative_constant_ci68);
     write_interval(json, "dissipative_constant_ci95", f.dissipative_constant_ci95);
   }
-  json.key("model_eps").begin_array();
-  for (const double e : f.model_eps) json.value(e);
-  json.end_array().end_object();
-}
-
-// The viscoelastic Hertz fit with the lowest AIC: the one whose A a DEM code should take.
-const LawFit* best_hertz(const FitResult& r) {
-  const LawFit* best = nullptr;
-  for (const LawFit& f : r.fits) {
-    if (f.candidate.law != LawKind::viscoelastic_hertz || f.status != FitStatus::converged) continue;
-    if (best == nullptr || f.aic < best->aic) best = &f;
-  }
-  return best;
+  json.field("model_eps", f.model_eps).end_object();
 }
 
 }  // namespace
@@ -98,16 +87,8 @@ void write_fit_json(JsonWriter& json, const FitReportInput& in) {
   json.field("sigma_estimated", r.sigma_estimated);
   json.key("levels").begin_object().field("ci68", r.level68).field("ci95", r.level95).end_object();
   json.key("data").begin_object();
-  json.key("v").begin_array();
-  for (const double v : d.velocity_m_s) json.value(v);
-  json.end_array().key("eps").begin_array();
-  for (const double e : d.eps) json.value(e);
-  json.end_array();
-  if (!d.sigma.empty()) {
-    json.key("sigma").begin_array();
-    for (const double s : d.sigma) json.value(s);
-    json.end_array();
-  }
+  json.field("v", d.velocity_m_s).field("eps", d.eps);
+  if (!d.sigma.empty()) json.field("sigma", d.sigma);
   json.end_object();
   json.key("fits").begin_array();
   for (const LawFit& f : r.fits) fit_object(json, f);
@@ -124,11 +105,14 @@ void write_fit_json(JsonWriter& json, const FitReportInput& in) {
   json.end_array();
   if (in.k) {
     json.field("k", *in.k);
-    if (const LawFit* h = best_hertz(r); h != nullptr && h->dissipative_constant_s) {
+    // The Hertz fit whose A a DEM code should take.
+    const std::optional<std::size_t> hertz = best_hertz_fit(r);
+    if (hertz && r.fits[*hertz].dissipative_constant_s) {
+      const LawFit& h = r.fits[*hertz];
       json.key("dissipative_constant_s").begin_object();
-      json.field("end", end_name(h->candidate.end)).field("value", *h->dissipative_constant_s);
-      write_interval(json, "ci68", h->dissipative_constant_ci68);
-      write_interval(json, "ci95", h->dissipative_constant_ci95);
+      json.field("end", end_name(h.candidate.end)).field("value", *h.dissipative_constant_s);
+      write_interval(json, "ci68", h.dissipative_constant_ci68);
+      write_interval(json, "ci95", h.dissipative_constant_ci95);
       json.end_object();
     }
   }

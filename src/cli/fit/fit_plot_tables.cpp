@@ -4,19 +4,14 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <array>
-#include <cmath>
 #include <iterator>
 #include <limits>
 
 #include "cli/common/output_files.hpp"
-#include "restitution/collision_solver.hpp"
+#include "fit/fit_curves.hpp"
 
 namespace restitution::cli {
 namespace {
-
-constexpr int kCurvePoints = 101;  // speeds of the curves, log-spaced over the data's
 
 // law_end, e.g. viscoelastic-hertz_delayed-recovery: the one underscore separates the law from the end.
 std::string label(const LawFit& f) {
@@ -42,46 +37,17 @@ std::string fit_data_table(const FitData& d, const FitResult& r) {
   return csv;
 }
 
-// Each converged law's ε(v) at its best value and at the bounds of its 95 % interval (ε decreases with the
-// parameter: the upper bound gives the band's lower edge; a bound at the edge of the range gives none).
 std::string fit_curves_table(const FitData& d, const FitResult& r, const FitOptions& options) {
-  const auto [lo, hi] = std::minmax_element(d.velocity_m_s.begin(), d.velocity_m_s.end());
-  std::vector<const LawFit*> shown;
-  for (const LawFit& f : r.fits) {
-    if (f.status == FitStatus::converged) shown.push_back(&f);
-  }
-  CollisionSolver solver;
-  SolveOptions solve;
-  solve.tolerance = options.tolerance;
-  solve.method = options.method;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  // Columns of ε per law: best, low edge, high edge of the band.
-  std::vector<std::array<std::vector<double>, 3>> columns(shown.size());
-  std::vector<double> speeds(kCurvePoints);
-  for (int k = 0; k < kCurvePoints; ++k) {
-    speeds[k] = *lo * std::pow(*hi / *lo, static_cast<double>(k) / (kCurvePoints - 1));
-  }
-  for (std::size_t j = 0; j < shown.size(); ++j) {
-    const LawFit& f = *shown[j];
-    const std::array<double, 3> parameters{f.value, f.ci95.high_at_edge ? nan : f.ci95.high, f.ci95.low};
-    for (int c = 0; c < 3; ++c) {
-      auto eps_at = [&](double v) {
-        return std::isnan(parameters[c]) ? nan : fit_model_eps(f.candidate, parameters[c], v, solver, solve);
-      };
-      // A speed-independent law needs one solve per parameter.
-      const double constant = speed_independent(f.candidate.law) ? eps_at(1.0) : nan;
-      for (const double v : speeds)
-        columns[j][c].push_back(speed_independent(f.candidate.law) ? constant : eps_at(v));
-    }
-  }
+  const FitCurves curves = fit_curves(d, r, options);
   std::string csv = "v";
-  for (const LawFit* f : shown) csv += fmt::format(",eps_{0},low_{0},high_{0}", label(*f));
+  for (const FitCurve& c : curves.curves)
+    csv += fmt::format(",eps_{0},low_{0},high_{0}", label(r.fits[c.fit]));
   csv += "\n";
-  for (int k = 0; k < kCurvePoints; ++k) {
-    csv += number17(speeds[k]);
-    for (const auto& c : columns)
-      fmt::format_to(std::back_inserter(csv), ",{},{},{}", number17(c[0][k]), number17(c[1][k]),
-                     number17(c[2][k]));
+  for (std::size_t k = 0; k < curves.velocity_m_s.size(); ++k) {
+    csv += number17(curves.velocity_m_s[k]);
+    for (const FitCurve& c : curves.curves)
+      fmt::format_to(std::back_inserter(csv), ",{},{},{}", number17(c.eps[k]), number17(c.band_low[k]),
+                     number17(c.band_high[k]));
     csv += "\n";
   }
   return csv;

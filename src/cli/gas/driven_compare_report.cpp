@@ -2,38 +2,8 @@
 #include "cli/gas/driven_compare_report.hpp"
 
 #include <fmt/core.h>
-#include <fmt/format.h>
-
-#include "cli/gas/gas_compare_report.hpp"
-#include "gas_deck/gas_log.hpp"
-#include "restitution/errors.hpp"
 
 namespace restitution::cli {
-
-gas_deck::DrivenComparison compare_driven_logs(const std::vector<std::string>& logs,
-                                               const gas_deck::GasSetup& setup, const gas::Thermostat& bath,
-                                               double relaxation_time_s) {
-  std::vector<gas_deck::CoolingCurve> curves;
-  gas_deck::DrivenLog driven;
-  for (const auto& log : logs) {
-    gas_deck::GasLog read = gas_deck::read_gas_log_file(log);
-    for (const auto& note : read.notes) fmt::print(stderr, "restitution: note: {}\n", note);
-    for (const auto& curve : read.curves) gas_deck::check_gas_log_setup(curve.setup, setup.log, log);
-    curves.insert(curves.end(), read.curves.begin(), read.curves.end());
-    gas_deck::DrivenLog one = gas_deck::read_driven_log_file(log);
-    if (one.bath && driven.bath && one.bath->bath_temperature_j != driven.bath->bath_temperature_j) {
-      throw InvalidInput(
-          fmt::format("--compare: {} is the log of another bath than the logs before it", log));
-    }
-    if (one.bath) driven.bath = one.bath;
-    driven.runs.insert(driven.runs.end(), one.runs.begin(), one.runs.end());
-  }
-  if (curves.empty()) {
-    throw InvalidInput(fmt::format("--compare: no {} lines in {} (the output of a deck of gas --deck)",
-                                   gas_deck::kGasTag, fmt::format("{}", fmt::join(logs, ", "))));
-  }
-  return gas_deck::compare_driven(setup, bath, driven, curves, relaxation_time_s);
-}
 
 void print_driven_comparison_text(const gas_deck::DrivenComparison& c) {
   fmt::print(
@@ -73,14 +43,8 @@ void write_driven_comparison_json(JsonWriter& json, const gas_deck::DrivenCompar
     json.field("steady_a2", r.steady_a2.mean).field("steady_a2_error", r.steady_a2.error);
     json.field("theory_steady_a2", r.theory_steady_a2);
     json.field("relaxation_max_deviation", r.relaxation_max_deviation);
-    for (const auto& [name, values] :
-         {std::pair{"time_s", &r.time_s}, std::pair{"temperature_j", &r.temperature_j},
-          std::pair{"theory_temperature_j", &r.theory_temperature_j}}) {
-      json.key(name).begin_array();
-      for (const double v : *values) json.value(v);
-      json.end_array();
-    }
-    json.end_object();
+    json.field("time_s", r.time_s).field("temperature_j", r.temperature_j);
+    json.field("theory_temperature_j", r.theory_temperature_j).end_object();
   }
   json.end_array().end_object();
 }

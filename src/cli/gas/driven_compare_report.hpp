@@ -4,19 +4,10 @@
 // deck's runs against the kinetic theory (gas_deck/driven_comparison.hpp): the steady temperature and a₂ of
 // each run with their block-average error bars, the theory's at the collision-rate factor measured on the
 // constant-ε run, and the largest deviation of the relaxation T(t).
-#include <string>
-#include <vector>
-
 #include "cli/common/json_writer.hpp"
 #include "gas_deck/driven_comparison.hpp"
 
 namespace restitution::cli {
-
-// Reads every log (their temperature lines as compare_logs does, checked against `setup`, and their driven
-// lines) and compares them; InvalidInput as compare_logs, or for a log of another bath.
-gas_deck::DrivenComparison compare_driven_logs(const std::vector<std::string>& logs,
-                                               const gas_deck::GasSetup& setup, const gas::Thermostat& bath,
-                                               double relaxation_time_s);
 
 void print_driven_comparison_text(const gas_deck::DrivenComparison& c);
 void write_driven_comparison_json(JsonWriter& json, const gas_deck::DrivenComparison& c);

@@ -12,7 +12,6 @@
 #include <optional>
 #include <string>
 #include <system_error>
-#include <utility>
 #include <vector>
 
 #include "cli/common/build_json.hpp"
@@ -84,11 +83,7 @@ std::string json_text(const gas::CoolingRequest& r, const gas::CoolingCurve& c, 
   if (!c.a2_evolving) json.field("a2", c.a2);  // evolving: the array "a2" of the curve
   json.field("collision_rate_factor", r.collision_rate_factor).field("duration_s", c.duration_s);
   if (driving) add_driving_json(json, *driving);
-  for (const gas::CurveColumn& col : gas::curve_columns(c)) {
-    json.key(col.name).begin_array();
-    for (const double v : *col.values) json.value(v);
-    json.end_array();
-  }
+  for (const gas::CurveColumn& col : gas::curve_columns(c)) json.field(col.name, *col.values);
   if (!o.out.empty()) json.field("csv", o.out);
   if (!o.plot.empty()) json.field("plot", o.plot);
   return finish_json_document(json) + "\n";
@@ -166,15 +161,10 @@ int run_gas(const GasCommandOptions& o) {
   if (!o.out.empty() && !o.plot.empty()) check_outputs_apart({{"--out", o.out}, {"--plot", o.plot}}, {});
   const gas::CoolingRequest request = cooling_request(o.gas);
   const std::optional<gas::Thermostat> thermostat = thermostat_of(o.gas);
+  const gas::DrivenCurve theory = gas::gas_curve(request, thermostat);
+  const gas::CoolingCurve& curve = theory.curve;
   std::optional<Driving> driving;
-  gas::CoolingCurve curve;
-  if (thermostat) {
-    gas::DrivenCurve driven = gas::driven_curve({request, *thermostat});
-    curve = std::move(driven.curve);
-    driving = Driving{*thermostat, driven.steady};
-  } else {
-    curve = gas::cooling_curve(request);
-  }
+  if (thermostat) driving = Driving{*thermostat, theory.steady};
   write_files(request, curve, o);
   // One write: a stdout that cannot take it is reported once, as the I/O failure it is (main's flush).
   const std::string text =

@@ -2,30 +2,17 @@
 #include "cli/gas/gas_compare_report.hpp"
 
 #include <fmt/core.h>
-#include <fmt/ranges.h>
 
 #include <cstdio>
 
 #include "cli/common/output_files.hpp"
-#include "restitution/errors.hpp"
 #include "sweep/csv_field.hpp"
 #include "sweep/printable_name.hpp"
 
 namespace restitution::cli {
 
-gas_deck::GasComparison compare_logs(const std::vector<std::string>& logs, const gas_deck::GasSetup& setup) {
-  std::vector<gas_deck::CoolingCurve> curves;
-  for (const auto& log : logs) {
-    gas_deck::GasLog read = gas_deck::read_gas_log_file(log);
-    for (const auto& note : read.notes) fmt::print(stderr, "restitution: note: {}\n", note);
-    for (const auto& curve : read.curves) gas_deck::check_gas_log_setup(curve.setup, setup.log, log);
-    curves.insert(curves.end(), read.curves.begin(), read.curves.end());
-  }
-  if (curves.empty()) {
-    throw InvalidInput(fmt::format("--compare: no {} lines in {} (the output of a deck of gas --deck)",
-                                   gas_deck::kGasTag, fmt::format("{}", fmt::join(logs, ", "))));
-  }
-  return gas_deck::compare_with_theory(setup, curves);
+void print_log_note(const std::string& note) {
+  fmt::print(stderr, "restitution: note: {}\n", note);
 }
 
 void print_comparison_text(const gas_deck::GasComparison& c) {
@@ -52,13 +39,8 @@ void write_comparison_json(JsonWriter& json, const gas_deck::GasComparison& c) {
     json.begin_object().field("run", r.run).field("law", r.law);
     json.field("max_relative_deviation", r.max_relative_deviation).field("late_exponent", r.late_exponent);
     json.field("theory_late_exponent", r.theory_late_exponent).field("haff_times", r.haff_times);
-    json.key("time_s").begin_array();
-    for (double t : r.time_s) json.value(t);
-    json.end_array().key("temperature_j").begin_array();
-    for (double t : r.temperature_j) json.value(t);
-    json.end_array().key("theory_temperature_j").begin_array();
-    for (double t : r.theory_temperature_j) json.value(t);
-    json.end_array().end_object();
+    json.field("time_s", r.time_s).field("temperature_j", r.temperature_j);
+    json.field("theory_temperature_j", r.theory_temperature_j).end_object();
   }
   json.end_array();
 }

@@ -1,22 +1,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // `restitution gas --compare LOG...` (docs/gas.md, "The LAMMPS deck"): the runs of a gas deck read from
-// LAMMPS's logs or screen output, against the kinetic theory (gas_deck/gas_comparison.hpp): the largest
+// LAMMPS's logs or screen output, against the kinetic theory (gas_deck/compared_logs.hpp): the largest
 // relative deviation and the late exponents per run, the collision-rate factor measured on the constant-ε
 // run, and with an output folder a CSV and the plot (T(t)/T0 and the local exponent, both laws).
 #include <filesystem>
 #include <string>
-#include <vector>
 
 #include "cli/common/json_writer.hpp"
-#include "gas_deck/gas_comparison.hpp"
+#include "gas_deck/compared_logs.hpp"
 
 namespace restitution::cli {
 
-// Reads every log, streamed (gas_deck::read_gas_log_file), printing its notes on stderr, and checks that each
-// run belongs to `setup`: InvalidInput for a missing log, one that is not a regular file, a garbled one, one
-// of another gas (naming the field) or when none holds a deck's lines; IoError for one that cannot be read.
-gas_deck::GasComparison compare_logs(const std::vector<std::string>& logs, const gas_deck::GasSetup& setup);
+// Says a log's note (what it left out) on stderr, as the logs are read (gas_deck/compared_logs.hpp).
+void print_log_note(const std::string& note);
 
 void print_comparison_text(const gas_deck::GasComparison& c);
 void write_comparison_json(JsonWriter& json, const gas_deck::GasComparison& c);

@@ -83,10 +83,7 @@ void write_gas_deck_json(JsonWriter& json, const GasDeckPaths& paths, const gas_
   json.field("duration_s", d.duration_s).field("time_step_s", d.time_step_s);
   json.field("eps_error_worst", d.eps_error_worst).field("fast_speed_m_s", d.fast_speed_m_s);
   json.field("constant_eps", d.constant_eps).field("shear_critical_length_m", d.shear_critical_length_m);
-  json.field("shear_mode_growth", d.shear_mode_growth);
-  json.key("warnings").begin_array();
-  for (const auto& w : d.warnings) json.value(w);
-  json.end_array().end_object();
+  json.field("shear_mode_growth", d.shear_mode_growth).field("warnings", d.warnings).end_object();
 }
 
 }  // namespace restitution::cli

@@ -3,7 +3,6 @@
 
 #include <fmt/core.h>
 
-#include <cmath>
 #include <limits>
 
 #include "cli/common/build_json.hpp"
@@ -15,6 +14,7 @@
 #include "cli/gas/driven_compare_report.hpp"
 #include "cli/gas/gas_compare_report.hpp"
 #include "cli/gas/gas_deck_files.hpp"
+#include "gas_deck/gas_deck_request.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -62,41 +62,18 @@ constexpr std::size_t kQuietDeckParticles = 1'000'000;
 // five).
 constexpr std::size_t kMaxComparedLogs = 64;
 
-// The deck's request for the gas of `gas`: its spheres, law, T0 and duration (in Haff times of the theory's
-// τ0).
+// The deck's request for the gas of `gas`, its errors in the order the options are read.
 gas_deck::GasDeckRequest deck_request(const GasDeckOptions& o, const GasOptions& gas) {
-  const gas::GasInputs& in = gas.inputs;
-  if (law_from_name(in.law) != LawKind::viscoelastic_hertz)
-    throw InvalidInput("--deck and --compare: only --law viscoelastic-hertz (LAMMPS's damping viscoelastic)");
+  gas_deck::require_deck_law(gas.inputs.law);
   const gas::CoolingRequest theory = cooling_request(gas);
-  gas_deck::GasDeckRequest r;
+  gas_deck::DeckSettings settings{dem::kDefaultCode, o.particles, o.seed, o.max_eps_error};
   try {
-    r.code = dem::code_from_name(o.code);
+    settings.code = dem::code_from_name(o.code);
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("--code: {}", e.what()));
   }
-  r.material = material_from(material_options(gas));
-  r.damping = {in.dissipative_constant_s, in.eps, in.velocity_m_s};
-  r.end = end_from_name(in.end);
-  r.packing_fraction = theory.particles.packing_fraction;
-  r.rms_speed_m_s = std::sqrt(theory.initial_temperature_j / theory.particles.mass_kg);
-  r.duration_s =
-      theory.duration_in_haff_times ? theory.duration * gas::haff_reference(theory).tau0_s : theory.duration;
-  r.tolerance = in.tolerance;
-  r.particles = o.particles;
-  r.seed = o.seed;
-  r.max_eps_error = o.max_eps_error;
-  if (const std::optional<gas::Thermostat> thermostat = thermostat_of(gas)) {
-    if (thermostat->kind != gas::ThermostatKind::langevin) {
-      throw InvalidInput(
-          "--deck and --compare drive the gas with LAMMPS's fix langevin: give --thermostat langevin (white "
-          "noise is its limit of a long --bath-time at fixed --bath-temperature/--bath-time)");
-    }
-    const gas::SteadyState steady = gas::steady_state({theory, *thermostat});
-    r.bath = gas_deck::DeckBath{thermostat->bath_temperature_j, thermostat->bath_time_s,
-                                steady.relaxation_time_s, o.seed};
-  }
-  return r;
+  const Material material = material_from(material_options(gas));
+  return gas_deck::gas_deck_request(gas.inputs, theory, material, thermostat_of(gas), settings);
 }
 
 // Every file the command writes, with the option that names it.
@@ -147,38 +124,29 @@ int run_gas_deck(const GasDeckOptions& o, const GasOptions& gas, bool json) {
     deck = write_gas_deck(*paths, request);
     throw_if_interrupted();
   }
-  if (request.bath && !o.compare.empty()) {
-    const std::optional<gas::Thermostat> thermostat = thermostat_of(gas);
-    const gas_deck::DrivenComparison driven = compare_driven_logs(
-        o.compare, gas_deck::gas_setup(request), *thermostat, request.bath->relaxation_time_s);
-    if (json) {
-      JsonWriter w;
-      w.begin_object();
-      if (deck) write_gas_deck_json(w, *paths, *deck);
-      write_driven_comparison_json(w, driven);
-      fmt::print("{}\n", finish_json_document(w));
-    } else {
-      if (deck) print_gas_deck_text(*paths, *deck, request);
-      print_driven_comparison_text(driven);
-    }
-    return 0;
-  }
+  // A driven deck's logs are compared with the driven theory, a freely cooling one's with Haff's and ours.
+  std::optional<gas_deck::DrivenComparison> driven;
   std::optional<gas_deck::GasComparison> comparison;
-  std::string plot_warning;
-  if (!o.compare.empty()) {
-    comparison = compare_logs(o.compare, gas_deck::gas_setup(request));
-    if (o.compare_output) plot_warning = write_comparison_files(*o.compare_output, *comparison);
+  if (!o.compare.empty() && request.bath) {
+    driven = gas_deck::compare_driven_logs(o.compare, gas_deck::gas_setup(request), *thermostat_of(gas),
+                                           request.bath->relaxation_time_s, print_log_note);
+  } else if (!o.compare.empty()) {
+    comparison = gas_deck::compare_logs(o.compare, gas_deck::gas_setup(request), print_log_note);
+    const std::string warning =
+        o.compare_output ? write_comparison_files(*o.compare_output, *comparison) : "";
+    if (!warning.empty()) fmt::print(stderr, "restitution: warning: {}\n", warning);
   }
-  if (!plot_warning.empty()) fmt::print(stderr, "restitution: warning: {}\n", plot_warning);
   if (json) {
     JsonWriter w;
     w.begin_object();
     if (deck) write_gas_deck_json(w, *paths, *deck);
     if (comparison) write_comparison_json(w, *comparison);
+    if (driven) write_driven_comparison_json(w, *driven);
     fmt::print("{}\n", finish_json_document(w));
   } else {
     if (deck) print_gas_deck_text(*paths, *deck, request);
     if (comparison) print_comparison_text(*comparison);
+    if (driven) print_driven_comparison_text(*driven);
   }
   return 0;
 }

@@ -21,12 +21,6 @@
 namespace restitution::cli {
 namespace {
 
-void write_array(JsonWriter& json, const char* name, const std::vector<double>& values) {
-  json.key(name).begin_array();
-  for (const double v : values) json.value(v);
-  json.end_array();
-}
-
 void print_column(const char* name, int first_index, const std::vector<double>& values) {
   for (std::size_t i = 0; i < values.size(); ++i)
     fmt::print("  {}_{:<3} {:>25.17g}\n", name, first_index + static_cast<int>(i), values[i]);
@@ -43,9 +37,9 @@ int run_coefficients(const CoefficientsOptions& o) {
   JsonWriter json;
   json.begin_object().field("kind", o.kind);
   if (lists.size() == 1) {
-    write_array(json, "coefficients", lists[0].values);
+    json.field("coefficients", lists[0].values);
   } else {
-    for (const auto& list : lists) write_array(json, list.symbol.c_str(), list.values);
+    for (const auto& list : lists) json.field(list.symbol, list.values);
   }
   if (o.json) {
     fmt::print("{}\n", finish_json_document(json));

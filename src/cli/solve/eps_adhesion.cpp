@@ -3,6 +3,9 @@
 
 #include <fmt/core.h>
 
+#include <vector>
+
+#include "adhesion/adhesive_study.hpp"
 #include "cli/common/build_json.hpp"
 #include "cli/common/json_writer.hpp"
 
@@ -12,10 +15,8 @@ namespace {
 struct AdhesiveReport {
   AdhesiveContact contact;
   double tolerance = 0.0;
-  StickingSpeed sticking;
-  double elastic_work_j = 0.0, break_overlap = 0.0;
   std::optional<double> velocity;
-  std::optional<AdhesiveCollision> collision;
+  AdhesiveStudy study;  // one collision with the velocity
 };
 
 const char* damping_unit(AdhesiveModel model) {
@@ -40,11 +41,12 @@ void print_table(const AdhesiveReport& r) {
   fmt::print("  E* = {:.12g} Pa   R_eff = {:.12g} m   m_eff = {:.12g} kg   damping = {:.12g} {}\n",
              c.effective_modulus_pa, c.effective_radius_m, c.effective_mass_kg, c.damping,
              damping_unit(c.model));
-  fmt::print("  break overlap {:.12g} m   elastic hysteresis work {:.12g} J\n", r.break_overlap,
-             r.elastic_work_j);
-  fmt::print("  sticking speed v_s = {:.12g} m/s ({} solves)\n", r.sticking.speed_m_per_s, r.sticking.solves);
-  if (!r.collision) return;
-  const auto& e = *r.collision;
+  fmt::print("  break overlap {:.12g} m   elastic hysteresis work {:.12g} J\n", r.study.break_overlap_m,
+             r.study.elastic_hysteresis_work_j);
+  fmt::print("  sticking speed v_s = {:.12g} m/s ({} solves)\n", r.study.sticking.speed_m_per_s,
+             r.study.sticking.solves);
+  if (!r.velocity) return;
+  const auto& e = r.study.collisions.front();
   fmt::print("  at v = {:.12g} m/s: {}   eps = {:.15g}   1 - eps = {:.15g}\n", *r.velocity,
              adhesive_outcome_name(e.outcome), e.eps, e.one_minus_eps);
   fmt::print("  contact time {:.12g} s   maximal compression {:.12g} m\n", e.contact_time_s,
@@ -72,12 +74,12 @@ void print_json(const AdhesiveReport& r) {
   json.field("effective_mass_kg", c.effective_mass_kg);
   json.field(damping_key(c.model), c.damping);
   json.field("tolerance", r.tolerance);
-  json.field("break_overlap_m", r.break_overlap);
-  json.field("elastic_hysteresis_work_j", r.elastic_work_j);
-  json.field("sticking_speed_m_per_s", r.sticking.speed_m_per_s);
-  json.field("sticking_speed_solves", r.sticking.solves);
-  if (r.collision) {
-    const auto& e = *r.collision;
+  json.field("break_overlap_m", r.study.break_overlap_m);
+  json.field("elastic_hysteresis_work_j", r.study.elastic_hysteresis_work_j);
+  json.field("sticking_speed_m_per_s", r.study.sticking.speed_m_per_s);
+  json.field("sticking_speed_solves", r.study.sticking.solves);
+  if (r.velocity) {
+    const auto& e = r.study.collisions.front();
     json.field("velocity_m_per_s", *r.velocity);
     json.field("outcome", adhesive_outcome_name(e.outcome));
     json.field("eps", e.eps);
@@ -95,14 +97,10 @@ void print_json(const AdhesiveReport& r) {
 
 int run_adhesive_eps(const AdhesiveContact& contact, std::optional<double> velocity_m_per_s, double tolerance,
                      bool json) {
-  AdhesiveReport report;
-  report.contact = contact;
-  report.tolerance = tolerance;
-  report.velocity = velocity_m_per_s;
-  report.elastic_work_j = elastic_hysteresis_work_j(report.contact);
-  report.break_overlap = break_overlap_m(report.contact);
-  if (velocity_m_per_s) report.collision = solve_adhesive(report.contact, *velocity_m_per_s, tolerance);
-  report.sticking = sticking_speed(report.contact, tolerance);
+  std::vector<double> speeds;
+  if (velocity_m_per_s) speeds.push_back(*velocity_m_per_s);
+  const AdhesiveReport report{contact, tolerance, velocity_m_per_s,
+                              study_adhesive_contact(contact, speeds, tolerance)};
   if (json) {
     print_json(report);
   } else {

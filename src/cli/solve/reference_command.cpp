@@ -53,13 +53,11 @@ int run_reference(const ReferenceOptions& o) {
   const StopSignals signals;
   std::vector<ReferenceSolution> solutions;
   {
-    const std::vector<double> grid = reference_zeta_grid();
     ProgressLine progress("reference solutions");
-    for (const double zeta : grid) {
-      throw_if_interrupted();
-      solutions.push_back(hertz_reference(zeta));
-      progress.update(solutions.size(), grid.size());
-    }
+    solutions = hertz_references(reference_zeta_grid(), [&](std::size_t done, std::size_t total) {
+      progress.update(done, total);
+      if (done < total) throw_if_interrupted();
+    });
   }
   const std::filesystem::path path(o.out);
   write_file_atomically(path, reference_csv(solutions));

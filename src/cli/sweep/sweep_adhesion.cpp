@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "adhesion/adhesive_study.hpp"
 #include "cli/common/adhesion_options.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/common/output_files.hpp"
@@ -44,10 +45,10 @@ void refuse_other_forms(const SweepOptions& o) {
 }
 
 std::string table(const AdhesiveContact& contact, const std::vector<double>& speeds, double tolerance) {
-  const StickingSpeed sticking = sticking_speed(contact, tolerance);
+  const AdhesiveStudy study = study_adhesive_contact(contact, speeds, tolerance);
   std::string text = adhesive_table_header();
-  for (const double v : speeds)
-    text += adhesive_table_row(v, solve_adhesive(contact, v, tolerance), sticking.speed_m_per_s);
+  for (std::size_t i = 0; i < speeds.size(); ++i)
+    text += adhesive_table_row(speeds[i], study.collisions[i], study.sticking.speed_m_per_s);
   return text;
 }
 

@@ -7,11 +7,11 @@
 #include <utility>
 
 #include "cli/common/range_option.hpp"
-#include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 #include "restitution/sweep.hpp"
 #include "restitution/units.hpp"
+#include "sweep/velocity_sweep.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -39,8 +39,9 @@ PhysicalCoefficients physical_coefficients(const SweepOptions& o) {
   return {*o.stiffness, *o.damping_coefficient, *o.effective_mass};
 }
 
-// β (and k for a material) of the ε(v) forms; throws InvalidInput naming what is missing or mixed.
-SweepColumns velocity_subject(const SweepOptions& o, LawKind law, std::optional<double>& hertz_k) {
+// β (and k for a material) or the physical coefficients of the ε(v) forms; throws InvalidInput naming what is
+// missing or mixed.
+VelocitySubject velocity_subject(const SweepOptions& o, LawKind law) {
   if (o.zeta_min || o.zeta_max) {
     throw InvalidInput("give --zeta-range, or --velocity-range with --beta or a material, not both");
   }
@@ -49,8 +50,7 @@ SweepColumns velocity_subject(const SweepOptions& o, LawKind law, std::optional<
         fmt::format("an impact-speed sweep needs --velocity-min and --velocity-max (m/s): --{} is required",
                     o.velocity_min ? "velocity-max" : "velocity-min"));
   }
-  SweepColumns axis;
-  if (physical_form(o)) return axis;
+  if (physical_form(o)) return {std::nullopt, std::nullopt, physical_coefficients(o)};
   const bool material = o.material.any() || o.dissipative_constant;
   if (!has_dissipative_constant(law)) {
     throw InvalidInput(fmt::format(
@@ -69,8 +69,7 @@ SweepColumns velocity_subject(const SweepOptions& o, LawKind law, std::optional<
       throw InvalidInput(
           fmt::format("--beta must be a finite number >= 0 (s^(1/5) m^(-1/5)), got {}", *o.beta));
     }
-    axis.beta = *o.beta;
-    return axis;
+    return {*o.beta, std::nullopt, std::nullopt};
   }
   Material m = material_from(o.material);
   if (!o.dissipative_constant) {
@@ -80,19 +79,25 @@ SweepColumns velocity_subject(const SweepOptions& o, LawKind law, std::optional<
   }
   m.dissipative_constant_s = *o.dissipative_constant;
   const MaterialConstants c = material_constants(m);
-  axis.beta = c.hertz.beta;
-  hertz_k = c.hertz.k;
-  return axis;
+  return {c.hertz.beta, c.hertz.k, std::nullopt};
 }
 
-// ζ of each impact speed; throws InvalidInput naming the first speed whose ζ is outside the checked range.
-void check_zeta_of_velocity(double zeta, double v, const std::string& subject) {
-  if (zeta > kLargestCheckedZeta) {
+// --VARIABLE-range FROM:TO:N (when given) read into the old form's --VARIABLE-min, --VARIABLE-max and
+// --points, which must not be given beside it.
+void read_range(const std::string& text, const std::string& variable, const std::string& what,
+                std::optional<double>& min, std::optional<double>& max, long long& points) {
+  if (text.empty()) return;
+  if (min || max || points != 0) {
     throw InvalidInput(
-        fmt::format("velocity {} m/s with {} gives zeta = {:g}, outside the checked range 0 "
-                    "<= zeta <= {:g}",
-                    v, subject, zeta, kLargestCheckedZeta));
+        fmt::format("--{0}-range FROM:TO:N takes the place of --{0}-min, --{0}-max and --points: "
+                    "give it alone",
+                    variable));
   }
+  const RangeText range = parse_range(text, fmt::format("--{}-range", variable), what, 1,
+                                      static_cast<long long>(kMaxSweepPoints));
+  min = range.from;
+  max = range.to;
+  points = range.count;
 }
 
 }  // namespace
@@ -101,29 +106,9 @@ SweepOptions with_ranges(SweepOptions o) {
   if (!o.zeta_range.empty() && !o.velocity_range.empty()) {
     throw InvalidInput("give --zeta-range or --velocity-range, not both");
   }
-  if (!o.zeta_range.empty()) {
-    if (o.zeta_min || o.zeta_max || o.points != 0) {
-      throw InvalidInput(
-          "--zeta-range FROM:TO:N takes the place of --zeta-min, --zeta-max and --points: give it alone");
-    }
-    const RangeText range = parse_range(o.zeta_range, "--zeta-range", "zeta, N >= 1 points", 1,
-                                        static_cast<long long>(kMaxSweepPoints));
-    o.zeta_min = range.from;
-    o.zeta_max = range.to;
-    o.points = range.count;
-  }
-  if (!o.velocity_range.empty()) {
-    if (o.velocity_min || o.velocity_max || o.points != 0) {
-      throw InvalidInput(
-          "--velocity-range FROM:TO:N takes the place of --velocity-min, --velocity-max and --points: "
-          "give it alone");
-    }
-    const RangeText range = parse_range(o.velocity_range, "--velocity-range", "impact speeds in m/s, N >= 1",
-                                        1, static_cast<long long>(kMaxSweepPoints));
-    o.velocity_min = range.from;
-    o.velocity_max = range.to;
-    o.points = range.count;
-  }
+  read_range(o.zeta_range, "zeta", "zeta, N >= 1 points", o.zeta_min, o.zeta_max, o.points);
+  read_range(o.velocity_range, "velocity", "impact speeds in m/s, N >= 1", o.velocity_min, o.velocity_max,
+             o.points);
   return o;
 }
 
@@ -159,33 +144,17 @@ SweepGrid sweep_grid(const SweepOptions& o) {
     }
     return grid;
   }
-  std::optional<double> hertz_k;
-  SweepColumns axis = velocity_subject(o, grid.law, hertz_k);
-  const std::optional<PhysicalCoefficients> physical =
-      physical_form(o) ? std::optional(physical_coefficients(o)) : std::nullopt;
+  const VelocitySubject subject = velocity_subject(o, grid.law);
   // The speeds and their ζ: a bad end or a speed outside the checked range is named by the option typed.
   try {
-    axis.velocity_m_s = zeta_values({*o.velocity_min, *o.velocity_max, points, o.log, "velocity"});
-    for (const double v : axis.velocity_m_s) {
-      if (physical) {
-        const PhysicalCoefficients& c = *physical;
-        const double zeta =
-            ContactLaw::physical(grid.law, c.stiffness, c.damping, c.effective_mass_kg, v).zeta();
-        check_zeta_of_velocity(zeta, v, "these coefficients");
-        grid.zetas.push_back(zeta);
-        axis.scales.push_back(physical_scales(grid.law, c, v));
-      } else {
-        const double zeta = zeta_from(*axis.beta, v);
-        check_zeta_of_velocity(zeta, v, fmt::format("beta {}", *axis.beta));
-        grid.zetas.push_back(zeta);
-        if (hertz_k) axis.scales.push_back(natural_scales(*hertz_k, v));
-      }
-    }
+    VelocitySweep sweep = velocity_sweep(
+        grid.law, subject, zeta_values({*o.velocity_min, *o.velocity_max, points, o.log, "velocity"}));
+    grid.zetas = std::move(sweep.zetas);
+    grid.velocity = std::move(sweep.columns);
   } catch (const InvalidInput& e) {
     if (o.velocity_range.empty()) throw;
     throw InvalidInput(fmt::format("--velocity-range '{}': {}", o.velocity_range, e.what()));
   }
-  grid.velocity = std::move(axis);
   return grid;
 }
 

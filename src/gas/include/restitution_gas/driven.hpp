@@ -13,6 +13,8 @@
 //     2(μ₂ + a₂ μ₂') − (2/5)(μ₄ + a₂ μ₄') = 4γ a₂/ν,   ν = (4√π/3) n g₂ σ² √(T/m),
 // which for white noise and a constant ε is van Noije & Ernst's a₂ = 16(1 − ε)(1 − 2ε²)/(241 − 177ε
 // + 30ε²(1 − ε)).
+#include <optional>
+
 #include "restitution_gas/cooling.hpp"
 
 namespace restitution::gas {
@@ -60,5 +62,9 @@ struct DrivenCurve {
   SteadyState steady;
 };
 DrivenCurve driven_curve(const DrivenRequest& request);
+
+// The gas a front end describes: driven_curve with `thermostat`, else the freely cooling gas's cooling_curve
+// (its steady state left empty).
+DrivenCurve gas_curve(const CoolingRequest& request, const std::optional<Thermostat>& thermostat);
 
 }  // namespace restitution::gas

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/dem/from_fit_file.hpp"
+#include "fit/fit_report_reader.hpp"
 
 #include <fmt/core.h>
 
@@ -14,7 +14,9 @@
 #include "restitution/fit.hpp"
 #include "restitution/units.hpp"
 
-namespace restitution::cli {
+namespace restitution {
+// In a namespace of its own: the library compiles in unity batches, whose files share the anonymous one.
+namespace fit_report_reading {
 namespace {
 
 using Json = nlohmann::json;
@@ -59,7 +61,7 @@ class ReportReader {
   explicit ReportReader(std::string file) : file_(std::move(file)) {}
 
   [[noreturn]] void refuse(const std::string& key, const std::string& problem) const {
-    throw InvalidInput(fmt::format("--from-fit {}: {}: {}", file_, key, problem));
+    throw InvalidInput(fmt::format("{}: {}: {}", file_, key, problem));
   }
 
   const Json& member(const Json& object, const std::string& path, const char* key) const {
@@ -228,51 +230,26 @@ Entry read_entry(const ReportReader& r, const Json& fit, const std::string& path
   return e;
 }
 
-std::string fit_words(const Entry& e) {
-  return fmt::format("{}, {} end", law_name(e.law), end_name(e.end));
-}
-
-// The fit's own verdict on entry `chosen` (fit/fit_rejection.hpp), in words.
-std::vector<std::string> rejections(const std::vector<Entry>& fits, std::size_t chosen, std::size_t best,
-                                    const std::vector<std::size_t>& tied, bool sigma_estimated,
-                                    std::size_t points) {
-  std::vector<ReportedFit> reported;
-  for (const Entry& e : fits) reported.push_back({e.law, e.end, e.chi2, e.aic, e.verdict});
-  const FitRejection verdict = judge_reported_fit(reported, chosen, best, tied, sigma_estimated, points);
-  std::vector<std::string> out;
-  if (verdict.better_fit) {
-    const Entry& better = fits[*verdict.better_fit];
-    out.push_back(fmt::format("the fit's best law is {} (AIC {:.4g} against {:.4g})", fit_words(better),
-                              better.aic, fits[chosen].aic));
-  }
-  if (verdict.chi2_per_dof) {
-    out.push_back(fmt::format("chi2/dof = {:.4g} with the data's sigma (p = {:.2g} < {:g})",
-                              *verdict.chi2_per_dof, verdict.chi2_p_value, kFitSignificance));
-  }
-  if (!verdict.residual_trend.empty()) {
-    out.push_back(fmt::format("its residuals: {} at the 1 % level", verdict.residual_trend));
-  }
-  return out;
-}
-
 }  // namespace
+}  // namespace fit_report_reading
 
-FitCarryOver parse_fit_result(const std::string& text, const std::string& file,
+FitCarryOver parse_fit_report(const std::string& text, const std::string& file,
                               std::optional<CollisionEnd> end) {
+  using namespace fit_report_reading;
   const ReportReader r(file);
   Json j;
   try {
     j = Json::parse(text);
   } catch (const Json::parse_error& e) {
-    throw InvalidInput(fmt::format(
-        "--from-fit {}: not JSON (a fit-data report), the syntax breaks at byte {}", file, e.byte));
+    throw InvalidInput(
+        fmt::format("{}: not JSON (a fit-data report), the syntax breaks at byte {}", file, e.byte));
   } catch (const Json::exception&) {
     // The one other failure of parsing: a number beyond the range of a double (1e999).
-    throw InvalidInput(fmt::format("--from-fit {}: holds a number beyond the range of a double", file));
+    throw InvalidInput(fmt::format("{}: holds a number beyond the range of a double", file));
   }
   if (!j.is_object()) {
     throw InvalidInput(
-        fmt::format("--from-fit {}: must be one JSON object (a fit-data report), got {}", file, shown(j)));
+        fmt::format("{}: must be one JSON object (a fit-data report), got {}", file, shown(j)));
   }
   FitCarryOver out;
   out.file = file;
@@ -315,7 +292,7 @@ FitCarryOver parse_fit_result(const std::string& text, const std::string& file,
     if (!chosen || f.aic < fits[*chosen].aic) chosen = i;
   }
   if (!chosen) {
-    throw InvalidInput(fmt::format("--from-fit {}: no converged viscoelastic-hertz fit{}", file,
+    throw InvalidInput(fmt::format("{}: no converged viscoelastic-hertz fit{}", file,
                                    end ? fmt::format(" at the {} end", end_name(*end)) : std::string()));
   }
   const Entry& f = fits[*chosen];
@@ -323,29 +300,50 @@ FitCarryOver parse_fit_result(const std::string& text, const std::string& file,
   out.beta = f.value;
   out.ci68 = f.ci68;
   out.ci95 = f.ci95;
-  out.rejected_because = rejections(fits, *chosen, *best, tied, out.sigma_estimated, out.points);
+  for (const Entry& e : fits) out.fits.push_back({e.law, e.end, e.chi2, e.aic, e.verdict});
+  out.chosen = *chosen;
+  out.rejection = judge_reported_fit(out.fits, *chosen, *best, tied, out.sigma_estimated, out.points);
   return out;
 }
 
-FitCarryOver read_fit_result(const std::filesystem::path& path, std::optional<CollisionEnd> end) {
+FitCarryOver read_fit_report(const std::filesystem::path& path, std::optional<CollisionEnd> end) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
-    throw InvalidInput(fmt::format("--from-fit {}: is a folder, not a fit-data report", path.string()));
+    throw InvalidInput(fmt::format("{}: is a folder, not a fit-data report", path.string()));
   }
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidInput(fmt::format("--from-fit {}: cannot be read", path.string()));
+  if (!in) throw InvalidInput(fmt::format("{}: cannot be read", path.string()));
   // Read in pieces up to the bound, so that an endless or huge file costs no more than the bound.
   std::string text;
   std::array<char, 1 << 16> buffer{};
   while (in.read(buffer.data(), buffer.size()) || in.gcount() > 0) {
     text.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxFitFileBytes) {
-      throw InvalidInput(fmt::format("--from-fit {}: larger than {} MiB, not a fit-data report",
-                                     path.string(), kMaxFitFileBytes >> 20));
+    if (text.size() > kMaxFitReportBytes) {
+      throw InvalidInput(fmt::format("{}: larger than {} MiB, not a fit-data report", path.string(),
+                                     kMaxFitReportBytes >> 20));
     }
   }
-  if (in.bad()) throw InvalidInput(fmt::format("--from-fit {}: cannot be read", path.string()));
-  return parse_fit_result(text, path.string(), end);
+  if (in.bad()) throw InvalidInput(fmt::format("{}: cannot be read", path.string()));
+  return parse_fit_report(text, path.string(), end);
 }
 
-}  // namespace restitution::cli
+FittedEps carried_eps_at_speed(const FitCarryOver& fit, double velocity_m_s) {
+  try {
+    return fitted_eps_at_speed(fit.beta, fit.ci68, fit.ci95, fit.end, velocity_m_s);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(
+        fmt::format("{}: beta = {} at v = {} m/s: {}", fit.file, fit.beta, velocity_m_s, e.what()));
+  }
+}
+
+CarriedDissipativeConstant carried_dissipative_constant(const FitCarryOver& fit, double k) {
+  const double factor = dissipative_constant_from(1.0, k);
+  const auto scaled = [factor](FitInterval interval) {
+    if (!interval.low_at_edge) interval.low *= factor;
+    if (!interval.high_at_edge) interval.high *= factor;
+    return interval;
+  };
+  return {dissipative_constant_from(fit.beta, k), scaled(fit.ci68), scaled(fit.ci95)};
+}
+
+}  // namespace restitution
