@@ -20,6 +20,8 @@
 #include "restitution/series.hpp"
 #include "restitution/units.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_dem.hpp"
+#include "scene/scene_sections.hpp"
 
 namespace restitution {
 namespace {
@@ -359,9 +361,9 @@ TEST(DemScene, ParsesATaskAndNamesWhatIsWrong) {
       std::string(kSceneHead) +
           "[[dem]]\nname = \"d\"\ncode = \"yade\"\nmaterial = \"rubber\"\nspeeds = [1, 2]\n",
       "dem.toml");
-  ASSERT_EQ(s.dems.size(), 1U);
-  EXPECT_EQ(s.dems[0].code, dem::Code::yade);
-  EXPECT_EQ(s.dems[0].end, CollisionEnd::delayed_recovery);
+  ASSERT_EQ(scene::tasks_of<scene::DemTask>(s, "dem").size(), 1U);
+  EXPECT_EQ(scene::tasks_of<scene::DemTask>(s, "dem")[0]->code, dem::Code::yade);
+  EXPECT_EQ(scene::tasks_of<scene::DemTask>(s, "dem")[0]->end, CollisionEnd::delayed_recovery);
   EXPECT_NE(scene_error("code = \"gromacs\"\nmaterial = \"rubber\"\nspeeds = [1]\n").find("code"),
             std::string::npos);
   EXPECT_NE(scene_error("code = \"lammps\"\nspeeds = [1]\n").find("material"), std::string::npos);
@@ -371,7 +373,7 @@ TEST(DemScene, ParsesATaskAndNamesWhatIsWrong) {
   EXPECT_NE(scene_error("code = \"lammps\"\nmaterial = \"rubber\"\n").find("speeds"), std::string::npos);
   EXPECT_NE(scene_error("code = \"lammps\"\nmaterial = \"rubber\"\nspeeds = [-1]\n").find("speeds"),
             std::string::npos);
-  EXPECT_EQ(s.dems[0].friction, 0.0);
+  EXPECT_EQ(scene::tasks_of<scene::DemTask>(s, "dem")[0]->friction, 0.0);
   EXPECT_NE(scene_error("code = \"lammps\"\nmaterial = \"rubber\"\nspeeds = [1]\nfriction = -0.5\n")
                 .find("friction"),
             std::string::npos);
@@ -379,7 +381,7 @@ TEST(DemScene, ParsesATaskAndNamesWhatIsWrong) {
       std::string(kSceneHead) +
           "[[dem]]\nname = \"d\"\ncode = \"lammps\"\nmaterial = \"rubber\"\nspeeds = [1]\nfriction = 0.5\n",
       "dem.toml");
-  EXPECT_EQ(rough.dems[0].friction, 0.5);
+  EXPECT_EQ(scene::tasks_of<scene::DemTask>(rough, "dem")[0]->friction, 0.5);
 }
 
 }  // namespace

@@ -15,6 +15,8 @@
 #include "material_examples.hpp"
 #include "restitution/errors.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_dem.hpp"
+#include "scene/scene_sections.hpp"
 
 namespace restitution {
 namespace {
@@ -192,8 +194,8 @@ TEST(DemCodes, ScenesHoldTheCode) {
             "[[dem]]\nname = \"d\"\ncode = \"") +
         e.name + "\"\nmaterial = \"rubber\"\nspeeds = [1]\n";
     const scene::Scene s = scene::parse_scene(text, "codes.toml");
-    ASSERT_EQ(s.dems.size(), 1U);
-    EXPECT_EQ(s.dems[0].code, e.code) << e.name;
+    ASSERT_EQ(scene::tasks_of<scene::DemTask>(s, "dem").size(), 1U);
+    EXPECT_EQ(scene::tasks_of<scene::DemTask>(s, "dem")[0]->code, e.code) << e.name;
   }
 }
 

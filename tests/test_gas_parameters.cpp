@@ -13,6 +13,8 @@
 #include "restitution/errors.hpp"
 #include "restitution_gas/gas_parameters.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_gas.hpp"
+#include "scene/scene_sections.hpp"
 
 namespace restitution::gas {
 namespace {
@@ -74,7 +76,7 @@ TEST(GasParameters, ASceneReadsEveryKeyIntoItsMemberWithItsRange) {
     if (f.from_material) continue;
     SCOPED_TRACE(f.name);
     const scene::Scene s = scene::parse_scene(scene_with(f, valid_value(f)), "gas.toml");
-    EXPECT_EQ(read_back(f, s.gases.at(0).inputs), expected(f));
+    EXPECT_EQ(read_back(f, scene::tasks_of<scene::GasTask>(s, "gas").at(0)->inputs), expected(f));
     if (!f.range) continue;
     try {
       (void)scene::parse_scene(scene_with(f, "-1.0"), "gas.toml");

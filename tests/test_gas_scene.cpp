@@ -11,6 +11,8 @@
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_gas.hpp"
+#include "scene/scene_sections.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -44,9 +46,9 @@ std::string error_of(const std::string& text) {
 TEST(GasScene, ReadsTheSection) {
   const Scene s =
       parse_scene(kHead + kGas + "eps = 0.8\nvelocity = 2.0\nlaw = \"tsuji-hertz\"\n", "gas.toml");
-  ASSERT_EQ(s.gases.size(), 1U);
-  EXPECT_EQ(s.gases[0].material, "pe");
-  const gas::GasInputs& g = s.gases[0].inputs;
+  ASSERT_EQ(tasks_of<GasTask>(s, "gas").size(), 1U);
+  EXPECT_EQ(tasks_of<GasTask>(s, "gas")[0]->material, "pe");
+  const gas::GasInputs& g = tasks_of<GasTask>(s, "gas")[0]->inputs;
   EXPECT_EQ(g.law, "tsuji-hertz");
   EXPECT_EQ(*g.eps, 0.8);
   EXPECT_EQ(*g.velocity_m_s, 2.0);
@@ -54,8 +56,8 @@ TEST(GasScene, ReadsTheSection) {
   EXPECT_EQ(*g.rms_speed_m_s, 1.0);
   EXPECT_EQ(*g.haff_times, 100.0);
   EXPECT_FALSE(g.duration_s);
-  EXPECT_FALSE(g.radius_m);                // the material's, when the section runs
-  EXPECT_FALSE(s.gases[0].own_tolerance);  // the scene's, as run
+  EXPECT_FALSE(g.radius_m);                                     // the material's, when the section runs
+  EXPECT_FALSE(tasks_of<GasTask>(s, "gas")[0]->own_tolerance);  // the scene's, as run
 }
 
 TEST(GasScene, RefusesBadKeysByName) {
@@ -73,7 +75,8 @@ TEST(GasScene, RefusesBadKeysByName) {
 
 TEST(GasScene, ReadsTheSonineCoefficientInTheCommandsWords) {
   const auto inputs = [](const std::string& key) {
-    return parse_scene(kHead + kGas + key, "gas.toml").gases[0].inputs;
+    const Scene s = parse_scene(kHead + kGas + key, "gas.toml");
+    return tasks_of<GasTask>(s, "gas")[0]->inputs;
   };
   EXPECT_FALSE(inputs("").a2);
   EXPECT_FALSE(inputs("").a2_of_haff_eps || inputs("").a2_evolving);
@@ -104,9 +107,9 @@ TEST(GasScene, EvolvingSonineCoefficientIsAColumnOfTheSectionsTable) {
 TEST(GasScene, ThermostatKeysDriveTheGasToItsSteadyState) {
   const std::string driven = kHead + kGas + "eps = 0.8\nvelocity = 2.0\nthermostat = \"langevin\"\n";
   const Scene s = parse_scene(driven + "bath_temperature = 1e-3\nbath_time = 0.5\n", "gas.toml");
-  EXPECT_EQ(s.gases[0].inputs.thermostat, "langevin");
-  EXPECT_EQ(*s.gases[0].inputs.bath_temperature_j, 1e-3);
-  EXPECT_EQ(*s.gases[0].inputs.bath_time_s, 0.5);
+  EXPECT_EQ(tasks_of<GasTask>(s, "gas")[0]->inputs.thermostat, "langevin");
+  EXPECT_EQ(*tasks_of<GasTask>(s, "gas")[0]->inputs.bath_temperature_j, 1e-3);
+  EXPECT_EQ(*tasks_of<GasTask>(s, "gas")[0]->inputs.bath_time_s, 0.5);
   EXPECT_NE(error_of(kHead + kGas + "thermostat = \"shaker\"\n").find("thermostat"), std::string::npos);
   EXPECT_NE(error_of(driven + "bath_time = -1\n").find("bath_time"), std::string::npos);
   const test_support::TempFolder folder;

@@ -15,6 +15,7 @@
 #include "cli_runner.hpp"
 #include "restitution/errors.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_oblique.hpp"
 #include "scene/scene_sections.hpp"
 
 namespace restitution::scene {

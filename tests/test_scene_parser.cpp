@@ -10,6 +10,8 @@
 #include "restitution/material.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_plan.hpp"
+#include "scene/scene_sections.hpp"
+#include "scene/scene_studies.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -71,7 +73,7 @@ zeta = [1, 10]
   EXPECT_EQ(*s.trajectories[0].zeta, 2.0);
   EXPECT_EQ(s.calibrations[0].end, CollisionEnd::delayed_recovery);
   EXPECT_EQ(s.dashpots[0].damping_ratio.size(), 2U);
-  EXPECT_EQ(s.studies[0].kind, "stability");
+  EXPECT_EQ(tasks_of<ExternalStudy>(s, "stability")[0]->kind, "stability");
 }
 
 TEST(SceneParser, UnknownKeysNameFileLineAndKey) {

@@ -161,9 +161,10 @@ TEST(SceneResults, EmpiricalDeviationIsTheLargestWhereTheLawIsACoefficient) {
 TEST(SceneResults, StabilitySummaryIsTheWorstOverTheReport) {
   const Scene s = parse_scene("output = \"o\"\ntolerance = 1e-8\n[[stability]]\nzeta = [0.5, 50]\n", "t");
   const SceneResults r = run(s);
-  ASSERT_EQ(r.studies.size(), 1U);
-  ASSERT_TRUE(r.studies[0].stability.has_value());
-  const StabilitySummary& summary = *r.studies[0].stability;
+  ASSERT_EQ(r.sections.size(), 1U);
+  const auto& study = std::any_cast<const StudyOutcome&>(r.sections[0]);
+  ASSERT_TRUE(study.stability.has_value());
+  const StabilitySummary& summary = *study.stability;
   StabilityOptions options;
   options.tolerance = 1e-8;
   const StabilityReport report = stability_report({0.5, 50.0}, options);

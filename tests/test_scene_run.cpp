@@ -16,6 +16,8 @@
 #include "scene/scene.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/scene_run.hpp"
+#include "scene/scene_sections.hpp"
+#include "scene/scene_studies.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -158,12 +160,12 @@ TEST(SceneRun, WorkPrecisionStudyMeasuresAgainstTheReferenceAndSummarises) {
       "output = \"o\"\n[[work_precision]]\nname = \"wp\"\nengines = [\"taylor\", \"bdf\"]\nrepeats = 2\n",
       "t");
   make_quick(s, 6);
-  EXPECT_EQ(s.studies[0].repeats, 1);
+  EXPECT_EQ(tasks_of<ExternalStudy>(s, "work_precision")[0]->repeats, 1);
   RunSettings settings;
   settings.reference_file = reference_file_in(RESTITUTION_SOURCE_DIR);
   const SceneResults r = run_scene(s, plan_scene(s), settings);
-  ASSERT_EQ(r.studies.size(), 1U);
-  const StudyOutcome& study = r.studies[0];
+  ASSERT_EQ(r.sections.size(), 1U);
+  const auto& study = std::any_cast<const StudyOutcome&>(r.sections[0]);
   // The same points as the work-precision module measures on its own (timings aside).
   const auto direct =
       measure_work_precision(read_reference_file(settings.reference_file), 1, {"taylor", "bdf"});
@@ -199,9 +201,10 @@ TEST(SceneRun, WorkPrecisionStudyMeasuresAgainstTheReferenceAndSummarises) {
 TEST(SceneRun, StudiesWithoutInputSayWhy) {
   const Scene s = parse_scene("output = \"o\"\n[[work_precision]]\nname = \"wp\"\n", "t");
   const SceneResults r = run_scene(s, plan_scene(s));  // no reference file in the settings
-  ASSERT_EQ(r.studies.size(), 1U);
-  EXPECT_EQ(r.studies[0].gap, StudyGap::no_reference_file);
-  EXPECT_TRUE(r.studies[0].work_precision.empty());
+  ASSERT_EQ(r.sections.size(), 1U);
+  const auto& study = std::any_cast<const StudyOutcome&>(r.sections[0]);
+  EXPECT_EQ(study.gap, StudyGap::no_reference_file);
+  EXPECT_TRUE(study.work_precision.empty());
 }
 
 TEST(SceneRun, WorkPrecisionStudyRejectsUnknownEnginesAndBadRepeats) {

@@ -9,12 +9,17 @@
 #include <string>
 
 #include "cli/scene/scene_section_writers.hpp"
+#include "cli/scene/scene_text.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_adhesion.hpp"
 #include "scene/scene_adhesion_run.hpp"
+#include "scene/scene_damping_check.hpp"
+#include "scene/scene_dem.hpp"
+#include "scene/scene_fit.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/scene_run.hpp"
 #include "scene/scene_sections.hpp"
+#include "scene/scene_studies.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -30,13 +35,15 @@ TEST(SceneSections, EveryKindHasAWriterAndEveryWriterAKind) {
     EXPECT_EQ(find_section_kind(kind.name), &kind);
     const cli::SectionWriter* writer = cli::find_section_writer(kind.name);
     ASSERT_NE(writer, nullptr) << "[[" << kind.name << "]] is parsed but has no writer";
-    EXPECT_NE(writer->write, nullptr) << kind.name;
+    // One way of writing each: in the file's order, or together with the rows sharing the function.
+    EXPECT_NE(writer->write == nullptr, writer->write_together == nullptr) << kind.name;
   }
   EXPECT_FALSE(kinds.empty());
   for (const cli::SectionWriter& writer : cli::section_writers()) {
     EXPECT_TRUE(kinds.contains(writer.name)) << "a writer for [[" << writer.name << "]], which no row parses";
   }
-  EXPECT_EQ(find_section_kind("sweep"), nullptr);  // the planner's sections keep their own members
+  for (const char* planned : {"sweep", "trajectory", "dashpot", "calibration"})
+    EXPECT_EQ(find_section_kind(planned), nullptr);  // the planner's sections keep their own members
   EXPECT_EQ(cli::find_section_writer("no_such_section"), nullptr);
 }
 
@@ -77,6 +84,78 @@ speeds = [2.0]
   ASSERT_EQ(second.collisions.size(), 1U);
   EXPECT_EQ(second.contact.model, AdhesiveModel::jkr_lammps);
   EXPECT_EQ(second.collisions[0].outcome, AdhesiveOutcome::bounced);  // 2 m/s > v_s = 0.78 m/s
+}
+
+constexpr const char* kSteelScene = R"(output = "out/s"
+tolerance = 1e-8
+[materials.steel]
+young_modulus = 2.1e11
+poisson_ratio = 0.3
+density = 7850.0
+radius = 0.005
+dissipative_constant = 5.8e-7
+)";
+
+// Every kind that used to be a member of Scene is a row now: read in the table's order (unnamed sections are
+// numbered in it, whatever the file's order), thinned and run through its row into its own outcome type.
+TEST(SceneSections, TheFormerMembersAreRowsRunIntoTheirOutcomes) {
+  Scene s = parse_scene(std::string(kSteelScene) + R"([[stability]]
+zeta = [0.1, 0.5, 1.0]
+[[fit]]
+v = [0.1, 0.3, 1.0, 3.0]
+eps = [0.95, 0.93, 0.9, 0.87]
+[[damping_check]]
+recipes = ["pade-1-4"]
+eps = [0.3, 0.5, 0.9]
+speeds = [0.1, 1.0]
+[[dem]]
+code = "lammps"
+material = "steel"
+speeds = [0.3, 1.0, 3.0]
+run = false
+)",
+                        "s.toml");
+  std::vector<std::string> order;
+  for (const SectionTask& section : s.sections) order.push_back(section.kind + ":" + section.name);
+  // The table's order, numbered in it: dem, damping_check, ..., fit, work_precision, stability.
+  EXPECT_EQ(order, (std::vector<std::string>{"dem:dem1", "damping_check:damping_check2", "fit:fit3",
+                                             "stability:stability4"}));
+  EXPECT_EQ(s.sections[0].line, 18);  // of [[dem]]
+  make_quick(s, 2);
+  EXPECT_EQ(tasks_of<DemTask>(s, "dem")[0]->speeds, (std::vector<double>{0.3, 3.0}));
+  EXPECT_EQ(tasks_of<DampingCheckTask>(s, "damping_check")[0]->eps, (std::vector<double>{0.3, 0.9}));
+  EXPECT_EQ(tasks_of<ExternalStudy>(s, "stability")[0]->zeta, (std::vector<double>{0.1, 1.0}));
+  EXPECT_EQ(tasks_of<FitTask>(s, "fit")[0]->data.velocity_m_s.size(), 4U);  // measured data are kept whole
+  const SceneResults results = run_scene(s, plan_scene(s));
+  ASSERT_EQ(results.sections.size(), 4U);
+  const auto& dem = std::any_cast<const DemOutcome&>(results.sections[0]);
+  EXPECT_EQ(dem.comparison.predicted_eps.size(), 2U);
+  EXPECT_FALSE(dem.comparison.measured.has_value());  // run = false
+  const auto& grid = std::any_cast<const damping_check::GridResult&>(results.sections[1]);
+  EXPECT_FALSE(grid.recipes.empty());
+  const auto& fit = std::any_cast<const FitOutcome&>(results.sections[2]);
+  EXPECT_EQ(fit.options.tolerance, s.tolerance);  // the scene's
+  EXPECT_FALSE(fit.result.fits.empty());
+  const auto& study = std::any_cast<const StudyOutcome&>(results.sections[3]);
+  ASSERT_TRUE(study.stability.has_value());
+  EXPECT_EQ(study.stability->tolerance, s.tolerance);
+}
+
+// Rows with the same words for the report's account of the work are named once: [[dem]] and
+// [[damping_check]] share theirs.
+TEST(SceneSections, SharedFooterWordsAreNamedOnce) {
+  const Scene s = parse_scene(std::string(kSteelScene) + R"([[damping_check]]
+recipes = ["pade-1-4"]
+[[dem]]
+code = "lammps"
+material = "steel"
+speeds = [1.0]
+)",
+                              "s.toml");
+  EXPECT_TRUE(has_sections(s, "dem"));
+  EXPECT_FALSE(has_sections(s, "gas"));
+  EXPECT_EQ(cli::own_collisions_text(s),
+            "not counted here: the [[dem]] and [[damping_check]] sections solve their own collisions");
 }
 
 }  // namespace

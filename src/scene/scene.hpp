@@ -12,14 +12,10 @@
 #include <string_view>
 #include <vector>
 
-#include "dem/dem_codes.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/material.hpp"
 #include "restitution/series.hpp"
-#include "restitution_gas/gas_inputs.hpp"
-#include "scene/scene_fit.hpp"
-#include "scene/scene_oblique.hpp"
 
 namespace restitution::scene {
 
@@ -103,60 +99,6 @@ struct DashpotCheck {
   int line = 0;
 };
 
-// Studies whose engines live in other modules: the stability report at the given ζ values, or the
-// work-precision measurement (every tolerance each engine accepts on the reference grid's fixed ζ set).
-struct ExternalStudy {
-  std::string kind;  // "work_precision" | "stability"
-  std::string name;
-  std::vector<double> zeta;  // stability: the points
-  // work_precision: engines measured (work_precision_engines() names)
-  std::vector<std::string> engines = {method_name(Method::taylor), method_name(Method::adams),
-                                      method_name(Method::bdf)};
-  int repeats = 3;  // work_precision: timed solves per point (the median is kept)
-  int line = 0;
-};
-inline constexpr int kMaxStudyRepeats = 100;  // = kMaxWorkPrecisionRepeats (reference/work_precision.hpp)
-
-// Input lines for a DEM code (docs/dem.md) and the ε(v) they give; LAMMPS and LIGGGHTS are also run on them
-// and their measured ε(v) plotted against restitution's.
-struct DemTask {
-  std::string name;
-  std::string title;
-  dem::Code code = dem::kDefaultCode;
-  std::string material;                // a [materials.X] of this scene
-  std::optional<double> eps;           // with velocity: calibrate A; without: the material's A
-  std::optional<double> velocity_m_s;  // the calibration speed (YADE's vn; default 1 m/s)
-  CollisionEnd end = CollisionEnd::delayed_recovery;
-  std::vector<double> speeds;  // impact speeds of the comparison [m/s]
-  bool run_code = true;        // LAMMPS and LIGGGHTS: run the code at each speed
-  double friction = 0.0;       // Coulomb mu of the tangential model [1]; 0: frictionless
-  int line = 0;
-};
-
-// The damping recipes of DEM codes (docs/damping.md): the ε each recipe really gives against the requested
-// one, clamp on and off, and the relative error over requested ε × impact speed for the speed-dependent ones.
-struct DampingCheckTask {
-  std::string name;
-  std::string title;
-  std::vector<std::string> recipes;  // recipe names (damping_check/recipes.hpp); default: every recipe
-  std::vector<double> eps;           // requested ε in (0, 1); default 0.05, 0.10, ..., 0.95, 0.99
-  double velocity_m_s = 1.0;         // reference speed of the speed-dependent recipes [m/s]
-  std::vector<double> speeds;        // impact speeds of the error maps [m/s]; default 0.1 to 10, 9 points
-  int line = 0;
-};
-
-// The freely cooling or driven gas of a material's spheres from kinetic theory (docs/gas.md): T(t) and the
-// local exponent of the law's eps(v) beside Haff's law of a constant eps. The keys are the gas study's table
-// (restitution_gas/gas_parameters.hpp) but for the spheres', which come from the material when it runs.
-struct GasTask {
-  std::string name;
-  std::string title;
-  std::string material;  // a [materials.X]: radius, density or mass (and A without eps)
-  gas::GasInputs inputs;
-  bool own_tolerance = false;  // false: the scene's tolerance, as run (--quick loosens it), not inputs'
-  int line = 0;
-};
-
 // A section of a kind in the table of scene_sections.hpp: its task, of the kind's own type.
 struct SectionTask {
   std::string kind;  // the row's name, [[kind]] in the file
@@ -178,14 +120,10 @@ struct Scene {
   std::vector<Trajectory> trajectories;
   std::vector<CalibrationTask> calibrations;
   std::vector<DashpotCheck> dashpots;
-  std::vector<ExternalStudy> studies;
-  std::vector<DemTask> dems;
-  std::vector<DampingCheckTask> damping_checks;
-  std::vector<FitTask> fits;          // [[fit]]: measured eps(v) (scene_fit.hpp)
-  std::vector<GasTask> gases;         // [[gas]]
   std::vector<std::string> warnings;  // a key read by its old name, each naming the new one
-  // The sections of the table of kinds (scene_sections.hpp: [[oblique]], [[adhesion]]), by kind in the
-  // table's order, each kind's in file order.
+  // Every other section, of a kind of the table (scene_sections.hpp: [[dem]], [[damping_check]], [[gas]],
+  // [[oblique]], [[adhesion]], [[fit]], [[work_precision]], [[stability]]), by kind in the table's order,
+  // each kind's in file order.
   std::vector<SectionTask> sections;
 };
 
@@ -195,7 +133,7 @@ Scene parse_scene(std::string_view toml_text, std::string_view file_name);
 // Reads the file and parses it. Throws InvalidInput naming the file when it cannot be read.
 Scene load_scene(const std::filesystem::path& path);
 
-// Caps every sweep, dash-pot, stability and table-section range at `points` values (first and last kept) and
+// Caps every sweep, dash-pot and table-section range at `points` values (first and last kept) and
 // times each work-precision point once: CI's small settings.
 void make_quick(Scene& scene, std::size_t points);
 // Keeps `points` of the values, spread evenly, the first and the last among them (points < 2: all).

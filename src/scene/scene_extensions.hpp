@@ -8,6 +8,7 @@
 
 #include "scene/scene.hpp"
 #include "scene/scene_run.hpp"
+#include "scene/scene_studies.hpp"
 
 namespace restitution::scene::detail {
 

@@ -7,10 +7,23 @@
 
 #include "restitution/errors.hpp"
 #include "restitution/fit.hpp"
+#include "scene/scene.hpp"
 #include "scene/scene_inputs.hpp"
 #include "scene/toml_reader.hpp"
 
-namespace restitution::scene::detail {
+namespace restitution::scene {
+
+FitOutcome run_fit_section(const Scene& scene, const FitTask& task) {
+  FitOutcome out;
+  out.options.candidates = task.candidates;
+  out.options.tolerance = scene.tolerance;
+  out.options.method = scene.method;
+  if (task.material) out.options.k = elastic_constants(scene.materials.at(*task.material)).k;
+  out.result = fit_data(task.data, out.options);
+  return out;
+}
+
+namespace detail {
 
 FitTask read_fit_task(TomlReader& r, std::string name, const std::map<std::string, Material>& materials) {
   FitTask t;
@@ -63,4 +76,5 @@ FitTask read_fit_task(TomlReader& r, std::string name, const std::map<std::strin
   return t;
 }
 
-}  // namespace restitution::scene::detail
+}  // namespace detail
+}  // namespace restitution::scene

@@ -29,6 +29,18 @@ struct FitTask {
   int line = 0;
 };
 
+struct Scene;
+
+// The fit of a [[fit]] section's data with the options it ran with (the candidates, the scene's tolerance and
+// method, the material's k when it names one).
+struct FitOutcome {
+  FitOptions options;
+  FitResult result;
+};
+
+// Throws InvalidInput for data or a material the fit cannot use.
+FitOutcome run_fit_section(const Scene& scene, const FitTask& task);
+
 namespace detail {
 class TomlReader;
 // Reads the keys of one [[fit]] (name already read): data = "file.csv" (relative to the scene file) or

@@ -4,7 +4,9 @@
 // (restitution_gas/gas_parameters.hpp), and the section computed as `restitution gas` computes it: the
 // cooling curve of the material's spheres with the law's eps(v) beside Haff's law, or the driven gas's
 // relaxation and steady state. Typed values; the CLI writes the CSV, the plot and the words.
+#include <map>
 #include <optional>
+#include <string>
 
 #include "restitution_gas/cooling.hpp"
 #include "restitution_gas/driven.hpp"
@@ -12,6 +14,18 @@
 #include "scene/scene.hpp"
 
 namespace restitution::scene {
+
+// The freely cooling or driven gas of a material's spheres from kinetic theory (docs/gas.md): T(t) and the
+// local exponent of the law's eps(v) beside Haff's law of a constant eps. The keys are the gas study's table
+// (restitution_gas/gas_parameters.hpp) but for the spheres', which come from the material when it runs.
+struct GasTask {
+  std::string name;
+  std::string title;
+  std::string material;  // a [materials.X]: radius, density or mass (and A without eps)
+  gas::GasInputs inputs;
+  bool own_tolerance = false;  // false: the scene's tolerance, as run (--quick loosens it), not inputs'
+  int line = 0;
+};
 
 struct GasOutcome {
   gas::CoolingRequest request;
@@ -28,6 +42,8 @@ class TomlReader;
 // Reads every key of the table that a scene gives (not the spheres': the material's) into `inputs`, with the
 // table's ranges and pairs. Throws InvalidInput naming the key.
 void read_gas_keys(TomlReader& r, gas::GasInputs& inputs);
+// Reads one [[gas]] (name already read): title, material, then the table's keys (scene_gas_task.cpp).
+GasTask read_gas_task(TomlReader& r, std::string name, const std::map<std::string, Material>& materials);
 }  // namespace detail
 
 }  // namespace restitution::scene

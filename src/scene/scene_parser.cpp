@@ -11,16 +11,15 @@
 #include <set>
 #include <sstream>
 
-#include "damping_check/check.hpp"
-#include "dem/deck.hpp"
-#include "reference/work_precision.hpp"
+#include "damping_check/recipes.hpp"
 #include "restitution/errors.hpp"
 #include "restitution_series_study/series_named.hpp"
 #include "scene/figure_formats.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_approximations.hpp"
-#include "scene/scene_gas.hpp"
 #include "scene/scene_sections.hpp"
+#include "scene/section_keys.hpp"
+#include "scene/section_material.hpp"
 #include "scene/toml_ascii.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -77,20 +76,6 @@ void check_law_zeta(TomlReader& r, LawKind law, EndSet ends, const std::vector<d
       "zeta", zeta, [law](double z) { return ContactLaw::natural(law, z).naive_end_may_exist(); },
       fmt::format("zeta < {:.17g}, where the naive end of {} exists (or ends = \"delayed-recovery\")",
                   naive_end_critical_zeta(law), law_name(law)));
-}
-
-CollisionEnd read_end(TomlReader& r) {
-  const auto w = r.text("end");
-  if (!w) return CalibrationRequest{}.end;
-  try {
-    return end_from_name(*w);
-  } catch (const InvalidInput& e) {
-    r.fail("end", e.what());
-  }
-}
-
-bool has_dissipation(const Material& m) {
-  return m.dissipative_constant_s.has_value() || m.viscosities.has_value();
 }
 
 Material read_material(TomlReader& r) {
@@ -185,23 +170,13 @@ class Parser {
     each("trajectory", [this](TomlReader& r) { scene_.trajectories.push_back(read_trajectory(r)); });
     each("calibration", [this](TomlReader& r) { scene_.calibrations.push_back(read_calibration(r)); });
     each("dashpot", [this](TomlReader& r) { scene_.dashpots.push_back(read_dashpot(r)); });
-    each("dem", [this](TomlReader& r) { scene_.dems.push_back(read_dem(r)); });
-    each("damping_check", [this](TomlReader& r) { scene_.damping_checks.push_back(read_damping_check(r)); });
-    each("gas", [this](TomlReader& r) { scene_.gases.push_back(read_gas(r)); });
-    // The table's sections (scene_sections.hpp), read where [[oblique]] was: unnamed sections keep their
-    // numbers.
+    // The table's sections (scene_sections.hpp), in its order: unnamed sections are numbered in it.
     for (const SectionKind& kind : section_kinds()) {
       each(kind.name, [this, &kind](TomlReader& r) {
         SectionTask section{kind.name, read_name(r, kind.name), r.line(), {}};
         section.task = kind.parse(r, SectionContext{section.name, scene_.materials, scene_.warnings});
         scene_.sections.push_back(std::move(section));
       });
-    }
-    each("fit", [this](TomlReader& r) {
-      scene_.fits.push_back(detail::read_fit_task(r, read_name(r, "fit"), scene_.materials));
-    });
-    for (const char* kind : {"work_precision", "stability"}) {
-      each(kind, [this, kind](TomlReader& r) { scene_.studies.push_back(read_study(r, kind)); });
     }
     root_.finish();
     return std::move(scene_);
@@ -257,41 +232,6 @@ class Parser {
     task.ends = read_ends(r);
   }
 
-  std::optional<std::string> read_material_name(TomlReader& r) const {
-    auto name = r.text("material");
-    if (name && !scene_.materials.contains(*name)) {
-      r.fail("material", fmt::format("no [materials.{}] in this scene", *name));
-    }
-    return name;
-  }
-
-  // For the tasks that compute with the material's damping (not calibrations, which compute it).
-  void require_dissipation(const TomlReader& r, const std::optional<std::string>& name,
-                           std::string_view task) const {
-    if (name && !has_dissipation(scene_.materials.at(*name))) {
-      r.fail("material",
-             fmt::format("[materials.{}] has neither dissipative_constant nor viscosities, which {} needs "
-                         "(only a calibration can do without: it computes them)",
-                         *name, task));
-    }
-  }
-
-  static void check_zeta(TomlReader& r, const std::vector<double>& zeta) {
-    r.check_each(
-        "zeta", zeta, [](double z) { return z >= 0.0 && z <= kLargestCheckedZeta; },
-        fmt::format("0 <= zeta <= {:g} (the checked range)", kLargestCheckedZeta));
-  }
-  static void check_positive(TomlReader& r, const char* key, const std::vector<double>& values) {
-    r.check_each(
-        key, values, [](double v) { return v > 0.0; }, "a value > 0");
-  }
-
-  // A coefficient of restitution: strictly between 0 and 1.
-  static void check_eps(TomlReader& r, const char* key, const std::vector<double>& values) {
-    r.check_each(
-        key, values, [](double e) { return e > 0.0 && e < 1.0; }, "a value in (0, 1)");
-  }
-
   Sweep read_sweep(TomlReader& r) {
     Sweep s;
     read_heading(r, "sweep", s);
@@ -323,21 +263,21 @@ class Parser {
                          law_name(s.law), law_name(s.law)));
     }
     s.beta = r.number("beta");
-    s.material = read_material_name(r);
-    require_dissipation(r, s.material, "a sweep");
+    s.material = detail::read_optional_material(r, scene_.materials);
+    detail::require_dissipation(r, scene_.materials, s.material, "a sweep");
     s.characteristic_velocity_m_s = r.number("characteristic_velocity");
     const int subjects = static_cast<int>(s.beta.has_value()) + static_cast<int>(s.material.has_value()) +
                          static_cast<int>(s.characteristic_velocity_m_s.has_value());
     if (zeta) {
       if (velocity || subjects > 0)
         r.fail("zeta", "give zeta alone, or velocity with one of beta, material, characteristic_velocity");
-      check_zeta(r, *zeta);
+      detail::check_zeta(r, *zeta);
       check_law_zeta(r, s.law, s.ends, *zeta);
       s.zeta = *zeta;
     } else {
       if (!velocity) r.fail("", "give zeta, or velocity with one of beta, material, characteristic_velocity");
       if (subjects != 1) r.fail("velocity", "needs exactly one of beta, material, characteristic_velocity");
-      check_positive(r, "velocity", *velocity);
+      detail::check_positive(r, "velocity", *velocity);
       s.velocity_m_s = *velocity;
       if (s.beta && *s.beta < 0.0) r.fail("beta", "expected a value >= 0");
       if (s.characteristic_velocity_m_s && *s.characteristic_velocity_m_s <= 0.0) {
@@ -405,12 +345,12 @@ class Parser {
     t.zeta = r.number("zeta");
     t.velocity_m_s = r.number("velocity");
     t.beta = r.number("beta");
-    t.material = read_material_name(r);
-    require_dissipation(r, t.material, "a trajectory");
+    t.material = detail::read_optional_material(r, scene_.materials);
+    detail::require_dissipation(r, scene_.materials, t.material, "a trajectory");
     if (t.zeta) {
       if (t.velocity_m_s || t.beta || t.material)
         r.fail("zeta", "give zeta alone, or velocity with beta or material");
-      check_zeta(r, {*t.zeta});
+      detail::check_zeta(r, {*t.zeta});
       check_law_zeta(r, t.law, t.ends, {*t.zeta});
     } else {
       if (!has_dissipative_constant(t.law))
@@ -418,7 +358,7 @@ class Parser {
       if (!t.velocity_m_s) r.fail("", "give zeta, or velocity with beta or material");
       if (t.beta.has_value() == t.material.has_value())
         r.fail("velocity", "needs exactly one of beta, material");
-      check_positive(r, "velocity", {*t.velocity_m_s});
+      detail::check_positive(r, "velocity", {*t.velocity_m_s});
       if (t.beta && *t.beta < 0.0) r.fail("beta", "expected a value >= 0");
     }
     return t;
@@ -433,100 +373,16 @@ class Parser {
     const auto velocity = r.number("velocity");
     if (!eps) r.fail("eps", "missing");
     if (!velocity) r.fail("velocity", "missing (m/s)");
-    check_eps(r, "eps", {*eps});
-    check_positive(r, "velocity", {*velocity});
+    detail::check_eps(r, "eps", {*eps});
+    detail::check_positive(r, "velocity", {*velocity});
     c.eps = *eps;
     c.eps_line = r.line_of("eps");
     c.velocity_m_s = *velocity;
-    c.end = read_end(r);
-    c.material = read_material_name(r);
+    c.end = detail::read_end(r);
+    c.material = detail::read_optional_material(r, scene_.materials);
     if (c.material && !has_dissipative_constant(c.law))
       r.fail("material", "a material gives the dissipative constant A of law \"viscoelastic-hertz\" only");
     return c;
-  }
-
-  DemTask read_dem(TomlReader& r) {
-    DemTask d;
-    d.line = r.line();
-    d.name = read_name(r, "dem");
-    d.title = r.text("title").value_or(d.name);
-    const auto code = r.text("code");
-    if (!code) r.fail("code", "missing (" + dem::code_list(" or ") + ")");
-    try {
-      d.code = dem::code_from_name(*code);
-    } catch (const InvalidInput& e) {
-      r.fail("code", e.what());
-    }
-    const auto material = read_material_name(r);
-    if (!material) r.fail("material", "missing: the [materials.X] the lines are for");
-    d.material = *material;
-    d.eps = r.number("eps");
-    d.velocity_m_s = r.number("velocity");
-    if (d.eps) check_eps(r, "eps", {*d.eps});
-    if (d.eps && !d.velocity_m_s) r.fail("eps", "needs velocity, the impact speed it was measured at (m/s)");
-    if (!d.eps) require_dissipation(r, d.material, "a dem task without eps");
-    if (d.velocity_m_s) check_positive(r, "velocity", {*d.velocity_m_s});
-    d.end = read_end(r);
-    const auto speeds = r.numbers("speeds");
-    if (!speeds || speeds->empty()) r.fail("speeds", "missing: the impact speeds to compare at (m/s)");
-    check_positive(r, "speeds", *speeds);
-    d.speeds = *speeds;
-    d.run_code = r.flag("run").value_or(true);
-    d.friction = r.number("friction").value_or(0.0);
-    try {
-      dem::check_friction(d.friction);
-    } catch (const InvalidInput& e) {
-      r.fail("friction", e.what());
-    }
-    return d;
-  }
-
-  GasTask read_gas(TomlReader& r) {
-    GasTask g;
-    g.line = r.line();
-    g.name = read_name(r, "gas");
-    g.title = r.text("title").value_or(g.name);
-    const auto material = read_material_name(r);
-    if (!material) r.fail("material", "missing: the [materials.X] whose spheres make the gas");
-    g.material = *material;
-    g.own_tolerance = r.has("tolerance");
-    detail::read_gas_keys(r, g.inputs);
-    if (!g.inputs.eps) {
-      require_dissipation(r, g.material, "a gas without eps");
-      if (!has_dissipative_constant(law_from_name(g.inputs.law)))
-        r.fail("law", "without eps only viscoelastic-hertz takes A");
-    }
-    return g;
-  }
-
-  DampingCheckTask read_damping_check(TomlReader& r) {
-    DampingCheckTask d;
-    d.line = r.line();
-    d.name = read_name(r, "damping_check");
-    d.title = r.text("title").value_or(d.name);
-    if (const auto recipes = r.words("recipes")) {
-      if (recipes->empty()) r.fail("recipes", "empty: leave the key out for every recipe");
-      for (const std::string& name : *recipes) {
-        try {
-          (void)damping_check::recipe_from_name(name);
-        } catch (const InvalidInput& e) {
-          r.fail("recipes", e.what());
-        }
-      }
-      d.recipes = *recipes;
-    } else {
-      for (damping_check::Recipe recipe : damping_check::kRecipes)
-        d.recipes.emplace_back(recipe_name(recipe));
-    }
-    d.eps = r.numbers("eps").value_or(damping_check::map_eps_grid());
-    if (d.eps.empty()) r.fail("eps", "empty: leave the key out for 0.05 to 0.99");
-    check_eps(r, "eps", d.eps);
-    d.velocity_m_s = r.number("velocity").value_or(1.0);
-    check_positive(r, "velocity", {d.velocity_m_s});
-    d.speeds = r.numbers("speeds").value_or(damping_check::speed_grid(0.1, 10.0, 9));
-    if (d.speeds.empty()) r.fail("speeds", "empty: leave the key out for 0.1 to 10 m/s");
-    check_positive(r, "speeds", d.speeds);
-    return d;
   }
 
   DashpotCheck read_dashpot(TomlReader& r) {
@@ -534,43 +390,9 @@ class Parser {
     read_heading(r, "dashpot", d);
     const auto ratios = r.numbers("damping_ratio");
     if (!ratios) r.fail("damping_ratio", "missing");
-    check_positive(r, "damping_ratio", *ratios);
+    detail::check_positive(r, "damping_ratio", *ratios);
     d.damping_ratio = *ratios;
     return d;
-  }
-
-  ExternalStudy read_study(TomlReader& r, const char* kind) {
-    ExternalStudy s;
-    s.kind = kind;
-    s.line = r.line();
-    s.name = read_name(r, kind);
-    if (s.kind == "work_precision") {
-      read_work_precision(r, s);
-      return s;
-    }
-    if (const auto zeta = r.numbers("zeta")) {
-      check_zeta(r, *zeta);
-      s.zeta = *zeta;
-    }
-    return s;
-  }
-
-  // Engines (names of work_precision_engines()) and repeats; the ζ set is the reference grid's.
-  static void read_work_precision(TomlReader& r, ExternalStudy& s) {
-    if (const auto engines = r.words("engines")) {
-      for (const std::string& name : *engines) {
-        if (!is_work_precision_engine(name))
-          r.fail("engines",
-                 fmt::format("unknown engine \"{}\" (known: {})", name, work_precision_engine_names()));
-      }
-      if (engines->empty()) r.fail("engines", "expected at least one engine");
-      s.engines = *engines;
-    }
-    if (const auto repeats = r.number("repeats")) {
-      if (*repeats != std::floor(*repeats) || *repeats < 1 || *repeats > kMaxStudyRepeats)
-        r.fail("repeats", fmt::format("expected a whole number in [1, {}]", kMaxStudyRepeats));
-      s.repeats = static_cast<int>(*repeats);
-    }
   }
 
   TomlReader root_;
@@ -614,21 +436,11 @@ void thin_values(std::vector<double>& values, std::size_t points) {
 }
 
 void make_quick(Scene& scene, std::size_t points) {
-  auto thin = [points](std::vector<double>& values) { thin_values(values, points); };
   for (Sweep& s : scene.sweeps) {
-    thin(s.zeta);
-    thin(s.velocity_m_s);
+    thin_values(s.zeta, points);
+    thin_values(s.velocity_m_s, points);
   }
-  for (DashpotCheck& d : scene.dashpots) thin(d.damping_ratio);
-  for (DemTask& d : scene.dems) thin(d.speeds);
-  for (DampingCheckTask& d : scene.damping_checks) {
-    thin(d.eps);
-    thin(d.speeds);
-  }
-  for (ExternalStudy& s : scene.studies) {
-    thin(s.zeta);
-    s.repeats = 1;
-  }
+  for (DashpotCheck& d : scene.dashpots) thin_values(d.damping_ratio, points);
   for (SectionTask& s : scene.sections) find_section_kind(s.kind)->quick(s.task, points);
 }
 

@@ -10,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "damping_check/grid.hpp"
 #include "reference/work_precision.hpp"
 #include "restitution/calibration.hpp"
 #include "restitution/collision_solver.hpp"

@@ -9,7 +9,6 @@
 #include <string_view>
 #include <utility>
 
-#include "damping_check/grid.hpp"
 #include "parallel/parallel_for.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
@@ -128,20 +127,9 @@ SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& setting
     out.collisions += static_cast<std::size_t>(outcome.calibration.solves);
     out.calibrations.push_back(outcome);
   }
-  for (const DampingCheckTask& task : scene.damping_checks) {
-    damping_check::GridRequest request;
-    for (const std::string& name : task.recipes)
-      request.recipes.push_back(damping_check::recipe_from_name(name));
-    request.eps = task.eps;
-    request.reference_velocity_m_s = task.velocity_m_s;
-    request.speeds_m_s = task.speeds;
-    request.tolerance = scene.tolerance;
-    out.damping_checks.push_back(damping_check::check_grid(request, solver));
-  }
-  for (const ExternalStudy& study : scene.studies)
-    out.studies.push_back(detail::run_study(study, scene.tolerance, settings.reference_file));
+  const SectionRunContext context{scene, solver, settings.reference_file};
   for (const SectionTask& section : scene.sections)
-    out.sections.push_back(find_section_kind(section.kind)->run(scene, section.task));
+    out.sections.push_back(find_section_kind(section.kind)->run(context, section.task));
   return out;
 }
 

@@ -29,9 +29,6 @@ struct SceneResults {
   std::vector<SweepExtras> sweeps;       // parallel to Scene::sweeps
   std::vector<DashpotOutcome> dashpots;  // parallel to Scene::dashpots
   std::vector<CalibrationOutcome> calibrations;
-  // Parallel to Scene::damping_checks; their solves are not counted in `total` or `collisions`.
-  std::vector<damping_check::GridResult> damping_checks;
-  std::vector<StudyOutcome> studies;  // parallel to Scene::studies
   // Parallel to Scene::sections: each section's outcome, of its kind's type (scene_sections.hpp); their
   // solves are not counted in `total` or `collisions`.
   std::vector<std::any> sections;

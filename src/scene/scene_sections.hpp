@@ -5,15 +5,16 @@
 // SectionTask values (scene.hpp) in the order of this table, the run step (scene_run.cpp) computes each into
 // a typed outcome, and the CLI's table of writers (cli/scene/scene_section_writers.hpp, keyed by the same
 // names; a test checks both tables list the same kinds) writes it. The sections whose collisions the planner
-// shares ([[sweep]], [[trajectory]], [[dashpot]], [[calibration]]) and those not moved yet keep their own
-// members of Scene.
+// shares ([[sweep]], [[trajectory]], [[dashpot]], [[calibration]]) keep their own members of Scene.
 #include <any>
 #include <cstddef>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "restitution/collision_solver.hpp"
 #include "restitution/material.hpp"
 #include "scene/scene.hpp"
 
@@ -31,16 +32,25 @@ struct SectionContext {
   std::vector<std::string>& warnings;
 };
 
+// What a section's run step is given besides its task: the scene, a solver the run step's sections share
+// (one at a time), and the reference solutions a work-precision study measures against (none: empty).
+struct SectionRunContext {
+  const Scene& scene;
+  CollisionSolver& solver;
+  const std::filesystem::path& reference_file;
+};
+
 struct SectionKind {
   const char* name;  // [[name]] in a scene file
   // Reads one section's keys into its task (InvalidInput naming the key); the parser then refuses the keys
   // nobody read.
   std::any (*parse)(detail::TomlReader& r, const SectionContext& context);
   // Computes the task into its outcome (InvalidInput or NumericalFailure naming the scene and the section).
-  std::any (*run)(const Scene& scene, const std::any& task);
+  std::any (*run)(const SectionRunContext& context, const std::any& task);
   // Caps the task's ranges at `points` values: `run --quick`.
   void (*quick)(std::any& task, std::size_t points);
-  // The report's words for what this kind integrates outside the shared plan ("" for nothing).
+  // The report's words for what this kind integrates outside the shared plan ("" for nothing; rows with the
+  // same words are named once).
   const char* own_solves;
 };
 
@@ -48,6 +58,9 @@ struct SectionKind {
 const std::vector<SectionKind>& section_kinds();
 // The row of `name`; nullptr when no row has it.
 const SectionKind* find_section_kind(std::string_view name);
+
+// Whether the scene has a section of `kind`.
+bool has_sections(const Scene& scene, std::string_view kind);
 
 // A scene's sections of `kind`, as their typed tasks (the any_cast the rows' functions do).
 template <class Task>

@@ -23,6 +23,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/scene_run.hpp"
+#include "scene/scene_sections.hpp"
 #include "sweep/output_lock.hpp"
 #include "sweep/printable_name.hpp"
 #include "sweep/resolved_path.hpp"
@@ -85,8 +86,8 @@ int run_scene_file(const RunOptions& o) {
   const StopSignals signals;
   const WrittenOutputs written = write_scene_outputs(s, results, folder, seconds);
   for (const auto& w : written.warnings) std::fprintf(stderr, "restitution: warning: %s\n", w.c_str());
-  // [[dem]] and [[damping_check]] sections solve their collisions while their outputs are written.
-  const bool own_solves = !s.dems.empty() || !s.damping_checks.empty();
+  // [[dem]] and [[damping_check]] sections solve their own collisions, outside the shared plan.
+  const bool own_solves = scene::has_sections(s, "dem") || scene::has_sections(s, "damping_check");
   fmt::print("scene {}: {} planned collisions in {:.2f} s{}{}\n", printable_name(path.string()),
              results.collisions, seconds,
              own_solves ? " (dem and damping_check sections solve their own, not counted)" : "",

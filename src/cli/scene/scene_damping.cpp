@@ -119,4 +119,16 @@ DampingSection damping_section(const scene::DampingCheckTask& task, const dampin
   return s;
 }
 
+void write_damping_check_section(const scene::Scene& /*scene*/, const scene::DampingCheckTask& task,
+                                 const damping_check::GridResult& grid, SectionOutput& out) {
+  const DampingSection section = damping_section(task, grid);
+  out.report(fmt::format("## {}\n\n", task.title));
+  for (const DampingPlot& p : section.plots) {
+    out.file(p.name + ".csv", p.csv);
+    out.report(out.plot(p.script, p.name, p.args));
+    out.report(p.caption);
+  }
+  out.report(section.findings);
+}
+
 }  // namespace restitution::cli

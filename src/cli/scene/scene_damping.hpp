@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "cli/scene/scene_section_writers.hpp"
 #include "damping_check/grid.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_damping_check.hpp"
 
 namespace restitution::cli {
 
@@ -26,5 +28,9 @@ struct DampingSection {
 
 // The section's files, plots and findings from the grid the scene computed for `task` (formatting only).
 DampingSection damping_section(const scene::DampingCheckTask& task, const damping_check::GridResult& grid);
+
+// Writes the section: each plot's CSV, figure and caption, then the findings.
+void write_damping_check_section(const scene::Scene& scene, const scene::DampingCheckTask& task,
+                                 const damping_check::GridResult& grid, SectionOutput& out);
 
 }  // namespace restitution::cli

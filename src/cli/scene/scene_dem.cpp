@@ -4,73 +4,48 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
-#include <string_view>
-
-#include "damping_check/yade_version_lines.hpp"
-#include "dem/lines_check.hpp"
-#include "restitution/material.hpp"
+#include "dem/dem_codes.hpp"
 
 namespace restitution::cli {
 
 namespace {
 
-// YADE (not run by scenes): the lines for the yade on PATH, as `dem --code yade` prints them. On a YADE that
-// cannot express the law (no vn, e.g. Debian's 2023.02a) those are the constant-ε lines with the ε they
-// really give, and the report names the version that takes the exact law and shows its lines.
-// Returns the report's words on the version.
-std::string target_installed_yade(const Material& material, const dem::DampingSource& damping,
-                                  const scene::DemTask& task, double tolerance, dem::CodeComparison& c) {
-  dem::LinesRequest request;
-  request.code = task.code;
-  request.end = task.end;
-  request.material = material;
-  request.damping = damping;
-  request.speeds_m_s = task.speeds;
-  request.tolerance = tolerance;
-  request.friction = task.friction;
-  dem::LinesResult r = dem::check_lines(request);
-  const dem::TargetedYade yade = dem::installed_yade_or_newest();
-  damping_check::target_yade_version(r, yade.version, tolerance);
-  c.deck = r.deck;
-  c.predicted_eps.clear();
-  for (const dem::SpeedEps& e : r.eps) c.predicted_eps.push_back(e.eps);
-  std::string words = fmt::format("The yade lines are for YADE {} ({}).", yade.version.text, yade.source);
-  if (r.yade_exact_deck) {
+struct DemSection {
+  std::string markdown;  // the report text after the plot
+  std::string csv;       // velocity_m_s, eps_restitution[, eps_<code>, rel_diff, <code>_run (ok | failed)]
+  std::vector<std::string> plot_args;  // for scripts/plots/scene_xy.py after CSV and PNG
+  std::vector<std::string> warnings;   // e.g. the code is not installed, or its run failed
+  std::string code_run;                // "ok", "failed", "not installed" or "not asked" (summary.json)
+  std::string code_failure;            // what went wrong when it failed (dem::DemMeasurement::failure)
+};
+
+// The report's words on the YADE version the lines are for, and the law's own lines for a later YADE when
+// the targeted one cannot express it.
+std::string yade_words(const scene::DemYadeTarget& target) {
+  std::string words =
+      fmt::format("The yade lines are for YADE {} ({}).", target.yade.version.text, target.yade.source);
+  if (target.exact_deck) {
     words += fmt::format(
         " YADE {} cannot express this law: the lines above give the eps of the table, the same at every "
         "speed. On YADE 2024.02a or later these lines give the law itself:\n\n```\n",
-        yade.version.text);
-    for (const auto& line : r.yade_exact_deck->lines) words += line + "\n";
+        target.yade.version.text);
+    for (const auto& line : target.exact_deck->lines) words += line + "\n";
     words += "```\n";
   }
   return words + "\n";
 }
 
-}  // namespace
-
-DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task) {
+DemSection dem_section(const scene::DemTask& task, const scene::DemOutcome& outcome) {
   const dem::Code code = task.code;
   const dem::CodeEntry& entry = dem::code_entry(code);
-  const Material& material = scene.materials.at(task.material);
   DemSection s;
-  std::string program;
-  if (task.run_code && entry.scene_runs) {
-    program = dem::dem_program(code);
-    if (program.empty()) {
-      s.warnings.push_back(
-          fmt::format("{} is not installed (scripts/setup installs it): not run", entry.name));
-    }
+  if (outcome.code_not_installed) {
+    s.warnings.push_back(fmt::format("{} is not installed (scripts/setup installs it): not run", entry.name));
   }
-  // Without a calibration the material's own A.
-  const dem::DampingSource damping{
-      task.eps ? std::nullopt : std::optional<double>(material_constants(material).dissipative_constant_s),
-      task.eps, task.velocity_m_s};
-  dem::CodeComparison c = dem::compare_with_code(code, material, damping, task.end, task.speeds,
-                                                 task.friction, scene.tolerance, scene.method, program);
-  std::string yade_words;
-  if (!std::string_view(entry.version_query).empty())
-    yade_words = target_installed_yade(material, damping, task, scene.tolerance, c);
+  const dem::CodeComparison& c = outcome.comparison;
   const dem::Deck& deck = c.deck;
   const double a = c.dissipative_constant_s;
   const std::vector<double>& predicted = c.predicted_eps;
@@ -140,8 +115,25 @@ DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task) {
         "column is the Richardson extrapolation (10 eps_fine - eps_coarse)/9.\n\n",
         dem::code_name(code));
   }
-  md += yade_words;
+  if (outcome.yade) md += yade_words(*outcome.yade);
   return s;
+}
+
+}  // namespace
+
+void write_dem_section(const scene::Scene& /*scene*/, const scene::DemTask& task,
+                       const scene::DemOutcome& outcome, SectionOutput& out) {
+  DemSection section = dem_section(task, outcome);
+  out.file(task.name + ".csv", section.csv);
+  out.report(fmt::format("## {}\n\n", task.title));
+  out.report(out.plot("scene_xy", task.name, section.plot_args));
+  out.report(section.markdown);
+  for (auto& w : section.warnings) out.warn(fmt::format("{}: {}", task.name, w));
+  JsonWriter& json = out.summary();
+  json.key("dem_" + task.name).begin_object();
+  json.field("code", dem::code_name(task.code)).field("code_run", section.code_run);
+  if (!section.code_failure.empty()) json.field("code_failure", section.code_failure);
+  json.end_object();
 }
 
 }  // namespace restitution::cli

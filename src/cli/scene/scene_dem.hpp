@@ -1,24 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// A scene's [[dem]] section: the DEM code's input lines for a scene material, restitution's ε(v) for them
-// and, for LAMMPS and LIGGGHTS, the ε(v) the code itself measures (dem/code_runner.hpp, dem/lines_check.hpp).
-#include <string>
-#include <vector>
-
+// A scene's [[dem]] section written (scene/scene_dem.hpp computes it): the CSV of restitution's ε(v) and the
+// code's, the plot, the lines and the table in the report, the code's run in summary.json.
+#include "cli/scene/scene_section_writers.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_dem.hpp"
 
 namespace restitution::cli {
 
-struct DemSection {
-  std::string markdown;  // the report text after the plot
-  std::string csv;       // velocity_m_s, eps_restitution[, eps_<code>, rel_diff, <code>_run (ok | failed)]
-  std::vector<std::string> plot_args;  // for scripts/plots/scene_xy.py after CSV and PNG
-  std::vector<std::string> warnings;   // e.g. the code is not installed, or its run failed
-  std::string code_run;                // "ok", "failed", "not installed" or "not asked" (summary.json)
-  std::string code_failure;            // what went wrong when it failed (dem::DemMeasurement::failure)
-};
-
-// Throws InvalidInput for a task the code cannot express (an end it cannot reach).
-DemSection dem_section(const scene::Scene& scene, const scene::DemTask& task);
+void write_dem_section(const scene::Scene& scene, const scene::DemTask& task,
+                       const scene::DemOutcome& outcome, SectionOutput& out);
 
 }  // namespace restitution::cli

@@ -74,19 +74,19 @@ std::string markdown(const scene::FitTask& task, const FitResult& r) {
 
 }  // namespace
 
-FitSection fit_section(const scene::Scene& scene, const scene::FitTask& task) {
-  FitSection s;
-  FitOptions options;
-  options.candidates = task.candidates;
-  options.tolerance = scene.tolerance;
-  options.method = scene.method;
-  if (task.material) s.k = elastic_constants(scene.materials.at(*task.material)).k;
-  options.k = s.k;
-  s.result = fit_data(task.data, options);
-  s.data_csv = fit_data_table(task.data, s.result);
-  s.curves_csv = fit_curves_table(task.data, s.result, options);
-  s.markdown = markdown(task, s.result);
-  return s;
+void write_fit_section(const scene::Scene& /*scene*/, const scene::FitTask& task,
+                       const scene::FitOutcome& fit, SectionOutput& out) {
+  out.file(task.name + ".csv", fit_data_table(task.data, fit.result));
+  const std::string curves = task.name + "_curves.csv";
+  out.file(curves, fit_curves_table(task.data, fit.result, fit.options));
+  out.report(fmt::format("## {}\n\n", task.title));
+  out.report(out.plot("fit_data", task.name,
+                      {"--curves", (out.folder() / curves).string(), "--data-label", task.data_label}));
+  out.report(markdown(task, fit.result));
+  JsonWriter& json = out.summary();
+  json.key("fit_" + task.name).begin_object();
+  write_fit_json(json, FitReportInput{task.source, &task.data, &fit.result, fit.options.k});
+  json.end_object();
 }
 
 }  // namespace restitution::cli

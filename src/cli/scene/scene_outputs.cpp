@@ -11,15 +11,9 @@
 #include "cli/common/output_files.hpp"
 #include "cli/common/result_json.hpp"
 #include "cli/common/stop_signals.hpp"
-#include "cli/fit/fit_data_report.hpp"
-#include "cli/scene/scene_damping.hpp"
-#include "cli/scene/scene_dem.hpp"
-#include "cli/scene/scene_fit_section.hpp"
-#include "cli/scene/scene_gas.hpp"
 #include "cli/scene/scene_section_writers.hpp"
 #include "cli/scene/scene_tables.hpp"
 #include "cli/scene/scene_text.hpp"
-#include "cli/solve/work_precision_files.hpp"
 #include "restitution/series.hpp"
 #include "restitution/units.hpp"
 #include "scene/figure_formats.hpp"
@@ -77,22 +71,21 @@ class SceneWriter : private SectionOutput {
     json_.begin_object();
     json_.field("scene", scene_.file_name).field("title", scene_.title);
     json_.field("tolerance", scene_.tolerance).field("method", method_name(scene_.method));
-    // Sections in the order the scene file lists them, each written by its member function.
+    // Sections in the order the scene file lists them, the planner's by their member functions, the
+    // table's by their rows; then the calibrations and the rows written together.
     std::vector<SectionEntry> order;
     collect(order, scene_.sweeps, &SceneWriter::sweep);
     collect(order, scene_.trajectories, &SceneWriter::trajectory);
     collect(order, scene_.dashpots, &SceneWriter::dashpot);
-    collect(order, scene_.dems, &SceneWriter::dem);
-    collect(order, scene_.damping_checks, &SceneWriter::damping_check);
-    collect(order, scene_.fits, &SceneWriter::fit);
-    collect(order, scene_.gases, &SceneWriter::gas);
-    for (std::size_t i = 0; i < scene_.sections.size(); ++i)
-      order.push_back({scene_.sections[i].line, &SceneWriter::section, i});
+    for (std::size_t i = 0; i < scene_.sections.size(); ++i) {
+      if (find_section_writer(scene_.sections[i].kind)->write != nullptr)
+        order.push_back({scene_.sections[i].line, &SceneWriter::section, i});
+    }
     std::stable_sort(order.begin(), order.end(),
                      [](const SectionEntry& a, const SectionEntry& b) { return a.line < b.line; });
     for (const SectionEntry& entry : order) (this->*entry.write)(entry.index);
     calibrations();
-    studies();
+    sections_together();
     footer(seconds);
     write_file("summary.json", finish_json_document(json_) + "\n");
     write_file("report.md", report_);  // last: its presence says the folder is complete
@@ -100,15 +93,15 @@ class SceneWriter : private SectionOutput {
   }
 
  private:
-  using SectionWriter = void (SceneWriter::*)(std::size_t);
+  using MemberWriter = void (SceneWriter::*)(std::size_t);
   struct SectionEntry {
     int line = 0;  // of the section's header in the scene file
-    SectionWriter write = nullptr;
+    MemberWriter write = nullptr;
     std::size_t index = 0;
   };
   template <class Section>
   static void collect(std::vector<SectionEntry>& order, const std::vector<Section>& sections,
-                      SectionWriter write) {
+                      MemberWriter write) {
     for (std::size_t i = 0; i < sections.size(); ++i) order.push_back({sections[i].line, write, i});
   }
 
@@ -123,7 +116,26 @@ class SceneWriter : private SectionOutput {
     const scene::SectionTask& s = scene_.sections[i];
     find_section_writer(s.kind)->write(scene_, s, results_.sections[i], *this);
   }
+  // The sections whose rows share a write_together function, each function once with all of them.
+  void sections_together() {
+    std::vector<decltype(cli::SectionWriter::write_together)> done;
+    for (const cli::SectionWriter& writer : section_writers()) {
+      const auto together = writer.write_together;
+      if (together == nullptr || std::find(done.begin(), done.end(), together) != done.end()) continue;
+      done.push_back(together);
+      std::vector<SectionResult> sections;
+      for (std::size_t i = 0; i < scene_.sections.size(); ++i) {
+        if (find_section_writer(scene_.sections[i].kind)->write_together == together)
+          sections.push_back({&scene_.sections[i], &results_.sections[i]});
+      }
+      together(scene_, sections, *this);
+    }
+  }
   void file(const std::string& name, const std::string& content) override { write_file(name, content); }
+  const fs::path& folder() const override { return folder_; }
+  void written(const std::vector<std::string>& names) override {
+    out_.files.insert(out_.files.end(), names.begin(), names.end());
+  }
   void report(const std::string& markdown) override { report_ += markdown; }
   JsonWriter& summary() override { return json_; }
   void warn(const std::string& line) override { out_.warnings.push_back(line); }
@@ -345,70 +357,6 @@ class SceneWriter : private SectionOutput {
     report_ += "\n";
   }
 
-  void dem(std::size_t i) {
-    const scene::DemTask& task = scene_.dems[i];
-    DemSection section = dem_section(scene_, task);
-    write_file(task.name + ".csv", section.csv);
-    report_ += fmt::format("## {}\n\n", task.title);
-    report_ += plot("scene_xy", task.name, section.plot_args);
-    report_ += section.markdown;
-    for (auto& w : section.warnings) out_.warnings.push_back(fmt::format("{}: {}", task.name, w));
-    json_.key("dem_" + task.name).begin_object();
-    json_.field("code", dem::code_name(task.code)).field("code_run", section.code_run);
-    if (!section.code_failure.empty()) json_.field("code_failure", section.code_failure);
-    json_.end_object();
-  }
-
-  void damping_check(std::size_t i) {
-    const scene::DampingCheckTask& task = scene_.damping_checks[i];
-    const DampingSection section = damping_section(task, results_.damping_checks[i]);
-    report_ += fmt::format("## {}\n\n", task.title);
-    for (const DampingPlot& p : section.plots) {
-      write_file(p.name + ".csv", p.csv);
-      report_ += plot(p.script, p.name, p.args);
-      report_ += p.caption;
-    }
-    report_ += section.findings;
-  }
-
-  // [[gas]]: T(t)/T0 and the local exponent with Haff's law; Haff's tau0 and the curve's end in summary.json.
-  void gas(std::size_t i) {
-    const scene::GasTask& task = scene_.gases[i];
-    const GasSection section = gas_section(scene_, task);
-    write_file(task.name + ".csv", section.csv);
-    report_ += fmt::format("## {}\n\n", task.title);
-    report_ += plot("gas_cooling", task.name, section.plot_args);
-    report_ += section.markdown;
-    const gas::CoolingCurve& c = section.outcome.curve;
-    json_.key("gas_" + task.name).begin_object();
-    json_.field("tau0_s", c.tau0_s).field("haff_eps", c.haff_eps).field("duration_s", c.duration_s);
-    json_.field("final_temperature_j", c.temperature_j.back());
-    json_.field("final_local_exponent", c.local_exponent.back());
-    if (const std::optional<gas::SteadyState>& steady = section.outcome.steady) {
-      json_.field("steady_temperature_j", steady->temperature_j).field("steady_a2", steady->a2);
-      json_.field("relaxation_time_s", steady->relaxation_time_s);
-      json_.field("driving_exponent", steady->driving_exponent);
-    }
-    json_.end_object();
-  }
-
-  // [[fit]]: the data with error bars, each law's curve with its 95 % band and the residuals (one plot), the
-  // table of the fits; the fit-data JSON object under "fit_<name>" in summary.json.
-  void fit(std::size_t i) {
-    const scene::FitTask& task = scene_.fits[i];
-    const FitSection section = fit_section(scene_, task);
-    write_file(task.name + ".csv", section.data_csv);
-    write_file(task.name + "_curves.csv", section.curves_csv);
-    report_ += fmt::format("## {}\n\n", task.title);
-    report_ +=
-        plot("fit_data", task.name,
-             {"--curves", (folder_ / (task.name + "_curves.csv")).string(), "--data-label", task.data_label});
-    report_ += section.markdown;
-    json_.key("fit_" + task.name).begin_object();
-    write_fit_json(json_, FitReportInput{task.source, &task.data, &section.result, section.k});
-    json_.end_object();
-  }
-
   void calibrations() {
     if (scene_.calibrations.empty()) return;
     report_ +=
@@ -437,35 +385,6 @@ class SceneWriter : private SectionOutput {
       if (hertz) json_.field("characteristic_velocity_m_s", c.characteristic_velocity_m_s);
       if (c.dissipative_constant_s) json_.field("dissipative_constant_s", *c.dissipative_constant_s);
       json_.end_object();
-    }
-    json_.end_array();
-    report_ += "\n";
-  }
-
-  // Summary lines of each study; a work-precision study also writes its points, summary and plot.
-  void studies() {
-    if (results_.studies.empty()) return;
-    report_ += "## Other studies\n\n";
-    json_.key("studies").begin_array();
-    for (std::size_t i = 0; i < results_.studies.size(); ++i) {
-      const scene::StudyOutcome& study = results_.studies[i];
-      for (const std::string& line : study_lines(scene_.studies[i], study)) {
-        report_ += "* " + line + "\n";
-        json_.value(line);
-      }
-      if (study.work_precision.empty()) continue;
-      const std::string& name = scene_.studies[i].name;
-      const WorkPrecisionFiles written =
-          write_work_precision_files(study.work_precision, folder_, name, scene_.figure_formats);
-      out_.files.insert(out_.files.end(), written.files.begin(), written.files.end());
-      if (written.plot_warning.empty()) {
-        report_ +=
-            fmt::format("\n![{}]({}.{})\n", name, name, scene::linked_figure_format(scene_.figure_formats));
-      } else {
-        out_.warnings.push_back(fmt::format("{}: {}", name, written.plot_warning));
-        report_ += fmt::format("\n*({}; the data are in `{}.csv` and `{}_summary.csv`)*\n",
-                               written.plot_warning, name, name);
-      }
     }
     json_.end_array();
     report_ += "\n";

@@ -2,7 +2,12 @@
 #include "cli/scene/scene_section_writers.hpp"
 
 #include "cli/scene/scene_adhesion.hpp"
+#include "cli/scene/scene_damping.hpp"
+#include "cli/scene/scene_dem.hpp"
+#include "cli/scene/scene_fit_section.hpp"
+#include "cli/scene/scene_gas.hpp"
 #include "cli/scene/scene_oblique.hpp"
+#include "cli/scene/scene_studies.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -10,19 +15,27 @@ namespace {
 // The row's function takes the kind's task and outcome types out of their std::any.
 template <class Task, class Outcome, auto write>
 SectionWriter row(const char* name) {
-  return {name, [](const scene::Scene& scene, const scene::SectionTask& section, const std::any& outcome,
-                   SectionOutput& out) {
+  return {name,
+          [](const scene::Scene& scene, const scene::SectionTask& section, const std::any& outcome,
+             SectionOutput& out) {
             write(scene, std::any_cast<const Task&>(section.task), std::any_cast<const Outcome&>(outcome),
                   out);
-          }};
+          },
+          nullptr};
 }
 
 }  // namespace
 
 const std::vector<SectionWriter>& section_writers() {
   static const std::vector<SectionWriter> writers = {
+      row<scene::DemTask, scene::DemOutcome, write_dem_section>("dem"),
+      row<scene::DampingCheckTask, damping_check::GridResult, write_damping_check_section>("damping_check"),
+      row<scene::GasTask, scene::GasOutcome, write_gas_section>("gas"),
       row<scene::ObliqueTask, scene::ObliqueOutcome, write_oblique_section>("oblique"),
       row<scene::AdhesionTask, scene::AdhesionOutcome, write_adhesion_section>("adhesion"),
+      row<scene::FitTask, scene::FitOutcome, write_fit_section>("fit"),
+      {"work_precision", nullptr, write_studies},
+      {"stability", nullptr, write_studies},
   };
   return writers;
 }

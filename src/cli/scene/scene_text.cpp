@@ -94,14 +94,10 @@ std::vector<std::string> study_lines(const scene::ExternalStudy& study, const sc
 
 std::string own_collisions_text(const scene::Scene& scene) {
   std::vector<std::string> parts;
-  if (!scene.dems.empty() || !scene.damping_checks.empty())
-    parts.emplace_back("the [[dem]] and [[damping_check]] sections solve their own collisions");
-  if (!scene.gases.empty())
-    parts.emplace_back("the [[gas]] sections take eps(v) from the fast table or from their own solves");
   for (const scene::SectionKind& kind : scene::section_kinds()) {
-    const bool present = std::any_of(scene.sections.begin(), scene.sections.end(),
-                                     [&kind](const scene::SectionTask& s) { return s.kind == kind.name; });
-    if (present && *kind.own_solves != '\0') parts.emplace_back(kind.own_solves);
+    const bool named = std::find(parts.begin(), parts.end(), kind.own_solves) != parts.end();
+    if (*kind.own_solves != '\0' && !named && scene::has_sections(scene, kind.name))
+      parts.emplace_back(kind.own_solves);
   }
   if (parts.empty()) return "";
   return fmt::format("not counted here: {}", fmt::join(parts, "; "));

@@ -8,6 +8,7 @@
 
 #include "scene/scene.hpp"
 #include "scene/scene_results.hpp"
+#include "scene/scene_studies.hpp"
 
 namespace restitution::cli {
 
@@ -18,8 +19,9 @@ std::string comparison_text(const scene::ApproximationComparison& comparison, st
 std::string fit_shortfall_text(const scene::FitShortfall& shortfall);
 // The report's lines for a [[stability]] or [[work_precision]] study.
 std::vector<std::string> study_lines(const scene::ExternalStudy& study, const scene::StudyOutcome& outcome);
-// The sections that compute their collisions outside the scene's shared plan ([[dem]], [[damping_check]],
-// [[gas]], [[oblique]]) and how, for the report's account of the work: "" when the scene has none.
+// The sections that compute their collisions outside the scene's shared plan (the rows of
+// scene/scene_sections.hpp with own_solves words) and how, for the report's account of the work: "" when the
+// scene has none.
 std::string own_collisions_text(const scene::Scene& scene);
 
 }  // namespace restitution::cli
