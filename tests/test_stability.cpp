@@ -55,6 +55,17 @@ TEST(Stability, RelativeDifferenceUsesTheSmallPart) {
   EXPECT_EQ(relative_difference(a, b), 0.0);
 }
 
+TEST(Stability, TheSmallestToleranceItAcceptsIsTightenedToTheEnginesSmallest) {
+  // 100 kMinTolerance rounds to 9.999999999999999e-10, a hundredth of which lies an ulp below kMinTolerance:
+  // a scene's [[stability]] at the default tolerance asked for it and was refused by the engine.
+  StabilityOptions options;
+  options.tolerance = 100.0 * kMinTolerance;
+  ASSERT_LT(options.tolerance / 100.0, kMinTolerance);
+  const StabilityReport report = stability_report({1.0}, options);
+  ASSERT_EQ(report.points.size(), 2U);
+  for (const StabilityPoint& p : report.points) EXPECT_LE(p.self_convergence, options.tolerance);
+}
+
 TEST(Stability, RefusesToleranceItCannotTighten) {
   EXPECT_THROW(stability_report({1.0}, {1e-10}), InvalidInput);
   EXPECT_THROW(stability_report({-1.0}, {}), InvalidInput);

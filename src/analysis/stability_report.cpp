@@ -47,7 +47,9 @@ StabilityPoint check_point(CollisionSolver& solver, double zeta, CollisionEnd en
   p.rhs_evaluations = production.stats.rhs_evaluations;
 
   SolveOptions tight = options;
-  tight.tolerance = o.tolerance / 100.0;
+  // At the smallest tolerance accepted, 100 kMinTolerance (9.999999999999999e-10 in doubles), the quotient is
+  // an ulp below kMinTolerance, which the engine refuses.
+  tight.tolerance = std::max(o.tolerance / 100.0, kMinTolerance);
   tight.method = production.method;
   p.self_convergence = relative_difference(p.result, end_of(solver.solve(law, tight), end));
   if (p.self_convergence > o.tolerance)
