@@ -205,8 +205,8 @@ TEST(DrivenGasBadInput, EachBadThermostatArgumentIsNamed) {
   EXPECT_THROW((void)steady_state(elastic), InvalidInput);
 }
 
-// gas_curve, the one path of the front ends: with a bath the gas settles at its steady temperature, without it
-// the gas cools on; each the very curve of driven_curve or cooling_curve.
+// gas_curve, the one path of the front ends: with a bath the gas settles at its steady temperature, without
+// it the gas cools on; each the very curve of driven_curve or cooling_curve.
 TEST(GasCurve, DrivenOnlyWithAThermostat) {
   DrivenRequest r = driven_gas(constant_eps_law(0.8), langevin(0.0, 0.5));
   r.thermostat.bath_temperature_j = 2.0 * r.gas.initial_temperature_j;
@@ -216,7 +216,8 @@ TEST(GasCurve, DrivenOnlyWithAThermostat) {
   EXPECT_EQ(free.steady.temperature_j, 0.0);
   const DrivenCurve driven = gas_curve(r.gas, r.thermostat);
   EXPECT_EQ(driven.curve.temperature_j, driven_curve(r).curve.temperature_j);
-  // Ten seconds are twenty bath times: the driven gas has settled at its steady state, far above the free gas.
+  // Ten seconds are twenty bath times: the driven gas has settled at its steady state, far above the free
+  // gas.
   EXPECT_NEAR(driven.curve.temperature_j.back() / driven.steady.temperature_j, 1.0, 1e-3);
   EXPECT_GT(driven.curve.temperature_j.back(), 10.0 * free.curve.temperature_j.back());
 }

@@ -84,7 +84,8 @@ struct StickingSpeed {
 };
 // The impact speed below which the spheres stick, to relative tolerance T: the root of the energy left at the
 // break overlap (bracketed, then Brent's method); the elastic JKR value is the closed form sqrt(2W/m*).
-[[nodiscard]] StickingSpeed sticking_speed(const AdhesiveContact& contact, double tolerance = kDefaultTolerance);
+[[nodiscard]] StickingSpeed sticking_speed(const AdhesiveContact& contact,
+                                           double tolerance = kDefaultTolerance);
 
 // Closed forms of the elastic model (docs/adhesion.md): the hysteresis work W of the model's break rule [J]
 // (0 for DMT and sjkr), the overlap at which the contact breaks [m] (negative for JKR, 0 for DMT and sjkr),
