@@ -91,7 +91,10 @@ const std::vector<SectionKind>& section_kinds() {
   // The order the parser reads the kinds in (unnamed sections are numbered in it) and the run step runs
   // them in.
   static const std::vector<SectionKind> kinds = {
-      row<DemTask, read_dem, run_dem_section>("dem", thin_ranges<DemTask, &DemTask::speeds>, kDemWords),
+      row<DemTask, read_dem, run_dem_section>(
+          "dem",
+          [](std::any& t, std::size_t n) { thin_values(std::any_cast<DemTask&>(t).inputs.speeds_m_s, n); },
+          kDemWords),
       row<DampingCheckTask, read_damping_check, run_damping_check_section>(
           "damping_check", thin_ranges<DampingCheckTask, &DampingCheckTask::eps, &DampingCheckTask::speeds>,
           kDemWords),
