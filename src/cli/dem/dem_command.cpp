@@ -269,9 +269,7 @@ int run_adhesion(const DemOptions& o, const std::vector<std::string>& given) {
   AdhesiveDemRequest request;
   request.adhesion = o.adhesion;
   request.material = material_from(one_pair_material(o.types));
-  request.dissipative_constant_s = o.inputs.dissipative_constant_s.value_or(0.0);
-  request.speeds = o.inputs.speeds_m_s;
-  request.tolerance = o.inputs.tolerance;
+  request.inputs = o.inputs;
   request.json = o.json;
   request.deck = o.deck;
   return run_adhesive_dem(request);
