@@ -14,6 +14,7 @@
 #include "restitution_series_study/series_validation.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_approximations.hpp"
+#include "scene/scene_sections.hpp"
 
 namespace restitution::series {
 namespace {
@@ -45,8 +46,10 @@ TEST(ApproximationNames, ScenesAndSeriesEvalShareOneSpellingPerApproximation) {
               evaluation_kinds().end());
     const scene::Scene s = scene::parse_scene(
         "output = \"o\"\n[[sweep]]\nzeta = [0.5]\napproximations = [\"" + name + "\"]\n", "t");
-    ASSERT_EQ(s.sweeps[0].approximations.size(), 1U);
-    EXPECT_EQ(s.sweeps[0].approximations[0], info.kind);
+    const std::vector<series::Approximation>& named =
+        scene::tasks_of<scene::Sweep>(s, "sweep")[0]->approximations;
+    ASSERT_EQ(named.size(), 1U);
+    EXPECT_EQ(named[0], info.kind);
     const auto outcome = test_support::run_cli("series eval --kind " + name + " --zeta 0.5 --json");
     EXPECT_EQ(outcome.status, 0) << name << ": " << outcome.err;
   }

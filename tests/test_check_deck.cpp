@@ -50,6 +50,16 @@ TEST(CheckDeckCli, BadDeckRequestsAreRefusedBeforeAnyWork) {
     EXPECT_TRUE(r.out.empty()) << r.out;
     EXPECT_FALSE(std::filesystem::exists(file));
   }
+  // YADE runs `yade -n -x FILE` only for a FILE ending in .py; another name would run nothing and exit 0.
+  for (const char* name : {"check.in", "check", "check.py.txt"}) {
+    const std::string file = (folder.path / name).string();
+    const auto r = run_cli("dem --code yade --deck " + file + kSteel);
+    EXPECT_EQ(r.status, 2) << name;
+    EXPECT_NE(r.err.find("ends in .py"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("name it " + file + ".py"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(file)) << name;
+  }
   const auto unwritable = run_cli("dem --code lammps --deck /proc/restitution-deck.in" + kSteel);
   EXPECT_EQ(unwritable.status, 3);
   EXPECT_NE(unwritable.err.find("/proc/restitution-deck.in"), std::string::npos) << unwritable.err;

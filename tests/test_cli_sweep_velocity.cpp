@@ -16,6 +16,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/scene_run.hpp"
+#include "scene/scene_sections.hpp"
 
 namespace restitution {
 namespace {
@@ -104,7 +105,9 @@ TEST(CliSweepVelocity, MaterialFormWritesTheSameNumbersAsASceneSweep) {
           speeds + "]\n",
       "t");
   const scene::SceneResults results = scene::run_scene(s, scene::plan_scene(s));
-  const cli::Table scene_table = cli::sweep_table(s, results, 0);
+  const cli::Table scene_table =
+      cli::sweep_table(*scene::tasks_of<scene::Sweep>(s, "sweep")[0],
+                       *scene::outcomes_of<scene::SweepOutcome>(s, results, "sweep")[0]);
   ASSERT_EQ(csv.rows.size(), scene_table.rows.size());
   // The columns both tables name alike hold the same numbers (same solves, same SI conversion).
   const std::vector<std::string> shared = {"zeta",

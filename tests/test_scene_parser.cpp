@@ -2,6 +2,7 @@
 // The scene parser alone: what it accepts, and that every rejection names the file, the line and the key.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <string>
 
@@ -62,17 +63,18 @@ zeta = [1, 10]
   EXPECT_EQ(s.output, "out/x");
   EXPECT_EQ(s.tolerance, 1e-8);
   EXPECT_EQ(s.method, Method::bdf);
-  ASSERT_EQ(s.sweeps.size(), 2U);
-  EXPECT_EQ(s.sweeps[0].zeta, (std::vector<double>{0, 0.25, 0.5, 0.75, 1}));
-  EXPECT_FALSE(s.sweeps[0].ends.contains(CollisionEnd::naive));
-  EXPECT_FALSE(s.sweeps[0].quantities.duration);
-  EXPECT_NEAR(s.sweeps[1].velocity_m_s[1], 1.0, 1e-15);
-  EXPECT_EQ(s.sweeps[1].velocity_m_s[2], 10.0);
-  EXPECT_EQ(s.sweeps[1].axes, Axes::log_log);
-  ASSERT_EQ(s.trajectories.size(), 1U);
-  EXPECT_EQ(*s.trajectories[0].zeta, 2.0);
-  EXPECT_EQ(s.calibrations[0].end, CollisionEnd::delayed_recovery);
-  EXPECT_EQ(s.dashpots[0].damping_ratio.size(), 2U);
+  const auto sweeps = tasks_of<Sweep>(s, "sweep");
+  ASSERT_EQ(sweeps.size(), 2U);
+  EXPECT_EQ(sweeps[0]->zeta, (std::vector<double>{0, 0.25, 0.5, 0.75, 1}));
+  EXPECT_FALSE(sweeps[0]->ends.contains(CollisionEnd::naive));
+  EXPECT_FALSE(sweeps[0]->quantities.duration);
+  EXPECT_NEAR(sweeps[1]->velocity_m_s[1], 1.0, 1e-15);
+  EXPECT_EQ(sweeps[1]->velocity_m_s[2], 10.0);
+  EXPECT_EQ(sweeps[1]->axes, Axes::log_log);
+  ASSERT_EQ(tasks_of<Trajectory>(s, "trajectory").size(), 1U);
+  EXPECT_EQ(*tasks_of<Trajectory>(s, "trajectory")[0]->zeta, 2.0);
+  EXPECT_EQ(tasks_of<CalibrationTask>(s, "calibration")[0]->end, CollisionEnd::delayed_recovery);
+  EXPECT_EQ(tasks_of<DashpotCheck>(s, "dashpot")[0]->damping_ratio.size(), 2U);
   EXPECT_EQ(tasks_of<ExternalStudy>(s, "stability")[0]->kind, "stability");
 }
 
@@ -195,14 +197,15 @@ TEST(SceneParser, LogRangesEndAtTheNumbersGiven) {
       "output = \"o\"\n[[sweep]]\nbeta = 0.2\nvelocity = {from = 0.01, to = 1e300, points = 7, spacing = "
       "\"log\"}\n",
       "t.toml");
-  EXPECT_EQ(s.sweeps[0].velocity_m_s.front(), 0.01);
-  EXPECT_EQ(s.sweeps[0].velocity_m_s.back(), 1e300);
+  EXPECT_EQ(tasks_of<Sweep>(s, "sweep")[0]->velocity_m_s.front(), 0.01);
+  EXPECT_EQ(tasks_of<Sweep>(s, "sweep")[0]->velocity_m_s.back(), 1e300);
 }
 
 TEST(SceneParser, QuickSettingsKeepTheEndsOfEveryRange) {
   Scene s = parse_scene("output = \"o\"\n[[sweep]]\nzeta = {from = 0, to = 10, points = 101}\n", "t.toml");
   make_quick(s, 4);
-  EXPECT_EQ(s.sweeps[0].zeta, (std::vector<double>{0.0, s.sweeps[0].zeta[1], s.sweeps[0].zeta[2], 10.0}));
+  const std::vector<double>& zeta = tasks_of<Sweep>(s, "sweep")[0]->zeta;
+  EXPECT_EQ(zeta, (std::vector<double>{0.0, zeta[1], zeta[2], 10.0}));
 }
 
 }  // namespace
@@ -217,10 +220,11 @@ TEST(SceneParser, TheDocumentedExampleSceneIsValid) {
   ASSERT_NE(start, std::string::npos);
   const std::size_t end = doc.find("```", start + 8);
   const Scene s = parse_scene(doc.substr(start + 8, end - start - 8), "docs/scenes.md");
-  EXPECT_EQ(s.sweeps.size(), 1U);
-  EXPECT_EQ(s.trajectories.size(), 1U);
-  EXPECT_EQ(s.calibrations.size(), 1U);
-  EXPECT_EQ(s.dashpots.size(), 1U);
+  for (const char* kind : {"sweep", "trajectory", "calibration", "dashpot"})
+    EXPECT_EQ(std::count_if(s.sections.begin(), s.sections.end(),
+                            [kind](const SectionTask& section) { return section.kind == kind; }),
+              1)
+        << kind;
   EXPECT_NO_THROW((void)plan_scene(s));
 }
 

@@ -12,6 +12,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/scene_run.hpp"
+#include "scene/scene_sections.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -38,17 +39,17 @@ TEST(SceneResults, DashpotErrorsAreTheClosedFormErrorsAndWithinTheTolerance) {
   const Scene s = parse_scene(
       "output = \"o\"\ntolerance = 1e-9\n[[dashpot]]\ndamping_ratio = [0.05, 0.3, 0.6, 0.9]\n", "t");
   const SceneResults r = run(s);
-  ASSERT_EQ(r.dashpots.size(), 1U);
-  const DashpotOutcome& d = r.dashpots[0];
+  ASSERT_EQ(outcomes_of<DashpotOutcome>(s, r, "dashpot").size(), 1U);
+  const DashpotOutcome& d = *outcomes_of<DashpotOutcome>(s, r, "dashpot")[0];
   ASSERT_EQ(d.points.size(), 4U);
   for (const CollisionEnd end : {CollisionEnd::naive, CollisionEnd::delayed_recovery}) {
     double worst = 0.0;
     for (std::size_t i = 0; i < d.points.size(); ++i) {
-      const double ratio = s.dashpots[0].damping_ratio[i];
+      const double ratio = tasks_of<DashpotCheck>(s, "dashpot")[0]->damping_ratio[i];
       const auto& check = d.points[i].ends[end];
       ASSERT_TRUE(check.has_value());
       EXPECT_EQ(d.points[i].damping_ratio, ratio);
-      EXPECT_EQ(check->eps, solved_eps(r, r.plan.dashpots[0][i], end));
+      EXPECT_EQ(check->eps, solved_eps(r, r.plan.points[0][i], end));
       const double exact = dashpot_exact(ratio, end);
       EXPECT_NEAR(check->eps_exact, exact, 4e-16);
       const double error = std::abs(check->eps - exact) / std::min(exact, 1.0 - exact);
@@ -64,7 +65,7 @@ TEST(SceneResults, DashpotErrorsAreTheClosedFormErrorsAndWithinTheTolerance) {
 TEST(SceneResults, DashpotWithoutANaiveEndHasNoCheckThere) {
   const Scene s = parse_scene("output = \"o\"\n[[dashpot]]\ndamping_ratio = [0.5, 2]\n", "t");
   const SceneResults r = run(s);
-  const DashpotOutcome& d = r.dashpots[0];
+  const DashpotOutcome& d = *outcomes_of<DashpotOutcome>(s, r, "dashpot")[0];
   EXPECT_TRUE(d.points[0].ends[CollisionEnd::naive].has_value());
   EXPECT_FALSE(d.points[1].ends[CollisionEnd::naive].has_value());  // r >= 1: x never returns to 0
   EXPECT_TRUE(d.points[1].ends[CollisionEnd::delayed_recovery].has_value());
@@ -76,8 +77,8 @@ TEST(SceneResults, ApproximationDifferencesAndTheirWorstCaseAreRecomputable) {
       "approximations = [\"naive-series\", \"pade-2011-3-6\"]\nasymptotics = true\n",
       "t");
   const SceneResults r = run(s);
-  const auto& points = r.plan.sweeps[0];
-  const auto& columns = r.sweeps[0].approximations;
+  const auto& points = r.plan.points[0];
+  const auto& columns = outcomes_of<SweepOutcome>(s, r, "sweep")[0]->extras.approximations;
   ASSERT_EQ(columns.size(), 4U);  // two approximations, then the large-ζ laws of both ends
   EXPECT_TRUE(columns[0].approximation.has_value());
   EXPECT_FALSE(columns[2].approximation.has_value());
@@ -117,15 +118,16 @@ TEST(SceneResults, AnApproximationOfAnEndNotSolvedIsNotCompared) {
       "approximations = [\"naive-series\"]\nfit = { zeta_min = 0.2 }\n",
       "t");
   const SceneResults r = run(s);
-  const ApproximationColumn& c = r.sweeps[0].approximations[0];
+  const ApproximationColumn& c = outcomes_of<SweepOutcome>(s, r, "sweep")[0]->extras.approximations[0];
   EXPECT_EQ(c.comparison.compared, 0U);
   EXPECT_TRUE(std::isnan(c.relative_difference[0]));
   // One point with ζ >= 0.2: no fit, and the shortfall says how many points there were.
-  EXPECT_TRUE(r.sweeps[0].fits.empty());
-  ASSERT_EQ(r.sweeps[0].fit_shortfalls.size(), 1U);
-  EXPECT_EQ(r.sweeps[0].fit_shortfalls[0].end, CollisionEnd::delayed_recovery);
-  EXPECT_EQ(r.sweeps[0].fit_shortfalls[0].points, 1U);
-  EXPECT_EQ(r.sweeps[0].fit_shortfalls[0].zeta_min, 0.2);
+  EXPECT_TRUE(outcomes_of<SweepOutcome>(s, r, "sweep")[0]->extras.fits.empty());
+  ASSERT_EQ(outcomes_of<SweepOutcome>(s, r, "sweep")[0]->extras.fit_shortfalls.size(), 1U);
+  EXPECT_EQ(outcomes_of<SweepOutcome>(s, r, "sweep")[0]->extras.fit_shortfalls[0].end,
+            CollisionEnd::delayed_recovery);
+  EXPECT_EQ(outcomes_of<SweepOutcome>(s, r, "sweep")[0]->extras.fit_shortfalls[0].points, 1U);
+  EXPECT_EQ(outcomes_of<SweepOutcome>(s, r, "sweep")[0]->extras.fit_shortfalls[0].zeta_min, 0.2);
 }
 
 TEST(SceneResults, EmpiricalDeviationIsTheLargestWhereTheLawIsACoefficient) {
@@ -135,12 +137,12 @@ TEST(SceneResults, EmpiricalDeviationIsTheLargestWhereTheLawIsACoefficient) {
       "}\nends = \"naive\"\nempirical = { coefficient = 0.32, exponent = -0.234, velocity_unit = 0.01 }\n",
       "t");
   const SceneResults r = run(s);
-  const SweepExtras& e = r.sweeps[0];
+  const SweepExtras& e = outcomes_of<SweepOutcome>(s, r, "sweep")[0]->extras;
   ASSERT_TRUE(e.empirical_deviation.has_value());
   double worst = 0.0;
   double at = 0.0;
   std::size_t skipped = 0;
-  for (const PlannedPoint& p : r.plan.sweeps[0]) {
+  for (const PlannedPoint& p : r.plan.points[0]) {
     const double law = 0.32 * std::pow(*p.velocity_m_s / 0.01, -0.234);
     if (law >= 1.0) {
       ++skipped;

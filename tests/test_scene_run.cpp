@@ -42,7 +42,7 @@ TEST(SceneRun, DelayedRecoveryOnlyNeverIntegratesTheNaiveTail) {
   const SceneResults r = run_scene(s, plan_scene(s));
   ASSERT_EQ(r.solved.size(), 2U);
   for (std::size_t i = 0; i < 2; ++i) {
-    const double zeta = s.sweeps[0].zeta[i];
+    const double zeta = tasks_of<Sweep>(s, "sweep")[0]->zeta[i];
     EXPECT_FALSE(r.solved[i][CollisionEnd::naive].has_value());
     ASSERT_TRUE(r.solved[i][CollisionEnd::delayed_recovery].has_value());
     EXPECT_TRUE(r.solved[i].trajectory.empty());
@@ -59,13 +59,14 @@ TEST(SceneRun, OneSolveIsSharedByEveryOutputThatNeedsIt) {
       "[[trajectory]]\nzeta = 0.5\nends = \"delayed-recovery\"\n",
       "t");
   const SceneResults r = run_scene(s, plan_scene(s));
-  ASSERT_EQ(r.plan.jobs.size(), 2U);  // ζ = 0.5 and ζ = 1, each once
-  EXPECT_EQ(r.plan.sweeps[1][0].job, r.plan.sweeps[0][1].job);
-  EXPECT_EQ(r.plan.trajectories[0].job, r.plan.sweeps[0][0].job);
-  const CollisionResult& half = r.solved[r.plan.sweeps[0][0].job];
+  ASSERT_EQ(r.plan.jobs.size(), 2U);            // ζ = 0.5 and ζ = 1, each once
+  ASSERT_EQ(s.sections[2].kind, "trajectory");  // the table's order: the sweeps, then the trajectory
+  EXPECT_EQ(r.plan.points[1][0].job, r.plan.points[0][1].job);
+  EXPECT_EQ(r.plan.points[2][0].job, r.plan.points[0][0].job);
+  const CollisionResult& half = r.solved[r.plan.points[0][0].job];
   expect_same_stats(half.stats, direct(0.5, EndSet::both(), true).stats);
   EXPECT_FALSE(half.trajectory.empty());
-  const CollisionResult& one = r.solved[r.plan.sweeps[0][1].job];
+  const CollisionResult& one = r.solved[r.plan.points[0][1].job];
   expect_same_stats(one.stats, direct(1.0, EndSet::both(), false).stats);
   EXPECT_TRUE(one.trajectory.empty());
   // The total is the field-by-field sum (SolverStats operator+=).
@@ -84,10 +85,10 @@ TEST(SceneRun, PhysicalSweepsUseZetaFromBetaAndVelocity) {
       "[[sweep]]\ncharacteristic_velocity = 0.0032\nvelocity = [0.01]\nends = \"naive\"\n",
       "t");
   const Plan p = plan_scene(s);
-  EXPECT_DOUBLE_EQ(p.sweeps[0][0].parameter, 0.2);
-  EXPECT_NEAR(p.sweeps[0][1].parameter, 0.4, 1e-15);
+  EXPECT_DOUBLE_EQ(p.points[0][0].parameter, 0.2);
+  EXPECT_NEAR(p.points[0][1].parameter, 0.4, 1e-15);
   // 1999 paper: (g/g*)^{1/5} = C1 ζ.
-  EXPECT_NEAR(series::c1_closed_form() * p.sweeps[1][0].parameter, std::pow(0.01 / 0.0032, 0.2), 1e-14);
+  EXPECT_NEAR(series::c1_closed_form() * p.points[1][0].parameter, std::pow(0.01 / 0.0032, 0.2), 1e-14);
   const Scene far = parse_scene("output = \"o\"\n[[sweep]]\nbeta = 100\nvelocity = [1e30]\n", "t");
   EXPECT_THROW((void)plan_scene(far), InvalidInput);
 }
@@ -102,10 +103,12 @@ TEST(SceneRun, CalibrationIgnoresAndNeedsNoDampingOfTheMaterial) {
   const Scene damped = parse_scene(material + "dissipative_constant = 3e-4\n" + task, "t");
   const SceneResults a = run_scene(bare, plan_scene(bare));
   const SceneResults b = run_scene(damped, plan_scene(damped));
-  ASSERT_TRUE(a.calibrations[0].calibration.dissipative_constant_s.has_value());
-  EXPECT_EQ(*a.calibrations[0].calibration.dissipative_constant_s,
-            *b.calibrations[0].calibration.dissipative_constant_s);
-  EXPECT_NEAR(a.calibrations[0].calibration.eps_at_zeta, 0.8, 1e-9);
+  ASSERT_TRUE(outcomes_of<CalibrationOutcome>(bare, a, "calibration")[0]
+                  ->calibration.dissipative_constant_s.has_value());
+  EXPECT_EQ(
+      *outcomes_of<CalibrationOutcome>(bare, a, "calibration")[0]->calibration.dissipative_constant_s,
+      *outcomes_of<CalibrationOutcome>(damped, b, "calibration")[0]->calibration.dissipative_constant_s);
+  EXPECT_NEAR(outcomes_of<CalibrationOutcome>(bare, a, "calibration")[0]->calibration.eps_at_zeta, 0.8, 1e-9);
 }
 
 TEST(SceneRun, ApproximationsAreEvaluatedBesideTheNumerics) {
@@ -114,12 +117,12 @@ TEST(SceneRun, ApproximationsAreEvaluatedBesideTheNumerics) {
       "approximations = [\"naive-series\", \"pade-1999\"]\nasymptotics = true\n",
       "t");
   const SceneResults r = run_scene(s, plan_scene(s));
-  const auto& columns = r.sweeps[0].approximations;
+  const auto& columns = outcomes_of<SweepOutcome>(s, r, "sweep")[0]->extras.approximations;
   ASSERT_EQ(columns.size(), 3U);  // two approximations and the naive large-ζ law
-  const double eps_small = r.solved[r.plan.sweeps[0][0].job][CollisionEnd::naive]->eps;
+  const double eps_small = r.solved[r.plan.points[0][0].job][CollisionEnd::naive]->eps;
   EXPECT_NEAR(columns[0].eps[0] / eps_small, 1.0, 1e-10);  // the series at ζ = 0.01
   EXPECT_NEAR(columns[1].eps[0] / eps_small, 1.0, 1e-6);   // the Padé agrees with the series at small ζ
-  const double eps_large = r.solved[r.plan.sweeps[0][1].job][CollisionEnd::naive]->eps;
+  const double eps_large = r.solved[r.plan.points[0][1].job][CollisionEnd::naive]->eps;
   EXPECT_NEAR(columns[2].eps[1] / eps_large, 1.0, 1e-9);  // κ ζ^{-5} at ζ = 20
   EXPECT_THROW((void)parse_scene("output = \"o\"\n[[sweep]]\nzeta = 1\napproximations = [\"taylor\"]\n", "t"),
                InvalidInput);
@@ -130,8 +133,8 @@ TEST(SceneRun, DashpotPointsWithoutANaiveEndAreNotIntegratedForIt) {
       parse_scene("output = \"o\"\n[[dashpot]]\ndamping_ratio = [0.5, 2]\nends = \"naive\"\n", "t");
   const SceneResults r = run_scene(s, plan_scene(s));
   EXPECT_EQ(r.plan.jobs.size(), 1U);
-  EXPECT_EQ(r.plan.dashpots[0][1].job, kNoJob);
-  EXPECT_EQ(result_of(r, r.plan.dashpots[0][1]), nullptr);
+  EXPECT_EQ(r.plan.points[0][1].job, kNoJob);
+  EXPECT_EQ(result_of(r, r.plan.points[0][1]), nullptr);
 }
 
 TEST(SceneRun, ResultsDoNotDependOnTheNumberOfThreads) {

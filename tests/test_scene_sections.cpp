@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <stdexcept>
 #include <string>
 
 #include "cli/scene/scene_section_writers.hpp"
@@ -42,8 +43,13 @@ TEST(SceneSections, EveryKindHasAWriterAndEveryWriterAKind) {
   for (const cli::SectionWriter& writer : cli::section_writers()) {
     EXPECT_TRUE(kinds.contains(writer.name)) << "a writer for [[" << writer.name << "]], which no row parses";
   }
-  for (const char* planned : {"sweep", "trajectory", "dashpot", "calibration"})
-    EXPECT_EQ(find_section_kind(planned), nullptr);  // the planner's sections keep their own members
+  // The planner's rows add their collisions to the shared plan; the others solve their own or none.
+  for (const char* planned : {"sweep", "trajectory", "dashpot"}) {
+    ASSERT_NE(find_section_kind(planned), nullptr) << planned;
+    EXPECT_NE(find_section_kind(planned)->plan, nullptr) << planned;
+  }
+  for (const char* own : {"calibration", "dem", "gas", "oblique", "fit"})
+    EXPECT_EQ(find_section_kind(own)->plan, nullptr);
   EXPECT_EQ(cli::find_section_writer("no_such_section"), nullptr);
 }
 
@@ -70,17 +76,18 @@ surface_energy = 0.19
 speeds = [2.0]
 )",
                         "s.toml");
-  ASSERT_EQ(s.sections.size(), 2U);
-  EXPECT_EQ(s.sections[0].kind, "adhesion");
-  EXPECT_EQ(s.sections[0].name, "first");
-  EXPECT_EQ(s.sections[0].line, 10);
-  EXPECT_EQ(s.sections[1].name, "second");
-  EXPECT_EQ(s.dashpots.size(), 1U);
+  ASSERT_EQ(s.sections.size(), 3U);
+  EXPECT_EQ(s.sections[1].kind, "adhesion");
+  EXPECT_EQ(s.sections[1].name, "first");
+  EXPECT_EQ(s.sections[1].line, 10);
+  EXPECT_EQ(s.sections[2].name, "second");
+  EXPECT_EQ(s.sections.size(), 3U);
+  EXPECT_EQ(s.sections[0].kind, "dashpot");  // the planner's rows come first in the table
   make_quick(s, 3);
   EXPECT_EQ(tasks_of<AdhesionTask>(s, "adhesion")[0]->speeds_m_s, (std::vector<double>{0.5, 2.5, 5.0}));
   const SceneResults results = run_scene(s, plan_scene(s));
-  ASSERT_EQ(results.sections.size(), 2U);
-  const auto& second = std::any_cast<const AdhesionOutcome&>(results.sections[1]);
+  ASSERT_EQ(results.sections.size(), 3U);
+  const auto& second = std::any_cast<const AdhesionOutcome&>(results.sections[2]);
   ASSERT_EQ(second.collisions.size(), 1U);
   EXPECT_EQ(second.contact.model, AdhesiveModel::jkr_lammps);
   EXPECT_EQ(second.collisions[0].outcome, AdhesiveOutcome::bounced);  // 2 m/s > v_s = 0.78 m/s
@@ -156,6 +163,86 @@ speeds = [1.0]
   EXPECT_FALSE(has_sections(s, "gas"));
   EXPECT_EQ(cli::own_collisions_text(s),
             "not counted here: the [[dem]] and [[damping_check]] sections solve their own collisions");
+}
+
+// The planner's rows share one plan of distinct collisions across sections and kinds: a collision two
+// sections ask for is one job (solved with the union of their ends and the trajectory one of them keeps),
+// each section's points name it, and the sections of other rows add nothing to the plan.
+TEST(SceneSections, ThePlannersRowsShareOneJobPerDistinctCollision) {
+  const Scene s = parse_scene(std::string(kSteelScene) + R"([[dashpot]]
+damping_ratio = [0.5, 2.0]
+ends = "naive"
+[[sweep]]
+name = "a"
+zeta = [0.5, 1.0]
+ends = "naive"
+[[fit]]
+v = [0.1, 0.3, 1.0, 3.0]
+eps = [0.95, 0.93, 0.9, 0.87]
+[[trajectory]]
+zeta = 1.0
+ends = "delayed-recovery"
+[[sweep]]
+name = "b"
+zeta = [1.0, 2.0]
+ends = "delayed-recovery"
+[[calibration]]
+eps = 0.8
+velocity = 1.0
+)",
+                              "s.toml");
+  const Plan plan = plan_scene(s);
+  ASSERT_EQ(plan.points.size(), s.sections.size());
+  // ζ = 0.5, 1, 2 of viscoelastic Hertz and r = 0.5 of the dash-pot (r = 2 has no naive end): four jobs for
+  // the seven points asked.
+  EXPECT_EQ(plan.jobs.size(), 4U);
+  const auto points_of = [&](std::string_view name) -> const std::vector<PlannedPoint>& {
+    for (std::size_t i = 0; i < s.sections.size(); ++i) {
+      if (s.sections[i].name == name) return plan.points[i];
+    }
+    throw std::logic_error("no section " + std::string(name));
+  };
+  const std::size_t one = points_of("a")[1].job;
+  EXPECT_EQ(points_of("b")[0].job, one);
+  EXPECT_EQ(points_of("trajectory3")[0].job,
+            one);  // every section counts in the numbering, in the table's order
+  EXPECT_EQ(plan.jobs[one].ends, EndSet::both());  // naive for "a", delayed recovery for the others
+  EXPECT_TRUE(plan.jobs[one].keep_trajectory);
+  EXPECT_FALSE(plan.jobs[points_of("a")[0].job].keep_trajectory);
+  EXPECT_EQ(points_of("dashpot5")[1].job, kNoJob);
+  EXPECT_TRUE(points_of("fit6").empty());
+  EXPECT_TRUE(points_of("calibration4").empty());
+  // The solved plan reaches each section's outcome: the trajectory and sweep "b" read the same collision.
+  const SceneResults results = run_scene(s, plan);
+  const auto trajectory = outcomes_of<TrajectoryOutcome>(s, results, "trajectory");
+  const auto sweeps = outcomes_of<SweepOutcome>(s, results, "sweep");
+  ASSERT_EQ(trajectory.size(), 1U);
+  ASSERT_EQ(sweeps.size(), 2U);
+  EXPECT_EQ(trajectory[0]->result[CollisionEnd::delayed_recovery]->eps,
+            sweeps[1]->results[0][CollisionEnd::delayed_recovery]->eps);
+  EXPECT_FALSE(trajectory[0]->result.trajectory.empty());
+  // The calibration's root finding counts with the plan's collisions, the [[fit]]'s solves do not.
+  const auto calibration = outcomes_of<CalibrationOutcome>(s, results, "calibration");
+  EXPECT_EQ(results.collisions,
+            plan.jobs.size() + static_cast<std::size_t>(calibration[0]->calibration.solves));
+}
+
+// The sections' order in the file changes neither the plan's distinct collisions nor which point names which.
+TEST(SceneSections, ThePlanDoesNotDependOnTheFilesOrder) {
+  const std::string sweep = "[[sweep]]\nname = \"s\"\nzeta = [0.5, 1.0]\n";
+  const std::string trajectory = "[[trajectory]]\nname = \"t\"\nzeta = 0.5\n";
+  const std::string dashpot = "[[dashpot]]\nname = \"d\"\ndamping_ratio = [0.5]\n";
+  const Scene a = parse_scene("output = \"o\"\n" + sweep + trajectory + dashpot, "a.toml");
+  const Scene b = parse_scene("output = \"o\"\n" + dashpot + trajectory + sweep, "b.toml");
+  const Plan pa = plan_scene(a);
+  const Plan pb = plan_scene(b);
+  ASSERT_EQ(pa.jobs.size(), 3U);
+  EXPECT_EQ(pb.jobs.size(), pa.jobs.size());
+  for (std::size_t i = 0; i < a.sections.size(); ++i) {
+    EXPECT_EQ(a.sections[i].name, b.sections[i].name);  // read in the table's order, not the file's
+    ASSERT_EQ(pa.points[i].size(), pb.points[i].size());
+    for (std::size_t k = 0; k < pa.points[i].size(); ++k) EXPECT_EQ(pa.points[i][k].job, pb.points[i][k].job);
+  }
 }
 
 }  // namespace

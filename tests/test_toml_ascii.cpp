@@ -18,6 +18,7 @@
 #include "restitution/errors.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_plan.hpp"
+#include "scene/scene_sections.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace restitution::scene {
@@ -185,9 +186,10 @@ TEST(TomlAscii, ParseSceneUsesIt) {
   const Scene scene = load_scene(RESTITUTION_SOURCE_DIR "/fuzz/corpus/scene/unicode_strings.toml");
   EXPECT_EQ(scene.title, "Ramírez, Pöschel: ε(ζ) ''quoted'' \"x\" \\\n");
   EXPECT_EQ(scene.output, std::filesystem::path("out/ε literal \\path"));
-  ASSERT_EQ(scene.sweeps.size(), 2U);
-  EXPECT_EQ(scene.sweeps[0].note, "multi-line ε \"quoted\" ε ζ continued\n");
-  EXPECT_EQ(scene.sweeps[1].note, "Ramírez — 粒子 \xF0\x9F\x98\x80");
+  const auto sweeps = scene::tasks_of<scene::Sweep>(scene, "sweep");
+  ASSERT_EQ(sweeps.size(), 2U);
+  EXPECT_EQ(sweeps[0]->note, "multi-line ε \"quoted\" ε ζ continued\n");
+  EXPECT_EQ(sweeps[1]->note, "Ramírez — 粒子 \xF0\x9F\x98\x80");
 }
 
 // Each input the scene fuzzer found must end in a clean error naming the file, as fuzz/fuzz_scene.cpp asks

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string_view>
 
 #include "dem/check_deck_codes.hpp"
 #include "restitution/errors.hpp"
@@ -90,6 +91,17 @@ void require_check_deck(Code code) {
         "not installed here to check one against; check decks exist for {}",
         code_name(code), code_list(" and ", [](const CodeEntry& e) { return e.check_deck != nullptr; })));
   }
+}
+
+void require_check_deck_name(Code code, const std::string& path) {
+  const std::string_view suffix = code_entry(code).check_deck_suffix;
+  const bool ends_with_suffix =
+      path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+  if (ends_with_suffix) return;
+  throw InvalidInput(fmt::format(
+      "--deck {}: {} runs a deck only from a file whose name ends in {} (`{}FILE` with another name runs "
+      "nothing and exits 0); name it {}{}",
+      path, code_name(code), suffix, code_entry(code).check_deck_run, path, suffix));
 }
 
 std::string check_deck_command(Code code, const std::string& path) {

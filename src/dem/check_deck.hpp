@@ -70,6 +70,9 @@ void require_deck_size(Code code, std::size_t type_pairs, std::size_t speeds);
 bool has_check_deck(Code code);
 // InvalidInput saying why unless has_check_deck(code).
 void require_check_deck(Code code);
+// InvalidInput unless `path` ends with what the code needs to run it (CodeEntry::check_deck_suffix: ".py"
+// for YADE), saying why and the name that works.
+void require_check_deck_name(Code code, const std::string& path);
 // How to run a deck written to `path`: "lmp -in PATH", "liggghts -in PATH", "yade -n -x PATH".
 std::string check_deck_command(Code code, const std::string& path);
 

@@ -174,6 +174,7 @@ CodeEntry yade_entry() {
       .polydisperse_note = "",
       .check_deck = &yade_check_deck,
       .check_deck_run = "yade -n -x ",
+      .check_deck_suffix = ".py",
       .check_deck_steps = 5000,
       .max_deck_collisions = kMaxDeckCollisionsYade,
       .write_wall = nullptr,

@@ -60,7 +60,11 @@ struct CodeEntry {
   const char* polydisperse_note;  // how the code reads the per-type-pair lines
   // The check deck at n coarse steps per natural time (dem/check_deck_codes.hpp); nullptr: none.
   std::string (*check_deck)(const CheckDeckRequest& request, int n);
-  const char* check_deck_run;       // the command before the deck's path
+  const char* check_deck_run;  // the command before the deck's path
+  // What the deck's file name must end with for the code to run it ("" when any name does): YADE 2023.02a
+  // runs `yade -n -x FILE` as a Python script only when FILE ends in .py; any other name runs nothing and
+  // exits 0, which reads like a check that passed.
+  const char* check_deck_suffix = "";
   int check_deck_steps;             // the default n
   std::size_t max_deck_collisions;  // type pairs x speeds in one deck
   // A sphere on a wall (dem/wall_lines.hpp): the lines giving `contact` (E*, R* = R, m_eff = m; G* [Pa] of

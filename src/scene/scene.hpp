@@ -88,6 +88,7 @@ struct CalibrationTask {
   std::optional<std::string> material;
   int line = 0;
   int eps_line = 0;  // of the eps key: its range is known only when the calibration runs
+  std::string path;  // "calibration[i]", as the parser names it: the run step's refusal names it so too
 };
 
 // The linear dash-pot against its closed forms (2008 paper Eqs. 10 and 12): an exact check.
@@ -116,14 +117,11 @@ struct Scene {
   Method method = SolveOptions{}.method;
   std::vector<std::string> figure_formats{"png"};  // `format`: each figure in each (figure_formats.hpp)
   std::map<std::string, Material> materials;
-  std::vector<Sweep> sweeps;
-  std::vector<Trajectory> trajectories;
-  std::vector<CalibrationTask> calibrations;
-  std::vector<DashpotCheck> dashpots;
   std::vector<std::string> warnings;  // a key read by its old name, each naming the new one
-  // Every other section, of a kind of the table (scene_sections.hpp: [[dem]], [[damping_check]], [[gas]],
-  // [[oblique]], [[adhesion]], [[fit]], [[work_precision]], [[stability]]), by kind in the table's order,
-  // each kind's in file order.
+  // Every section, of a kind of the table (scene_sections.hpp: the planner's [[sweep]], [[trajectory]],
+  // [[calibration]], [[dashpot]], then [[dem]], [[damping_check]], [[gas]], [[oblique]], [[adhesion]],
+  // [[fit]],
+  // [[work_precision]], [[stability]]), by kind in the table's order, each kind's in file order.
   std::vector<SectionTask> sections;
 };
 
@@ -133,8 +131,8 @@ Scene parse_scene(std::string_view toml_text, std::string_view file_name);
 // Reads the file and parses it. Throws InvalidInput naming the file when it cannot be read.
 Scene load_scene(const std::filesystem::path& path);
 
-// Caps every sweep, dash-pot and table-section range at `points` values (first and last kept) and
-// times each work-precision point once: CI's small settings.
+// Caps every section's ranges at `points` values (first and last kept; each row says which) and times each
+// work-precision point once: CI's small settings.
 void make_quick(Scene& scene, std::size_t points);
 // Keeps `points` of the values, spread evenly, the first and the last among them (points < 2: all).
 void thin_values(std::vector<double>& values, std::size_t points);

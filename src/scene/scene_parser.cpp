@@ -13,13 +13,9 @@
 
 #include "damping_check/recipes.hpp"
 #include "restitution/errors.hpp"
-#include "restitution_series_study/series_named.hpp"
 #include "scene/figure_formats.hpp"
 #include "scene/scene.hpp"
-#include "scene/scene_approximations.hpp"
 #include "scene/scene_sections.hpp"
-#include "scene/section_keys.hpp"
-#include "scene/section_material.hpp"
 #include "scene/toml_ascii.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -34,48 +30,6 @@ bool is_name(const std::string& s) {
   return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '-' || c == '_';
   });
-}
-
-EndSet read_ends(TomlReader& r, EndSet fallback = EndSet::both()) {
-  const auto words = r.words("ends");
-  if (!words) return fallback;
-  EndSet ends;
-  for (const std::string& w : *words) {
-    try {
-      ends = ends | end_set_from_name(w);
-    } catch (const InvalidInput& e) {
-      r.fail("ends", e.what());
-    }
-  }
-  if (ends.empty()) r.fail("ends", "no end requested");
-  return ends;
-}
-
-series::Approximation approximation_from(const TomlReader& r, const std::string& name) {
-  if (const auto kind = series::approximation_named(name)) return *kind;
-  r.fail("approximations", fmt::format("unknown approximation \"{}\" (known: {})", name,
-                                       fmt::join(series::evaluation_kinds(), ", ")));
-}
-
-// `law = "NAME"` (law_names()); viscoelastic Hertz when absent.
-LawKind read_law(TomlReader& r) {
-  const auto name = r.text("law");
-  if (!name) return LawKind::viscoelastic_hertz;
-  try {
-    return law_from_name(*name);
-  } catch (const InvalidInput& e) {
-    r.fail("law", e.what());
-  }
-}
-
-// The ζ values of a law other than viscoelastic Hertz: the forms and comparisons that belong to Hertz are
-// refused, and a requested naive end must exist at every ζ (below the critical ζ of Tsuji and the dash-pot).
-void check_law_zeta(TomlReader& r, LawKind law, EndSet ends, const std::vector<double>& zeta) {
-  if (law == LawKind::viscoelastic_hertz || !ends.contains(CollisionEnd::naive)) return;
-  r.check_each(
-      "zeta", zeta, [law](double z) { return ContactLaw::natural(law, z).naive_end_may_exist(); },
-      fmt::format("zeta < {:.17g}, where the naive end of {} exists (or ends = \"delayed-recovery\")",
-                  naive_end_critical_zeta(law), law_name(law)));
 }
 
 Material read_material(TomlReader& r) {
@@ -166,10 +120,6 @@ class Parser {
         scene_.materials.emplace(std::string(key.str()), read_material(r));
       }
     }
-    each("sweep", [this](TomlReader& r) { scene_.sweeps.push_back(read_sweep(r)); });
-    each("trajectory", [this](TomlReader& r) { scene_.trajectories.push_back(read_trajectory(r)); });
-    each("calibration", [this](TomlReader& r) { scene_.calibrations.push_back(read_calibration(r)); });
-    each("dashpot", [this](TomlReader& r) { scene_.dashpots.push_back(read_dashpot(r)); });
     // The table's sections (scene_sections.hpp), in its order: unnamed sections are numbered in it.
     for (const SectionKind& kind : section_kinds()) {
       each(kind.name, [this, &kind](TomlReader& r) {
@@ -223,178 +173,6 @@ class Parser {
     return name;
   }
 
-  // The keys every plotted task has: name, title, ends; and where it starts.
-  template <typename Task>
-  void read_heading(TomlReader& r, const char* kind, Task& task) {
-    task.line = r.line();
-    task.name = read_name(r, kind);
-    task.title = r.text("title").value_or(task.name);
-    task.ends = read_ends(r);
-  }
-
-  Sweep read_sweep(TomlReader& r) {
-    Sweep s;
-    read_heading(r, "sweep", s);
-    s.note = r.text("note").value_or("");
-    if (const auto q = r.words("quantities")) {
-      s.quantities = {false, false, false, false};
-      for (const std::string& w : *q) {
-        if (w == "eps")
-          s.quantities.eps = true;
-        else if (w == "one_minus_eps")
-          s.quantities.one_minus_eps = true;
-        else if (w == "duration")
-          s.quantities.duration = true;
-        else if (w == "max_compression")
-          s.quantities.max_compression = true;
-        else
-          r.fail("quantities",
-                 fmt::format("unknown quantity \"{}\" (eps, one_minus_eps, duration, max_compression)", w));
-      }
-    }
-    s.law = read_law(r);
-    const auto zeta = r.numbers("zeta");
-    const auto velocity = r.numbers("velocity");
-    if (velocity && !has_dissipative_constant(s.law)) {
-      r.fail("velocity",
-             fmt::format("a sweep over impact speeds is for law \"viscoelastic-hertz\"; law \"{}\" "
-                         "sweeps zeta (`restitution sweep --law {} --stiffness ...` sweeps its "
-                         "impact speeds)",
-                         law_name(s.law), law_name(s.law)));
-    }
-    s.beta = r.number("beta");
-    s.material = detail::read_optional_material(r, scene_.materials);
-    detail::require_dissipation(r, scene_.materials, s.material, "a sweep");
-    s.characteristic_velocity_m_s = r.number("characteristic_velocity");
-    const int subjects = static_cast<int>(s.beta.has_value()) + static_cast<int>(s.material.has_value()) +
-                         static_cast<int>(s.characteristic_velocity_m_s.has_value());
-    if (zeta) {
-      if (velocity || subjects > 0)
-        r.fail("zeta", "give zeta alone, or velocity with one of beta, material, characteristic_velocity");
-      detail::check_zeta(r, *zeta);
-      check_law_zeta(r, s.law, s.ends, *zeta);
-      s.zeta = *zeta;
-    } else {
-      if (!velocity) r.fail("", "give zeta, or velocity with one of beta, material, characteristic_velocity");
-      if (subjects != 1) r.fail("velocity", "needs exactly one of beta, material, characteristic_velocity");
-      detail::check_positive(r, "velocity", *velocity);
-      s.velocity_m_s = *velocity;
-      if (s.beta && *s.beta < 0.0) r.fail("beta", "expected a value >= 0");
-      if (s.characteristic_velocity_m_s && *s.characteristic_velocity_m_s <= 0.0) {
-        r.fail("characteristic_velocity", "expected a value > 0 (m/s)");
-      }
-    }
-    if (const auto names = r.words("approximations")) {
-      for (const std::string& name : *names) s.approximations.push_back(approximation_from(r, name));
-    }
-    s.asymptotics = r.flag("asymptotics").value_or(false);
-    const bool compare_series = r.flag("compare_series").value_or(false);
-    if (s.law != LawKind::viscoelastic_hertz) {
-      const char* hertz_only = !s.approximations.empty() ? "approximations"
-                               : s.asymptotics           ? "asymptotics"
-                               : compare_series          ? "compare_series"
-                                                         : nullptr;
-      if (hertz_only != nullptr) {
-        r.fail(hertz_only, fmt::format("the series and asymptotics are those of viscoelastic Hertz, not of "
-                                       "law \"{}\"",
-                                       law_name(s.law)));
-      }
-    }
-    if (compare_series) {
-      if (s.ends.contains(CollisionEnd::naive))
-        s.approximations.push_back(series::Approximation::naive_series);
-      if (s.ends.contains(CollisionEnd::delayed_recovery))
-        s.approximations.push_back(series::Approximation::delayed_recovery_series);
-    }
-    if (const toml::table* e = r.table("empirical")) {
-      TomlReader er(*e, r.child_path("empirical"), r.file_name());
-      EmpiricalLaw law;
-      law.coefficient = er.number("coefficient").value_or(0.0);
-      law.exponent = er.number("exponent").value_or(0.0);
-      law.velocity_unit_m_s = er.number("velocity_unit").value_or(1.0);
-      er.finish();
-      if (law.coefficient <= 0.0) er.fail("coefficient", "expected a value > 0");
-      if (law.velocity_unit_m_s <= 0.0) er.fail("velocity_unit", "expected a value > 0 (m/s)");
-      if (s.velocity_m_s.empty()) r.fail("empirical", "needs a sweep over velocity");
-      s.empirical = law;
-    }
-    if (const toml::table* f = r.table("fit")) {
-      TomlReader fr(*f, r.child_path("fit"), r.file_name());
-      PowerLawFitRequest fit;
-      fit.zeta_min = fr.number("zeta_min").value_or(0.0);
-      fr.finish();
-      if (fit.zeta_min <= 0.0) fr.fail("zeta_min", "expected a value > 0");
-      s.fit = fit;
-    }
-    const std::string axes = r.text("axes").value_or("linear");
-    if (axes == "linear")
-      s.axes = Axes::linear;
-    else if (axes == "log-log")
-      s.axes = Axes::log_log;
-    else if (axes == "log-x")
-      s.axes = Axes::log_x;
-    else
-      r.fail("axes", R"(expected "linear", "log-x" or "log-log")");
-    return s;
-  }
-
-  Trajectory read_trajectory(TomlReader& r) {
-    Trajectory t;
-    read_heading(r, "trajectory", t);
-    t.law = read_law(r);
-    t.zeta = r.number("zeta");
-    t.velocity_m_s = r.number("velocity");
-    t.beta = r.number("beta");
-    t.material = detail::read_optional_material(r, scene_.materials);
-    detail::require_dissipation(r, scene_.materials, t.material, "a trajectory");
-    if (t.zeta) {
-      if (t.velocity_m_s || t.beta || t.material)
-        r.fail("zeta", "give zeta alone, or velocity with beta or material");
-      detail::check_zeta(r, {*t.zeta});
-      check_law_zeta(r, t.law, t.ends, {*t.zeta});
-    } else {
-      if (!has_dissipative_constant(t.law))
-        r.fail("law", "a trajectory of a law other than viscoelastic-hertz takes zeta (its natural form)");
-      if (!t.velocity_m_s) r.fail("", "give zeta, or velocity with beta or material");
-      if (t.beta.has_value() == t.material.has_value())
-        r.fail("velocity", "needs exactly one of beta, material");
-      detail::check_positive(r, "velocity", {*t.velocity_m_s});
-      if (t.beta && *t.beta < 0.0) r.fail("beta", "expected a value >= 0");
-    }
-    return t;
-  }
-
-  CalibrationTask read_calibration(TomlReader& r) {
-    CalibrationTask c;
-    c.line = r.line();
-    c.name = read_name(r, "calibration");
-    c.law = read_law(r);
-    const auto eps = r.number("eps");
-    const auto velocity = r.number("velocity");
-    if (!eps) r.fail("eps", "missing");
-    if (!velocity) r.fail("velocity", "missing (m/s)");
-    detail::check_eps(r, "eps", {*eps});
-    detail::check_positive(r, "velocity", {*velocity});
-    c.eps = *eps;
-    c.eps_line = r.line_of("eps");
-    c.velocity_m_s = *velocity;
-    c.end = detail::read_end(r);
-    c.material = detail::read_optional_material(r, scene_.materials);
-    if (c.material && !has_dissipative_constant(c.law))
-      r.fail("material", "a material gives the dissipative constant A of law \"viscoelastic-hertz\" only");
-    return c;
-  }
-
-  DashpotCheck read_dashpot(TomlReader& r) {
-    DashpotCheck d;
-    read_heading(r, "dashpot", d);
-    const auto ratios = r.numbers("damping_ratio");
-    if (!ratios) r.fail("damping_ratio", "missing");
-    detail::check_positive(r, "damping_ratio", *ratios);
-    d.damping_ratio = *ratios;
-    return d;
-  }
-
   TomlReader root_;
   Scene scene_;
   std::set<std::string> names_;
@@ -436,11 +214,6 @@ void thin_values(std::vector<double>& values, std::size_t points) {
 }
 
 void make_quick(Scene& scene, std::size_t points) {
-  for (Sweep& s : scene.sweeps) {
-    thin_values(s.zeta, points);
-    thin_values(s.velocity_m_s, points);
-  }
-  for (DashpotCheck& d : scene.dashpots) thin_values(d.damping_ratio, points);
   for (SectionTask& s : scene.sections) find_section_kind(s.kind)->quick(s.task, points);
 }
 

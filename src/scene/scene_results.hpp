@@ -14,6 +14,7 @@
 #include "restitution/calibration.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/series.hpp"
+#include "scene/scene_plan.hpp"
 
 namespace restitution::scene {
 
@@ -66,6 +67,20 @@ struct SweepExtras {
   std::vector<FitShortfall> fit_shortfalls;
   std::vector<double> empirical_eps;  // the empirical law at each velocity, when asked
   std::optional<EmpiricalDeviation> empirical_deviation;
+};
+
+// A [[sweep]]: its points in the shared plan, each one's solved collision, and the studies it asks for.
+struct SweepOutcome {
+  std::vector<PlannedPoint> points;
+  std::vector<CollisionResult> results;  // parallel to points (a sweep's every point is integrated)
+  SweepExtras extras;
+};
+
+// A [[trajectory]]: its collision in the shared plan, solved with its trajectory (which may run past the
+// section's ends when another section asked for more of the same collision).
+struct TrajectoryOutcome {
+  PlannedPoint point;
+  CollisionResult result;
 };
 
 // A dash-pot point at one end against the closed form (reference/dashpot_closed_form.hpp): the error is

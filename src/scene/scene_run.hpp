@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// Running a planned scene: every job solved once (in parallel, one solver per thread), calibrations, and the
-// comparisons the scene asks for. Results are values; writing them is the caller's business.
+// Running a planned scene: every job solved once (in parallel, one solver per thread), then every section
+// through its row (scene_sections.hpp): the comparisons of the planner's sections, calibrations, the others.
+// Results are values; writing them is the caller's business.
 #include <any>
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <string_view>
 #include <vector>
 
 #include "scene/scene.hpp"
@@ -25,12 +27,9 @@ struct RunSettings {
 
 struct SceneResults {
   Plan plan;
-  std::vector<CollisionResult> solved;   // parallel to plan.jobs
-  std::vector<SweepExtras> sweeps;       // parallel to Scene::sweeps
-  std::vector<DashpotOutcome> dashpots;  // parallel to Scene::dashpots
-  std::vector<CalibrationOutcome> calibrations;
-  // Parallel to Scene::sections: each section's outcome, of its kind's type (scene_sections.hpp); their
-  // solves are not counted in `total` or `collisions`.
+  std::vector<CollisionResult> solved;  // parallel to plan.jobs
+  // Parallel to Scene::sections: each section's outcome, of its kind's type (scene_sections.hpp); the solves
+  // of the rows with own_solves words are not counted in `total` or `collisions`.
   std::vector<std::any> sections;
   SolverStats total;           // summed over the planned collisions (not the calibrations)
   std::size_t collisions = 0;  // collisions integrated, calibrations included
@@ -39,6 +38,18 @@ struct SceneResults {
 // Runs `plan`, which plan_scene(scene) made: planning apart lets a caller refuse a scene (points outside the
 // solver's range) before it prepares anything, without planning twice.
 SceneResults run_scene(const Scene& scene, Plan plan, const RunSettings& settings = {});
+
+// A scene's sections of `kind`, as their typed outcomes (in the order of Scene::sections).
+template <class Outcome>
+std::vector<const Outcome*> outcomes_of(const Scene& scene, const SceneResults& results,
+                                        std::string_view kind) {
+  std::vector<const Outcome*> outcomes;
+  for (std::size_t i = 0; i < scene.sections.size(); ++i) {
+    if (scene.sections[i].kind == kind)
+      outcomes.push_back(&std::any_cast<const Outcome&>(results.sections[i]));
+  }
+  return outcomes;
+}
 
 // The result of a planned point (nullptr when the point needed no integration).
 const CollisionResult* result_of(const SceneResults& results, const PlannedPoint& point);

@@ -13,6 +13,7 @@
 #include "scene/scene_gas.hpp"
 #include "scene/scene_oblique.hpp"
 #include "scene/scene_oblique_run.hpp"
+#include "scene/scene_planned_sections.hpp"
 #include "scene/scene_studies.hpp"
 
 namespace restitution::scene {
@@ -32,6 +33,16 @@ SectionKind row(const char* name, void (*quick)(std::any&, std::size_t), const c
             }
           },
           quick, own_solves};
+}
+
+// A row of the planner's: the row above with its hook that adds the task's collisions to the shared plan.
+template <class Task, auto read, auto plan, auto compute>
+SectionKind planned_row(const char* name, void (*quick)(std::any&, std::size_t)) {
+  SectionKind kind = row<Task, read, compute>(name, quick, "");
+  kind.plan = [](const Scene& scene, const std::any& task, JobTable& jobs) {
+    return plan(scene, std::any_cast<const Task&>(task), jobs);
+  };
+  return kind;
 }
 
 // The readers of the rows whose reader takes other arguments than (TomlReader&, const SectionContext&).
@@ -91,6 +102,15 @@ const std::vector<SectionKind>& section_kinds() {
   // The order the parser reads the kinds in (unnamed sections are numbered in it) and the run step runs
   // them in.
   static const std::vector<SectionKind> kinds = {
+      // The planner's: their collisions are solved once in the shared plan, before any row runs.
+      planned_row<Sweep, detail::read_sweep, plan_sweep, run_sweep_section>(
+          "sweep", thin_ranges<Sweep, &Sweep::zeta, &Sweep::velocity_m_s>),
+      planned_row<Trajectory, detail::read_trajectory, plan_trajectory, run_trajectory_section>("trajectory",
+                                                                                                keep_all),
+      // Solved by root finding with the rows' solver, counted with the plan's collisions.
+      row<CalibrationTask, detail::read_calibration, run_calibration_section>("calibration", keep_all, ""),
+      planned_row<DashpotCheck, detail::read_dashpot, plan_dashpot, run_dashpot_section>(
+          "dashpot", thin_ranges<DashpotCheck, &DashpotCheck::damping_ratio>),
       row<DemTask, read_dem, run_dem_section>(
           "dem",
           [](std::any& t, std::size_t n) { thin_values(std::any_cast<DemTask&>(t).inputs.speeds_m_s, n); },

@@ -4,8 +4,9 @@
 // row per kind with its name, how one section is read and how it runs. The scene holds these sections as
 // SectionTask values (scene.hpp) in the order of this table, the run step (scene_run.cpp) computes each into
 // a typed outcome, and the CLI's table of writers (cli/scene/scene_section_writers.hpp, keyed by the same
-// names; a test checks both tables list the same kinds) writes it. The sections whose collisions the planner
-// shares ([[sweep]], [[trajectory]], [[dashpot]], [[calibration]]) keep their own members of Scene.
+// names; a test checks both tables list the same kinds) writes it. The planner's rows ([[sweep]],
+// [[trajectory]], [[dashpot]]) add their collisions to the scene's shared plan first (scene_plan.hpp), and
+// their run step reads them from the solved plan.
 #include <any>
 #include <cstddef>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include "restitution/collision_solver.hpp"
 #include "restitution/material.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_plan.hpp"
 
 namespace restitution::scene {
 
@@ -33,11 +35,15 @@ struct SectionContext {
 };
 
 // What a section's run step is given besides its task: the scene, a solver the run step's sections share
-// (one at a time), and the reference solutions a work-precision study measures against (none: empty).
+// (one at a time), the reference solutions a work-precision study measures against (none: empty), and the
+// shared plan as solved.
 struct SectionRunContext {
   const Scene& scene;
   CollisionSolver& solver;
   const std::filesystem::path& reference_file;
+  const std::vector<PlannedPoint>& points;     // the section's points in the plan (its row's plan hook)
+  const std::vector<CollisionResult>& solved;  // parallel to Plan::jobs
+  std::size_t& counted_solves;  // where a run step counts solves beside the plan's (calibrations)
 };
 
 struct SectionKind {
@@ -52,6 +58,10 @@ struct SectionKind {
   // The report's words for what this kind integrates outside the shared plan ("" for nothing; rows with the
   // same words are named once).
   const char* own_solves;
+  // The planner's rows: adds the task's collisions to the shared plan before anything is solved and returns
+  // its points, which the run step reads (InvalidInput for a point outside the solver's range, before the
+  // output folder exists). Null for a row that solves its own.
+  std::vector<PlannedPoint> (*plan)(const Scene& scene, const std::any& task, JobTable& jobs) = nullptr;
 };
 
 // Every row, in the order the parser reads the kinds.

@@ -35,4 +35,37 @@ CollisionEnd read_end(TomlReader& r) {
   }
 }
 
+EndSet read_ends(TomlReader& r) {
+  const auto words = r.words("ends");
+  if (!words) return EndSet::both();
+  EndSet ends;
+  for (const std::string& w : *words) {
+    try {
+      ends = ends | end_set_from_name(w);
+    } catch (const InvalidInput& e) {
+      r.fail("ends", e.what());
+    }
+  }
+  if (ends.empty()) r.fail("ends", "no end requested");
+  return ends;
+}
+
+LawKind read_law(TomlReader& r) {
+  const auto name = r.text("law");
+  if (!name) return LawKind::viscoelastic_hertz;
+  try {
+    return law_from_name(*name);
+  } catch (const InvalidInput& e) {
+    r.fail("law", e.what());
+  }
+}
+
+void check_law_zeta(TomlReader& r, LawKind law, EndSet ends, const std::vector<double>& zeta) {
+  if (law == LawKind::viscoelastic_hertz || !ends.contains(CollisionEnd::naive)) return;
+  r.check_each(
+      "zeta", zeta, [law](double z) { return ContactLaw::natural(law, z).naive_end_may_exist(); },
+      fmt::format("zeta < {:.17g}, where the naive end of {} exists (or ends = \"delayed-recovery\")",
+                  naive_end_critical_zeta(law), law_name(law)));
+}
+
 }  // namespace restitution::scene::detail

@@ -54,6 +54,8 @@ class TomlReader {
   void finish() const;
 
   [[nodiscard]] std::string child_path(std::string_view key) const;
+  // How messages name the table ("sweep[2]"): for a step after the parser that names the section as it does.
+  [[nodiscard]] const std::string& path() const { return path_; }
   [[nodiscard]] std::string_view file_name() const { return file_name_; }
 
  private:

@@ -13,6 +13,7 @@ namespace restitution::cli {
 void check_deck_target(const std::string& path, dem::Code code) {
   if (path.empty()) throw InvalidInput("--deck needs a file name, got an empty one");
   dem::require_check_deck(code);
+  dem::require_check_deck_name(code, path);
   check_output_file(path);
 }
 

@@ -13,7 +13,8 @@
 
 namespace restitution::cli {
 
-// Before any work: InvalidInput (exit 2) for an empty path or a code without a runnable deck, IoError (exit
+// Before any work: InvalidInput (exit 2) for an empty path, a code without a runnable deck or a name the code
+// will not run (YADE's must end in .py), IoError (exit
 // 3) naming the file when it cannot be written.
 void check_deck_target(const std::string& path, dem::Code code);
 

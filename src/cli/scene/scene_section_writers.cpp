@@ -7,6 +7,7 @@
 #include "cli/scene/scene_fit_section.hpp"
 #include "cli/scene/scene_gas.hpp"
 #include "cli/scene/scene_oblique.hpp"
+#include "cli/scene/scene_planned_sections.hpp"
 #include "cli/scene/scene_studies.hpp"
 
 namespace restitution::cli {
@@ -28,6 +29,10 @@ SectionWriter row(const char* name) {
 
 const std::vector<SectionWriter>& section_writers() {
   static const std::vector<SectionWriter> writers = {
+      row<scene::Sweep, scene::SweepOutcome, write_sweep_section>("sweep"),
+      row<scene::Trajectory, scene::TrajectoryOutcome, write_trajectory_section>("trajectory"),
+      {"calibration", nullptr, write_calibrations},
+      row<scene::DashpotCheck, scene::DashpotOutcome, write_dashpot_section>("dashpot"),
       row<scene::DemTask, scene::DemOutcome, write_dem_section>("dem"),
       row<scene::DampingCheckTask, damping_check::GridResult, write_damping_check_section>("damping_check"),
       row<scene::GasTask, scene::GasOutcome, write_gas_section>("gas"),

@@ -46,8 +46,8 @@ struct SectionWriter {
   // Writes one section, in the scene file's order among the sections; or null, and
   void (*write)(const scene::Scene& scene, const scene::SectionTask& section, const std::any& outcome,
                 SectionOutput& out);
-  // writes every section of the rows that share this function at once, after the others and the
-  // calibrations, in the table's order (the studies: "Other studies").
+  // writes every section of the rows that share this function at once, after the others, in the table's
+  // order (the calibrations' table; the studies: "Other studies").
   void (*write_together)(const scene::Scene& scene, const std::vector<SectionResult>& sections,
                          SectionOutput& out);
 };

@@ -9,6 +9,7 @@
 
 #include "cli/common/output_files.hpp"
 #include "restitution/units.hpp"
+#include "scene/scene_run.hpp"
 #include "sweep/physical_columns.hpp"
 
 namespace restitution::cli {
@@ -42,10 +43,9 @@ std::size_t Table::column(const std::string& name) const {
   throw std::logic_error("no column " + name);
 }
 
-Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results, std::size_t index) {
-  const scene::Sweep& s = scene.sweeps[index];
-  const auto& points = results.plan.sweeps[index];
-  const scene::SweepExtras& extras = results.sweeps[index];
+Table sweep_table(const scene::Sweep& s, const scene::SweepOutcome& outcome) {
+  const auto& points = outcome.points;
+  const scene::SweepExtras& extras = outcome.extras;
   const bool physical = !s.velocity_m_s.empty();
   const bool si = physical && points.front().k.has_value();
   const auto ends = s.ends.members();
@@ -76,7 +76,7 @@ Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results,
 
   for (std::size_t i = 0; i < points.size(); ++i) {
     const scene::PlannedPoint& p = points[i];
-    const CollisionResult* r = scene::result_of(results, p);
+    const CollisionResult* r = &outcome.results[i];
     const NaturalScales scales = si ? natural_scales(*p.k, *p.velocity_m_s) : NaturalScales{};
     std::vector<double> row = {p.parameter};
     if (physical) row.insert(row.end(), {*p.velocity_m_s, *p.beta});
@@ -102,9 +102,9 @@ Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results,
   return t;
 }
 
-Table trajectory_table(const scene::SceneResults& results, std::size_t index) {
-  const scene::PlannedPoint& p = results.plan.trajectories[index];
-  const CollisionResult& r = *scene::result_of(results, p);
+Table trajectory_table(const scene::TrajectoryOutcome& outcome) {
+  const scene::PlannedPoint& p = outcome.point;
+  const CollisionResult& r = outcome.result;
   const bool si = p.k.has_value();
   const NaturalScales scales = si ? natural_scales(*p.k, *p.velocity_m_s) : NaturalScales{};
   Table t;
@@ -119,8 +119,7 @@ Table trajectory_table(const scene::SceneResults& results, std::size_t index) {
   return t;
 }
 
-Table dashpot_table(const scene::Scene& scene, const scene::SceneResults& results, std::size_t index) {
-  const scene::DashpotCheck& d = scene.dashpots[index];
+Table dashpot_table(const scene::DashpotCheck& d, const scene::DashpotOutcome& outcome) {
   Table t;
   t.columns = {"damping_ratio"};
   const auto ends = d.ends.members();
@@ -128,7 +127,7 @@ Table dashpot_table(const scene::Scene& scene, const scene::SceneResults& result
     const std::string n = end_key(e);
     t.columns.insert(t.columns.end(), {n + "_eps", n + "_eps_exact", n + "_relative_error"});
   }
-  for (const scene::DashpotPoint& p : results.dashpots[index].points) {
+  for (const scene::DashpotPoint& p : outcome.points) {
     std::vector<double> row = {p.damping_ratio};
     for (const CollisionEnd e : ends) {
       const auto& check = p.ends[e];
@@ -140,6 +139,19 @@ Table dashpot_table(const scene::Scene& scene, const scene::SceneResults& result
     t.rows.push_back(std::move(row));
   }
   return t;
+}
+
+std::string report_number(double v) {
+  return std::isfinite(v) ? fmt::format("{:.10g}", v) : "—";
+}
+
+std::string join(const std::vector<std::string>& items, const char* separator) {
+  std::string out;
+  for (const auto& item : items) {
+    if (!out.empty()) out += separator;
+    out += item;
+  }
+  return out;
 }
 
 }  // namespace restitution::cli

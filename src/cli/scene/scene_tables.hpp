@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "scene/scene.hpp"
-#include "scene/scene_run.hpp"
+#include "scene/scene_results.hpp"
 
 // Sweep tables hold, per approximation, <label>_eps and <label>_rel_diff = <label>_eps / eps - 1 against the
 // numerics at the end the approximation describes (ApproximationColumn::relative_difference); dash-pot tables
@@ -22,9 +22,13 @@ struct Table {
   [[nodiscard]] std::size_t column(const std::string& name) const;  // index; throws if absent
 };
 
-// index: of the task in the scene (Scene::sweeps, ::trajectories, ::dashpots).
-Table sweep_table(const scene::Scene& scene, const scene::SceneResults& results, std::size_t index);
-Table trajectory_table(const scene::SceneResults& results, std::size_t index);
-Table dashpot_table(const scene::Scene& scene, const scene::SceneResults& results, std::size_t index);
+Table sweep_table(const scene::Sweep& sweep, const scene::SweepOutcome& outcome);
+Table trajectory_table(const scene::TrajectoryOutcome& outcome);
+Table dashpot_table(const scene::DashpotCheck& dashpot, const scene::DashpotOutcome& outcome);
+
+// A number of the report: 10 significant digits, "—" where there is none (NaN).
+std::string report_number(double v);
+// The items with `separator` between them.
+std::string join(const std::vector<std::string>& items, const char* separator = ",");
 
 }  // namespace restitution::cli
