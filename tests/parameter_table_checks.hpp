@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The checks every study's parameter table (restitution/parameter_table.hpp) passes, shared by
-// test_gas_parameters.cpp and test_oblique_parameters.cpp: each row complete, and a value inside (and one
-// outside) the row's range, written as an option's argument or a scene's TOML, read back from its member.
+// test_gas_parameters.cpp, test_oblique_parameters.cpp and test_dem_parameters.cpp: each row complete, and a
+// value inside (and one outside) the row's range, written as an option's argument or a scene's TOML, read
+// back from its member.
 #include <gtest/gtest.h>
 
 #include <CLI/CLI.hpp>

@@ -362,8 +362,8 @@ TEST(DemScene, ParsesATaskAndNamesWhatIsWrong) {
           "[[dem]]\nname = \"d\"\ncode = \"yade\"\nmaterial = \"rubber\"\nspeeds = [1, 2]\n",
       "dem.toml");
   ASSERT_EQ(scene::tasks_of<scene::DemTask>(s, "dem").size(), 1U);
-  EXPECT_EQ(scene::tasks_of<scene::DemTask>(s, "dem")[0]->code, dem::Code::yade);
-  EXPECT_EQ(scene::tasks_of<scene::DemTask>(s, "dem")[0]->end, CollisionEnd::delayed_recovery);
+  EXPECT_EQ(scene::tasks_of<scene::DemTask>(s, "dem")[0]->inputs.code, "yade");
+  EXPECT_EQ(scene::tasks_of<scene::DemTask>(s, "dem")[0]->inputs.end, "delayed-recovery");
   EXPECT_NE(scene_error("code = \"gromacs\"\nmaterial = \"rubber\"\nspeeds = [1]\n").find("code"),
             std::string::npos);
   EXPECT_NE(scene_error("code = \"lammps\"\nspeeds = [1]\n").find("material"), std::string::npos);
@@ -373,7 +373,7 @@ TEST(DemScene, ParsesATaskAndNamesWhatIsWrong) {
   EXPECT_NE(scene_error("code = \"lammps\"\nmaterial = \"rubber\"\n").find("speeds"), std::string::npos);
   EXPECT_NE(scene_error("code = \"lammps\"\nmaterial = \"rubber\"\nspeeds = [-1]\n").find("speeds"),
             std::string::npos);
-  EXPECT_EQ(scene::tasks_of<scene::DemTask>(s, "dem")[0]->friction, 0.0);
+  EXPECT_EQ(scene::tasks_of<scene::DemTask>(s, "dem")[0]->inputs.friction, 0.0);
   EXPECT_NE(scene_error("code = \"lammps\"\nmaterial = \"rubber\"\nspeeds = [1]\nfriction = -0.5\n")
                 .find("friction"),
             std::string::npos);
@@ -381,7 +381,7 @@ TEST(DemScene, ParsesATaskAndNamesWhatIsWrong) {
       std::string(kSceneHead) +
           "[[dem]]\nname = \"d\"\ncode = \"lammps\"\nmaterial = \"rubber\"\nspeeds = [1]\nfriction = 0.5\n",
       "dem.toml");
-  EXPECT_EQ(scene::tasks_of<scene::DemTask>(rough, "dem")[0]->friction, 0.5);
+  EXPECT_EQ(scene::tasks_of<scene::DemTask>(rough, "dem")[0]->inputs.friction, 0.5);
 }
 
 }  // namespace

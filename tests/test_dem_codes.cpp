@@ -195,7 +195,8 @@ TEST(DemCodes, ScenesHoldTheCode) {
         e.name + "\"\nmaterial = \"rubber\"\nspeeds = [1]\n";
     const scene::Scene s = scene::parse_scene(text, "codes.toml");
     ASSERT_EQ(scene::tasks_of<scene::DemTask>(s, "dem").size(), 1U);
-    EXPECT_EQ(scene::tasks_of<scene::DemTask>(s, "dem")[0]->code, e.code) << e.name;
+    EXPECT_EQ(dem::code_from_name(scene::tasks_of<scene::DemTask>(s, "dem")[0]->inputs.code), e.code)
+        << e.name;
   }
 }
 

@@ -129,7 +129,7 @@ run = false
                                              "stability:stability4"}));
   EXPECT_EQ(s.sections[0].line, 18);  // of [[dem]]
   make_quick(s, 2);
-  EXPECT_EQ(tasks_of<DemTask>(s, "dem")[0]->speeds, (std::vector<double>{0.3, 3.0}));
+  EXPECT_EQ(tasks_of<DemTask>(s, "dem")[0]->inputs.speeds_m_s, (std::vector<double>{0.3, 3.0}));
   EXPECT_EQ(tasks_of<DampingCheckTask>(s, "damping_check")[0]->eps, (std::vector<double>{0.3, 0.9}));
   EXPECT_EQ(tasks_of<ExternalStudy>(s, "stability")[0]->zeta, (std::vector<double>{0.1, 1.0}));
   EXPECT_EQ(tasks_of<FitTask>(s, "fit")[0]->data.velocity_m_s.size(), 4U);  // measured data are kept whole

@@ -3,8 +3,10 @@
 // A study's parameters declared once: one row per field of the study's inputs struct, with its name, member,
 // unit, range and help. The front ends are made from the rows: a command's options (the name with dashes:
 // --packing-fraction), a scene section's keys and Python's keywords (the name as it is). The gas study
-// (restitution_gas/gas_parameters.hpp) and the oblique study (restitution_oblique/oblique_parameters.hpp)
-// each hold one table of ParameterField<TheirInputs>. Inline only: no module implements it.
+// (restitution_gas/gas_parameters.hpp), the oblique study (restitution_oblique/oblique_parameters.hpp), the
+// DEM lines (src/dem/dem_parameters.hpp) and the damping check
+// (src/damping_check/damping_check_parameters.hpp) each hold one table of ParameterField<TheirInputs>. Inline
+// only: no module implements it.
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -67,6 +69,9 @@ struct ParameterField {
   // The scene's key when it is not the name ("angles" for angle); "" when the section reads it its own way.
   const char* scene_key = nullptr;
   const char* absent = nullptr;  // what leaving a list's key out means: a scene refuses an empty list with it
+  // A scene's check of a number in the study's own words (the DEM lines' Coulomb mu), as check_word's of a
+  // word: throws InvalidInput. None: the range alone.
+  void (*check_number)(double value) = nullptr;
   [[nodiscard]] const char* key() const { return scene_key != nullptr ? scene_key : name; }
   [[nodiscard]] bool is_key() const { return !from_material && key()[0] != '\0'; }
 };

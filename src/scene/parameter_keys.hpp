@@ -54,6 +54,13 @@ void read_parameter_number(TomlReader& r, const ParameterField<Inputs>& f, Input
         f.key(), {*value}, [&](double v) { return f.range->contains(v) && (!whole || v == std::floor(v)); },
         f.range->text);
   }
+  if (value && f.check_number != nullptr) {
+    try {
+      f.check_number(*value);
+    } catch (const InvalidInput& e) {
+      r.fail(f.key(), e.what());
+    }
+  }
   if (!value) return;
   if (f.kind == FieldKind::optional_number) in.*f.optional_number = value;
   if (f.kind == FieldKind::number) in.*f.number = *value;

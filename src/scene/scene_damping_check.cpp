@@ -3,6 +3,7 @@
 
 #include "damping_check/check.hpp"
 #include "restitution/errors.hpp"
+#include "scene/parameter_keys.hpp"
 #include "scene/section_keys.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -14,7 +15,7 @@ damping_check::GridResult run_damping_check(const DampingCheckTask& task, double
   for (const std::string& name : task.recipes)
     request.recipes.push_back(damping_check::recipe_from_name(name));
   request.eps = task.eps;
-  request.reference_velocity_m_s = task.velocity_m_s;
+  request.reference_velocity_m_s = task.inputs.velocity_m_s;
   request.speeds_m_s = task.speeds;
   request.tolerance = tolerance;
   return damping_check::check_grid(request, solver);
@@ -23,6 +24,7 @@ damping_check::GridResult run_damping_check(const DampingCheckTask& task, double
 namespace detail {
 
 DampingCheckTask read_damping_check_task(TomlReader& r, std::string name) {
+  using damping_check::damping_check_field;
   DampingCheckTask d;
   d.line = r.line();
   d.name = std::move(name);
@@ -42,9 +44,11 @@ DampingCheckTask read_damping_check_task(TomlReader& r, std::string name) {
   }
   d.eps = r.numbers("eps").value_or(damping_check::map_eps_grid());
   if (d.eps.empty()) r.fail("eps", "empty: leave the key out for 0.05 to 0.99");
-  check_eps(r, "eps", d.eps);
-  d.velocity_m_s = r.number("velocity").value_or(1.0);
-  check_positive(r, "velocity", {d.velocity_m_s});
+  const FieldRange& eps = *damping_check_field("eps").range;  // the command's --eps, one at a time
+  r.check_each(
+      "eps", d.eps, [&](double e) { return eps.contains(e); }, eps.text);
+  for (const damping_check::DampingCheckField& f : damping_check::damping_check_fields())
+    read_parameter_key(r, f, d.inputs);  // velocity; the rest are the command's or the section's lists
   d.speeds = r.numbers("speeds").value_or(damping_check::speed_grid(0.1, 10.0, 9));
   if (d.speeds.empty()) r.fail("speeds", "empty: leave the key out for 0.1 to 10 m/s");
   check_positive(r, "speeds", d.speeds);

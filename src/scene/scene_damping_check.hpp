@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "damping_check/damping_check_parameters.hpp"
 #include "damping_check/grid.hpp"
 #include "restitution/collision_solver.hpp"
 
@@ -14,9 +15,11 @@ namespace restitution::scene {
 struct DampingCheckTask {
   std::string name;
   std::string title;
+  // The check's inputs as the keys give them (the rows of damping_check/damping_check_parameters.hpp that
+  // are keys: velocity); the grids below are the section's own lists.
+  damping_check::DampingCheckInputs inputs;
   std::vector<std::string> recipes;  // recipe names (damping_check/recipes.hpp); default: every recipe
   std::vector<double> eps;           // requested ε in (0, 1); default 0.05, 0.10, ..., 0.95, 0.99
-  double velocity_m_s = 1.0;         // reference speed of the speed-dependent recipes [m/s]
   std::vector<double> speeds;        // impact speeds of the error maps [m/s]; default 0.1 to 10, 9 points
   int line = 0;
 };

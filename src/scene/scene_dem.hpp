@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dem/dem_codes.hpp"
+#include "dem/dem_parameters.hpp"
 #include "dem/lines_check.hpp"
 #include "dem/yade_versions.hpp"
 #include "restitution/collision_solver.hpp"
@@ -21,14 +22,11 @@ struct Scene;
 struct DemTask {
   std::string name;
   std::string title;
-  dem::Code code = dem::kDefaultCode;
-  std::string material;                // a [materials.X] of this scene
-  std::optional<double> eps;           // with velocity: calibrate A; without: the material's A
-  std::optional<double> velocity_m_s;  // the calibration speed (YADE's vn; default 1 m/s)
-  CollisionEnd end = CollisionEnd::delayed_recovery;
-  std::vector<double> speeds;  // impact speeds of the comparison [m/s]
-  bool run_code = true;        // LAMMPS and LIGGGHTS: run the code at each speed
-  double friction = 0.0;       // Coulomb mu of the tangential model [1]; 0: frictionless
+  std::string material;  // a [materials.X] of this scene, whose A the lines take unless inputs.eps is given
+  // The study's inputs as the keys give them (the rows of dem/dem_parameters.hpp): eps with velocity
+  // calibrate A; the accuracy is the scene's tolerance.
+  dem::DemInputs inputs;
+  bool run_code = true;  // LAMMPS and LIGGGHTS: run the code at each speed
   int line = 0;
 };
 

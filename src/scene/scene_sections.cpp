@@ -111,7 +111,10 @@ const std::vector<SectionKind>& section_kinds() {
       row<CalibrationTask, detail::read_calibration, run_calibration_section>("calibration", keep_all, ""),
       planned_row<DashpotCheck, detail::read_dashpot, plan_dashpot, run_dashpot_section>(
           "dashpot", thin_ranges<DashpotCheck, &DashpotCheck::damping_ratio>),
-      row<DemTask, read_dem, run_dem_section>("dem", thin_ranges<DemTask, &DemTask::speeds>, kDemWords),
+      row<DemTask, read_dem, run_dem_section>(
+          "dem",
+          [](std::any& t, std::size_t n) { thin_values(std::any_cast<DemTask&>(t).inputs.speeds_m_s, n); },
+          kDemWords),
       row<DampingCheckTask, read_damping_check, run_damping_check_section>(
           "damping_check", thin_ranges<DampingCheckTask, &DampingCheckTask::eps, &DampingCheckTask::speeds>,
           kDemWords),

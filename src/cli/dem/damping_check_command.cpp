@@ -12,8 +12,10 @@
 #include "cli/common/commands.hpp"
 #include "cli/common/deprecated_alias.hpp"
 #include "cli/common/json_writer.hpp"
+#include "cli/common/parameter_options.hpp"
 #include "cli/common/range_option.hpp"
 #include "damping_check/check.hpp"
+#include "damping_check/damping_check_parameters.hpp"
 #include "damping_check/inverse.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
@@ -25,18 +27,14 @@ using damping_check::CheckPoint;
 using damping_check::CheckRequest;
 using damping_check::CheckResult;
 
+// The check's inputs (one option per row of its table, damping_check/damping_check_parameters.hpp) and what
+// only the command line has: the impact speeds and --json.
 struct DampingCheckOptions {
-  std::string recipe;
-  std::optional<double> eps;
-  std::optional<double> target_eps;  // the inverse: the ε wanted at --velocity
-  std::string clamp = "both";
-  double velocity = 1.0;       // reference speed of the speed-dependent recipes [m/s]
+  damping_check::DampingCheckInputs inputs;
   std::string velocity_range;  // FROM:TO:N; the old form is velocity_min, velocity_max and points
   double velocity_min = 0.1, velocity_max = 10.0;
   int points = 5;
   bool old_range_given = false;  // any of --velocity-min, --velocity-max, --points
-  double tolerance = SolveOptions{}.tolerance;
-  bool map = false;
   bool json = false;
 };
 
@@ -67,11 +65,11 @@ std::vector<double> speeds_of(const DampingCheckOptions& o) {
 
 CheckRequest request_of(const DampingCheckOptions& o) {
   CheckRequest r;
-  r.recipe = damping_check::recipe_from_name(o.recipe);
-  r.clamps = damping_check::clamps_from_name(o.clamp);
-  r.reference_velocity_m_s = o.velocity;
+  r.recipe = damping_check::recipe_from_name(o.inputs.recipe);
+  r.clamps = damping_check::clamps_from_name(o.inputs.clamp);
+  r.reference_velocity_m_s = o.inputs.velocity_m_s;
   r.speeds_m_s = speeds_of(o);
-  r.tolerance = o.tolerance;
+  r.tolerance = o.inputs.tolerance;
   return r;
 }
 
@@ -106,15 +104,15 @@ void print_json(const DampingCheckOptions& o, const std::vector<double>& eps,
   JsonWriter json;
   json.begin_object().field("recipe", damping_check::recipe_name(s.recipe));
   json.field("source", damping_check::recipe_source(s.recipe)).field("law", law_name(s.law));
-  json.field("speed_independent", s.speed_independent()).field("clamp", o.clamp);
-  json.field("reference_velocity_m_s", o.velocity);
+  json.field("speed_independent", s.speed_independent()).field("clamp", o.inputs.clamp);
+  json.field("reference_velocity_m_s", o.inputs.velocity_m_s);
   const auto entry = [&](std::size_t i) {
     json.field("requested_eps", eps[i])
         .field(results[i].setting.code_value_name, results[i].setting.code_value);
     json.field("zeta_reference", results[i].setting.zeta_reference);
     write_points(json, results[i], eps[i]);
   };
-  if (o.map) {
+  if (o.inputs.map) {
     json.key("map").begin_array();
     for (std::size_t i = 0; i < eps.size(); ++i) {
       json.begin_object();
@@ -164,9 +162,9 @@ void print_text(const DampingCheckOptions& o, const std::vector<double>& eps,
     fmt::print("# speed-independent: one eps for every impact speed, material and size\n");
   } else {
     fmt::print("# speed-dependent: zeta = zeta_ref (v / {:g} m/s)^(1/5), the same for every material\n",
-               o.velocity);
+               o.inputs.velocity_m_s);
   }
-  if (!o.map) {
+  if (!o.inputs.map) {
     fmt::print("# requested eps {}: {} = {:.10g}, zeta_ref = {:.10g}\n", eps[0], s.code_value_name,
                s.code_value, s.zeta_reference);
   }
@@ -180,19 +178,19 @@ void print_text(const DampingCheckOptions& o, const std::vector<double>& eps,
 int run_inverse(const DampingCheckOptions& o) {
   CollisionSolver solver;
   damping_check::InverseRequest r;
-  r.recipe = damping_check::recipe_from_name(o.recipe);
-  r.target_eps = *o.target_eps;
-  r.target_velocity_m_s = o.velocity;
+  r.recipe = damping_check::recipe_from_name(o.inputs.recipe);
+  r.target_eps = *o.inputs.target_eps;
+  r.target_velocity_m_s = o.inputs.velocity_m_s;
   r.speeds_m_s = speeds_of(o);
-  r.tolerance = o.tolerance;
+  r.tolerance = o.inputs.tolerance;
   const std::vector<damping_check::InverseResult> results =
-      damping_check::invert_recipe_for(r, damping_check::clamps_from_name(o.clamp), solver);
+      damping_check::invert_recipe_for(r, damping_check::clamps_from_name(o.inputs.clamp), solver);
   const damping_check::RecipeSetting& s = results.front().check.setting;
   if (o.json) {
     JsonWriter json;
     json.begin_object().field("recipe", damping_check::recipe_name(s.recipe));
     json.field("source", damping_check::recipe_source(s.recipe)).field("law", law_name(s.law));
-    json.field("speed_independent", s.speed_independent()).field("clamp", o.clamp);
+    json.field("speed_independent", s.speed_independent()).field("clamp", o.inputs.clamp);
     json.field("target_eps", r.target_eps).field("target_velocity_m_s", r.target_velocity_m_s);
     json.key("inverse").begin_array();
     for (const auto& inv : results) {
@@ -227,15 +225,16 @@ int run_inverse(const DampingCheckOptions& o) {
 }
 
 int run(const DampingCheckOptions& o) {
-  if (static_cast<int>(o.map) + static_cast<int>(o.eps.has_value()) +
-          static_cast<int>(o.target_eps.has_value()) !=
+  if (static_cast<int>(o.inputs.map) + static_cast<int>(o.inputs.eps.has_value()) +
+          static_cast<int>(o.inputs.target_eps.has_value()) !=
       1) {
     throw InvalidInput(
         "give one of --eps E (one requested eps), --map (requested eps from 0.05 to 0.99) or --target-eps E "
         "(the eps to request for E at --velocity)");
   }
-  if (o.target_eps) return run_inverse(o);
-  const std::vector<double> eps = o.map ? damping_check::map_eps_grid() : std::vector<double>{*o.eps};
+  if (o.inputs.target_eps) return run_inverse(o);
+  const std::vector<double> eps =
+      o.inputs.map ? damping_check::map_eps_grid() : std::vector<double>{*o.inputs.eps};
   CollisionSolver solver;
   const std::vector<CheckResult> results = damping_check::check_recipe_at(request_of(o), eps, solver);
   if (o.json) {
@@ -246,6 +245,19 @@ int run(const DampingCheckOptions& o) {
   return 0;
 }
 
+// The impact speeds: --velocity-range, and the old form it replaces (deprecated; returned to count its use).
+std::vector<CLI::Option*> add_speed_options(CLI::App& cmd, DampingCheckOptions& o) {
+  cmd.add_option("--velocity-range", o.velocity_range,
+                 fmt::format("FROM:TO:N: N log-spaced impact speeds in m/s (speed-dependent recipes), ends "
+                             "included, N in [1, {}] (default {:g}:{:g}:{})",
+                             damping_check::kMaxSpeedPoints, o.velocity_min, o.velocity_max, o.points));
+  std::vector<CLI::Option*> old_form{cmd.add_option("--velocity-min", o.velocity_min),
+                                     cmd.add_option("--velocity-max", o.velocity_max),
+                                     cmd.add_option("--points", o.points)};
+  deprecate_old_form(old_form, "--velocity-min V1 --velocity-max V2 --points N", "--velocity-range V1:V2:N");
+  return old_form;
+}
+
 }  // namespace
 
 void add_damping_check_command(CLI::App& app, Action& chosen) {
@@ -253,28 +265,13 @@ void add_damping_check_command(CLI::App& app, Action& chosen) {
   CLI::App* cmd = app.add_subcommand(
       "damping-check",
       "the eps a DEM code's damping recipe really gives for a requested eps, clamp on and off");
-  cmd->add_option("--recipe", o->recipe, "recipe: " + damping_check::recipe_names())->required();
-  cmd->add_option("--eps", o->eps, "requested coefficient of restitution in (0, 1)");
-  cmd->add_option("--target-eps", o->target_eps,
-                  "the inverse: the eps to request so that the recipe gives this eps at --velocity");
-  cmd->add_flag("--map", o->map, "check the requested eps 0.05, 0.10, ..., 0.95, 0.99 instead of --eps");
-  cmd->add_option("--clamp", o->clamp,
-                  "force clamped at zero: on (delayed-recovery end), off (naive end) or both")
-      ->capture_default_str();
-  cmd->add_option("--velocity", o->velocity,
-                  "reference impact speed in m/s the speed-dependent recipes are set up at (YADE's vn); "
-                  "with --target-eps the speed of the target")
-      ->capture_default_str();
-  cmd->add_option("--velocity-range", o->velocity_range,
-                  fmt::format("FROM:TO:N: N log-spaced impact speeds in m/s (speed-dependent recipes), ends "
-                              "included, N in [1, {}] (default {:g}:{:g}:{})",
-                              damping_check::kMaxSpeedPoints, o->velocity_min, o->velocity_max, o->points));
-  std::vector<CLI::Option*> old_form{cmd->add_option("--velocity-min", o->velocity_min),
-                                     cmd->add_option("--velocity-max", o->velocity_max),
-                                     cmd->add_option("--points", o->points)};
-  deprecate_old_form(old_form, "--velocity-min V1 --velocity-max V2 --points N", "--velocity-range V1:V2:N");
-  cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")
-      ->capture_default_str();
+  std::vector<CLI::Option*> old_form;
+  add_parameter_options(*cmd, damping_check::damping_check_fields(), o->inputs,
+                        [&](const damping_check::DampingCheckField& f, CLI::Option* option) {
+                          if (f.word == &damping_check::DampingCheckInputs::recipe) option->required();
+                          if (f.number == &damping_check::DampingCheckInputs::velocity_m_s)
+                            old_form = add_speed_options(*cmd, *o);
+                        });
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double)");
   cmd->callback([o, old_form, &chosen] {

@@ -146,9 +146,9 @@ void print_liggghts_json(const dem::AdhesiveLiggghtsLines& r, const AdhesiveCont
 int run_liggghts(const AdhesiveDemRequest& request) {
   dem::AdhesiveLiggghtsRequest lines_request;
   lines_request.contact = adhesive_contact_from(AdhesiveModel::sjkr, request.adhesion, request.material,
-                                                request.dissipative_constant_s);
-  lines_request.speeds = request.speeds;
-  lines_request.tolerance = request.tolerance;
+                                                request.inputs.dissipative_constant_s.value_or(0.0));
+  lines_request.speeds = request.inputs.speeds_m_s;
+  lines_request.tolerance = request.inputs.tolerance;
   const auto r = dem::adhesive_liggghts_lines(lines_request);
   const auto run = write_deck(request, r, true);
   (request.json ? print_liggghts_json : print_liggghts_text)(r, lines_request.contact);
@@ -164,12 +164,12 @@ int run_adhesive_dem(const AdhesiveDemRequest& request) {
   const AdhesiveModel model =
       *request.adhesion.model == "dmt" ? AdhesiveModel::dmt : AdhesiveModel::jkr_lammps;
   dem::AdhesiveLammpsRequest lines_request;
-  lines_request.contact =
-      adhesive_contact_from(model, request.adhesion, request.material, request.dissipative_constant_s);
+  lines_request.contact = adhesive_contact_from(model, request.adhesion, request.material,
+                                                request.inputs.dissipative_constant_s.value_or(0.0));
   lines_request.young_modulus_pa = request.material.young_modulus_pa;
   lines_request.poisson_ratio = request.material.poisson_ratio;
-  lines_request.speeds = request.speeds;
-  lines_request.tolerance = request.tolerance;
+  lines_request.speeds = request.inputs.speeds_m_s;
+  lines_request.tolerance = request.inputs.tolerance;
   const auto r = dem::adhesive_lammps_lines(lines_request);
   const auto run = write_deck(request, r, false);
   (request.json ? print_lammps_json : print_lammps_text)(r, lines_request.contact);

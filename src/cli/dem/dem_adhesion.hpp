@@ -6,9 +6,9 @@
 // (dem/adhesive_lines_liggghts.hpp).
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "cli/common/adhesion_options.hpp"
+#include "dem/dem_parameters.hpp"
 #include "restitution/material.hpp"
 
 namespace restitution::cli {
@@ -16,9 +16,7 @@ namespace restitution::cli {
 struct AdhesiveDemRequest {
   AdhesionOptions adhesion;  // --adhesion jkr (LAMMPS's, our jkr-lammps), dmt or sjkr (LIGGGHTS's)
   Material material;
-  double dissipative_constant_s = 0.0;
-  std::vector<double> speeds;
-  double tolerance = 1e-10;
+  dem::DemInputs inputs;  // A (none: 0), the impact speeds and the accuracy; the adhesive lines take no eps
   bool json = false;
   // --deck FILE: the check deck (dem/adhesive_check_deck.hpp), for one radius and --density.
   std::optional<std::string> deck;

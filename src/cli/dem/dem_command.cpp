@@ -16,6 +16,7 @@
 #include "cli/common/deprecated_alias.hpp"
 #include "cli/common/json_writer.hpp"
 #include "cli/common/material_options.hpp"
+#include "cli/common/parameter_options.hpp"
 #include "cli/dem/deck_json.hpp"
 #include "cli/dem/dem_adhesion.hpp"
 #include "cli/dem/dem_deck.hpp"
@@ -26,6 +27,7 @@
 #include "cli/dem/dem_wall.hpp"
 #include "cli/dem/from_fit.hpp"
 #include "damping_check/yade_version_lines.hpp"
+#include "dem/dem_parameters.hpp"
 #include "dem/lines_check.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
@@ -34,15 +36,13 @@
 namespace restitution::cli {
 namespace {
 
+// The study's inputs (one option per row of its table, dem/dem_parameters.hpp) and what only the command line
+// has: the atom types, --from-fit, --yade-version, --deck, the production, wall, oblique and adhesion
+// options.
 struct DemOptions {
-  std::string code;
+  dem::DemInputs inputs;
   DemTypeOptions types;      // --radius etc., lists for several atom types
   MaterialOptions material;  // the one pair, from `types`
-  std::optional<double> eps, velocity, dissipative_constant;
-  std::string end = end_name(dem::LinesRequest{}.end);
-  std::vector<double> speeds;
-  double tolerance = SolveOptions{}.tolerance;
-  double friction = 0.0;  // Coulomb mu of the tangential model [1]
   bool json = false;
   std::string from_fit;  // fit-data --out FILE: A (and the end) from a fit, with its uncertainty
   bool end_given = false;
@@ -76,15 +76,15 @@ struct FromFit {
 };
 std::optional<FromFit> apply_from_fit(DemOptions& o) {
   if (o.from_fit.empty()) return std::nullopt;
-  if (o.eps || o.dissipative_constant) {
+  if (o.inputs.eps || o.inputs.dissipative_constant_s) {
     throw InvalidInput("--from-fit excludes --eps and --dissipative-constant");
   }
   FromFit f;
-  f.fit = read_fit_result(o.from_fit,
-                          o.end_given ? std::optional<CollisionEnd>(end_from_name(o.end)) : std::nullopt);
+  f.fit = read_fit_result(
+      o.from_fit, o.end_given ? std::optional<CollisionEnd>(end_from_name(o.inputs.end)) : std::nullopt);
   f.k = elastic_constants(material_from(o.material)).k;
-  o.dissipative_constant = dissipative_constant_from(f.fit.beta, f.k);
-  o.end = end_name(f.fit.end);
+  o.inputs.dissipative_constant_s = dissipative_constant_from(f.fit.beta, f.k);
+  o.inputs.end = end_name(f.fit.end);
   return f;
 }
 
@@ -105,19 +105,13 @@ std::vector<double> speeds_of(const dem::LinesResult& r) {
 }
 
 dem::LinesResult compute(DemOptions& o) {
-  dem::LinesRequest request;
-  request.code = dem::code_from_name(o.code);
-  request.end = end_from_name(o.end);
+  auto request = dem::request_of<dem::LinesRequest>(o.inputs);
   request.material = material_from(o.material);
-  request.damping = {o.dissipative_constant, o.eps, o.velocity};
-  request.speeds_m_s = o.speeds;
-  request.tolerance = o.tolerance;
-  request.friction = o.friction;
   // The targeted YADE first: a bad --yade-version is refused before any solve.
   std::optional<dem::YadeVersion> yade;
   if (!std::string_view(dem::code_entry(request.code).version_query).empty()) yade = target_yade(o);
   dem::LinesResult r = dem::check_lines(request);
-  if (yade) damping_check::target_yade_version(r, *yade, o.tolerance);
+  if (yade) damping_check::target_yade_version(r, *yade, o.inputs.tolerance);
   return r;
 }
 
@@ -225,19 +219,13 @@ void refuse_pair_options(const DemOptions& o, const char* subject) {
 
 // Several atom types (docs/dem.md, "Polydisperse sets"): lammps and liggghts only.
 int run_polydisperse(const DemOptions& o) {
-  if (dem::wants_oblique(o.oblique, dem::code_from_name(o.code), 0.0)) {
+  if (dem::wants_oblique(o.oblique, dem::code_from_name(o.inputs.code), 0.0)) {
     throw InvalidInput("several atom types take no --angle, --target-et or --reference-angle");
   }
   refuse_pair_options(o, "several atom types take");
-  dem::PolydisperseRequest request;
-  request.code = dem::code_from_name(o.code);
-  request.end = end_from_name(o.end);
+  auto request = dem::request_of<dem::PolydisperseRequest>(o.inputs);
   set_types(o.types, request);
-  if (o.deck) check_deck_size(request.code, request.types.size(), o.speeds.size());
-  request.damping = {o.dissipative_constant, o.eps, o.velocity};
-  request.speeds_m_s = o.speeds;
-  request.tolerance = o.tolerance;
-  request.friction = o.friction;
+  if (o.deck) check_deck_size(request.code, request.types.size(), o.inputs.speeds_m_s.size());
   const dem::PolydisperseResult r = dem::polydisperse_lines(request);
   std::optional<WrittenDeck> deck;
   if (o.deck) deck = WrittenDeck{*o.deck, write_check_deck(*o.deck, dem::check_deck_request(r))};
@@ -256,14 +244,14 @@ int run_adhesion(const DemOptions& o, const std::vector<std::string>& given) {
     throw InvalidInput("--surface-energy and --cohesion-energy-density belong to --adhesion");
   }
   const bool sjkr = *o.adhesion.model == "sjkr";
-  if (sjkr && o.code != "liggghts") {
-    throw InvalidInput(
-        fmt::format("--adhesion sjkr is LIGGGHTS's cohesion model: use --code liggghts (not {})", o.code));
+  if (sjkr && o.inputs.code != "liggghts") {
+    throw InvalidInput(fmt::format(
+        "--adhesion sjkr is LIGGGHTS's cohesion model: use --code liggghts (not {})", o.inputs.code));
   }
-  if (!sjkr && o.code != "lammps") {
+  if (!sjkr && o.inputs.code != "lammps") {
     throw InvalidInput(fmt::format(
         "--adhesion {} prints LAMMPS's pair granular lines only (not {}'s; LIGGGHTS has --adhesion sjkr)",
-        *o.adhesion.model, o.code));
+        *o.adhesion.model, o.inputs.code));
   }
   if (sjkr && o.wall.wall) throw InvalidInput("--adhesion sjkr is for a pair of spheres, not --wall");
   if (o.wall.wall && *o.adhesion.model == "jkr") {
@@ -281,9 +269,7 @@ int run_adhesion(const DemOptions& o, const std::vector<std::string>& given) {
   AdhesiveDemRequest request;
   request.adhesion = o.adhesion;
   request.material = material_from(one_pair_material(o.types));
-  request.dissipative_constant_s = o.dissipative_constant.value_or(0.0);
-  request.speeds = o.speeds;
-  request.tolerance = o.tolerance;
+  request.inputs = o.inputs;
   request.json = o.json;
   request.deck = o.deck;
   return run_adhesive_dem(request);
@@ -294,21 +280,15 @@ int run_wall(const DemOptions& o) {
     throw InvalidInput("--wall takes one sphere: one --radius, no --radius2, --mass2 or --radius-range");
   }
   refuse_pair_options(o, "--wall takes");
-  dem::WallRequest request;
-  request.code = dem::code_from_name(o.code);
-  request.end = end_from_name(o.end);
+  auto request = dem::request_of<dem::WallRequest>(o.inputs);
   request.sphere = material_from(one_pair_material(o.types));
   request.wall = wall_material(o.wall);
-  request.damping = {o.dissipative_constant, o.eps, o.velocity};
-  request.speeds_m_s = o.speeds;
-  request.tolerance = o.tolerance;
-  request.friction = o.friction;
-  const bool oblique = dem::wants_oblique(o.oblique, request.code, o.friction);
+  const bool oblique = dem::wants_oblique(o.oblique, request.code, o.inputs.friction);
   dem::WallResult r = dem::wall_lines(request);
-  dem::apply_tangential_choice(r.deck, o.oblique, o.friction);
+  dem::apply_tangential_choice(r.deck, o.oblique, o.inputs.friction);
   std::optional<DemOblique> impacts;
   if (oblique) {
-    impacts = dem::wall_oblique(r.deck, r.contact, o.oblique, r.reference_velocity_m_s, o.tolerance);
+    impacts = dem::wall_oblique(r.deck, r.contact, o.oblique, r.reference_velocity_m_s, o.inputs.tolerance);
     warn_oblique(*impacts);
   }
   print_wall(r, o.json, o.deck, impacts);
@@ -321,36 +301,20 @@ void add_dem_command(CLI::App& app, Action& chosen) {
   auto o = std::make_shared<DemOptions>();
   CLI::App* cmd = app.add_subcommand(
       "dem", "input lines giving a DEM code (" + dem::code_list(", ") + ") this law, and its eps");
-  cmd->add_option("--code", o->code, "DEM code: " + dem::code_list(" or "))
-      ->required()
-      ->check(CLI::IsMember(dem::code_names()));
-  add_dem_type_options(*cmd, o->types);
-  cmd->add_option("--eps", o->eps, "measured coefficient of restitution in (0, 1): calibrate A first");
-  cmd->add_option(
-      "--velocity", o->velocity,
-      "impact speed in m/s at which --eps was measured (required with --eps; also YADE's vn and the "
-      "reference speed, 1 m/s with --dissipative-constant)");
-  cmd->add_option("--dissipative-constant", o->dissipative_constant, "the dissipative constant A in s");
-  cmd->add_option(
-      "--from-fit", o->from_fit,
-      "instead of --eps or --dissipative-constant: the JSON of fit-data --out; A from its Hertz fit "
-      "(at --end if given, else the lowest AIC) with the uncertainty it carries over (none when the fit "
-      "itself rejects it, said so)");
-  cmd->add_option("--end", o->end,
-                  "end of the collision: naive (no clamp) or delayed-recovery (force clamped)")
-      ->check(CLI::IsMember(end_names()))
-      ->capture_default_str();
-  CLI::Option* impact_velocity =
-      cmd->add_option("--impact-velocity", o->speeds,
-                      "impact speed(s) in m/s to report eps at, comma-separated (default v/10, v, 10 v)")
-          ->delimiter(',');
-  add_deprecated_alias(*cmd, impact_velocity, "--speeds");
-  cmd->add_option("--tolerance", o->tolerance, "accuracy of each eps, in [1e-11, 1e-2]")
-      ->capture_default_str();
-  cmd->add_option("--friction", o->friction,
-                  "Coulomb friction coefficient mu >= 0 of the tangential model (0: frictionless); it does "
-                  "not change the head-on eps")
-      ->capture_default_str();
+  add_parameter_options(*cmd, dem::dem_fields(), o->inputs, [&](const dem::DemField& f, CLI::Option* option) {
+    if (f.word == &dem::DemInputs::code) {
+      option->required();
+      add_dem_type_options(*cmd, o->types);
+    }
+    if (f.optional_number == &dem::DemInputs::dissipative_constant_s) {
+      cmd->add_option(
+          "--from-fit", o->from_fit,
+          "instead of --eps or --dissipative-constant: the JSON of fit-data --out; A from its Hertz fit "
+          "(at --end if given, else the lowest AIC) with the uncertainty it carries over (none when the fit "
+          "itself rejects it, said so)");
+    }
+    if (f.numbers == &dem::DemInputs::speeds_m_s) add_deprecated_alias(*cmd, option, "--speeds");
+  });
   cmd->add_option("--yade-version", o->yade_version,
                   "YADE version the yade lines are for, e.g. 2023.02a (no vn: a constant eps) or 2024.02a "
                   "(default: yade --version on PATH)");
@@ -390,27 +354,28 @@ void add_dem_command(CLI::App& app, Action& chosen) {
     }
     chosen = [o] {
       if (o->wall.wall || o->wall.young_modulus || o->wall.poisson_ratio) {
-        if (o->deck) check_deck_target(*o->deck, dem::code_from_name(o->code));
+        if (o->deck) check_deck_target(*o->deck, dem::code_from_name(o->inputs.code));
         return run_wall(*o);
       }
-      if (o->deck) check_deck_target(*o->deck, dem::code_from_name(o->code));
+      if (o->deck) check_deck_target(*o->deck, dem::code_from_name(o->inputs.code));
       if (several_types(o->types)) {
         if (dem::tangential_chosen(o->oblique)) {
           throw InvalidInput("--tangential is for one pair of spheres or a wall, not several types");
         }
         return run_polydisperse(*o);
       }
-      if (o->deck) check_deck_size(dem::code_from_name(o->code), 1, o->speeds.size());
+      if (o->deck) check_deck_size(dem::code_from_name(o->inputs.code), 1, o->inputs.speeds_m_s.size());
       o->material = one_pair_material(o->types);
-      const bool oblique = dem::wants_oblique(o->oblique, dem::code_from_name(o->code), o->friction);
+      const bool oblique =
+          dem::wants_oblique(o->oblique, dem::code_from_name(o->inputs.code), o->inputs.friction);
       const std::optional<FromFit> from_fit = apply_from_fit(*o);
       dem::LinesResult r = compute(*o);
-      dem::apply_tangential_choice(r.deck, o->oblique, o->friction);
-      const Production p = production(r, material_from(o->material), o->production, o->tolerance);
+      dem::apply_tangential_choice(r.deck, o->oblique, o->inputs.friction);
+      const Production p = production(r, material_from(o->material), o->production, o->inputs.tolerance);
       std::optional<DemOblique> impacts;
       if (oblique) {
         impacts = dem::pair_oblique(r.deck, dem::pair_of(material_from(o->material)), o->oblique,
-                                    r.reference_velocity_m_s, o->tolerance);
+                                    r.reference_velocity_m_s, o->inputs.tolerance);
         if (impacts) warn_oblique(*impacts);
       }
       if (o->deck) o->deck_run = write_check_deck(*o->deck, r, material_from(o->material), impacts);

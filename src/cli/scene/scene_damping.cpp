@@ -23,7 +23,7 @@ std::string cell(const std::vector<double>& values) {
 }  // namespace
 
 DampingSection damping_section(const scene::DampingCheckTask& task, const damping_check::GridResult& grid) {
-  const double v_ref = task.velocity_m_s;
+  const double v_ref = task.inputs.velocity_m_s;
   DampingSection s;
 
   // Requested against actual ε at the reference speed, every recipe and clamp.

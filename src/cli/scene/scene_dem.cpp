@@ -39,7 +39,7 @@ std::string yade_words(const scene::DemYadeTarget& target) {
 }
 
 DemSection dem_section(const scene::DemTask& task, const scene::DemOutcome& outcome) {
-  const dem::Code code = task.code;
+  const dem::Code code = dem::code_from_name(task.inputs.code);
   const dem::CodeEntry& entry = dem::code_entry(code);
   DemSection s;
   if (outcome.code_not_installed) {
@@ -68,8 +68,8 @@ DemSection dem_section(const scene::DemTask& task, const scene::DemOutcome& outc
   s.csv = ran ? fmt::format("velocity_m_s,eps_restitution,{},rel_diff,{}_run\n", measured_column,
                             dem::code_name(code))
               : "velocity_m_s,eps_restitution\n";
-  for (std::size_t i = 0; i < task.speeds.size(); ++i) {
-    s.csv += fmt::format("{:.17g},{:.17g}", task.speeds[i], predicted[i]);
+  for (std::size_t i = 0; i < task.inputs.speeds_m_s.size(); ++i) {
+    s.csv += fmt::format("{:.17g},{:.17g}", task.inputs.speeds_m_s[i], predicted[i]);
     if (ran) {
       s.csv += fmt::format(",{:.17g},{:.17g},{}", c.measured->extrapolated[i], c.relative_difference[i],
                            row_ok(i) ? "ok" : "failed");
@@ -86,10 +86,11 @@ DemSection dem_section(const scene::DemTask& task, const scene::DemOutcome& outc
   }
 
   std::string& md = s.markdown;
-  md += fmt::format(
-      "{} lines for material `{}`, A = {:.10g} s, {} end{}:\n\n```\n", dem::code_name(code), task.material, a,
-      end_name(task.end),
-      task.eps ? fmt::format(" (calibrated to eps = {} at {} m/s)", *task.eps, *task.velocity_m_s) : "");
+  md += fmt::format("{} lines for material `{}`, A = {:.10g} s, {} end{}:\n\n```\n", dem::code_name(code),
+                    task.material, a, task.inputs.end,
+                    task.inputs.eps ? fmt::format(" (calibrated to eps = {} at {} m/s)", *task.inputs.eps,
+                                                  *task.inputs.velocity_m_s)
+                                    : "");
   for (const auto& p : deck.parameters) md += fmt::format("{} = {}: {}\n", p.name, p.value, p.meaning);
   for (const auto& line : deck.lines) md += line + "\n";
   md += "```\n\n";
@@ -98,8 +99,8 @@ DemSection dem_section(const scene::DemTask& task, const scene::DemOutcome& outc
   md += ran ? fmt::format(" eps ({}, extrapolated) | difference / min(eps, 1 - eps) |\n|---|---|---|---|\n",
                           dem::code_name(code))
             : "\n|---|---|\n";
-  for (std::size_t i = 0; i < task.speeds.size(); ++i) {
-    md += fmt::format("| {:g} | {:.10f} |", task.speeds[i], predicted[i]);
+  for (std::size_t i = 0; i < task.inputs.speeds_m_s.size(); ++i) {
+    md += fmt::format("| {:g} | {:.10f} |", task.inputs.speeds_m_s[i], predicted[i]);
     if (ran) {
       md += fmt::format(" {:.10f} | {:.2e} |", c.measured->extrapolated[i], c.relative_difference[i]);
     }
@@ -131,7 +132,7 @@ void write_dem_section(const scene::Scene& /*scene*/, const scene::DemTask& task
   for (auto& w : section.warnings) out.warn(fmt::format("{}: {}", task.name, w));
   JsonWriter& json = out.summary();
   json.key("dem_" + task.name).begin_object();
-  json.field("code", dem::code_name(task.code)).field("code_run", section.code_run);
+  json.field("code", task.inputs.code).field("code_run", section.code_run);
   if (!section.code_failure.empty()) json.field("code_failure", section.code_failure);
   json.end_object();
 }
