@@ -20,11 +20,13 @@
 #include "cli/common/json_writer.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
-#include "cli/common/output_files.hpp"
-#include "cli/common/output_guards.hpp"
 #include "cli/common/parameter_options.hpp"
 #include "cli/common/parse_errors.hpp"
+#include "cli/common/plot_script.hpp"
 #include "cli/oblique/oblique_sweep.hpp"
+#include "files/output_files.hpp"
+#include "files/output_guards.hpp"
+#include "files/temporary_file.hpp"
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
@@ -33,7 +35,6 @@
 #include "restitution_oblique/oblique_parameters.hpp"
 #include "restitution_oblique/oblique_study.hpp"
 #include "scene/figure_formats.hpp"
-#include "sweep/temporary_file.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -232,13 +233,13 @@ struct ScratchFile {
 // Maw's diagram of the sweep; without --out the script reads a scratch copy of the CSV beside the image.
 void draw(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueImpact>& impacts,
           const std::string& csv) {
-  // Under a random name, as a temporary (sweep/temporary_file.hpp): a link planted under a fixed one is never
+  // Under a random name, as a temporary (files/temporary_file.hpp): a link planted under a fixed one is never
   // followed.
-  const std::filesystem::path data(o.out.empty() ? fmt::format("{}.{}.data.csv", o.plot, random_name_part())
-                                                 : o.out);
+  const std::filesystem::path data(
+      o.out.empty() ? fmt::format("{}.{}.data.csv", o.plot, files::random_name_part()) : o.out);
   const ScratchFile scratch(o.out.empty() ? data : std::filesystem::path());
   if (o.out.empty()) {
-    write_file_atomically(data, csv);  // also makes the image's folder
+    files::write_file_atomically(data, csv);  // also makes the image's folder
   } else if (const auto folder = std::filesystem::path(o.plot).parent_path(); !folder.empty()) {
     std::filesystem::create_directories(folder);
   }
@@ -261,9 +262,10 @@ int run(const ObliqueCommandOptions& o) {
                "--wall was a wall of the sphere's own material: give --wall-young-modulus and "
                "--wall-poisson-ratio for that)\n");
   }
-  if (!o.out.empty()) check_output_file(o.out);
-  if (!o.plot.empty()) check_figure_file(o.plot, "--plot");
-  if (!o.out.empty() && !o.plot.empty()) check_outputs_apart({{"--out", o.out}, {"--plot", o.plot}}, {});
+  if (!o.out.empty()) files::check_output_file(o.out);
+  if (!o.plot.empty()) files::check_figure_file(o.plot, "--plot");
+  if (!o.out.empty() && !o.plot.empty())
+    files::check_outputs_apart({{"--out", o.out}, {"--plot", o.plot}}, {});
   const std::vector<ObliqueImpact> impacts = oblique_sweep(s);
   for (const ObliqueImpact& impact : impacts) {
     // Never silently: an outcome the tolerance cannot be shown for is said on stderr as well.
@@ -273,7 +275,7 @@ int run(const ObliqueCommandOptions& o) {
     }
   }
   const std::string csv = oblique_csv(impacts);
-  if (!o.out.empty()) write_file_atomically(o.out, csv);
+  if (!o.out.empty()) files::write_file_atomically(o.out, csv);
   if (!o.plot.empty()) draw(o, s, impacts, csv);
   if (o.json) {
     print_json(o, s, impacts);

@@ -7,8 +7,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "cli/common/output_files.hpp"
 #include "restitution/units.hpp"
+#include "sweep/number_text.hpp"
 #include "sweep/physical_columns.hpp"
 
 namespace restitution::cli {
