@@ -10,11 +10,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <stdexcept>
 #include <string>
 
 #include "files/file_set.hpp"
 #include "files/output_guards.hpp"
+#include "files/scratch_file.hpp"
 #include "files/temporary_file.hpp"
 #include "restitution/errors.hpp"
 #include "sweep/number_text.hpp"
@@ -192,6 +194,33 @@ TEST(FileSet, AStopBeforeTheRenamesKeepsThePreviousSet) {
   write_file_set({{folder / "a.txt", &second}, {folder / "b.txt", &second}}, [] {});
   EXPECT_EQ(slurp_file(folder / "b.txt"), second);
   EXPECT_EQ(entries_in(folder), 2U);
+  fs::remove_all(folder);
+}
+
+// A plot's scratch data: under a random name beside the image, gone when the scope is left, by an exception
+// too.
+TEST(ScratchFile, WrittenBesideUnderARandomNameAndRemovedHoweverTheScopeIsLeft) {
+  const fs::path folder = fresh_folder("scratch");
+  fs::path first;
+  {
+    const ScratchFile scratch(folder / "m.png", "data.csv", "x,y\n");
+    first = scratch.path();
+    EXPECT_EQ(first.parent_path(), folder);  // the folder is made by the write
+    EXPECT_TRUE(
+        std::regex_match(first.filename().string(), std::regex(R"(m\.png\.[0-9a-f]{12}\.data\.csv)")));
+    EXPECT_EQ(slurp_file(first), "x,y\n");
+    const ScratchFile second(folder / "m.png", "data.csv", "");
+    EXPECT_NE(second.path(), first);
+  }
+  EXPECT_FALSE(fs::exists(first));
+  try {
+    const ScratchFile scratch(folder / "m.png", "data.csv", "x\n");
+    first = scratch.path();
+    throw std::runtime_error("plot failed");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_FALSE(fs::exists(first));
+  EXPECT_EQ(entries_in(folder), 0U);
   fs::remove_all(folder);
 }
 

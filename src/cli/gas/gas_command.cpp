@@ -11,7 +11,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "cli/common/build_json.hpp"
@@ -24,7 +23,7 @@
 #include "cli/gas/gas_table.hpp"
 #include "files/output_files.hpp"
 #include "files/output_guards.hpp"
-#include "files/temporary_file.hpp"
+#include "files/scratch_file.hpp"
 #include "restitution_gas/gas_inputs.hpp"
 #include "scene/figure_formats.hpp"
 
@@ -140,18 +139,12 @@ void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const
   const std::string table = gas_csv(c);
   if (!o.out.empty()) files::write_file_atomically(o.out, table);
   if (o.plot.empty()) return;
-  // Without --out the plot reads a scratch copy of the table beside the image, removed afterwards; under a
-  // random name, as a temporary (files/temporary_file.hpp): a link planted under a fixed one is never
-  // followed.
-  const std::filesystem::path data(
-      o.out.empty() ? fmt::format("{}.{}.data.csv", o.plot, files::random_name_part()) : o.out);
-  if (o.out.empty()) files::write_file_atomically(data, table);
+  // Without --out the plot reads a scratch copy of the table beside the image, removed afterwards.
+  std::optional<files::ScratchFile> scratch;
+  if (o.out.empty()) scratch.emplace(o.plot, "data.csv", table);
+  const std::filesystem::path data = scratch ? scratch->path() : std::filesystem::path(o.out);
   const std::string why = run_plot_script("gas_cooling", data, o.plot, gas_plot_arguments(r, c),
                                           scene::plot_figure_formats(o.plot, o.format));
-  if (o.out.empty()) {
-    std::error_code ignored;
-    std::filesystem::remove(data, ignored);
-  }
   if (!why.empty()) fmt::print(stderr, "{}", no_plot_warning("gas", why));
 }
 

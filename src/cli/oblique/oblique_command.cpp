@@ -10,7 +10,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -26,7 +25,7 @@
 #include "cli/oblique/oblique_sweep.hpp"
 #include "files/output_files.hpp"
 #include "files/output_guards.hpp"
-#include "files/temporary_file.hpp"
+#include "files/scratch_file.hpp"
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
@@ -217,32 +216,16 @@ void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
   }
 }
 
-// Removes a scratch file however the scope is left (a plot script that throws leaves no x.png.data.csv).
-struct ScratchFile {
-  std::filesystem::path path;  // empty: none
-  explicit ScratchFile(std::filesystem::path scratch) : path(std::move(scratch)) {}
-  ScratchFile(const ScratchFile&) = delete;
-  ScratchFile& operator=(const ScratchFile&) = delete;
-  ~ScratchFile() {
-    if (path.empty()) return;
-    std::error_code ignored;
-    std::filesystem::remove(path, ignored);
-  }
-};
-
 // Maw's diagram of the sweep; without --out the script reads a scratch copy of the CSV beside the image.
 void draw(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueImpact>& impacts,
           const std::string& csv) {
-  // Under a random name, as a temporary (files/temporary_file.hpp): a link planted under a fixed one is never
-  // followed.
-  const std::filesystem::path data(
-      o.out.empty() ? fmt::format("{}.{}.data.csv", o.plot, files::random_name_part()) : o.out);
-  const ScratchFile scratch(o.out.empty() ? data : std::filesystem::path());
+  std::optional<files::ScratchFile> scratch;
   if (o.out.empty()) {
-    files::write_file_atomically(data, csv);  // also makes the image's folder
+    scratch.emplace(o.plot, "data.csv", csv);  // also makes the image's folder
   } else if (const auto folder = std::filesystem::path(o.plot).parent_path(); !folder.empty()) {
     std::filesystem::create_directories(folder);
   }
+  const std::filesystem::path data = scratch ? scratch->path() : std::filesystem::path(o.out);
   const MawModel model = s.tangential.friction > 0.0 ? maw_model(s) : MawModel{};
   if (!model.sticking_failure.empty()) {
     fmt::print(stderr, "restitution oblique: warning: the sticking limit is left out of the plot: {}\n",
