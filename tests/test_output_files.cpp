@@ -1,19 +1,27 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/common/output_files.hpp"
-
-#include <gtest/gtest.h>
+// The files module's writes and checks (src/files): complete-or-absent files, streams in place, outputs kept
+// apart from inputs and from each other, sets of files written together.
+#include "files/output_files.hpp"
 
 #include <fmt/core.h>
+#include <gtest/gtest.h>
 #include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
-
 #include <fstream>
+#include <regex>
+#include <stdexcept>
+#include <string>
 
-#include "cli/common/io_error.hpp"
+#include "files/file_set.hpp"
+#include "files/output_guards.hpp"
+#include "files/scratch_file.hpp"
+#include "files/temporary_file.hpp"
 #include "restitution/errors.hpp"
+#include "sweep/number_text.hpp"
 
-namespace restitution::cli {
+namespace restitution::files {
 namespace {
 namespace fs = std::filesystem;
 
@@ -90,9 +98,149 @@ TEST(OutputFiles, NumbersHaveSeventeenDigits) {
   EXPECT_EQ(number17(-INFINITY), "-inf");
 }
 
-TEST(OutputFiles, MissingPlotScriptIsReportedNotThrown) {
-  EXPECT_NE(run_plot_script("no-such-plot", "a.csv", "a.png").find("not found"), std::string::npos);
+std::string slurp_file(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::size_t entries_in(const fs::path& folder) {
+  return static_cast<std::size_t>(std::distance(fs::directory_iterator(folder), fs::directory_iterator()));
+}
+
+// One place under three names: a symbolic link to it, a hard link, a path through `..`; another file is not
+// it, whether or not either exists yet.
+TEST(OutputGuards, SameFilePlaceSeesThroughLinksAndDots) {
+  const fs::path folder = fresh_folder("same-place");
+  fs::create_directories(folder / "sub");
+  std::ofstream(folder / "a.csv") << "x\n";
+  fs::create_symlink("a.csv", folder / "soft.csv");
+  fs::create_hard_link(folder / "a.csv", folder / "hard.csv");
+  EXPECT_TRUE(same_file_place(folder / "soft.csv", folder / "a.csv"));
+  EXPECT_TRUE(same_file_place(folder / "hard.csv", folder / "a.csv"));
+  EXPECT_TRUE(same_file_place(folder / "sub" / ".." / "a.csv", folder / "a.csv"));
+  fs::create_symlink("later.csv", folder / "dangling.csv");
+  EXPECT_TRUE(same_file_place(folder / "dangling.csv", folder / "later.csv"));  // where writing would go
+  EXPECT_FALSE(same_file_place(folder / "b.csv", folder / "a.csv"));
+  EXPECT_FALSE(same_file_place(folder / "sub" / "a.csv", folder / "a.csv"));
+  fs::remove_all(folder);
+}
+
+TEST(OutputGuards, OutputsApartNameBothOptions) {
+  const fs::path folder = fresh_folder("apart");
+  fs::create_directories(folder);
+  std::ofstream(folder / "in.csv") << "x\n";
+  fs::create_symlink("in.csv", folder / "link.csv");
+  const auto message = [](const auto& check) -> std::string {
+    try {
+      check();
+    } catch (const InvalidInput& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  const std::string link = (folder / "link.csv").string();
+  const std::string in = (folder / "in.csv").string();
+  EXPECT_EQ(message([&] {
+              check_outputs_apart({{"--out", folder / "link.csv"}}, {{"--data", folder / "in.csv"}});
+            }),
+            fmt::format(
+                "--out '{}' is the input --data '{}': writing it would replace the input; name another file",
+                link, in));
+  EXPECT_EQ(
+      message([&] {
+        check_outputs_apart({{"--out", folder / "o.csv"}, {"--plot", folder / "o.csv"}}, {});
+      }),
+      fmt::format("--out '{0}' and --plot '{0}' are the same file: one would replace the other; name two "
+                  "files",
+                  (folder / "o.csv").string()));
+  EXPECT_EQ(
+      message([&] { check_output_is_not_input(folder / "link.csv", {folder / "in.csv"}); }),
+      fmt::format("--output '{}' is the input '{}': writing it would replace the input; name another file",
+                  link, in));
+  EXPECT_NO_THROW(check_outputs_apart({{"--out", folder / "o.csv"}, {"--plot", folder / "o.png"}},
+                                      {{"--data", folder / "in.csv"}}));
+  fs::remove_all(folder);
+}
+
+// A link into a folder that does not exist would make folders along the link's target: refused.
+TEST(OutputGuards, NoFolderIsCreatedThroughALink) {
+  const fs::path folder = fresh_folder("through-link");
+  fs::create_directories(folder);
+  fs::create_symlink("missing/out.json", folder / "link.json");
+  EXPECT_THROW(check_no_folder_through_link(folder / "link.json"), InvalidInput);
+  fs::create_symlink("out.json", folder / "near.json");
+  EXPECT_NO_THROW(check_no_folder_through_link(folder / "near.json"));
+  EXPECT_NO_THROW(check_no_folder_through_link(folder / "plain.json"));
+  fs::remove_all(folder);
+}
+
+// A set is written whole, and a stop before the renames leaves the previous set and no temporary behind.
+TEST(FileSet, AStopBeforeTheRenamesKeepsThePreviousSet) {
+  const fs::path folder = fresh_folder("file-set");
+  const std::string first = "first\n";
+  const std::string second = "second\n";
+  write_file_set({{folder / "a.txt", &first}, {folder / "b.txt", &first}}, [] {});
+  EXPECT_EQ(slurp_file(folder / "a.txt"), first);
+  EXPECT_EQ(slurp_file(folder / "b.txt"), first);
+  int checks = 0;
+  const auto stop_at_the_end = [&checks] {
+    if (++checks == 3) throw std::runtime_error("stopped");  // after both temporaries were written
+  };
+  EXPECT_THROW(write_file_set({{folder / "a.txt", &second}, {folder / "b.txt", &second}}, stop_at_the_end),
+               std::runtime_error);
+  EXPECT_EQ(slurp_file(folder / "a.txt"), first);
+  EXPECT_EQ(slurp_file(folder / "b.txt"), first);
+  EXPECT_EQ(entries_in(folder), 2U);
+  write_file_set({{folder / "a.txt", &second}, {folder / "b.txt", &second}}, [] {});
+  EXPECT_EQ(slurp_file(folder / "b.txt"), second);
+  EXPECT_EQ(entries_in(folder), 2U);
+  fs::remove_all(folder);
+}
+
+// A plot's scratch data: under a random name beside the image, gone when the scope is left, by an exception
+// too.
+TEST(ScratchFile, WrittenBesideUnderARandomNameAndRemovedHoweverTheScopeIsLeft) {
+  const fs::path folder = fresh_folder("scratch");
+  fs::path first;
+  {
+    const ScratchFile scratch(folder / "m.png", "data.csv", "x,y\n");
+    first = scratch.path();
+    EXPECT_EQ(first.parent_path(), folder);  // the folder is made by the write
+    EXPECT_TRUE(
+        std::regex_match(first.filename().string(), std::regex(R"(m\.png\.[0-9a-f]{12}\.data\.csv)")));
+    EXPECT_EQ(slurp_file(first), "x,y\n");
+    const ScratchFile second(folder / "m.png", "data.csv", "");
+    EXPECT_NE(second.path(), first);
+  }
+  EXPECT_FALSE(fs::exists(first));
+  try {
+    const ScratchFile scratch(folder / "m.png", "data.csv", "x\n");
+    first = scratch.path();
+    throw std::runtime_error("plot failed");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_FALSE(fs::exists(first));
+  EXPECT_EQ(entries_in(folder), 0U);
+  fs::remove_all(folder);
+}
+
+// A rename that fails (a folder in the target's place) removes the temporary and names the target.
+TEST(TemporaryFile, AFailedRenameLeavesNoTemporary) {
+  const fs::path folder = fresh_folder("rename");
+  fs::create_directories(folder / "taken" / "inside");
+  const fs::path temporary = write_temporary_beside(folder / "taken", "x\n");
+  EXPECT_TRUE(fs::is_regular_file(temporary));
+  try {
+    rename_onto(temporary, folder / "taken");
+    ADD_FAILURE() << "renamed onto a folder";
+  } catch (const IoError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(fmt::format("cannot write '{}': ", (folder / "taken").string()), 0),
+              0U);
+  }
+  EXPECT_FALSE(fs::exists(temporary));
+  EXPECT_EQ(entries_in(folder), 1U);
+  fs::remove_all(folder);
 }
 
 }  // namespace
-}  // namespace restitution::cli
+}  // namespace restitution::files

@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "files/output_lock.hpp"
 #include "restitution/errors.hpp"
-#include "sweep/output_lock.hpp"
 
 namespace restitution {
 namespace {
@@ -32,7 +32,7 @@ using test_support::wait_cli;
 
 std::string refusal(const fs::path& lock_file) {
   try {
-    const OutputLock second(lock_file, "--out 'x'");
+    const files::OutputLock second(lock_file, "--out 'x'");
   } catch (const InvalidInput& e) {
     return e.what();
   }
@@ -66,7 +66,7 @@ TEST(OutputLock, ASecondHolderIsRefusedNamingTheFirstAndTheFileGoesWithTheLock) 
   const TempFolder dir;
   const fs::path lock_file = dir.path / "s.csv.lock";
   {
-    const OutputLock first(lock_file, "--out 's.csv'");
+    const files::OutputLock first(lock_file, "--out 's.csv'");
     EXPECT_EQ(slurp(lock_file), fmt::format("{}\n", getpid()));
     const std::string message = refusal(lock_file);  // another open file: flock refuses it in one process too
     EXPECT_NE(message.find(
@@ -83,7 +83,7 @@ TEST(OutputLock, AStaleLockIsTakenOver) {
   const fs::path lock_file = dir.path / "s.csv.lock";
   std::ofstream(lock_file) << ended_process() << "\n";  // what a killed sweep leaves
   {
-    const OutputLock taken(lock_file, "--out 's.csv'");
+    const files::OutputLock taken(lock_file, "--out 's.csv'");
     EXPECT_EQ(slurp(lock_file), fmt::format("{}\n", getpid()));
   }
   EXPECT_FALSE(fs::exists(lock_file));
@@ -93,17 +93,17 @@ TEST(FolderLock, LocksBesideTheFolderAndRemovesOnlyTheEmptyFoldersItMade) {
   const TempFolder dir;
   const fs::path folder = dir.path / "a" / "b" / "results";
   const fs::path lock_file = dir.path / "a" / "b" / "results.lock";
-  EXPECT_EQ(folder_lock_path(folder), lock_file);
-  EXPECT_EQ(folder_lock_path(folder / ""), lock_file);
+  EXPECT_EQ(files::folder_lock_path(folder), lock_file);
+  EXPECT_EQ(files::folder_lock_path(folder / ""), lock_file);
   {
-    const FolderLock lock(folder, "--out 'a/b/results'");
+    const files::FolderLock lock(folder, "--out 'a/b/results'");
     EXPECT_TRUE(fs::exists(lock_file));
     EXPECT_FALSE(fs::exists(folder)) << "made by the first file written into it, not by the lock";
     EXPECT_NE(refusal(lock_file), "not refused");
   }
   EXPECT_FALSE(fs::exists(dir.path / "a")) << "a run that wrote nothing leaves no folder";
   {
-    const FolderLock lock(folder, "--out 'a/b/results'");
+    const files::FolderLock lock(folder, "--out 'a/b/results'");
     fs::create_directories(folder);
     std::ofstream(folder / "report.md") << "done\n";
   }

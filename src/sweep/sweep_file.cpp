@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // sweep_to_file: a sweep into a CSV file that an interruption does not lose (restitution/sweep.hpp). The
-// files are sweep_files.hpp's, the partial file's format sweep_partial.hpp's, the lock output_lock.hpp's.
+// files are sweep_files.hpp's, the partial file's format sweep_partial.hpp's, the lock
+// files/output_lock.hpp's.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -12,11 +13,11 @@
 #include <utility>
 #include <vector>
 
+#include "files/output_lock.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/sweep.hpp"
 #include "sweep/checked_sweep.hpp"
 #include "sweep/line_reader.hpp"
-#include "sweep/output_lock.hpp"
 #include "sweep/sweep_files.hpp"
 #include "sweep/sweep_partial.hpp"
 #include "sweep/sweep_table.hpp"
@@ -71,7 +72,7 @@ SweepFileOutcome sweep_to_file(const std::vector<double>& zetas, const SolveOpti
   std::error_code no_folder;  // the lock file names the folder when it cannot be made
   if (out.has_parent_path()) fs::create_directories(out.parent_path(), no_folder);
   // Before the partial file is looked at: a sweep that runs now owns it (and "resume" would be wrong).
-  const OutputLock lock(sweep_lock_path(out), named(file));
+  const files::OutputLock lock(files::sweep_lock_path(out), named(file));
   if (file.resume && !fs::exists(partial_path) && fs::exists(out)) {
     // The sweep finished (FILE.partial is removed only then): recomputing it all would not be a resume.
     outcome.status = SweepFileOutcome::Status::already_complete;

@@ -13,9 +13,9 @@
 #include <system_error>
 #include <utility>
 
+#include "files/temporary_file.hpp"
 #include "restitution/errors.hpp"
 #include "sweep/sweep_partial.hpp"
-#include "sweep/temporary_file.hpp"
 
 namespace restitution {
 namespace {
@@ -91,7 +91,7 @@ void PartialFile::write(Buffer& buffer) {
   int error = error_.load();
   // One call for whole lines: another writer's lines never land inside them. After a failure nothing more is
   // written: the file may end in a cut-off line, and a later write (once space was freed) would follow it.
-  if (error == 0) error = write_all(fd_, buffer.lines.data(), buffer.lines.size());
+  if (error == 0) error = files::write_all(fd_, buffer.lines.data(), buffer.lines.size());
   buffer.lines.clear();
   if (error != 0) {
     error_ = error;
@@ -108,7 +108,7 @@ OrderedTable::OrderedTable(fs::path target, const std::string& header, std::size
                            std::vector<std::uint64_t> done_offsets, const fs::path& partial)
     : target_(std::move(target)), rows_(rows), done_offsets_(std::move(done_offsets)) {
   // Created exclusively under a random name: never a planted link, never another run's temporary.
-  TemporaryFile temporary = create_temporary_beside(target_);
+  files::TemporaryFile temporary = files::create_temporary_beside(target_);
   temporary_ = std::move(temporary.path);
   fd_ = temporary.fd;
   buffer_.reserve(kBufferBytes + kBufferBytes / 4);
@@ -166,7 +166,7 @@ void OrderedTable::put(std::string_view row) {
 
 void OrderedTable::flush() {
   if (error_ != 0) fail(error_);  // rows that other workers add after the failure
-  const int error = write_all(fd_, buffer_.data(), buffer_.size());
+  const int error = files::write_all(fd_, buffer_.data(), buffer_.size());
   buffer_.clear();
   if (error != 0) fail(error);
 }
@@ -177,14 +177,12 @@ void OrderedTable::commit() {
   const int closed = ::close(fd_);
   const int error = errno;
   fd_ = -1;
-  std::error_code renamed;
-  if (closed == 0) fs::rename(temporary_, target_, renamed);
-  if (closed != 0 || renamed) {
+  if (closed != 0) {
     std::error_code ignored;
     fs::remove(temporary_, ignored);
-    throw IoError(fmt::format("cannot write '{}': {}", target_.string(),
-                              renamed ? renamed.message() : std::strerror(error)));
+    throw IoError(fmt::format("cannot write '{}': {}", target_.string(), std::strerror(error)));
   }
+  files::rename_onto(temporary_, target_);
 }
 
 void OrderedTable::fail(int error) {

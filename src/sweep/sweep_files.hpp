@@ -2,7 +2,7 @@
 #pragma once
 // The two files a running sweep_to_file (`restitution sweep`) writes: FILE.partial (every finished row, in
 // completion order per worker, for --resume; format in sweep_partial.hpp) and the final table, written in
-// grid order into FILE.<random>.tmp (sweep/temporary_file.hpp) while the workers compute and renamed onto
+// grid order into FILE.<random>.tmp (files/temporary_file.hpp) while the workers compute and renamed onto
 // FILE when the last row is in. Writing the table as rows arrive, rather than building and writing it once
 // every point is solved, keeps that work off the one thread that runs after the solves: on two threads it was
 // the serial part that capped the speed-up (docs/performance.md).

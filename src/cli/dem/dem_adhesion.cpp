@@ -5,11 +5,11 @@
 
 #include "cli/common/build_json.hpp"
 #include "cli/common/json_writer.hpp"
-#include "cli/common/output_files.hpp"
 #include "dem/adhesive_check_deck.hpp"
 #include "dem/adhesive_lines_lammps.hpp"
 #include "dem/adhesive_lines_liggghts.hpp"
 #include "dem/dem_codes.hpp"
+#include "files/output_files.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -32,7 +32,7 @@ std::optional<std::string> write_deck(const AdhesiveDemRequest& request, const L
   deck.timestep_s = r.timestep_s;
   deck.speeds_m_per_s = r.speeds;
   deck.collisions = r.collisions;
-  write_file_atomically(*request.deck, dem::adhesive_check_deck(deck));
+  files::write_file_atomically(*request.deck, dem::adhesive_check_deck(deck));
   const auto code = liggghts ? dem::Code::liggghts : dem::Code::lammps;
   return dem::code_entry(code).check_deck_run + *request.deck;
 }

@@ -3,9 +3,9 @@
 
 #include <fmt/core.h>
 
-#include "cli/common/output_files.hpp"
 #include "dem/dem_codes.hpp"
 #include "dem/oblique_check_deck.hpp"
+#include "files/output_files.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -14,7 +14,7 @@ void check_deck_target(const std::string& path, dem::Code code) {
   if (path.empty()) throw InvalidInput("--deck needs a file name, got an empty one");
   dem::require_check_deck(code);
   dem::require_check_deck_name(code, path);
-  check_output_file(path);
+  files::check_output_file(path);
 }
 
 void check_deck_size(dem::Code code, std::size_t type_count, std::size_t speed_count) {
@@ -24,7 +24,7 @@ void check_deck_size(dem::Code code, std::size_t type_count, std::size_t speed_c
 }
 
 std::string write_check_deck(const std::string& path, const dem::CheckDeckRequest& request) {
-  write_file_atomically(path, dem::check_deck(request));
+  files::write_file_atomically(path, dem::check_deck(request));
   return dem::check_deck_command(request.code, path);
 }
 
@@ -54,7 +54,7 @@ std::string write_check_deck(const std::string& path, const dem::LinesResult& r,
   }
   // The oblique section of the code (dem/oblique_check_deck.hpp).
   if (!oblique) return write_check_deck(path, request);
-  write_file_atomically(path, dem::check_deck(request) + dem::oblique_check_section(*oblique, r.deck));
+  files::write_file_atomically(path, dem::check_deck(request) + dem::oblique_check_section(*oblique, r.deck));
   return dem::check_deck_command(request.code, path);
 }
 

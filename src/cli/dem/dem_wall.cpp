@@ -6,10 +6,10 @@
 
 #include "cli/common/build_json.hpp"
 #include "cli/common/json_writer.hpp"
-#include "cli/common/output_files.hpp"
 #include "cli/dem/deck_json.hpp"
 #include "dem/check_deck.hpp"
 #include "dem/oblique_check_deck.hpp"
+#include "files/output_files.hpp"
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
 
@@ -87,7 +87,7 @@ void print_wall(const dem::WallResult& r, bool json, const std::optional<std::st
   if (deck) {
     std::string text = dem::wall_check_deck(r);
     if (oblique) text += dem::oblique_check_section(*oblique, r.deck.prerequisites, r.deck.lines);
-    write_file_atomically(*deck, text);
+    files::write_file_atomically(*deck, text);
     run = dem::check_deck_command(r.deck.code, *deck);
   }
   if (json) {

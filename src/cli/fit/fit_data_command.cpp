@@ -15,10 +15,11 @@
 #include "cli/common/deprecated_alias.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
-#include "cli/common/output_files.hpp"
-#include "cli/common/output_guards.hpp"
+#include "cli/common/plot_script.hpp"
 #include "cli/fit/fit_data_report.hpp"
 #include "cli/fit/fit_plot_tables.hpp"
+#include "files/output_files.hpp"
+#include "files/output_guards.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/fit.hpp"
 #include "restitution/material.hpp"
@@ -60,8 +61,8 @@ struct PlotTables {
 // Returns whether the figure was drawn.
 bool draw(const FitDataOptions& o, const FitData& data, const FitResult& result, const FitOptions& options) {
   const PlotTables tables{o.plot + ".data.csv", o.plot + ".curves.csv"};
-  write_file_atomically(tables.points, fit_data_table(data, result));
-  write_file_atomically(tables.curves, fit_curves_table(data, result, options));
+  files::write_file_atomically(tables.points, fit_data_table(data, result));
+  files::write_file_atomically(tables.curves, fit_curves_table(data, result, options));
   const std::string why =
       run_plot_script("fit_data", tables.points, o.plot, {"--curves", tables.curves.string()},
                       scene::plot_figure_formats(o.plot, o.format));
@@ -81,13 +82,13 @@ void check_data_of_file(const FitData& data, const std::string& file) {
 int run_fit_data(const FitDataOptions& o) {
   // Everything is checked before anything is written.
   if (!o.output.empty()) {
-    check_output_is_not_input(o.output, {o.file});
-    check_no_folder_through_link(o.output);
-    check_output_file(o.output);
+    files::check_output_is_not_input(o.output, {o.file});
+    files::check_no_folder_through_link(o.output);
+    files::check_output_file(o.output);
   }
   if (!o.plot.empty()) {
-    check_output_is_not_input(o.plot, {o.file});
-    check_output_file(o.plot);
+    files::check_output_is_not_input(o.plot, {o.file});
+    files::check_output_file(o.plot);
   }
   FitOptions options;
   options.candidates = fit_candidates(o.laws, o.speed_independent_end);
@@ -100,7 +101,7 @@ int run_fit_data(const FitDataOptions& o) {
   const FitReportInput report{o.file, &data, &result, options.k};
   // The JSON holds every point: made only when asked for (a million rows make ~100 MB of it).
   const std::string json = o.json || !o.output.empty() ? fit_json(report) : std::string();
-  if (!o.output.empty()) write_file_atomically(o.output, json + "\n");
+  if (!o.output.empty()) files::write_file_atomically(o.output, json + "\n");
   const bool drawn = !o.plot.empty() && draw(o, data, result, options);
   fmt::print("{}", o.json ? json + "\n" : fit_table(report));
   if (!o.output.empty() && !o.json) fmt::print("wrote {}\n", o.output);

@@ -7,8 +7,8 @@
 #include <iterator>
 #include <limits>
 
-#include "cli/common/output_files.hpp"
 #include "fit/fit_curves.hpp"
+#include "sweep/number_text.hpp"
 
 namespace restitution::cli {
 namespace {

@@ -11,21 +11,21 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "cli/common/build_json.hpp"
 #include "cli/common/commands.hpp"
 #include "cli/common/json_writer.hpp"
 #include "cli/common/options.hpp"
-#include "cli/common/output_files.hpp"
-#include "cli/common/output_guards.hpp"
+#include "cli/common/plot_script.hpp"
 #include "cli/gas/gas_deck_options.hpp"
 #include "cli/gas/gas_options.hpp"
 #include "cli/gas/gas_table.hpp"
+#include "files/output_files.hpp"
+#include "files/output_guards.hpp"
+#include "files/scratch_file.hpp"
 #include "restitution_gas/gas_inputs.hpp"
 #include "scene/figure_formats.hpp"
-#include "sweep/temporary_file.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -137,28 +137,23 @@ std::string text_table(const gas::CoolingRequest& r, const gas::CoolingCurve& c,
 
 void write_files(const gas::CoolingRequest& r, const gas::CoolingCurve& c, const GasCommandOptions& o) {
   const std::string table = gas_csv(c);
-  if (!o.out.empty()) write_file_atomically(o.out, table);
+  if (!o.out.empty()) files::write_file_atomically(o.out, table);
   if (o.plot.empty()) return;
-  // Without --out the plot reads a scratch copy of the table beside the image, removed afterwards; under a
-  // random name, as a temporary (sweep/temporary_file.hpp): a link planted under a fixed one is never
-  // followed.
-  const std::filesystem::path data(o.out.empty() ? fmt::format("{}.{}.data.csv", o.plot, random_name_part())
-                                                 : o.out);
-  if (o.out.empty()) write_file_atomically(data, table);
+  // Without --out the plot reads a scratch copy of the table beside the image, removed afterwards.
+  std::optional<files::ScratchFile> scratch;
+  if (o.out.empty()) scratch.emplace(o.plot, "data.csv", table);
+  const std::filesystem::path data = scratch ? scratch->path() : std::filesystem::path(o.out);
   const std::string why = run_plot_script("gas_cooling", data, o.plot, gas_plot_arguments(r, c),
                                           scene::plot_figure_formats(o.plot, o.format));
-  if (o.out.empty()) {
-    std::error_code ignored;
-    std::filesystem::remove(data, ignored);
-  }
   if (!why.empty()) fmt::print(stderr, "{}", no_plot_warning("gas", why));
 }
 
 int run_gas(const GasCommandOptions& o) {
   if (gas_deck_requested(o.deck)) return run_gas_deck(o.deck, o.gas, o.json);
-  if (!o.out.empty()) check_output_file(o.out);
-  if (!o.plot.empty()) check_figure_file(o.plot, "--plot");
-  if (!o.out.empty() && !o.plot.empty()) check_outputs_apart({{"--out", o.out}, {"--plot", o.plot}}, {});
+  if (!o.out.empty()) files::check_output_file(o.out);
+  if (!o.plot.empty()) files::check_figure_file(o.plot, "--plot");
+  if (!o.out.empty() && !o.plot.empty())
+    files::check_outputs_apart({{"--out", o.out}, {"--plot", o.plot}}, {});
   const gas::CoolingRequest request = cooling_request(o.gas);
   const std::optional<gas::Thermostat> thermostat = thermostat_of(o.gas);
   const gas::DrivenCurve theory = gas::gas_curve(request, thermostat);

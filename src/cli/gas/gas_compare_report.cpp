@@ -5,9 +5,11 @@
 
 #include <cstdio>
 
-#include "cli/common/output_files.hpp"
+#include "cli/common/plot_script.hpp"
+#include "files/output_files.hpp"
+#include "files/printable_name.hpp"
 #include "sweep/csv_field.hpp"
-#include "sweep/printable_name.hpp"
+#include "sweep/number_text.hpp"
 
 namespace restitution::cli {
 
@@ -26,7 +28,7 @@ void print_comparison_text(const gas_deck::GasComparison& c) {
   fmt::print("{:<40} {:>14} {:>10} {:>13} {:>15}\n", "run", "max_rel_dev", "tau0", "late_exponent",
              "theory_late");
   for (const auto& r : c.runs) {
-    fmt::print("{:<40} {:>14.4e} {:>10.4g} {:>13.4f} {:>15.4f}\n", printable_name(r.run),
+    fmt::print("{:<40} {:>14.4e} {:>10.4g} {:>13.4f} {:>15.4f}\n", files::printable_name(r.run),
                r.max_relative_deviation, r.haff_times, r.late_exponent, r.theory_late_exponent);
   }
 }
@@ -53,14 +55,14 @@ std::string write_comparison_files(const std::filesystem::path& folder, const ga
       // The local exponents are between consecutive times after t = 0: the one ending at time_s[i] is i - 1.
       const bool has = i >= 1 && i - 1 < r.exponent.exponent.size();
       // The run is named by its log file, whose name may hold anything: quoted, escaped, one field.
-      csv += fmt::format("{},{},{},{},{},{},{}\n", quoted_field(printable_name(r.run)), r.law,
+      csv += fmt::format("{},{},{},{},{},{},{}\n", quoted_field(files::printable_name(r.run)), r.law,
                          number17(r.time_s[i]), number17(r.temperature_j[i]),
                          number17(r.theory_temperature_j[i]), has ? number17(r.exponent.exponent[i - 1]) : "",
                          has ? number17(r.theory_exponent.exponent[i - 1]) : "");
     }
   }
   const auto data = folder / "gas_compare.csv";
-  write_file_atomically(data, csv);
+  files::write_file_atomically(data, csv);
   return run_plot_script("gas_compare", data, folder / "gas_compare.png");
 }
 

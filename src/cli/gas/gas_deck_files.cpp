@@ -3,8 +3,9 @@
 
 #include <fmt/core.h>
 
-#include "cli/common/file_set.hpp"
-#include "cli/common/output_files.hpp"
+#include "cli/common/stop_signals.hpp"
+#include "files/file_set.hpp"
+#include "files/output_files.hpp"
 #include "restitution/errors.hpp"
 
 namespace restitution::cli {
@@ -13,7 +14,7 @@ namespace fs = std::filesystem;
 
 GasDeckPaths gas_deck_paths(const std::string& file) {
   if (file.empty()) throw InvalidInput("--deck needs a file name, got an empty one");
-  check_output_file(file);
+  files::check_output_file(file);
   const fs::path path(file);
   const std::string stem = path.stem().string();
   GasDeckPaths p;
@@ -28,13 +29,14 @@ gas_deck::GasDeck write_gas_deck(const GasDeckPaths& paths, const gas_deck::GasD
   gas_deck::GasDeck deck = gas_deck::lammps_gas_deck(request, paths.data.filename().string());
   // One set: the inputs read the data file, so the law's input, the one the printed command starts, comes
   // last.
-  write_file_set({{paths.data, &deck.data},
-                  {paths.constant_eps_input, &deck.constant_eps_input},
-                  {paths.law_input, &deck.law_input}});
+  files::write_file_set({{paths.data, &deck.data},
+                         {paths.constant_eps_input, &deck.constant_eps_input},
+                         {paths.law_input, &deck.law_input}},
+                        throw_if_interrupted);
   return deck;
 }
 
-std::vector<NamedPath> gas_deck_outputs(const GasDeckPaths& paths) {
+std::vector<files::NamedPath> gas_deck_outputs(const GasDeckPaths& paths) {
   return {{"--deck", paths.law_input},
           {"--deck (its constant-eps companion)", paths.constant_eps_input},
           {"--deck (its data file)", paths.data}};

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cli/common/json_writer.hpp"
-#include "cli/common/output_guards.hpp"
+#include "files/output_guards.hpp"
 #include "gas_deck/lammps_gas_deck.hpp"
 
 namespace restitution::cli {
@@ -21,11 +21,11 @@ struct GasDeckPaths {
 // cannot be written.
 GasDeckPaths gas_deck_paths(const std::string& file);
 
-// Writes the three files as one set (cli/common/file_set.hpp); returns the deck written.
+// Writes the three files as one set (files/file_set.hpp); returns the deck written.
 gas_deck::GasDeck write_gas_deck(const GasDeckPaths& paths, const gas_deck::GasDeckRequest& request);
 
 // The three files with the option that names them, for check_outputs_apart.
-std::vector<NamedPath> gas_deck_outputs(const GasDeckPaths& paths);
+std::vector<files::NamedPath> gas_deck_outputs(const GasDeckPaths& paths);
 
 void print_gas_deck_text(const GasDeckPaths& paths, const gas_deck::GasDeck& deck,
                          const gas_deck::GasDeckRequest& request);

@@ -8,12 +8,12 @@
 #include "cli/common/build_json.hpp"
 #include "cli/common/json_writer.hpp"
 #include "cli/common/options.hpp"
-#include "cli/common/output_files.hpp"
-#include "cli/common/output_guards.hpp"
 #include "cli/common/stop_signals.hpp"
 #include "cli/gas/driven_compare_report.hpp"
 #include "cli/gas/gas_compare_report.hpp"
 #include "cli/gas/gas_deck_files.hpp"
+#include "files/output_files.hpp"
+#include "files/output_guards.hpp"
 #include "gas_deck/gas_deck_request.hpp"
 #include "restitution/errors.hpp"
 
@@ -77,9 +77,9 @@ gas_deck::GasDeckRequest deck_request(const GasDeckOptions& o, const GasOptions&
 }
 
 // Every file the command writes, with the option that names it.
-std::vector<NamedPath> gas_deck_command_outputs(const GasDeckOptions& o,
-                                                const std::optional<GasDeckPaths>& paths) {
-  std::vector<NamedPath> outputs;
+std::vector<files::NamedPath> gas_deck_command_outputs(const GasDeckOptions& o,
+                                                       const std::optional<GasDeckPaths>& paths) {
+  std::vector<files::NamedPath> outputs;
   if (paths) outputs = gas_deck_outputs(*paths);
   if (o.compare_output) {
     for (const char* name : {"gas_compare.csv", "gas_compare.png"})
@@ -88,8 +88,8 @@ std::vector<NamedPath> gas_deck_command_outputs(const GasDeckOptions& o,
   return outputs;
 }
 
-std::vector<NamedPath> compare_inputs(const GasDeckOptions& o) {
-  std::vector<NamedPath> inputs;
+std::vector<files::NamedPath> compare_inputs(const GasDeckOptions& o) {
+  std::vector<files::NamedPath> inputs;
   inputs.reserve(o.compare.size());
   for (const std::string& log : o.compare) inputs.push_back({"--compare", log});
   return inputs;
@@ -109,8 +109,9 @@ int run_gas_deck(const GasDeckOptions& o, const GasOptions& gas, bool json) {
   }
   std::optional<GasDeckPaths> paths;
   if (o.deck) paths = gas_deck_paths(*o.deck);
-  if (o.compare_output) check_output_folder(*o.compare_output);
-  check_outputs_apart(gas_deck_command_outputs(o, paths), compare_inputs(o));  // before anything is written
+  if (o.compare_output) files::check_output_folder(*o.compare_output);
+  files::check_outputs_apart(gas_deck_command_outputs(o, paths),
+                             compare_inputs(o));  // before anything is written
   std::optional<gas_deck::GasDeck> deck;
   if (paths && request.particles > kQuietDeckParticles) {
     // Built in memory and written at the end: say up front what is coming (about 6 s per 1e6 spheres).

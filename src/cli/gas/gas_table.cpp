@@ -3,8 +3,8 @@
 
 #include <fmt/core.h>
 
-#include "cli/common/output_files.hpp"
 #include "restitution_gas/gas_inputs.hpp"
+#include "sweep/number_text.hpp"
 
 namespace restitution::cli {
 

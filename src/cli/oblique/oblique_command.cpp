@@ -10,7 +10,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -20,11 +19,13 @@
 #include "cli/common/json_writer.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
-#include "cli/common/output_files.hpp"
-#include "cli/common/output_guards.hpp"
 #include "cli/common/parameter_options.hpp"
 #include "cli/common/parse_errors.hpp"
+#include "cli/common/plot_script.hpp"
 #include "cli/oblique/oblique_sweep.hpp"
+#include "files/output_files.hpp"
+#include "files/output_guards.hpp"
+#include "files/scratch_file.hpp"
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
@@ -33,7 +34,6 @@
 #include "restitution_oblique/oblique_parameters.hpp"
 #include "restitution_oblique/oblique_study.hpp"
 #include "scene/figure_formats.hpp"
-#include "sweep/temporary_file.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -216,32 +216,16 @@ void print_text(const ObliqueCommandOptions& o, const Setup& s, const std::vecto
   }
 }
 
-// Removes a scratch file however the scope is left (a plot script that throws leaves no x.png.data.csv).
-struct ScratchFile {
-  std::filesystem::path path;  // empty: none
-  explicit ScratchFile(std::filesystem::path scratch) : path(std::move(scratch)) {}
-  ScratchFile(const ScratchFile&) = delete;
-  ScratchFile& operator=(const ScratchFile&) = delete;
-  ~ScratchFile() {
-    if (path.empty()) return;
-    std::error_code ignored;
-    std::filesystem::remove(path, ignored);
-  }
-};
-
 // Maw's diagram of the sweep; without --out the script reads a scratch copy of the CSV beside the image.
 void draw(const ObliqueCommandOptions& o, const Setup& s, const std::vector<ObliqueImpact>& impacts,
           const std::string& csv) {
-  // Under a random name, as a temporary (sweep/temporary_file.hpp): a link planted under a fixed one is never
-  // followed.
-  const std::filesystem::path data(o.out.empty() ? fmt::format("{}.{}.data.csv", o.plot, random_name_part())
-                                                 : o.out);
-  const ScratchFile scratch(o.out.empty() ? data : std::filesystem::path());
+  std::optional<files::ScratchFile> scratch;
   if (o.out.empty()) {
-    write_file_atomically(data, csv);  // also makes the image's folder
+    scratch.emplace(o.plot, "data.csv", csv);  // also makes the image's folder
   } else if (const auto folder = std::filesystem::path(o.plot).parent_path(); !folder.empty()) {
     std::filesystem::create_directories(folder);
   }
+  const std::filesystem::path data = scratch ? scratch->path() : std::filesystem::path(o.out);
   const MawModel model = s.tangential.friction > 0.0 ? maw_model(s) : MawModel{};
   if (!model.sticking_failure.empty()) {
     fmt::print(stderr, "restitution oblique: warning: the sticking limit is left out of the plot: {}\n",
@@ -261,9 +245,10 @@ int run(const ObliqueCommandOptions& o) {
                "--wall was a wall of the sphere's own material: give --wall-young-modulus and "
                "--wall-poisson-ratio for that)\n");
   }
-  if (!o.out.empty()) check_output_file(o.out);
-  if (!o.plot.empty()) check_figure_file(o.plot, "--plot");
-  if (!o.out.empty() && !o.plot.empty()) check_outputs_apart({{"--out", o.out}, {"--plot", o.plot}}, {});
+  if (!o.out.empty()) files::check_output_file(o.out);
+  if (!o.plot.empty()) files::check_figure_file(o.plot, "--plot");
+  if (!o.out.empty() && !o.plot.empty())
+    files::check_outputs_apart({{"--out", o.out}, {"--plot", o.plot}}, {});
   const std::vector<ObliqueImpact> impacts = oblique_sweep(s);
   for (const ObliqueImpact& impact : impacts) {
     // Never silently: an outcome the tolerance cannot be shown for is said on stderr as well.
@@ -273,7 +258,7 @@ int run(const ObliqueCommandOptions& o) {
     }
   }
   const std::string csv = oblique_csv(impacts);
-  if (!o.out.empty()) write_file_atomically(o.out, csv);
+  if (!o.out.empty()) files::write_file_atomically(o.out, csv);
   if (!o.plot.empty()) draw(o, s, impacts, csv);
   if (o.json) {
     print_json(o, s, impacts);

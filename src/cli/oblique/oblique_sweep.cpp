@@ -6,10 +6,11 @@
 #include <algorithm>
 #include <utility>
 
-#include "cli/common/output_files.hpp"
+#include "cli/common/plot_script.hpp"
 #include "cli/common/range_option.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/sweep.hpp"
+#include "sweep/number_text.hpp"
 
 namespace restitution::cli {
 

@@ -12,21 +12,21 @@
 #include "cli/common/commands.hpp"
 #include "cli/common/deprecated_alias.hpp"
 #include "cli/common/options.hpp"
-#include "cli/common/output_files.hpp"
 #include "cli/common/progress.hpp"
 #include "cli/common/resource_root.hpp"
 #include "cli/common/stop_signals.hpp"
 #include "cli/scene/scene_outputs.hpp"
 #include "cli/solve/work_precision_files.hpp"
+#include "files/output_files.hpp"
+#include "files/output_lock.hpp"
+#include "files/printable_name.hpp"
+#include "files/resolved_path.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/sweep.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/scene_run.hpp"
 #include "scene/scene_sections.hpp"
-#include "sweep/output_lock.hpp"
-#include "sweep/printable_name.hpp"
-#include "sweep/resolved_path.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -57,10 +57,10 @@ int run_scene_file(const RunOptions& o) {
   if (o.quick) s.tolerance = std::max(s.tolerance, 1e-8);
   if (o.quick) scene::make_quick(s, kQuickPoints);
   const fs::path folder = o.output.empty() ? s.output : fs::path(o.output);
-  const std::string shown = printable_name(folder.string());  // a name may hold escape sequences
+  const std::string shown = files::printable_name(folder.string());  // a name may hold escape sequences
   // The scene's own `output` stays under the working folder after symlinks too (the parser refuses '..'
   // and absolute names); --out names any folder, the user's own choice.
-  if (o.output.empty() && !resolves_within(folder, fs::current_path())) {
+  if (o.output.empty() && !files::resolves_within(folder, fs::current_path())) {
     throw InvalidInput(
         fmt::format("the scene's output '{}' leads outside the working folder through a "
                     "symbolic link: a scene writes under the folder it is run from "
@@ -68,10 +68,10 @@ int run_scene_file(const RunOptions& o) {
                     shown));
   }
   scene::Plan plan =
-      scene::plan_scene(s);     // refuses points outside the solver's range before a folder exists
-  check_output_folder(folder);  // fail before the work, not after
+      scene::plan_scene(s);            // refuses points outside the solver's range before a folder exists
+  files::check_output_folder(folder);  // fail before the work, not after
   // Before the work too: a second run into the folder is refused at once, not after its own solves.
-  const FolderLock lock(folder, fmt::format("--out '{}'", shown));
+  const files::FolderLock lock(folder, fmt::format("--out '{}'", shown));
 
   scene::RunSettings settings;
   settings.threads = o.threads;
@@ -88,7 +88,7 @@ int run_scene_file(const RunOptions& o) {
   for (const auto& w : written.warnings) std::fprintf(stderr, "restitution: warning: %s\n", w.c_str());
   // [[dem]] and [[damping_check]] sections solve their own collisions, outside the shared plan.
   const bool own_solves = scene::has_sections(s, "dem") || scene::has_sections(s, "damping_check");
-  fmt::print("scene {}: {} planned collisions in {:.2f} s{}{}\n", printable_name(path.string()),
+  fmt::print("scene {}: {} planned collisions in {:.2f} s{}{}\n", files::printable_name(path.string()),
              results.collisions, seconds,
              own_solves ? " (dem and damping_check sections solve their own, not counted)" : "",
              o.quick ? " (quick settings)" : "");

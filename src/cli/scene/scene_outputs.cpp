@@ -7,12 +7,13 @@
 
 #include "cli/common/build_json.hpp"
 #include "cli/common/json_writer.hpp"
-#include "cli/common/output_files.hpp"
+#include "cli/common/plot_script.hpp"
 #include "cli/common/result_json.hpp"
 #include "cli/common/stop_signals.hpp"
 #include "cli/scene/scene_section_writers.hpp"
 #include "cli/scene/scene_tables.hpp"
 #include "cli/scene/scene_text.hpp"
+#include "files/output_files.hpp"
 #include "scene/figure_formats.hpp"
 
 namespace restitution::cli {
@@ -51,7 +52,7 @@ class SceneWriter : private SectionOutput {
  private:
   void write_file(const std::string& name, const std::string& content) {
     throw_if_interrupted();  // Ctrl-C stops the run here, between files, never inside one
-    write_file_atomically(folder_ / name, content);
+    files::write_file_atomically(folder_ / name, content);
     out_.files.push_back(name);
   }
 
@@ -139,7 +140,7 @@ class SceneWriter : private SectionOutput {
 
 WrittenOutputs write_scene_outputs(const scene::Scene& scene, const scene::SceneResults& results,
                                    const fs::path& folder, double seconds) {
-  check_output_folder(folder);
+  files::check_output_folder(folder);
   // A write that fails half-way must not leave a folder that looks like a result (item 11 of issue 12).
   const bool existed = fs::exists(folder);
   // The report and summary of an earlier run would describe files this run replaces: gone until the new ones

@@ -7,9 +7,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include "cli/common/output_files.hpp"
 #include "restitution/units.hpp"
 #include "scene/scene_run.hpp"
+#include "sweep/number_text.hpp"
 #include "sweep/physical_columns.hpp"
 
 namespace restitution::cli {

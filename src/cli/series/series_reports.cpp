@@ -10,9 +10,11 @@
 #include <vector>
 
 #include "cli/common/json_writer.hpp"
-#include "cli/common/output_files.hpp"
+#include "cli/common/plot_script.hpp"
+#include "files/output_files.hpp"
 #include "restitution_series_study/series_coefficients.hpp"
 #include "restitution_series_study/series_validation.hpp"
+#include "sweep/number_text.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -117,13 +119,13 @@ void print_validation_summary(const series::ValidationReport& r) {
 
 int run_series_validation(const std::string& folder_name, const std::vector<std::string>& formats) {
   const std::filesystem::path folder(folder_name);
-  check_output_folder(folder);
+  files::check_output_folder(folder);
   const series::ValidationReport report = series::validate(series::ValidationOptions{});
   const auto csv = folder / "series_validation.csv";
   const auto json = folder / "series_validation.json";
   const auto png = folder / "series_validation.png";
-  write_file_atomically(csv, validation_csv(report));
-  write_file_atomically(json, validation_json(report));
+  files::write_file_atomically(csv, validation_csv(report));
+  files::write_file_atomically(json, validation_json(report));
   print_validation_summary(report);
   const std::string why = run_plot_script("series_validation", csv, png, {}, formats);
   if (!why.empty()) std::fprintf(stderr, "restitution: warning: %s\n", why.c_str());
@@ -137,7 +139,7 @@ int run_series_validation(const std::string& folder_name, const std::vector<std:
 }
 
 int run_series_certify(int order, const std::string& file) {
-  if (!file.empty()) check_output_file(file);  // before the work, not after
+  if (!file.empty()) files::check_output_file(file);  // before the work, not after
   const series::CertifiedCoefficients k = series::certify_coefficients(order);
   std::string csv = "series,k,value,certified_digits\n";
   auto rows = [&csv](const char* name, const std::vector<series::CertifiedValue>& values) {
@@ -158,10 +160,10 @@ int run_series_certify(int order, const std::string& file) {
     return 0;
   }
   const std::filesystem::path path(file);
-  write_file_atomically(path, csv);
+  files::write_file_atomically(path, csv);
   const std::filesystem::path published_path =
       path.parent_path() / (path.stem().string() + "_published_check" + path.extension().string());
-  write_file_atomically(published_path, published);
+  files::write_file_atomically(published_path, published);
   fmt::print("wrote {} and {}\n", path.string(), published_path.string());
   return 0;
 }

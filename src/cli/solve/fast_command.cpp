@@ -9,11 +9,11 @@
 
 #include "cli/common/commands.hpp"
 #include "cli/common/options.hpp"
-#include "cli/common/output_files.hpp"
 #include "cli/common/progress.hpp"
 #include "cli/common/stop_signals.hpp"
 #include "fast/c_header.hpp"
 #include "fast_study/table_generator.hpp"
+#include "files/output_files.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/fast.hpp"
 
@@ -27,13 +27,13 @@ struct FastTableOptions {
 
 void write_text(const std::string& out, const std::string& text) {
   const std::filesystem::path path(out);
-  check_output_file(path);
-  write_file_atomically(path, text);
+  files::check_output_file(path);
+  files::write_file_atomically(path, text);
 }
 
 int run_fast_table(const FastTableOptions& o) {
-  check_output_file(o.out);   // before the two minutes of solves, not after
-  const StopSignals signals;  // Ctrl-C stops at the next interval, before the header is written
+  files::check_output_file(o.out);  // before the two minutes of solves, not after
+  const StopSignals signals;        // Ctrl-C stops at the next interval, before the header is written
   const fast::TableData data = [&] {
     ProgressLine progress("fast-table (intervals fitted, then checked)");
     return fast::generate_tables(o.settings, progress.stoppable_callback());

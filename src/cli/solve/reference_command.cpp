@@ -9,9 +9,9 @@
 
 #include "cli/common/commands.hpp"
 #include "cli/common/options.hpp"
-#include "cli/common/output_files.hpp"
 #include "cli/common/progress.hpp"
 #include "cli/common/stop_signals.hpp"
+#include "files/output_files.hpp"
 #include "reference/reference_solution.hpp"
 #include "restitution/errors.hpp"
 
@@ -48,7 +48,7 @@ int run_reference(const ReferenceOptions& o) {
     return 0;
   }
   if (o.out.empty()) throw InvalidInput("give --out FILE (or --zeta Z for one value)");
-  check_output_file(o.out);  // before the work, not after
+  files::check_output_file(o.out);  // before the work, not after
   // Ctrl-C stops after the solution in progress; --out is written (atomically) only at the end.
   const StopSignals signals;
   std::vector<ReferenceSolution> solutions;
@@ -60,7 +60,7 @@ int run_reference(const ReferenceOptions& o) {
     });
   }
   const std::filesystem::path path(o.out);
-  write_file_atomically(path, reference_csv(solutions));
+  files::write_file_atomically(path, reference_csv(solutions));
   fmt::print("wrote {} reference solutions to {}\n", solutions.size(), path.string());
   return 0;
 }

@@ -11,9 +11,11 @@
 #include "cli/common/commands.hpp"
 #include "cli/common/json_writer.hpp"
 #include "cli/common/options.hpp"
-#include "cli/common/output_files.hpp"
+#include "cli/common/plot_script.hpp"
 #include "cli/common/progress.hpp"
 #include "cli/common/stop_signals.hpp"
+#include "files/output_files.hpp"
+#include "sweep/number_text.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -126,7 +128,7 @@ void print_table(const StabilityReport& report) {
 int run_stability(const StabilityCliOptions& o) {
   StabilityOptions options;
   options.tolerance = o.tolerance;
-  if (!o.out.empty()) check_output_folder(o.out);
+  if (!o.out.empty()) files::check_output_folder(o.out);
   // Ctrl-C stops at the next zeta, before anything is printed or written; one that arrives while the files
   // are written or plotted still stops the command with its message.
   const StopSignals signals;
@@ -137,8 +139,8 @@ int run_stability(const StabilityCliOptions& o) {
   }();
   if (!o.out.empty()) {
     const std::filesystem::path folder(o.out);
-    write_file_atomically(folder / "stability.csv", csv(report));
-    write_file_atomically(folder / "stability.json", json_text(report));
+    files::write_file_atomically(folder / "stability.csv", csv(report));
+    files::write_file_atomically(folder / "stability.json", json_text(report));
     const std::string why =
         run_plot_script("stability", folder / "stability.csv", folder / "stability.png",
                         {fmt::format("{}", report.tolerance)}, scene::figure_formats_from_list(o.format));

@@ -9,10 +9,10 @@
 
 #include "cli/common/commands.hpp"
 #include "cli/common/options.hpp"
-#include "cli/common/output_files.hpp"
 #include "cli/common/progress.hpp"
 #include "cli/common/stop_signals.hpp"
 #include "cli/solve/work_precision_files.hpp"
+#include "files/output_files.hpp"
 #include "reference/work_precision.hpp"
 #include "restitution/errors.hpp"
 
@@ -29,7 +29,7 @@ struct WorkPrecisionOptions {
 
 int run_work_precision(const WorkPrecisionOptions& o) {
   const std::filesystem::path folder(o.out);
-  check_output_folder(folder);  // before the measurements, not after
+  files::check_output_folder(folder);  // before the measurements, not after
   const std::filesystem::path reference =
       o.reference.empty() ? default_reference_file() : std::filesystem::path(o.reference);
   // Ctrl-C stops at the next point, before any file is written; one that arrives while the (atomic) files are

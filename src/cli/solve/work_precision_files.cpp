@@ -3,8 +3,10 @@
 
 #include <fmt/core.h>
 
-#include "cli/common/output_files.hpp"
+#include "cli/common/plot_script.hpp"
 #include "cli/common/resource_root.hpp"
+#include "files/output_files.hpp"
+#include "sweep/number_text.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -42,8 +44,8 @@ WorkPrecisionFiles write_work_precision_files(const std::vector<WorkPrecisionRow
   const std::string points = stem + ".csv";
   const std::string summary = stem + "_summary.csv";
   const std::string png = stem + ".png";
-  write_file_atomically(folder / points, points_csv(rows));
-  write_file_atomically(folder / summary, summary_csv(rows));
+  files::write_file_atomically(folder / points, points_csv(rows));
+  files::write_file_atomically(folder / summary, summary_csv(rows));
   out.files = {points, summary};
   out.plot_warning = run_plot_script("work_precision", folder / summary, folder / png, {}, formats);
   if (out.plot_warning.empty()) {

@@ -11,10 +11,11 @@
 #include "adhesion/adhesive_study.hpp"
 #include "cli/common/adhesion_options.hpp"
 #include "cli/common/material_options.hpp"
-#include "cli/common/output_files.hpp"
+#include "files/output_files.hpp"
 #include "restitution/adhesion.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/sweep.hpp"
+#include "sweep/number_text.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -83,13 +84,13 @@ int run_adhesive_sweep(const SweepOptions& o) {
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("--velocity-range '{}': {}", o.velocity_range, e.what()));
   }
-  const OutputTarget target = output_target(o.out);
-  check_output_file(o.out);
+  const files::OutputTarget target = files::output_target(o.out);
+  files::check_output_file(o.out);
   const std::string text = table(contact, speeds, o.solver.tolerance);
   if (target.in_place) {
-    write_in_place(target.path, text);
+    files::write_in_place(target.path, text);
   } else {
-    write_file_atomically(target.path, text);
+    files::write_file_atomically(target.path, text);
   }
   fmt::print("wrote {}: {} points\n", o.out, speeds.size());
   return 0;

@@ -14,15 +14,16 @@
 #include "cli/common/deprecated_alias.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
-#include "cli/common/output_files.hpp"
 #include "cli/common/progress.hpp"
 #include "cli/common/stop_signals.hpp"
 #include "cli/sweep/sweep_adhesion.hpp"
 #include "cli/sweep/sweep_grid.hpp"
+#include "files/output_files.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/material.hpp"
 #include "restitution/sweep.hpp"
 #include "restitution/units.hpp"
+#include "sweep/number_text.hpp"
 
 namespace restitution::cli {
 namespace {
@@ -73,14 +74,14 @@ int run_sweep_command(const SweepOptions& given) {
     throw InvalidInput(fmt::format("--out '{}' must name a file, not a folder", o.out));
   }
   // A symlink is followed: FILE.partial is kept beside the file it points to, which is replaced at the end.
-  const OutputTarget target = output_target(o.out);
+  const files::OutputTarget target = files::output_target(o.out);
   if (target.in_place) {
     throw InvalidInput(
         fmt::format("--out '{}' is not a regular file (a device, FIFO or /dev/stdout): a sweep "
                     "keeps FILE.partial beside its file for --resume; give a file name",
                     o.out));
   }
-  check_output_file(o.out);  // names the file when its folder refuses it
+  files::check_output_file(o.out);  // names the file when its folder refuses it
   SweepFile file;
   file.path = target.path;
   file.resume = o.resume;

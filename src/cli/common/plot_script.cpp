@@ -1,27 +1,21 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/common/output_files.hpp"
+#include "cli/common/plot_script.hpp"
 
-#include <fcntl.h>
 #include <fmt/core.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <csignal>
 
-#include <cerrno>
-#include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <string_view>
 #include <system_error>
 
 #include "child_process/child_process.hpp"
-#include "cli/common/io_error.hpp"
 #include "cli/common/resource_root.hpp"
 #include "cli/common/stop_signals.hpp"
+#include "files/output_files.hpp"
+#include "files/temporary_file.hpp"
 #include "restitution/errors.hpp"
-#include "sweep/printable_name.hpp"
-#include "sweep/temporary_file.hpp"
 
 namespace restitution::cli {
 namespace fs = std::filesystem;
@@ -61,116 +55,6 @@ void stop_if_signalled(int status) {
 
 }  // namespace
 
-void flush_standard_output() {
-  if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
-    throw IoError(fmt::format("cannot write to standard output: {}", std::strerror(errno)));
-  }
-}
-
-namespace {
-
-// `file` (empty for a folder output) names what is to be written there, so that the message says which output
-// failed; the system's reason comes last, in brackets, since for /proc it reads "No such file or directory".
-void check_writable_folder(const fs::path& folder, const fs::path& file) {
-  std::error_code error;
-  const fs::path start = folder.empty() ? fs::path(".") : folder;
-  fs::path existing = start;
-  while (!fs::exists(fs::symlink_status(existing, error)) && existing.has_parent_path() &&
-         existing.parent_path() != existing) {
-    existing = existing.parent_path();
-  }
-  if (!fs::exists(existing)) existing = ".";  // a relative path none of whose parts exists yet
-  const std::string what =
-      existing != start ? fmt::format("cannot create output folder '{}'", folder.string())
-      : file.empty()    ? fmt::format("cannot write into output folder '{}'", folder.string())
-                        : fmt::format("cannot write '{}'", file.string());
-  if (!fs::is_directory(existing)) {
-    throw IoError(fmt::format("{}: '{}' is not a folder", what, existing.string()));
-  }
-  // access(W_OK) says yes to root everywhere, /proc included: probe with a file that is removed at once.
-  std::string probe = (existing / ".restitution-probe-XXXXXX").string();
-  const int fd = mkstemp(probe.data());
-  if (fd < 0) {
-    throw IoError(
-        fmt::format("{}: the folder '{}' does not let this program create files in it (the system "
-                    "says: {})",
-                    what, existing.string(), std::strerror(errno)));
-  }
-  close(fd);
-  unlink(probe.c_str());
-}
-
-}  // namespace
-
-void check_output_folder(const fs::path& folder) {
-  check_writable_folder(folder, {});
-}
-
-void check_output_file(const fs::path& path) {
-  const OutputTarget target = output_target(path);
-  if (!target.in_place) check_writable_folder(target.path.parent_path(), path);
-}
-
-void check_figure_file(const fs::path& path, const std::string& option) {
-  if (output_target(path).in_place) {
-    throw InvalidInput(
-        fmt::format("{} '{}' is a device, a pipe or a stream, not a file: a figure is written as a "
-                    "new file and renamed into place; name a file",
-                    option, printable_name(path.string())));
-  }
-  check_output_file(path);
-}
-
-OutputTarget output_target(const fs::path& path) {
-  std::error_code error;
-  const fs::file_status followed = fs::status(path, error);
-  if (fs::is_directory(followed)) {
-    throw InvalidInput(fmt::format("'{}' is a folder, not a file", path.string()));
-  }
-  if (fs::exists(followed) && !fs::is_regular_file(followed)) return {path, true};  // device, FIFO, socket
-  fs::path at = path;
-  for (int hops = 0; fs::is_symlink(fs::symlink_status(at, error)); ++hops) {
-    if (hops == 40) throw InvalidInput(fmt::format("'{}': too many levels of symbolic links", path.string()));
-    const fs::path link = fs::read_symlink(at, error);
-    if (error) throw InvalidInput(fmt::format("cannot read the link '{}': {}", at.string(), error.message()));
-    at = link.is_absolute() ? link : at.parent_path() / link;
-    // /dev/stdout -> /proc/self/fd/1: an open stream, whatever file it happens to be.
-    if (at.lexically_normal().string().rfind("/proc/", 0) == 0) return {path, true};
-  }
-  return {at.lexically_normal(), false};
-}
-
-void write_in_place(const fs::path& path, const std::string& content) {
-  const int fd =
-      ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);  // NOLINT(cppcoreguidelines-pro-type-vararg)
-  const int written = fd < 0 ? errno : write_all(fd, content.data(), content.size());
-  const int closed = fd < 0 || ::close(fd) == 0 ? 0 : errno;
-  if (written != 0 || closed != 0) {
-    throw IoError(fmt::format("cannot write '{}': {}", printable_name(path.string()),
-                              std::strerror(written != 0 ? written : closed)));
-  }
-}
-
-void write_file_atomically(const fs::path& path, const std::string& content) {
-  const OutputTarget target = output_target(path);
-  if (target.in_place) {
-    write_in_place(path, content);
-    return;
-  }
-  std::error_code error;
-  if (target.path.has_parent_path()) fs::create_directories(target.path.parent_path(), error);
-  if (error) {
-    throw IoError(fmt::format("cannot create the folder of '{}': {}", target.path.string(), error.message()));
-  }
-  const fs::path temporary = write_temporary_beside(target.path, content);
-  fs::rename(temporary, target.path, error);
-  if (error) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw IoError(fmt::format("cannot write '{}': {}", target.path.string(), error.message()));
-  }
-}
-
 std::vector<std::string> figure_file_names(const std::string& stem, const std::vector<std::string>& formats) {
   std::vector<std::string> names;
   names.reserve(formats.size());
@@ -187,7 +71,7 @@ std::string no_plot_warning(const std::string& what, const std::string& why) {
 std::string run_plot_script(const std::string& script, const fs::path& data, const fs::path& image,
                             const std::vector<std::string>& arguments,
                             const std::vector<std::string>& formats) {
-  check_figure_file(image, "the figure");  // the commands check first; a scene's figures are files
+  files::check_figure_file(image, "the figure");  // the commands check first; a scene's figures are files
   const fs::path path = scripts_folder() / "plots" / (script + ".py");
   if (!fs::exists(path)) return fmt::format("no plot: script {} not found", path.string());
   const std::string python = python_interpreter();
@@ -200,7 +84,7 @@ std::string run_plot_script(const std::string& script, const fs::path& data, con
   // matplotlib picks the format by the extension, so the temporary names keep it: NAME.<random>.tmp.png, ...
   // (random: another run's figures, or a link planted under a fixed name, are never written through). The
   // script creates them: a file made here in advance would outlive a SIGKILL of this process.
-  const std::string token = random_name_part();
+  const std::string token = files::random_name_part();
   const auto figure = [&](const std::string& format, bool temporary) {
     const std::string stem = image.stem().string();
     return image.parent_path() / (temporary ? fmt::format("{}.{}.tmp.{}", stem, token, format)

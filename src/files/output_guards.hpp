@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace restitution::cli {
+namespace restitution::files {
 
 // A file named on the command line, with the option that named it ("--deck", "--compare"; may be empty).
 struct NamedPath {
@@ -30,4 +30,4 @@ void check_output_is_not_input(const std::filesystem::path& output,
 // writing would create folders along the link's target, somewhere the user never pointed.
 void check_no_folder_through_link(const std::filesystem::path& output);
 
-}  // namespace restitution::cli
+}  // namespace restitution::files

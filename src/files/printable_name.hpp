@@ -6,9 +6,9 @@
 #include <string>
 #include <string_view>
 
-namespace restitution {
+namespace restitution::files {
 
 // `name` with every byte below 0x20 and 0x7F written as \xNN (a backslash as \\, so the escape reads back).
 std::string printable_name(std::string_view name);
 
-}  // namespace restitution
+}  // namespace restitution::files

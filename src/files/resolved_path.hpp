@@ -5,7 +5,7 @@
 // the file exists yet.
 #include <filesystem>
 
-namespace restitution {
+namespace restitution::files {
 
 // `path` made absolute, every symbolic link followed, its last part's too when it dangles (where writing
 // would create the file), and `.`/`..` resolved. Parts that do not exist yet are kept as written. A loop of
@@ -15,4 +15,4 @@ std::filesystem::path resolved_path(const std::filesystem::path& path);
 // True when the resolved `path` is the resolved `folder` or lies below it.
 bool resolves_within(const std::filesystem::path& path, const std::filesystem::path& folder);
 
-}  // namespace restitution
+}  // namespace restitution::files

@@ -1,20 +1,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/common/file_set.hpp"
+#include "files/file_set.hpp"
 
 #include <fmt/core.h>
 
 #include <optional>
 #include <system_error>
 
-#include "cli/common/output_files.hpp"
-#include "cli/common/stop_signals.hpp"
+#include "files/output_files.hpp"
+#include "files/temporary_file.hpp"
 #include "restitution/errors.hpp"
-#include "sweep/temporary_file.hpp"
 
-namespace restitution::cli {
+namespace restitution::files {
 namespace fs = std::filesystem;
 
-void write_file_set(const std::vector<SetMember>& members) {
+void write_file_set(const std::vector<SetMember>& members, const std::function<void()>& stop_check) {
   std::vector<OutputTarget> targets;
   targets.reserve(members.size());
   for (const SetMember& m : members) targets.push_back(output_target(m.path));
@@ -27,17 +26,12 @@ void write_file_set(const std::vector<SetMember>& members) {
   };
   try {
     for (std::size_t i = 0; i < members.size(); ++i) {
-      throw_if_interrupted();
+      stop_check();
       if (targets[i].in_place) continue;
-      std::error_code error;
-      if (targets[i].path.has_parent_path()) fs::create_directories(targets[i].path.parent_path(), error);
-      if (error) {
-        throw IoError(
-            fmt::format("cannot create the folder of '{}': {}", targets[i].path.string(), error.message()));
-      }
+      create_folder_of(targets[i].path);
       temporaries[i] = write_temporary_beside(targets[i].path, *members[i].content);
     }
-    throw_if_interrupted();
+    stop_check();
   } catch (...) {
     remove_temporaries();
     throw;
@@ -52,18 +46,18 @@ void write_file_set(const std::vector<SetMember>& members) {
       write_in_place(targets[i].path, *members[i].content);
       continue;
     }
-    std::error_code error;
-    fs::rename(*temporaries[i], targets[i].path, error);
-    if (error) {
+    try {
+      rename_onto(*temporaries[i], targets[i].path);
+    } catch (const IoError&) {
       remove_temporaries();
       std::error_code ignored;
       for (std::size_t k = 0; k < i; ++k) {
         if (!targets[k].in_place) fs::remove(targets[k].path, ignored);  // part of a set runs nothing
       }
-      throw IoError(fmt::format("cannot write '{}': {}", targets[i].path.string(), error.message()));
+      throw;
     }
     temporaries[i].reset();
   }
 }
 
-}  // namespace restitution::cli
+}  // namespace restitution::files

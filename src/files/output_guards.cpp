@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "cli/common/output_guards.hpp"
+#include "files/output_guards.hpp"
 
 #include <fmt/core.h>
 
-#include "cli/common/output_files.hpp"
+#include "files/output_files.hpp"
+#include "files/printable_name.hpp"
+#include "files/resolved_path.hpp"
 #include "restitution/errors.hpp"
-#include "sweep/printable_name.hpp"
-#include "sweep/resolved_path.hpp"
 
-namespace restitution::cli {
+namespace restitution::files {
 namespace fs = std::filesystem;
 
 namespace {
@@ -66,4 +66,4 @@ void check_no_folder_through_link(const fs::path& output) {
   }
 }
 
-}  // namespace restitution::cli
+}  // namespace restitution::files

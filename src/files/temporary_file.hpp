@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-namespace restitution {
+namespace restitution::files {
 
 // 12 hexadecimal digits from the kernel's random source: a name nobody can guess in advance.
 std::string random_name_part();
@@ -32,9 +32,13 @@ TemporaryFile create_temporary_beside(const std::filesystem::path& target);
 // temporary is removed and IoError names the target and the system's reason (ENOSPC: "No space left").
 std::filesystem::path write_temporary_beside(const std::filesystem::path& target, std::string_view content);
 
+// Renames a finished temporary onto `target` (replacing it in one step). On failure the temporary is removed
+// and IoError names the target and the system's reason.
+void rename_onto(const std::filesystem::path& temporary, const std::filesystem::path& target);
+
 // Writes all the bytes, continuing after a short write; returns 0, or the errno of the write(2) that failed
 // (ENOSPC when the file takes no byte more). Raw write(2) rather than stdio: stdio writes what its buffer
 // holds again when the file is closed, after a failure too.
 int write_all(int fd, const char* data, std::size_t size);
 
-}  // namespace restitution
+}  // namespace restitution::files

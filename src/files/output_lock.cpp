@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "sweep/output_lock.hpp"
+#include "files/output_lock.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -14,10 +14,10 @@
 #include <system_error>
 #include <thread>
 
+#include "files/resolved_path.hpp"
 #include "restitution/errors.hpp"
-#include "sweep/resolved_path.hpp"
 
-namespace restitution {
+namespace restitution::files {
 namespace {
 namespace fs = std::filesystem;
 
@@ -127,4 +127,4 @@ fs::path sweep_lock_path(const fs::path& file) {
   return resolved_path(file).string() + ".lock";
 }
 
-}  // namespace restitution
+}  // namespace restitution::files

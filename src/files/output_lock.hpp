@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-namespace restitution {
+namespace restitution::files {
 
 class OutputLock {
  public:
@@ -41,10 +41,10 @@ class FolderLock {
 };
 
 // The lock file of an output folder: FOLDER.lock beside it (inside it for a file system's root), FOLDER being
-// where the name resolves to after symbolic links (sweep/resolved_path.hpp).
+// where the name resolves to after symbolic links (files/resolved_path.hpp).
 std::filesystem::path folder_lock_path(const std::filesystem::path& folder);
 
 // The lock file of a sweep's output FILE: FILE.lock beside where FILE resolves to.
 std::filesystem::path sweep_lock_path(const std::filesystem::path& file);
 
-}  // namespace restitution
+}  // namespace restitution::files

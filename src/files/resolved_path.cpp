@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "sweep/resolved_path.hpp"
+#include "files/resolved_path.hpp"
 
 #include <system_error>
 
-namespace restitution {
+namespace restitution::files {
 namespace fs = std::filesystem;
 
 fs::path resolved_path(const fs::path& path) {
@@ -36,4 +36,4 @@ bool resolves_within(const fs::path& path, const fs::path& folder) {
   return true;
 }
 
-}  // namespace restitution
+}  // namespace restitution::files

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "sweep/printable_name.hpp"
+#include "files/printable_name.hpp"
 
 #include <fmt/format.h>
 
-namespace restitution {
+namespace restitution::files {
 
 std::string printable_name(std::string_view name) {
   std::string out;
@@ -21,4 +21,4 @@ std::string printable_name(std::string_view name) {
   return out;
 }
 
-}  // namespace restitution
+}  // namespace restitution::files

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "sweep/temporary_file.hpp"
+#include "files/temporary_file.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -10,10 +10,11 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <system_error>
 
 #include "restitution/errors.hpp"
 
-namespace restitution {
+namespace restitution::files {
 
 std::string random_name_part() {
   std::array<std::uint8_t, 6> bytes{};
@@ -64,6 +65,15 @@ std::filesystem::path write_temporary_beside(const std::filesystem::path& target
   return temporary.path;
 }
 
+void rename_onto(const std::filesystem::path& temporary, const std::filesystem::path& target) {
+  std::error_code error;
+  std::filesystem::rename(temporary, target, error);
+  if (!error) return;
+  std::error_code ignored;
+  std::filesystem::remove(temporary, ignored);
+  throw IoError(fmt::format("cannot write '{}': {}", target.string(), error.message()));
+}
+
 int write_all(int fd, const char* data, std::size_t size) {
   while (size > 0) {
     const ssize_t written = ::write(fd, data, size);
@@ -76,4 +86,4 @@ int write_all(int fd, const char* data, std::size_t size) {
   return 0;
 }
 
-}  // namespace restitution
+}  // namespace restitution::files
