@@ -202,6 +202,11 @@ TEST(FitDataInput, OutputNeverReplacesTheInputNorFollowsADanglingLink) {
   err = refusal("fit-data " + csv + " --out " + (t.path / "dangling.json").string());
   EXPECT_NE(err.find("whose folder does not exist"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(t.path / "elsewhere"));
+  // --out and --plot one file: the figure would replace the report.
+  err = refusal("fit-data " + csv + " --out " + (t.path / "f.png").string() + " --plot " +
+                (t.path / "f.png").string());
+  EXPECT_NE(err.find("--out '" + (t.path / "f.png").string() + "' and --plot"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(t.path / "f.png"));
   err = refusal("fit-data " + csv + " --out ''");
   EXPECT_NE(err.find("empty path"), std::string::npos) << err;
   // A dangling link into a folder that exists is written through, as before.

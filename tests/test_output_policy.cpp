@@ -116,6 +116,25 @@ TEST(OutputPolicy, TwoOutputsOfOneCommandOnOnePathAreRefused) {
   }
 }
 
+// A link whose target's folder is missing: writing would create folders where the link points, somewhere the
+// user never named. Every command's file output refuses it before any work, and nothing is created.
+TEST(OutputPolicy, NoCommandCreatesFoldersThroughALink) {
+  const TempFolder dir;
+  const fs::path link = dir.path / "link.csv";
+  fs::create_symlink(dir.path / "elsewhere" / "deep" / "out.csv", link);
+  const std::string steel =
+      " --eps 0.9 --velocity 1 --young-modulus 2.1e11 --poisson-ratio 0.3 --radius 0.005 --density 7850";
+  for (const std::string& command :
+       {"sweep --zeta-range 0.1:1:3 --out " + quoted(link), kCurve + "--out " + quoted(link),
+        "dem --code lammps --deck " + quoted(link) + steel,
+        "oblique --friction 0.3 --angle 30" + steel + " --out " + quoted(link)}) {
+    const auto r = run_cli(command);
+    EXPECT_EQ(r.status, 2) << command << "\n" << r.err;
+    EXPECT_NE(r.err.find("whose folder does not exist"), std::string::npos) << command << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(dir.path / "elsewhere")) << command;
+  }
+}
+
 TEST(OutputPolicy, ALogNameHoldingQuotesAndControlsKeepsTheColumns) {
   const TempFolder dir;
   const std::string name = "a\"b,c\x1b[2Jd.log";  // a quote, a comma and an escape sequence

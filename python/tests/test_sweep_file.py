@@ -2,7 +2,9 @@
 """restitution.sweep_to_file: the command line's sweep table from Python, kept in path.partial while it runs, so
 that a stopped sweep resumes to the bytes of an uninterrupted one."""
 
+import os
 import re
+import stat
 
 import numpy as np
 import pytest
@@ -93,3 +95,18 @@ def test_bad_arguments_are_refused_before_any_file(tmp_path):
     with pytest.raises(TypeError, match="stop"):
         restitution.sweep_to_file([0.1], out, stop=1)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_device_or_a_link_into_a_missing_folder_is_refused_and_left_alone(tmp_path):
+    """A sweep's table is made beside its file and renamed onto it: onto a FIFO or device (as root, /dev/full) that
+    would replace the device with a plain file. A link whose target's folder is missing would make folders there."""
+    fifo = tmp_path / "pipe.csv"
+    os.mkfifo(fifo)
+    with pytest.raises(ValueError, match="not a regular file"):
+        restitution.sweep_to_file([0.1], fifo)
+    assert stat.S_ISFIFO(os.lstat(fifo).st_mode)
+    link = tmp_path / "link.csv"
+    link.symlink_to("missing/out.csv")
+    with pytest.raises(ValueError, match="whose folder does not exist"):
+        restitution.sweep_to_file([0.1], link)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["link.csv", "pipe.csv"]

@@ -58,7 +58,16 @@ void check_output_folder(const fs::path& folder) {
 
 void check_output_file(const fs::path& path) {
   const OutputTarget target = output_target(path);
-  if (!target.in_place) check_writable_folder(target.path.parent_path(), path);
+  if (target.in_place) return;
+  std::error_code error;
+  const fs::path folder = target.path.has_parent_path() ? target.path.parent_path() : fs::path(".");
+  if (fs::is_symlink(fs::symlink_status(path, error)) && !fs::is_directory(folder, error)) {
+    throw InvalidInput(fmt::format(
+        "'{}' is a link to '{}', whose folder does not exist: writing would create folders where the link "
+        "points; create the folder, or name another file",
+        printable_name(path.string()), printable_name(target.path.string())));
+  }
+  check_writable_folder(target.path.parent_path(), path);
 }
 
 void check_figure_file(const fs::path& path, const std::string& option) {

@@ -14,7 +14,9 @@ namespace restitution::files {
 void check_output_folder(const std::filesystem::path& folder);
 
 // check_output_folder for the folder a file named on the command line will be written into (see
-// output_target; a stream is always writable here). Throws InvalidInput when the path is a folder.
+// output_target; a stream is always writable here). Throws InvalidInput when the path is a folder, or a
+// symbolic link whose target's folder does not exist (writing would create folders along the link's target,
+// somewhere the user never pointed).
 void check_output_file(const std::filesystem::path& path);
 
 // check_output_file for a figure named with `option` (--plot). A figure is made beside its name as a new file

@@ -46,24 +46,4 @@ void check_outputs_apart(const std::vector<NamedPath>& outputs, const std::vecto
   }
 }
 
-void check_output_is_not_input(const fs::path& output, const std::vector<fs::path>& inputs) {
-  std::vector<NamedPath> named;
-  named.reserve(inputs.size());
-  for (const fs::path& input : inputs) named.push_back({"", input});
-  check_outputs_apart({{"--output", output}}, named);
-}
-
-void check_no_folder_through_link(const fs::path& output) {
-  std::error_code error;
-  if (!fs::is_symlink(fs::symlink_status(output, error))) return;
-  const fs::path target = output_target(output).path;
-  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  if (!fs::is_directory(folder, error)) {
-    throw InvalidInput(
-        fmt::format("--output '{}' is a link to '{}', whose folder does not exist: create it, "
-                    "or name another file",
-                    output.string(), target.string()));
-  }
-}
-
 }  // namespace restitution::files

@@ -22,12 +22,4 @@ bool same_file_place(const std::filesystem::path& output, const std::filesystem:
 // input), or when two outputs are one file (one would replace the other).
 void check_outputs_apart(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs);
 
-// check_outputs_apart for the one file of --output.
-void check_output_is_not_input(const std::filesystem::path& output,
-                               const std::vector<std::filesystem::path>& inputs);
-
-// Throws InvalidInput when `output` is a symbolic link whose target lies in a folder that does not exist:
-// writing would create folders along the link's target, somewhere the user never pointed.
-void check_no_folder_through_link(const std::filesystem::path& output);
-
 }  // namespace restitution::files

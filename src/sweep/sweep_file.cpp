@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "files/output_files.hpp"
 #include "files/output_lock.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/sweep.hpp"
@@ -61,7 +62,18 @@ SweepFileOutcome sweep_to_file(const std::vector<double>& zetas, const SolveOpti
     throw InvalidInput(
         fmt::format("{}: the settings line of its partial file holds a line break", named(file)));
   }
-  const fs::path& out = file.path;
+  // A device, FIFO or stream cannot hold a sweep: its table is made beside the file and renamed onto it,
+  // which would replace /dev/full itself when run as root. A link is followed, as every output is (its
+  // target's folder must exist).
+  const files::OutputTarget target = files::output_target(file.path);
+  if (target.in_place) {
+    throw InvalidInput(fmt::format(
+        "{} is not a regular file (a device, FIFO or stream): a sweep keeps FILE.partial beside its file and "
+        "renames the finished table onto it; name a file",
+        named(file)));
+  }
+  files::check_output_file(file.path);
+  const fs::path& out = target.path;
   const SweepColumns* columns = file.columns ? &*file.columns : nullptr;
   SweepFileOutcome outcome;
   outcome.partial_path = out.string() + ".partial";

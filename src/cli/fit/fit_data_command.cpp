@@ -81,15 +81,12 @@ void check_data_of_file(const FitData& data, const std::string& file) {
 
 int run_fit_data(const FitDataOptions& o) {
   // Everything is checked before anything is written.
-  if (!o.output.empty()) {
-    files::check_output_is_not_input(o.output, {o.file});
-    files::check_no_folder_through_link(o.output);
-    files::check_output_file(o.output);
-  }
-  if (!o.plot.empty()) {
-    files::check_output_is_not_input(o.plot, {o.file});
-    files::check_output_file(o.plot);
-  }
+  std::vector<files::NamedPath> outputs;
+  if (!o.output.empty()) outputs.push_back({"--out", o.output});
+  if (!o.plot.empty()) outputs.push_back({"--plot", o.plot});
+  files::check_outputs_apart(outputs, {{"", o.file}});
+  if (!o.output.empty()) files::check_output_file(o.output);
+  if (!o.plot.empty()) files::check_figure_file(o.plot, "--plot");
   FitOptions options;
   options.candidates = fit_candidates(o.laws, o.speed_independent_end);
   options.tolerance = o.tolerance;
