@@ -14,6 +14,7 @@
 #include "cli/common/commands.hpp"
 #include "cli/common/material_options.hpp"
 #include "cli/common/parameter_options.hpp"
+#include "dem/dem_parameters.hpp"
 #include "parameter_table_checks.hpp"
 #include "restitution/errors.hpp"
 #include "restitution/head_on_parameters.hpp"
@@ -104,6 +105,9 @@ TEST(HeadOnParameters, TheSharedRowsSayTheSameEverywhere) {
   EXPECT_EQ(compared, 5);  // the gas takes one radius and one mass
   EXPECT_EQ(gas::gas_field("law").help, head_on_field("law").help);
   EXPECT_EQ(cmd->get_option("--law")->get_description(), head_on_field("law").help);
+  // The one-end rows (not eps and sweep's, which take "both" too) are one maker's as well.
+  EXPECT_EQ(gas::gas_field("end").help, dem::dem_field("end").help);
+  EXPECT_EQ(gas::gas_field("end").words, end_names());
   for (const std::string& law : law_names())
     EXPECT_NE(head_on_field("law").help.find(law), std::string::npos) << law;
 }

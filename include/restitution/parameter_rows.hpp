@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Rows that several studies' tables (restitution/parameter_table.hpp) share word for word: the material's
-// fields (a scene takes them from its [materials.X]) and the contact law by name. A table calls the maker
-// with its own member; the name, unit, help and check are written here once. Inline only.
+// fields (a scene takes them from its [materials.X]), the contact law and the end by name. A table calls the
+// maker with its own member; the name, unit, help and check are written here once. Inline only.
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -11,6 +11,7 @@
 
 #include "restitution/contact_law.hpp"
 #include "restitution/parameter_table.hpp"
+#include "restitution/solve_types.hpp"
 
 namespace restitution {
 
@@ -72,6 +73,22 @@ ParameterField<Inputs> law_field(std::string Inputs::*member) {
   f.word = member;
   f.words = law_names();
   f.check_word = [](const std::string& word) { (void)law_from_name(word); };
+  f.show_default = true;
+  return f;
+}
+
+// `end`: one end of the collision (end_names()), refused in end_from_name's words; its default shown. (Not
+// `eps` and `sweep`'s end, which also takes "both".)
+template <class Inputs>
+ParameterField<Inputs> end_field(std::string Inputs::*member) {
+  ParameterField<Inputs> f{};
+  f.name = "end";
+  f.kind = FieldKind::word;
+  f.unit = "";
+  f.help = "end of the collision: naive (no clamp) or delayed-recovery (force clamped)";
+  f.word = member;
+  f.words = end_names();
+  f.check_word = [](const std::string& word) { (void)end_from_name(word); };
   f.show_default = true;
   return f;
 }

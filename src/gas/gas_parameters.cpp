@@ -21,9 +21,6 @@ namespace {
 using K = FieldKind;
 const FieldRange kPositive{.text = "a value > 0"};
 
-void check_end(const std::string& word) {
-  (void)end_from_name(word);
-}
 void check_thermostat(const std::string& word) {
   if (word != "langevin" && word != "white-noise") {
     throw InvalidInput(
@@ -63,14 +60,7 @@ std::vector<GasField> sphere_and_law_fields() {
        .optional_number = &In::dissipative_constant_s,
        .from_material = true},
       law_field(&In::law),
-      {.name = "end",
-       .kind = K::word,
-       .unit = "",
-       .help = "end of the collision: naive (no clamp) or delayed-recovery (force clamped)",
-       .word = &In::end,
-       .words = end_names(),
-       .check_word = check_end,
-       .show_default = true},
+      end_field(&In::end),
   };
   fields.insert(fields.end(), rest.begin(), rest.end());
   return fields;
