@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "restitution/contact_law.hpp"
@@ -62,35 +63,37 @@ inline std::string law_help() {
   return "contact law: " + list + " or " + names.back() + " (docs/contact_laws.md)";
 }
 
-// `law`: one of law_names(), refused in law_from_name's words; its default shown.
+// A word with its choices, checked by `check` (a name's own refusal, which names the choices); its default
+// shown.
 template <class Inputs>
-ParameterField<Inputs> law_field(std::string Inputs::*member) {
+ParameterField<Inputs> choice_field(const char* name, std::string help, std::string Inputs::*member,
+                                    const std::vector<std::string>& words,
+                                    void (*check)(const std::string&)) {
   ParameterField<Inputs> f{};
-  f.name = "law";
+  f.name = name;
   f.kind = FieldKind::word;
   f.unit = "";
-  f.help = law_help();
+  f.help = std::move(help);
   f.word = member;
-  f.words = law_names();
-  f.check_word = [](const std::string& word) { (void)law_from_name(word); };
+  f.words = words;
+  f.check_word = check;
   f.show_default = true;
   return f;
 }
 
-// `end`: one end of the collision (end_names()), refused in end_from_name's words; its default shown. (Not
-// `eps` and `sweep`'s end, which also takes "both".)
+// `law`: one of law_names(), refused in law_from_name's words.
+template <class Inputs>
+ParameterField<Inputs> law_field(std::string Inputs::*member) {
+  return choice_field("law", law_help(), member, law_names(),
+                      [](const std::string& word) { (void)law_from_name(word); });
+}
+
+// `end`: one end of the collision (end_names()), refused in end_from_name's words. (Not `eps` and `sweep`'s
+// end, which also takes "both".)
 template <class Inputs>
 ParameterField<Inputs> end_field(std::string Inputs::*member) {
-  ParameterField<Inputs> f{};
-  f.name = "end";
-  f.kind = FieldKind::word;
-  f.unit = "";
-  f.help = "end of the collision: naive (no clamp) or delayed-recovery (force clamped)";
-  f.word = member;
-  f.words = end_names();
-  f.check_word = [](const std::string& word) { (void)end_from_name(word); };
-  f.show_default = true;
-  return f;
+  return choice_field("end", "end of the collision: naive (no clamp) or delayed-recovery (force clamped)",
+                      member, end_names(), [](const std::string& word) { (void)end_from_name(word); });
 }
 
 }  // namespace restitution
