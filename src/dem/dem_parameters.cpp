@@ -2,6 +2,7 @@
 #include "dem/dem_parameters.hpp"
 
 #include "dem/deck.hpp"
+#include "restitution/parameter_rows.hpp"
 
 // A row leaves out what it does not use. GCC 12 crashes on defaults of class type in a class template
 // (ParameterField's words and range), so those have none and -Wextra would name each row that leaves them
@@ -17,9 +18,6 @@ using In = DemInputs;
 // A scene refuses a code or an end in the words the command's own refusal uses.
 void check_code(const std::string& name) {
   (void)code_from_name(name);
-}
-void check_end(const std::string& name) {
-  (void)end_from_name(name);
 }
 
 std::vector<DemField> make_dem_fields() {
@@ -51,14 +49,7 @@ std::vector<DemField> make_dem_fields() {
        .help = "the dissipative constant A in s",
        .optional_number = &In::dissipative_constant_s,
        .from_material = true},
-      {.name = "end",
-       .kind = K::word,
-       .unit = "",
-       .help = "end of the collision: naive (no clamp) or delayed-recovery (force clamped)",
-       .word = &In::end,
-       .words = end_names(),
-       .check_word = check_end,
-       .show_default = true},
+      end_field(&In::end),
       {.name = "impact_velocity",
        .kind = K::numbers,
        .unit = "m/s",

@@ -3,8 +3,11 @@
 
 #include <fmt/format.h>
 
+#include <utility>
+
 #include "restitution/contact_law.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/parameter_rows.hpp"
 #include "restitution/solve_types.hpp"
 
 // A row leaves out what it does not use. GCC 12 crashes on defaults of class type in a class template
@@ -18,19 +21,6 @@ namespace {
 using K = FieldKind;
 const FieldRange kPositive{.text = "a value > 0"};
 
-std::string law_help() {
-  const std::vector<std::string>& names = law_names();
-  const std::vector<std::string> all_but_last(names.begin(), names.end() - 1);
-  return fmt::format("contact law: {} or {} (docs/contact_laws.md)", fmt::join(all_but_last, ", "),
-                     names.back());
-}
-
-void check_law(const std::string& word) {
-  (void)law_from_name(word);
-}
-void check_end(const std::string& word) {
-  (void)end_from_name(word);
-}
 void check_thermostat(const std::string& word) {
   if (word != "langevin" && word != "white-noise") {
     throw InvalidInput(
@@ -41,37 +31,14 @@ void check_thermostat(const std::string& word) {
 // The spheres and their law: the rows of the material options and of --eps, --law and --end.
 std::vector<GasField> sphere_and_law_fields() {
   using In = GasInputs;
-  return {
-      {.name = "young_modulus",
-       .kind = K::optional_number,
-       .unit = "Pa",
-       .help = "material: Young's modulus Y in Pa",
-       .optional_number = &In::young_modulus_pa,
-       .from_material = true},
-      {.name = "poisson_ratio",
-       .kind = K::optional_number,
-       .unit = "",
-       .help = "material: Poisson ratio in (-1, 0.5)",
-       .optional_number = &In::poisson_ratio,
-       .from_material = true},
-      {.name = "radius",
-       .kind = K::optional_number,
-       .unit = "m",
-       .help = "material: sphere radius in m (both spheres unless --radius2)",
-       .optional_number = &In::radius_m,
-       .from_material = true},
-      {.name = "density",
-       .kind = K::optional_number,
-       .unit = "kg/m^3",
-       .help = "material: density in kg/m^3 (gives the masses)",
-       .optional_number = &In::density_kg_m3,
-       .from_material = true},
-      {.name = "mass",
-       .kind = K::optional_number,
-       .unit = "kg",
-       .help = "material: sphere mass in kg (instead of --density)",
-       .optional_number = &In::mass_kg,
-       .from_material = true},
+  std::vector<GasField> fields;
+  for (const auto& [name, member] :
+       {std::pair{"young_modulus", &In::young_modulus_pa}, std::pair{"poisson_ratio", &In::poisson_ratio},
+        std::pair{"radius", &In::radius_m}, std::pair{"density", &In::density_kg_m3},
+        std::pair{"mass", &In::mass_kg}}) {
+    fields.push_back(material_field(name, member));
+  }
+  std::vector<GasField> rest = {
       {.name = "eps",
        .kind = K::optional_number,
        .unit = "",
@@ -92,23 +59,11 @@ std::vector<GasField> sphere_and_law_fields() {
            "--poisson-ratio)",
        .optional_number = &In::dissipative_constant_s,
        .from_material = true},
-      {.name = "law",
-       .kind = K::word,
-       .unit = "",
-       .help = law_help(),
-       .word = &In::law,
-       .words = law_names(),
-       .check_word = check_law,
-       .show_default = true},
-      {.name = "end",
-       .kind = K::word,
-       .unit = "",
-       .help = "end of the collision: naive (no clamp) or delayed-recovery (force clamped)",
-       .word = &In::end,
-       .words = end_names(),
-       .check_word = check_end,
-       .show_default = true},
+      law_field(&In::law),
+      end_field(&In::end),
   };
+  fields.insert(fields.end(), rest.begin(), rest.end());
+  return fields;
 }
 
 // The gas, its span of time, the theory's settings and the thermostat.

@@ -6,8 +6,10 @@
 #include <string>
 
 #include "restitution/errors.hpp"
+#include "restitution/head_on_parameters.hpp"
 #include "restitution/material.hpp"
 #include "restitution_series_study/series_named.hpp"
+#include "scene/parameter_keys.hpp"
 #include "scene/scene_approximations.hpp"
 #include "scene/scene_comparisons.hpp"
 #include "scene/scene_extensions.hpp"
@@ -48,7 +50,10 @@ Sweep read_sweep(TomlReader& r, const SectionContext& context) {
                fmt::format("unknown quantity \"{}\" (eps, one_minus_eps, duration, max_compression)", w));
     }
   }
-  s.law = read_law(r);
+  HeadOnInputs
+      inputs;  // the keys [[sweep]] shares with `eps` and `sweep` (restitution/head_on_parameters.hpp)
+  read_parameter_key(r, head_on_field("law"), inputs);
+  s.law = law_from_name(inputs.law);
   const auto zeta = r.numbers("zeta");
   const auto velocity = r.numbers("velocity");
   if (velocity && !has_dissipative_constant(s.law)) {

@@ -2,6 +2,10 @@
 #include "cli/common/material_options.hpp"
 
 #include <array>
+#include <utility>
+
+#include "cli/common/parameter_options.hpp"
+#include "restitution/parameter_rows.hpp"
 
 #include "restitution/errors.hpp"
 
@@ -12,13 +16,13 @@ bool MaterialOptions::any() const {
 }
 
 void add_material_options(CLI::App& command, MaterialOptions& o) {
-  command.add_option("--young-modulus", o.young_modulus, "material: Young's modulus Y in Pa");
-  command.add_option("--poisson-ratio", o.poisson_ratio, "material: Poisson ratio in (-1, 0.5)");
-  command.add_option("--radius", o.radius, "material: sphere radius in m (both spheres unless --radius2)");
-  command.add_option("--radius2", o.radius2, "material: radius of the second sphere in m");
-  command.add_option("--density", o.density, "material: density in kg/m^3 (gives the masses)");
-  command.add_option("--mass", o.mass, "material: sphere mass in kg (instead of --density)");
-  command.add_option("--mass2", o.mass2, "material: mass of the second sphere in kg");
+  using M = MaterialOptions;
+  for (const auto& [name, member] :
+       {std::pair{"young_modulus", &M::young_modulus}, std::pair{"poisson_ratio", &M::poisson_ratio},
+        std::pair{"radius", &M::radius}, std::pair{"radius2", &M::radius2}, std::pair{"density", &M::density},
+        std::pair{"mass", &M::mass}, std::pair{"mass2", &M::mass2}}) {
+    add_parameter_option(command, material_field(name, member), o);
+  }
 }
 
 Material material_from(const MaterialOptions& o) {

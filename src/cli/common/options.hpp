@@ -12,25 +12,11 @@
 
 #include "restitution/collision_solver.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/head_on_parameters.hpp"
+#include "restitution/parameter_rows.hpp"
 #include "scene/figure_formats.hpp"
 
 namespace restitution::cli {
-
-// --end, --tolerance, --method as given on the command line; resolved by the functions below.
-// Defaults: SolveOptions' (both ends, its tolerance, its method).
-struct SolverArguments {
-  std::string end = kBothEnds;
-  double tolerance = SolveOptions{}.tolerance;
-  std::string method = method_name(SolveOptions{}.method);
-};
-
-inline SolveOptions solve_options(const SolverArguments& a) {
-  SolveOptions options;
-  options.ends = end_set_from_name(a.end);
-  options.tolerance = a.tolerance;
-  options.method = method_from_name(a.method);
-  return options;
-}
 
 // An --out/--output value: never empty (an empty path would silently mean "here" or be ignored).
 inline CLI::Validator non_empty_path() {
@@ -89,64 +75,9 @@ inline CLI::Validator whole_number_in(long long lo, long long hi) {
           fmt::format("in [{}, {}]", lo, hi)};
 }
 
-// "bdf, adams (NOTE), auto (NOTE) or taylor (NOTE)": every method of kMethods, each followed by what
-// `note` says of it (const char*; "" says nothing), so that a new method appears in every --method help.
-template <typename Note>
-std::string method_choices(Note note) {
-  std::vector<std::string> items;
-  for (const Method method : kMethods) {
-    const std::string said = note(method);
-    items.push_back(said.empty() ? std::string(method_name(method))
-                                 : fmt::format("{} ({})", method_name(method), said));
-  }
-  return alternatives(items);
-}
-
-// What the solver options' --method help says of each method.
-inline const char* method_note(Method method) {
-  switch (method) {
-    case Method::bdf:
-      return "";
-    case Method::adams:
-      return "the naive end only for zeta <= 2000: its tail is stiff";
-    case Method::automatic:
-      return "CVODE, chosen per regime";
-    case Method::taylor:
-      return "Taylor series: about 9x faster than auto at the same tolerance, bench/RESULTS.md; the naive "
-             "end "
-             "only for zeta <= 100";
-  }
-  return "";
-}
-
 // --law NAME, one of law_names() (the family of docs/contact_laws.md).
 inline void add_law_option(CLI::App& command, std::string& law) {
-  const std::vector<std::string>& names = law_names();
-  const std::vector<std::string> all_but_last(names.begin(), names.end() - 1);
-  command
-      .add_option("--law", law,
-                  fmt::format("contact law: {} or {} (docs/contact_laws.md)", fmt::join(all_but_last, ", "),
-                              names.back()))
-      ->check(CLI::IsMember(law_names()))
-      ->capture_default_str();
-}
-
-inline void add_solver_options(CLI::App& command, SolverArguments& a) {
-  command
-      .add_option("--end", a.end, "end of the collision: naive (x = 0), delayed-recovery (force = 0) or both")
-      ->check(CLI::IsMember(end_set_names()))
-      ->capture_default_str();
-  command
-      .add_option(
-          "--tolerance", a.tolerance,
-          fmt::format(
-              "accuracy of eps relative to min(eps, 1 - eps) (read eps when eps is small, one_minus_eps "
-              "when eps is near 1): in {}",
-              fmt::join(tolerance_ranges(), "; ")))
-      ->capture_default_str();
-  command.add_option("--method", a.method, "integration method: " + method_choices(method_note))
-      ->check(CLI::IsMember(method_names()))
-      ->capture_default_str();
+  command.add_option("--law", law, law_help())->check(CLI::IsMember(law_names()))->capture_default_str();
 }
 
 }  // namespace restitution::cli

@@ -10,6 +10,7 @@
 
 #include "cli/common/parameter_options.hpp"
 #include "restitution/errors.hpp"
+#include "restitution/parameter_rows.hpp"
 #include "restitution_gas/gas_parameters.hpp"
 
 namespace restitution::cli {
@@ -50,9 +51,9 @@ void add_gas_options(CLI::App& command, GasOptions& o) {
     }
     // The second sphere's options, where the material options list them: refused by the monodisperse gas.
     if (f.optional_number == &gas::GasInputs::radius_m) {
-      command.add_option("--radius2", o.radius2, "material: radius of the second sphere in m");
+      add_parameter_option(command, material_field("radius2", &GasOptions::radius2), o);
     } else if (f.optional_number == &gas::GasInputs::mass_kg) {
-      command.add_option("--mass2", o.mass2, "material: mass of the second sphere in kg");
+      add_parameter_option(command, material_field("mass2", &GasOptions::mass2), o);
     }
   });
 }

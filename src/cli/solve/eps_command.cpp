@@ -9,8 +9,8 @@
 #include "cli/common/adhesion_options.hpp"
 #include "cli/common/build_json.hpp"
 #include "cli/common/commands.hpp"
+#include "cli/common/head_on_options.hpp"
 #include "cli/common/json_writer.hpp"
-#include "cli/common/material_options.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/result_json.hpp"
 #include "cli/solve/eps_adhesion.hpp"
@@ -22,18 +22,16 @@ namespace {
 
 struct EpsOptions {
   std::optional<double> zeta, beta, velocity, damping_ratio;
-  std::string law = law_name(LawKind::viscoelastic_hertz);
-  SolverArguments solver;
+  HeadOnInputs inputs;  // the law, end, tolerance, method and material (restitution/head_on_parameters.hpp)
   bool json = false;
   AdhesionOptions adhesion;  // with the material and A below: an adhesive collision
-  MaterialOptions material;
   std::optional<double> dissipative_constant;
 };
 
 ContactLaw law_from(const EpsOptions& o) {
   LawKind kind{};
   try {
-    kind = law_from_name(o.law);
+    kind = law_from_name(o.inputs.law);
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("--law: {}", e.what()));
   }
@@ -42,19 +40,19 @@ ContactLaw law_from(const EpsOptions& o) {
   const bool takes_ratio = std::string_view(parameter) == "damping-ratio";
   if (!has_dissipative_constant(kind) && (o.beta || o.velocity)) {
     throw InvalidInput(
-        fmt::format("--beta and --velocity belong to --law viscoelastic-hertz; --law {} takes {}", o.law,
-                    takes_ratio ? "--damping-ratio or --zeta" : "--zeta"));
+        fmt::format("--beta and --velocity belong to --law viscoelastic-hertz; --law {} takes {}",
+                    o.inputs.law, takes_ratio ? "--damping-ratio or --zeta" : "--zeta"));
   }
   if (o.damping_ratio && !takes_ratio) {
     throw InvalidInput(
-        fmt::format("--damping-ratio belongs to --law linear-dashpot; --law {} takes --zeta", o.law));
+        fmt::format("--damping-ratio belongs to --law linear-dashpot; --law {} takes --zeta", o.inputs.law));
   }
   if (o.damping_ratio) {
     if (o.zeta) throw InvalidInput("give either --zeta or --damping-ratio, not both");
     return ContactLaw::of_parameter(kind, *o.damping_ratio);
   }
   if (takes_ratio && !o.zeta) {
-    throw InvalidInput(fmt::format("--law {} needs --damping-ratio (or --zeta = 2 r)", o.law));
+    throw InvalidInput(fmt::format("--law {} needs --damping-ratio (or --zeta = 2 r)", o.inputs.law));
   }
   if (o.zeta) {
     if (o.beta || o.velocity) throw InvalidInput("give either --zeta or --beta with --velocity, not both");
@@ -92,7 +90,7 @@ void print_table(const CollisionResult& r) {
 int run_eps(const EpsOptions& o) {
   const ContactLaw law = law_from(o);
   CollisionSolver solver;
-  const CollisionResult result = solver.solve(law, solve_options(o.solver));
+  const CollisionResult result = solver.solve(law, solve_options_of(o.inputs));
   if (o.json) {
     JsonWriter json;
     json.begin_object();
@@ -117,10 +115,10 @@ void add_eps_command(CLI::App& app, Action& chosen) {
                   "beta >= 0 in s^{1/5} m^{-1/5} (with --velocity: the 2008 paper's Eq. 23)");
   cmd->add_option("--velocity", o->velocity,
                   "impact speed v > 0 (scaled as in the 2008 paper's Eq. 23; with --adhesion in m/s)");
-  add_law_option(*cmd, o->law);
+  add_head_on_options(*cmd, o->inputs, {"law"});
   cmd->add_option("--damping-ratio", o->damping_ratio,
                   "damping ratio r >= 0 of the linear dash-pot x'' + 2r x' + x = 0");
-  add_solver_options(*cmd, o->solver);
+  add_head_on_options(*cmd, o->inputs, {"end", "tolerance", "method"});
   cmd->add_flag("--json", o->json,
                 "print one JSON object (numbers in the shortest form that reads back to the same double); "
                 "the tolerance holds for eps when eps is small "
@@ -129,9 +127,9 @@ void add_eps_command(CLI::App& app, Action& chosen) {
   cmd->add_option("--dissipative-constant", o->dissipative_constant,
                   "with --adhesion: dissipative constant A in s (default 0: elastic); jkr-lammps and dmt use "
                   "LAMMPS's damp = 2 A E*/m_eff");
-  add_material_options(*cmd, o->material);
+  add_head_on_material_options(*cmd, o->inputs);
   cmd->callback([o, cmd, &chosen] {
-    if (!o->adhesion.any() && !o->dissipative_constant && !o->material.any()) {
+    if (!o->adhesion.any() && !o->dissipative_constant && !o->inputs.any_material()) {
       chosen = [o] { return run_eps(*o); };
       return;
     }
@@ -151,10 +149,10 @@ void add_eps_command(CLI::App& app, Action& chosen) {
         throw InvalidInput(
             "--surface-energy, --dissipative-constant and the material options belong to --adhesion");
       }
-      const AdhesiveContact contact =
-          adhesive_contact_from(adhesive_model_from_name(*o->adhesion.model), o->adhesion,
-                                material_from(o->material), o->dissipative_constant.value_or(0.0));
-      return run_adhesive_eps(contact, o->velocity, o->solver.tolerance, o->json);
+      const AdhesiveContact contact = adhesive_contact_from(
+          adhesive_model_from_name(*o->adhesion.model), o->adhesion,
+          material_from(material_options_of(o->inputs)), o->dissipative_constant.value_or(0.0));
+      return run_adhesive_eps(contact, o->velocity, o->inputs.tolerance, o->json);
     };
   });
 }

@@ -10,7 +10,7 @@
 
 #include "adhesion/adhesive_study.hpp"
 #include "cli/common/adhesion_options.hpp"
-#include "cli/common/material_options.hpp"
+#include "cli/common/head_on_options.hpp"
 #include "files/output_files.hpp"
 #include "restitution/adhesion.hpp"
 #include "restitution/errors.hpp"
@@ -27,7 +27,7 @@ void refuse_other_forms(const SweepOptions& o) {
       {o.beta.has_value(), "--beta"},
       {o.stiffness || o.damping_coefficient || o.effective_mass,
        "--stiffness, --damping-coefficient and --effective-mass"},
-      {o.law != law_name(LawKind::viscoelastic_hertz), "--law"},
+      {o.inputs.law != law_name(LawKind::viscoelastic_hertz), "--law"},
       {o.resume, "--resume"},
       {o.threads.has_value(), "--threads"},
   };
@@ -74,9 +74,9 @@ int run_adhesive_sweep(const SweepOptions& o) {
   if (!o.adhesion.model) {
     throw InvalidInput("--surface-energy belongs to --adhesion: give --adhesion MODEL");
   }
-  const AdhesiveContact contact =
-      adhesive_contact_from(adhesive_model_from_name(*o.adhesion.model), o.adhesion,
-                            material_from(o.material), o.dissipative_constant.value_or(0.0));
+  const AdhesiveContact contact = adhesive_contact_from(
+      adhesive_model_from_name(*o.adhesion.model), o.adhesion, material_from(material_options_of(o.inputs)),
+      o.dissipative_constant.value_or(0.0));
   std::vector<double> speeds;
   try {
     speeds = zeta_values(
@@ -86,7 +86,7 @@ int run_adhesive_sweep(const SweepOptions& o) {
   }
   const files::OutputTarget target = files::output_target(o.out);
   files::check_output_file(o.out);
-  const std::string text = table(contact, speeds, o.solver.tolerance);
+  const std::string text = table(contact, speeds, o.inputs.tolerance);
   if (target.in_place) {
     files::write_in_place(target.path, text);
   } else {

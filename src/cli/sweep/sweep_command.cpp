@@ -12,7 +12,7 @@
 
 #include "cli/common/commands.hpp"
 #include "cli/common/deprecated_alias.hpp"
-#include "cli/common/material_options.hpp"
+#include "cli/common/head_on_options.hpp"
 #include "cli/common/options.hpp"
 #include "cli/common/progress.hpp"
 #include "cli/common/stop_signals.hpp"
@@ -37,16 +37,16 @@ std::string settings_line(const SweepOptions& o, const SweepGrid& grid) {
     range =
         fmt::format("velocity-min={} velocity-max={}", number17(*o.velocity_min), number17(*o.velocity_max));
     if (grid.velocity->beta) range += fmt::format(" beta={}", number17(*grid.velocity->beta));
-    if (o.material.any()) range += " material";
+    if (o.inputs.any_material()) range += " material";
     if (o.stiffness) {
       range += fmt::format(" stiffness={} damping-coefficient={} effective-mass={}", number17(*o.stiffness),
                            number17(*o.damping_coefficient), number17(*o.effective_mass));
     }
   }
-  if (grid.law != LawKind::viscoelastic_hertz) range = fmt::format("law={} {}", o.law, range);
+  if (grid.law != LawKind::viscoelastic_hertz) range = fmt::format("law={} {}", o.inputs.law, range);
   return fmt::format("# restitution sweep: {} points={} spacing={} end={} method={} tolerance={}", range,
-                     o.points, o.log ? "log" : "linear", o.solver.end, o.solver.method,
-                     number17(o.solver.tolerance));
+                     o.points, o.log ? "log" : "linear", o.inputs.end, o.inputs.method,
+                     number17(o.inputs.tolerance));
 }
 
 std::string dropped_note(const SweepFileOutcome& done) {
@@ -66,7 +66,7 @@ int run_sweep_command(const SweepOptions& given) {
                                    kMaxSweepThreads, *o.threads));
   }
   SweepGrid grid = sweep_grid(o);
-  const SolveOptions solve = solve_options(o.solver);
+  const SolveOptions solve = solve_options_of(o.inputs);
   SweepControl control;
   control.threads = o.threads ? static_cast<unsigned>(*o.threads) : 0U;
   check_sweep(grid.zetas, solve, grid.law, control.threads);  // every point, before the first file is touched
@@ -138,7 +138,7 @@ void add_sweep_command(CLI::App& app, Action& chosen) {
   CLI::App* cmd = app.add_subcommand(
       "sweep",
       "eps over a grid of zeta, or of impact speeds with beta or a material, in parallel, into a CSV file");
-  add_law_option(*cmd, o->law);
+  add_head_on_options(*cmd, o->inputs, {"law"});
   cmd->add_option("--zeta-range", o->zeta_range,
                   fmt::format("FROM:TO:N: N values, in [1, {}], of zeta >= 0 of the law's natural form x'' + "
                               "zeta x^b x' + x^a = 0 (the linear dash-pot: zeta = 2 r), FROM and TO included",
@@ -159,7 +159,7 @@ void add_sweep_command(CLI::App& app, Action& chosen) {
                   "any law, in physical units: gamma in N s/m^(1+b) of that force");
   cmd->add_option("--effective-mass", o->effective_mass,
                   "any law, in physical units: the effective mass m_eff in kg (adds SI columns)");
-  add_material_options(*cmd, o->material);
+  add_head_on_material_options(*cmd, o->inputs);
   cmd->add_option(
       "--dissipative-constant", o->dissipative_constant,
       "material: the dissipative constant A in s (adds SI columns: durations, maximal compression); with "
@@ -170,7 +170,7 @@ void add_sweep_command(CLI::App& app, Action& chosen) {
       ->check(whole_number_in(1, static_cast<long long>(kMaxSweepPoints)))
       ->group("");
   cmd->add_flag("--log", o->log, "space the grid logarithmically (needs a minimum > 0); default: linearly");
-  add_solver_options(*cmd, o->solver);
+  add_head_on_options(*cmd, o->inputs, {"end", "tolerance", "method"});
   cmd->add_option("--threads", o->threads,
                   fmt::format("worker threads, in [1, {}] (default: all cores)", kMaxSweepThreads));
   cmd->add_option("--out", o->out, "the CSV file to write (FILE.partial holds the rows while it runs)")

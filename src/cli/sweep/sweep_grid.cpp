@@ -21,13 +21,13 @@ bool physical_form(const SweepOptions& o) {
 }
 
 bool velocity_form(const SweepOptions& o) {
-  return o.velocity_min || o.velocity_max || o.beta || o.dissipative_constant || o.material.any() ||
+  return o.velocity_min || o.velocity_max || o.beta || o.dissipative_constant || o.inputs.any_material() ||
          physical_form(o);
 }
 
 // ContactLaw::physical's coefficients: all three, and nothing of the Hertz forms beside them.
 PhysicalCoefficients physical_coefficients(const SweepOptions& o) {
-  if (o.beta || o.dissipative_constant || o.material.any()) {
+  if (o.beta || o.dissipative_constant || o.inputs.any_material()) {
     throw InvalidInput(
         "--stiffness, --damping-coefficient and --effective-mass replace --beta and a material: give one "
         "form");
@@ -51,7 +51,7 @@ VelocitySubject velocity_subject(const SweepOptions& o, LawKind law) {
                     o.velocity_min ? "velocity-max" : "velocity-min"));
   }
   if (physical_form(o)) return {std::nullopt, std::nullopt, physical_coefficients(o)};
-  const bool material = o.material.any() || o.dissipative_constant;
+  const bool material = o.inputs.any_material() || o.dissipative_constant;
   if (!has_dissipative_constant(law)) {
     throw InvalidInput(fmt::format(
         "--beta and a material describe --law viscoelastic-hertz; --law {} sweeps impact speeds with "
@@ -71,7 +71,7 @@ VelocitySubject velocity_subject(const SweepOptions& o, LawKind law) {
     }
     return {*o.beta, std::nullopt, std::nullopt};
   }
-  Material m = material_from(o.material);
+  Material m = material_from(material_options_of(o.inputs));
   if (!o.dissipative_constant) {
     throw InvalidInput(
         "a material sweep needs --dissipative-constant (A in s; `restitution calibrate` computes it from a "
@@ -127,7 +127,7 @@ SweepGrid sweep_grid(const SweepOptions& o) {
   const auto points = static_cast<std::size_t>(o.points);
   SweepGrid grid;
   try {
-    grid.law = law_from_name(o.law);
+    grid.law = law_from_name(o.inputs.law);
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("--law: {}", e.what()));
   }

@@ -7,14 +7,14 @@
 #include <vector>
 
 #include "cli/common/adhesion_options.hpp"
-#include "cli/common/material_options.hpp"
+#include "cli/common/head_on_options.hpp"
 #include "cli/common/options.hpp"
 #include "restitution/sweep.hpp"
 
 namespace restitution::cli {
 
 struct SweepOptions {
-  std::string law = law_name(LawKind::viscoelastic_hertz);
+  HeadOnInputs inputs;  // the law, end, tolerance, method and material (restitution/head_on_parameters.hpp)
   std::string zeta_range;  // FROM:TO:N; the old form is zeta_min, zeta_max and points
   std::optional<double> zeta_min, zeta_max;
   // The ε(v) forms: impact speeds with β, or with a material and its dissipative constant (viscoelastic
@@ -22,11 +22,9 @@ struct SweepOptions {
   std::string velocity_range;  // FROM:TO:N in m/s; the old form is velocity_min, velocity_max and points
   std::optional<double> velocity_min, velocity_max, beta, dissipative_constant;
   std::optional<double> stiffness, damping_coefficient, effective_mass;
-  MaterialOptions material;
   AdhesionOptions adhesion;  // ε(v) of an adhesive collision instead (sweep_adhesion.hpp)
   long long points = 0;      // 0: not given
   bool log = false;
-  SolverArguments solver;
   std::optional<long long> threads;  // default: all cores
   std::string out;
   bool resume = false;
