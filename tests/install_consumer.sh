@@ -25,7 +25,7 @@ fi
 libdir="$prefix/$(sed -n 's/^CMAKE_INSTALL_LIBDIR:[A-Z]*=//p' "$build/CMakeCache.txt")"
 
 headers=$(cd "$prefix/include/restitution" && ls | tr '\n' ' ')
-expected="adhesion.hpp adhesive_calibration.hpp adhesive_contact.hpp calibration.hpp collision_solver.hpp contact_law.hpp errors.hpp fast.hpp fit.hpp material.hpp parameter_table.hpp restitution.hpp series.hpp solve_types.hpp sweep.hpp units.hpp "
+expected="adhesion.hpp adhesive_calibration.hpp adhesive_contact.hpp calibration.hpp collision_solver.hpp contact_law.hpp errors.hpp fast.hpp fit.hpp head_on_parameters.hpp material.hpp parameter_rows.hpp parameter_table.hpp restitution.hpp series.hpp solve_types.hpp sweep.hpp units.hpp "
 if [ "$headers" != "$expected" ]; then
   echo "installed headers: $headers"
   echo "expected:          $expected"
