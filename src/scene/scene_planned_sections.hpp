@@ -11,6 +11,7 @@
 #include "scene/scene_results.hpp"
 #include "scene/scene_sections.hpp"
 #include "scene/section_keys.hpp"
+#include "scene/toml_reader.hpp"
 
 namespace restitution::scene {
 
