@@ -24,15 +24,7 @@ inline void add_head_on_material_options(CLI::App& command, HeadOnInputs& in) {
 
 // The material as material_from reads it.
 inline MaterialOptions material_options_of(const HeadOnInputs& in) {
-  MaterialOptions m;
-  m.young_modulus = in.young_modulus_pa;
-  m.poisson_ratio = in.poisson_ratio;
-  m.radius = in.radius_m;
-  m.radius2 = in.radius2_m;
-  m.density = in.density_kg_m3;
-  m.mass = in.mass_kg;
-  m.mass2 = in.mass2_kg;
-  return m;
+  return material_options_of(in, in.radius2_m, in.mass2_kg);
 }
 
 }  // namespace restitution::cli

@@ -59,16 +59,7 @@ void add_gas_options(CLI::App& command, GasOptions& o) {
 }
 
 MaterialOptions material_options(const GasOptions& o) {
-  const gas::GasInputs& in = o.inputs;
-  MaterialOptions m;
-  m.young_modulus = in.young_modulus_pa;
-  m.poisson_ratio = in.poisson_ratio;
-  m.radius = in.radius_m;
-  m.radius2 = o.radius2;
-  m.density = in.density_kg_m3;
-  m.mass = in.mass_kg;
-  m.mass2 = o.mass2;
-  return m;
+  return material_options_of(o.inputs, o.radius2, o.mass2);
 }
 
 gas::CoolingRequest cooling_request(const GasOptions& o) {
