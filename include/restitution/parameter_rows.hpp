@@ -7,7 +7,6 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <utility>
 #include <vector>
 
 #include "restitution/contact_law.hpp"
@@ -66,14 +65,14 @@ inline std::string law_help() {
 // A word with its choices, checked by `check` (a name's own refusal, which names the choices); its default
 // shown.
 template <class Inputs>
-ParameterField<Inputs> choice_field(const char* name, std::string help, std::string Inputs::*member,
+ParameterField<Inputs> choice_field(const char* name, const std::string& help, std::string Inputs::*member,
                                     const std::vector<std::string>& words,
                                     void (*check)(const std::string&)) {
   ParameterField<Inputs> f{};
   f.name = name;
   f.kind = FieldKind::word;
   f.unit = "";
-  f.help = std::move(help);
+  f.help = help;
   f.word = member;
   f.words = words;
   f.check_word = check;

@@ -23,8 +23,7 @@ const FieldRange kPositive{.text = "a value > 0"};
 
 void check_thermostat(const std::string& word) {
   if (word != "langevin" && word != "white-noise") {
-    throw InvalidInput(
-        "\"langevin\" (bath_temperature in J, bath_time in s) or \"white-noise\" (power in W)");
+    throw InvalidInput(R"("langevin" (bath_temperature in J, bath_time in s) or "white-noise" (power in W))");
   }
 }
 

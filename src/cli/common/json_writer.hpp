@@ -11,7 +11,9 @@
 
 namespace restitution::cli {
 
-class JsonWriter {
+// The implicit destructor is noexcept, yet nlohmann's may allocate: it flattens nested values onto a stack
+// to avoid deep recursion. An allocation failure there ends the program, which is what we want.
+class JsonWriter {  // NOLINT(bugprone-exception-escape)
  public:
   JsonWriter& begin_object();
   JsonWriter& end_object();

@@ -77,7 +77,7 @@ class SceneWriter : private SectionOutput {
     }
   }
   void file(const std::string& name, const std::string& content) override { write_file(name, content); }
-  const fs::path& folder() const override { return folder_; }
+  [[nodiscard]] const fs::path& folder() const override { return folder_; }
   void written(const std::vector<std::string>& names) override {
     out_.files.insert(out_.files.end(), names.begin(), names.end());
   }

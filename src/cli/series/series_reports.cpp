@@ -97,7 +97,8 @@ void print_validation_summary(const series::ValidationReport& r) {
              r.options.zeta_min, r.options.zeta_max);
   fmt::print("  {:<26} {:<17} {:>26} {:>26}\n", "approximation", "end", "eps", "1 - eps");
   for (std::size_t i = 0; i < r.candidates.size(); ++i) {
-    std::string eps, one_minus;
+    std::string eps;
+    std::string one_minus;
     for (const auto& x : r.summaries[i].crossings) {
       if (!eps.empty()) {
         eps += " / ";
