@@ -16,4 +16,13 @@ inline Material rubber_like() {
   return m;
 }
 
+// The same material as a scene's [materials.rubber] table.
+inline constexpr const char* kRubberLikeToml = R"([materials.rubber]
+young_modulus = 1e7
+poisson_ratio = 0.45
+density = 1100.0
+radius = 0.01
+dissipative_constant = 5.8e-5
+)";
+
 }  // namespace restitution::test_support

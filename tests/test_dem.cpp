@@ -22,6 +22,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_dem.hpp"
 #include "scene/scene_sections.hpp"
+#include "scene_errors.hpp"
 
 namespace restitution {
 namespace {
@@ -338,22 +339,10 @@ TEST(DemCli, BadFrictionExitsWithTwoAndNamesFriction) {
 namespace restitution {
 namespace {
 
-constexpr const char* kSceneHead = R"(output = "out"
-[materials.rubber]
-young_modulus = 1e7
-poisson_ratio = 0.45
-density = 1100.0
-radius = 0.01
-dissipative_constant = 5.8e-5
-)";
+const std::string kSceneHead = std::string("output = \"out\"\n") + test_support::kRubberLikeToml;
 
 std::string scene_error(const std::string& dem_table) {
-  try {
-    (void)scene::parse_scene(std::string(kSceneHead) + "[[dem]]\n" + dem_table, "dem.toml");
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "";
+  return scene_errors::scene_error(kSceneHead + "[[dem]]\n" + dem_table, "dem.toml");
 }
 
 TEST(DemScene, ParsesATaskAndNamesWhatIsWrong) {

@@ -16,12 +16,14 @@
 #include "cli/common/parameter_options.hpp"
 #include "damping_check/damping_check_parameters.hpp"
 #include "dem/dem_parameters.hpp"
+#include "material_examples.hpp"
 #include "parameter_table_checks.hpp"
 #include "restitution/errors.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_damping_check.hpp"
 #include "scene/scene_dem.hpp"
 #include "scene/scene_sections.hpp"
+#include "scene_errors.hpp"
 
 namespace restitution {
 namespace {
@@ -115,14 +117,7 @@ TEST(DemParameters, TheCommandLineReadsEveryOptionIntoItsMember) {
   expect_options_read(damping_check::damping_check_fields());
 }
 
-const std::string kMaterial = R"(output = "out/dem"
-[materials.rubber]
-young_modulus = 1e7
-poisson_ratio = 0.45
-density = 1100.0
-radius = 0.01
-dissipative_constant = 5.8e-5
-)";
+const std::string kMaterial = std::string("output = \"out/dem\"\n") + test_support::kRubberLikeToml;
 
 // A [[dem]] with the keys it needs (a code, the speeds), less the row's; eps needs its velocity.
 std::string dem_without(const DemField& f) {
@@ -144,15 +139,7 @@ const DampingCheckInputs& inputs_of_check(const scene::Scene& s) {
   return scene::tasks_of<scene::DampingCheckTask>(s, "damping_check").at(0)->inputs;
 }
 
-// What parsing the scene throws ("" when it parses).
-std::string scene_error(const std::string& text) {
-  try {
-    (void)scene::parse_scene(text, "s.toml");
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "";
-}
+using scene_errors::scene_error;
 
 // Every key row is read into its member; a value out of the row's range is refused in the range's words, one
 // the study's own check refuses in its words, a missing required key with what it is.

@@ -22,6 +22,7 @@
 #include "restitution_gas/gas_parameters.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_sections.hpp"
+#include "scene_errors.hpp"
 
 namespace restitution {
 namespace {
@@ -112,15 +113,7 @@ TEST(HeadOnParameters, TheSharedRowsSayTheSameEverywhere) {
     EXPECT_NE(head_on_field("law").help.find(law), std::string::npos) << law;
 }
 
-// What parsing the scene throws ("" when it parses).
-std::string scene_error(const std::string& text) {
-  try {
-    (void)scene::parse_scene(text, "s.toml");
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "";
-}
+using scene_errors::scene_error;
 
 const std::string kSweep = "output = \"out/s\"\n[[sweep]]\nname = \"s\"\nzeta = [0.1]\n";
 
