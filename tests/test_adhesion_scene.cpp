@@ -20,6 +20,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_adhesion.hpp"
 #include "scene/scene_sections.hpp"
+#include "scene_errors.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -50,12 +51,7 @@ speeds = [0.5, 3.0]
 )";
 
 std::string error_of(const std::string& text) {
-  try {
-    (void)parse_scene(text, "adhesion.toml");
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "";
+  return scene_errors::scene_error(text, "adhesion.toml");
 }
 
 TEST(AdhesionScene, ReadsTheSection) {

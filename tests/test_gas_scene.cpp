@@ -13,6 +13,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_gas.hpp"
 #include "scene/scene_sections.hpp"
+#include "scene_errors.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -35,12 +36,7 @@ haff_times = 100.0
 )";
 
 std::string error_of(const std::string& text) {
-  try {
-    (void)parse_scene(text, "gas.toml");
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "";
+  return scene_errors::scene_error(text, "gas.toml");
 }
 
 TEST(GasScene, ReadsTheSection) {

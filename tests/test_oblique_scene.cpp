@@ -17,6 +17,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_oblique.hpp"
 #include "scene/scene_sections.hpp"
+#include "scene_errors.hpp"
 
 namespace restitution::scene {
 namespace {
@@ -38,12 +39,7 @@ angles = [10.0, 40.0]
 )";
 
 std::string error_of(const std::string& text) {
-  try {
-    (void)parse_scene(text, "oblique.toml");
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "";
+  return scene_errors::scene_error(text, "oblique.toml");
 }
 
 TEST(ObliqueScene, ReadsTheSection) {
